@@ -1,0 +1,76 @@
+#include "gl_shim/context.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+
+#include "gl_shim/gl_enums.h"
+
+namespace glpt {
+namespace {
+
+// The one piece of global mutable state glpt has: GL's current context, per thread.
+thread_local Context* t_current = nullptr;
+
+using Clock = std::chrono::steady_clock;
+
+}  // namespace
+
+Context::Context(const Context* shared)
+    : unimplemented_calls(static_cast<size_t>(CommandId::kCount), 0),
+      unimplemented_reported(static_cast<size_t>(CommandId::kCount), false) {
+  if (shared != nullptr) lists.store = shared->lists.store;
+}
+
+Context::~Context() {
+  if (t_current == this) t_current = nullptr;
+  if (std::getenv("GLPT_STATS") == nullptr) return;
+  uint64_t total = 0;
+  for (size_t i = 0; i < unimplemented_calls.size(); ++i) {
+    if (unimplemented_calls[i] == 0) continue;
+    total += unimplemented_calls[i];
+    std::fprintf(stderr, "glpt: unimplemented %s called %llu times\n",
+                 command_name(static_cast<CommandId>(i)),
+                 static_cast<unsigned long long>(unimplemented_calls[i]));
+  }
+  if (total > 0 || not_compilable_calls > 0)
+    std::fprintf(stderr, "glpt: %llu calls to unimplemented commands, %llu commands not compiled into lists\n",
+                 static_cast<unsigned long long>(total),
+                 static_cast<unsigned long long>(not_compilable_calls));
+}
+
+bool Context::list_executes_while_compiling() const { return lists.compiling_mode == GL_COMPILE_AND_EXECUTE; }
+
+Context* current_context() { return t_current; }
+void set_current_context(Context* ctx) { t_current = ctx; }
+
+bool render_pending_frame(Context& ctx) {
+  if (ctx.target == nullptr) return false;
+  if (!ctx.frame_dirty && ctx.output) return true;
+  const auto t0 = Clock::now();
+  if (!ctx.output) {
+    std::string error;
+    ctx.output = FrameOutput::create(&error);
+    if (!ctx.output) {
+      // Reported once per context; the program keeps running, showing nothing.
+      std::fprintf(stderr, "glpt: %s\n", error.c_str());
+      ctx.target = nullptr;
+      return false;
+    }
+  }
+  uint32_t width = 0, height = 0;
+  if (!ctx.target->query_size(&width, &height) || width == 0 || height == 0) return false;
+  rt::Frame& frame = ctx.pending;
+  frame.width = width;
+  frame.height = height;
+  frame.viewport = {ctx.framebuffer.viewport_x, ctx.framebuffer.viewport_y,
+                    static_cast<uint32_t>(std::max(ctx.framebuffer.viewport_width, 0)),
+                    static_cast<uint32_t>(std::max(ctx.framebuffer.viewport_height, 0))};
+  frame.instances = ctx.capture.instances();
+  const double capture_ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+  const bool ok = ctx.output->render(frame, capture_ms);
+  ctx.frame_dirty = false;
+  return ok;
+}
+
+}  // namespace glpt

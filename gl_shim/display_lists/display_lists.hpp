@@ -1,0 +1,38 @@
+// Display list names and contents (GL 1.5 spec 5.4). Shared between contexts created with a
+// share_list, hence held through a shared_ptr by each Context.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <unordered_map>
+
+#include "gl_shim/display_lists/list_stream.hpp"
+#include "gl_shim/gl_types.h"
+
+namespace glpt {
+
+struct DisplayListStore {
+  struct Entry {
+    ListStream stream;
+    uint64_t version = 0;  // bumped by every glNewList of this name
+    bool defined = false;  // glGenLists reserves names; glEndList defines them
+  };
+  std::unordered_map<GLuint, Entry> lists;
+  uint64_t next_version = 1;
+};
+
+struct DisplayListState {
+  std::shared_ptr<DisplayListStore> store = std::make_shared<DisplayListStore>();
+  // While compiling: the name, the mode, and the stream being filled (committed at glEndList,
+  // so a list calling itself while being redefined still sees its old contents).
+  GLuint compiling_name = 0;
+  GLenum compiling_mode = 0;
+  ListStream pending;
+  GLuint list_base = 0;
+  int call_depth = 0;  // nesting of glCallList, limited to GL_MAX_LIST_NESTING
+  static constexpr int kMaxNesting = 64;
+
+  bool compiling() const { return compiling_name != 0; }
+};
+
+}  // namespace glpt

@@ -1,0 +1,42 @@
+// A fast 64-bit content hash for geometry identity (not cryptographic): BLAS reuse keys on it.
+#pragma once
+
+#include <cstdint>
+#include <cstring>
+#include <vector>
+
+namespace glpt {
+
+class ContentHash {
+ public:
+  void add_bytes(const void* data, size_t size) {
+    const auto* p = static_cast<const unsigned char*>(data);
+    size_t i = 0;
+    for (; i + 8 <= size; i += 8) {
+      uint64_t w;
+      std::memcpy(&w, p + i, 8);
+      mix(w);
+    }
+    uint64_t tail = 0;
+    std::memcpy(&tail, p + i, size - i);
+    mix(tail ^ (uint64_t{size - i} << 56));
+  }
+  template <typename T>
+  void add(const std::vector<T>& v) {
+    mix(v.size());
+    add_bytes(v.data(), v.size() * sizeof(T));
+  }
+  uint64_t value() const { return finalize(state_); }
+
+ private:
+  // splitmix64-style mixing per 8-byte word: fast, and well distributed for float data.
+  void mix(uint64_t w) { state_ = finalize(state_ ^ (w + 0x9e3779b97f4a7c15ull + (state_ << 6))); }
+  static uint64_t finalize(uint64_t z) {
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+    return z ^ (z >> 31);
+  }
+  uint64_t state_ = 0x243f6a8885a308d3ull;
+};
+
+}  // namespace glpt

@@ -1,0 +1,541 @@
+#!/usr/bin/env python3
+"""Generates glpt's GL API surface from the Khronos registry (gl.xml, glx.xml).
+
+One table drives everything mechanical about the API, so adding a GL entry point is a matter of
+implementing it, never of writing boilerplate:
+
+  gl_enums.h           #define GL_* for every enum of the selected versions and extensions
+  glx_enums.h          #define GLX_* likewise from glx.xml
+  gl_commands.hpp      CommandId (one per exported command) and the command name table
+  gl_impl_decls.hpp    the implementation prototypes: namespace glpt::impl { RET glFoo(Context&, ...); }
+  gl_entry_points.cpp  the exported extern "C" entry points, display-list record and replay, and
+                       the name -> entry point table behind glXGetProcAddress
+
+An implementation is simply a definition of glpt::impl::glFoo in any gl_shim source file. The
+entry points reference the implementations weakly: a command nobody implemented yet resolves to
+null, and its entry point records GL_INVALID_OPERATION once and counts the call instead of
+crashing. Extension commands that the registry marks as aliases of core commands (glActiveTextureARB
+-> glActiveTexture) call the core implementation.
+
+Every entry point also does, from the table:
+  - nothing at all without a current context (GL leaves this undefined; never crash);
+  - GL_INVALID_OPERATION between glBegin and glEnd for commands the spec does not allow there;
+  - recording into the display list being compiled, for the commands the spec compiles.
+"""
+
+import argparse
+import re
+import sys
+import xml.etree.ElementTree as ET
+
+# ----------------------------------------------------------------------------------------------
+# The selection: which parts of the registry glpt exports.
+
+GL_FEATURES = ["GL_VERSION_1_0", "GL_VERSION_1_1", "GL_VERSION_1_2", "GL_VERSION_1_3",
+               "GL_VERSION_1_4", "GL_VERSION_1_5"]
+
+# Extension entry points old GL 1.x programs look up by name.
+GL_EXTENSIONS = [
+    "GL_ARB_multitexture", "GL_ARB_transpose_matrix", "GL_ARB_window_pos",
+    "GL_ARB_point_parameters", "GL_ARB_vertex_buffer_object", "GL_ARB_texture_compression",
+    "GL_ARB_multisample", "GL_ARB_occlusion_query",
+    "GL_EXT_texture_object", "GL_EXT_vertex_array", "GL_EXT_blend_color", "GL_EXT_blend_minmax",
+    "GL_EXT_blend_func_separate", "GL_EXT_polygon_offset", "GL_EXT_texture3D",
+    "GL_EXT_subtexture", "GL_EXT_copy_texture", "GL_EXT_compiled_vertex_array",
+    "GL_EXT_draw_range_elements", "GL_EXT_multi_draw_arrays", "GL_EXT_fog_coord",
+    "GL_EXT_secondary_color", "GL_EXT_point_parameters",
+]
+# Enums only (these extensions add no commands, or only enums matter).
+GL_ENUM_ONLY_EXTENSIONS = [
+    "GL_ARB_imaging",
+    "GL_EXT_bgra", "GL_EXT_abgr", "GL_EXT_packed_pixels", "GL_EXT_rescale_normal",
+    "GL_EXT_separate_specular_color", "GL_SGIS_texture_edge_clamp",
+    "GL_EXT_texture_env_combine", "GL_ARB_texture_env_combine", "GL_ARB_texture_env_add",
+    "GL_EXT_texture_filter_anisotropic", "GL_SGIS_generate_mipmap", "GL_ARB_texture_cube_map",
+    "GL_EXT_texture_lod_bias", "GL_ARB_texture_border_clamp", "GL_ARB_texture_mirrored_repeat",
+    "GL_NV_texgen_reflection", "GL_EXT_stencil_wrap", "GL_ARB_depth_texture",
+    "GL_ARB_texture_rectangle", "GL_EXT_texture_env_dot3", "GL_ARB_texture_env_dot3",
+]
+
+GLX_FEATURES = ["GLX_VERSION_1_0", "GLX_VERSION_1_1", "GLX_VERSION_1_2", "GLX_VERSION_1_3",
+                "GLX_VERSION_1_4"]
+GLX_EXTENSIONS = ["GLX_ARB_create_context", "GLX_ARB_create_context_profile",
+                  "GLX_ARB_get_proc_address", "GLX_EXT_visual_info", "GLX_ARB_multisample",
+                  "GLX_EXT_swap_control", "GLX_MESA_swap_control", "GLX_SGI_swap_control",
+                  "GLX_ARB_framebuffer_sRGB", "GLX_EXT_framebuffer_sRGB",
+                  "GLX_ARB_fbconfig_float", "GLX_EXT_texture_from_pixmap"]
+
+# GL 1.5 spec, section 5.4: commands executed immediately even while a display list is compiled.
+NOT_COMPILED = {
+    "glIsList", "glGenLists", "glDeleteLists", "glNewList", "glEndList",
+    "glFeedbackBuffer", "glSelectBuffer", "glRenderMode",
+    "glColorPointer", "glEdgeFlagPointer", "glIndexPointer", "glNormalPointer",
+    "glTexCoordPointer", "glVertexPointer", "glInterleavedArrays", "glFogCoordPointer",
+    "glSecondaryColorPointer", "glEnableClientState", "glDisableClientState",
+    "glClientActiveTexture", "glPushClientAttrib", "glPopClientAttrib",
+    "glReadPixels", "glPixelStoref", "glPixelStorei",
+    "glGenTextures", "glDeleteTextures", "glAreTexturesResident", "glIsTexture",
+    "glFlush", "glFinish",
+    "glBindBuffer", "glDeleteBuffers", "glGenBuffers", "glIsBuffer", "glBufferData",
+    "glBufferSubData", "glMapBuffer", "glUnmapBuffer",
+    "glGenQueries", "glDeleteQueries", "glIsQuery",
+    "glLockArraysEXT", "glUnlockArraysEXT",
+}
+NOT_COMPILED_PREFIXES = ("glGet", "glIs")
+
+# GL 1.5 spec, section 2.6.3: the only commands allowed between glBegin and glEnd.
+ALLOWED_IN_BEGIN_END_PREFIXES = (
+    "glVertex", "glColor", "glSecondaryColor", "glIndex", "glNormal", "glFogCoord",
+    "glTexCoord", "glMultiTexCoord", "glVertexAttrib", "glEvalCoord", "glEvalPoint",
+    "glArrayElement", "glMaterial", "glEdgeFlag", "glCallList", "glEnd",
+)
+# ... but not these, whose names merely start like the above.
+NOT_ALLOWED_IN_BEGIN_END = {
+    "glColorMaterial", "glColorMask", "glColorPointer", "glColorTable", "glColorSubTable",
+    "glColorTableParameterfv", "glColorTableParameteriv", "glIndexMask", "glIndexPointer",
+    "glNormalPointer", "glTexCoordPointer", "glVertexPointer", "glEdgeFlagPointer",
+    "glFogCoordPointer", "glSecondaryColorPointer", "glVertexPointerEXT", "glColorPointerEXT",
+    "glIndexPointerEXT", "glNormalPointerEXT", "glTexCoordPointerEXT", "glEdgeFlagPointerEXT",
+    "glFogCoordPointerEXT", "glSecondaryColorPointerEXT", "glColorPointerListIBM",
+}
+
+# Pointer parameters whose element count depends on the value of `pname`: recorded with
+# glpt::pname_value_count(CommandId, pname), written by hand in display_lists/param_counts.cpp.
+PNAME_COUNT_FAMILIES = re.compile(
+    r"^gl(Light|LightModel|Material|Fog|TexEnv|TexGen|TexParameter|PointParameter|"
+    r"ColorTableParameter|ConvolutionParameter)[fdix]v(ARB|EXT)?$")
+
+# Pointer parameters with a hand-written size: (command, parameter) -> (element type, count).
+CUSTOM_ARRAY_COUNTS = {
+    ("glCallLists", "lists"): ("GLubyte", "glpt::call_lists_bytes(n, type)"),
+}
+
+GL_SCALAR_TYPES = {
+    "GLenum", "GLboolean", "GLbitfield", "GLbyte", "GLshort", "GLint", "GLubyte", "GLushort",
+    "GLuint", "GLsizei", "GLfloat", "GLclampf", "GLdouble", "GLclampd", "GLintptr",
+    "GLsizeiptr", "GLintptrARB", "GLsizeiptrARB", "GLhalfNV", "GLchar", "GLcharARB", "GLint64",
+    "GLuint64", "GLfixed", "GLhandleARB",
+}
+
+
+class Param:
+    def __init__(self, ctype, name, ptype, length):
+        self.ctype = ctype.strip()  # full C type, e.g. "const GLfloat *"
+        self.name = name
+        self.ptype = ptype          # the GL base type, e.g. "GLfloat" (None for void)
+        self.length = length        # the registry's len attribute or None
+
+    @property
+    def is_pointer(self):
+        return "*" in self.ctype
+
+    def decl(self):
+        sep = "" if self.ctype.endswith("*") else " "
+        return f"{self.ctype}{sep}{self.name}"
+
+
+class Command:
+    def __init__(self, name, ret, params, alias):
+        self.name = name
+        self.ret = ret.strip()
+        self.params = params
+        self.alias = alias
+
+    @property
+    def returns_void(self):
+        return self.ret == "void"
+
+
+def c_type_of(elem):
+    """The C type of a <proto> or <param>: all text except the <name> element."""
+    parts = [elem.text or ""]
+    for child in elem:
+        if child.tag == "name":
+            parts.append(child.tail or "")
+            continue
+        parts.append((child.text or "") + (child.tail or ""))
+    return re.sub(r"\s+", " ", "".join(parts)).replace(" *", " *").strip()
+
+
+def parse_commands(root):
+    commands = {}
+    for cmd in root.find("commands").findall("command"):
+        proto = cmd.find("proto")
+        name = proto.find("name").text
+        ret = c_type_of(proto)
+        params = []
+        for p in cmd.findall("param"):
+            ptype_el = p.find("ptype")
+            params.append(Param(c_type_of(p), p.find("name").text,
+                                ptype_el.text if ptype_el is not None else None,
+                                p.get("len")))
+        alias_el = cmd.find("alias")
+        commands[name] = Command(name, ret, params, alias_el.get("name") if alias_el is not None else None)
+    return commands
+
+
+def parse_enums(root, api):
+    values = {}
+    for enums in root.iter("enums"):
+        for e in enums.findall("enum"):
+            if e.get("api") not in (None, api):
+                continue
+            values.setdefault(e.get("name"), e.get("value"))
+    return values
+
+
+def collect(root, api, feature_names, extension_names, enum_only_extensions=()):
+    """Commands and enums required by the selected features and extensions, in registry order."""
+    commands, enums = [], []
+    seen_c, seen_e = set(), set()
+
+    def take(require):
+        if require.get("api") not in (None, api):
+            return
+        for c in require.findall("command"):
+            if c.get("name") not in seen_c:
+                seen_c.add(c.get("name"))
+                commands.append(c.get("name"))
+        for e in require.findall("enum"):
+            if e.get("name") not in seen_e:
+                seen_e.add(e.get("name"))
+                enums.append(e.get("name"))
+
+    for feature in root.findall("feature"):
+        if feature.get("name") in feature_names:
+            for req in feature.findall("require"):
+                take(req)
+    wanted = set(extension_names) | set(enum_only_extensions)
+    found = set()
+    for ext in root.iter("extension"):
+        if ext.get("name") in wanted:
+            found.add(ext.get("name"))
+            for req in ext.findall("require"):
+                if ext.get("name") in enum_only_extensions:
+                    for e in req.findall("enum"):
+                        if e.get("name") not in seen_e:
+                            seen_e.add(e.get("name"))
+                            enums.append(e.get("name"))
+                else:
+                    take(req)
+    missing = wanted - found
+    if missing:
+        sys.exit(f"gen_gl_api: extensions not in the registry: {sorted(missing)}")
+    return commands, enums
+
+
+# ----------------------------------------------------------------------------------------------
+# Display-list recording plan for one command.
+
+def literal_count(length):
+    return int(length) if length is not None and length.isdigit() else None
+
+
+def record_plan(cmd):
+    """How a compiled command stores its pointer arguments, or None if it needs custom code.
+
+    Returns a list, per pointer parameter, of a C++ expression for its element count.
+    """
+    plan = {}
+    param_names = {p.name for p in cmd.params}
+    for p in cmd.params:
+        if not p.is_pointer:
+            if p.ptype not in GL_SCALAR_TYPES:
+                return None
+            continue
+        custom = CUSTOM_ARRAY_COUNTS.get((cmd.name, p.name))
+        if custom:
+            plan[p.name] = custom[1]
+            continue
+        if p.ptype is None or p.ptype not in GL_SCALAR_TYPES or not p.ctype.startswith("const"):
+            return None  # void* data or output pointers: custom code (images, arrays)
+        n = literal_count(p.length)
+        if n is not None:
+            plan[p.name] = str(n)
+        elif p.length == "COMPSIZE(pname)" and PNAME_COUNT_FAMILIES.match(cmd.name):
+            plan[p.name] = f"glpt::pname_value_count(glpt::CommandId::{cmd.name}, pname)"
+        elif p.length in param_names:
+            plan[p.name] = f"glpt::clamp_count({p.length})"
+        else:
+            return None
+    return plan
+
+
+def core_name(name):
+    """glGenBuffersARB -> glGenBuffers: extension commands follow the rules of their core twin."""
+    return re.sub(r"(ARB|EXT)$", "", name)
+
+
+def compiled(name):
+    core = core_name(name)
+    return core not in NOT_COMPILED and not core.startswith(NOT_COMPILED_PREFIXES)
+
+
+def allowed_in_begin_end(name):
+    return name.startswith(ALLOWED_IN_BEGIN_END_PREFIXES) and name not in NOT_ALLOWED_IN_BEGIN_END
+
+
+# ----------------------------------------------------------------------------------------------
+# Emitters.
+
+HEADER = "// Generated by gl_shim/gen/gen_gl_api.py from the Khronos registry. Do not edit.\n"
+
+
+def emit_enums(path, names, values, guard):
+    with open(path, "w") as f:
+        f.write(HEADER + f"#pragma once\n// {guard}\n")
+        for n in names:
+            if n in values:
+                f.write(f"#define {n} {values[n]}\n")
+
+
+def emit_commands_header(path, names):
+    with open(path, "w") as f:
+        f.write(HEADER + "#pragma once\n#include <cstdint>\n\nnamespace glpt {\n\n")
+        f.write("enum class CommandId : uint16_t {\n")
+        for n in names:
+            f.write(f"  {n},\n")
+        f.write("  kCount\n};\n\n")
+        f.write("inline constexpr const char* kCommandNames[] = {\n")
+        for n in names:
+            f.write(f'    "{n}",\n')
+        f.write("};\n\n")
+        f.write("inline const char* command_name(CommandId id) {\n"
+                "  return kCommandNames[static_cast<uint16_t>(id)];\n}\n\n}  // namespace glpt\n")
+
+
+def impl_name(cmd, commands):
+    """The implementation a command uses: its own, or that of the core command it aliases."""
+    if cmd.alias and cmd.alias in commands:
+        target = commands[cmd.alias]
+        if [p.ctype for p in target.params] == [p.ctype for p in cmd.params] and target.ret == cmd.ret:
+            return cmd.alias
+    return cmd.name
+
+
+def impl_signature(cmd, name):
+    params = ", ".join(["Context& ctx"] + [p.decl() for p in cmd.params])
+    return f"{cmd.ret} {name}({params})"
+
+
+def emit_impl_decls(path, names, commands):
+    with open(path, "w") as f:
+        f.write(HEADER + "#pragma once\n#include \"gl_shim/gl_types.h\"\n\n")
+        f.write("namespace glpt {\nclass Context;\nnamespace impl {\n\n")
+        done = set()
+        for n in names:
+            target = impl_name(commands[n], commands)
+            if target in done:
+                continue
+            done.add(target)
+            f.write(impl_signature(commands[target], target) + ";\n")
+        f.write("\n}  // namespace impl\n}  // namespace glpt\n")
+
+
+def emit_entry_points(path, names, commands):
+    name_set = set(names)
+    out = []
+    w = out.append
+    w(HEADER)
+    w('#include <algorithm>\n#include <cstring>\n\n'
+      '#include "gl_shim/context.hpp"\n#include "gl_shim/display_lists/list_stream.hpp"\n'
+      '#include "gl_shim/dispatch.hpp"\n#include "gl_shim/gl_enums.h"\n\n')
+    # Weak references to the implementations.
+    w("namespace glpt::impl {\n")
+    done = set()
+    for n in names:
+        target = impl_name(commands[n], commands)
+        if target in done:
+            continue
+        done.add(target)
+        w(f"[[gnu::weak]] {impl_signature(commands[target], target)};\n")
+    w("}  // namespace glpt::impl\n\n")
+
+    # exec_*: validation + implementation (or the unimplemented fallback). Used by the entry
+    # points and by display-list replay alike.
+    w("namespace glpt {\nnamespace {\n\n")
+    for n in names:
+        cmd = commands[n]
+        target = impl_name(cmd, commands)
+        args = ", ".join(["ctx"] + [p.name for p in cmd.params])
+        params = ", ".join(["Context& ctx"] + [p.decl() for p in cmd.params])
+        w(f"inline {cmd.ret} exec_{n}({params}) {{\n")
+        ret_default = "" if cmd.returns_void else " {}"
+        if not allowed_in_begin_end(n):
+            w(f"  if (ctx.inside_begin_end()) {{\n    record_error(ctx, GL_INVALID_OPERATION);\n"
+              f"    return{ret_default};\n  }}\n")
+        w(f"  if (impl::{target} == nullptr) {{\n    unimplemented(ctx, CommandId::{n});\n"
+          f"    return{ret_default};\n  }}\n")
+        w(f"  return impl::{target}({args});\n}}\n\n")
+
+    # Display-list record structs and replay.
+    plans = {}
+    for n in names:
+        if compiled(n):
+            plans[n] = record_plan(commands[n])
+    for n, plan in plans.items():
+        if plan is None:
+            continue
+        cmd = commands[n]
+        w(f"struct Rec_{n} {{\n")
+        for p in cmd.params:
+            if p.is_pointer:
+                w(f"  uint32_t {p.name}_offset;\n  uint32_t {p.name}_count;\n")
+            else:
+                w(f"  {p.ctype} {p.name};\n")
+        if not cmd.params:
+            w("  uint8_t unused;\n")
+        w("};\n\n")
+    w("}  // namespace\n\n")
+
+    w("void replay_list(Context& ctx, const ListStream& list) {\n"
+      "  for (ListStream::Reader r(list); !r.done(); r.next()) {\n"
+      "    switch (r.command()) {\n")
+    for n, plan in plans.items():
+        if plan is None:
+            continue
+        cmd = commands[n]
+        w(f"      case CommandId::{n}: {{\n")
+        if cmd.params:
+            w(f"        const auto rec = r.record<Rec_{n}>();\n")
+        args = []
+        for p in cmd.params:
+            if p.is_pointer:
+                elem = CUSTOM_ARRAY_COUNTS.get((cmd.name, p.name), (p.ptype,))[0]
+                args.append(f"r.payload<{elem}>(rec.{p.name}_offset)")
+            else:
+                args.append(f"rec.{p.name}")
+        w(f"        exec_{n}({', '.join(['ctx'] + args)});\n        break;\n      }}\n")
+    w("      default:\n        unimplemented(ctx, r.command());\n        break;\n")
+    w("    }\n  }\n}\n\n}  // namespace glpt\n\n")
+
+    # Exported entry points, declared first (the front end builds with -Wmissing-declarations).
+    w('extern "C" {\n\n')
+    for n in names:
+        cmd = commands[n]
+        params = ", ".join(p.decl() for p in cmd.params) or "void"
+        w(f"GLPT_EXPORT {cmd.ret} {n}({params});\n")
+    w("\n")
+    for n in names:
+        cmd = commands[n]
+        params = ", ".join(p.decl() for p in cmd.params) or "void"
+        args = ", ".join(["*ctx"] + [p.name for p in cmd.params])
+        ret_default = "" if cmd.returns_void else " {}"
+        w(f"GLPT_EXPORT {cmd.ret} {n}({params}) {{\n")
+        w("  glpt::Context* ctx = glpt::current_context();\n")
+        w(f"  if (ctx == nullptr) return{ret_default};\n")
+        if compiled(n):
+            plan = plans[n]
+            if plan is None:
+                w("  if (ctx->list_being_compiled() != nullptr) {\n")
+                w(f"    glpt::not_compilable(*ctx, glpt::CommandId::{n});\n")
+            else:
+                w("  if (glpt::ListStream* glpt_list = ctx->list_being_compiled()) {\n")
+                w(f"    glpt::ListStream::Writer rec_writer(*glpt_list, glpt::CommandId::{n}, "
+                  f"sizeof(glpt::Rec_{n}));\n")
+                w(f"    glpt::Rec_{n} rec{{}};\n")
+                for p in cmd.params:
+                    if p.is_pointer:
+                        w(f"    rec.{p.name}_count = {plan[p.name]};\n")
+                        elem = CUSTOM_ARRAY_COUNTS.get((cmd.name, p.name), (p.ptype,))[0]
+                        w(f"    rec.{p.name}_offset = rec_writer.append_array("
+                          f"static_cast<const {elem}*>({p.name}), rec.{p.name}_count);\n")
+                    else:
+                        w(f"    rec.{p.name} = {p.name};\n")
+                w("    rec_writer.set_record(rec);\n")
+            w(f"    if (!ctx->list_executes_while_compiling()) return{ret_default};\n  }}\n")
+        if cmd.returns_void:
+            w(f"  glpt::exec_{n}({args});\n}}\n\n")
+        else:
+            w(f"  return glpt::exec_{n}({args});\n}}\n\n")
+    w("}  // extern \"C\"\n\n")
+
+    # Name table for glXGetProcAddress: sorted, with whether an implementation exists.
+    w("namespace glpt {\n\nconst GlProcEntry* gl_proc_table(size_t* count) {\n")
+    w("  static const GlProcEntry table[] = {\n")
+    for n in sorted(names):
+        target = impl_name(commands[n], commands)
+        w(f'      {{"{n}", reinterpret_cast<GlProc>(&::{n}), '
+          f'reinterpret_cast<GlProc>(&impl::{target}) != nullptr}},\n')
+    w("  };\n  *count = sizeof(table) / sizeof(table[0]);\n  return table;\n}\n\n"
+      "}  // namespace glpt\n")
+    with open(path, "w") as f:
+        f.write("".join(out))
+
+
+# ----------------------------------------------------------------------------------------------
+# Attribute families: glColor3ub, glVertex2iv, glMultiTexCoord4d, ... Each member converts its
+# arguments as GL 1.5 spec table 2.9 says and calls one hand-written function
+# (geometry/attributes.hpp).
+
+ATTRIBUTE_FAMILY = re.compile(r"^gl(Vertex|Normal|Color|TexCoord|MultiTexCoord)([1-4])(b|s|i|f|d|ub|us|ui)(v?)$")
+# Missing components default to (0, 0, 0, 1).
+FAMILY_TARGET = {
+    "Vertex": ("attribute_vertex", 4, False),
+    "Normal": ("attribute_normal", 3, True),   # signed integer normals are normalized
+    "Color": ("attribute_color", 4, True),
+    "TexCoord": ("attribute_tex_coord", 4, False),
+    "MultiTexCoord": ("attribute_multi_tex_coord", 4, False),
+}
+
+
+def emit_attribute_families(path, names, commands):
+    out = [HEADER, '#include <glm/glm.hpp>\n\n#include "gl_shim/geometry/attributes.hpp"\n'
+           '#include "gl_shim/gl_impl_decls.hpp"\n\nnamespace glpt::impl {\n\n']
+    for n in names:
+        m = ATTRIBUTE_FAMILY.match(n)
+        if not m or impl_name(commands[n], commands) != n:
+            continue
+        family, size, _, vector = m.group(1), int(m.group(2)), m.group(3), m.group(4) == "v"
+        fn, width, normalized = FAMILY_TARGET[family]
+        cmd = commands[n]
+        params = list(cmd.params)
+        lead = []
+        if family == "MultiTexCoord":
+            lead = [params[0].name]
+            params = params[1:]
+        conv = "normalized_component" if normalized else "float_component"
+        if vector:
+            comps = [f"{conv}({params[0].name}[{i}])" for i in range(size)]
+        else:
+            comps = [f"{conv}({p.name})" for p in params]
+        defaults = ["0.0f", "0.0f", "0.0f", "1.0f"]
+        comps += defaults[len(comps):width]
+        vec = f"glm::vec{width}({', '.join(comps)})"
+        out.append(impl_signature(cmd, n) + " {\n")
+        if vector:
+            out.append(f"  if ({params[0].name} == nullptr) return;\n")
+        out.append(f"  {fn}({', '.join(['ctx'] + lead + [vec])});\n}}\n\n")
+    out.append("}  // namespace glpt::impl\n")
+    with open(path, "w") as f:
+        f.write("".join(out))
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__)
+    ap.add_argument("--gl-xml", required=True)
+    ap.add_argument("--glx-xml", required=True)
+    ap.add_argument("--out", required=True, help="directory for the generated files")
+    args = ap.parse_args()
+
+    gl = ET.parse(args.gl_xml).getroot()
+    commands = parse_commands(gl)
+    names, enum_names = collect(gl, "gl", GL_FEATURES, GL_EXTENSIONS, GL_ENUM_ONLY_EXTENSIONS)
+    # Aliased core commands must exist for their aliases to use them.
+    for n in list(names):
+        a = commands[n].alias
+        if a and a in commands and a not in names:
+            names.append(a)
+    emit_enums(f"{args.out}/gl_enums.h", enum_names, parse_enums(gl, "gl"), "GL 1.0-1.5 + extensions")
+    emit_commands_header(f"{args.out}/gl_commands.hpp", names)
+    emit_impl_decls(f"{args.out}/gl_impl_decls.hpp", names, commands)
+    emit_entry_points(f"{args.out}/gl_entry_points.cpp", names, commands)
+    emit_attribute_families(f"{args.out}/gl_attribute_families.cpp", names, commands)
+
+    glx = ET.parse(args.glx_xml).getroot()
+    _, glx_enums = collect(glx, "glx", GLX_FEATURES, GLX_EXTENSIONS)
+    emit_enums(f"{args.out}/glx_enums.h", glx_enums, parse_enums(glx, "glx"), "GLX 1.0-1.4 + extensions")
+
+
+if __name__ == "__main__":
+    main()

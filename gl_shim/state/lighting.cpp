@@ -1,0 +1,251 @@
+// glLight*, glLightModel*, glMaterial*, glColorMaterial, glShadeModel and their queries
+// (GL 1.5 spec 2.14).
+#include "gl_shim/state/lighting.hpp"
+
+#include <cmath>
+#include <limits>
+
+#include "gl_shim/context.hpp"
+#include "gl_shim/dispatch.hpp"
+#include "gl_shim/gl_enums.h"
+#include "gl_shim/gl_impl_decls.hpp"
+
+namespace glpt {
+
+LightingState::LightingState() {
+  // GL_LIGHT0 alone has a white diffuse and specular by default; the others are black.
+  for (int i = 1; i < kMaxLights; ++i) {
+    lights[i].diffuse = glm::vec4(0, 0, 0, 1);
+    lights[i].specular = glm::vec4(0, 0, 0, 1);
+  }
+}
+
+namespace {
+
+// Integer colours map [-2^31, 2^31-1] linearly to [-1, 1] (spec 2.14.1); other integer
+// parameters convert directly.
+float color_component(GLint v) { return static_cast<float>((2.0 * v + 1.0) / 4294967295.0); }
+float color_component(GLfloat v) { return v; }
+float plain_component(GLint v) { return static_cast<float>(v); }
+float plain_component(GLfloat v) { return v; }
+
+template <typename T>
+glm::vec4 color4(const T* p) {
+  return {color_component(p[0]), color_component(p[1]), color_component(p[2]), color_component(p[3])};
+}
+template <typename T>
+glm::vec4 plain4(const T* p) {
+  return {plain_component(p[0]), plain_component(p[1]), plain_component(p[2]), plain_component(p[3])};
+}
+
+rt::Light* light_of(Context& ctx, GLenum light) {
+  if (light < GL_LIGHT0 || light >= GL_LIGHT0 + kMaxLights) {
+    record_error(ctx, GL_INVALID_ENUM);
+    return nullptr;
+  }
+  return &ctx.lighting.lights[light - GL_LIGHT0];
+}
+
+template <typename T>
+void set_light(Context& ctx, GLenum light, GLenum pname, const T* p, bool scalar_call) {
+  rt::Light* l = light_of(ctx, light);
+  if (!l) return;
+  const bool scalar_pname = pname == GL_SPOT_EXPONENT || pname == GL_SPOT_CUTOFF ||
+                            pname == GL_CONSTANT_ATTENUATION || pname == GL_LINEAR_ATTENUATION ||
+                            pname == GL_QUADRATIC_ATTENUATION;
+  if (scalar_call && !scalar_pname) {
+    record_error(ctx, GL_INVALID_ENUM);
+    return;
+  }
+  const glm::mat4& mv = ctx.matrices.modelview.top();
+  switch (pname) {
+    case GL_AMBIENT: l->ambient = color4(p); break;
+    case GL_DIFFUSE: l->diffuse = color4(p); break;
+    case GL_SPECULAR: l->specular = color4(p); break;
+    case GL_POSITION: l->position = mv * plain4(p); break;  // stored in eye space
+    case GL_SPOT_DIRECTION:
+      l->spot_direction = glm::mat3(mv) * glm::vec3(plain_component(p[0]), plain_component(p[1]),
+                                                    plain_component(p[2]));
+      break;
+    case GL_SPOT_EXPONENT: {
+      const float v = plain_component(p[0]);
+      if (!(v >= 0.0f && v <= 128.0f)) return record_error(ctx, GL_INVALID_VALUE);
+      l->spot_exponent = v;
+      break;
+    }
+    case GL_SPOT_CUTOFF: {
+      const float v = plain_component(p[0]);
+      if (!((v >= 0.0f && v <= 90.0f) || v == 180.0f)) return record_error(ctx, GL_INVALID_VALUE);
+      l->spot_cutoff = v;
+      break;
+    }
+    case GL_CONSTANT_ATTENUATION:
+    case GL_LINEAR_ATTENUATION:
+    case GL_QUADRATIC_ATTENUATION: {
+      const float v = plain_component(p[0]);
+      if (!(v >= 0.0f)) return record_error(ctx, GL_INVALID_VALUE);
+      (pname == GL_CONSTANT_ATTENUATION ? l->constant_attenuation
+       : pname == GL_LINEAR_ATTENUATION ? l->linear_attenuation
+                                        : l->quadratic_attenuation) = v;
+      break;
+    }
+    default:
+      return record_error(ctx, GL_INVALID_ENUM);
+  }
+  ++ctx.lighting.material_version;
+}
+
+template <typename T>
+void set_light_model(Context& ctx, GLenum pname, const T* p, bool scalar_call) {
+  LightingState& s = ctx.lighting;
+  switch (pname) {
+    case GL_LIGHT_MODEL_AMBIENT:
+      if (scalar_call) return record_error(ctx, GL_INVALID_ENUM);
+      s.model_ambient = color4(p);
+      break;
+    case GL_LIGHT_MODEL_TWO_SIDE: s.two_side = plain_component(p[0]) != 0; break;
+    case GL_LIGHT_MODEL_LOCAL_VIEWER: s.local_viewer = plain_component(p[0]) != 0; break;
+    case GL_LIGHT_MODEL_COLOR_CONTROL: {
+      const auto v = static_cast<GLenum>(plain_component(p[0]));
+      if (v != GL_SINGLE_COLOR && v != GL_SEPARATE_SPECULAR_COLOR) return record_error(ctx, GL_INVALID_ENUM);
+      break;
+    }
+    default:
+      return record_error(ctx, GL_INVALID_ENUM);
+  }
+  ++s.material_version;
+}
+
+template <typename T>
+void set_material(Context& ctx, GLenum face, GLenum pname, const T* p, bool scalar_call) {
+  if (face != GL_FRONT && face != GL_BACK && face != GL_FRONT_AND_BACK) return record_error(ctx, GL_INVALID_ENUM);
+  if (scalar_call && pname != GL_SHININESS) return record_error(ctx, GL_INVALID_ENUM);
+  auto apply = [&](rt::Material& m) -> bool {
+    switch (pname) {
+      case GL_AMBIENT: m.ambient = color4(p); return true;
+      case GL_DIFFUSE: m.diffuse = color4(p); return true;
+      case GL_SPECULAR: m.specular = color4(p); return true;
+      case GL_EMISSION: m.emission = color4(p); return true;
+      case GL_AMBIENT_AND_DIFFUSE: m.ambient = m.diffuse = color4(p); return true;
+      case GL_SHININESS: {
+        const float v = plain_component(p[0]);
+        if (!(v >= 0.0f && v <= 128.0f)) {
+          record_error(ctx, GL_INVALID_VALUE);
+          return false;
+        }
+        m.shininess = v;
+        return true;
+      }
+      case GL_COLOR_INDEXES: return true;  // colour-index mode is not supported; accepted and ignored
+      default: record_error(ctx, GL_INVALID_ENUM); return false;
+    }
+  };
+  bool ok = true;
+  if (face != GL_BACK) ok = apply(ctx.lighting.front);
+  if (ok && face != GL_FRONT) apply(ctx.lighting.back);
+  ++ctx.lighting.material_version;
+}
+
+template <typename T>
+void get_light(Context& ctx, GLenum light, GLenum pname, T* out) {
+  rt::Light* l = light_of(ctx, light);
+  if (!l) return;
+  auto put = [&](const float* v, int n) {
+    for (int i = 0; i < n; ++i) out[i] = static_cast<T>(v[i]);
+  };
+  switch (pname) {
+    case GL_AMBIENT: put(&l->ambient.x, 4); break;
+    case GL_DIFFUSE: put(&l->diffuse.x, 4); break;
+    case GL_SPECULAR: put(&l->specular.x, 4); break;
+    case GL_POSITION: put(&l->position.x, 4); break;
+    case GL_SPOT_DIRECTION: put(&l->spot_direction.x, 3); break;
+    case GL_SPOT_EXPONENT: put(&l->spot_exponent, 1); break;
+    case GL_SPOT_CUTOFF: put(&l->spot_cutoff, 1); break;
+    case GL_CONSTANT_ATTENUATION: put(&l->constant_attenuation, 1); break;
+    case GL_LINEAR_ATTENUATION: put(&l->linear_attenuation, 1); break;
+    case GL_QUADRATIC_ATTENUATION: put(&l->quadratic_attenuation, 1); break;
+    default: record_error(ctx, GL_INVALID_ENUM);
+  }
+}
+
+template <typename T>
+void get_material(Context& ctx, GLenum face, GLenum pname, T* out) {
+  if (face != GL_FRONT && face != GL_BACK) return record_error(ctx, GL_INVALID_ENUM);
+  const rt::Material& m = face == GL_FRONT ? ctx.lighting.front : ctx.lighting.back;
+  auto put = [&](const float* v, int n) {
+    for (int i = 0; i < n; ++i) out[i] = static_cast<T>(v[i]);
+  };
+  switch (pname) {
+    case GL_AMBIENT: put(&m.ambient.x, 4); break;
+    case GL_DIFFUSE: put(&m.diffuse.x, 4); break;
+    case GL_SPECULAR: put(&m.specular.x, 4); break;
+    case GL_EMISSION: put(&m.emission.x, 4); break;
+    case GL_SHININESS: put(&m.shininess, 1); break;
+    default: record_error(ctx, GL_INVALID_ENUM);
+  }
+}
+
+}  // namespace
+
+namespace impl {
+
+void glLightf(Context& ctx, GLenum light, GLenum pname, GLfloat param) { set_light(ctx, light, pname, &param, true); }
+void glLighti(Context& ctx, GLenum light, GLenum pname, GLint param) { set_light(ctx, light, pname, &param, true); }
+void glLightfv(Context& ctx, GLenum light, GLenum pname, const GLfloat* params) {
+  if (!params) return record_error(ctx, GL_INVALID_VALUE);
+  set_light(ctx, light, pname, params, false);
+}
+void glLightiv(Context& ctx, GLenum light, GLenum pname, const GLint* params) {
+  if (!params) return record_error(ctx, GL_INVALID_VALUE);
+  set_light(ctx, light, pname, params, false);
+}
+void glLightModelf(Context& ctx, GLenum pname, GLfloat param) { set_light_model(ctx, pname, &param, true); }
+void glLightModeli(Context& ctx, GLenum pname, GLint param) { set_light_model(ctx, pname, &param, true); }
+void glLightModelfv(Context& ctx, GLenum pname, const GLfloat* params) {
+  if (!params) return record_error(ctx, GL_INVALID_VALUE);
+  set_light_model(ctx, pname, params, false);
+}
+void glLightModeliv(Context& ctx, GLenum pname, const GLint* params) {
+  if (!params) return record_error(ctx, GL_INVALID_VALUE);
+  set_light_model(ctx, pname, params, false);
+}
+void glMaterialf(Context& ctx, GLenum face, GLenum pname, GLfloat param) { set_material(ctx, face, pname, &param, true); }
+void glMateriali(Context& ctx, GLenum face, GLenum pname, GLint param) { set_material(ctx, face, pname, &param, true); }
+void glMaterialfv(Context& ctx, GLenum face, GLenum pname, const GLfloat* params) {
+  if (!params) return record_error(ctx, GL_INVALID_VALUE);
+  set_material(ctx, face, pname, params, false);
+}
+void glMaterialiv(Context& ctx, GLenum face, GLenum pname, const GLint* params) {
+  if (!params) return record_error(ctx, GL_INVALID_VALUE);
+  set_material(ctx, face, pname, params, false);
+}
+void glGetLightfv(Context& ctx, GLenum light, GLenum pname, GLfloat* params) {
+  if (params) get_light(ctx, light, pname, params);
+}
+void glGetLightiv(Context& ctx, GLenum light, GLenum pname, GLint* params) {
+  if (params) get_light(ctx, light, pname, params);
+}
+void glGetMaterialfv(Context& ctx, GLenum face, GLenum pname, GLfloat* params) {
+  if (params) get_material(ctx, face, pname, params);
+}
+void glGetMaterialiv(Context& ctx, GLenum face, GLenum pname, GLint* params) {
+  if (params) get_material(ctx, face, pname, params);
+}
+
+void glColorMaterial(Context& ctx, GLenum face, GLenum mode) {
+  if (face != GL_FRONT && face != GL_BACK && face != GL_FRONT_AND_BACK) return record_error(ctx, GL_INVALID_ENUM);
+  if (mode != GL_EMISSION && mode != GL_AMBIENT && mode != GL_DIFFUSE && mode != GL_SPECULAR &&
+      mode != GL_AMBIENT_AND_DIFFUSE)
+    return record_error(ctx, GL_INVALID_ENUM);
+  ctx.lighting.color_material_face = face;
+  ctx.lighting.color_material_mode = mode;
+  ++ctx.lighting.material_version;
+}
+
+void glShadeModel(Context& ctx, GLenum mode) {
+  if (mode != GL_FLAT && mode != GL_SMOOTH) return record_error(ctx, GL_INVALID_ENUM);
+  ctx.lighting.shade_model = mode;
+}
+
+}  // namespace impl
+}  // namespace glpt
