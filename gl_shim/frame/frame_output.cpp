@@ -72,8 +72,11 @@ void FrameOutput::swap(WindowTarget* target) {
   if (!settings_.png_dir.empty() && frame_index_ % settings_.png_every == 0 && width_ > 0) {
     char name[64];
     std::snprintf(name, sizeof name, "frame_%06" PRIu64 ".png", frame_index_);
+    // The PNG shows what the window shows: opaque. (glReadPixels still returns GL's alpha.)
+    png_scratch_ = image_;
+    for (size_t i = 3; i < png_scratch_.size(); i += 4) png_scratch_[i] = 255;
     std::string error;
-    if (!write_png_rgba8(settings_.png_dir + "/" + name, width_, height_, image_.data(), true, &error))
+    if (!write_png_rgba8(settings_.png_dir + "/" + name, width_, height_, png_scratch_.data(), true, &error))
       std::fprintf(stderr, "glpt: %s\n", error.c_str());
   }
   if (settings_.stats) {

@@ -51,6 +51,7 @@ class FrameOutput {
   std::unique_ptr<rt::Renderer> renderer_;
   OutputSettings settings_;
   std::vector<uint8_t> image_;
+  std::vector<uint8_t> png_scratch_;
   uint32_t width_ = 0, height_ = 0;
   rt::FrameStats last_stats_;
   double last_capture_ms_ = 0;

@@ -9,6 +9,7 @@
 #include "gl_shim/context.hpp"
 #include "gl_shim/dispatch.hpp"
 #include "gl_shim/glx/fbconfigs.hpp"
+#include "gl_shim/glx/glx_api.hpp"
 #include "gl_shim/glx/glx_types.hpp"
 #include "gl_shim/glx/x11_window_target.hpp"
 #include "gl_shim/glx_enums.h"

@@ -47,9 +47,16 @@ TEST_F(GlTest, EnableStateRoundTrips) {
 TEST_F(GlTest, NestedBeginIsInvalidOperation) {
   glBegin(GL_TRIANGLES);
   glBegin(GL_TRIANGLES);
-  EXPECT_EQ(glGetError(), GLenum{GL_INVALID_OPERATION});
   glEnd();
+  EXPECT_EQ(glGetError(), GLenum{GL_INVALID_OPERATION});
   EXPECT_EQ(glGetError(), GLenum{GL_NO_ERROR});
+}
+
+TEST_F(GlTest, GetErrorInsideBeginEndIsItselfAnError) {
+  glBegin(GL_TRIANGLES);
+  EXPECT_EQ(glGetError(), GLenum{GL_NO_ERROR});  // returns 0 and flags GL_INVALID_OPERATION
+  glEnd();
+  EXPECT_EQ(glGetError(), GLenum{GL_INVALID_OPERATION});
 }
 
 TEST_F(GlTest, UnimplementedCommandSetsInvalidOperationOnceAndCounts) {
