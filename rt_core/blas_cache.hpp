@@ -1,0 +1,76 @@
+// Bottom-level acceleration structures, one per distinct Geometry (by content_hash), built once
+// and reused across frames, together with the geometry's shading data in the same sorted order.
+#pragma once
+
+#include <cstdint>
+#include <glm/vec3.hpp>
+#include <memory>
+#include <span>
+#include <unordered_map>
+#include <vector>
+
+#include "rt_core/frame.hpp"
+#include "rt_core/gpu_buffer.hpp"
+#include "rt_core/vk_device.hpp"
+#include "rt_core/vk_raii.hpp"
+
+namespace glpt::rt {
+
+struct BlasEntry {
+  // ShadingVertex[3 * triangle_count] (also the BLAS build input), then GpuMaterial[].
+  GpuBuffer shading;
+  VkDeviceAddress vertices_address = 0;
+  VkDeviceAddress materials_address = 0;
+  GpuBuffer storage;  // backs `blas`
+  vk::AccelerationStructure blas;
+  VkDeviceAddress blas_address = 0;
+  // BLAS primitive index -> triangle index in the Geometry (Morton order, see morton_sort.hpp).
+  std::vector<uint32_t> triangle_order;
+  uint32_t triangle_count = 0;
+  glm::vec3 bounds_min{0.0f}, bounds_max{0.0f};  // object space, finite vertices only
+  bool has_lit_material = false;
+  uint64_t last_used_frame = 0;
+};
+
+struct BlasPrepareStats {
+  double upload_ms = 0;  // host work: sorting, packing, allocating
+  double build_ms = 0;   // submit + wait of the builds
+  uint32_t builds = 0;
+  uint32_t reused = 0;
+};
+
+class BlasCache {
+ public:
+  // Entries not used for this many frames are dropped (geometry that changes every frame would
+  // otherwise accumulate without bound).
+  static constexpr uint64_t kEvictAfterUnusedFrames = 60;
+  // Above this many bytes (shading data + BLAS), the least recently used entries not needed by
+  // the current frame go early: a program that streams new geometry every frame would otherwise
+  // keep 60 frames' worth of it.
+  static constexpr VkDeviceSize kMemoryBudgetBytes = VkDeviceSize{512} << 20;
+
+  explicit BlasCache(VulkanDevice& device) : device_(device) {}
+
+  // Makes sure every geometry (with at least one triangle) has an entry, building all missing
+  // BLASes in one submission. Duplicates in `geometries` count once. Throws VulkanError; entries
+  // whose build did not complete are not kept.
+  BlasPrepareStats prepare(std::span<const Geometry* const> geometries, uint64_t frame_number);
+
+  const BlasEntry* find(uint64_t content_hash) const;
+  // Drops entries unused for kEvictAfterUnusedFrames, then, while over kMemoryBudgetBytes, the
+  // least recently used ones not used in `frame_number`.
+  void evict_unused(uint64_t frame_number);
+  size_t size() const { return entries_.size(); }
+  VkDeviceSize memory_bytes() const { return memory_bytes_; }
+
+ private:
+  struct PendingBuild;
+  std::unique_ptr<BlasEntry> create_entry(const Geometry& geometry, PendingBuild& build) const;
+
+  VulkanDevice& device_;
+  std::unordered_map<uint64_t, std::unique_ptr<BlasEntry>> entries_;
+  GpuBuffer scratch_;              // shared by all builds; only one batch is in flight at a time
+  VkDeviceSize memory_bytes_ = 0;  // sum of entry_bytes() over entries_
+};
+
+}  // namespace glpt::rt

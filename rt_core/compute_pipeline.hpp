@@ -1,0 +1,41 @@
+// A compute pipeline with one descriptor set (layout, pool, set), built from embedded SPIR-V.
+// Shared plumbing of the passes (path_trace_pass, tonemap_pass).
+#pragma once
+
+#include <cstdint>
+#include <span>
+
+#include "rt_core/vk_device.hpp"
+#include "rt_core/vk_raii.hpp"
+
+namespace glpt::rt {
+
+class ComputePipeline {
+ public:
+  // `bindings` are all compute-stage bindings of set 0. Throws VulkanError.
+  ComputePipeline(const VulkanDevice& device, std::span<const uint32_t> spirv,
+                  std::span<const VkDescriptorSetLayoutBinding> bindings);
+
+  VkPipeline pipeline() const { return pipeline_.get(); }
+  VkPipelineLayout layout() const { return layout_.get(); }
+  VkDescriptorSet descriptor_set() const { return descriptor_set_; }
+
+  // Binds the pipeline and its set and dispatches enough GLPT_TILE_SIZE^2 groups to cover
+  // width x height invocations.
+  void dispatch_tiles(VkCommandBuffer cmd, uint32_t width, uint32_t height) const;
+
+ private:
+  vk::DescriptorSetLayout set_layout_;
+  vk::PipelineLayout layout_;
+  vk::Pipeline pipeline_;
+  vk::DescriptorPool pool_;
+  VkDescriptorSet descriptor_set_ = VK_NULL_HANDLE;  // freed with pool_
+};
+
+// Helpers for vkUpdateDescriptorSets.
+VkWriteDescriptorSet storage_buffer_write(VkDescriptorSet set, uint32_t binding,
+                                          const VkDescriptorBufferInfo* info);
+VkWriteDescriptorSet uniform_buffer_write(VkDescriptorSet set, uint32_t binding,
+                                          const VkDescriptorBufferInfo* info);
+
+}  // namespace glpt::rt

@@ -1,0 +1,65 @@
+#include "rt_core/path_trace_pass.hpp"
+
+#include <cstdint>
+
+#include "path_trace_spv.h"  // generated from shaders/path_trace.comp at build time
+#include "rt_core/vk_info.hpp"
+#include "shared_types.h"
+
+namespace glpt::rt {
+namespace {
+
+constexpr VkDescriptorSetLayoutBinding binding(uint32_t index, VkDescriptorType type) {
+  return {index, type, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
+}
+
+constexpr VkDescriptorSetLayoutBinding kBindings[] = {
+    binding(GLPT_PT_BINDING_SCENE, VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR),
+    binding(GLPT_PT_BINDING_INSTANCES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
+    binding(GLPT_PT_BINDING_LIGHTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
+    binding(GLPT_PT_BINDING_ACCUMULATION, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
+    binding(GLPT_PT_BINDING_COUNTERS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
+    binding(GLPT_PT_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER),
+};
+
+}  // namespace
+
+PathTracePass::PathTracePass(const VulkanDevice& device)
+    : device_(device), pipeline_(device, path_trace_spv, kBindings) {}
+
+void PathTracePass::record(VkCommandBuffer cmd, const PathTraceResources& resources, uint32_t width,
+                           uint32_t height) const {
+  const VkDescriptorSet set = pipeline_.descriptor_set();
+  auto scene_info = make_info<VkWriteDescriptorSetAccelerationStructureKHR>(
+      VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET_ACCELERATION_STRUCTURE_KHR);
+  scene_info.accelerationStructureCount = 1;
+  scene_info.pAccelerationStructures = &resources.scene;
+  auto scene_write =
+      make_info<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET, &scene_info);
+  scene_write.dstSet = set;
+  scene_write.dstBinding = GLPT_PT_BINDING_SCENE;
+  scene_write.descriptorCount = 1;
+  scene_write.descriptorType = VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR;
+
+  auto whole = [](const GpuBuffer* buffer) {
+    return VkDescriptorBufferInfo{buffer->handle(), 0, VK_WHOLE_SIZE};
+  };
+  const VkDescriptorBufferInfo instances = whole(resources.instances);
+  const VkDescriptorBufferInfo lights = whole(resources.lights);
+  const VkDescriptorBufferInfo accumulation = whole(resources.accumulation);
+  const VkDescriptorBufferInfo counters = whole(resources.counters);
+  const VkDescriptorBufferInfo frame{resources.frame->handle(), 0, sizeof(gpu::FrameUniforms)};
+  const VkWriteDescriptorSet writes[] = {
+      scene_write,
+      storage_buffer_write(set, GLPT_PT_BINDING_INSTANCES, &instances),
+      storage_buffer_write(set, GLPT_PT_BINDING_LIGHTS, &lights),
+      storage_buffer_write(set, GLPT_PT_BINDING_ACCUMULATION, &accumulation),
+      storage_buffer_write(set, GLPT_PT_BINDING_COUNTERS, &counters),
+      uniform_buffer_write(set, GLPT_PT_BINDING_FRAME, &frame),
+  };
+  vkUpdateDescriptorSets(device_.handle(), static_cast<uint32_t>(std::size(writes)), writes, 0,
+                         nullptr);
+  pipeline_.dispatch_tiles(cmd, width, height);
+}
+
+}  // namespace glpt::rt

@@ -1,0 +1,101 @@
+#include "rt_core/render_settings.hpp"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <optional>
+#include <vector>
+
+namespace glpt::rt {
+namespace {
+
+// Upper bounds that keep a typo from hanging the program (GLPT_SPP=1000000 per frame...).
+constexpr uint32_t kMaxSamplesPerFrame = 1024;
+constexpr uint32_t kMaxBounces = 16;
+constexpr uint32_t kMaxAccumulated = 1u << 24;  // accumulated sums stay exact-ish in float
+
+std::optional<uint32_t> parse_uint(const char* text, uint32_t min, uint32_t max) {
+  if (text == nullptr || *text == '\0' || std::strchr(text, '-') != nullptr) return std::nullopt;
+  errno = 0;
+  char* end = nullptr;
+  unsigned long value = std::strtoul(text, &end, 10);
+  if (errno != 0 || *end != '\0' || value < min || value > max) return std::nullopt;
+  return static_cast<uint32_t>(value);
+}
+
+std::optional<float> parse_float(const char* text, float min, float max) {
+  if (text == nullptr || *text == '\0') return std::nullopt;
+  errno = 0;
+  char* end = nullptr;
+  float value = std::strtof(text, &end);
+  if (errno != 0 || *end != '\0' || !std::isfinite(value) || value < min || value > max) {
+    return std::nullopt;
+  }
+  return value;
+}
+
+std::optional<bool> parse_bool(const char* text) {
+  if (text == nullptr) return std::nullopt;
+  if (std::strcmp(text, "0") == 0) return false;
+  if (std::strcmp(text, "1") == 0) return true;
+  return std::nullopt;
+}
+
+}  // namespace
+
+RenderSettings parse_render_settings(const std::function<const char*(const char*)>& lookup,
+                                     std::string* warning) {
+  RenderSettings settings;
+  std::vector<std::string> problems;
+  // Sets `field` from variable `name` if it is set and `parse` accepts it; otherwise records a
+  // problem (unset variables are not problems).
+  auto apply = [&](const char* name, auto& field, auto parse, const char* expected) {
+    const char* text = lookup(name);
+    if (text == nullptr) return;
+    if (auto parsed = parse(text)) {
+      field = *parsed;
+    } else {
+      problems.push_back(std::string(name) + "=\"" + text + "\" (expected " + expected + ")");
+    }
+  };
+  apply(
+      "GLPT_SPP", settings.samples_per_pixel,
+      [](const char* text) { return parse_uint(text, 1, kMaxSamplesPerFrame); }, "1..1024");
+  apply(
+      "GLPT_BOUNCES", settings.bounces,
+      [](const char* text) { return parse_uint(text, 0, kMaxBounces); }, "0..16");
+  apply("GLPT_ACCUMULATE", settings.accumulate, parse_bool, "0 or 1");
+  apply(
+      "GLPT_MAX_SPP", settings.max_accumulated,
+      [](const char* text) { return parse_uint(text, 1, kMaxAccumulated); }, "1..16777216");
+  apply(
+      "GLPT_LIGHT_SIZE_DEG", settings.light_angular_radius_deg,
+      [](const char* text) { return parse_float(text, 0.0f, 45.0f); }, "0..45 degrees");
+  apply("GLPT_VALIDATION", settings.validation, parse_bool, "0 or 1");
+
+  if (warning != nullptr) {
+    warning->clear();
+    for (const std::string& problem : problems) {
+      *warning += warning->empty() ? "ignoring bad settings, using defaults: " : ", ";
+      *warning += problem;
+    }
+  }
+  return settings;
+}
+
+RenderSettings RenderSettings::from_environment() {
+  // Part of the C-ABI-facing API: nothing may escape, not even bad_alloc from the strings.
+  try {
+    std::string warning;
+    RenderSettings settings =
+        parse_render_settings([](const char* name) { return std::getenv(name); }, &warning);
+    if (!warning.empty()) std::fprintf(stderr, "glpt: %s\n", warning.c_str());
+    return settings;
+  } catch (...) {
+    return RenderSettings{};
+  }
+}
+
+}  // namespace glpt::rt

@@ -1,0 +1,60 @@
+#include "rt_core/shading_data.hpp"
+
+#include <cstring>
+
+namespace glpt::rt {
+
+// The shader switches on these numbers (GpuMaterial::params.z).
+static_assert(static_cast<uint32_t>(ColorSource::kNone) == GLPT_COLOR_SOURCE_NONE);
+static_assert(static_cast<uint32_t>(ColorSource::kAmbientAndDiffuse) ==
+              GLPT_COLOR_SOURCE_AMBIENT_AND_DIFFUSE);
+static_assert(static_cast<uint32_t>(ColorSource::kDiffuse) == GLPT_COLOR_SOURCE_DIFFUSE);
+static_assert(static_cast<uint32_t>(ColorSource::kAmbient) == GLPT_COLOR_SOURCE_AMBIENT);
+static_assert(static_cast<uint32_t>(ColorSource::kEmission) == GLPT_COLOR_SOURCE_EMISSION);
+static_assert(static_cast<uint32_t>(ColorSource::kSpecular) == GLPT_COLOR_SOURCE_SPECULAR);
+
+gpu::GpuMaterial pack_material(const Material& material) {
+  gpu::GpuMaterial packed{};
+  packed.ambient = material.ambient;
+  packed.diffuse = material.diffuse;
+  packed.specular = material.specular;
+  packed.emission = material.emission;
+  uint32_t shininess_bits;
+  std::memcpy(&shininess_bits, &material.shininess, sizeof shininess_bits);
+  packed.params = glm::uvec4(shininess_bits, material.lit ? 1u : 0u,
+                             static_cast<uint32_t>(material.color_source), 0u);
+  return packed;
+}
+
+size_t packed_material_count(const Geometry& geometry) {
+  return geometry.materials.empty() ? 1 : geometry.materials.size();
+}
+
+void pack_geometry(const Geometry& geometry, std::span<const uint32_t> triangle_order,
+                   std::span<gpu::ShadingVertex> vertices, std::span<gpu::GpuMaterial> materials) {
+  const size_t material_count = packed_material_count(geometry);
+  for (size_t i = 0; i < material_count; ++i) {
+    materials[i] = pack_material(geometry.materials.empty() ? Material{} : geometry.materials[i]);
+  }
+
+  const glm::vec4 kDefaultColor(1.0f);  // GL's initial current colour
+  for (size_t sorted = 0; sorted < triangle_order.size(); ++sorted) {
+    const size_t triangle = triangle_order[sorted];
+    uint32_t material_id =
+        triangle < geometry.material_ids.size() ? geometry.material_ids[triangle] : 0;
+    if (material_id >= material_count) material_id = 0;
+    for (size_t corner = 0; corner < 3; ++corner) {
+      const size_t source = 3 * triangle + corner;
+      const glm::vec3 normal =
+          source < geometry.normals.size() ? geometry.normals[source] : glm::vec3(0, 0, 1);
+      const glm::vec4 color =
+          source < geometry.colors.size() ? geometry.colors[source] : kDefaultColor;
+      gpu::ShadingVertex& out = vertices[3 * sorted + corner];
+      out.position = glm::vec4(geometry.positions[source], static_cast<float>(material_id));
+      out.normal = glm::vec4(normal, 0.0f);
+      out.color = color;
+    }
+  }
+}
+
+}  // namespace glpt::rt

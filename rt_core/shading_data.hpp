@@ -1,0 +1,25 @@
+// Conversion of a Geometry into the per-vertex and per-material records the path tracer reads
+// (shaders/shared_types.h), in the Morton-sorted triangle order its BLAS is built in.
+#pragma once
+
+#include <cstdint>
+#include <span>
+
+#include "rt_core/frame.hpp"
+#include "shared_types.h"
+
+namespace glpt::rt {
+
+gpu::GpuMaterial pack_material(const Material& material);
+
+// How many GpuMaterial records pack_geometry writes: at least one, so out-of-range or missing
+// material ids always have something to point at.
+size_t packed_material_count(const Geometry& geometry);
+
+// Writes 3 * triangle_order.size() vertices and packed_material_count() materials. Vertex
+// attributes the geometry lacks get GL's defaults (normal +Z, colour white); material ids out of
+// range become 0.
+void pack_geometry(const Geometry& geometry, std::span<const uint32_t> triangle_order,
+                   std::span<gpu::ShadingVertex> vertices, std::span<gpu::GpuMaterial> materials);
+
+}  // namespace glpt::rt

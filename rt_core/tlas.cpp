@@ -1,0 +1,83 @@
+#include "rt_core/tlas.hpp"
+
+#include <algorithm>
+
+#include "rt_core/vk_error.hpp"
+#include "rt_core/vk_info.hpp"
+
+namespace glpt::rt {
+
+VkAccelerationStructureGeometryKHR Tlas::instances_geometry() const {
+  auto geometry = make_info<VkAccelerationStructureGeometryKHR>(
+      VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR);
+  geometry.geometryType = VK_GEOMETRY_TYPE_INSTANCES_KHR;
+  geometry.flags = VK_GEOMETRY_OPAQUE_BIT_KHR;
+  geometry.geometry.instances.sType =
+      VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_INSTANCES_DATA_KHR;
+  geometry.geometry.instances.arrayOfPointers = VK_FALSE;
+  geometry.geometry.instances.data.deviceAddress = instance_buffer_.address();
+  return geometry;
+}
+
+void Tlas::reserve(uint32_t instance_count) {
+  if (structure_ && instance_count <= capacity_) return;
+  // Grow geometrically so a scene that adds objects over time re-creates rarely.
+  const uint32_t capacity = std::max({instance_count, capacity_ * 2, 16u});
+  structure_.reset();
+  instance_buffer_ =
+      GpuBuffer::create(device_, capacity * sizeof(VkAccelerationStructureInstanceKHR),
+                        VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR);
+
+  VkAccelerationStructureGeometryKHR geometry = instances_geometry();
+  auto info = make_info<VkAccelerationStructureBuildGeometryInfoKHR>(
+      VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_GEOMETRY_INFO_KHR);
+  info.type = VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR;
+  info.flags = VK_BUILD_ACCELERATION_STRUCTURE_PREFER_FAST_TRACE_BIT_KHR;
+  info.mode = VK_BUILD_ACCELERATION_STRUCTURE_MODE_BUILD_KHR;
+  info.geometryCount = 1;
+  info.pGeometries = &geometry;
+  auto sizes = make_info<VkAccelerationStructureBuildSizesInfoKHR>(
+      VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_SIZES_INFO_KHR);
+  const auto& as = device_.as_functions();
+  // Sized for `capacity` instances: later builds with fewer instances fit into it.
+  as.get_build_sizes(device_.handle(), VK_ACCELERATION_STRUCTURE_BUILD_TYPE_DEVICE_KHR, &info,
+                     &capacity, &sizes);
+  storage_ = GpuBuffer::create(device_, sizes.accelerationStructureSize,
+                               VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_STORAGE_BIT_KHR);
+  scratch_size_ = sizes.buildScratchSize + device_.scratch_alignment();
+  scratch_ = GpuBuffer::create(device_, scratch_size_, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+
+  auto create_info = make_info<VkAccelerationStructureCreateInfoKHR>(
+      VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_CREATE_INFO_KHR);
+  create_info.buffer = storage_.handle();
+  create_info.size = sizes.accelerationStructureSize;
+  create_info.type = VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR;
+  VkAccelerationStructureKHR structure = VK_NULL_HANDLE;
+  GLPT_VK_CHECK(as.create(device_.handle(), &create_info, nullptr, &structure));
+  structure_ = vk::AccelerationStructure(structure, {device_.handle(), as.destroy});
+  capacity_ = capacity;
+}
+
+double Tlas::build(std::span<const VkAccelerationStructureInstanceKHR> instances) {
+  const auto count = static_cast<uint32_t>(instances.size());
+  reserve(count);
+  instance_buffer_.write(instances.data(), instances.size_bytes());
+
+  VkAccelerationStructureGeometryKHR geometry = instances_geometry();
+  auto info = make_info<VkAccelerationStructureBuildGeometryInfoKHR>(
+      VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_GEOMETRY_INFO_KHR);
+  info.type = VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR;
+  info.flags = VK_BUILD_ACCELERATION_STRUCTURE_PREFER_FAST_TRACE_BIT_KHR;
+  info.mode = VK_BUILD_ACCELERATION_STRUCTURE_MODE_BUILD_KHR;
+  info.dstAccelerationStructure = structure_.get();
+  info.geometryCount = 1;
+  info.pGeometries = &geometry;
+  const VkDeviceSize alignment = device_.scratch_alignment();
+  info.scratchData.deviceAddress = (scratch_.address() + alignment - 1) / alignment * alignment;
+  const VkAccelerationStructureBuildRangeInfoKHR range{count, 0, 0, 0};
+  const VkAccelerationStructureBuildRangeInfoKHR* ranges = &range;
+  return device_.submit_and_wait(
+      [&](VkCommandBuffer cmd) { device_.as_functions().cmd_build(cmd, 1, &info, &ranges); });
+}
+
+}  // namespace glpt::rt

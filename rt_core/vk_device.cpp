@@ -1,0 +1,376 @@
+#include "rt_core/vk_device.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <vector>
+
+#include "rt_core/vk_error.hpp"
+#include "rt_core/vk_info.hpp"
+
+namespace glpt::rt {
+namespace {
+
+constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
+constexpr const char* kInstallHint =
+    "On Debian 12 install mesa-vulkan-drivers >= 24.1 from bookworm-backports (lavapipe with "
+    "VK_KHR_ray_query), see scripts/setup.sh.";
+
+// VK_KHR_deferred_host_operations is required by VK_KHR_acceleration_structure even though all
+// builds run on the queue.
+constexpr const char* kRequiredDeviceExtensions[] = {
+    VK_KHR_ACCELERATION_STRUCTURE_EXTENSION_NAME,
+    VK_KHR_RAY_QUERY_EXTENSION_NAME,
+    VK_KHR_DEFERRED_HOST_OPERATIONS_EXTENSION_NAME,
+};
+
+bool has_layer(const char* name) {
+  uint32_t count = 0;
+  vkEnumerateInstanceLayerProperties(&count, nullptr);
+  std::vector<VkLayerProperties> layers(count);
+  vkEnumerateInstanceLayerProperties(&count, layers.data());
+  return std::any_of(layers.begin(), layers.end(), [&](const VkLayerProperties& layer) {
+    return std::strcmp(layer.layerName, name) == 0;
+  });
+}
+
+struct Candidate {
+  VkPhysicalDevice device = VK_NULL_HANDLE;
+  std::string name;
+  VkPhysicalDeviceType type = VK_PHYSICAL_DEVICE_TYPE_OTHER;
+  uint32_t compute_queue_family = UINT32_MAX;
+  std::vector<std::string> missing;  // empty: usable
+};
+
+Candidate evaluate(VkPhysicalDevice device) {
+  Candidate candidate;
+  candidate.device = device;
+  VkPhysicalDeviceProperties properties;
+  vkGetPhysicalDeviceProperties(device, &properties);
+  candidate.name = properties.deviceName;
+  candidate.type = properties.deviceType;
+  if (properties.apiVersion < VK_API_VERSION_1_2) candidate.missing.push_back("Vulkan 1.2");
+
+  uint32_t count = 0;
+  vkEnumerateDeviceExtensionProperties(device, nullptr, &count, nullptr);
+  std::vector<VkExtensionProperties> extensions(count);
+  vkEnumerateDeviceExtensionProperties(device, nullptr, &count, extensions.data());
+  for (const char* wanted : kRequiredDeviceExtensions) {
+    bool found = std::any_of(extensions.begin(), extensions.end(), [&](const auto& extension) {
+      return std::strcmp(extension.extensionName, wanted) == 0;
+    });
+    if (!found) candidate.missing.push_back(wanted);
+  }
+  if (!candidate.missing.empty()) return candidate;  // feature structs may not be understood
+
+  auto ray_query = make_info<VkPhysicalDeviceRayQueryFeaturesKHR>(
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_QUERY_FEATURES_KHR);
+  auto acceleration = make_info<VkPhysicalDeviceAccelerationStructureFeaturesKHR>(
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_FEATURES_KHR, &ray_query);
+  auto vulkan12 = make_info<VkPhysicalDeviceVulkan12Features>(
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES, &acceleration);
+  auto features =
+      make_info<VkPhysicalDeviceFeatures2>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &vulkan12);
+  vkGetPhysicalDeviceFeatures2(device, &features);
+  if (!vulkan12.bufferDeviceAddress) candidate.missing.push_back("bufferDeviceAddress");
+  if (!acceleration.accelerationStructure) candidate.missing.push_back("accelerationStructure");
+  if (!ray_query.rayQuery) candidate.missing.push_back("rayQuery");
+
+  // The path tracer counts rays with subgroupAdd.
+  auto subgroup = make_info<VkPhysicalDeviceSubgroupProperties>(
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES);
+  auto properties2 = make_info<VkPhysicalDeviceProperties2>(
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &subgroup);
+  vkGetPhysicalDeviceProperties2(device, &properties2);
+  if (!(subgroup.supportedStages & VK_SHADER_STAGE_COMPUTE_BIT) ||
+      !(subgroup.supportedOperations & VK_SUBGROUP_FEATURE_ARITHMETIC_BIT)) {
+    candidate.missing.push_back("subgroup arithmetic in compute shaders");
+  }
+
+  vkGetPhysicalDeviceQueueFamilyProperties(device, &count, nullptr);
+  std::vector<VkQueueFamilyProperties> families(count);
+  vkGetPhysicalDeviceQueueFamilyProperties(device, &count, families.data());
+  for (uint32_t i = 0; i < count; ++i) {
+    if (families[i].queueFlags & VK_QUEUE_COMPUTE_BIT) {
+      candidate.compute_queue_family = i;
+      break;
+    }
+  }
+  if (candidate.compute_queue_family == UINT32_MAX) candidate.missing.push_back("a compute queue");
+  return candidate;
+}
+
+std::string join(const std::vector<std::string>& parts, const char* separator) {
+  std::string joined;
+  for (const std::string& part : parts) {
+    if (!joined.empty()) joined += separator;
+    joined += part;
+  }
+  return joined;
+}
+
+const Candidate& choose(const std::vector<Candidate>& candidates, const std::string& name_filter) {
+  std::vector<std::string> reasons;
+  const Candidate* best = nullptr;
+  for (const Candidate& candidate : candidates) {
+    if (!name_filter.empty() && candidate.name.find(name_filter) == std::string::npos) continue;
+    if (!candidate.missing.empty()) {
+      reasons.push_back(candidate.name + " lacks " + join(candidate.missing, ", "));
+      continue;
+    }
+    // Without a filter, prefer a CPU device: glpt targets lavapipe, and a machine with both
+    // should not silently switch to a GPU with a different look or different bugs.
+    bool better =
+        best == nullptr || (name_filter.empty() && candidate.type == VK_PHYSICAL_DEVICE_TYPE_CPU &&
+                            best->type != VK_PHYSICAL_DEVICE_TYPE_CPU);
+    if (better) best = &candidate;
+  }
+  if (best != nullptr) return *best;
+
+  std::string message;
+  if (!name_filter.empty() && reasons.empty()) {
+    std::vector<std::string> names;
+    for (const Candidate& candidate : candidates) names.push_back(candidate.name);
+    message = "GLPT_VK_DEVICE=\"" + name_filter + "\" matches no Vulkan device (devices: " +
+              (names.empty() ? std::string("none") : join(names, ", ")) + ").";
+  } else {
+    message = "no Vulkan device with VK_KHR_ray_query and VK_KHR_acceleration_structure (" +
+              (reasons.empty() ? std::string("no Vulkan devices found") : join(reasons, "; ")) +
+              "). " + kInstallHint;
+  }
+  throw DeviceUnavailable("glpt: " + message);
+}
+
+}  // namespace
+
+VKAPI_ATTR VkBool32 VKAPI_CALL VulkanDevice::on_validation_message(
+    VkDebugUtilsMessageSeverityFlagBitsEXT severity, VkDebugUtilsMessageTypeFlagsEXT,
+    const VkDebugUtilsMessengerCallbackDataEXT* data, void* user_data) {
+  auto* self = static_cast<VulkanDevice*>(user_data);
+  ++self->validation_messages_;
+  const char* level =
+      (severity & VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT) ? "error" : "warning";
+  std::fprintf(stderr, "glpt: [vulkan validation %s] %s\n", level, data->pMessage);
+  return VK_FALSE;
+}
+
+std::unique_ptr<VulkanDevice> VulkanDevice::create(const DeviceOptions& options) {
+  std::unique_ptr<VulkanDevice> self(new VulkanDevice());
+
+  // ---- instance
+  bool validation = options.validation && has_layer(kValidationLayer);
+  if (options.validation && !validation) {
+    std::fprintf(stderr,
+                 "glpt: GLPT_VALIDATION=1 but %s is not installed (apt-get install "
+                 "vulkan-validationlayers); continuing without it\n",
+                 kValidationLayer);
+  }
+  auto application = make_info<VkApplicationInfo>(VK_STRUCTURE_TYPE_APPLICATION_INFO);
+  application.pApplicationName = "glpt";
+  application.pEngineName = "glpt";
+  application.apiVersion = VK_API_VERSION_1_2;
+
+  auto messenger_info = make_info<VkDebugUtilsMessengerCreateInfoEXT>(
+      VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT);
+  messenger_info.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT |
+                                   VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
+  messenger_info.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
+                               VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
+                               VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
+  messenger_info.pfnUserCallback = &VulkanDevice::on_validation_message;
+  messenger_info.pUserData = self.get();
+
+  // Synchronization validation too: every stage is a separate submission, and a missing barrier
+  // between them would go unnoticed on lavapipe, which runs submissions strictly in order.
+  const VkValidationFeatureEnableEXT validation_features_enabled[] = {
+      VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT};
+  auto validation_features = make_info<VkValidationFeaturesEXT>(
+      VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT, &messenger_info);
+  validation_features.enabledValidationFeatureCount = 1;
+  validation_features.pEnabledValidationFeatures = validation_features_enabled;
+
+  std::vector<const char*> layers;
+  std::vector<const char*> extensions;
+  if (validation) {
+    layers.push_back(kValidationLayer);
+    extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+    extensions.push_back(VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME);  // provided by the layer
+  }
+  auto instance_info = make_info<VkInstanceCreateInfo>(VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO);
+  // The chained messenger also reports problems inside vkCreateInstance / vkDestroyInstance.
+  instance_info.pNext = validation ? &validation_features : nullptr;
+  instance_info.pApplicationInfo = &application;
+  instance_info.enabledLayerCount = static_cast<uint32_t>(layers.size());
+  instance_info.ppEnabledLayerNames = layers.data();
+  instance_info.enabledExtensionCount = static_cast<uint32_t>(extensions.size());
+  instance_info.ppEnabledExtensionNames = extensions.data();
+  VkInstance instance = VK_NULL_HANDLE;
+  VkResult result = vkCreateInstance(&instance_info, nullptr, &instance);
+  if (result != VK_SUCCESS) {
+    throw DeviceUnavailable(
+        "glpt: no Vulkan device with VK_KHR_ray_query and VK_KHR_acceleration_structure: cannot "
+        "create a Vulkan instance (" +
+        vk_result_name(result) + "), is a Vulkan driver installed? " + kInstallHint);
+  }
+  self->instance_ = vk::Instance(instance, {});
+
+  if (validation) {
+    auto create_messenger = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
+        vkGetInstanceProcAddr(instance, "vkCreateDebugUtilsMessengerEXT"));
+    auto destroy_messenger = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
+        vkGetInstanceProcAddr(instance, "vkDestroyDebugUtilsMessengerEXT"));
+    if (create_messenger != nullptr && destroy_messenger != nullptr) {
+      VkDebugUtilsMessengerEXT messenger = VK_NULL_HANDLE;
+      GLPT_VK_CHECK(create_messenger(instance, &messenger_info, nullptr, &messenger));
+      self->messenger_ = vk::DebugMessenger(messenger, {instance, destroy_messenger});
+    }
+  }
+
+  // ---- physical device
+  uint32_t count = 0;
+  GLPT_VK_CHECK(vkEnumeratePhysicalDevices(instance, &count, nullptr));
+  std::vector<VkPhysicalDevice> physical_devices(count);
+  GLPT_VK_CHECK(vkEnumeratePhysicalDevices(instance, &count, physical_devices.data()));
+  std::vector<Candidate> candidates;
+  for (VkPhysicalDevice device : physical_devices) candidates.push_back(evaluate(device));
+  const Candidate& chosen = choose(candidates, options.name_filter);
+  self->physical_device_ = chosen.device;
+  self->name_ = chosen.name;
+
+  auto as_properties = make_info<VkPhysicalDeviceAccelerationStructurePropertiesKHR>(
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_PROPERTIES_KHR);
+  auto properties = make_info<VkPhysicalDeviceProperties2>(
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &as_properties);
+  vkGetPhysicalDeviceProperties2(chosen.device, &properties);
+  self->limits_ = properties.properties.limits;
+  self->scratch_alignment_ =
+      std::max<VkDeviceSize>(as_properties.minAccelerationStructureScratchOffsetAlignment, 1);
+  vkGetPhysicalDeviceMemoryProperties(chosen.device, &self->memory_properties_);
+
+  // ---- logical device: enable exactly what the shaders and builders use
+  auto ray_query = make_info<VkPhysicalDeviceRayQueryFeaturesKHR>(
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_QUERY_FEATURES_KHR);
+  ray_query.rayQuery = VK_TRUE;
+  auto acceleration = make_info<VkPhysicalDeviceAccelerationStructureFeaturesKHR>(
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_FEATURES_KHR, &ray_query);
+  acceleration.accelerationStructure = VK_TRUE;
+  auto vulkan12 = make_info<VkPhysicalDeviceVulkan12Features>(
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES, &acceleration);
+  vulkan12.bufferDeviceAddress = VK_TRUE;
+  auto features =
+      make_info<VkPhysicalDeviceFeatures2>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &vulkan12);
+
+  float priority = 1.0f;
+  auto queue_info = make_info<VkDeviceQueueCreateInfo>(VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO);
+  queue_info.queueFamilyIndex = chosen.compute_queue_family;
+  queue_info.queueCount = 1;
+  queue_info.pQueuePriorities = &priority;
+
+  auto device_info = make_info<VkDeviceCreateInfo>(VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO);
+  device_info.pNext = &features;  // pEnabledFeatures stays null when features are chained
+  device_info.queueCreateInfoCount = 1;
+  device_info.pQueueCreateInfos = &queue_info;
+  device_info.enabledExtensionCount = static_cast<uint32_t>(std::size(kRequiredDeviceExtensions));
+  device_info.ppEnabledExtensionNames = kRequiredDeviceExtensions;
+  VkDevice device = VK_NULL_HANDLE;
+  GLPT_VK_CHECK(vkCreateDevice(chosen.device, &device_info, nullptr, &device));
+  self->device_ = vk::Device(device, {});
+  vkGetDeviceQueue(device, chosen.compute_queue_family, 0, &self->queue_);
+
+  auto load = [&](const char* name) {
+    PFN_vkVoidFunction function = vkGetDeviceProcAddr(device, name);
+    if (function == nullptr)
+      throw VulkanError(std::string("vkGetDeviceProcAddr(") + name + ") failed");
+    return function;
+  };
+  auto& as = self->as_functions_;
+  as.create = reinterpret_cast<PFN_vkCreateAccelerationStructureKHR>(
+      load("vkCreateAccelerationStructureKHR"));
+  as.destroy = reinterpret_cast<PFN_vkDestroyAccelerationStructureKHR>(
+      load("vkDestroyAccelerationStructureKHR"));
+  as.get_build_sizes = reinterpret_cast<PFN_vkGetAccelerationStructureBuildSizesKHR>(
+      load("vkGetAccelerationStructureBuildSizesKHR"));
+  as.cmd_build = reinterpret_cast<PFN_vkCmdBuildAccelerationStructuresKHR>(
+      load("vkCmdBuildAccelerationStructuresKHR"));
+  as.get_device_address = reinterpret_cast<PFN_vkGetAccelerationStructureDeviceAddressKHR>(
+      load("vkGetAccelerationStructureDeviceAddressKHR"));
+
+  // ---- one command buffer + fence, reused by every submit_and_wait
+  auto pool_info = make_info<VkCommandPoolCreateInfo>(VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO);
+  pool_info.flags =
+      VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT | VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
+  pool_info.queueFamilyIndex = chosen.compute_queue_family;
+  VkCommandPool pool = VK_NULL_HANDLE;
+  GLPT_VK_CHECK(vkCreateCommandPool(device, &pool_info, nullptr, &pool));
+  self->command_pool_ = vk::CommandPool(pool, {device});
+
+  auto allocate_info =
+      make_info<VkCommandBufferAllocateInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO);
+  allocate_info.commandPool = pool;
+  allocate_info.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+  allocate_info.commandBufferCount = 1;
+  GLPT_VK_CHECK(vkAllocateCommandBuffers(device, &allocate_info, &self->command_buffer_));
+
+  auto fence_info = make_info<VkFenceCreateInfo>(VK_STRUCTURE_TYPE_FENCE_CREATE_INFO);
+  VkFence fence = VK_NULL_HANDLE;
+  GLPT_VK_CHECK(vkCreateFence(device, &fence_info, nullptr, &fence));
+  self->fence_ = vk::Fence(fence, {device});
+  return self;
+}
+
+VulkanDevice::~VulkanDevice() {
+  // Nothing may be in flight when the members below start destroying objects.
+  if (device_) vkDeviceWaitIdle(device_.get());
+}
+
+uint32_t VulkanDevice::memory_type(uint32_t type_bits, VkMemoryPropertyFlags required,
+                                   VkMemoryPropertyFlags preferred) const {
+  uint32_t fallback = UINT32_MAX;
+  for (uint32_t i = 0; i < memory_properties_.memoryTypeCount; ++i) {
+    VkMemoryPropertyFlags flags = memory_properties_.memoryTypes[i].propertyFlags;
+    if (!(type_bits & (1u << i)) || (flags & required) != required) continue;
+    if ((flags & preferred) == preferred) return i;
+    if (fallback == UINT32_MAX) fallback = i;
+  }
+  if (fallback == UINT32_MAX) throw VulkanError("no Vulkan memory type with the required flags");
+  return fallback;
+}
+
+double VulkanDevice::submit_and_wait(const std::function<void(VkCommandBuffer)>& record) {
+  VkCommandBuffer cmd = command_buffer_;
+  GLPT_VK_CHECK(vkResetCommandBuffer(cmd, 0));
+  auto begin = make_info<VkCommandBufferBeginInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO);
+  begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+  GLPT_VK_CHECK(vkBeginCommandBuffer(cmd, &begin));
+
+  // Submissions are few and large (a BLAS batch, the TLAS, one dispatch), so one global barrier
+  // each way costs nothing and keeps every cross-submission hazard covered.
+  auto before = make_info<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
+  before.srcAccessMask = VK_ACCESS_MEMORY_WRITE_BIT | VK_ACCESS_HOST_WRITE_BIT;
+  before.dstAccessMask = VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT;
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT | VK_PIPELINE_STAGE_HOST_BIT,
+                       VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0, 1, &before, 0, nullptr, 0, nullptr);
+  record(cmd);
+  auto after = make_info<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
+  after.srcAccessMask = VK_ACCESS_MEMORY_WRITE_BIT;
+  after.dstAccessMask = VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_HOST_READ_BIT;
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT,
+                       VK_PIPELINE_STAGE_ALL_COMMANDS_BIT | VK_PIPELINE_STAGE_HOST_BIT, 0, 1,
+                       &after, 0, nullptr, 0, nullptr);
+  GLPT_VK_CHECK(vkEndCommandBuffer(cmd));
+
+  auto submit = make_info<VkSubmitInfo>(VK_STRUCTURE_TYPE_SUBMIT_INFO);
+  submit.commandBufferCount = 1;
+  submit.pCommandBuffers = &cmd;
+  VkFence fence = fence_.get();
+  auto start = std::chrono::steady_clock::now();
+  GLPT_VK_CHECK(vkQueueSubmit(queue_, 1, &submit, fence));
+  GLPT_VK_CHECK(vkWaitForFences(handle(), 1, &fence, VK_TRUE, UINT64_MAX));
+  double elapsed_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  GLPT_VK_CHECK(vkResetFences(handle(), 1, &fence));
+  return elapsed_ms;
+}
+
+}  // namespace glpt::rt

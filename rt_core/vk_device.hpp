@@ -1,0 +1,96 @@
+// The Vulkan instance, the chosen physical device, the logical device with ray queries enabled,
+// and one queue with a reusable command buffer for "record, submit, wait" work.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+#include "rt_core/vk_raii.hpp"
+
+namespace glpt::rt {
+
+// Thrown by VulkanDevice::create when no usable device exists; the message says what is missing
+// and how to install it.
+class DeviceUnavailable : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct DeviceOptions {
+  bool validation = false;  // enable VK_LAYER_KHRONOS_validation if installed
+  // Pick the first suitable device whose name contains this (GLPT_VK_DEVICE); empty: prefer a
+  // CPU device (lavapipe), then any suitable one.
+  std::string name_filter;
+};
+
+// Entry points of VK_KHR_acceleration_structure: the loader does not export them, they come from
+// vkGetDeviceProcAddr.
+struct AccelerationStructureFunctions {
+  PFN_vkCreateAccelerationStructureKHR create = nullptr;
+  PFN_vkDestroyAccelerationStructureKHR destroy = nullptr;
+  PFN_vkGetAccelerationStructureBuildSizesKHR get_build_sizes = nullptr;
+  PFN_vkCmdBuildAccelerationStructuresKHR cmd_build = nullptr;
+  PFN_vkGetAccelerationStructureDeviceAddressKHR get_device_address = nullptr;
+};
+
+class VulkanDevice {
+ public:
+  // Throws DeviceUnavailable or VulkanError.
+  static std::unique_ptr<VulkanDevice> create(const DeviceOptions& options);
+  ~VulkanDevice();
+  VulkanDevice(const VulkanDevice&) = delete;
+  VulkanDevice& operator=(const VulkanDevice&) = delete;
+
+  VkDevice handle() const { return device_.get(); }
+  const AccelerationStructureFunctions& as_functions() const { return as_functions_; }
+  const std::string& name() const { return name_; }
+  const VkPhysicalDeviceLimits& limits() const { return limits_; }
+  VkDeviceSize scratch_alignment() const { return scratch_alignment_; }
+
+  // A memory type in `type_bits` with all `required` flags, preferring one that also has
+  // `preferred`. Throws VulkanError if none.
+  uint32_t memory_type(uint32_t type_bits, VkMemoryPropertyFlags required,
+                       VkMemoryPropertyFlags preferred) const;
+
+  // Records commands into the device's command buffer with `record`, submits them and waits for
+  // completion. Each call starts with a full memory barrier, so work of earlier calls and host
+  // writes are visible, and ends with one that makes results visible to the host. Returns the
+  // wall-clock milliseconds of submit + wait.
+  double submit_and_wait(const std::function<void(VkCommandBuffer)>& record);
+
+  // Number of messages the validation layer reported (0 without validation).
+  uint64_t validation_messages() const { return validation_messages_; }
+
+ private:
+  VulkanDevice() = default;
+  static VKAPI_ATTR VkBool32 VKAPI_CALL on_validation_message(
+      VkDebugUtilsMessageSeverityFlagBitsEXT severity, VkDebugUtilsMessageTypeFlagsEXT types,
+      const VkDebugUtilsMessengerCallbackDataEXT* data, void* user_data);
+
+  // Written by the validation callback, which can run until the instance is gone: declared
+  // first so it outlives every Vulkan object below.
+  uint64_t validation_messages_ = 0;
+  // Declaration order is destruction order in reverse: everything device-level goes before the
+  // device, the device before the messenger and instance.
+  vk::Instance instance_;
+  vk::DebugMessenger messenger_;
+  VkPhysicalDevice physical_device_ = VK_NULL_HANDLE;
+  vk::Device device_;
+  vk::CommandPool command_pool_;
+  vk::Fence fence_;
+  VkQueue queue_ = VK_NULL_HANDLE;
+  VkCommandBuffer command_buffer_ = VK_NULL_HANDLE;  // freed with command_pool_
+
+  AccelerationStructureFunctions as_functions_;
+  std::string name_;
+  VkPhysicalDeviceLimits limits_{};
+  VkPhysicalDeviceMemoryProperties memory_properties_{};
+  VkDeviceSize scratch_alignment_ = 1;
+};
+
+}  // namespace glpt::rt

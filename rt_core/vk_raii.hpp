@@ -1,0 +1,92 @@
+// Move-only owners for Vulkan handles. Every Vulkan object rt_core creates lives in one of these,
+// so destruction happens in exactly one place (the deleter) and in reverse declaration order of
+// the owning class's members, with no destroy calls scattered around.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <utility>
+
+namespace glpt::rt::vk {
+
+template <typename Handle, typename Deleter>
+class Unique {
+ public:
+  Unique() = default;
+  Unique(Handle handle, Deleter deleter) : handle_(handle), deleter_(deleter) {}
+  Unique(const Unique&) = delete;
+  Unique& operator=(const Unique&) = delete;
+  Unique(Unique&& other) noexcept
+      : handle_(std::exchange(other.handle_, Handle{VK_NULL_HANDLE})), deleter_(other.deleter_) {}
+  Unique& operator=(Unique&& other) noexcept {
+    if (this != &other) {
+      reset();
+      handle_ = std::exchange(other.handle_, Handle{VK_NULL_HANDLE});
+      deleter_ = other.deleter_;
+    }
+    return *this;
+  }
+  ~Unique() { reset(); }
+
+  void reset() noexcept {
+    if (handle_ != Handle{VK_NULL_HANDLE}) deleter_(handle_);
+    handle_ = Handle{VK_NULL_HANDLE};
+  }
+  Handle get() const { return handle_; }
+  const Handle* address() const { return &handle_; }  // for APIs taking arrays of handles
+  explicit operator bool() const { return handle_ != Handle{VK_NULL_HANDLE}; }
+
+ private:
+  Handle handle_{VK_NULL_HANDLE};
+  Deleter deleter_{};
+};
+
+// Objects destroyed with vkDestroyX(device, handle, allocator) from the loader's exports.
+template <typename Handle, auto Destroy>
+struct DeviceChildDeleter {
+  VkDevice device = VK_NULL_HANDLE;
+  void operator()(Handle handle) const { Destroy(device, handle, nullptr); }
+};
+
+template <typename Handle, auto Destroy>
+using DeviceChild = Unique<Handle, DeviceChildDeleter<Handle, Destroy>>;
+
+struct InstanceDeleter {
+  void operator()(VkInstance instance) const { vkDestroyInstance(instance, nullptr); }
+};
+struct DeviceDeleter {
+  void operator()(VkDevice device) const { vkDestroyDevice(device, nullptr); }
+};
+// Extension objects: their destroy entry point is looked up at run time.
+struct DebugMessengerDeleter {
+  VkInstance instance = VK_NULL_HANDLE;
+  PFN_vkDestroyDebugUtilsMessengerEXT destroy = nullptr;
+  void operator()(VkDebugUtilsMessengerEXT messenger) const {
+    destroy(instance, messenger, nullptr);
+  }
+};
+struct AccelerationStructureDeleter {
+  VkDevice device = VK_NULL_HANDLE;
+  PFN_vkDestroyAccelerationStructureKHR destroy = nullptr;
+  void operator()(VkAccelerationStructureKHR structure) const {
+    destroy(device, structure, nullptr);
+  }
+};
+
+using Instance = Unique<VkInstance, InstanceDeleter>;
+using Device = Unique<VkDevice, DeviceDeleter>;
+using DebugMessenger = Unique<VkDebugUtilsMessengerEXT, DebugMessengerDeleter>;
+using AccelerationStructure = Unique<VkAccelerationStructureKHR, AccelerationStructureDeleter>;
+using Buffer = DeviceChild<VkBuffer, &vkDestroyBuffer>;
+// vkFreeMemory also unmaps a mapped allocation, so no separate unmap is needed.
+using DeviceMemory = DeviceChild<VkDeviceMemory, &vkFreeMemory>;
+// Command buffers and descriptor sets are freed with their pools.
+using CommandPool = DeviceChild<VkCommandPool, &vkDestroyCommandPool>;
+using DescriptorPool = DeviceChild<VkDescriptorPool, &vkDestroyDescriptorPool>;
+using DescriptorSetLayout = DeviceChild<VkDescriptorSetLayout, &vkDestroyDescriptorSetLayout>;
+using Fence = DeviceChild<VkFence, &vkDestroyFence>;
+using Pipeline = DeviceChild<VkPipeline, &vkDestroyPipeline>;
+using PipelineLayout = DeviceChild<VkPipelineLayout, &vkDestroyPipelineLayout>;
+using ShaderModule = DeviceChild<VkShaderModule, &vkDestroyShaderModule>;
+
+}  // namespace glpt::rt::vk

@@ -1,0 +1,71 @@
+#include "rt_core/render_settings.hpp"
+
+#include <gtest/gtest.h>
+
+#include <map>
+#include <string>
+
+namespace glpt::rt {
+namespace {
+
+RenderSettings parse(const std::map<std::string, std::string>& environment, std::string* warning) {
+  return parse_render_settings(
+      [&](const char* name) -> const char* {
+        auto found = environment.find(name);
+        return found == environment.end() ? nullptr : found->second.c_str();
+      },
+      warning);
+}
+
+TEST(RenderSettings, DefaultsWhenUnset) {
+  std::string warning = "stale";
+  RenderSettings settings = parse({}, &warning);
+  EXPECT_TRUE(warning.empty());
+  EXPECT_EQ(settings.samples_per_pixel, 1u);
+  EXPECT_EQ(settings.bounces, 1u);
+  EXPECT_TRUE(settings.accumulate);
+  EXPECT_EQ(settings.max_accumulated, 4096u);
+  EXPECT_EQ(settings.light_angular_radius_deg, 1.0f);
+  EXPECT_FALSE(settings.validation);
+}
+
+TEST(RenderSettings, ReadsValidValues) {
+  std::string warning;
+  RenderSettings settings = parse({{"GLPT_SPP", "4"},
+                                   {"GLPT_BOUNCES", "0"},
+                                   {"GLPT_ACCUMULATE", "0"},
+                                   {"GLPT_MAX_SPP", "64"},
+                                   {"GLPT_LIGHT_SIZE_DEG", "2.5"},
+                                   {"GLPT_VALIDATION", "1"}},
+                                  &warning);
+  EXPECT_TRUE(warning.empty()) << warning;
+  EXPECT_EQ(settings.samples_per_pixel, 4u);
+  EXPECT_EQ(settings.bounces, 0u);
+  EXPECT_FALSE(settings.accumulate);
+  EXPECT_EQ(settings.max_accumulated, 64u);
+  EXPECT_EQ(settings.light_angular_radius_deg, 2.5f);
+  EXPECT_TRUE(settings.validation);
+}
+
+TEST(RenderSettings, BadValuesKeepDefaultsAndWarnOnce) {
+  std::string warning;
+  RenderSettings settings = parse({{"GLPT_SPP", "0"},
+                                   {"GLPT_BOUNCES", "-1"},
+                                   {"GLPT_ACCUMULATE", "yes"},
+                                   {"GLPT_MAX_SPP", "x"},
+                                   {"GLPT_LIGHT_SIZE_DEG", "nan"}},
+                                  &warning);
+  EXPECT_EQ(settings.samples_per_pixel, 1u);
+  EXPECT_EQ(settings.bounces, 1u);
+  EXPECT_TRUE(settings.accumulate);
+  EXPECT_EQ(settings.max_accumulated, 4096u);
+  EXPECT_EQ(settings.light_angular_radius_deg, 1.0f);
+  for (const char* name :
+       {"GLPT_SPP", "GLPT_BOUNCES", "GLPT_ACCUMULATE", "GLPT_MAX_SPP", "GLPT_LIGHT_SIZE_DEG"}) {
+    EXPECT_NE(warning.find(name), std::string::npos) << name << " missing from: " << warning;
+  }
+  EXPECT_EQ(warning.find('\n'), std::string::npos);  // one line
+}
+
+}  // namespace
+}  // namespace glpt::rt
