@@ -53,7 +53,7 @@ bool render_pending_frame(Context& ctx) {
     ctx.output = FrameOutput::create(&error);
     if (!ctx.output) {
       // Reported once per context; the program keeps running, showing nothing.
-      std::fprintf(stderr, "glpt: %s\n", error.c_str());
+      std::fprintf(stderr, "%s\n", error.c_str());  // the message names glpt itself
       ctx.target = nullptr;
       return false;
     }

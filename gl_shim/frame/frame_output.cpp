@@ -54,7 +54,7 @@ bool FrameOutput::render(const rt::Frame& frame, double capture_ms) {
   last_stats_ = {};
   last_capture_ms_ = capture_ms;
   if (!renderer_->render(frame, image_, last_stats_, &error)) {
-    if (!render_failure_reported_) std::fprintf(stderr, "glpt: rendering failed: %s\n", error.c_str());
+    if (!render_failure_reported_) std::fprintf(stderr, "%s\n", error.c_str());
     render_failure_reported_ = true;
     return false;
   }
