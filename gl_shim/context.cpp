@@ -5,14 +5,13 @@
 #include <cstdlib>
 
 #include "gl_shim/gl_enums.h"
+#include "rt_core/stopwatch.hpp"
 
 namespace glpt {
 namespace {
 
 // The one piece of global mutable state glpt has: GL's current context, per thread.
 thread_local Context* t_current = nullptr;
-
-using Clock = std::chrono::steady_clock;
 
 }  // namespace
 
@@ -47,7 +46,7 @@ void set_current_context(Context* ctx) { t_current = ctx; }
 bool render_pending_frame(Context& ctx) {
   if (ctx.target == nullptr) return false;
   if (!ctx.frame_dirty && ctx.output) return true;
-  const auto t0 = Clock::now();
+  const Stopwatch capture_timer;
   if (!ctx.output) {
     std::string error;
     ctx.output = FrameOutput::create(&error);
@@ -67,7 +66,7 @@ bool render_pending_frame(Context& ctx) {
                     static_cast<uint32_t>(std::max(ctx.framebuffer.viewport_width, 0)),
                     static_cast<uint32_t>(std::max(ctx.framebuffer.viewport_height, 0))};
   frame.instances = ctx.capture.instances();
-  const double capture_ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+  const double capture_ms = capture_timer.elapsed_ms();
   const bool ok = ctx.output->render(frame, capture_ms);
   ctx.frame_dirty = false;
   return ok;

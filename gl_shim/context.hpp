@@ -3,7 +3,6 @@
 // current on each thread (GL's own model).
 #pragma once
 
-#include <chrono>
 #include <memory>
 #include <string>
 #include <vector>

@@ -1,12 +1,12 @@
 #include "rt_core/blas_cache.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <unordered_set>
 
 #include "rt_core/morton_sort.hpp"
+#include "rt_core/stopwatch.hpp"
 #include "rt_core/shading_data.hpp"
 #include "rt_core/vk_error.hpp"
 #include "rt_core/vk_info.hpp"
@@ -21,11 +21,6 @@ VkDeviceSize align_up(VkDeviceSize value, VkDeviceSize alignment) {
 
 VkDeviceSize entry_bytes(const BlasEntry& entry) {
   return entry.shading.size() + entry.storage.size();
-}
-
-double ms_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-      .count();
 }
 
 }  // namespace
@@ -125,7 +120,7 @@ std::unique_ptr<BlasEntry> BlasCache::create_entry(const Geometry& geometry,
 BlasPrepareStats BlasCache::prepare(std::span<const Geometry* const> geometries,
                                     uint64_t frame_number) {
   BlasPrepareStats stats;
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch timer;
   std::vector<PendingBuild> pending;
   pending.reserve(geometries.size());  // PendingBuild::geometry is pointed to: no reallocation
   std::unordered_set<uint64_t> seen;
@@ -142,7 +137,7 @@ BlasPrepareStats BlasCache::prepare(std::span<const Geometry* const> geometries,
     build.entry = create_entry(*geometry, build);
     build.entry->last_used_frame = frame_number;
   }
-  stats.upload_ms = ms_since(start);
+  stats.upload_ms = timer.elapsed_ms();
   if (pending.empty()) return stats;
 
   // All builds go into one vkCmdBuildAccelerationStructuresKHR, each with its own scratch range.

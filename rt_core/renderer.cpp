@@ -1,7 +1,6 @@
 #include "rt_core/renderer.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -10,6 +9,7 @@
 #include <glm/matrix.hpp>
 #include <glm/trigonometric.hpp>
 
+#include "rt_core/stopwatch.hpp"
 #include "rt_core/blas_cache.hpp"
 #include "rt_core/frame_signature.hpp"
 #include "rt_core/gpu_buffer.hpp"
@@ -28,12 +28,6 @@ namespace {
 // large enough to darken creases and contact regions, small enough that open surfaces near
 // other objects keep their GL ambient.
 constexpr float kAoRadiusSceneFraction = 0.1f;
-
-using Clock = std::chrono::steady_clock;
-
-double ms_since(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
 
 // VkTransformMatrixKHR is the top 3 rows of a row-major 4x4; glm is column-major.
 VkTransformMatrixKHR to_vk_transform(const glm::mat4& m) {
@@ -188,7 +182,7 @@ void Renderer::Impl::render(const Frame& frame, std::vector<uint8_t>& rgba, Fram
   stats.blas_ms = blas.build_ms;
 
   // ---- per-frame tables
-  const Clock::time_point upload_start = Clock::now();
+  const Stopwatch upload_timer;
   build_scene_setup(frame, scene_);
   stats.triangles = scene_.triangles;
   std::vector<Light> lights = frame.lights;
@@ -237,7 +231,7 @@ void Renderer::Impl::render(const Frame& frame, std::vector<uint8_t>& rgba, Fram
   frame_uniforms_.write(&uniforms, sizeof uniforms);
   const gpu::GpuCounters zero_counters{};
   counters_.write(&zero_counters, sizeof zero_counters);
-  stats.upload_ms = blas.upload_ms + ms_since(upload_start);
+  stats.upload_ms = blas.upload_ms + upload_timer.elapsed_ms();
 
   // ---- TLAS: the instance list is part of the signature, so an unchanged frame reuses it
   if (!scene_unchanged || !tlas_.handle()) stats.tlas_ms = tlas_.build(scene_.tlas_instances);
@@ -255,14 +249,14 @@ void Renderer::Impl::render(const Frame& frame, std::vector<uint8_t>& rgba, Fram
   previous_signature_ = std::move(signature);
 
   // ---- tonemap and read back
-  const Clock::time_point readback_start = Clock::now();
+  const Stopwatch readback_timer;
   const TonemapResources tonemap_resources{&accumulation_, &output_, &frame_uniforms_};
   device_->submit_and_wait([&](VkCommandBuffer cmd) {
     tonemap_.record(cmd, tonemap_resources, frame.width, frame.height);
   });
   rgba.resize(pixel_count * 4);
   std::memcpy(rgba.data(), output_.mapped(), pixel_count * 4);
-  stats.readback_ms = ms_since(readback_start);
+  stats.readback_ms = readback_timer.elapsed_ms();
   stats.accumulated_samples = accumulated_samples_;
 
   blas_cache_.evict_unused(frame_number_);

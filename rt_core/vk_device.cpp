@@ -1,11 +1,11 @@
 #include "rt_core/vk_device.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <vector>
 
+#include "rt_core/stopwatch.hpp"
 #include "rt_core/vk_error.hpp"
 #include "rt_core/vk_info.hpp"
 
@@ -364,11 +364,10 @@ double VulkanDevice::submit_and_wait(const std::function<void(VkCommandBuffer)>&
   submit.commandBufferCount = 1;
   submit.pCommandBuffers = &cmd;
   VkFence fence = fence_.get();
-  auto start = std::chrono::steady_clock::now();
+  const Stopwatch timer;
   GLPT_VK_CHECK(vkQueueSubmit(queue_, 1, &submit, fence));
   GLPT_VK_CHECK(vkWaitForFences(handle(), 1, &fence, VK_TRUE, UINT64_MAX));
-  double elapsed_ms =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  const double elapsed_ms = timer.elapsed_ms();
   GLPT_VK_CHECK(vkResetFences(handle(), 1, &fence));
   return elapsed_ms;
 }

@@ -10,10 +10,6 @@
 namespace glpt {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double ms_since(Clock::time_point t) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
-}
 
 }  // namespace
 
@@ -64,10 +60,10 @@ bool FrameOutput::render(const rt::Frame& frame, double capture_ms) {
 }
 
 void FrameOutput::swap(WindowTarget* target) {
-  const auto t0 = Clock::now();
-  const double frame_ms = ms_since(last_swap_);
+  const Stopwatch present_timer;
+  const double frame_ms = since_last_swap_.elapsed_ms();
   if (target && width_ > 0 && height_ > 0) target->present(image_.data(), width_, height_);
-  const double present_ms = ms_since(t0);
+  const double present_ms = present_timer.elapsed_ms();
 
   if (!settings_.png_dir.empty() && frame_index_ % settings_.png_every == 0 && width_ > 0) {
     char name[64];
@@ -95,7 +91,7 @@ void FrameOutput::swap(WindowTarget* target) {
                  s.blas_reused, s.accumulated_samples);
   }
   ++frame_index_;
-  last_swap_ = Clock::now();
+  since_last_swap_.restart();
 }
 
 }  // namespace glpt

@@ -2,7 +2,6 @@
 // write it as PNG (GLPT_OUTPUT) and print its statistics (GLPT_STATS).
 #pragma once
 
-#include <chrono>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -10,6 +9,7 @@
 
 #include "rt_core/frame.hpp"
 #include "rt_core/renderer.hpp"
+#include "rt_core/stopwatch.hpp"
 
 namespace glpt {
 
@@ -57,7 +57,7 @@ class FrameOutput {
   double last_capture_ms_ = 0;
   uint64_t frame_index_ = 0;
   bool render_failure_reported_ = false;
-  std::chrono::steady_clock::time_point last_swap_ = std::chrono::steady_clock::now();
+  Stopwatch since_last_swap_;
 };
 
 }  // namespace glpt
