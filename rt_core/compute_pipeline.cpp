@@ -70,7 +70,10 @@ ComputePipeline::ComputePipeline(const VulkanDevice& device, std::span<const uin
   GLPT_VK_CHECK(vkAllocateDescriptorSets(vk_device, &set_info, &descriptor_set_));
 }
 
-void ComputePipeline::dispatch_tiles(VkCommandBuffer cmd, uint32_t width, uint32_t height) const {
+void ComputePipeline::update_and_dispatch(VkDevice device, VkCommandBuffer cmd,
+                                          std::span<const VkWriteDescriptorSet> writes,
+                                          uint32_t width, uint32_t height) const {
+  vkUpdateDescriptorSets(device, static_cast<uint32_t>(writes.size()), writes.data(), 0, nullptr);
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_.get());
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.get(), 0, 1,
                           &descriptor_set_, 0, nullptr);

@@ -20,9 +20,11 @@ class ComputePipeline {
   VkPipelineLayout layout() const { return layout_.get(); }
   VkDescriptorSet descriptor_set() const { return descriptor_set_; }
 
-  // Binds the pipeline and its set and dispatches enough GLPT_TILE_SIZE^2 groups to cover
-  // width x height invocations.
-  void dispatch_tiles(VkCommandBuffer cmd, uint32_t width, uint32_t height) const;
+  // Writes `writes` into the set, binds the pipeline and its set and dispatches enough
+  // GLPT_TILE_SIZE^2 groups to cover width x height invocations.
+  void update_and_dispatch(VkDevice device, VkCommandBuffer cmd,
+                           std::span<const VkWriteDescriptorSet> writes, uint32_t width,
+                           uint32_t height) const;
 
  private:
   vk::DescriptorSetLayout set_layout_;

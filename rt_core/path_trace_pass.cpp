@@ -57,9 +57,7 @@ void PathTracePass::record(VkCommandBuffer cmd, const PathTraceResources& resour
       storage_buffer_write(set, GLPT_PT_BINDING_COUNTERS, &counters),
       uniform_buffer_write(set, GLPT_PT_BINDING_FRAME, &frame),
   };
-  vkUpdateDescriptorSets(device_.handle(), static_cast<uint32_t>(std::size(writes)), writes, 0,
-                         nullptr);
-  pipeline_.dispatch_tiles(cmd, width, height);
+  pipeline_.update_and_dispatch(device_.handle(), cmd, writes, width, height);
 }
 
 }  // namespace glpt::rt

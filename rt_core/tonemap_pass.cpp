@@ -33,9 +33,7 @@ void TonemapPass::record(VkCommandBuffer cmd, const TonemapResources& resources,
       storage_buffer_write(set, GLPT_TM_BINDING_OUTPUT, &output),
       uniform_buffer_write(set, GLPT_TM_BINDING_FRAME, &frame),
   };
-  vkUpdateDescriptorSets(device_.handle(), static_cast<uint32_t>(std::size(writes)), writes, 0,
-                         nullptr);
-  pipeline_.dispatch_tiles(cmd, width, height);
+  pipeline_.update_and_dispatch(device_.handle(), cmd, writes, width, height);
 }
 
 }  // namespace glpt::rt

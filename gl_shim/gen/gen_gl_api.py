@@ -318,22 +318,26 @@ def impl_signature(cmd, name):
     return f"{cmd.ret} {name}({params})"
 
 
+def unique_impls(names, commands):
+    """Each implementation once, in command order (aliases share their core command's)."""
+    done = set()
+    for n in names:
+        target = impl_name(commands[n], commands)
+        if target not in done:
+            done.add(target)
+            yield target
+
+
 def emit_impl_decls(path, names, commands):
     with open(path, "w") as f:
         f.write(HEADER + "#pragma once\n#include \"gl_shim/gl_types.h\"\n\n")
         f.write("namespace glpt {\nclass Context;\nnamespace impl {\n\n")
-        done = set()
-        for n in names:
-            target = impl_name(commands[n], commands)
-            if target in done:
-                continue
-            done.add(target)
+        for target in unique_impls(names, commands):
             f.write(impl_signature(commands[target], target) + ";\n")
         f.write("\n}  // namespace impl\n}  // namespace glpt\n")
 
 
 def emit_entry_points(path, names, commands):
-    name_set = set(names)
     out = []
     w = out.append
     w(HEADER)
@@ -342,12 +346,7 @@ def emit_entry_points(path, names, commands):
       '#include "gl_shim/dispatch.hpp"\n#include "gl_shim/gl_enums.h"\n\n')
     # Weak references to the implementations.
     w("namespace glpt::impl {\n")
-    done = set()
-    for n in names:
-        target = impl_name(commands[n], commands)
-        if target in done:
-            continue
-        done.add(target)
+    for target in unique_impls(names, commands):
         w(f"[[gnu::weak]] {impl_signature(commands[target], target)};\n")
     w("}  // namespace glpt::impl\n\n")
 

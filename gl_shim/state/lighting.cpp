@@ -48,6 +48,7 @@ rt::Light* light_of(Context& ctx, GLenum light) {
 
 template <typename T>
 void set_light(Context& ctx, GLenum light, GLenum pname, const T* p, bool scalar_call) {
+  if (p == nullptr) return record_error(ctx, GL_INVALID_VALUE);
   rt::Light* l = light_of(ctx, light);
   if (!l) return;
   const bool scalar_pname = pname == GL_SPOT_EXPONENT || pname == GL_SPOT_CUTOFF ||
@@ -97,6 +98,7 @@ void set_light(Context& ctx, GLenum light, GLenum pname, const T* p, bool scalar
 
 template <typename T>
 void set_light_model(Context& ctx, GLenum pname, const T* p, bool scalar_call) {
+  if (p == nullptr) return record_error(ctx, GL_INVALID_VALUE);
   LightingState& s = ctx.lighting;
   switch (pname) {
     case GL_LIGHT_MODEL_AMBIENT:
@@ -118,6 +120,7 @@ void set_light_model(Context& ctx, GLenum pname, const T* p, bool scalar_call) {
 
 template <typename T>
 void set_material(Context& ctx, GLenum face, GLenum pname, const T* p, bool scalar_call) {
+  if (p == nullptr) return record_error(ctx, GL_INVALID_VALUE);
   if (face != GL_FRONT && face != GL_BACK && face != GL_FRONT_AND_BACK) return record_error(ctx, GL_INVALID_ENUM);
   if (scalar_call && pname != GL_SHININESS) return record_error(ctx, GL_INVALID_ENUM);
   auto apply = [&](rt::Material& m) -> bool {
@@ -192,31 +195,25 @@ namespace impl {
 void glLightf(Context& ctx, GLenum light, GLenum pname, GLfloat param) { set_light(ctx, light, pname, &param, true); }
 void glLighti(Context& ctx, GLenum light, GLenum pname, GLint param) { set_light(ctx, light, pname, &param, true); }
 void glLightfv(Context& ctx, GLenum light, GLenum pname, const GLfloat* params) {
-  if (!params) return record_error(ctx, GL_INVALID_VALUE);
   set_light(ctx, light, pname, params, false);
 }
 void glLightiv(Context& ctx, GLenum light, GLenum pname, const GLint* params) {
-  if (!params) return record_error(ctx, GL_INVALID_VALUE);
   set_light(ctx, light, pname, params, false);
 }
 void glLightModelf(Context& ctx, GLenum pname, GLfloat param) { set_light_model(ctx, pname, &param, true); }
 void glLightModeli(Context& ctx, GLenum pname, GLint param) { set_light_model(ctx, pname, &param, true); }
 void glLightModelfv(Context& ctx, GLenum pname, const GLfloat* params) {
-  if (!params) return record_error(ctx, GL_INVALID_VALUE);
   set_light_model(ctx, pname, params, false);
 }
 void glLightModeliv(Context& ctx, GLenum pname, const GLint* params) {
-  if (!params) return record_error(ctx, GL_INVALID_VALUE);
   set_light_model(ctx, pname, params, false);
 }
 void glMaterialf(Context& ctx, GLenum face, GLenum pname, GLfloat param) { set_material(ctx, face, pname, &param, true); }
 void glMateriali(Context& ctx, GLenum face, GLenum pname, GLint param) { set_material(ctx, face, pname, &param, true); }
 void glMaterialfv(Context& ctx, GLenum face, GLenum pname, const GLfloat* params) {
-  if (!params) return record_error(ctx, GL_INVALID_VALUE);
   set_material(ctx, face, pname, params, false);
 }
 void glMaterialiv(Context& ctx, GLenum face, GLenum pname, const GLint* params) {
-  if (!params) return record_error(ctx, GL_INVALID_VALUE);
   set_material(ctx, face, pname, params, false);
 }
 void glGetLightfv(Context& ctx, GLenum light, GLenum pname, GLfloat* params) {
