@@ -33,12 +33,16 @@ Context::~Context() {
                  static_cast<unsigned long long>(unimplemented_calls[i]));
   }
   if (total > 0 || not_compilable_calls > 0)
-    std::fprintf(stderr, "glpt: %llu calls to unimplemented commands, %llu commands not compiled into lists\n",
-                 static_cast<unsigned long long>(total),
-                 static_cast<unsigned long long>(not_compilable_calls));
+    std::fprintf(
+        stderr,
+        "glpt: %llu calls to unimplemented commands, %llu commands not compiled into lists\n",
+        static_cast<unsigned long long>(total),
+        static_cast<unsigned long long>(not_compilable_calls));
 }
 
-bool Context::list_executes_while_compiling() const { return lists.compiling_mode == GL_COMPILE_AND_EXECUTE; }
+bool Context::list_executes_while_compiling() const {
+  return lists.compiling_mode == GL_COMPILE_AND_EXECUTE;
+}
 
 Context* current_context() { return t_current; }
 void set_current_context(Context* ctx) { t_current = ctx; }

@@ -47,7 +47,7 @@ class Context {
   FrameCapture capture;
   // The window this context draws to (set by glXMakeCurrent / eglMakeCurrent).
   WindowTarget* target = nullptr;
-  std::unique_ptr<FrameOutput> output;  // created on the first frame
+  std::unique_ptr<FrameOutput> output;    // created on the first frame
   void* window_system_context = nullptr;  // the GLX/EGL context wrapping this one
   // Something was drawn or cleared since the image was last rendered.
   bool frame_dirty = false;

@@ -6,8 +6,8 @@
 #include <unordered_set>
 
 #include "rt_core/morton_sort.hpp"
-#include "rt_core/stopwatch.hpp"
 #include "rt_core/shading_data.hpp"
+#include "rt_core/stopwatch.hpp"
 #include "rt_core/vk_error.hpp"
 #include "rt_core/vk_info.hpp"
 #include "shared_types.h"

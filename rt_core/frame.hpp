@@ -7,10 +7,9 @@
 #pragma once
 
 #include <cstdint>
+#include <glm/glm.hpp>
 #include <memory>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 namespace glpt::rt {
 
@@ -43,8 +42,8 @@ struct Material {
 // three vertices), so the tracer always interpolates.
 struct Geometry {
   std::vector<glm::vec3> positions;
-  std::vector<glm::vec3> normals;      // object space, not necessarily unit length
-  std::vector<glm::vec4> colors;       // current colour per vertex (used per Material::color_source)
+  std::vector<glm::vec3> normals;  // object space, not necessarily unit length
+  std::vector<glm::vec4> colors;   // current colour per vertex (used per Material::color_source)
   std::vector<uint32_t> material_ids;  // one per triangle, index into `materials`
   std::vector<Material> materials;
   // Identity of the content above (positions, normals, colours, materials). Two geometries with
@@ -82,11 +81,11 @@ struct Viewport {
 struct Frame {
   uint32_t width = 0, height = 0;  // drawable size in pixels
   Viewport viewport;
-  glm::mat4 projection{1.0f};       // eye -> clip, for primary rays
+  glm::mat4 projection{1.0f};  // eye -> clip, for primary rays
   glm::vec4 clear_color{0.0f, 0.0f, 0.0f, 0.0f};
   glm::vec4 global_ambient{0.2f, 0.2f, 0.2f, 1.0f};  // GL_LIGHT_MODEL_AMBIENT
-  std::vector<Light> lights;        // enabled GL lights only (GL_LIGHTING enabled)
-  std::vector<Instance> instances;  // traced geometry
+  std::vector<Light> lights;                         // enabled GL lights only (GL_LIGHTING enabled)
+  std::vector<Instance> instances;                   // traced geometry
 };
 
 }  // namespace glpt::rt

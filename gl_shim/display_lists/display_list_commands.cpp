@@ -24,41 +24,66 @@ void call_list(Context& ctx, GLuint name) {
 // Size in bytes of one name of glCallLists' `type`, 0 if invalid.
 int list_name_size(GLenum type) {
   switch (type) {
-    case GL_BYTE: case GL_UNSIGNED_BYTE: return 1;
-    case GL_SHORT: case GL_UNSIGNED_SHORT: case GL_2_BYTES: return 2;
-    case GL_3_BYTES: return 3;
-    case GL_INT: case GL_UNSIGNED_INT: case GL_FLOAT: case GL_4_BYTES: return 4;
-    default: return 0;
+    case GL_BYTE:
+    case GL_UNSIGNED_BYTE:
+      return 1;
+    case GL_SHORT:
+    case GL_UNSIGNED_SHORT:
+    case GL_2_BYTES:
+      return 2;
+    case GL_3_BYTES:
+      return 3;
+    case GL_INT:
+    case GL_UNSIGNED_INT:
+    case GL_FLOAT:
+    case GL_4_BYTES:
+      return 4;
+    default:
+      return 0;
   }
 }
 
 GLuint list_name_at(const void* lists, GLenum type, GLsizei i) {
   const auto* b = static_cast<const unsigned char*>(lists);
   switch (type) {
-    case GL_BYTE: return static_cast<GLuint>(static_cast<GLint>(static_cast<const GLbyte*>(lists)[i]));
-    case GL_UNSIGNED_BYTE: return b[i];
-    case GL_SHORT: return static_cast<GLuint>(static_cast<GLint>(static_cast<const GLshort*>(lists)[i]));
-    case GL_UNSIGNED_SHORT: return static_cast<const GLushort*>(lists)[i];
-    case GL_INT: return static_cast<GLuint>(static_cast<const GLint*>(lists)[i]);
-    case GL_UNSIGNED_INT: return static_cast<const GLuint*>(lists)[i];
-    case GL_FLOAT: return static_cast<GLuint>(static_cast<const GLfloat*>(lists)[i]);
-    case GL_2_BYTES: return (GLuint{b[2 * i]} << 8) | b[2 * i + 1];
-    case GL_3_BYTES: return (GLuint{b[3 * i]} << 16) | (GLuint{b[3 * i + 1]} << 8) | b[3 * i + 2];
+    case GL_BYTE:
+      return static_cast<GLuint>(static_cast<GLint>(static_cast<const GLbyte*>(lists)[i]));
+    case GL_UNSIGNED_BYTE:
+      return b[i];
+    case GL_SHORT:
+      return static_cast<GLuint>(static_cast<GLint>(static_cast<const GLshort*>(lists)[i]));
+    case GL_UNSIGNED_SHORT:
+      return static_cast<const GLushort*>(lists)[i];
+    case GL_INT:
+      return static_cast<GLuint>(static_cast<const GLint*>(lists)[i]);
+    case GL_UNSIGNED_INT:
+      return static_cast<const GLuint*>(lists)[i];
+    case GL_FLOAT:
+      return static_cast<GLuint>(static_cast<const GLfloat*>(lists)[i]);
+    case GL_2_BYTES:
+      return (GLuint{b[2 * i]} << 8) | b[2 * i + 1];
+    case GL_3_BYTES:
+      return (GLuint{b[3 * i]} << 16) | (GLuint{b[3 * i + 1]} << 8) | b[3 * i + 2];
     case GL_4_BYTES:
-      return (GLuint{b[4 * i]} << 24) | (GLuint{b[4 * i + 1]} << 16) | (GLuint{b[4 * i + 2]} << 8) | b[4 * i + 3];
-    default: return 0;
+      return (GLuint{b[4 * i]} << 24) | (GLuint{b[4 * i + 1]} << 16) | (GLuint{b[4 * i + 2]} << 8) |
+             b[4 * i + 3];
+    default:
+      return 0;
   }
 }
 
 }  // namespace
 
-uint32_t call_lists_bytes(GLsizei n, GLenum type) { return clamp_count(n) * static_cast<uint32_t>(list_name_size(type)); }
+uint32_t call_lists_bytes(GLsizei n, GLenum type) {
+  return clamp_count(n) * static_cast<uint32_t>(list_name_size(type));
+}
 
 namespace impl {
 
 void glNewList(Context& ctx, GLuint list, GLenum mode) {
   if (list == 0) return record_error(ctx, GL_INVALID_VALUE);
-  if (mode != GL_COMPILE && mode != GL_COMPILE_AND_EXECUTE) return record_error(ctx, GL_INVALID_ENUM);
+  if (mode != GL_COMPILE && mode != GL_COMPILE_AND_EXECUTE)
+    return record_error(ctx, GL_INVALID_ENUM);
   if (ctx.lists.compiling()) return record_error(ctx, GL_INVALID_OPERATION);
   ctx.lists.compiling_name = list;
   ctx.lists.compiling_mode = mode;
@@ -83,7 +108,8 @@ void glCallLists(Context& ctx, GLsizei n, GLenum type, const void* lists) {
   if (n < 0) return record_error(ctx, GL_INVALID_VALUE);
   if (list_name_size(type) == 0) return record_error(ctx, GL_INVALID_ENUM);
   if (lists == nullptr) return;
-  for (GLsizei i = 0; i < n; ++i) call_list(ctx, ctx.lists.list_base + list_name_at(lists, type, i));
+  for (GLsizei i = 0; i < n; ++i)
+    call_list(ctx, ctx.lists.list_base + list_name_at(lists, type, i));
 }
 
 GLuint glGenLists(Context& ctx, GLsizei range) {
@@ -101,7 +127,8 @@ GLuint glGenLists(Context& ctx, GLsizei range) {
     record_error(ctx, GL_OUT_OF_MEMORY);
     return 0;
   }
-  for (GLsizei i = 0; i < range; ++i) lists[start + static_cast<GLuint>(i)] = DisplayListStore::Entry{};
+  for (GLsizei i = 0; i < range; ++i)
+    lists[start + static_cast<GLuint>(i)] = DisplayListStore::Entry{};
   return start;
 }
 
@@ -110,7 +137,8 @@ void glDeleteLists(Context& ctx, GLuint list, GLsizei range) {
   auto& lists = ctx.lists.store->lists;
   if (static_cast<size_t>(range) > lists.size()) {
     std::erase_if(lists, [&](const auto& kv) {
-      return kv.first >= list && static_cast<uint64_t>(kv.first) < static_cast<uint64_t>(list) + range;
+      return kv.first >= list &&
+             static_cast<uint64_t>(kv.first) < static_cast<uint64_t>(list) + range;
     });
     return;
   }

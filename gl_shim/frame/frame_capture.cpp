@@ -7,7 +7,9 @@
 namespace glpt {
 namespace {
 
-bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+bool finite(const glm::vec3& v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
 
 }  // namespace
 
@@ -77,7 +79,8 @@ void FrameCapture::close_batch() {
     h.add_bytes(&flags, sizeof flags);
   }
   open_->content_hash = h.value();
-  instances_.push_back(rt::Instance{std::shared_ptr<const rt::Geometry>(std::move(open_)), open_modelview_});
+  instances_.push_back(
+      rt::Instance{std::shared_ptr<const rt::Geometry>(std::move(open_)), open_modelview_});
   open_.reset();
 }
 

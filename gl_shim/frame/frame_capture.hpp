@@ -3,10 +3,9 @@
 // display-list calls do not become thousands of acceleration structures.
 #pragma once
 
+#include <glm/glm.hpp>
 #include <memory>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 #include "gl_shim/geometry/triangulate.hpp"
 #include "gl_shim/geometry/vertex_assembly.hpp"

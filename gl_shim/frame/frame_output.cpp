@@ -8,10 +8,7 @@
 #include "common/image_io.hpp"
 
 namespace glpt {
-namespace {
-
-
-}  // namespace
+namespace {}  // namespace
 
 OutputSettings OutputSettings::from_environment() {
   OutputSettings s;
@@ -22,9 +19,11 @@ OutputSettings OutputSettings::from_environment() {
     if (*end == '\0' && n >= 1 && n <= 1000000)
       s.png_every = static_cast<uint32_t>(n);
     else
-      std::fprintf(stderr, "glpt: ignoring GLPT_OUTPUT_EVERY=%s (want a whole number >= 1)\n", every);
+      std::fprintf(stderr, "glpt: ignoring GLPT_OUTPUT_EVERY=%s (want a whole number >= 1)\n",
+                   every);
   }
-  if (const char* stats = std::getenv("GLPT_STATS"); stats && *stats && *stats != '0') s.stats = true;
+  if (const char* stats = std::getenv("GLPT_STATS"); stats && *stats && *stats != '0')
+    s.stats = true;
   return s;
 }
 
@@ -72,21 +71,24 @@ void FrameOutput::swap(WindowTarget* target) {
     png_scratch_ = image_;
     for (size_t i = 3; i < png_scratch_.size(); i += 4) png_scratch_[i] = 255;
     std::string error;
-    if (!write_png_rgba8(settings_.png_dir + "/" + name, width_, height_, png_scratch_.data(), true, &error))
+    if (!write_png_rgba8(settings_.png_dir + "/" + name, width_, height_, png_scratch_.data(), true,
+                         &error))
       std::fprintf(stderr, "glpt: %s\n", error.c_str());
   }
   if (settings_.stats) {
     const rt::FrameStats& s = last_stats_;
     const double trace_s = s.trace_ms / 1000.0;
     std::fprintf(stderr,
-                 "glpt: frame=%" PRIu64 " size=%ux%u frame_ms=%.2f capture_ms=%.2f upload_ms=%.2f "
+                 "glpt: frame=%" PRIu64
+                 " size=%ux%u frame_ms=%.2f capture_ms=%.2f upload_ms=%.2f "
                  "blas_ms=%.2f tlas_ms=%.2f trace_ms=%.2f readback_ms=%.2f present_ms=%.2f "
-                 "total_ms=%.2f triangles=%" PRIu64 " rays=%" PRIu64 " mrays_per_s=%.3f "
+                 "total_ms=%.2f triangles=%" PRIu64 " rays=%" PRIu64
+                 " mrays_per_s=%.3f "
                  "blas_builds=%u blas_reused=%u spp=%u\n",
                  frame_index_, width_, height_, frame_ms, last_capture_ms_, s.upload_ms, s.blas_ms,
                  s.tlas_ms, s.trace_ms, s.readback_ms, present_ms,
-                 last_capture_ms_ + s.upload_ms + s.blas_ms + s.tlas_ms + s.trace_ms + s.readback_ms +
-                     present_ms,
+                 last_capture_ms_ + s.upload_ms + s.blas_ms + s.tlas_ms + s.trace_ms +
+                     s.readback_ms + present_ms,
                  s.triangles, s.rays, trace_s > 0 ? s.rays / trace_s / 1e6 : 0.0, s.blas_builds,
                  s.blas_reused, s.accumulated_samples);
   }

@@ -16,34 +16,68 @@ float clamp01(float v) { return std::clamp(v, 0.0f, 1.0f); }
 
 int components_of(GLenum format) {
   switch (format) {
-    case GL_RED: case GL_GREEN: case GL_BLUE: case GL_ALPHA: case GL_LUMINANCE: return 1;
-    case GL_LUMINANCE_ALPHA: return 2;
-    case GL_RGB: case GL_BGR: return 3;
-    case GL_RGBA: case GL_BGRA: return 4;
-    default: return 0;
+    case GL_RED:
+    case GL_GREEN:
+    case GL_BLUE:
+    case GL_ALPHA:
+    case GL_LUMINANCE:
+      return 1;
+    case GL_LUMINANCE_ALPHA:
+      return 2;
+    case GL_RGB:
+    case GL_BGR:
+      return 3;
+    case GL_RGBA:
+    case GL_BGRA:
+      return 4;
+    default:
+      return 0;
   }
 }
 
 int type_size(GLenum type) {
   switch (type) {
-    case GL_UNSIGNED_BYTE: case GL_BYTE: return 1;
-    case GL_UNSIGNED_SHORT: case GL_SHORT: return 2;
-    case GL_UNSIGNED_INT: case GL_INT: case GL_FLOAT: return 4;
-    default: return 0;
+    case GL_UNSIGNED_BYTE:
+    case GL_BYTE:
+      return 1;
+    case GL_UNSIGNED_SHORT:
+    case GL_SHORT:
+      return 2;
+    case GL_UNSIGNED_INT:
+    case GL_INT:
+    case GL_FLOAT:
+      return 4;
+    default:
+      return 0;
   }
 }
 
 // One colour component in [0,1] written as `type` (GL 1.5 spec table 4.7, inverse of 2.9).
 void store_component(void* dst, GLenum type, float c) {
   switch (type) {
-    case GL_UNSIGNED_BYTE: *static_cast<GLubyte*>(dst) = static_cast<GLubyte>(std::lround(c * 255.0f)); break;
-    case GL_BYTE: *static_cast<GLbyte*>(dst) = static_cast<GLbyte>(std::lround((c * 255.0f - 1.0f) / 2.0f)); break;
-    case GL_UNSIGNED_SHORT: *static_cast<GLushort*>(dst) = static_cast<GLushort>(std::lround(c * 65535.0f)); break;
-    case GL_SHORT: *static_cast<GLshort*>(dst) = static_cast<GLshort>(std::lround((c * 65535.0f - 1.0f) / 2.0f)); break;
-    case GL_UNSIGNED_INT: *static_cast<GLuint*>(dst) = static_cast<GLuint>(std::llround(c * 4294967295.0)); break;
-    case GL_INT: *static_cast<GLint*>(dst) = static_cast<GLint>(std::llround((c * 4294967295.0 - 1.0) / 2.0)); break;
-    case GL_FLOAT: *static_cast<GLfloat*>(dst) = c; break;
-    default: break;
+    case GL_UNSIGNED_BYTE:
+      *static_cast<GLubyte*>(dst) = static_cast<GLubyte>(std::lround(c * 255.0f));
+      break;
+    case GL_BYTE:
+      *static_cast<GLbyte*>(dst) = static_cast<GLbyte>(std::lround((c * 255.0f - 1.0f) / 2.0f));
+      break;
+    case GL_UNSIGNED_SHORT:
+      *static_cast<GLushort*>(dst) = static_cast<GLushort>(std::lround(c * 65535.0f));
+      break;
+    case GL_SHORT:
+      *static_cast<GLshort*>(dst) = static_cast<GLshort>(std::lround((c * 65535.0f - 1.0f) / 2.0f));
+      break;
+    case GL_UNSIGNED_INT:
+      *static_cast<GLuint*>(dst) = static_cast<GLuint>(std::llround(c * 4294967295.0));
+      break;
+    case GL_INT:
+      *static_cast<GLint*>(dst) = static_cast<GLint>(std::llround((c * 4294967295.0 - 1.0) / 2.0));
+      break;
+    case GL_FLOAT:
+      *static_cast<GLfloat*>(dst) = c;
+      break;
+    default:
+      break;
   }
 }
 
@@ -54,11 +88,14 @@ namespace impl {
 void glClearColor(Context& ctx, GLfloat r, GLfloat g, GLfloat b, GLfloat a) {
   ctx.framebuffer.clear_color = {clamp01(r), clamp01(g), clamp01(b), clamp01(a)};
 }
-void glClearDepth(Context& ctx, GLdouble depth) { ctx.framebuffer.clear_depth = std::clamp(depth, 0.0, 1.0); }
+void glClearDepth(Context& ctx, GLdouble depth) {
+  ctx.framebuffer.clear_depth = std::clamp(depth, 0.0, 1.0);
+}
 void glClearStencil(Context& ctx, GLint s) { ctx.framebuffer.clear_stencil = s; }
 
 void glClear(Context& ctx, GLbitfield mask) {
-  constexpr GLbitfield kValid = GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_ACCUM_BUFFER_BIT;
+  constexpr GLbitfield kValid =
+      GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_ACCUM_BUFFER_BIT;
   if (mask & ~kValid) return record_error(ctx, GL_INVALID_VALUE);
   if (mask & GL_COLOR_BUFFER_BIT) {
     // Everything drawn so far is covered by the clear colour (a full-window clear: scissored
@@ -98,7 +135,8 @@ void glDepthFunc(Context& ctx, GLenum func) {
 }
 
 void glCullFace(Context& ctx, GLenum mode) {
-  if (mode != GL_FRONT && mode != GL_BACK && mode != GL_FRONT_AND_BACK) return record_error(ctx, GL_INVALID_ENUM);
+  if (mode != GL_FRONT && mode != GL_BACK && mode != GL_FRONT_AND_BACK)
+    return record_error(ctx, GL_INVALID_ENUM);
   ctx.framebuffer.cull_face = mode;
 }
 
@@ -110,8 +148,16 @@ void glFrontFace(Context& ctx, GLenum mode) {
 namespace {
 bool valid_color_buffer(GLenum buf) {
   switch (buf) {
-    case GL_NONE: case GL_FRONT_LEFT: case GL_FRONT_RIGHT: case GL_BACK_LEFT: case GL_BACK_RIGHT:
-    case GL_FRONT: case GL_BACK: case GL_LEFT: case GL_RIGHT: case GL_FRONT_AND_BACK:
+    case GL_NONE:
+    case GL_FRONT_LEFT:
+    case GL_FRONT_RIGHT:
+    case GL_BACK_LEFT:
+    case GL_BACK_RIGHT:
+    case GL_FRONT:
+    case GL_BACK:
+    case GL_LEFT:
+    case GL_RIGHT:
+    case GL_FRONT_AND_BACK:
       return true;
     default:
       return false;
@@ -125,31 +171,58 @@ void glDrawBuffer(Context& ctx, GLenum buf) {
 }
 
 void glReadBuffer(Context& ctx, GLenum buf) {
-  if (!valid_color_buffer(buf) || buf == GL_NONE || buf == GL_FRONT_AND_BACK) return record_error(ctx, GL_INVALID_ENUM);
+  if (!valid_color_buffer(buf) || buf == GL_NONE || buf == GL_FRONT_AND_BACK)
+    return record_error(ctx, GL_INVALID_ENUM);
   ctx.framebuffer.read_buffer = buf;
 }
 
 void glPixelStorei(Context& ctx, GLenum pname, GLint param) {
   FramebufferState& fb = ctx.framebuffer;
   const bool pack = pname >= GL_PACK_SWAP_BYTES && pname <= GL_PACK_ALIGNMENT;
-  PixelStoreModes& m = pack || pname == GL_PACK_SKIP_IMAGES || pname == GL_PACK_IMAGE_HEIGHT ? fb.pack : fb.unpack;
+  PixelStoreModes& m =
+      pack || pname == GL_PACK_SKIP_IMAGES || pname == GL_PACK_IMAGE_HEIGHT ? fb.pack : fb.unpack;
   switch (pname) {
-    case GL_PACK_SWAP_BYTES: case GL_UNPACK_SWAP_BYTES: m.swap_bytes = param != 0; return;
-    case GL_PACK_LSB_FIRST: case GL_UNPACK_LSB_FIRST: m.lsb_first = param != 0; return;
-    case GL_PACK_ALIGNMENT: case GL_UNPACK_ALIGNMENT:
-      if (param != 1 && param != 2 && param != 4 && param != 8) return record_error(ctx, GL_INVALID_VALUE);
+    case GL_PACK_SWAP_BYTES:
+    case GL_UNPACK_SWAP_BYTES:
+      m.swap_bytes = param != 0;
+      return;
+    case GL_PACK_LSB_FIRST:
+    case GL_UNPACK_LSB_FIRST:
+      m.lsb_first = param != 0;
+      return;
+    case GL_PACK_ALIGNMENT:
+    case GL_UNPACK_ALIGNMENT:
+      if (param != 1 && param != 2 && param != 4 && param != 8)
+        return record_error(ctx, GL_INVALID_VALUE);
       m.alignment = param;
       return;
-    default: break;
+    default:
+      break;
   }
   if (param < 0) return record_error(ctx, GL_INVALID_VALUE);
   switch (pname) {
-    case GL_PACK_ROW_LENGTH: case GL_UNPACK_ROW_LENGTH: m.row_length = param; return;
-    case GL_PACK_SKIP_ROWS: case GL_UNPACK_SKIP_ROWS: m.skip_rows = param; return;
-    case GL_PACK_SKIP_PIXELS: case GL_UNPACK_SKIP_PIXELS: m.skip_pixels = param; return;
-    case GL_PACK_IMAGE_HEIGHT: case GL_UNPACK_IMAGE_HEIGHT: m.image_height = param; return;
-    case GL_PACK_SKIP_IMAGES: case GL_UNPACK_SKIP_IMAGES: m.skip_images = param; return;
-    default: record_error(ctx, GL_INVALID_ENUM);
+    case GL_PACK_ROW_LENGTH:
+    case GL_UNPACK_ROW_LENGTH:
+      m.row_length = param;
+      return;
+    case GL_PACK_SKIP_ROWS:
+    case GL_UNPACK_SKIP_ROWS:
+      m.skip_rows = param;
+      return;
+    case GL_PACK_SKIP_PIXELS:
+    case GL_UNPACK_SKIP_PIXELS:
+      m.skip_pixels = param;
+      return;
+    case GL_PACK_IMAGE_HEIGHT:
+    case GL_UNPACK_IMAGE_HEIGHT:
+      m.image_height = param;
+      return;
+    case GL_PACK_SKIP_IMAGES:
+    case GL_UNPACK_SKIP_IMAGES:
+      m.skip_images = param;
+      return;
+    default:
+      record_error(ctx, GL_INVALID_ENUM);
   }
 }
 
@@ -158,8 +231,8 @@ void glPixelStoref(Context& ctx, GLenum pname, GLfloat param) {
   glPixelStorei(ctx, pname, static_cast<GLint>(std::lround(param)));
 }
 
-void glReadPixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height, GLenum format, GLenum type,
-                  void* pixels) {
+void glReadPixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height, GLenum format,
+                  GLenum type, void* pixels) {
   if (width < 0 || height < 0) return record_error(ctx, GL_INVALID_VALUE);
   const int comps = components_of(format);
   const int tsize = type_size(type);
@@ -180,7 +253,8 @@ void glReadPixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height,
   const int64_t pixel_bytes = int64_t{comps} * tsize;
   const int64_t align = pack.alignment;
   const int64_t row_bytes = (row_pixels * pixel_bytes + align - 1) / align * align;
-  auto* base = static_cast<unsigned char*>(pixels) + pack.skip_rows * row_bytes + pack.skip_pixels * pixel_bytes;
+  auto* base = static_cast<unsigned char*>(pixels) + pack.skip_rows * row_bytes +
+               pack.skip_pixels * pixel_bytes;
 
   for (GLsizei j = 0; j < height; ++j) {
     unsigned char* row = base + j * row_bytes;
@@ -189,24 +263,58 @@ void glReadPixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height,
       // Pixels outside the window are undefined in GL; glpt leaves the destination untouched.
       if (sx < 0 || sy < 0 || sx >= fw || sy >= fh) continue;
       const uint8_t* src = &img[static_cast<size_t>((sy * fw + sx) * 4)];
-      const float r = src[0] / 255.0f, g = src[1] / 255.0f, b = src[2] / 255.0f, a = src[3] / 255.0f;
+      const float r = src[0] / 255.0f, g = src[1] / 255.0f, b = src[2] / 255.0f,
+                  a = src[3] / 255.0f;
       float c[4];
       switch (format) {
-        case GL_RED: c[0] = r; break;
-        case GL_GREEN: c[0] = g; break;
-        case GL_BLUE: c[0] = b; break;
-        case GL_ALPHA: c[0] = a; break;
-        case GL_LUMINANCE: c[0] = std::min(1.0f, r + g + b); break;  // spec 4.3.2: L = R + G + B
-        case GL_LUMINANCE_ALPHA: c[0] = std::min(1.0f, r + g + b); c[1] = a; break;
-        case GL_RGB: c[0] = r; c[1] = g; c[2] = b; break;
-        case GL_BGR: c[0] = b; c[1] = g; c[2] = r; break;
-        case GL_RGBA: c[0] = r; c[1] = g; c[2] = b; c[3] = a; break;
-        case GL_BGRA: c[0] = b; c[1] = g; c[2] = r; c[3] = a; break;
-        default: break;
+        case GL_RED:
+          c[0] = r;
+          break;
+        case GL_GREEN:
+          c[0] = g;
+          break;
+        case GL_BLUE:
+          c[0] = b;
+          break;
+        case GL_ALPHA:
+          c[0] = a;
+          break;
+        case GL_LUMINANCE:
+          c[0] = std::min(1.0f, r + g + b);
+          break;  // spec 4.3.2: L = R + G + B
+        case GL_LUMINANCE_ALPHA:
+          c[0] = std::min(1.0f, r + g + b);
+          c[1] = a;
+          break;
+        case GL_RGB:
+          c[0] = r;
+          c[1] = g;
+          c[2] = b;
+          break;
+        case GL_BGR:
+          c[0] = b;
+          c[1] = g;
+          c[2] = r;
+          break;
+        case GL_RGBA:
+          c[0] = r;
+          c[1] = g;
+          c[2] = b;
+          c[3] = a;
+          break;
+        case GL_BGRA:
+          c[0] = b;
+          c[1] = g;
+          c[2] = r;
+          c[3] = a;
+          break;
+        default:
+          break;
       }
       unsigned char* dst = row + i * pixel_bytes;
       if (type == GL_UNSIGNED_BYTE) {
-        for (int k = 0; k < comps; ++k) dst[k] = static_cast<unsigned char>(std::lround(c[k] * 255.0f));
+        for (int k = 0; k < comps; ++k)
+          dst[k] = static_cast<unsigned char>(std::lround(c[k] * 255.0f));
       } else {
         for (int k = 0; k < comps; ++k) store_component(dst + k * tsize, type, c[k]);
       }
@@ -222,10 +330,15 @@ void glFinish(Context& ctx) {
 }
 
 void glHint(Context& ctx, GLenum target, GLenum mode) {
-  if (mode != GL_FASTEST && mode != GL_NICEST && mode != GL_DONT_CARE) return record_error(ctx, GL_INVALID_ENUM);
+  if (mode != GL_FASTEST && mode != GL_NICEST && mode != GL_DONT_CARE)
+    return record_error(ctx, GL_INVALID_ENUM);
   switch (target) {
-    case GL_PERSPECTIVE_CORRECTION_HINT: case GL_POINT_SMOOTH_HINT: case GL_LINE_SMOOTH_HINT:
-    case GL_POLYGON_SMOOTH_HINT: case GL_FOG_HINT: case GL_TEXTURE_COMPRESSION_HINT:
+    case GL_PERSPECTIVE_CORRECTION_HINT:
+    case GL_POINT_SMOOTH_HINT:
+    case GL_LINE_SMOOTH_HINT:
+    case GL_POLYGON_SMOOTH_HINT:
+    case GL_FOG_HINT:
+    case GL_TEXTURE_COMPRESSION_HINT:
     case GL_GENERATE_MIPMAP_HINT:
       return;  // hints do not change what glpt renders
     default:

@@ -2,10 +2,9 @@
 // variant (generated in gl_attribute_families.cpp, which converts the arguments).
 #pragma once
 
+#include <glm/glm.hpp>
 #include <limits>
 #include <type_traits>
-
-#include <glm/glm.hpp>
 
 #include "gl_shim/gl_types.h"
 

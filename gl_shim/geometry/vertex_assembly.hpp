@@ -2,9 +2,8 @@
 // that were current at each glVertex.
 #pragma once
 
-#include <vector>
-
 #include <glm/glm.hpp>
+#include <vector>
 
 #include "gl_shim/geometry/triangulate.hpp"
 #include "gl_shim/gl_types.h"
@@ -16,7 +15,7 @@ struct CapturedVertex {
   glm::vec3 position;  // object space (x/w, y/w, z/w)
   glm::vec3 normal;    // object space
   glm::vec4 color;
-  uint32_t material;   // index into VertexAssembly::materials
+  uint32_t material;  // index into VertexAssembly::materials
 };
 
 struct VertexAssembly {
@@ -26,7 +25,7 @@ struct VertexAssembly {
   // Materials in effect during this primitive (glMaterial may change between vertices).
   std::vector<rt::Material> materials;
   uint64_t material_version_seen = ~uint64_t{0};
-  uint64_t dropped_vertices = 0;  // beyond the per-primitive limit
+  uint64_t dropped_vertices = 0;           // beyond the per-primitive limit
   std::vector<TriangleIndices> triangles;  // scratch for glEnd, kept to avoid reallocating
 
   void begin(GLenum primitive_mode) {

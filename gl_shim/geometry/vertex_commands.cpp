@@ -17,11 +17,16 @@ constexpr size_t kMaxVerticesPerPrimitive = size_t{1} << 24;
 
 rt::ColorSource color_source_of(GLenum mode) {
   switch (mode) {
-    case GL_AMBIENT: return rt::ColorSource::kAmbient;
-    case GL_DIFFUSE: return rt::ColorSource::kDiffuse;
-    case GL_SPECULAR: return rt::ColorSource::kSpecular;
-    case GL_EMISSION: return rt::ColorSource::kEmission;
-    default: return rt::ColorSource::kAmbientAndDiffuse;
+    case GL_AMBIENT:
+      return rt::ColorSource::kAmbient;
+    case GL_DIFFUSE:
+      return rt::ColorSource::kDiffuse;
+    case GL_SPECULAR:
+      return rt::ColorSource::kSpecular;
+    case GL_EMISSION:
+      return rt::ColorSource::kEmission;
+    default:
+      return rt::ColorSource::kAmbientAndDiffuse;
   }
 }
 
@@ -79,7 +84,8 @@ void attribute_color(Context& ctx, glm::vec4 c) { ctx.current.color = c; }
 void attribute_tex_coord(Context& ctx, glm::vec4 t) { ctx.current.tex_coord[0] = t; }
 
 void attribute_multi_tex_coord(Context& ctx, GLenum unit, glm::vec4 t) {
-  if (unit < GL_TEXTURE0 || unit >= GL_TEXTURE0 + kMaxTextureUnits) return record_error(ctx, GL_INVALID_ENUM);
+  if (unit < GL_TEXTURE0 || unit >= GL_TEXTURE0 + kMaxTextureUnits)
+    return record_error(ctx, GL_INVALID_ENUM);
   ctx.current.tex_coord[unit - GL_TEXTURE0] = t;
 }
 
@@ -98,8 +104,8 @@ void glEnd(Context& ctx) {
   triangles.clear();
   triangulate(a.mode, static_cast<uint32_t>(a.vertices.size()), triangles);
   if (triangles.empty()) return;
-  ctx.capture.add_primitive(ctx.matrices.modelview.top(), ctx.matrices.modelview_version, a, triangles,
-                            ctx.lighting.shade_model == GL_FLAT);
+  ctx.capture.add_primitive(ctx.matrices.modelview.top(), ctx.matrices.modelview_version, a,
+                            triangles, ctx.lighting.shade_model == GL_FLAT);
   snapshot_lighting(ctx);
   ctx.frame_dirty = true;
 }

@@ -7,7 +7,8 @@
 namespace glpt::glx {
 
 GLXFBConfig encode(const FBConfig& c) {
-  return reinterpret_cast<GLXFBConfig>((static_cast<uintptr_t>(c.visual) << 1) | (c.double_buffered ? 1 : 0));
+  return reinterpret_cast<GLXFBConfig>((static_cast<uintptr_t>(c.visual) << 1) |
+                                       (c.double_buffered ? 1 : 0));
 }
 
 bool decode(Display* dpy, GLXFBConfig handle, FBConfig* out) {
@@ -35,7 +36,8 @@ std::vector<FBConfig> configs_of_screen(Display* dpy, int screen) {
   // Double-buffered configs first: that is what GL programs want.
   for (bool db : {true, false})
     for (int i = 0; i < n; ++i)
-      if (vi[i].depth == 24 || vi[i].depth == 32) out.push_back(FBConfig{vi[i].visualid, screen, vi[i].depth, db});
+      if (vi[i].depth == 24 || vi[i].depth == 32)
+        out.push_back(FBConfig{vi[i].visualid, screen, vi[i].depth, db});
   XFree(vi);
   return out;
 }
@@ -43,32 +45,93 @@ std::vector<FBConfig> configs_of_screen(Display* dpy, int screen) {
 bool config_attribute(const FBConfig& c, int attribute, int* value) {
   int v = 0;
   switch (attribute) {
-    case GLX_USE_GL: v = 1; break;
-    case GLX_BUFFER_SIZE: v = 32; break;
-    case GLX_LEVEL: v = 0; break;
-    case GLX_RGBA: v = 1; break;
-    case GLX_DOUBLEBUFFER: v = c.double_buffered; break;
-    case GLX_STEREO: v = 0; break;
-    case GLX_AUX_BUFFERS: v = 0; break;
-    case GLX_RED_SIZE: case GLX_GREEN_SIZE: case GLX_BLUE_SIZE: case GLX_ALPHA_SIZE: v = 8; break;
-    case GLX_DEPTH_SIZE: v = 24; break;
-    case GLX_STENCIL_SIZE: v = 8; break;
-    case GLX_ACCUM_RED_SIZE: case GLX_ACCUM_GREEN_SIZE: case GLX_ACCUM_BLUE_SIZE: case GLX_ACCUM_ALPHA_SIZE: v = 0; break;
-    case GLX_CONFIG_CAVEAT: v = GLX_NONE; break;
-    case GLX_X_VISUAL_TYPE: v = GLX_TRUE_COLOR; break;
-    case GLX_TRANSPARENT_TYPE: v = GLX_NONE; break;
-    case GLX_TRANSPARENT_INDEX_VALUE: case GLX_TRANSPARENT_RED_VALUE: case GLX_TRANSPARENT_GREEN_VALUE:
-    case GLX_TRANSPARENT_BLUE_VALUE: case GLX_TRANSPARENT_ALPHA_VALUE: v = 0; break;
-    case GLX_VISUAL_ID: v = static_cast<int>(c.visual); break;
-    case GLX_FBCONFIG_ID: v = static_cast<int>((c.visual << 1) | (c.double_buffered ? 1 : 0)); break;
-    case GLX_DRAWABLE_TYPE: v = GLX_WINDOW_BIT; break;
-    case GLX_RENDER_TYPE: v = GLX_RGBA_BIT; break;
-    case GLX_X_RENDERABLE: v = 1; break;
-    case GLX_SCREEN: v = c.screen; break;
-    case GLX_MAX_PBUFFER_WIDTH: case GLX_MAX_PBUFFER_HEIGHT: case GLX_MAX_PBUFFER_PIXELS: v = 0; break;
-    case GLX_SAMPLE_BUFFERS: case GLX_SAMPLES: v = 0; break;
-    case GLX_FRAMEBUFFER_SRGB_CAPABLE_ARB: v = 0; break;
-    default: return false;
+    case GLX_USE_GL:
+      v = 1;
+      break;
+    case GLX_BUFFER_SIZE:
+      v = 32;
+      break;
+    case GLX_LEVEL:
+      v = 0;
+      break;
+    case GLX_RGBA:
+      v = 1;
+      break;
+    case GLX_DOUBLEBUFFER:
+      v = c.double_buffered;
+      break;
+    case GLX_STEREO:
+      v = 0;
+      break;
+    case GLX_AUX_BUFFERS:
+      v = 0;
+      break;
+    case GLX_RED_SIZE:
+    case GLX_GREEN_SIZE:
+    case GLX_BLUE_SIZE:
+    case GLX_ALPHA_SIZE:
+      v = 8;
+      break;
+    case GLX_DEPTH_SIZE:
+      v = 24;
+      break;
+    case GLX_STENCIL_SIZE:
+      v = 8;
+      break;
+    case GLX_ACCUM_RED_SIZE:
+    case GLX_ACCUM_GREEN_SIZE:
+    case GLX_ACCUM_BLUE_SIZE:
+    case GLX_ACCUM_ALPHA_SIZE:
+      v = 0;
+      break;
+    case GLX_CONFIG_CAVEAT:
+      v = GLX_NONE;
+      break;
+    case GLX_X_VISUAL_TYPE:
+      v = GLX_TRUE_COLOR;
+      break;
+    case GLX_TRANSPARENT_TYPE:
+      v = GLX_NONE;
+      break;
+    case GLX_TRANSPARENT_INDEX_VALUE:
+    case GLX_TRANSPARENT_RED_VALUE:
+    case GLX_TRANSPARENT_GREEN_VALUE:
+    case GLX_TRANSPARENT_BLUE_VALUE:
+    case GLX_TRANSPARENT_ALPHA_VALUE:
+      v = 0;
+      break;
+    case GLX_VISUAL_ID:
+      v = static_cast<int>(c.visual);
+      break;
+    case GLX_FBCONFIG_ID:
+      v = static_cast<int>((c.visual << 1) | (c.double_buffered ? 1 : 0));
+      break;
+    case GLX_DRAWABLE_TYPE:
+      v = GLX_WINDOW_BIT;
+      break;
+    case GLX_RENDER_TYPE:
+      v = GLX_RGBA_BIT;
+      break;
+    case GLX_X_RENDERABLE:
+      v = 1;
+      break;
+    case GLX_SCREEN:
+      v = c.screen;
+      break;
+    case GLX_MAX_PBUFFER_WIDTH:
+    case GLX_MAX_PBUFFER_HEIGHT:
+    case GLX_MAX_PBUFFER_PIXELS:
+      v = 0;
+      break;
+    case GLX_SAMPLE_BUFFERS:
+    case GLX_SAMPLES:
+      v = 0;
+      break;
+    case GLX_FRAMEBUFFER_SRGB_CAPABLE_ARB:
+      v = 0;
+      break;
+    default:
+      return false;
   }
   *value = v;
   return true;
@@ -81,18 +144,36 @@ bool value_matches(int attribute, int wanted, int have) {
   if (wanted == static_cast<int>(GLX_DONT_CARE)) return true;
   switch (attribute) {
     // Minimum criteria.
-    case GLX_BUFFER_SIZE: case GLX_AUX_BUFFERS: case GLX_RED_SIZE: case GLX_GREEN_SIZE: case GLX_BLUE_SIZE:
-    case GLX_ALPHA_SIZE: case GLX_DEPTH_SIZE: case GLX_STENCIL_SIZE: case GLX_ACCUM_RED_SIZE:
-    case GLX_ACCUM_GREEN_SIZE: case GLX_ACCUM_BLUE_SIZE: case GLX_ACCUM_ALPHA_SIZE: case GLX_SAMPLE_BUFFERS:
+    case GLX_BUFFER_SIZE:
+    case GLX_AUX_BUFFERS:
+    case GLX_RED_SIZE:
+    case GLX_GREEN_SIZE:
+    case GLX_BLUE_SIZE:
+    case GLX_ALPHA_SIZE:
+    case GLX_DEPTH_SIZE:
+    case GLX_STENCIL_SIZE:
+    case GLX_ACCUM_RED_SIZE:
+    case GLX_ACCUM_GREEN_SIZE:
+    case GLX_ACCUM_BLUE_SIZE:
+    case GLX_ACCUM_ALPHA_SIZE:
+    case GLX_SAMPLE_BUFFERS:
     case GLX_SAMPLES:
       return have >= wanted;
     // Masks: every requested bit must be supported.
-    case GLX_DRAWABLE_TYPE: case GLX_RENDER_TYPE:
+    case GLX_DRAWABLE_TYPE:
+    case GLX_RENDER_TYPE:
       return (have & wanted) == wanted;
     // Ignored by matching.
-    case GLX_TRANSPARENT_INDEX_VALUE: case GLX_TRANSPARENT_RED_VALUE: case GLX_TRANSPARENT_GREEN_VALUE:
-    case GLX_TRANSPARENT_BLUE_VALUE: case GLX_TRANSPARENT_ALPHA_VALUE: case GLX_MAX_PBUFFER_WIDTH:
-    case GLX_MAX_PBUFFER_HEIGHT: case GLX_MAX_PBUFFER_PIXELS: case GLX_VISUAL_ID: case GLX_SCREEN:
+    case GLX_TRANSPARENT_INDEX_VALUE:
+    case GLX_TRANSPARENT_RED_VALUE:
+    case GLX_TRANSPARENT_GREEN_VALUE:
+    case GLX_TRANSPARENT_BLUE_VALUE:
+    case GLX_TRANSPARENT_ALPHA_VALUE:
+    case GLX_MAX_PBUFFER_WIDTH:
+    case GLX_MAX_PBUFFER_HEIGHT:
+    case GLX_MAX_PBUFFER_PIXELS:
+    case GLX_VISUAL_ID:
+    case GLX_SCREEN:
       return true;
     case GLX_FRAMEBUFFER_SRGB_CAPABLE_ARB:
       return !wanted || have;
@@ -124,9 +205,20 @@ bool visual_list_matches(const FBConfig& c, const int* list) {
   for (int i = 0; list[i] != None;) {
     const int a = list[i];
     // Boolean tokens stand alone in glXChooseVisual's list.
-    if (a == GLX_USE_GL) { ++i; continue; }
-    if (a == GLX_RGBA) { rgba = true; ++i; continue; }
-    if (a == GLX_DOUBLEBUFFER) { double_buffered = true; ++i; continue; }
+    if (a == GLX_USE_GL) {
+      ++i;
+      continue;
+    }
+    if (a == GLX_RGBA) {
+      rgba = true;
+      ++i;
+      continue;
+    }
+    if (a == GLX_DOUBLEBUFFER) {
+      double_buffered = true;
+      ++i;
+      continue;
+    }
     if (a == GLX_STEREO) return false;
     if (a == GLX_LEVEL) {
       if (list[i + 1] != 0) return false;

@@ -59,7 +59,8 @@ bool make_current(Display* dpy, GLXDrawable draw, GLXDrawable read, GLXContext c
   if (old != ctx) release_current();
   if (!ctx->target || ctx->target->window() != draw) {
     std::string error;
-    ctx->target = glpt::X11WindowTarget::create(DisplayString(dpy), static_cast<uint32_t>(draw), &error);
+    ctx->target =
+        glpt::X11WindowTarget::create(DisplayString(dpy), static_cast<uint32_t>(draw), &error);
     if (!ctx->target) {
       std::fprintf(stderr, "glpt: %s\n", error.c_str());
       return false;
@@ -139,7 +140,8 @@ GLPT_EXPORT GLXFBConfig* glXGetFBConfigs(Display* dpy, int screen, int* nelement
   return out;
 }
 
-GLPT_EXPORT GLXFBConfig* glXChooseFBConfig(Display* dpy, int screen, const int* attrib_list, int* nelements) {
+GLPT_EXPORT GLXFBConfig* glXChooseFBConfig(Display* dpy, int screen, const int* attrib_list,
+                                           int* nelements) {
   if (nelements) *nelements = 0;
   if (dpy == nullptr || nelements == nullptr) return nullptr;
   std::vector<GLXFBConfig> matching;
@@ -166,14 +168,16 @@ GLPT_EXPORT XVisualInfo* glXGetVisualFromFBConfig(Display* dpy, GLXFBConfig conf
   return visual_info(dpy, c.visual);
 }
 
-GLPT_EXPORT GLXContext glXCreateContext(Display* dpy, XVisualInfo* vis, GLXContext share_list, Bool direct) {
+GLPT_EXPORT GLXContext glXCreateContext(Display* dpy, XVisualInfo* vis, GLXContext share_list,
+                                        Bool direct) {
   (void)direct;
   if (vis == nullptr) return nullptr;
-  return create_context(dpy, glpt::glx::encode({vis->visualid, vis->screen, vis->depth, true}), share_list);
+  return create_context(dpy, glpt::glx::encode({vis->visualid, vis->screen, vis->depth, true}),
+                        share_list);
 }
 
-GLPT_EXPORT GLXContext glXCreateNewContext(Display* dpy, GLXFBConfig config, int render_type, GLXContext share_list,
-                                           Bool direct) {
+GLPT_EXPORT GLXContext glXCreateNewContext(Display* dpy, GLXFBConfig config, int render_type,
+                                           GLXContext share_list, Bool direct) {
   (void)direct;
   if (render_type != GLX_RGBA_TYPE) return nullptr;  // colour-index contexts are not supported
   glpt::glx::FBConfig c;
@@ -181,20 +185,32 @@ GLPT_EXPORT GLXContext glXCreateNewContext(Display* dpy, GLXFBConfig config, int
   return create_context(dpy, config, share_list);
 }
 
-GLPT_EXPORT GLXContext glXCreateContextAttribsARB(Display* dpy, GLXFBConfig config, GLXContext share_context,
-                                                  Bool direct, const int* attrib_list) {
+GLPT_EXPORT GLXContext glXCreateContextAttribsARB(Display* dpy, GLXFBConfig config,
+                                                  GLXContext share_context, Bool direct,
+                                                  const int* attrib_list) {
   (void)direct;
   glpt::glx::FBConfig c;
   if (!glpt::glx::decode(dpy, config, &c)) return nullptr;
-  int major = 1, minor = 0, profile = GLX_CONTEXT_COMPATIBILITY_PROFILE_BIT_ARB, render_type = GLX_RGBA_TYPE;
+  int major = 1, minor = 0, profile = GLX_CONTEXT_COMPATIBILITY_PROFILE_BIT_ARB,
+      render_type = GLX_RGBA_TYPE;
   for (int i = 0; attrib_list && attrib_list[i] != None; i += 2) {
     switch (attrib_list[i]) {
-      case GLX_CONTEXT_MAJOR_VERSION_ARB: major = attrib_list[i + 1]; break;
-      case GLX_CONTEXT_MINOR_VERSION_ARB: minor = attrib_list[i + 1]; break;
-      case GLX_CONTEXT_PROFILE_MASK_ARB: profile = attrib_list[i + 1]; break;
-      case GLX_RENDER_TYPE: render_type = attrib_list[i + 1]; break;
-      case GLX_CONTEXT_FLAGS_ARB: break;
-      default: return nullptr;  // unknown attribute: BadValue in GLX terms
+      case GLX_CONTEXT_MAJOR_VERSION_ARB:
+        major = attrib_list[i + 1];
+        break;
+      case GLX_CONTEXT_MINOR_VERSION_ARB:
+        minor = attrib_list[i + 1];
+        break;
+      case GLX_CONTEXT_PROFILE_MASK_ARB:
+        profile = attrib_list[i + 1];
+        break;
+      case GLX_RENDER_TYPE:
+        render_type = attrib_list[i + 1];
+        break;
+      case GLX_CONTEXT_FLAGS_ARB:
+        break;
+      default:
+        return nullptr;  // unknown attribute: BadValue in GLX terms
     }
   }
   // glpt is an OpenGL 1.5 compatibility implementation.
@@ -217,7 +233,8 @@ GLPT_EXPORT Bool glXMakeCurrent(Display* dpy, GLXDrawable drawable, GLXContext c
   return make_current(dpy, drawable, drawable, ctx) ? True : False;
 }
 
-GLPT_EXPORT Bool glXMakeContextCurrent(Display* dpy, GLXDrawable draw, GLXDrawable read, GLXContext ctx) {
+GLPT_EXPORT Bool glXMakeContextCurrent(Display* dpy, GLXDrawable draw, GLXDrawable read,
+                                       GLXContext ctx) {
   return make_current(dpy, draw, read, ctx) ? True : False;
 }
 
@@ -242,10 +259,14 @@ GLPT_EXPORT const char* glXQueryExtensionsString(Display* dpy, int screen) {
 GLPT_EXPORT const char* glXGetClientString(Display* dpy, int name) {
   (void)dpy;
   switch (name) {
-    case GLX_VENDOR: return "glpt";
-    case GLX_VERSION: return "1.4";
-    case GLX_EXTENSIONS: return kGlxExtensions;
-    default: return nullptr;
+    case GLX_VENDOR:
+      return "glpt";
+    case GLX_VERSION:
+      return "1.4";
+    case GLX_EXTENSIONS:
+      return kGlxExtensions;
+    default:
+      return nullptr;
   }
 }
 
@@ -297,17 +318,21 @@ GLPT_EXPORT int glXQueryContext(Display* dpy, GLXContext ctx, int attribute, int
     case GLX_FBCONFIG_ID:
       if (!glpt::glx::decode(dpy, ctx->config, &c)) return GLX_BAD_CONTEXT;
       return glpt::glx::config_attribute(c, GLX_FBCONFIG_ID, value) ? Success : GLX_BAD_ATTRIBUTE;
-    case GLX_RENDER_TYPE: *value = GLX_RGBA_TYPE; return Success;
+    case GLX_RENDER_TYPE:
+      *value = GLX_RGBA_TYPE;
+      return Success;
     case GLX_SCREEN:
       if (!glpt::glx::decode(dpy, ctx->config, &c)) return GLX_BAD_CONTEXT;
       *value = c.screen;
       return Success;
-    default: return GLX_BAD_ATTRIBUTE;
+    default:
+      return GLX_BAD_ATTRIBUTE;
   }
 }
 
 // A GLXWindow is the X window itself: glpt draws into the window it was created for.
-GLPT_EXPORT GLXWindow glXCreateWindow(Display* dpy, GLXFBConfig config, Window win, const int* attrib_list) {
+GLPT_EXPORT GLXWindow glXCreateWindow(Display* dpy, GLXFBConfig config, Window win,
+                                      const int* attrib_list) {
   (void)dpy;
   (void)config;
   (void)attrib_list;
@@ -319,7 +344,8 @@ GLPT_EXPORT void glXDestroyWindow(Display* dpy, GLXWindow win) {
   (void)win;
 }
 
-GLPT_EXPORT void glXQueryDrawable(Display* dpy, GLXDrawable draw, int attribute, unsigned int* value) {
+GLPT_EXPORT void glXQueryDrawable(Display* dpy, GLXDrawable draw, int attribute,
+                                  unsigned int* value) {
   if (dpy == nullptr || value == nullptr || draw == None) return;
   switch (attribute) {
     case GLX_WIDTH:
@@ -327,12 +353,19 @@ GLPT_EXPORT void glXQueryDrawable(Display* dpy, GLXDrawable draw, int attribute,
       Window root;
       int x, y;
       unsigned int w = 0, h = 0, border, depth;
-      if (XGetGeometry(dpy, draw, &root, &x, &y, &w, &h, &border, &depth)) *value = attribute == GLX_WIDTH ? w : h;
+      if (XGetGeometry(dpy, draw, &root, &x, &y, &w, &h, &border, &depth))
+        *value = attribute == GLX_WIDTH ? w : h;
       return;
     }
-    case GLX_PRESERVED_CONTENTS: case GLX_LARGEST_PBUFFER: *value = 0; return;
-    case GLX_FBCONFIG_ID: *value = 0; return;
-    default: return;
+    case GLX_PRESERVED_CONTENTS:
+    case GLX_LARGEST_PBUFFER:
+      *value = 0;
+      return;
+    case GLX_FBCONFIG_ID:
+      *value = 0;
+      return;
+    default:
+      return;
   }
 }
 
@@ -353,27 +386,49 @@ GLPT_EXPORT __GLXextFuncPtr glXGetProcAddressARB(const GLubyte* name) {
   return glpt::lookup_gl_proc(n);
 }
 
-GLPT_EXPORT __GLXextFuncPtr glXGetProcAddress(const GLubyte* name) { return glXGetProcAddressARB(name); }
+GLPT_EXPORT __GLXextFuncPtr glXGetProcAddress(const GLubyte* name) {
+  return glXGetProcAddressARB(name);
+}
 
 }  // extern "C"
 
 namespace {
 
-#define GLPT_GLX_PROC(name) {#name, reinterpret_cast<__GLXextFuncPtr>(&name)}
+#define GLPT_GLX_PROC(name) \
+  { #name, reinterpret_cast < __GLXextFuncPtr>(&name) }
 const GlxProc* glx_proc_table(size_t* count) {
   static const GlxProc table[] = {
-      GLPT_GLX_PROC(glXChooseVisual), GLPT_GLX_PROC(glXGetConfig), GLPT_GLX_PROC(glXGetFBConfigs),
-      GLPT_GLX_PROC(glXChooseFBConfig), GLPT_GLX_PROC(glXGetFBConfigAttrib),
-      GLPT_GLX_PROC(glXGetVisualFromFBConfig), GLPT_GLX_PROC(glXCreateContext),
-      GLPT_GLX_PROC(glXCreateNewContext), GLPT_GLX_PROC(glXCreateContextAttribsARB),
-      GLPT_GLX_PROC(glXDestroyContext), GLPT_GLX_PROC(glXMakeCurrent), GLPT_GLX_PROC(glXMakeContextCurrent),
-      GLPT_GLX_PROC(glXSwapBuffers), GLPT_GLX_PROC(glXQueryExtensionsString), GLPT_GLX_PROC(glXGetClientString),
-      GLPT_GLX_PROC(glXQueryServerString), GLPT_GLX_PROC(glXQueryExtension), GLPT_GLX_PROC(glXQueryVersion),
-      GLPT_GLX_PROC(glXIsDirect), GLPT_GLX_PROC(glXGetCurrentContext), GLPT_GLX_PROC(glXGetCurrentDrawable),
-      GLPT_GLX_PROC(glXGetCurrentReadDrawable), GLPT_GLX_PROC(glXGetCurrentDisplay),
-      GLPT_GLX_PROC(glXQueryContext), GLPT_GLX_PROC(glXCreateWindow), GLPT_GLX_PROC(glXDestroyWindow),
-      GLPT_GLX_PROC(glXQueryDrawable), GLPT_GLX_PROC(glXWaitGL), GLPT_GLX_PROC(glXWaitX),
-      GLPT_GLX_PROC(glXGetProcAddressARB), GLPT_GLX_PROC(glXGetProcAddress),
+      GLPT_GLX_PROC(glXChooseVisual),
+      GLPT_GLX_PROC(glXGetConfig),
+      GLPT_GLX_PROC(glXGetFBConfigs),
+      GLPT_GLX_PROC(glXChooseFBConfig),
+      GLPT_GLX_PROC(glXGetFBConfigAttrib),
+      GLPT_GLX_PROC(glXGetVisualFromFBConfig),
+      GLPT_GLX_PROC(glXCreateContext),
+      GLPT_GLX_PROC(glXCreateNewContext),
+      GLPT_GLX_PROC(glXCreateContextAttribsARB),
+      GLPT_GLX_PROC(glXDestroyContext),
+      GLPT_GLX_PROC(glXMakeCurrent),
+      GLPT_GLX_PROC(glXMakeContextCurrent),
+      GLPT_GLX_PROC(glXSwapBuffers),
+      GLPT_GLX_PROC(glXQueryExtensionsString),
+      GLPT_GLX_PROC(glXGetClientString),
+      GLPT_GLX_PROC(glXQueryServerString),
+      GLPT_GLX_PROC(glXQueryExtension),
+      GLPT_GLX_PROC(glXQueryVersion),
+      GLPT_GLX_PROC(glXIsDirect),
+      GLPT_GLX_PROC(glXGetCurrentContext),
+      GLPT_GLX_PROC(glXGetCurrentDrawable),
+      GLPT_GLX_PROC(glXGetCurrentReadDrawable),
+      GLPT_GLX_PROC(glXGetCurrentDisplay),
+      GLPT_GLX_PROC(glXQueryContext),
+      GLPT_GLX_PROC(glXCreateWindow),
+      GLPT_GLX_PROC(glXDestroyWindow),
+      GLPT_GLX_PROC(glXQueryDrawable),
+      GLPT_GLX_PROC(glXWaitGL),
+      GLPT_GLX_PROC(glXWaitX),
+      GLPT_GLX_PROC(glXGetProcAddressARB),
+      GLPT_GLX_PROC(glXGetProcAddress),
   };
   *count = sizeof(table) / sizeof(table[0]);
   return table;

@@ -10,15 +10,21 @@ extern "C" {
 GLPT_EXPORT XVisualInfo* glXChooseVisual(Display* dpy, int screen, int* attrib_list);
 GLPT_EXPORT int glXGetConfig(Display* dpy, XVisualInfo* vis, int attrib, int* value);
 GLPT_EXPORT GLXFBConfig* glXGetFBConfigs(Display* dpy, int screen, int* nelements);
-GLPT_EXPORT GLXFBConfig* glXChooseFBConfig(Display* dpy, int screen, const int* attrib_list, int* nelements);
+GLPT_EXPORT GLXFBConfig* glXChooseFBConfig(Display* dpy, int screen, const int* attrib_list,
+                                           int* nelements);
 GLPT_EXPORT int glXGetFBConfigAttrib(Display* dpy, GLXFBConfig config, int attribute, int* value);
 GLPT_EXPORT XVisualInfo* glXGetVisualFromFBConfig(Display* dpy, GLXFBConfig config);
-GLPT_EXPORT GLXContext glXCreateContext(Display* dpy, XVisualInfo* vis, GLXContext share_list, Bool direct);
-GLPT_EXPORT GLXContext glXCreateNewContext(Display* dpy, GLXFBConfig config, int render_type, GLXContext share_list, Bool direct);
-GLPT_EXPORT GLXContext glXCreateContextAttribsARB(Display* dpy, GLXFBConfig config, GLXContext share_context, Bool direct, const int* attrib_list);
+GLPT_EXPORT GLXContext glXCreateContext(Display* dpy, XVisualInfo* vis, GLXContext share_list,
+                                        Bool direct);
+GLPT_EXPORT GLXContext glXCreateNewContext(Display* dpy, GLXFBConfig config, int render_type,
+                                           GLXContext share_list, Bool direct);
+GLPT_EXPORT GLXContext glXCreateContextAttribsARB(Display* dpy, GLXFBConfig config,
+                                                  GLXContext share_context, Bool direct,
+                                                  const int* attrib_list);
 GLPT_EXPORT void glXDestroyContext(Display* dpy, GLXContext ctx);
 GLPT_EXPORT Bool glXMakeCurrent(Display* dpy, GLXDrawable drawable, GLXContext ctx);
-GLPT_EXPORT Bool glXMakeContextCurrent(Display* dpy, GLXDrawable draw, GLXDrawable read, GLXContext ctx);
+GLPT_EXPORT Bool glXMakeContextCurrent(Display* dpy, GLXDrawable draw, GLXDrawable read,
+                                       GLXContext ctx);
 GLPT_EXPORT void glXSwapBuffers(Display* dpy, GLXDrawable drawable);
 GLPT_EXPORT const char* glXQueryExtensionsString(Display* dpy, int screen);
 GLPT_EXPORT const char* glXGetClientString(Display* dpy, int name);
@@ -31,9 +37,11 @@ GLPT_EXPORT GLXDrawable glXGetCurrentDrawable(void);
 GLPT_EXPORT GLXDrawable glXGetCurrentReadDrawable(void);
 GLPT_EXPORT Display* glXGetCurrentDisplay(void);
 GLPT_EXPORT int glXQueryContext(Display* dpy, GLXContext ctx, int attribute, int* value);
-GLPT_EXPORT GLXWindow glXCreateWindow(Display* dpy, GLXFBConfig config, Window win, const int* attrib_list);
+GLPT_EXPORT GLXWindow glXCreateWindow(Display* dpy, GLXFBConfig config, Window win,
+                                      const int* attrib_list);
 GLPT_EXPORT void glXDestroyWindow(Display* dpy, GLXWindow win);
-GLPT_EXPORT void glXQueryDrawable(Display* dpy, GLXDrawable draw, int attribute, unsigned int* value);
+GLPT_EXPORT void glXQueryDrawable(Display* dpy, GLXDrawable draw, int attribute,
+                                  unsigned int* value);
 GLPT_EXPORT void glXWaitGL(void);
 GLPT_EXPORT void glXWaitX(void);
 GLPT_EXPORT __GLXextFuncPtr glXGetProcAddressARB(const GLubyte* name);

@@ -9,8 +9,8 @@
 
 namespace glpt {
 
-std::unique_ptr<X11WindowTarget> X11WindowTarget::create(const std::string& display_name, uint32_t window,
-                                                         std::string* error) {
+std::unique_ptr<X11WindowTarget> X11WindowTarget::create(const std::string& display_name,
+                                                         uint32_t window, std::string* error) {
   xcb_connection_t* c = xcb_connect(display_name.empty() ? nullptr : display_name.c_str(), nullptr);
   if (xcb_connection_has_error(c)) {
     xcb_disconnect(c);
@@ -30,7 +30,8 @@ X11WindowTarget::~X11WindowTarget() {
 
 bool X11WindowTarget::query_size(uint32_t* width, uint32_t* height) {
   xcb_generic_error_t* err = nullptr;
-  xcb_get_geometry_reply_t* g = xcb_get_geometry_reply(connection_, xcb_get_geometry(connection_, window_), &err);
+  xcb_get_geometry_reply_t* g =
+      xcb_get_geometry_reply(connection_, xcb_get_geometry(connection_, window_), &err);
   free(err);
   if (g == nullptr) return false;
   *width = g->width;
@@ -44,8 +45,8 @@ bool X11WindowTarget::prepare() {
   if (prepared_) return gc_ != 0;
   prepared_ = true;
   xcb_generic_error_t* err = nullptr;
-  xcb_get_window_attributes_reply_t* attrs =
-      xcb_get_window_attributes_reply(connection_, xcb_get_window_attributes(connection_, window_), &err);
+  xcb_get_window_attributes_reply_t* attrs = xcb_get_window_attributes_reply(
+      connection_, xcb_get_window_attributes(connection_, window_), &err);
   free(err);
   if (attrs == nullptr) return false;
   const xcb_visualid_t visual = attrs->visual;
@@ -87,11 +88,13 @@ void X11WindowTarget::present(const uint8_t* rgba, uint32_t width, uint32_t heig
   }
   // One PutImage request is limited in size: send strips of rows.
   const uint64_t max_bytes = uint64_t{xcb_get_maximum_request_length(connection_)} * 4 - 64;
-  const uint32_t rows_per_request = std::max<uint32_t>(1, static_cast<uint32_t>(max_bytes / (uint64_t{width} * 4)));
+  const uint32_t rows_per_request =
+      std::max<uint32_t>(1, static_cast<uint32_t>(max_bytes / (uint64_t{width} * 4)));
   for (uint32_t y = 0; y < height; y += rows_per_request) {
     const uint32_t rows = std::min(rows_per_request, height - y);
-    xcb_put_image(connection_, XCB_IMAGE_FORMAT_Z_PIXMAP, window_, gc_, static_cast<uint16_t>(width),
-                  static_cast<uint16_t>(rows), 0, static_cast<int16_t>(y), 0, depth_, rows * width * 4,
+    xcb_put_image(connection_, XCB_IMAGE_FORMAT_Z_PIXMAP, window_, gc_,
+                  static_cast<uint16_t>(width), static_cast<uint16_t>(rows), 0,
+                  static_cast<int16_t>(y), 0, depth_, rows * width * 4,
                   reinterpret_cast<const uint8_t*>(converted_.data() + size_t{y} * width));
   }
   // Round trip so the image is on screen when the swap returns (and errors are collected).

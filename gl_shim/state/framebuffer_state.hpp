@@ -24,9 +24,9 @@ struct FramebufferState {
   GLenum draw_buffer = 0x0405;  // GL_BACK
   GLenum read_buffer = 0x0405;
   GLint scissor[4] = {0, 0, 0, 0};
-  GLenum depth_func = 0x0201;   // GL_LESS
-  GLenum cull_face = 0x0405;    // GL_BACK
-  GLenum front_face = 0x0901;   // GL_CCW
+  GLenum depth_func = 0x0201;  // GL_LESS
+  GLenum cull_face = 0x0405;   // GL_BACK
+  GLenum front_face = 0x0901;  // GL_CCW
   PixelStoreModes pack, unpack;
 };
 

@@ -31,11 +31,13 @@ float plain_component(GLfloat v) { return v; }
 
 template <typename T>
 glm::vec4 color4(const T* p) {
-  return {color_component(p[0]), color_component(p[1]), color_component(p[2]), color_component(p[3])};
+  return {color_component(p[0]), color_component(p[1]), color_component(p[2]),
+          color_component(p[3])};
 }
 template <typename T>
 glm::vec4 plain4(const T* p) {
-  return {plain_component(p[0]), plain_component(p[1]), plain_component(p[2]), plain_component(p[3])};
+  return {plain_component(p[0]), plain_component(p[1]), plain_component(p[2]),
+          plain_component(p[3])};
 }
 
 rt::Light* light_of(Context& ctx, GLenum light) {
@@ -60,10 +62,18 @@ void set_light(Context& ctx, GLenum light, GLenum pname, const T* p, bool scalar
   }
   const glm::mat4& mv = ctx.matrices.modelview.top();
   switch (pname) {
-    case GL_AMBIENT: l->ambient = color4(p); break;
-    case GL_DIFFUSE: l->diffuse = color4(p); break;
-    case GL_SPECULAR: l->specular = color4(p); break;
-    case GL_POSITION: l->position = mv * plain4(p); break;  // stored in eye space
+    case GL_AMBIENT:
+      l->ambient = color4(p);
+      break;
+    case GL_DIFFUSE:
+      l->diffuse = color4(p);
+      break;
+    case GL_SPECULAR:
+      l->specular = color4(p);
+      break;
+    case GL_POSITION:
+      l->position = mv * plain4(p);
+      break;  // stored in eye space
     case GL_SPOT_DIRECTION:
       l->spot_direction = glm::mat3(mv) * glm::vec3(plain_component(p[0]), plain_component(p[1]),
                                                     plain_component(p[2]));
@@ -105,11 +115,16 @@ void set_light_model(Context& ctx, GLenum pname, const T* p, bool scalar_call) {
       if (scalar_call) return record_error(ctx, GL_INVALID_ENUM);
       s.model_ambient = color4(p);
       break;
-    case GL_LIGHT_MODEL_TWO_SIDE: s.two_side = plain_component(p[0]) != 0; break;
-    case GL_LIGHT_MODEL_LOCAL_VIEWER: s.local_viewer = plain_component(p[0]) != 0; break;
+    case GL_LIGHT_MODEL_TWO_SIDE:
+      s.two_side = plain_component(p[0]) != 0;
+      break;
+    case GL_LIGHT_MODEL_LOCAL_VIEWER:
+      s.local_viewer = plain_component(p[0]) != 0;
+      break;
     case GL_LIGHT_MODEL_COLOR_CONTROL: {
       const auto v = static_cast<GLenum>(plain_component(p[0]));
-      if (v != GL_SINGLE_COLOR && v != GL_SEPARATE_SPECULAR_COLOR) return record_error(ctx, GL_INVALID_ENUM);
+      if (v != GL_SINGLE_COLOR && v != GL_SEPARATE_SPECULAR_COLOR)
+        return record_error(ctx, GL_INVALID_ENUM);
       break;
     }
     default:
@@ -121,15 +136,26 @@ void set_light_model(Context& ctx, GLenum pname, const T* p, bool scalar_call) {
 template <typename T>
 void set_material(Context& ctx, GLenum face, GLenum pname, const T* p, bool scalar_call) {
   if (p == nullptr) return record_error(ctx, GL_INVALID_VALUE);
-  if (face != GL_FRONT && face != GL_BACK && face != GL_FRONT_AND_BACK) return record_error(ctx, GL_INVALID_ENUM);
+  if (face != GL_FRONT && face != GL_BACK && face != GL_FRONT_AND_BACK)
+    return record_error(ctx, GL_INVALID_ENUM);
   if (scalar_call && pname != GL_SHININESS) return record_error(ctx, GL_INVALID_ENUM);
   auto apply = [&](rt::Material& m) -> bool {
     switch (pname) {
-      case GL_AMBIENT: m.ambient = color4(p); return true;
-      case GL_DIFFUSE: m.diffuse = color4(p); return true;
-      case GL_SPECULAR: m.specular = color4(p); return true;
-      case GL_EMISSION: m.emission = color4(p); return true;
-      case GL_AMBIENT_AND_DIFFUSE: m.ambient = m.diffuse = color4(p); return true;
+      case GL_AMBIENT:
+        m.ambient = color4(p);
+        return true;
+      case GL_DIFFUSE:
+        m.diffuse = color4(p);
+        return true;
+      case GL_SPECULAR:
+        m.specular = color4(p);
+        return true;
+      case GL_EMISSION:
+        m.emission = color4(p);
+        return true;
+      case GL_AMBIENT_AND_DIFFUSE:
+        m.ambient = m.diffuse = color4(p);
+        return true;
       case GL_SHININESS: {
         const float v = plain_component(p[0]);
         if (!(v >= 0.0f && v <= 128.0f)) {
@@ -139,8 +165,11 @@ void set_material(Context& ctx, GLenum face, GLenum pname, const T* p, bool scal
         m.shininess = v;
         return true;
       }
-      case GL_COLOR_INDEXES: return true;  // colour-index mode is not supported; accepted and ignored
-      default: record_error(ctx, GL_INVALID_ENUM); return false;
+      case GL_COLOR_INDEXES:
+        return true;  // colour-index mode is not supported; accepted and ignored
+      default:
+        record_error(ctx, GL_INVALID_ENUM);
+        return false;
     }
   };
   bool ok = true;
@@ -157,17 +186,38 @@ void get_light(Context& ctx, GLenum light, GLenum pname, T* out) {
     for (int i = 0; i < n; ++i) out[i] = static_cast<T>(v[i]);
   };
   switch (pname) {
-    case GL_AMBIENT: put(&l->ambient.x, 4); break;
-    case GL_DIFFUSE: put(&l->diffuse.x, 4); break;
-    case GL_SPECULAR: put(&l->specular.x, 4); break;
-    case GL_POSITION: put(&l->position.x, 4); break;
-    case GL_SPOT_DIRECTION: put(&l->spot_direction.x, 3); break;
-    case GL_SPOT_EXPONENT: put(&l->spot_exponent, 1); break;
-    case GL_SPOT_CUTOFF: put(&l->spot_cutoff, 1); break;
-    case GL_CONSTANT_ATTENUATION: put(&l->constant_attenuation, 1); break;
-    case GL_LINEAR_ATTENUATION: put(&l->linear_attenuation, 1); break;
-    case GL_QUADRATIC_ATTENUATION: put(&l->quadratic_attenuation, 1); break;
-    default: record_error(ctx, GL_INVALID_ENUM);
+    case GL_AMBIENT:
+      put(&l->ambient.x, 4);
+      break;
+    case GL_DIFFUSE:
+      put(&l->diffuse.x, 4);
+      break;
+    case GL_SPECULAR:
+      put(&l->specular.x, 4);
+      break;
+    case GL_POSITION:
+      put(&l->position.x, 4);
+      break;
+    case GL_SPOT_DIRECTION:
+      put(&l->spot_direction.x, 3);
+      break;
+    case GL_SPOT_EXPONENT:
+      put(&l->spot_exponent, 1);
+      break;
+    case GL_SPOT_CUTOFF:
+      put(&l->spot_cutoff, 1);
+      break;
+    case GL_CONSTANT_ATTENUATION:
+      put(&l->constant_attenuation, 1);
+      break;
+    case GL_LINEAR_ATTENUATION:
+      put(&l->linear_attenuation, 1);
+      break;
+    case GL_QUADRATIC_ATTENUATION:
+      put(&l->quadratic_attenuation, 1);
+      break;
+    default:
+      record_error(ctx, GL_INVALID_ENUM);
   }
 }
 
@@ -179,12 +229,23 @@ void get_material(Context& ctx, GLenum face, GLenum pname, T* out) {
     for (int i = 0; i < n; ++i) out[i] = static_cast<T>(v[i]);
   };
   switch (pname) {
-    case GL_AMBIENT: put(&m.ambient.x, 4); break;
-    case GL_DIFFUSE: put(&m.diffuse.x, 4); break;
-    case GL_SPECULAR: put(&m.specular.x, 4); break;
-    case GL_EMISSION: put(&m.emission.x, 4); break;
-    case GL_SHININESS: put(&m.shininess, 1); break;
-    default: record_error(ctx, GL_INVALID_ENUM);
+    case GL_AMBIENT:
+      put(&m.ambient.x, 4);
+      break;
+    case GL_DIFFUSE:
+      put(&m.diffuse.x, 4);
+      break;
+    case GL_SPECULAR:
+      put(&m.specular.x, 4);
+      break;
+    case GL_EMISSION:
+      put(&m.emission.x, 4);
+      break;
+    case GL_SHININESS:
+      put(&m.shininess, 1);
+      break;
+    default:
+      record_error(ctx, GL_INVALID_ENUM);
   }
 }
 
@@ -192,24 +253,36 @@ void get_material(Context& ctx, GLenum face, GLenum pname, T* out) {
 
 namespace impl {
 
-void glLightf(Context& ctx, GLenum light, GLenum pname, GLfloat param) { set_light(ctx, light, pname, &param, true); }
-void glLighti(Context& ctx, GLenum light, GLenum pname, GLint param) { set_light(ctx, light, pname, &param, true); }
+void glLightf(Context& ctx, GLenum light, GLenum pname, GLfloat param) {
+  set_light(ctx, light, pname, &param, true);
+}
+void glLighti(Context& ctx, GLenum light, GLenum pname, GLint param) {
+  set_light(ctx, light, pname, &param, true);
+}
 void glLightfv(Context& ctx, GLenum light, GLenum pname, const GLfloat* params) {
   set_light(ctx, light, pname, params, false);
 }
 void glLightiv(Context& ctx, GLenum light, GLenum pname, const GLint* params) {
   set_light(ctx, light, pname, params, false);
 }
-void glLightModelf(Context& ctx, GLenum pname, GLfloat param) { set_light_model(ctx, pname, &param, true); }
-void glLightModeli(Context& ctx, GLenum pname, GLint param) { set_light_model(ctx, pname, &param, true); }
+void glLightModelf(Context& ctx, GLenum pname, GLfloat param) {
+  set_light_model(ctx, pname, &param, true);
+}
+void glLightModeli(Context& ctx, GLenum pname, GLint param) {
+  set_light_model(ctx, pname, &param, true);
+}
 void glLightModelfv(Context& ctx, GLenum pname, const GLfloat* params) {
   set_light_model(ctx, pname, params, false);
 }
 void glLightModeliv(Context& ctx, GLenum pname, const GLint* params) {
   set_light_model(ctx, pname, params, false);
 }
-void glMaterialf(Context& ctx, GLenum face, GLenum pname, GLfloat param) { set_material(ctx, face, pname, &param, true); }
-void glMateriali(Context& ctx, GLenum face, GLenum pname, GLint param) { set_material(ctx, face, pname, &param, true); }
+void glMaterialf(Context& ctx, GLenum face, GLenum pname, GLfloat param) {
+  set_material(ctx, face, pname, &param, true);
+}
+void glMateriali(Context& ctx, GLenum face, GLenum pname, GLint param) {
+  set_material(ctx, face, pname, &param, true);
+}
 void glMaterialfv(Context& ctx, GLenum face, GLenum pname, const GLfloat* params) {
   set_material(ctx, face, pname, params, false);
 }
@@ -230,7 +303,8 @@ void glGetMaterialiv(Context& ctx, GLenum face, GLenum pname, GLint* params) {
 }
 
 void glColorMaterial(Context& ctx, GLenum face, GLenum mode) {
-  if (face != GL_FRONT && face != GL_BACK && face != GL_FRONT_AND_BACK) return record_error(ctx, GL_INVALID_ENUM);
+  if (face != GL_FRONT && face != GL_BACK && face != GL_FRONT_AND_BACK)
+    return record_error(ctx, GL_INVALID_ENUM);
   if (mode != GL_EMISSION && mode != GL_AMBIENT && mode != GL_DIFFUSE && mode != GL_SPECULAR &&
       mode != GL_AMBIENT_AND_DIFFUSE)
     return record_error(ctx, GL_INVALID_ENUM);

@@ -2,7 +2,6 @@
 #pragma once
 
 #include <array>
-
 #include <glm/glm.hpp>
 
 #include "gl_shim/gl_types.h"
@@ -19,9 +18,9 @@ struct LightingState {
   glm::vec4 model_ambient{0.2f, 0.2f, 0.2f, 1.0f};
   bool two_side = false;
   bool local_viewer = false;
-  GLenum color_material_face = 0x0408;       // GL_FRONT_AND_BACK
-  GLenum color_material_mode = 0x1602;       // GL_AMBIENT_AND_DIFFUSE
-  GLenum shade_model = 0x1D01;               // GL_SMOOTH
+  GLenum color_material_face = 0x0408;  // GL_FRONT_AND_BACK
+  GLenum color_material_mode = 0x1602;  // GL_AMBIENT_AND_DIFFUSE
+  GLenum shade_model = 0x1D01;          // GL_SMOOTH
   // Bumped on any change that affects how vertices are shaded, so the capture code re-interns
   // the material only when something changed.
   uint64_t material_version = 0;

@@ -3,7 +3,6 @@
 #include "gl_shim/state/matrix_stack.hpp"
 
 #include <cmath>
-
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
@@ -110,13 +109,25 @@ void glLoadMatrixf(Context& ctx, const GLfloat* m) { load(ctx, from_column_major
 void glLoadMatrixd(Context& ctx, const GLdouble* m) { load(ctx, from_column_major(m)); }
 void glMultMatrixf(Context& ctx, const GLfloat* m) { multiply(ctx, from_column_major(m)); }
 void glMultMatrixd(Context& ctx, const GLdouble* m) { multiply(ctx, from_column_major(m)); }
-void glLoadTransposeMatrixf(Context& ctx, const GLfloat* m) { load(ctx, glm::transpose(from_column_major(m))); }
-void glLoadTransposeMatrixd(Context& ctx, const GLdouble* m) { load(ctx, glm::transpose(from_column_major(m))); }
-void glMultTransposeMatrixf(Context& ctx, const GLfloat* m) { multiply(ctx, glm::transpose(from_column_major(m))); }
-void glMultTransposeMatrixd(Context& ctx, const GLdouble* m) { multiply(ctx, glm::transpose(from_column_major(m))); }
+void glLoadTransposeMatrixf(Context& ctx, const GLfloat* m) {
+  load(ctx, glm::transpose(from_column_major(m)));
+}
+void glLoadTransposeMatrixd(Context& ctx, const GLdouble* m) {
+  load(ctx, glm::transpose(from_column_major(m)));
+}
+void glMultTransposeMatrixf(Context& ctx, const GLfloat* m) {
+  multiply(ctx, glm::transpose(from_column_major(m)));
+}
+void glMultTransposeMatrixd(Context& ctx, const GLdouble* m) {
+  multiply(ctx, glm::transpose(from_column_major(m)));
+}
 
-void glRotatef(Context& ctx, GLfloat angle, GLfloat x, GLfloat y, GLfloat z) { rotate(ctx, angle, x, y, z); }
-void glRotated(Context& ctx, GLdouble angle, GLdouble x, GLdouble y, GLdouble z) { rotate(ctx, angle, x, y, z); }
+void glRotatef(Context& ctx, GLfloat angle, GLfloat x, GLfloat y, GLfloat z) {
+  rotate(ctx, angle, x, y, z);
+}
+void glRotated(Context& ctx, GLdouble angle, GLdouble x, GLdouble y, GLdouble z) {
+  rotate(ctx, angle, x, y, z);
+}
 
 void glTranslatef(Context& ctx, GLfloat x, GLfloat y, GLfloat z) {
   multiply(ctx, glm::translate(glm::mat4(1.0f), glm::vec3(x, y, z)));
@@ -131,7 +142,8 @@ void glScaled(Context& ctx, GLdouble x, GLdouble y, GLdouble z) {
   multiply(ctx, glm::mat4(glm::scale(glm::dmat4(1.0), glm::dvec3(x, y, z))));
 }
 
-void glFrustum(Context& ctx, GLdouble l, GLdouble r, GLdouble b, GLdouble t, GLdouble n, GLdouble f) {
+void glFrustum(Context& ctx, GLdouble l, GLdouble r, GLdouble b, GLdouble t, GLdouble n,
+               GLdouble f) {
   frustum(ctx, l, r, b, t, n, f);
 }
 void glOrtho(Context& ctx, GLdouble l, GLdouble r, GLdouble b, GLdouble t, GLdouble n, GLdouble f) {

@@ -2,9 +2,8 @@
 #pragma once
 
 #include <array>
-#include <vector>
-
 #include <glm/glm.hpp>
+#include <vector>
 
 #include "gl_shim/gl_types.h"
 
@@ -12,7 +11,10 @@ namespace glpt {
 
 class MatrixStack {
  public:
-  explicit MatrixStack(size_t max_depth) : max_depth_(max_depth) { stack_.reserve(max_depth); stack_.push_back(glm::mat4(1.0f)); }
+  explicit MatrixStack(size_t max_depth) : max_depth_(max_depth) {
+    stack_.reserve(max_depth);
+    stack_.push_back(glm::mat4(1.0f));
+  }
   const glm::mat4& top() const { return stack_.back(); }
   glm::mat4& top() { return stack_.back(); }
   size_t depth() const { return stack_.size(); }

@@ -49,76 +49,227 @@ bool lookup(const Context& ctx, GLenum pname, Value* out) {
   const auto& fb = ctx.framebuffer;
   const auto& m = ctx.matrices;
   switch (pname) {
-    case GL_VIEWPORT: *out = ints({double(fb.viewport_x), double(fb.viewport_y), double(fb.viewport_width), double(fb.viewport_height)}); return true;
-    case GL_MAX_VIEWPORT_DIMS: *out = ints({16384, 16384}); return true;
-    case GL_MATRIX_MODE: *out = ints({double(m.mode)}); return true;
-    case GL_MODELVIEW_MATRIX: *out = floats(&m.modelview.top()[0][0], 16); return true;
-    case GL_PROJECTION_MATRIX: *out = floats(&m.projection.top()[0][0], 16); return true;
-    case GL_TEXTURE_MATRIX: *out = floats(&m.texture[m.active_texture].top()[0][0], 16); return true;
-    case GL_MODELVIEW_STACK_DEPTH: *out = ints({double(m.modelview.depth())}); return true;
-    case GL_PROJECTION_STACK_DEPTH: *out = ints({double(m.projection.depth())}); return true;
-    case GL_TEXTURE_STACK_DEPTH: *out = ints({double(m.texture[m.active_texture].depth())}); return true;
-    case GL_MAX_MODELVIEW_STACK_DEPTH: *out = ints({double(m.modelview.max_depth())}); return true;
-    case GL_MAX_PROJECTION_STACK_DEPTH: *out = ints({double(m.projection.max_depth())}); return true;
-    case GL_MAX_TEXTURE_STACK_DEPTH: *out = ints({double(m.texture[0].max_depth())}); return true;
-    case GL_MAX_LIGHTS: *out = ints({kMaxLights}); return true;
-    case GL_MAX_CLIP_PLANES: *out = ints({6}); return true;
-    case GL_MAX_TEXTURE_SIZE: *out = ints({kMaxTextureSize}); return true;
-    case GL_MAX_3D_TEXTURE_SIZE: *out = ints({256}); return true;
-    case GL_MAX_CUBE_MAP_TEXTURE_SIZE: *out = ints({kMaxTextureSize}); return true;
-    case GL_MAX_TEXTURE_UNITS: *out = ints({double(kMaxTextureUnits)}); return true;
-    case GL_ACTIVE_TEXTURE: *out = ints({double(GL_TEXTURE0 + m.active_texture)}); return true;
-    case GL_MAX_LIST_NESTING: *out = ints({DisplayListState::kMaxNesting}); return true;
-    case GL_MAX_ATTRIB_STACK_DEPTH: case GL_MAX_CLIENT_ATTRIB_STACK_DEPTH: *out = ints({16}); return true;
-    case GL_MAX_NAME_STACK_DEPTH: *out = ints({64}); return true;
-    case GL_MAX_EVAL_ORDER: *out = ints({30}); return true;
-    case GL_MAX_PIXEL_MAP_TABLE: *out = ints({256}); return true;
-    case GL_MAX_ELEMENTS_VERTICES: case GL_MAX_ELEMENTS_INDICES: *out = ints({1 << 20}); return true;
-    case GL_SUBPIXEL_BITS: *out = ints({4}); return true;
-    case GL_AUX_BUFFERS: *out = ints({0}); return true;
-    case GL_LIST_BASE: *out = ints({double(ctx.lists.list_base)}); return true;
-    case GL_LIST_INDEX: *out = ints({double(ctx.lists.compiling_name)}); return true;
-    case GL_LIST_MODE: *out = ints({double(ctx.lists.compiling_mode)}); return true;
-    case GL_COLOR_CLEAR_VALUE: *out = floats(&fb.clear_color.x, 4, Kind::kColor); return true;
-    case GL_DEPTH_CLEAR_VALUE: { float d = float(fb.clear_depth); *out = floats(&d, 1, Kind::kColor); return true; }
-    case GL_STENCIL_CLEAR_VALUE: *out = ints({double(fb.clear_stencil)}); return true;
-    case GL_DEPTH_RANGE: { float d[2] = {float(fb.depth_near), float(fb.depth_far)}; *out = floats(d, 2, Kind::kColor); return true; }
-    case GL_DEPTH_FUNC: *out = ints({double(fb.depth_func)}); return true;
-    case GL_CULL_FACE_MODE: *out = ints({double(fb.cull_face)}); return true;
-    case GL_FRONT_FACE: *out = ints({double(fb.front_face)}); return true;
-    case GL_DRAW_BUFFER: *out = ints({double(fb.draw_buffer)}); return true;
-    case GL_READ_BUFFER: *out = ints({double(fb.read_buffer)}); return true;
-    case GL_SCISSOR_BOX: *out = ints({double(fb.scissor[0]), double(fb.scissor[1]), double(fb.scissor[2]), double(fb.scissor[3])}); return true;
-    case GL_PACK_ALIGNMENT: *out = ints({double(fb.pack.alignment)}); return true;
-    case GL_UNPACK_ALIGNMENT: *out = ints({double(fb.unpack.alignment)}); return true;
-    case GL_PACK_ROW_LENGTH: *out = ints({double(fb.pack.row_length)}); return true;
-    case GL_UNPACK_ROW_LENGTH: *out = ints({double(fb.unpack.row_length)}); return true;
-    case GL_PACK_SKIP_ROWS: *out = ints({double(fb.pack.skip_rows)}); return true;
-    case GL_UNPACK_SKIP_ROWS: *out = ints({double(fb.unpack.skip_rows)}); return true;
-    case GL_PACK_SKIP_PIXELS: *out = ints({double(fb.pack.skip_pixels)}); return true;
-    case GL_UNPACK_SKIP_PIXELS: *out = ints({double(fb.unpack.skip_pixels)}); return true;
-    case GL_PACK_SWAP_BYTES: *out = boolean(fb.pack.swap_bytes); return true;
-    case GL_UNPACK_SWAP_BYTES: *out = boolean(fb.unpack.swap_bytes); return true;
-    case GL_PACK_LSB_FIRST: *out = boolean(fb.pack.lsb_first); return true;
-    case GL_UNPACK_LSB_FIRST: *out = boolean(fb.unpack.lsb_first); return true;
-    case GL_CURRENT_COLOR: *out = floats(&ctx.current.color.x, 4, Kind::kColor); return true;
-    case GL_CURRENT_NORMAL: *out = floats(&ctx.current.normal.x, 3, Kind::kColor); return true;
-    case GL_CURRENT_TEXTURE_COORDS: *out = floats(&ctx.current.tex_coord[m.active_texture].x, 4); return true;
-    case GL_SHADE_MODEL: *out = ints({double(ctx.lighting.shade_model)}); return true;
-    case GL_LIGHT_MODEL_AMBIENT: *out = floats(&ctx.lighting.model_ambient.x, 4, Kind::kColor); return true;
-    case GL_LIGHT_MODEL_TWO_SIDE: *out = boolean(ctx.lighting.two_side); return true;
-    case GL_LIGHT_MODEL_LOCAL_VIEWER: *out = boolean(ctx.lighting.local_viewer); return true;
-    case GL_COLOR_MATERIAL_FACE: *out = ints({double(ctx.lighting.color_material_face)}); return true;
-    case GL_COLOR_MATERIAL_PARAMETER: *out = ints({double(ctx.lighting.color_material_mode)}); return true;
+    case GL_VIEWPORT:
+      *out = ints({double(fb.viewport_x), double(fb.viewport_y), double(fb.viewport_width),
+                   double(fb.viewport_height)});
+      return true;
+    case GL_MAX_VIEWPORT_DIMS:
+      *out = ints({16384, 16384});
+      return true;
+    case GL_MATRIX_MODE:
+      *out = ints({double(m.mode)});
+      return true;
+    case GL_MODELVIEW_MATRIX:
+      *out = floats(&m.modelview.top()[0][0], 16);
+      return true;
+    case GL_PROJECTION_MATRIX:
+      *out = floats(&m.projection.top()[0][0], 16);
+      return true;
+    case GL_TEXTURE_MATRIX:
+      *out = floats(&m.texture[m.active_texture].top()[0][0], 16);
+      return true;
+    case GL_MODELVIEW_STACK_DEPTH:
+      *out = ints({double(m.modelview.depth())});
+      return true;
+    case GL_PROJECTION_STACK_DEPTH:
+      *out = ints({double(m.projection.depth())});
+      return true;
+    case GL_TEXTURE_STACK_DEPTH:
+      *out = ints({double(m.texture[m.active_texture].depth())});
+      return true;
+    case GL_MAX_MODELVIEW_STACK_DEPTH:
+      *out = ints({double(m.modelview.max_depth())});
+      return true;
+    case GL_MAX_PROJECTION_STACK_DEPTH:
+      *out = ints({double(m.projection.max_depth())});
+      return true;
+    case GL_MAX_TEXTURE_STACK_DEPTH:
+      *out = ints({double(m.texture[0].max_depth())});
+      return true;
+    case GL_MAX_LIGHTS:
+      *out = ints({kMaxLights});
+      return true;
+    case GL_MAX_CLIP_PLANES:
+      *out = ints({6});
+      return true;
+    case GL_MAX_TEXTURE_SIZE:
+      *out = ints({kMaxTextureSize});
+      return true;
+    case GL_MAX_3D_TEXTURE_SIZE:
+      *out = ints({256});
+      return true;
+    case GL_MAX_CUBE_MAP_TEXTURE_SIZE:
+      *out = ints({kMaxTextureSize});
+      return true;
+    case GL_MAX_TEXTURE_UNITS:
+      *out = ints({double(kMaxTextureUnits)});
+      return true;
+    case GL_ACTIVE_TEXTURE:
+      *out = ints({double(GL_TEXTURE0 + m.active_texture)});
+      return true;
+    case GL_MAX_LIST_NESTING:
+      *out = ints({DisplayListState::kMaxNesting});
+      return true;
+    case GL_MAX_ATTRIB_STACK_DEPTH:
+    case GL_MAX_CLIENT_ATTRIB_STACK_DEPTH:
+      *out = ints({16});
+      return true;
+    case GL_MAX_NAME_STACK_DEPTH:
+      *out = ints({64});
+      return true;
+    case GL_MAX_EVAL_ORDER:
+      *out = ints({30});
+      return true;
+    case GL_MAX_PIXEL_MAP_TABLE:
+      *out = ints({256});
+      return true;
+    case GL_MAX_ELEMENTS_VERTICES:
+    case GL_MAX_ELEMENTS_INDICES:
+      *out = ints({1 << 20});
+      return true;
+    case GL_SUBPIXEL_BITS:
+      *out = ints({4});
+      return true;
+    case GL_AUX_BUFFERS:
+      *out = ints({0});
+      return true;
+    case GL_LIST_BASE:
+      *out = ints({double(ctx.lists.list_base)});
+      return true;
+    case GL_LIST_INDEX:
+      *out = ints({double(ctx.lists.compiling_name)});
+      return true;
+    case GL_LIST_MODE:
+      *out = ints({double(ctx.lists.compiling_mode)});
+      return true;
+    case GL_COLOR_CLEAR_VALUE:
+      *out = floats(&fb.clear_color.x, 4, Kind::kColor);
+      return true;
+    case GL_DEPTH_CLEAR_VALUE: {
+      float d = float(fb.clear_depth);
+      *out = floats(&d, 1, Kind::kColor);
+      return true;
+    }
+    case GL_STENCIL_CLEAR_VALUE:
+      *out = ints({double(fb.clear_stencil)});
+      return true;
+    case GL_DEPTH_RANGE: {
+      float d[2] = {float(fb.depth_near), float(fb.depth_far)};
+      *out = floats(d, 2, Kind::kColor);
+      return true;
+    }
+    case GL_DEPTH_FUNC:
+      *out = ints({double(fb.depth_func)});
+      return true;
+    case GL_CULL_FACE_MODE:
+      *out = ints({double(fb.cull_face)});
+      return true;
+    case GL_FRONT_FACE:
+      *out = ints({double(fb.front_face)});
+      return true;
+    case GL_DRAW_BUFFER:
+      *out = ints({double(fb.draw_buffer)});
+      return true;
+    case GL_READ_BUFFER:
+      *out = ints({double(fb.read_buffer)});
+      return true;
+    case GL_SCISSOR_BOX:
+      *out = ints({double(fb.scissor[0]), double(fb.scissor[1]), double(fb.scissor[2]),
+                   double(fb.scissor[3])});
+      return true;
+    case GL_PACK_ALIGNMENT:
+      *out = ints({double(fb.pack.alignment)});
+      return true;
+    case GL_UNPACK_ALIGNMENT:
+      *out = ints({double(fb.unpack.alignment)});
+      return true;
+    case GL_PACK_ROW_LENGTH:
+      *out = ints({double(fb.pack.row_length)});
+      return true;
+    case GL_UNPACK_ROW_LENGTH:
+      *out = ints({double(fb.unpack.row_length)});
+      return true;
+    case GL_PACK_SKIP_ROWS:
+      *out = ints({double(fb.pack.skip_rows)});
+      return true;
+    case GL_UNPACK_SKIP_ROWS:
+      *out = ints({double(fb.unpack.skip_rows)});
+      return true;
+    case GL_PACK_SKIP_PIXELS:
+      *out = ints({double(fb.pack.skip_pixels)});
+      return true;
+    case GL_UNPACK_SKIP_PIXELS:
+      *out = ints({double(fb.unpack.skip_pixels)});
+      return true;
+    case GL_PACK_SWAP_BYTES:
+      *out = boolean(fb.pack.swap_bytes);
+      return true;
+    case GL_UNPACK_SWAP_BYTES:
+      *out = boolean(fb.unpack.swap_bytes);
+      return true;
+    case GL_PACK_LSB_FIRST:
+      *out = boolean(fb.pack.lsb_first);
+      return true;
+    case GL_UNPACK_LSB_FIRST:
+      *out = boolean(fb.unpack.lsb_first);
+      return true;
+    case GL_CURRENT_COLOR:
+      *out = floats(&ctx.current.color.x, 4, Kind::kColor);
+      return true;
+    case GL_CURRENT_NORMAL:
+      *out = floats(&ctx.current.normal.x, 3, Kind::kColor);
+      return true;
+    case GL_CURRENT_TEXTURE_COORDS:
+      *out = floats(&ctx.current.tex_coord[m.active_texture].x, 4);
+      return true;
+    case GL_SHADE_MODEL:
+      *out = ints({double(ctx.lighting.shade_model)});
+      return true;
+    case GL_LIGHT_MODEL_AMBIENT:
+      *out = floats(&ctx.lighting.model_ambient.x, 4, Kind::kColor);
+      return true;
+    case GL_LIGHT_MODEL_TWO_SIDE:
+      *out = boolean(ctx.lighting.two_side);
+      return true;
+    case GL_LIGHT_MODEL_LOCAL_VIEWER:
+      *out = boolean(ctx.lighting.local_viewer);
+      return true;
+    case GL_COLOR_MATERIAL_FACE:
+      *out = ints({double(ctx.lighting.color_material_face)});
+      return true;
+    case GL_COLOR_MATERIAL_PARAMETER:
+      *out = ints({double(ctx.lighting.color_material_mode)});
+      return true;
     // The framebuffer glpt presents: RGBA8, 24-bit depth, 8-bit stencil, double-buffered.
-    case GL_RED_BITS: case GL_GREEN_BITS: case GL_BLUE_BITS: case GL_ALPHA_BITS: *out = ints({8}); return true;
-    case GL_DEPTH_BITS: *out = ints({24}); return true;
-    case GL_STENCIL_BITS: *out = ints({8}); return true;
-    case GL_INDEX_BITS: case GL_ACCUM_RED_BITS: case GL_ACCUM_GREEN_BITS: case GL_ACCUM_BLUE_BITS:
-    case GL_ACCUM_ALPHA_BITS: *out = ints({0}); return true;
-    case GL_DOUBLEBUFFER: *out = boolean(true); return true;
-    case GL_RGBA_MODE: *out = boolean(true); return true;
-    case GL_INDEX_MODE: case GL_STEREO: *out = boolean(false); return true;
+    case GL_RED_BITS:
+    case GL_GREEN_BITS:
+    case GL_BLUE_BITS:
+    case GL_ALPHA_BITS:
+      *out = ints({8});
+      return true;
+    case GL_DEPTH_BITS:
+      *out = ints({24});
+      return true;
+    case GL_STENCIL_BITS:
+      *out = ints({8});
+      return true;
+    case GL_INDEX_BITS:
+    case GL_ACCUM_RED_BITS:
+    case GL_ACCUM_GREEN_BITS:
+    case GL_ACCUM_BLUE_BITS:
+    case GL_ACCUM_ALPHA_BITS:
+      *out = ints({0});
+      return true;
+    case GL_DOUBLEBUFFER:
+      *out = boolean(true);
+      return true;
+    case GL_RGBA_MODE:
+      *out = boolean(true);
+      return true;
+    case GL_INDEX_MODE:
+    case GL_STEREO:
+      *out = boolean(false);
+      return true;
     default:
       break;
   }
@@ -141,12 +292,14 @@ void get(Context& ctx, GLenum pname, T* out) {
     } else if constexpr (std::is_same_v<T, GLint>) {
       if (v.kind == Kind::kColor) {
         // Colours map linearly [-1,1] -> [-2^31, 2^31-1].
-        out[i] = static_cast<GLint>(std::clamp(std::llround((4294967295.0 * d - 1.0) / 2.0),
-                                               static_cast<long long>(std::numeric_limits<GLint>::min()),
-                                               static_cast<long long>(std::numeric_limits<GLint>::max())));
+        out[i] = static_cast<GLint>(
+            std::clamp(std::llround((4294967295.0 * d - 1.0) / 2.0),
+                       static_cast<long long>(std::numeric_limits<GLint>::min()),
+                       static_cast<long long>(std::numeric_limits<GLint>::max())));
       } else {
-        out[i] = static_cast<GLint>(std::clamp(std::llround(d), static_cast<long long>(std::numeric_limits<GLint>::min()),
-                                               static_cast<long long>(std::numeric_limits<GLint>::max())));
+        out[i] = static_cast<GLint>(
+            std::clamp(std::llround(d), static_cast<long long>(std::numeric_limits<GLint>::min()),
+                       static_cast<long long>(std::numeric_limits<GLint>::max())));
       }
     } else {
       out[i] = static_cast<T>(d);
@@ -167,12 +320,22 @@ GLenum glGetError(Context& ctx) {
 const GLubyte* glGetString(Context& ctx, GLenum name) {
   const char* s = nullptr;
   switch (name) {
-    case GL_VENDOR: s = "glpt"; break;
-    case GL_RENDERER: s = "glpt path tracer (Vulkan ray query)"; break;
-    case GL_VERSION: s = "1.5 glpt " GLPT_VERSION_STRING; break;
+    case GL_VENDOR:
+      s = "glpt";
+      break;
+    case GL_RENDERER:
+      s = "glpt path tracer (Vulkan ray query)";
+      break;
+    case GL_VERSION:
+      s = "1.5 glpt " GLPT_VERSION_STRING;
+      break;
     // Only extensions whose every entry point works are advertised.
-    case GL_EXTENSIONS: s = ""; break;
-    default: record_error(ctx, GL_INVALID_ENUM); return nullptr;
+    case GL_EXTENSIONS:
+      s = "";
+      break;
+    default:
+      record_error(ctx, GL_INVALID_ENUM);
+      return nullptr;
   }
   return reinterpret_cast<const GLubyte*>(s);
 }

@@ -1,10 +1,12 @@
 // GLX against glpt's libGL.so.1 on a real X server (Xvfb): visuals, FBConfigs, contexts,
 // make-current, swap, proc addresses, and that a frame reaches glReadPixels.
-// gtest before the X headers: Xlib's macros (None, Bool, Status) break gtest's templates.
-#include <gtest/gtest.h>
 
+// gtest before the X headers: Xlib's macros (None, Bool, Status) break gtest's templates.
+// clang-format off
+#include <gtest/gtest.h>
 #include <GL/gl.h>
 #include <GL/glx.h>
+// clang-format on
 
 #include <cstdlib>
 #include <cstring>
@@ -29,8 +31,8 @@ class Glx : public ::testing::Test {
   Window make_window(XVisualInfo* vi, int w, int h) {
     XSetWindowAttributes attr{};
     attr.colormap = XCreateColormap(dpy_, RootWindow(dpy_, vi->screen), vi->visual, AllocNone);
-    window_ = XCreateWindow(dpy_, RootWindow(dpy_, vi->screen), 0, 0, w, h, 0, vi->depth, InputOutput,
-                            vi->visual, CWColormap, &attr);
+    window_ = XCreateWindow(dpy_, RootWindow(dpy_, vi->screen), 0, 0, w, h, 0, vi->depth,
+                            InputOutput, vi->visual, CWColormap, &attr);
     XMapWindow(dpy_, window_);
     XSync(dpy_, False);
     return window_;
@@ -69,8 +71,17 @@ TEST_F(Glx, ChooseVisualNeedsRgba) {
 }
 
 TEST_F(Glx, FBConfigsMatchAttributesAndRoundTrip) {
-  const int attribs[] = {GLX_DRAWABLE_TYPE, GLX_WINDOW_BIT, GLX_RENDER_TYPE, GLX_RGBA_BIT, GLX_DOUBLEBUFFER, True,
-                         GLX_DEPTH_SIZE, 16, GLX_STENCIL_SIZE, 8, None};
+  const int attribs[] = {GLX_DRAWABLE_TYPE,
+                         GLX_WINDOW_BIT,
+                         GLX_RENDER_TYPE,
+                         GLX_RGBA_BIT,
+                         GLX_DOUBLEBUFFER,
+                         True,
+                         GLX_DEPTH_SIZE,
+                         16,
+                         GLX_STENCIL_SIZE,
+                         8,
+                         None};
   int n = 0;
   GLXFBConfig* configs = glXChooseFBConfig(dpy_, 0, attribs, &n);
   ASSERT_NE(configs, nullptr);
@@ -93,7 +104,9 @@ TEST_F(Glx, FBConfigsMatchAttributesAndRoundTrip) {
 }
 
 TEST_F(Glx, ProcAddressesAreGlptsOwnEntryPoints) {
-  auto get = [](const char* name) { return glXGetProcAddressARB(reinterpret_cast<const GLubyte*>(name)); };
+  auto get = [](const char* name) {
+    return glXGetProcAddressARB(reinterpret_cast<const GLubyte*>(name));
+  };
   EXPECT_EQ(get("glXSwapBuffers"), reinterpret_cast<__GLXextFuncPtr>(&glXSwapBuffers));
   EXPECT_EQ(get("glVertex3f"), reinterpret_cast<__GLXextFuncPtr>(&glVertex3f));
   EXPECT_EQ(glXGetProcAddress(reinterpret_cast<const GLubyte*>("glCallList")),

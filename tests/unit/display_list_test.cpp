@@ -2,7 +2,9 @@
 
 namespace {
 
-const std::vector<glpt::rt::Instance>& instances(glpt::Context& ctx) { return ctx.capture.instances(); }
+const std::vector<glpt::rt::Instance>& instances(glpt::Context& ctx) {
+  return ctx.capture.instances();
+}
 
 TEST_F(GlTest, CompiledListReplaysGeometryAndMaterial) {
   const GLuint list = glGenLists(1);

@@ -35,7 +35,8 @@ TEST_F(GlTest, FrustumMatchesTheSpecFormula) {
   glFrustum(-1, 1, -1, 1, 5, 60);  // glxgears' projection
   GLfloat m[16];
   glGetFloatv(GL_PROJECTION_MATRIX, m);
-  const float want[16] = {5, 0, 0, 0, 0, 5, 0, 0, 0, 0, -65.0f / 55.0f, -1, 0, 0, -600.0f / 55.0f, 0};
+  const float want[16] = {5, 0, 0, 0, 0, 5, 0, 0, 0, 0, -65.0f / 55.0f, -1, 0, 0, -600.0f / 55.0f,
+                          0};
   expect_matrix(m, want);
 }
 

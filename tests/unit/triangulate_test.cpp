@@ -1,6 +1,7 @@
+#include "gl_shim/geometry/triangulate.hpp"
+
 #include <gtest/gtest.h>
 
-#include "gl_shim/geometry/triangulate.hpp"
 #include "gl_shim/gl_enums.h"
 
 namespace {
