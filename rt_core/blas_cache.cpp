@@ -85,13 +85,8 @@ std::unique_ptr<BlasEntry> BlasCache::create_entry(const Geometry& geometry,
   triangles.maxVertex = static_cast<uint32_t>(3 * triangle_count - 1);
   triangles.indexType = VK_INDEX_TYPE_NONE_KHR;
 
-  auto info = make_info<VkAccelerationStructureBuildGeometryInfoKHR>(
-      VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_GEOMETRY_INFO_KHR);
-  info.type = VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR;
-  info.flags = VK_BUILD_ACCELERATION_STRUCTURE_PREFER_FAST_TRACE_BIT_KHR;
-  info.mode = VK_BUILD_ACCELERATION_STRUCTURE_MODE_BUILD_KHR;
-  info.geometryCount = 1;
-  info.pGeometries = &build.geometry;
+  auto info =
+      acceleration_build_info(VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR, &build.geometry);
   const uint32_t primitive_count = entry->triangle_count;
   auto sizes = make_info<VkAccelerationStructureBuildSizesInfoKHR>(
       VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_SIZES_INFO_KHR);

@@ -29,13 +29,7 @@ void Tlas::reserve(uint32_t instance_count) {
                         VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR);
 
   VkAccelerationStructureGeometryKHR geometry = instances_geometry();
-  auto info = make_info<VkAccelerationStructureBuildGeometryInfoKHR>(
-      VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_GEOMETRY_INFO_KHR);
-  info.type = VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR;
-  info.flags = VK_BUILD_ACCELERATION_STRUCTURE_PREFER_FAST_TRACE_BIT_KHR;
-  info.mode = VK_BUILD_ACCELERATION_STRUCTURE_MODE_BUILD_KHR;
-  info.geometryCount = 1;
-  info.pGeometries = &geometry;
+  auto info = acceleration_build_info(VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR, &geometry);
   auto sizes = make_info<VkAccelerationStructureBuildSizesInfoKHR>(
       VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_SIZES_INFO_KHR);
   const auto& as = device_.as_functions();
@@ -64,14 +58,8 @@ double Tlas::build(std::span<const VkAccelerationStructureInstanceKHR> instances
   instance_buffer_.write(instances.data(), instances.size_bytes());
 
   VkAccelerationStructureGeometryKHR geometry = instances_geometry();
-  auto info = make_info<VkAccelerationStructureBuildGeometryInfoKHR>(
-      VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_GEOMETRY_INFO_KHR);
-  info.type = VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR;
-  info.flags = VK_BUILD_ACCELERATION_STRUCTURE_PREFER_FAST_TRACE_BIT_KHR;
-  info.mode = VK_BUILD_ACCELERATION_STRUCTURE_MODE_BUILD_KHR;
+  auto info = acceleration_build_info(VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR, &geometry);
   info.dstAccelerationStructure = structure_.get();
-  info.geometryCount = 1;
-  info.pGeometries = &geometry;
   const VkDeviceSize alignment = device_.scratch_alignment();
   info.scratchData.deviceAddress = (scratch_.address() + alignment - 1) / alignment * alignment;
   const VkAccelerationStructureBuildRangeInfoKHR range{count, 0, 0, 0};

@@ -15,4 +15,18 @@ T make_info(VkStructureType type, void* next = nullptr) {
   return info;
 }
 
+// Build info for one acceleration structure of one geometry. Always PREFER_FAST_TRACE: glpt
+// builds a BLAS once and traces it for many frames.
+inline VkAccelerationStructureBuildGeometryInfoKHR acceleration_build_info(
+    VkAccelerationStructureTypeKHR type, const VkAccelerationStructureGeometryKHR* geometry) {
+  auto info = make_info<VkAccelerationStructureBuildGeometryInfoKHR>(
+      VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_GEOMETRY_INFO_KHR);
+  info.type = type;
+  info.flags = VK_BUILD_ACCELERATION_STRUCTURE_PREFER_FAST_TRACE_BIT_KHR;
+  info.mode = VK_BUILD_ACCELERATION_STRUCTURE_MODE_BUILD_KHR;
+  info.geometryCount = 1;
+  info.pGeometries = geometry;
+  return info;
+}
+
 }  // namespace glpt::rt
