@@ -4,6 +4,8 @@
 #pragma once
 
 #include <memory>
+#include <optional>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -52,6 +54,8 @@ class Context {
   // Something was drawn or cleared since the image was last rendered.
   bool frame_dirty = false;
   rt::Frame pending;  // camera, lights and clear colour as last seen by a draw/clear
+  // (lighting.material_version, matrices.projection_version) when `pending` was last updated.
+  std::optional<std::pair<uint64_t, uint64_t>> pending_snapshot_version;
 
   // --- accounting -------------------------------------------------------------------------------
   std::vector<uint64_t> unimplemented_calls;  // per CommandId

@@ -47,7 +47,14 @@ rt::Material effective_material(const Context& ctx) {
   return m;
 }
 
+// The camera and lights of the frame, as the last draw saw them. Only redone when lighting or
+// projection state changed since the last draw: frames of thousands of tiny primitives would
+// otherwise copy the light list per primitive.
 void snapshot_lighting(Context& ctx) {
+  const std::pair<uint64_t, uint64_t> version{ctx.lighting.material_version,
+                                              ctx.matrices.projection_version};
+  if (ctx.pending_snapshot_version == version) return;
+  ctx.pending_snapshot_version = version;
   rt::Frame& f = ctx.pending;
   f.projection = ctx.matrices.projection.top();
   if (!ctx.enables.is(GL_LIGHTING)) return;

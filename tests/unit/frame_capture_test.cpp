@@ -60,3 +60,32 @@ TEST_F(GlTest, UnlitDrawsCarryTheirColourAndLitOnesTheMaterial) {
 }
 
 }  // namespace
+
+namespace {
+
+void triangle() {
+  glBegin(GL_TRIANGLES);
+  glVertex3f(0, 0, 0);
+  glVertex3f(1, 0, 0);
+  glVertex3f(0, 1, 0);
+  glEnd();
+}
+
+TEST_F(GlTest, FrameSeesLightAndProjectionChangesBetweenDraws) {
+  glEnable(GL_LIGHTING);
+  glEnable(GL_LIGHT0);
+  triangle();
+  ASSERT_EQ(ctx_.pending.lights.size(), 1u);
+  const GLfloat red[4] = {1, 0, 0, 1};
+  glLightfv(GL_LIGHT0, GL_DIFFUSE, red);
+  glEnable(GL_LIGHT1);
+  glMatrixMode(GL_PROJECTION);
+  glOrtho(-2, 2, -2, 2, -2, 2);
+  glMatrixMode(GL_MODELVIEW);
+  triangle();
+  ASSERT_EQ(ctx_.pending.lights.size(), 2u);
+  EXPECT_EQ(ctx_.pending.lights[0].diffuse, glm::vec4(1, 0, 0, 1));
+  EXPECT_FLOAT_EQ(ctx_.pending.projection[0][0], 0.5f);
+}
+
+}  // namespace
