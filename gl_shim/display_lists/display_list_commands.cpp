@@ -96,7 +96,6 @@ void glEndList(Context& ctx) {
   auto& entry = store.lists[ctx.lists.compiling_name];
   entry.stream = std::move(ctx.lists.pending);
   entry.defined = true;
-  entry.version = store.next_version++;
   ctx.lists.pending = ListStream();
   ctx.lists.compiling_name = 0;
   ctx.lists.compiling_mode = 0;

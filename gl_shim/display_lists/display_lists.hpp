@@ -14,11 +14,9 @@ namespace glpt {
 struct DisplayListStore {
   struct Entry {
     ListStream stream;
-    uint64_t version = 0;  // bumped by every glNewList of this name
     bool defined = false;  // glGenLists reserves names; glEndList defines them
   };
   std::unordered_map<GLuint, Entry> lists;
-  uint64_t next_version = 1;
 };
 
 struct DisplayListState {

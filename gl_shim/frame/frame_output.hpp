@@ -43,7 +43,6 @@ class FrameOutput {
   const std::vector<uint8_t>& image() const { return image_; }
   uint32_t width() const { return width_; }
   uint32_t height() const { return height_; }
-  uint64_t frames_swapped() const { return frame_index_; }
 
  private:
   FrameOutput(std::unique_ptr<rt::Renderer> renderer, OutputSettings settings);

@@ -328,6 +328,18 @@ def unique_impls(names, commands):
             yield target
 
 
+def emit_entry_decls(path, names, commands):
+    """The exported entry points' prototypes: for their definitions (the front end builds with
+    -Wmissing-declarations) and for tests that call them."""
+    with open(path, "w") as f:
+        f.write(HEADER + '#pragma once\n#include "gl_shim/gl_types.h"\n\nextern "C" {\n\n')
+        for n in names:
+            cmd = commands[n]
+            params = ", ".join(p.decl() for p in cmd.params) or "void"
+            f.write(f"GLPT_EXPORT {cmd.ret} {n}({params});\n")
+        f.write('\n}  // extern "C"\n')
+
+
 def emit_impl_decls(path, names, commands):
     with open(path, "w") as f:
         f.write(HEADER + "#pragma once\n#include \"gl_shim/gl_types.h\"\n\n")
@@ -343,7 +355,8 @@ def emit_entry_points(path, names, commands):
     w(HEADER)
     w('#include <algorithm>\n#include <cstring>\n\n'
       '#include "gl_shim/context.hpp"\n#include "gl_shim/display_lists/list_stream.hpp"\n'
-      '#include "gl_shim/dispatch.hpp"\n#include "gl_shim/gl_enums.h"\n\n')
+      '#include "gl_shim/dispatch.hpp"\n#include "gl_shim/gl_entry_decls.h"\n'
+      '#include "gl_shim/gl_enums.h"\n\n')
     # Weak references to the implementations.
     w("namespace glpt::impl {\n")
     for target in unique_impls(names, commands):
@@ -408,13 +421,8 @@ def emit_entry_points(path, names, commands):
     w("      default:\n        unimplemented(ctx, r.command());\n        break;\n")
     w("    }\n  }\n}\n\n}  // namespace glpt\n\n")
 
-    # Exported entry points, declared first (the front end builds with -Wmissing-declarations).
+    # Exported entry points (declared in gl_entry_decls.h).
     w('extern "C" {\n\n')
-    for n in names:
-        cmd = commands[n]
-        params = ", ".join(p.decl() for p in cmd.params) or "void"
-        w(f"GLPT_EXPORT {cmd.ret} {n}({params});\n")
-    w("\n")
     for n in names:
         cmd = commands[n]
         params = ", ".join(p.decl() for p in cmd.params) or "void"
@@ -528,6 +536,7 @@ def main():
     emit_enums(f"{args.out}/gl_enums.h", enum_names, parse_enums(gl, "gl"), "GL 1.0-1.5 + extensions")
     emit_commands_header(f"{args.out}/gl_commands.hpp", names)
     emit_impl_decls(f"{args.out}/gl_impl_decls.hpp", names, commands)
+    emit_entry_decls(f"{args.out}/gl_entry_decls.h", names, commands)
     emit_entry_points(f"{args.out}/gl_entry_points.cpp", names, commands)
     emit_attribute_families(f"{args.out}/gl_attribute_families.cpp", names, commands)
 

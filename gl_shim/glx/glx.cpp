@@ -191,8 +191,7 @@ GLPT_EXPORT GLXContext glXCreateContextAttribsARB(Display* dpy, GLXFBConfig conf
   (void)direct;
   glpt::glx::FBConfig c;
   if (!glpt::glx::decode(dpy, config, &c)) return nullptr;
-  int major = 1, minor = 0, profile = GLX_CONTEXT_COMPATIBILITY_PROFILE_BIT_ARB,
-      render_type = GLX_RGBA_TYPE;
+  int major = 1, minor = 0, render_type = GLX_RGBA_TYPE;
   for (int i = 0; attrib_list && attrib_list[i] != None; i += 2) {
     switch (attrib_list[i]) {
       case GLX_CONTEXT_MAJOR_VERSION_ARB:
@@ -201,8 +200,7 @@ GLPT_EXPORT GLXContext glXCreateContextAttribsARB(Display* dpy, GLXFBConfig conf
       case GLX_CONTEXT_MINOR_VERSION_ARB:
         minor = attrib_list[i + 1];
         break;
-      case GLX_CONTEXT_PROFILE_MASK_ARB:
-        profile = attrib_list[i + 1];
+      case GLX_CONTEXT_PROFILE_MASK_ARB:  // GL 1.x has no profiles; the version decides below
         break;
       case GLX_RENDER_TYPE:
         render_type = attrib_list[i + 1];
@@ -215,7 +213,6 @@ GLPT_EXPORT GLXContext glXCreateContextAttribsARB(Display* dpy, GLXFBConfig conf
   }
   // glpt is an OpenGL 1.5 compatibility implementation.
   if (major > 1 || (major == 1 && minor > 5) || render_type != GLX_RGBA_TYPE) return nullptr;
-  (void)profile;
   return create_context(dpy, config, share_context);
 }
 

@@ -59,10 +59,6 @@ TEST_F(GlTest, UnlitDrawsCarryTheirColourAndLitOnesTheMaterial) {
   EXPECT_TRUE(inst[1].geometry->materials[0].lit);
 }
 
-}  // namespace
-
-namespace {
-
 void triangle() {
   glBegin(GL_TRIANGLES);
   glVertex3f(0, 0, 0);
