@@ -48,16 +48,17 @@ Context* current_context() { return t_current; }
 void set_current_context(Context* ctx) { t_current = ctx; }
 
 bool render_pending_frame(Context& ctx) {
-  if (ctx.target == nullptr) return false;
+  if (ctx.target == nullptr || ctx.renderer_unavailable) return false;
   if (!ctx.frame_dirty && ctx.output) return true;
   const Stopwatch capture_timer;
   if (!ctx.output) {
     std::string error;
     ctx.output = FrameOutput::create(&error);
     if (!ctx.output) {
-      // Reported once per context; the program keeps running, showing nothing.
+      // Reported once per context (make-current does not retry it); the program keeps
+      // running, showing nothing.
       std::fprintf(stderr, "%s\n", error.c_str());  // the message names glpt itself
-      ctx.target = nullptr;
+      ctx.renderer_unavailable = true;
       return false;
     }
   }

@@ -5,8 +5,8 @@
 
 #include <memory>
 #include <optional>
-#include <utility>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "gl_shim/display_lists/display_lists.hpp"
@@ -50,6 +50,7 @@ class Context {
   // The window this context draws to (set by glXMakeCurrent / eglMakeCurrent).
   WindowTarget* target = nullptr;
   std::unique_ptr<FrameOutput> output;    // created on the first frame
+  bool renderer_unavailable = false;      // creation failed: reported once, never retried
   void* window_system_context = nullptr;  // the GLX/EGL context wrapping this one
   // Something was drawn or cleared since the image was last rendered.
   bool frame_dirty = false;
