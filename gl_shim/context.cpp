@@ -5,7 +5,7 @@
 #include <cstdlib>
 
 #include "gl_shim/gl_enums.h"
-#include "rt_core/stopwatch.hpp"
+#include "common/stopwatch.hpp"
 
 namespace glpt {
 namespace {

@@ -9,16 +9,16 @@
 #include <glm/matrix.hpp>
 #include <glm/trigonometric.hpp>
 
-#include "rt_core/blas_cache.hpp"
-#include "rt_core/frame_signature.hpp"
-#include "rt_core/gpu_buffer.hpp"
-#include "rt_core/light_setup.hpp"
-#include "rt_core/morton_sort.hpp"
-#include "rt_core/path_trace_pass.hpp"
-#include "rt_core/stopwatch.hpp"
-#include "rt_core/tlas.hpp"
-#include "rt_core/tonemap_pass.hpp"
-#include "rt_core/vk_device.hpp"
+#include "rt_core/accel/blas_cache.hpp"
+#include "rt_core/scene/frame_signature.hpp"
+#include "rt_core/vk/gpu_buffer.hpp"
+#include "rt_core/scene/light_setup.hpp"
+#include "rt_core/accel/morton_sort.hpp"
+#include "rt_core/passes/path_trace_pass.hpp"
+#include "common/stopwatch.hpp"
+#include "rt_core/accel/tlas.hpp"
+#include "rt_core/passes/tonemap_pass.hpp"
+#include "rt_core/vk/vk_device.hpp"
 #include "shared_types.h"
 
 namespace glpt::rt {

@@ -9,7 +9,7 @@
 
 #include "rt_core/frame.hpp"
 #include "rt_core/renderer.hpp"
-#include "rt_core/stopwatch.hpp"
+#include "common/stopwatch.hpp"
 
 namespace glpt {
 

@@ -1,4 +1,4 @@
-#include "rt_core/morton_sort.hpp"
+#include "rt_core/accel/morton_sort.hpp"
 
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 #include <random>
 #include <vector>
 
-#include "rt_core/shading_data.hpp"
+#include "rt_core/scene/shading_data.hpp"
 
 namespace glpt::rt {
 namespace {

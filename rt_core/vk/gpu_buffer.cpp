@@ -1,9 +1,9 @@
-#include "rt_core/gpu_buffer.hpp"
+#include "rt_core/vk/gpu_buffer.hpp"
 
 #include <algorithm>
 
-#include "rt_core/vk_error.hpp"
-#include "rt_core/vk_info.hpp"
+#include "rt_core/vk/vk_error.hpp"
+#include "rt_core/vk/vk_info.hpp"
 
 namespace glpt::rt {
 

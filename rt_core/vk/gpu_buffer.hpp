@@ -12,8 +12,8 @@
 #include <cstring>
 #include <utility>
 
-#include "rt_core/vk_device.hpp"
-#include "rt_core/vk_raii.hpp"
+#include "rt_core/vk/vk_device.hpp"
+#include "rt_core/vk/vk_raii.hpp"
 
 namespace glpt::rt {
 

@@ -1,4 +1,4 @@
-#include "rt_core/shading_data.hpp"
+#include "rt_core/scene/shading_data.hpp"
 
 #include <cstring>
 

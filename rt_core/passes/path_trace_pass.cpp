@@ -1,9 +1,9 @@
-#include "rt_core/path_trace_pass.hpp"
+#include "rt_core/passes/path_trace_pass.hpp"
 
 #include <cstdint>
 
 #include "path_trace_spv.h"  // generated from shaders/path_trace.comp at build time
-#include "rt_core/vk_info.hpp"
+#include "rt_core/vk/vk_info.hpp"
 #include "shared_types.h"
 
 namespace glpt::rt {

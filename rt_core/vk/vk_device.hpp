@@ -10,7 +10,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "rt_core/vk_raii.hpp"
+#include "rt_core/vk/vk_raii.hpp"
 
 namespace glpt::rt {
 

@@ -5,8 +5,8 @@
 #include <cstdint>
 #include <span>
 
-#include "rt_core/vk_device.hpp"
-#include "rt_core/vk_raii.hpp"
+#include "rt_core/vk/vk_device.hpp"
+#include "rt_core/vk/vk_raii.hpp"
 
 namespace glpt::rt {
 

@@ -2,9 +2,9 @@
 // buffer, rows bottom-to-top like glReadPixels.
 #pragma once
 
-#include "rt_core/compute_pipeline.hpp"
-#include "rt_core/gpu_buffer.hpp"
-#include "rt_core/vk_device.hpp"
+#include "rt_core/vk/compute_pipeline.hpp"
+#include "rt_core/vk/gpu_buffer.hpp"
+#include "rt_core/vk/vk_device.hpp"
 
 namespace glpt::rt {
 

@@ -1,15 +1,15 @@
-#include "rt_core/blas_cache.hpp"
+#include "rt_core/accel/blas_cache.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <unordered_set>
 
-#include "rt_core/morton_sort.hpp"
-#include "rt_core/shading_data.hpp"
-#include "rt_core/stopwatch.hpp"
-#include "rt_core/vk_error.hpp"
-#include "rt_core/vk_info.hpp"
+#include "rt_core/accel/morton_sort.hpp"
+#include "rt_core/scene/shading_data.hpp"
+#include "common/stopwatch.hpp"
+#include "rt_core/vk/vk_error.hpp"
+#include "rt_core/vk/vk_info.hpp"
 #include "shared_types.h"
 
 namespace glpt::rt {

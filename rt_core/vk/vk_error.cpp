@@ -1,4 +1,4 @@
-#include "rt_core/vk_error.hpp"
+#include "rt_core/vk/vk_error.hpp"
 
 namespace glpt::rt {
 

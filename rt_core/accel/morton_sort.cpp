@@ -1,4 +1,4 @@
-#include "rt_core/morton_sort.hpp"
+#include "rt_core/accel/morton_sort.hpp"
 
 #include <algorithm>
 #include <cmath>

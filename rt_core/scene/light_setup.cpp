@@ -1,4 +1,4 @@
-#include "rt_core/light_setup.hpp"
+#include "rt_core/scene/light_setup.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "rt_core/tonemap_pass.hpp"
+#include "rt_core/passes/tonemap_pass.hpp"
 
 #include <cstdint>
 

@@ -1,9 +1,9 @@
-#include "rt_core/tlas.hpp"
+#include "rt_core/accel/tlas.hpp"
 
 #include <algorithm>
 
-#include "rt_core/vk_error.hpp"
-#include "rt_core/vk_info.hpp"
+#include "rt_core/vk/vk_error.hpp"
+#include "rt_core/vk/vk_info.hpp"
 
 namespace glpt::rt {
 

@@ -10,9 +10,9 @@
 #include <vector>
 
 #include "rt_core/frame.hpp"
-#include "rt_core/gpu_buffer.hpp"
-#include "rt_core/vk_device.hpp"
-#include "rt_core/vk_raii.hpp"
+#include "rt_core/vk/gpu_buffer.hpp"
+#include "rt_core/vk/vk_device.hpp"
+#include "rt_core/vk/vk_raii.hpp"
 
 namespace glpt::rt {
 

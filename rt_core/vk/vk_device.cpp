@@ -1,13 +1,13 @@
-#include "rt_core/vk_device.hpp"
+#include "rt_core/vk/vk_device.hpp"
 
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
 #include <vector>
 
-#include "rt_core/stopwatch.hpp"
-#include "rt_core/vk_error.hpp"
-#include "rt_core/vk_info.hpp"
+#include "common/stopwatch.hpp"
+#include "rt_core/vk/vk_error.hpp"
+#include "rt_core/vk/vk_info.hpp"
 
 namespace glpt::rt {
 namespace {

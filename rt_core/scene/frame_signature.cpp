@@ -1,4 +1,4 @@
-#include "rt_core/frame_signature.hpp"
+#include "rt_core/scene/frame_signature.hpp"
 
 #include <cstring>
 

@@ -1,10 +1,10 @@
-#include "rt_core/compute_pipeline.hpp"
+#include "rt_core/vk/compute_pipeline.hpp"
 
 #include <map>
 #include <vector>
 
-#include "rt_core/vk_error.hpp"
-#include "rt_core/vk_info.hpp"
+#include "rt_core/vk/vk_error.hpp"
+#include "rt_core/vk/vk_info.hpp"
 #include "shared_types.h"
 
 namespace glpt::rt {
