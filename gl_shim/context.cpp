@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <cstdlib>
 
-#include "gl_shim/gl_enums.h"
+#include "gl/gl_enums.h"
 #include "common/stopwatch.hpp"
 
 namespace glpt {

@@ -4,7 +4,7 @@
 #include <cstring>
 
 #include "gl_shim/context.hpp"
-#include "gl_shim/gl_enums.h"
+#include "gl/gl_enums.h"
 
 namespace glpt {
 

@@ -2,7 +2,7 @@
 // (GL 1.5 spec 5.4). Recording itself is generated (gl_entry_points.cpp).
 #include "gl_shim/context.hpp"
 #include "gl_shim/dispatch.hpp"
-#include "gl_shim/gl_enums.h"
+#include "gl/gl_enums.h"
 #include "gl_shim/gl_impl_decls.hpp"
 
 namespace glpt {

@@ -1,6 +1,6 @@
 // Element counts of pname-dependent array parameters, for recording them into display lists.
 #include "gl_shim/dispatch.hpp"
-#include "gl_shim/gl_enums.h"
+#include "gl/gl_enums.h"
 
 namespace glpt {
 

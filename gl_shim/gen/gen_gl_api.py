@@ -356,7 +356,7 @@ def emit_entry_points(path, names, commands):
     w('#include <algorithm>\n#include <cstring>\n\n'
       '#include "gl_shim/context.hpp"\n#include "gl_shim/display_lists/list_stream.hpp"\n'
       '#include "gl_shim/dispatch.hpp"\n#include "gl_shim/gl_entry_decls.h"\n'
-      '#include "gl_shim/gl_enums.h"\n\n')
+      '#include "gl/gl_enums.h"\n\n')
     # Weak references to the implementations.
     w("namespace glpt::impl {\n")
     for target in unique_impls(names, commands):
@@ -522,7 +522,10 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__)
     ap.add_argument("--gl-xml", required=True)
     ap.add_argument("--glx-xml", required=True)
-    ap.add_argument("--out", required=True, help="directory for the generated files")
+    ap.add_argument("--out", required=True,
+                    help="directory for the generated front-end files (gl_shim/...)")
+    ap.add_argument("--enums-out", required=True,
+                    help="directory for gl_enums.h and glx_enums.h, shared with rt_core (gl/...)")
     args = ap.parse_args()
 
     gl = ET.parse(args.gl_xml).getroot()
@@ -533,7 +536,7 @@ def main():
         a = commands[n].alias
         if a and a in commands and a not in names:
             names.append(a)
-    emit_enums(f"{args.out}/gl_enums.h", enum_names, parse_enums(gl, "gl"), "GL 1.0-1.5 + extensions")
+    emit_enums(f"{args.enums_out}/gl_enums.h", enum_names, parse_enums(gl, "gl"), "GL 1.0-1.5 + extensions")
     emit_commands_header(f"{args.out}/gl_commands.hpp", names)
     emit_impl_decls(f"{args.out}/gl_impl_decls.hpp", names, commands)
     emit_entry_decls(f"{args.out}/gl_entry_decls.h", names, commands)
@@ -542,7 +545,7 @@ def main():
 
     glx = ET.parse(args.glx_xml).getroot()
     _, glx_enums = collect(glx, "glx", GLX_FEATURES, GLX_EXTENSIONS)
-    emit_enums(f"{args.out}/glx_enums.h", glx_enums, parse_enums(glx, "glx"), "GLX 1.0-1.4 + extensions")
+    emit_enums(f"{args.enums_out}/glx_enums.h", glx_enums, parse_enums(glx, "glx"), "GLX 1.0-1.4 + extensions")
 
 
 if __name__ == "__main__":

@@ -1,6 +1,6 @@
 #include "gl_shim/geometry/triangulate.hpp"
 
-#include "gl_shim/gl_enums.h"
+#include "gl/gl_enums.h"
 
 namespace glpt {
 

@@ -2,7 +2,7 @@
 
 #include <cstdint>
 
-#include "gl_shim/glx_enums.h"
+#include "gl/glx_enums.h"
 
 namespace glpt::glx {
 

@@ -12,7 +12,7 @@
 #include "gl_shim/glx/glx_api.hpp"
 #include "gl_shim/glx/glx_types.hpp"
 #include "gl_shim/glx/x11_window_target.hpp"
-#include "gl_shim/glx_enums.h"
+#include "gl/glx_enums.h"
 
 struct __GLXcontextRec {
   explicit __GLXcontextRec(const __GLXcontextRec* share) : gl(share ? &share->gl : nullptr) {

@@ -7,7 +7,7 @@
 
 #include "gl_shim/context.hpp"
 #include "gl_shim/dispatch.hpp"
-#include "gl_shim/gl_enums.h"
+#include "gl/gl_enums.h"
 #include "gl_shim/gl_impl_decls.hpp"
 
 namespace glpt {

@@ -6,7 +6,7 @@
 
 #include "gl_shim/context.hpp"
 #include "gl_shim/gl_entry_decls.h"
-#include "gl_shim/gl_enums.h"
+#include "gl/gl_enums.h"
 
 class GlTest : public ::testing::Test {
  protected:

@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "gl_shim/gl_enums.h"
+#include "gl/gl_enums.h"
 
 namespace {
 
