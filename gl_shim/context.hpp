@@ -17,8 +17,10 @@
 #include "gl_shim/state/current_attributes.hpp"
 #include "gl_shim/state/enable_state.hpp"
 #include "gl_shim/state/framebuffer_state.hpp"
-#include "gl_shim/state/lighting.hpp"
 #include "gl_shim/state/matrix_stack.hpp"
+#include "gl_shim/state/transform_controls.hpp"
+#include "gl_shim/textures/texture_units.hpp"
+#include "rt_core/record/gl_state.hpp"
 
 namespace glpt {
 
@@ -36,10 +38,16 @@ class Context {
   bool list_executes_while_compiling() const;
 
   // --- state, one struct per concern ------------------------------------------------------------
+  // The live state of the groups a draw snapshots is kept in the record's own block types
+  // (rt_core/record/gl_state.hpp): snapshotting is a copy, and there is one source of truth.
   GLenum error = 0;  // GL_NO_ERROR
   MatrixState matrices;
-  EnableState enables;
-  LightingState lighting;
+  TransformControls transform;
+  rec::LightingState lighting;
+  TextureUnits textures;
+  rec::RasterState raster;
+  rec::PixelTransferState pixel_transfer;
+  EnableState enables;  // capabilities without a field in the blocks above
   CurrentAttributes current;
   FramebufferState framebuffer;
   VertexAssembly assembly;
@@ -55,8 +63,6 @@ class Context {
   // Something was drawn or cleared since the image was last rendered.
   bool frame_dirty = false;
   rt::Frame pending;  // camera, lights and clear colour as last seen by a draw/clear
-  // (lighting.material_version, matrices.projection_version) when `pending` was last updated.
-  std::optional<std::pair<uint64_t, uint64_t>> pending_snapshot_version;
 
   // --- accounting -------------------------------------------------------------------------------
   std::vector<uint64_t> unimplemented_calls;  // per CommandId

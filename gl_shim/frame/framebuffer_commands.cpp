@@ -4,9 +4,9 @@
 #include <cmath>
 #include <cstring>
 
+#include "gl/gl_enums.h"
 #include "gl_shim/context.hpp"
 #include "gl_shim/dispatch.hpp"
-#include "gl/gl_enums.h"
 #include "gl_shim/gl_impl_decls.hpp"
 
 namespace glpt {
@@ -123,26 +123,23 @@ void glDepthRange(Context& ctx, GLdouble n, GLdouble f) {
 
 void glScissor(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height) {
   if (width < 0 || height < 0) return record_error(ctx, GL_INVALID_VALUE);
-  ctx.framebuffer.scissor[0] = x;
-  ctx.framebuffer.scissor[1] = y;
-  ctx.framebuffer.scissor[2] = width;
-  ctx.framebuffer.scissor[3] = height;
+  ctx.raster.ops.scissor_box = {x, y, width, height};
 }
 
 void glDepthFunc(Context& ctx, GLenum func) {
   if (func < GL_NEVER || func > GL_ALWAYS) return record_error(ctx, GL_INVALID_ENUM);
-  ctx.framebuffer.depth_func = func;
+  ctx.raster.ops.depth_func = func;
 }
 
 void glCullFace(Context& ctx, GLenum mode) {
   if (mode != GL_FRONT && mode != GL_BACK && mode != GL_FRONT_AND_BACK)
     return record_error(ctx, GL_INVALID_ENUM);
-  ctx.framebuffer.cull_face = mode;
+  ctx.raster.primitive.cull_face_mode = mode;
 }
 
 void glFrontFace(Context& ctx, GLenum mode) {
   if (mode != GL_CW && mode != GL_CCW) return record_error(ctx, GL_INVALID_ENUM);
-  ctx.framebuffer.front_face = mode;
+  ctx.raster.primitive.front_face = mode;
 }
 
 namespace {
@@ -167,13 +164,13 @@ bool valid_color_buffer(GLenum buf) {
 
 void glDrawBuffer(Context& ctx, GLenum buf) {
   if (!valid_color_buffer(buf)) return record_error(ctx, GL_INVALID_ENUM);
-  ctx.framebuffer.draw_buffer = buf;
+  ctx.raster.ops.draw_buffer = buf;
 }
 
 void glReadBuffer(Context& ctx, GLenum buf) {
   if (!valid_color_buffer(buf) || buf == GL_NONE || buf == GL_FRONT_AND_BACK)
     return record_error(ctx, GL_INVALID_ENUM);
-  ctx.framebuffer.read_buffer = buf;
+  ctx.raster.ops.read_buffer = buf;
 }
 
 void glPixelStorei(Context& ctx, GLenum pname, GLint param) {

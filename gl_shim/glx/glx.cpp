@@ -6,13 +6,13 @@
 #include <memory>
 #include <string>
 
+#include "gl/glx_enums.h"
 #include "gl_shim/context.hpp"
 #include "gl_shim/dispatch.hpp"
 #include "gl_shim/glx/fbconfigs.hpp"
 #include "gl_shim/glx/glx_api.hpp"
 #include "gl_shim/glx/glx_types.hpp"
 #include "gl_shim/glx/x11_window_target.hpp"
-#include "gl/glx_enums.h"
 
 struct __GLXcontextRec {
   explicit __GLXcontextRec(const __GLXcontextRec* share) : gl(share ? &share->gl : nullptr) {
@@ -78,8 +78,7 @@ bool make_current(Display* dpy, GLXDrawable draw, GLXDrawable read, GLXContext c
       auto& fb = ctx->gl.framebuffer;
       fb.viewport_width = static_cast<GLsizei>(w);
       fb.viewport_height = static_cast<GLsizei>(h);
-      fb.scissor[2] = static_cast<GLint>(w);
-      fb.scissor[3] = static_cast<GLint>(h);
+      ctx->gl.raster.ops.scissor_box = {0, 0, static_cast<int32_t>(w), static_cast<int32_t>(h)};
       fb.viewport_initialized = true;
     }
   }

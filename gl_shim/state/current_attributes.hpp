@@ -4,15 +4,20 @@
 #include <array>
 #include <glm/glm.hpp>
 
-#include "gl_shim/state/matrix_stack.hpp"
+#include "rt_core/record/gl_state.hpp"
 
 namespace glpt {
 
 struct CurrentAttributes {
   glm::vec4 color{1.0f, 1.0f, 1.0f, 1.0f};
+  glm::vec4 secondary_color{0.0f, 0.0f, 0.0f, 1.0f};
   glm::vec3 normal{0.0f, 0.0f, 1.0f};
-  std::array<glm::vec4, kMaxTextureUnits> tex_coord{glm::vec4(0, 0, 0, 1), glm::vec4(0, 0, 0, 1),
-                                                    glm::vec4(0, 0, 0, 1), glm::vec4(0, 0, 0, 1)};
+  float fog_coord = 0.0f;
+  std::array<glm::vec4, rec::kMaxTextureUnits> tex_coord = [] {
+    std::array<glm::vec4, rec::kMaxTextureUnits> t{};
+    t.fill(glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+    return t;
+  }();
   bool edge_flag = true;
 };
 

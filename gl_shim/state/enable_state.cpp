@@ -5,10 +5,11 @@
 #include <array>
 #include <iterator>
 
+#include "gl/gl_enums.h"
 #include "gl_shim/context.hpp"
 #include "gl_shim/dispatch.hpp"
-#include "gl/gl_enums.h"
 #include "gl_shim/gl_impl_decls.hpp"
+#include "gl_shim/state/lighting.hpp"
 
 namespace glpt {
 namespace {
@@ -18,30 +19,10 @@ struct Cap {
   bool initially_on;
 };
 
-// Every server-side capability of GL 1.5 (plus the ARB/EXT ones glpt accepts), sorted by enum.
+// Server-side capabilities of GL 1.5 (plus the ARB/EXT ones glpt accepts) that have no field in
+// the state blocks (see flag_field/flag_bit below); sorted by enum at compile time.
 constexpr Cap kCapList[] = {
-    {GL_POINT_SMOOTH, false},
-    {GL_LINE_SMOOTH, false},
-    {GL_LINE_STIPPLE, false},
-    {GL_POLYGON_SMOOTH, false},
-    {GL_POLYGON_STIPPLE, false},
-    {GL_CULL_FACE, false},
-    {GL_LIGHTING, false},
-    {GL_COLOR_MATERIAL, false},
-    {GL_FOG, false},
-    {GL_DEPTH_TEST, false},
-    {GL_STENCIL_TEST, false},
-    {GL_NORMALIZE, false},
-    {GL_ALPHA_TEST, false},
-    {GL_DITHER, true},
-    {GL_BLEND, false},
     {GL_INDEX_LOGIC_OP, false},
-    {GL_COLOR_LOGIC_OP, false},
-    {GL_SCISSOR_TEST, false},
-    {GL_TEXTURE_GEN_S, false},
-    {GL_TEXTURE_GEN_T, false},
-    {GL_TEXTURE_GEN_R, false},
-    {GL_TEXTURE_GEN_Q, false},
     {GL_AUTO_NORMAL, false},
     {GL_MAP1_COLOR_4, false},
     {GL_MAP1_INDEX, false},
@@ -61,32 +42,11 @@ constexpr Cap kCapList[] = {
     {GL_MAP2_TEXTURE_COORD_4, false},
     {GL_MAP2_VERTEX_3, false},
     {GL_MAP2_VERTEX_4, false},
-    {GL_TEXTURE_1D, false},
-    {GL_TEXTURE_2D, false},
-    {GL_POLYGON_OFFSET_POINT, false},
-    {GL_POLYGON_OFFSET_LINE, false},
-    {GL_CLIP_PLANE0, false},
-    {GL_CLIP_PLANE1, false},
-    {GL_CLIP_PLANE2, false},
-    {GL_CLIP_PLANE3, false},
-    {GL_CLIP_PLANE4, false},
-    {GL_CLIP_PLANE5, false},
-    {GL_LIGHT0, false},
-    {GL_LIGHT1, false},
-    {GL_LIGHT2, false},
-    {GL_LIGHT3, false},
-    {GL_LIGHT4, false},
-    {GL_LIGHT5, false},
-    {GL_LIGHT6, false},
-    {GL_LIGHT7, false},
     {GL_CONVOLUTION_1D, false},
     {GL_CONVOLUTION_2D, false},
     {GL_SEPARABLE_2D, false},
     {GL_HISTOGRAM, false},
     {GL_MINMAX, false},
-    {GL_POLYGON_OFFSET_FILL, false},
-    {GL_RESCALE_NORMAL, false},
-    {GL_TEXTURE_3D, false},
     {GL_MULTISAMPLE, true},
     {GL_SAMPLE_ALPHA_TO_COVERAGE, false},
     {GL_SAMPLE_ALPHA_TO_ONE, false},
@@ -94,8 +54,6 @@ constexpr Cap kCapList[] = {
     {GL_COLOR_TABLE, false},
     {GL_POST_CONVOLUTION_COLOR_TABLE, false},
     {GL_POST_COLOR_MATRIX_COLOR_TABLE, false},
-    {GL_TEXTURE_CUBE_MAP, false},
-    {GL_COLOR_SUM, false},
     {GL_TEXTURE_RECTANGLE_ARB, false},
 };
 constexpr auto kCaps = [] {
@@ -112,17 +70,114 @@ int index_of(GLenum cap) {
   return it != kCaps.end() && it->cap == cap ? static_cast<int>(it - kCaps.begin()) : -1;
 }
 
+// Capabilities whose value lives in the state blocks (ctx.lighting, ctx.raster, ...): the single
+// source of truth for both glEnable and glIsEnabled. Bit-field capabilities (lights, clip planes,
+// texture targets and texgen of the active unit) are handled by `flag_bit`.
+bool* flag_field(Context& ctx, GLenum cap) {
+  rec::PrimitiveState& p = ctx.raster.primitive;
+  rec::FragmentOpsState& f = ctx.raster.ops;
+  switch (cap) {
+    case GL_LIGHTING:
+      return &ctx.lighting.enabled;
+    case GL_COLOR_MATERIAL:
+      return &ctx.lighting.color_material;
+    case GL_NORMALIZE:
+      return &ctx.transform.normalize;
+    case GL_RESCALE_NORMAL:
+      return &ctx.transform.rescale_normal;
+    case GL_CULL_FACE:
+      return &p.cull_face;
+    case GL_POLYGON_OFFSET_FILL:
+      return &p.offset_fill;
+    case GL_POLYGON_OFFSET_LINE:
+      return &p.offset_line;
+    case GL_POLYGON_OFFSET_POINT:
+      return &p.offset_point;
+    case GL_POLYGON_SMOOTH:
+      return &p.polygon_smooth;
+    case GL_POLYGON_STIPPLE:
+      return &p.polygon_stipple;
+    case GL_LINE_SMOOTH:
+      return &p.line_smooth;
+    case GL_LINE_STIPPLE:
+      return &p.line_stipple;
+    case GL_POINT_SMOOTH:
+      return &p.point_smooth;
+    case GL_FOG:
+      return &ctx.raster.fog.enabled;
+    case GL_COLOR_SUM:
+      return &f.color_sum;
+    case GL_SCISSOR_TEST:
+      return &f.scissor_test;
+    case GL_ALPHA_TEST:
+      return &f.alpha_test;
+    case GL_STENCIL_TEST:
+      return &f.stencil_test;
+    case GL_DEPTH_TEST:
+      return &f.depth_test;
+    case GL_BLEND:
+      return &f.blend;
+    case GL_COLOR_LOGIC_OP:
+      return &f.color_logic_op;
+    case GL_DITHER:
+      return &f.dither;
+    default:
+      return nullptr;
+  }
+}
+
+struct BitField {
+  uint8_t* bits = nullptr;
+  uint8_t mask = 0;
+};
+
+BitField flag_bit(Context& ctx, GLenum cap) {
+  if (cap >= GL_LIGHT0 && cap < GL_LIGHT0 + rec::kMaxLights)
+    return {&ctx.lighting.light_mask, static_cast<uint8_t>(1u << (cap - GL_LIGHT0))};
+  if (cap >= GL_CLIP_PLANE0 && cap < GL_CLIP_PLANE0 + rec::kMaxClipPlanes)
+    return {&ctx.transform.clip_plane_mask, static_cast<uint8_t>(1u << (cap - GL_CLIP_PLANE0))};
+  TextureUnit& unit = ctx.textures.active_unit();
+  switch (cap) {
+    case GL_TEXTURE_1D:
+      return {&unit.enabled_targets, kTarget1D};
+    case GL_TEXTURE_2D:
+      return {&unit.enabled_targets, kTarget2D};
+    case GL_TEXTURE_3D:
+      return {&unit.enabled_targets, kTarget3D};
+    case GL_TEXTURE_CUBE_MAP:
+      return {&unit.enabled_targets, kTargetCubeMap};
+    case GL_TEXTURE_GEN_S:
+      return {&unit.texgen_mask, 1};
+    case GL_TEXTURE_GEN_T:
+      return {&unit.texgen_mask, 2};
+    case GL_TEXTURE_GEN_R:
+      return {&unit.texgen_mask, 4};
+    case GL_TEXTURE_GEN_Q:
+      return {&unit.texgen_mask, 8};
+    default:
+      return {};
+  }
+}
+
 void set_cap(Context& ctx, GLenum cap, bool on) {
-  if (!ctx.enables.set(cap, on)) return record_error(ctx, GL_INVALID_ENUM);
-  if (cap >= GL_LIGHT0 && cap < GL_LIGHT0 + kMaxLights)
-    ctx.lighting.light_enabled[cap - GL_LIGHT0] = on;
-  // These change how the next vertices are shaded.
-  if (cap == GL_LIGHTING || cap == GL_COLOR_MATERIAL ||
-      (cap >= GL_LIGHT0 && cap < GL_LIGHT0 + kMaxLights))
-    ++ctx.lighting.material_version;
+  if (bool* field = flag_field(ctx, cap)) {
+    *field = on;
+  } else if (BitField b = flag_bit(ctx, cap); b.bits != nullptr) {
+    *b.bits = on ? (*b.bits | b.mask) : (*b.bits & ~b.mask);
+  } else if (!ctx.enables.set(cap, on)) {
+    return record_error(ctx, GL_INVALID_ENUM);
+  }
+  // Enabling colour material applies the current colour at once (GL 1.5 2.14.3).
+  if (cap == GL_COLOR_MATERIAL && on) apply_color_material(ctx);
 }
 
 }  // namespace
+
+std::optional<bool> capability_enabled(Context& ctx, GLenum cap) {
+  if (bool* field = flag_field(ctx, cap)) return *field;
+  if (BitField b = flag_bit(ctx, cap); b.bits != nullptr) return (*b.bits & b.mask) != 0;
+  return ctx.enables.get(cap);
+}
 
 EnableState::EnableState() {
   for (size_t i = 0; i < kCaps.size(); ++i) bits_[i] = kCaps[i].initially_on;
@@ -146,7 +201,7 @@ namespace impl {
 void glEnable(Context& ctx, GLenum cap) { set_cap(ctx, cap, true); }
 void glDisable(Context& ctx, GLenum cap) { set_cap(ctx, cap, false); }
 GLboolean glIsEnabled(Context& ctx, GLenum cap) {
-  const auto v = ctx.enables.get(cap);
+  const auto v = capability_enabled(ctx, cap);
   if (!v) {
     record_error(ctx, GL_INVALID_ENUM);
     return 0;

@@ -1,4 +1,6 @@
-// glEnable/glDisable/glIsEnabled capabilities (GL 1.5 spec table 6.x, "Enable" column).
+// glEnable/glDisable/glIsEnabled (GL 1.5 spec tables 6.x, "Enable" column). Most capabilities are
+// fields of the state blocks (Context::lighting, raster, transform, textures); EnableState holds
+// only those without one (evaluator maps, imaging, multisample, ...).
 #pragma once
 
 #include <bitset>
@@ -7,6 +9,8 @@
 #include "gl_shim/gl_types.h"
 
 namespace glpt {
+
+class Context;
 
 class EnableState {
  public:
@@ -20,5 +24,8 @@ class EnableState {
  private:
   std::bitset<kMaxCaps> bits_;
 };
+
+// The value of any capability, wherever it lives; std::nullopt for an enum that is not one.
+std::optional<bool> capability_enabled(Context& ctx, GLenum cap);
 
 }  // namespace glpt

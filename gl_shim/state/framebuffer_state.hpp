@@ -21,12 +21,6 @@ struct FramebufferState {
   GLdouble clear_depth = 1.0;
   GLint clear_stencil = 0;
   GLdouble depth_near = 0.0, depth_far = 1.0;
-  GLenum draw_buffer = 0x0405;  // GL_BACK
-  GLenum read_buffer = 0x0405;
-  GLint scissor[4] = {0, 0, 0, 0};
-  GLenum depth_func = 0x0201;  // GL_LESS
-  GLenum cull_face = 0x0405;   // GL_BACK
-  GLenum front_face = 0x0901;  // GL_CCW
   PixelStoreModes pack, unpack;
 };
 

@@ -1,24 +1,16 @@
 // glLight*, glLightModel*, glMaterial*, glColorMaterial, glShadeModel and their queries
-// (GL 1.5 spec 2.14).
+// (GL 1.5 spec 2.14). The live state is ctx.lighting, a rec::LightingState.
 #include "gl_shim/state/lighting.hpp"
 
 #include <cmath>
 #include <limits>
 
+#include "gl/gl_enums.h"
 #include "gl_shim/context.hpp"
 #include "gl_shim/dispatch.hpp"
-#include "gl/gl_enums.h"
 #include "gl_shim/gl_impl_decls.hpp"
 
 namespace glpt {
-
-LightingState::LightingState() {
-  // GL_LIGHT0 alone has a white diffuse and specular by default; the others are black.
-  for (int i = 1; i < kMaxLights; ++i) {
-    lights[i].diffuse = glm::vec4(0, 0, 0, 1);
-    lights[i].specular = glm::vec4(0, 0, 0, 1);
-  }
-}
 
 namespace {
 
@@ -40,8 +32,8 @@ glm::vec4 plain4(const T* p) {
           plain_component(p[3])};
 }
 
-rt::Light* light_of(Context& ctx, GLenum light) {
-  if (light < GL_LIGHT0 || light >= GL_LIGHT0 + kMaxLights) {
+rec::Light* light_of(Context& ctx, GLenum light) {
+  if (light < GL_LIGHT0 || light >= GL_LIGHT0 + rec::kMaxLights) {
     record_error(ctx, GL_INVALID_ENUM);
     return nullptr;
   }
@@ -51,7 +43,7 @@ rt::Light* light_of(Context& ctx, GLenum light) {
 template <typename T>
 void set_light(Context& ctx, GLenum light, GLenum pname, const T* p, bool scalar_call) {
   if (p == nullptr) return record_error(ctx, GL_INVALID_VALUE);
-  rt::Light* l = light_of(ctx, light);
+  rec::Light* l = light_of(ctx, light);
   if (!l) return;
   const bool scalar_pname = pname == GL_SPOT_EXPONENT || pname == GL_SPOT_CUTOFF ||
                             pname == GL_CONSTANT_ATTENUATION || pname == GL_LINEAR_ATTENUATION ||
@@ -103,13 +95,12 @@ void set_light(Context& ctx, GLenum light, GLenum pname, const T* p, bool scalar
     default:
       return record_error(ctx, GL_INVALID_ENUM);
   }
-  ++ctx.lighting.material_version;
 }
 
 template <typename T>
 void set_light_model(Context& ctx, GLenum pname, const T* p, bool scalar_call) {
   if (p == nullptr) return record_error(ctx, GL_INVALID_VALUE);
-  LightingState& s = ctx.lighting;
+  rec::LightingState& s = ctx.lighting;
   switch (pname) {
     case GL_LIGHT_MODEL_AMBIENT:
       if (scalar_call) return record_error(ctx, GL_INVALID_ENUM);
@@ -125,12 +116,12 @@ void set_light_model(Context& ctx, GLenum pname, const T* p, bool scalar_call) {
       const auto v = static_cast<GLenum>(plain_component(p[0]));
       if (v != GL_SINGLE_COLOR && v != GL_SEPARATE_SPECULAR_COLOR)
         return record_error(ctx, GL_INVALID_ENUM);
+      s.separate_specular = v == GL_SEPARATE_SPECULAR_COLOR;
       break;
     }
     default:
       return record_error(ctx, GL_INVALID_ENUM);
   }
-  ++s.material_version;
 }
 
 template <typename T>
@@ -139,7 +130,7 @@ void set_material(Context& ctx, GLenum face, GLenum pname, const T* p, bool scal
   if (face != GL_FRONT && face != GL_BACK && face != GL_FRONT_AND_BACK)
     return record_error(ctx, GL_INVALID_ENUM);
   if (scalar_call && pname != GL_SHININESS) return record_error(ctx, GL_INVALID_ENUM);
-  auto apply = [&](rt::Material& m) -> bool {
+  auto apply = [&](rec::Material& m) -> bool {
     switch (pname) {
       case GL_AMBIENT:
         m.ambient = color4(p);
@@ -173,14 +164,13 @@ void set_material(Context& ctx, GLenum face, GLenum pname, const T* p, bool scal
     }
   };
   bool ok = true;
-  if (face != GL_BACK) ok = apply(ctx.lighting.front);
-  if (ok && face != GL_FRONT) apply(ctx.lighting.back);
-  ++ctx.lighting.material_version;
+  if (face != GL_BACK) ok = apply(ctx.lighting.material[0]);
+  if (ok && face != GL_FRONT) apply(ctx.lighting.material[1]);
 }
 
 template <typename T>
 void get_light(Context& ctx, GLenum light, GLenum pname, T* out) {
-  rt::Light* l = light_of(ctx, light);
+  rec::Light* l = light_of(ctx, light);
   if (!l) return;
   auto put = [&](const float* v, int n) {
     for (int i = 0; i < n; ++i) out[i] = static_cast<T>(v[i]);
@@ -224,7 +214,7 @@ void get_light(Context& ctx, GLenum light, GLenum pname, T* out) {
 template <typename T>
 void get_material(Context& ctx, GLenum face, GLenum pname, T* out) {
   if (face != GL_FRONT && face != GL_BACK) return record_error(ctx, GL_INVALID_ENUM);
-  const rt::Material& m = face == GL_FRONT ? ctx.lighting.front : ctx.lighting.back;
+  const rec::Material& m = ctx.lighting.material[face == GL_FRONT ? 0 : 1];
   auto put = [&](const float* v, int n) {
     for (int i = 0; i < n; ++i) out[i] = static_cast<T>(v[i]);
   };
@@ -250,6 +240,35 @@ void get_material(Context& ctx, GLenum face, GLenum pname, T* out) {
 }
 
 }  // namespace
+
+void apply_color_material(Context& ctx) {
+  rec::LightingState& l = ctx.lighting;
+  if (!l.color_material) return;
+  const glm::vec4 c = ctx.current.color;
+  for (int side = 0; side < 2; ++side) {
+    const bool tracked =
+        side == 0 ? l.color_material_face != GL_BACK : l.color_material_face != GL_FRONT;
+    if (!tracked) continue;
+    rec::Material& m = l.material[side];
+    switch (l.color_material_mode) {
+      case GL_EMISSION:
+        m.emission = c;
+        break;
+      case GL_AMBIENT:
+        m.ambient = c;
+        break;
+      case GL_DIFFUSE:
+        m.diffuse = c;
+        break;
+      case GL_SPECULAR:
+        m.specular = c;
+        break;
+      default:  // GL_AMBIENT_AND_DIFFUSE
+        m.ambient = m.diffuse = c;
+        break;
+    }
+  }
+}
 
 namespace impl {
 
@@ -310,12 +329,13 @@ void glColorMaterial(Context& ctx, GLenum face, GLenum mode) {
     return record_error(ctx, GL_INVALID_ENUM);
   ctx.lighting.color_material_face = face;
   ctx.lighting.color_material_mode = mode;
-  ++ctx.lighting.material_version;
+  // While enabled, the newly tracked components take the current colour at once (as Mesa).
+  apply_color_material(ctx);
 }
 
 void glShadeModel(Context& ctx, GLenum mode) {
   if (mode != GL_FLAT && mode != GL_SMOOTH) return record_error(ctx, GL_INVALID_ENUM);
-  ctx.lighting.shade_model = mode;
+  ctx.raster.primitive.shade_model = mode;
 }
 
 }  // namespace impl

@@ -6,14 +6,14 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "gl/gl_enums.h"
 #include "gl_shim/context.hpp"
 #include "gl_shim/dispatch.hpp"
-#include "gl/gl_enums.h"
 #include "gl_shim/gl_impl_decls.hpp"
 
 namespace glpt {
 
-MatrixStack& MatrixState::current() {
+MatrixStack& MatrixState::current(uint32_t active_texture) {
   switch (mode) {
     case GL_PROJECTION:
       return projection;
@@ -33,13 +33,15 @@ void MatrixState::changed() {
 
 namespace {
 
+MatrixStack& current_stack(Context& ctx) { return ctx.matrices.current(ctx.textures.active); }
+
 void multiply(Context& ctx, const glm::mat4& m) {
-  ctx.matrices.current().top() *= m;
+  current_stack(ctx).top() *= m;
   ctx.matrices.changed();
 }
 
 void load(Context& ctx, const glm::mat4& m) {
-  ctx.matrices.current().top() = m;
+  current_stack(ctx).top() = m;
   ctx.matrices.changed();
 }
 
@@ -151,10 +153,10 @@ void glOrtho(Context& ctx, GLdouble l, GLdouble r, GLdouble b, GLdouble t, GLdou
 }
 
 void glPushMatrix(Context& ctx) {
-  if (!ctx.matrices.current().push()) record_error(ctx, GL_STACK_OVERFLOW);
+  if (!current_stack(ctx).push()) record_error(ctx, GL_STACK_OVERFLOW);
 }
 void glPopMatrix(Context& ctx) {
-  if (!ctx.matrices.current().pop()) {
+  if (!current_stack(ctx).pop()) {
     record_error(ctx, GL_STACK_UNDERFLOW);
     return;
   }

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "gl_shim/gl_types.h"
+#include "rt_core/record/gl_state.hpp"
 
 namespace glpt {
 
@@ -35,20 +36,18 @@ class MatrixStack {
   std::vector<glm::mat4> stack_;
 };
 
-inline constexpr size_t kMaxTextureUnits = 4;
-
 struct MatrixState {
   MatrixStack modelview{32};
   MatrixStack projection{4};
-  std::array<MatrixStack, kMaxTextureUnits> texture{MatrixStack{4}, MatrixStack{4}, MatrixStack{4},
-                                                    MatrixStack{4}};
+  std::array<MatrixStack, rec::kMaxTextureUnits> texture{MatrixStack{4}, MatrixStack{4},
+                                                         MatrixStack{4}, MatrixStack{4}};
   GLenum mode = 0x1700;  // GL_MODELVIEW
-  uint32_t active_texture = 0;
   // Bumped on every change of the modelview top: geometry batches end where it changes.
   uint64_t modelview_version = 0;
   uint64_t projection_version = 0;
 
-  MatrixStack& current();
+  // The stack glMatrixMode selects; GL_TEXTURE selects the active texture unit's.
+  MatrixStack& current(uint32_t active_texture);
   void changed();  // after any edit of current()'s top
 };
 

@@ -4,9 +4,9 @@
 #include <cstring>
 #include <limits>
 
+#include "gl/gl_enums.h"
 #include "gl_shim/context.hpp"
 #include "gl_shim/dispatch.hpp"
-#include "gl/gl_enums.h"
 #include "gl_shim/gl_impl_decls.hpp"
 
 namespace glpt {
@@ -66,7 +66,7 @@ bool lookup(const Context& ctx, GLenum pname, Value* out) {
       *out = floats(&m.projection.top()[0][0], 16);
       return true;
     case GL_TEXTURE_MATRIX:
-      *out = floats(&m.texture[m.active_texture].top()[0][0], 16);
+      *out = floats(&m.texture[ctx.textures.active].top()[0][0], 16);
       return true;
     case GL_MODELVIEW_STACK_DEPTH:
       *out = ints({double(m.modelview.depth())});
@@ -75,7 +75,7 @@ bool lookup(const Context& ctx, GLenum pname, Value* out) {
       *out = ints({double(m.projection.depth())});
       return true;
     case GL_TEXTURE_STACK_DEPTH:
-      *out = ints({double(m.texture[m.active_texture].depth())});
+      *out = ints({double(m.texture[ctx.textures.active].depth())});
       return true;
     case GL_MAX_MODELVIEW_STACK_DEPTH:
       *out = ints({double(m.modelview.max_depth())});
@@ -87,7 +87,7 @@ bool lookup(const Context& ctx, GLenum pname, Value* out) {
       *out = ints({double(m.texture[0].max_depth())});
       return true;
     case GL_MAX_LIGHTS:
-      *out = ints({kMaxLights});
+      *out = ints({rec::kMaxLights});
       return true;
     case GL_MAX_CLIP_PLANES:
       *out = ints({6});
@@ -102,10 +102,10 @@ bool lookup(const Context& ctx, GLenum pname, Value* out) {
       *out = ints({kMaxTextureSize});
       return true;
     case GL_MAX_TEXTURE_UNITS:
-      *out = ints({double(kMaxTextureUnits)});
+      *out = ints({double(rec::kMaxTextureUnits)});
       return true;
     case GL_ACTIVE_TEXTURE:
-      *out = ints({double(GL_TEXTURE0 + m.active_texture)});
+      *out = ints({double(GL_TEXTURE0 + ctx.textures.active)});
       return true;
     case GL_MAX_LIST_NESTING:
       *out = ints({DisplayListState::kMaxNesting});
@@ -159,23 +159,23 @@ bool lookup(const Context& ctx, GLenum pname, Value* out) {
       return true;
     }
     case GL_DEPTH_FUNC:
-      *out = ints({double(fb.depth_func)});
+      *out = ints({double(ctx.raster.ops.depth_func)});
       return true;
     case GL_CULL_FACE_MODE:
-      *out = ints({double(fb.cull_face)});
+      *out = ints({double(ctx.raster.primitive.cull_face_mode)});
       return true;
     case GL_FRONT_FACE:
-      *out = ints({double(fb.front_face)});
+      *out = ints({double(ctx.raster.primitive.front_face)});
       return true;
     case GL_DRAW_BUFFER:
-      *out = ints({double(fb.draw_buffer)});
+      *out = ints({double(ctx.raster.ops.draw_buffer)});
       return true;
     case GL_READ_BUFFER:
-      *out = ints({double(fb.read_buffer)});
+      *out = ints({double(ctx.raster.ops.read_buffer)});
       return true;
     case GL_SCISSOR_BOX:
-      *out = ints({double(fb.scissor[0]), double(fb.scissor[1]), double(fb.scissor[2]),
-                   double(fb.scissor[3])});
+      *out = ints({double(ctx.raster.ops.scissor_box[0]), double(ctx.raster.ops.scissor_box[1]),
+                   double(ctx.raster.ops.scissor_box[2]), double(ctx.raster.ops.scissor_box[3])});
       return true;
     case GL_PACK_ALIGNMENT:
       *out = ints({double(fb.pack.alignment)});
@@ -220,10 +220,10 @@ bool lookup(const Context& ctx, GLenum pname, Value* out) {
       *out = floats(&ctx.current.normal.x, 3, Kind::kColor);
       return true;
     case GL_CURRENT_TEXTURE_COORDS:
-      *out = floats(&ctx.current.tex_coord[m.active_texture].x, 4);
+      *out = floats(&ctx.current.tex_coord[ctx.textures.active].x, 4);
       return true;
     case GL_SHADE_MODEL:
-      *out = ints({double(ctx.lighting.shade_model)});
+      *out = ints({double(ctx.raster.primitive.shade_model)});
       return true;
     case GL_LIGHT_MODEL_AMBIENT:
       *out = floats(&ctx.lighting.model_ambient.x, 4, Kind::kColor);
@@ -273,7 +273,7 @@ bool lookup(const Context& ctx, GLenum pname, Value* out) {
     default:
       break;
   }
-  if (auto on = ctx.enables.get(pname)) {
+  if (auto on = capability_enabled(const_cast<Context&>(ctx), pname)) {
     *out = boolean(*on);
     return true;
   }

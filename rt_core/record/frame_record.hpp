@@ -1,0 +1,191 @@
+// The frame record: the frame as GL drew it, in GL's order. The one contract between the GL
+// front end (gl_shim, which produces it) and its consumers in rt_core (raster mode draws it; the
+// path tracer derives its scene from it). Nothing in it is specific to either consumer.
+//
+//   commands   Clear | Draw | Bitmap | DrawPixels | CopyPixels | Accum | Read, in call order
+//   states     immutable, deduplicated snapshots of the GL state that decides pixels; each
+//              command that produces fragments refers to one by StateId
+//   vertices   per draw: the primitives as GL assembled them, attributes in object space
+//
+// A record covers the commands since the last time its consumer executed one (a swap, a read, a
+// glFinish): the consumer applies them to the drawable's persistent buffers (colour front/back,
+// depth, stencil, accumulation), which keep their contents between records as GL's do.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <memory>
+#include <variant>
+#include <vector>
+
+#include "rt_core/record/gl_state.hpp"
+#include "rt_core/record/texture.hpp"
+
+namespace glpt::rec {
+
+// ---- state ------------------------------------------------------------------------------------
+
+// One snapshot of all the GL state that decides a command's pixels. Blocks are shared between
+// snapshots (and between frames) while they are unchanged, so comparing two blocks by pointer
+// is a cheap "certainly equal" test; equal contents under different pointers are still equal.
+struct StateSnapshot {
+  std::shared_ptr<const TransformState> transform;
+  std::shared_ptr<const LightingState> lighting;
+  std::shared_ptr<const TexturingState> texturing;
+  std::shared_ptr<const RasterState> raster;
+  std::shared_ptr<const PixelTransferState> pixel_transfer;
+};
+
+using StateId = uint32_t;  // index into FrameRecord::states
+
+// ---- geometry ---------------------------------------------------------------------------------
+
+struct PrimitiveRange {
+  uint32_t first = 0;  // first element (index into `indices`, or vertex number without indices)
+  uint32_t count = 0;
+};
+
+// Per-vertex attributes of a draw in object space, with GL's current values as they were at
+// each glVertex / array element. Every attribute array holds either one value per vertex or a
+// single value shared by all vertices (it did not change during the draw). A texture coordinate
+// array is empty when the unit is not used by the draw's state.
+struct VertexData {
+  // GL primitive type as given to glBegin / glDrawArrays: GL_POINTS .. GL_POLYGON. Consumers
+  // decompose it as GL does (decompose.hpp): provoking vertices, edge flags, stipple resets.
+  uint32_t mode = GL_TRIANGLES;
+  std::vector<glm::vec4> position;  // homogeneous, as specified (w kept)
+  std::vector<glm::vec3> normal;
+  std::vector<glm::vec4> color;            // primary
+  std::vector<glm::vec4> secondary_color;  // a is 0
+  std::vector<float> fog_coord;
+  std::array<std::vector<glm::vec4>, kMaxTextureUnits> tex_coord;
+  std::vector<uint8_t> edge_flag;  // 0 / 1
+  // Elements -> vertices (empty: element i is vertex i), and the primitives: one range per
+  // glBegin/glEnd or per glDrawArrays/Elements call batched into this draw.
+  std::vector<uint32_t> indices;
+  std::vector<PrimitiveRange> primitives;
+
+  // Identity, computed once by the front end (content hashes, so equal draws in different frames
+  // have equal keys). `geometry_key` covers what decides the shape (mode, positions, indices,
+  // primitives): recolouring never changes it, so an acceleration structure is reused.
+  // `attribute_key` covers everything else.
+  uint64_t geometry_key = 0;
+  uint64_t attribute_key = 0;
+
+  uint32_t vertex_count() const { return static_cast<uint32_t>(position.size()); }
+};
+
+// Attribute accessors that hide the "one value or one per vertex" rule.
+template <typename T>
+const T& attribute_at(const std::vector<T>& values, uint32_t vertex, const T& fallback) {
+  if (values.empty()) return fallback;
+  return values.size() == 1 ? values[0] : values[vertex];
+}
+
+// ---- commands ---------------------------------------------------------------------------------
+
+// glClear: `state` supplies the scissor box, colour/depth/stencil write masks, dither and the
+// draw buffer the clear honours (GL 1.5 4.2.3).
+struct Clear {
+  StateId state = 0;
+  uint32_t mask = 0;  // GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | ACCUM
+  glm::vec4 color{0.0f};
+  float depth = 1.0f;
+  int32_t stencil = 0;
+  glm::vec4 accum{0.0f};
+};
+
+struct Draw {
+  StateId state = 0;
+  std::shared_ptr<const VertexData> vertices;
+};
+
+// The current raster position (GL 1.5 2.13) as pixel commands use it.
+struct RasterPosition {
+  glm::vec4 window{0.0f, 0.0f, 0.0f, 1.0f};  // x, y, z in window coordinates; w: clip w
+  bool valid = true;
+  float distance = 0.0f;  // eye distance (fog coordinate)
+  glm::vec4 color{1.0f};
+  glm::vec4 secondary_color{0.0f, 0.0f, 0.0f, 1.0f};
+  std::array<glm::vec4, kMaxTextureUnits> tex_coord{};
+};
+
+// glBitmap: fragments of the raster colour where the bitmap has ones, at the raster position
+// minus (xorig, yorig); bitmaps are never zoomed.
+struct Bitmap {
+  StateId state = 0;
+  RasterPosition raster;
+  glm::vec2 origin{0.0f};  // window position of the bitmap's lower-left corner
+  uint32_t width = 0, height = 0;
+  std::vector<uint8_t> bits;  // width * height, 0 or 1, rows bottom to top (unpacked)
+};
+
+enum class PixelKind : uint8_t { kColor, kDepth, kStencil };
+
+// glDrawPixels: the image is already unpacked and through pixel transfer (GL 1.5 3.6.4-3.6.5),
+// so what remains is rasterization with zoom and the per-fragment pipeline.
+struct DrawPixels {
+  StateId state = 0;
+  RasterPosition raster;
+  PixelKind kind = PixelKind::kColor;
+  uint32_t width = 0, height = 0;
+  std::vector<glm::vec4> color;   // kColor: width * height RGBA, rows bottom to top
+  std::vector<float> depth;       // kDepth: [0, 1]
+  std::vector<uint32_t> stencil;  // kStencil
+};
+
+// glCopyPixels: a rectangle of the read buffer (state's FragmentOpsState::read_buffer) drawn at
+// the raster position, through the state's pixel transfer, zoom and per-fragment pipeline.
+struct CopyPixels {
+  StateId state = 0;
+  RasterPosition raster;
+  PixelKind kind = PixelKind::kColor;
+  int32_t x = 0, y = 0;
+  uint32_t width = 0, height = 0;
+};
+
+// glAccum (GL 1.5 4.2.4): `state` supplies the scissor, colour write mask and buffers.
+struct Accum {
+  StateId state = 0;
+  uint32_t op = GL_ACCUM;  // GL_ACCUM, GL_LOAD, GL_RETURN, GL_MULT, GL_ADD
+  float value = 0.0f;
+};
+
+// A point where the program reads pixels back (glReadPixels, glCopyTexImage, glCopyPixels reads
+// its source itself): everything before it must be rendered before the read is answered. The
+// front end answers the read from the consumer's buffers after executing the record up to here.
+struct Read {
+  uint32_t buffer = GL_BACK;  // resolved read buffer
+  PixelKind kind = PixelKind::kColor;
+  int32_t x = 0, y = 0;
+  uint32_t width = 0, height = 0;
+};
+
+using Command = std::variant<Clear, Draw, Bitmap, DrawPixels, CopyPixels, Accum, Read>;
+
+struct FrameRecord {
+  std::vector<StateSnapshot> states;
+  std::vector<Command> commands;
+
+  void clear() {
+    states.clear();
+    commands.clear();
+  }
+  bool empty() const { return commands.empty(); }
+};
+
+// The drawable a record is executed on: its size and which buffers it has (GLX visual / EGL
+// config). Buffers a drawable lacks ignore clears, tests and writes as GL specifies.
+struct DrawableConfig {
+  uint32_t width = 0, height = 0;
+  bool double_buffered = true;
+  bool has_alpha = true;
+  uint32_t depth_bits = 24;
+  uint32_t stencil_bits = 8;
+  uint32_t accum_bits = 16;  // per component; 0: no accumulation buffer
+
+  bool operator==(const DrawableConfig&) const = default;
+};
+
+}  // namespace glpt::rec

@@ -1,0 +1,78 @@
+// Texture contents as the frame record sees them: immutable snapshots of a GL texture object.
+//
+// The GL front end owns mutable texture objects; every draw that samples one refers to a
+// TextureObjectSnapshot. A snapshot never changes: when the program redefines an image the front
+// end makes a new snapshot (copy-on-write of the levels that are still referred to), so a draw
+// recorded before a glTexSubImage in the same frame still sees the old texels.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <memory>
+#include <vector>
+
+#include "gl/gl_enums.h"
+
+namespace glpt::rec {
+
+// How texels are stored. Every colour format whose components have at most 8 bits is stored as
+// RGBA8 after GL's conversion to its base format (GL 1.5 3.8.1, table 3.15) and quantization to
+// the requested component size, laid out so a plain RGBA lookup returns what GL's texture
+// environments call the texture colour: L -> (L,L,L,1), A -> (0,0,0,A), LA -> (L,L,L,A),
+// I -> (I,I,I,I), RGB -> (R,G,B,1). Which components exist is `base_format`'s business.
+enum class TexelFormat : uint8_t {
+  kRgba8,    // 4 bytes per texel
+  kRgba16,   // 8 bytes per texel, unsigned normalized (internal formats with > 8 bits)
+  kRgba32f,  // 16 bytes per texel
+  kDepth32f  // 4 bytes per texel: GL_DEPTH_COMPONENT textures (ARB_depth_texture, GL 1.4)
+};
+
+uint32_t texel_bytes(TexelFormat format);
+
+// One mipmap level of one face. GL texture borders are not stored: Mesa strips them when the
+// image is specified (its gallium drivers have no borders), and glpt does the same so both
+// sample the same texels.
+struct TextureImage {
+  uint32_t width = 0, height = 1, depth = 1;
+  uint32_t border = 0;           // as specified (for queries); the texels exclude it
+  uint32_t internal_format = 0;  // as the program asked (1..4, GL_RGB8, GL_LUMINANCE, ...)
+  std::vector<uint8_t> texels;   // width * height * depth * texel_bytes, rows bottom to top
+};
+
+struct SamplerState {
+  uint32_t min_filter = GL_NEAREST_MIPMAP_LINEAR;
+  uint32_t mag_filter = GL_LINEAR;
+  uint32_t wrap_s = GL_REPEAT, wrap_t = GL_REPEAT, wrap_r = GL_REPEAT;
+  glm::vec4 border_color{0.0f};
+  float min_lod = -1000.0f, max_lod = 1000.0f;
+  int32_t base_level = 0, max_level = 1000;
+  float lod_bias = 0.0f;  // GL_TEXTURE_LOD_BIAS of the object (GL 1.4)
+  float max_anisotropy = 1.0f;
+  uint32_t compare_mode = GL_NONE;  // GL_TEXTURE_COMPARE_MODE (GL 1.4 depth textures)
+  uint32_t compare_func = GL_LEQUAL;
+  uint32_t depth_texture_mode = GL_LUMINANCE;
+
+  bool operator==(const SamplerState&) const = default;
+};
+
+struct TextureObjectSnapshot {
+  uint32_t target = GL_TEXTURE_2D;  // GL_TEXTURE_1D, _2D, _3D, _CUBE_MAP
+  // Unique for every distinct content of the images (never reused): GPU-side caches key on it,
+  // so a texture whose images did not change is uploaded once.
+  uint64_t content_version = 0;
+  // GL_RGBA, GL_RGB, GL_LUMINANCE, GL_LUMINANCE_ALPHA, GL_ALPHA, GL_INTENSITY or
+  // GL_DEPTH_COMPONENT: decides what the texture environment takes from the texel.
+  uint32_t base_format = GL_RGBA;
+  TexelFormat texel_format = TexelFormat::kRgba8;
+  // faces[f][level]: one face for 1D/2D/3D, six (+X, -X, +Y, -Y, +Z, -Z) for cube maps.
+  // Null or empty levels are undefined.
+  std::vector<std::vector<std::shared_ptr<const TextureImage>>> faces;
+  SamplerState sampler;
+  // Levels base_level..last_level are consistent (GL 1.5 3.8.10). When a draw samples an
+  // incomplete texture GL behaves as if texturing were disabled for that unit; the front end
+  // resolves that before recording (TextureUnitState::target is 0 then).
+  int32_t last_level = 0;
+};
+
+}  // namespace glpt::rec
