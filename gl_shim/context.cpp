@@ -4,8 +4,9 @@
 #include <cstdio>
 #include <cstdlib>
 
-#include "gl/gl_enums.h"
 #include "common/stopwatch.hpp"
+#include "gl/gl_enums.h"
+#include "gl_shim/frame/headless_target.hpp"
 
 namespace glpt {
 namespace {
@@ -46,6 +47,23 @@ bool Context::list_executes_while_compiling() const {
 
 Context* current_context() { return t_current; }
 void set_current_context(Context* ctx) { t_current = ctx; }
+
+void bind_target_and_make_current(Context& ctx, WindowTarget* target) {
+  ctx.target = target;
+  set_current_context(&ctx);
+  uint32_t w = 0, h = 0;
+  if (ctx.framebuffer.viewport_initialized || target == nullptr || !target->query_size(&w, &h))
+    return;
+  FramebufferState& fb = ctx.framebuffer;
+  fb.viewport_width = static_cast<GLsizei>(w);
+  fb.viewport_height = static_cast<GLsizei>(h);
+  ctx.raster.ops.scissor_box = {0, 0, static_cast<int32_t>(w), static_cast<int32_t>(h)};
+  fb.viewport_initialized = true;
+}
+
+void make_current_headless(Context& ctx, HeadlessTarget& target) {
+  bind_target_and_make_current(ctx, &target);
+}
 
 bool render_pending_frame(Context& ctx) {
   if (ctx.target == nullptr || ctx.renderer_unavailable) return false;

@@ -73,6 +73,10 @@ class Context {
 Context* current_context();
 void set_current_context(Context* ctx);
 
+// Binds `target` to `ctx` and makes it current. On the context's first binding the viewport and
+// scissor box become the target's size (GL 1.5 2.11.1, 4.1.2).
+void bind_target_and_make_current(Context& ctx, WindowTarget* target);
+
 // Renders what was drawn since the last render, if anything (a read, a swap or glFinish).
 // Returns false if there is no image (no window, or the renderer failed).
 bool render_pending_frame(Context& ctx);

@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
+#include "common/stopwatch.hpp"
 #include "rt_core/frame.hpp"
 #include "rt_core/renderer.hpp"
-#include "common/stopwatch.hpp"
 
 namespace glpt {
 

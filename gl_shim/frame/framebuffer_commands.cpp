@@ -7,6 +7,7 @@
 #include "gl/gl_enums.h"
 #include "gl_shim/context.hpp"
 #include "gl_shim/dispatch.hpp"
+#include "gl_shim/frame/framebuffer_access.hpp"
 #include "gl_shim/gl_impl_decls.hpp"
 
 namespace glpt {
@@ -82,6 +83,32 @@ void store_component(void* dst, GLenum type, float c) {
 }
 
 }  // namespace
+
+// Interim: the colour image of the last render (the frame record and its raster consumer replace
+// this with the drawable's real buffers, depth and stencil included).
+bool read_framebuffer(Context& ctx, rec::PixelKind kind, uint32_t /*buffer*/, int32_t x, int32_t y,
+                      uint32_t width, uint32_t height, FramebufferPixels& out) {
+  out = FramebufferPixels();
+  if (kind != rec::PixelKind::kColor) return false;
+  if (!render_pending_frame(ctx) || !ctx.output) return false;
+  const std::vector<uint8_t>& img = ctx.output->image();
+  const int64_t fw = ctx.output->width(), fh = ctx.output->height();
+  out.width = width;
+  out.height = height;
+  out.color.assign(size_t{width} * height, glm::vec4(0.0f));
+  out.inside.assign(size_t{width} * height, 0);
+  for (uint32_t j = 0; j < height; ++j) {
+    for (uint32_t i = 0; i < width; ++i) {
+      const int64_t sx = int64_t{x} + i, sy = int64_t{y} + j;
+      if (sx < 0 || sy < 0 || sx >= fw || sy >= fh) continue;
+      const uint8_t* src = &img[static_cast<size_t>((sy * fw + sx) * 4)];
+      const size_t k = size_t{j} * width + i;
+      out.color[k] = glm::vec4(src[0], src[1], src[2], src[3]) / 255.0f;
+      out.inside[k] = 1;
+    }
+  }
+  return true;
+}
 
 namespace impl {
 

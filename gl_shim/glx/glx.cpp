@@ -69,19 +69,7 @@ bool make_current(Display* dpy, GLXDrawable draw, GLXDrawable read, GLXContext c
   ctx->display = dpy;
   ctx->drawable = draw;
   ctx->readable = read;
-  ctx->gl.target = ctx->target.get();
-  glpt::set_current_context(&ctx->gl);
-  // GL 1.5 spec 2.11.1: the viewport and scissor box start as the window's size.
-  if (!ctx->gl.framebuffer.viewport_initialized) {
-    uint32_t w = 0, h = 0;
-    if (ctx->target->query_size(&w, &h)) {
-      auto& fb = ctx->gl.framebuffer;
-      fb.viewport_width = static_cast<GLsizei>(w);
-      fb.viewport_height = static_cast<GLsizei>(h);
-      ctx->gl.raster.ops.scissor_box = {0, 0, static_cast<int32_t>(w), static_cast<int32_t>(h)};
-      fb.viewport_initialized = true;
-    }
-  }
+  glpt::bind_target_and_make_current(ctx->gl, ctx->target.get());
   return true;
 }
 
