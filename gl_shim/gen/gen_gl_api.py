@@ -91,7 +91,7 @@ ALLOWED_IN_BEGIN_END_PREFIXES = (
 )
 # ... but not these, whose names merely start like the above.
 NOT_ALLOWED_IN_BEGIN_END = {
-    "glColorMaterial", "glColorMask", "glColorPointer", "glColorTable", "glColorSubTable",
+    "glEndList", "glColorMaterial", "glColorMask", "glColorPointer", "glColorTable", "glColorSubTable",
     "glColorTableParameterfv", "glColorTableParameteriv", "glIndexMask", "glIndexPointer",
     "glNormalPointer", "glTexCoordPointer", "glVertexPointer", "glEdgeFlagPointer",
     "glFogCoordPointer", "glSecondaryColorPointer", "glVertexPointerEXT", "glColorPointerEXT",

@@ -18,6 +18,10 @@ void attribute_color(Context& ctx, glm::vec4 color);
 void attribute_tex_coord(Context& ctx, glm::vec4 coord);
 void attribute_multi_tex_coord(Context& ctx, GLenum texture_unit, glm::vec4 coord);
 
+// glMaterial between glBegin and glEnd (allowed by GL 1.5 2.6.3): from then on every vertex of the
+// primitive records its own material. Does nothing outside glBegin/glEnd.
+void material_changed_inside_begin_end(Context& ctx);
+
 // GL 1.5 spec table 2.9: integer colours and normals map to [0,1] (unsigned) or [-1,1] (signed).
 template <typename T>
 float normalized_component(T v) {

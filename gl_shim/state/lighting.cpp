@@ -8,6 +8,7 @@
 #include "gl/gl_enums.h"
 #include "gl_shim/context.hpp"
 #include "gl_shim/dispatch.hpp"
+#include "gl_shim/geometry/attributes.hpp"
 #include "gl_shim/gl_impl_decls.hpp"
 
 namespace glpt {
@@ -163,6 +164,7 @@ void set_material(Context& ctx, GLenum face, GLenum pname, const T* p, bool scal
         return false;
     }
   };
+  material_changed_inside_begin_end(ctx);
   bool ok = true;
   if (face != GL_BACK) ok = apply(ctx.lighting.material[0]);
   if (ok && face != GL_FRONT) apply(ctx.lighting.material[1]);
