@@ -6,16 +6,12 @@
 #include <exception>
 
 #include "rt_core/passes/path_tracer.hpp"
+#include "rt_core/raster/raster_renderer.hpp"
 #include "rt_core/scene/scene_builder.hpp"
 #include "rt_core/vk/vk_device.hpp"
 
 namespace glpt::rt {
 namespace {
-
-bool is_front(uint32_t buffer) {
-  return buffer == GL_FRONT || buffer == GL_FRONT_LEFT || buffer == GL_FRONT_RIGHT ||
-         buffer == GL_LEFT || buffer == GL_RIGHT;
-}
 
 // Runs `body`, turning any exception into false + message (nothing may escape this API).
 template <typename Body>
@@ -36,66 +32,61 @@ class Renderer::Impl {
  public:
   Impl(RenderSettings settings, std::shared_ptr<VulkanDevice> device,
        std::unique_ptr<PathTracer> tracer)
-      : settings_(settings), device_(std::move(device)), tracer_(std::move(tracer)) {}
+      : settings_(settings),
+        device_(device),
+        raster_(std::move(device)),
+        tracer_(std::move(tracer)) {}
 
   RenderMode mode() const { return settings_.mode; }
   const std::string& device_name() const { return device_->name(); }
+  RasterRenderer& raster() { return raster_; }
 
   bool execute(const rec::FrameRecord& record, const rec::DrawableConfig& drawable,
                FrameStats& stats, std::string* error) {
     stats = FrameStats();
-    if (drawable != drawable_) {
-      drawable_ = drawable;
-      const size_t bytes = size_t{drawable.width} * drawable.height * 4;
-      front_.assign(bytes, 0);
-      back_.assign(bytes, 0);
+    if (settings_.mode == RenderMode::kRaster || !tracer_) {
+      raster_.execute(record, drawable, stats);
+      return true;
     }
-    if (drawable.width == 0 || drawable.height == 0) return true;
-    // Interim: the whole record is path traced into the draw buffer of its last command.
+    // Path-traced mode (interim, until the G-buffer pass): the traced draws are path traced into
+    // the colour buffer the frame draws to; every other command is rasterized over that image.
     build_trace_scene(record, drawable.width, drawable.height, scene_);
-    uint32_t draw_buffer = drawable.double_buffered ? GL_BACK : GL_FRONT;
-    for (const rec::Command& command : record.commands) {
-      std::visit(
-          [&](const auto& c) {
-            if constexpr (requires { c.state; })
-              draw_buffer = record.states[c.state].raster->ops.draw_buffer;
-          },
-          command);
+    raster_.execute(record, drawable, stats, &no_commands_);  // makes the buffers exist
+    if (drawable.width == 0 || drawable.height == 0) return true;
+    bool front = !drawable.double_buffered;
+    for (size_t i : scene_.traced) {
+      const auto& draw = std::get<rec::Draw>(record.commands[i]);
+      const uint32_t buffer = record.states[draw.state].raster->ops.draw_buffer;
+      front = front || buffer == GL_FRONT || buffer == GL_FRONT_LEFT || buffer == GL_LEFT;
     }
-    std::vector<uint8_t>& target =
-        is_front(draw_buffer) || !drawable.double_buffered ? front_ : back_;
-    if (!tracer_->render(scene_.scene, target, stats, error)) return false;
+    FrameStats traced;
+    if (!tracer_->render(scene_.scene, traced_image_, traced, error)) return false;
+    raster_.write_color(front, traced_image_);
+    std::vector<size_t> overlay;
+    for (size_t i : scene_.overlay)
+      if (!std::holds_alternative<rec::Clear>(record.commands[i])) overlay.push_back(i);
+    raster_.execute(record, drawable, stats, &overlay);
+    stats.upload_ms += traced.upload_ms;
+    stats.blas_ms = traced.blas_ms;
+    stats.tlas_ms = traced.tlas_ms;
+    stats.trace_ms = traced.trace_ms;
+    stats.readback_ms += traced.readback_ms;
+    stats.blas_builds = traced.blas_builds;
+    stats.blas_reused = traced.blas_reused;
+    stats.triangles = traced.triangles;
+    stats.rays = traced.rays;
+    stats.accumulated_samples = traced.accumulated_samples;
     return true;
-  }
-
-  bool read_color(uint32_t buffer, int32_t x, int32_t y, uint32_t width, uint32_t height,
-                  std::vector<uint8_t>& rgba) const {
-    const std::vector<uint8_t>& source =
-        is_front(buffer) || !drawable_.double_buffered ? front_ : back_;
-    rgba.assign(size_t{width} * height * 4, 0);
-    if (source.empty()) return false;
-    for (uint32_t j = 0; j < height; ++j) {
-      for (uint32_t i = 0; i < width; ++i) {
-        const int64_t sx = int64_t{x} + i, sy = int64_t{y} + j;
-        if (sx < 0 || sy < 0 || sx >= drawable_.width || sy >= drawable_.height) continue;
-        std::memcpy(&rgba[(size_t{j} * width + i) * 4],
-                    &source[static_cast<size_t>((sy * drawable_.width + sx) * 4)], 4);
-      }
-    }
-    return true;
-  }
-
-  void swap_buffers() {
-    if (drawable_.double_buffered) front_ = back_;
   }
 
  private:
   RenderSettings settings_;
   std::shared_ptr<VulkanDevice> device_;
-  std::unique_ptr<PathTracer> tracer_;
-  rec::DrawableConfig drawable_{0, 0};
-  std::vector<uint8_t> front_, back_;
+  RasterRenderer raster_;
+  std::unique_ptr<PathTracer> tracer_;  // null in raster mode or without ray queries
   SceneBuild scene_;
+  std::vector<uint8_t> traced_image_;
+  const std::vector<size_t> no_commands_;
 };
 
 Renderer::Renderer(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
@@ -109,18 +100,24 @@ std::unique_ptr<Renderer> Renderer::create(const RenderSettings& settings, std::
     options.validation = settings.validation;
     if (const char* filter = std::getenv("GLPT_VK_DEVICE")) options.name_filter = filter;
     std::shared_ptr<VulkanDevice> device = VulkanDevice::create(options);
-    if (!device->has_ray_query()) {
-      if (error != nullptr)
-        *error = "glpt: " + device->name() + " has no ray queries (" + device->ray_query_missing() +
-                 "). " + vulkan_install_hint();
-      return false;
+    RenderSettings effective = settings;
+    std::unique_ptr<PathTracer> tracer;
+    if (settings.mode == RenderMode::kPathTraced) {
+      if (device->has_ray_query()) {
+        tracer = PathTracer::create(device, settings, error);
+        if (!tracer) return false;
+      } else {
+        // No ray queries: GL still draws, through raster mode, and says so once.
+        effective.mode = RenderMode::kRaster;
+        if (notice != nullptr)
+          *notice = "glpt: " + device->name() + " has no ray queries (lacks " +
+                    device->ray_query_missing() + "): drawing in raster mode. " +
+                    vulkan_install_hint();
+      }
     }
-    auto tracer = PathTracer::create(device, settings, error);
-    if (!tracer) return false;
-    renderer.reset(new Renderer(std::make_unique<Impl>(settings, device, std::move(tracer))));
+    renderer.reset(new Renderer(std::make_unique<Impl>(effective, device, std::move(tracer))));
     return true;
   });
-  (void)notice;
   return renderer;
 }
 
@@ -136,24 +133,26 @@ bool Renderer::execute(const rec::FrameRecord& record, const rec::DrawableConfig
 bool Renderer::read_color(uint32_t buffer, int32_t x, int32_t y, uint32_t width, uint32_t height,
                           std::vector<uint8_t>& rgba, std::string* error) {
   return guarded("read failed", error,
-                 [&] { return impl_->read_color(buffer, x, y, width, height, rgba); });
+                 [&] { return impl_->raster().read_color(buffer, x, y, width, height, rgba); });
 }
 
-bool Renderer::read_depth(int32_t, int32_t, uint32_t, uint32_t, std::vector<float>& depth,
-                          std::string*) {
-  depth.clear();
-  return false;
+bool Renderer::read_depth(int32_t x, int32_t y, uint32_t width, uint32_t height,
+                          std::vector<float>& depth, std::string* error) {
+  return guarded("read failed", error,
+                 [&] { return impl_->raster().read_depth(x, y, width, height, depth); });
 }
 
-bool Renderer::read_stencil(int32_t, int32_t, uint32_t, uint32_t, std::vector<uint8_t>& stencil,
-                            std::string*) {
-  stencil.clear();
-  return false;
+bool Renderer::read_stencil(int32_t x, int32_t y, uint32_t width, uint32_t height,
+                            std::vector<uint8_t>& stencil, std::string* error) {
+  return guarded("read failed", error,
+                 [&] { return impl_->raster().read_stencil(x, y, width, height, stencil); });
 }
 
-bool Renderer::swap_buffers(std::string*) {
-  impl_->swap_buffers();
-  return true;
+bool Renderer::swap_buffers(std::string* error) {
+  return guarded("swap failed", error, [&] {
+    impl_->raster().swap_buffers();
+    return true;
+  });
 }
 
 }  // namespace glpt::rt

@@ -24,9 +24,11 @@ namespace {
 
 // Raster mode: GL's rasterization rules on Vulkan (see docs/architecture.md, "raster parity").
 constexpr const char* kRasterDeviceExtensions[] = {
-    VK_EXT_PROVOKING_VERTEX_EXTENSION_NAME,    // GL's last-vertex convention
-    VK_EXT_LINE_RASTERIZATION_EXTENSION_NAME,  // Bresenham (GL's diamond-exit) lines, stipple
-    VK_EXT_DEPTH_CLIP_CONTROL_EXTENSION_NAME,  // GL's [-1, 1] clip-space depth
+    VK_EXT_PROVOKING_VERTEX_EXTENSION_NAME,     // GL's last-vertex convention
+    VK_EXT_LINE_RASTERIZATION_EXTENSION_NAME,   // Bresenham (GL's diamond-exit) lines, stipple
+    VK_EXT_DEPTH_CLIP_CONTROL_EXTENSION_NAME,   // GL's [-1, 1] clip-space depth
+    VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME,      // per-draw textures without descriptor pools
+    VK_EXT_CUSTOM_BORDER_COLOR_EXTENSION_NAME,  // GL's texture border colour
 };
 // Path tracing. VK_KHR_deferred_host_operations is required by VK_KHR_acceleration_structure
 // even though all builds run on the queue.
@@ -95,8 +97,10 @@ Candidate evaluate(VkPhysicalDevice device) {
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_LINE_RASTERIZATION_FEATURES_EXT, &provoking);
   auto depth_clip = make_info<VkPhysicalDeviceDepthClipControlFeaturesEXT>(
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DEPTH_CLIP_CONTROL_FEATURES_EXT, &lines);
+  auto border = make_info<VkPhysicalDeviceCustomBorderColorFeaturesEXT>(
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_CUSTOM_BORDER_COLOR_FEATURES_EXT, &depth_clip);
   auto vulkan13 = make_info<VkPhysicalDeviceVulkan13Features>(
-      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES, &depth_clip);
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES, &border);
   auto vulkan12 = make_info<VkPhysicalDeviceVulkan12Features>(
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES, &vulkan13);
   auto features =
@@ -109,6 +113,7 @@ Candidate evaluate(VkPhysicalDevice device) {
   need(vulkan12.bufferDeviceAddress, "bufferDeviceAddress");
   need(vulkan13.dynamicRendering, "dynamicRendering");
   need(vulkan13.synchronization2, "synchronization2");
+  need(vulkan13.maintenance4, "maintenance4");
   need(core.fillModeNonSolid, "fillModeNonSolid");
   need(core.wideLines, "wideLines");
   need(core.largePoints, "largePoints");
@@ -119,6 +124,8 @@ Candidate evaluate(VkPhysicalDevice device) {
   need(lines.bresenhamLines, "bresenhamLines");
   need(lines.stippledBresenhamLines, "stippledBresenhamLines");
   need(depth_clip.depthClipControl, "depthClipControl");
+  need(border.customBorderColors, "customBorderColors");
+  need(border.customBorderColorWithoutFormat, "customBorderColorWithoutFormat");
   candidate.geometry_shader = core.geometryShader;
   if (candidate.missing_ray_query.empty()) {
     if (!acceleration.accelerationStructure)
@@ -229,9 +236,10 @@ std::unique_ptr<VulkanDevice> VulkanDevice::create(const DeviceOptions& options)
       VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT);
   messenger_info.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT |
                                    VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
-  messenger_info.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
-                               VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
-                               VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
+  // Performance hints are left out: they mostly ask for optimal image layouts, and glpt keeps
+  // every image in GENERAL on purpose (gpu_image.hpp).
+  messenger_info.messageType =
+      VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT;
   messenger_info.pfnUserCallback = &VulkanDevice::on_validation_message;
   messenger_info.pUserData = self.get();
 
@@ -323,10 +331,16 @@ std::unique_ptr<VulkanDevice> VulkanDevice::create(const DeviceOptions& options)
   auto depth_clip = make_info<VkPhysicalDeviceDepthClipControlFeaturesEXT>(
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DEPTH_CLIP_CONTROL_FEATURES_EXT, &lines);
   depth_clip.depthClipControl = VK_TRUE;
+  auto border = make_info<VkPhysicalDeviceCustomBorderColorFeaturesEXT>(
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_CUSTOM_BORDER_COLOR_FEATURES_EXT, &depth_clip);
+  border.customBorderColors = VK_TRUE;
+  border.customBorderColorWithoutFormat = VK_TRUE;
   auto vulkan13 = make_info<VkPhysicalDeviceVulkan13Features>(
-      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES, &depth_clip);
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES, &border);
   vulkan13.dynamicRendering = VK_TRUE;
   vulkan13.synchronization2 = VK_TRUE;
+  // SPIR-V 1.6 (Vulkan 1.3) states compute workgroup sizes with LocalSizeId, which needs this.
+  vulkan13.maintenance4 = VK_TRUE;
   auto vulkan12 = make_info<VkPhysicalDeviceVulkan12Features>(
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES, &vulkan13);
   vulkan12.bufferDeviceAddress = VK_TRUE;
