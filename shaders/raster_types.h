@@ -29,6 +29,9 @@ using mat4 = glm::mat4;
 #define GLPT_RASTER_TEXTURE_2D 1
 #define GLPT_RASTER_TEXTURE_3D 2
 #define GLPT_RASTER_TEXTURE_CUBE 3
+// uint[]: per triangle of an unfilled draw, its boundary-edge mask (8 bits per triangle, four
+// per uint), starting at RasterPushConstants.indices.y
+#define GLPT_RASTER_BINDING_EDGES (GLPT_RASTER_BINDING_TEXTURES + 4 * GLPT_RASTER_MAX_UNITS)
 
 // ---- vertex inputs (one binding per attribute; a binding's stride is 0 when the record holds
 // one value for the whole draw) ------------------------------------------------------------------
@@ -65,6 +68,13 @@ using mat4 = glm::mat4;
 #define GLPT_SC_TEXGEN_23 4
 #define GLPT_SC_TEXCOORD_UNITS 5  // bit u: unit u samples a texture
 #define GLPT_SC_CLIP_PLANES 6     // bit i: user clip plane i enabled
+// Geometry stage (raster_unfilled.geom): polygon mode GL_LINE / GL_POINT
+#define GLPT_SC_UNFILLED 7
+#define GLPT_UNFILLED_FRONT_CW 1u    // glFrontFace(GL_CW)
+#define GLPT_UNFILLED_CULL_FRONT 2u  // front-facing triangles are not drawn (culling, or the
+#define GLPT_UNFILLED_CULL_BACK 4u   // other face's pass); likewise back-facing ones
+#define GLPT_UNFILLED_OFFSET 8u      // polygon offset enabled for this mode
+#define GLPT_UNFILLED_FLAT 16u       // GL_FLAT: the provoking vertex's colours
 // Fragment stage
 // per unit (10..13): bits 0-2 target (0 off, 1 1D, 2 2D, 3 3D, 4 cube), bits 3-5 env mode
 // (0 modulate, 1 decal, 2 blend, 3 replace, 4 add, 5 combine), bits 6-8 base format (0 RGBA,
@@ -141,11 +151,11 @@ struct RasterState {
   vec4 point_size;         // x size, y min, z max, w fade threshold
   vec4 point_attenuation;  // xyz: constant, linear, quadratic
   vec4 clear_color;        // the clear pipeline's colour
-  vec4 clear_depth;        // x: the clear pipeline's window depth
+  vec4 polygon_offset;     // x: factor, y: units times twice the depth buffer's resolution
 };
 
 struct RasterPushConstants {
-  uvec4 indices;  // x: state index
+  uvec4 indices;  // x: state index, y: first edge-mask word of an unfilled draw
 };
 
 #ifdef __cplusplus

@@ -30,6 +30,7 @@ class RasterPipelines {
 
   VkPipelineLayout layout() const { return layout_.get(); }
   VkDescriptorSetLayout set_layout() const { return set_layout_.get(); }
+  VkShaderStageFlags push_constant_stages() const { return push_stages_; }
   size_t size() const { return pipelines_.size(); }
 
  private:
@@ -39,6 +40,8 @@ class RasterPipelines {
   vk::DescriptorSetLayout set_layout_;
   vk::PipelineLayout layout_;
   vk::ShaderModule vertex_, vertex_clip_, fragment_smooth_, fragment_flat_;
+  vk::ShaderModule unfilled_lines_, unfilled_points_;  // null without geometry shaders
+  VkShaderStageFlags push_stages_ = 0;
   vk::PipelineCache cache_;
   std::string cache_path_;
   std::unordered_map<PipelineKey, vk::Pipeline, PipelineKeyHash> pipelines_;

@@ -68,6 +68,7 @@ struct RasterRenderer::DrawGeometry {
   std::array<VkDeviceSize, GLPT_RASTER_ATTR_COUNT> strides{};
   VkDeviceSize index_offset = 0;
   uint32_t index_count = 0;
+  VkDeviceSize edge_offset = 0;  // unfilled draws: per-triangle boundary-edge masks
   RasterTopology topology = RasterTopology::kTriangles;
 };
 
@@ -181,6 +182,7 @@ void RasterRenderer::execute(const rec::FrameRecord& record, const rec::Drawable
   r.clear_geometry.index_offset = arena.add(clear_indices, 3);
   r.clear_geometry.index_count = 3;
   std::vector<uint32_t> indices;
+  std::vector<uint8_t> edge_masks;
   size_t next_clear_state = state_count;
   for (size_t i : *commands) {
     const rec::Command& command = record.commands[i];
@@ -250,9 +252,18 @@ void RasterRenderer::execute(const rec::FrameRecord& record, const rec::Drawable
           if (ok(l.v[0]) && ok(l.v[1])) indices.insert(indices.end(), {l.v[0], l.v[1]});
       } else {
         g.topology = RasterTopology::kTriangles;
-        for (const auto& t : decomposed_.triangles)
-          if (ok(t.v[0]) && ok(t.v[1]) && ok(t.v[2]))
-            indices.insert(indices.end(), {t.v[0], t.v[1], t.v[2]});
+        edge_masks.clear();
+        for (const auto& t : decomposed_.triangles) {
+          if (!ok(t.v[0]) || !ok(t.v[1]) || !ok(t.v[2])) continue;
+          indices.insert(indices.end(), {t.v[0], t.v[1], t.v[2]});
+          edge_masks.push_back(t.boundary_edges);
+        }
+        // The geometry shader of unfilled polygons reads each triangle's boundary edges.
+        const rec::PrimitiveState& p = record.states[draw->state].raster->primitive;
+        if (p.polygon_mode_front != GL_FILL || p.polygon_mode_back != GL_FILL) {
+          edge_masks.resize((edge_masks.size() + 3) & ~size_t{3}, 0);
+          g.edge_offset = arena.add(edge_masks.data(), edge_masks.size());
+        }
       }
     }
     g.index_offset = arena.add(indices.data(), indices.size());
@@ -263,7 +274,8 @@ void RasterRenderer::execute(const rec::FrameRecord& record, const rec::Drawable
   ensure_capacity(*device_, states_, states_bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   states_.write(states.data(), states_bytes);
   ensure_capacity(*device_, vertices_, arena.size(),
-                  VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+                  VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_INDEX_BUFFER_BIT |
+                      VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   vertices_.write(upload.data(), arena.size());
   stats.upload_ms += timer.elapsed_ms();
 
@@ -357,16 +369,20 @@ void RasterRenderer::bind(Recording& r, const PipelineKey& key,
   }
   if (r.descriptors_pushed && views == r.bound_views) return;
   std::array<VkDescriptorImageInfo, 4 * GLPT_RASTER_MAX_UNITS> images{};
-  std::array<VkWriteDescriptorSet, 1 + 4 * GLPT_RASTER_MAX_UNITS> writes{};
+  std::array<VkWriteDescriptorSet, 2 + 4 * GLPT_RASTER_MAX_UNITS> writes{};
   VkDescriptorBufferInfo states{states_.handle(), 0, VK_WHOLE_SIZE};
   writes[0] = make_info<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
   writes[0].dstBinding = GLPT_RASTER_BINDING_STATES;
   writes[0].descriptorCount = 1;
   writes[0].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
   writes[0].pBufferInfo = &states;
+  VkDescriptorBufferInfo edges{vertices_.handle(), 0, VK_WHOLE_SIZE};
+  writes[1] = writes[0];
+  writes[1].dstBinding = GLPT_RASTER_BINDING_EDGES;
+  writes[1].pBufferInfo = &edges;
   for (uint32_t b = 0; b < images.size(); ++b) {
     images[b] = {samplers[b], views[b], VK_IMAGE_LAYOUT_GENERAL};
-    VkWriteDescriptorSet& w = writes[1 + b];
+    VkWriteDescriptorSet& w = writes[2 + b];
     w = make_info<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
     w.dstBinding = GLPT_RASTER_BINDING_TEXTURES + b;
     w.descriptorCount = 1;
@@ -478,8 +494,7 @@ void RasterRenderer::record_clear(Recording& r, const rec::Clear& clear, uint32_
       0.0f, 0.0f, static_cast<float>(drawable_.width), static_cast<float>(drawable_.height), z, z};
   set_dynamic_state(r, d, viewport, rect);
   const gpu::RasterPushConstants push{glm::uvec4(state_index, 0, 0, 0)};
-  vkCmdPushConstants(r.cmd, pipelines_.layout(),
-                     VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof push,
+  vkCmdPushConstants(r.cmd, pipelines_.layout(), pipelines_.push_constant_stages(), 0, sizeof push,
                      &push);
   const DrawGeometry& g = r.clear_geometry;
   std::array<VkBuffer, GLPT_RASTER_ATTR_COUNT> buffers;
@@ -529,9 +544,9 @@ void RasterRenderer::record_draw_pass(Recording& r, const rec::Draw& draw, const
                             t.depth_near,
                             t.depth_far};
   set_dynamic_state(r, d, viewport, scissor);
-  const gpu::RasterPushConstants push{glm::uvec4(draw.state, 0, 0, 0)};
-  vkCmdPushConstants(r.cmd, pipelines_.layout(),
-                     VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof push,
+  const gpu::RasterPushConstants push{
+      glm::uvec4(draw.state, static_cast<uint32_t>(g.edge_offset / 4), 0, 0)};
+  vkCmdPushConstants(r.cmd, pipelines_.layout(), pipelines_.push_constant_stages(), 0, sizeof push,
                      &push);
   std::array<VkBuffer, GLPT_RASTER_ATTR_COUNT> buffers;
   buffers.fill(vertices_.handle());

@@ -97,6 +97,9 @@ void pack_state_uniforms(const rec::StateSnapshot& state, gpu::RasterState& out)
       glm::vec4(r.primitive.point_size, std::max(r.primitive.point_size_min, 1.0f),
                 std::min(r.primitive.point_size_max, 255.0f), r.primitive.point_fade_threshold);
   out.point_attenuation = glm::vec4(r.primitive.point_distance_attenuation, 0.0f);
+  // Mesa's units: twice the minimum resolvable difference of a 24-bit depth buffer.
+  out.polygon_offset = glm::vec4(r.primitive.offset_factor,
+                                 r.primitive.offset_units * 2.0f / 16777215.0f, 0.0f, 0.0f);
 }
 
 }  // namespace glpt::rt

@@ -126,7 +126,8 @@ Candidate evaluate(VkPhysicalDevice device) {
   need(depth_clip.depthClipControl, "depthClipControl");
   need(border.customBorderColors, "customBorderColors");
   need(border.customBorderColorWithoutFormat, "customBorderColorWithoutFormat");
-  candidate.geometry_shader = core.geometryShader;
+  // Geometry shaders draw GL's unfilled polygons with edge flags; they also need point sizes.
+  candidate.geometry_shader = core.geometryShader && core.shaderTessellationAndGeometryPointSize;
   if (candidate.missing_ray_query.empty()) {
     if (!acceleration.accelerationStructure)
       candidate.missing_ray_query.push_back("accelerationStructure");
@@ -353,6 +354,7 @@ std::unique_ptr<VulkanDevice> VulkanDevice::create(const DeviceOptions& options)
   features.features.shaderClipDistance = VK_TRUE;
   features.features.independentBlend = VK_TRUE;
   features.features.geometryShader = chosen.geometry_shader ? VK_TRUE : VK_FALSE;
+  features.features.shaderTessellationAndGeometryPointSize = features.features.geometryShader;
 
   std::vector<const char*> device_extensions(std::begin(kRasterDeviceExtensions),
                                              std::end(kRasterDeviceExtensions));
