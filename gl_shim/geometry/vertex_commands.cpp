@@ -118,6 +118,8 @@ namespace impl {
 
 void glBegin(Context& ctx, GLenum mode) {
   if (!is_valid_primitive_mode(mode)) return record_error(ctx, GL_INVALID_ENUM);
+  // A draw: Mesa validates its derived state here (matrix analysis decides later arithmetic).
+  ctx.matrices.validate_for_draw(ctx.transform.clip_plane_mask);
   ctx.assembly.begin(mode);
 }
 

@@ -9,6 +9,7 @@
 #include "gl_shim/context.hpp"
 #include "gl_shim/dispatch.hpp"
 #include "gl_shim/gl_impl_decls.hpp"
+#include "gl_shim/state/mesa_matrix.hpp"
 
 namespace glpt {
 
@@ -52,7 +53,6 @@ void set_light(Context& ctx, GLenum light, GLenum pname, const T* p, bool scalar
     record_error(ctx, GL_INVALID_ENUM);
     return;
   }
-  const glm::mat4& mv = ctx.matrices.modelview.top();
   switch (pname) {
     case GL_AMBIENT:
       l->ambient = color4(p);
@@ -63,13 +63,19 @@ void set_light(Context& ctx, GLenum light, GLenum pname, const T* p, bool scalar
     case GL_SPECULAR:
       l->specular = color4(p);
       break;
+    // Stored in eye space, transformed with Mesa's order of operations (bit-identical).
     case GL_POSITION:
-      l->position = mv * plain4(p);
-      break;  // stored in eye space
-    case GL_SPOT_DIRECTION:
-      l->spot_direction = glm::mat3(mv) * glm::vec3(plain_component(p[0]), plain_component(p[1]),
-                                                    plain_component(p[2]));
+      l->position = transform_point(ctx.matrices.modelview.top(), plain4(p));
       break;
+    case GL_SPOT_DIRECTION: {
+      // Mesa analyses the modelview here (which decides how later products are computed).
+      MesaMatrix& mv = ctx.matrices.modelview.top_matrix();
+      mv.analyse();
+      l->spot_direction = transform_direction(
+          glm::vec3(plain_component(p[0]), plain_component(p[1]), plain_component(p[2])),
+          mv.matrix());
+      break;
+    }
     case GL_SPOT_EXPONENT: {
       const float v = plain_component(p[0]);
       if (!(v >= 0.0f && v <= 128.0f)) return record_error(ctx, GL_INVALID_VALUE);
