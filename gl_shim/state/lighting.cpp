@@ -10,15 +10,18 @@
 #include "gl_shim/dispatch.hpp"
 #include "gl_shim/gl_impl_decls.hpp"
 #include "gl_shim/state/mesa_matrix.hpp"
+#include "gl_shim/state/normalized_values.hpp"
 
 namespace glpt {
 
 namespace {
 
-// Integer colours map [-2^31, 2^31-1] linearly to [-1, 1] (spec 2.14.1); other integer
-// parameters convert directly.
-float color_component(GLint v) { return static_cast<float>((2.0 * v + 1.0) / 4294967295.0); }
-float color_component(GLfloat v) { return v; }
+// Integer colours map [-2^31, 2^31-1] linearly to [-1, 1] (spec 2.14.1), rounded as Mesa does;
+// other integer parameters convert directly.
+template <typename T>
+float color_component(T v) {
+  return normalized_component(v);
+}
 float plain_component(GLint v) { return static_cast<float>(v); }
 float plain_component(GLfloat v) { return v; }
 
