@@ -45,8 +45,7 @@ void set_fog(Context& ctx, GLenum pname, const float* values) {
       ctx.color_index.fog_index = values[0];
       return;
     case GL_FOG_COLOR:
-      fog.color = {clamp01(values[0]), clamp01(values[1]), clamp01(values[2]),
-                   clamp01(values[3])};
+      fog.color = {clamp01(values[0]), clamp01(values[1]), clamp01(values[2]), clamp01(values[3])};
       return;
     case GL_FOG_COORDINATE_SOURCE: {
       const GLenum source = enum_value(values[0]);
@@ -91,9 +90,10 @@ void glFogf(Context& ctx, GLenum pname, GLfloat param) {
   fog_floats(ctx, pname, p);
 }
 void glFogfv(Context& ctx, GLenum pname, const GLfloat* params) { fog_floats(ctx, pname, params); }
+// As in Mesa, the scalar integer form converts its value directly, even for GL_FOG_COLOR.
 void glFogi(Context& ctx, GLenum pname, GLint param) {
-  const GLint p[4] = {param, 0, 0, 0};
-  fog_ints(ctx, pname, p);
+  const GLfloat p[4] = {static_cast<float>(param), 0.0f, 0.0f, 0.0f};
+  fog_floats(ctx, pname, p);
 }
 void glFogiv(Context& ctx, GLenum pname, const GLint* params) { fog_ints(ctx, pname, params); }
 

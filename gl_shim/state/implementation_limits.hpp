@@ -9,11 +9,11 @@ namespace glpt {
 
 inline constexpr float kAliasedPointSizeRange[2] = {1.0f, 256.0f};  // GL_ALIASED_POINT_SIZE_RANGE
 inline constexpr float kSmoothPointSizeRange[2] = {1.0f, 256.0f};   // GL_SMOOTH_POINT_SIZE_RANGE
-inline constexpr float kPointSizeGranularity = 0.1f;                 // GL_SMOOTH_POINT_SIZE_GRANULARITY
+inline constexpr float kPointSizeGranularity = 0.1f;  // GL_SMOOTH_POINT_SIZE_GRANULARITY
 inline constexpr float kAliasedLineWidthRange[2] = {1.0f, 255.0f};  // GL_ALIASED_LINE_WIDTH_RANGE
 inline constexpr float kSmoothLineWidthRange[2] = {1.0f, 255.0f};   // GL_SMOOTH_LINE_WIDTH_RANGE
-inline constexpr float kLineWidthGranularity = 0.1f;                 // GL_SMOOTH_LINE_WIDTH_GRANULARITY
-inline constexpr int kStencilBits = 8;                               // GL_STENCIL_BITS
+inline constexpr float kLineWidthGranularity = 0.1f;  // GL_SMOOTH_LINE_WIDTH_GRANULARITY
+inline constexpr int kStencilBits = 8;                // GL_STENCIL_BITS
 
 // GL's initial rasterization and fragment state (rec::RasterState's defaults) with the
 // implementation-dependent initial values Mesa uses: GL_POINT_SIZE_MAX is the largest point size,

@@ -268,17 +268,7 @@ void get(Context& ctx, GLenum pname, T* out) {
     if constexpr (std::is_same_v<T, GLboolean>) {
       out[i] = d != 0.0 ? 1 : 0;
     } else if constexpr (std::is_same_v<T, GLint>) {
-      if (v.kind == Kind::kColor) {
-        // Colours map linearly [-1,1] -> [-2^31, 2^31-1].
-        out[i] = static_cast<GLint>(
-            std::clamp(std::llround((4294967295.0 * d - 1.0) / 2.0),
-                       static_cast<long long>(std::numeric_limits<GLint>::min()),
-                       static_cast<long long>(std::numeric_limits<GLint>::max())));
-      } else {
-        out[i] = static_cast<GLint>(
-            std::clamp(std::llround(d), static_cast<long long>(std::numeric_limits<GLint>::min()),
-                       static_cast<long long>(std::numeric_limits<GLint>::max())));
-      }
+      out[i] = v.kind == Kind::kColor ? query::color_to_int(d) : query::round_to_int(d);
     } else {
       out[i] = static_cast<T>(d);
     }

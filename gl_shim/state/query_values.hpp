@@ -3,6 +3,8 @@
 // the per-area lookups it consults (fixed_function_queries.cpp, ...).
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <initializer_list>
 
 #include "gl_shim/gl_types.h"
@@ -43,6 +45,23 @@ inline Value boolean(bool b) {
   r.count = 1;
   r.v[0] = b ? 1 : 0;
   return r;
+}
+
+// A colour component, normal coordinate or depth value as an integer. The spec maps 1.0 to the
+// most positive integer and -1.0 to the most negative, linearly between; between the endpoints
+// Mesa's rounding is used, (2^31 - 1) * c truncated toward zero, so integer queries read what
+// they read on Mesa. Values beyond [-1, 1] saturate (the nearest representable value); NaN is 0.
+inline GLint color_to_int(double c) {
+  if (std::isnan(c)) return 0;
+  if (c <= -1.0) return -2147483647 - 1;
+  if (c >= 1.0) return 2147483647;
+  return static_cast<GLint>(2147483647.0 * c);
+}
+
+// Any other value: rounded to the nearest integer (halfway cases away from zero), saturating.
+inline GLint round_to_int(double v) {
+  if (std::isnan(v)) return 0;
+  return static_cast<GLint>(std::clamp(std::round(v), -2147483648.0, 2147483647.0));
 }
 
 }  // namespace query
