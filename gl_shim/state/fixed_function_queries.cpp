@@ -205,6 +205,16 @@ bool lookup_fragment_ops(const Context& ctx, GLenum pname, Value* out) {
     case GL_INDEX_CLEAR_VALUE:
       *out = number(ctx.color_index.clear_index, Kind::kInt);
       return true;
+    case GL_SAMPLE_COVERAGE_VALUE:
+      *out = number(ctx.framebuffer.sample_coverage_value);
+      return true;
+    case GL_SAMPLE_COVERAGE_INVERT:
+      *out = query::boolean(ctx.framebuffer.sample_coverage_invert);
+      return true;
+    case GL_SAMPLE_BUFFERS:  // no multisample buffers (as an OSMesa or default GLX drawable)
+    case GL_SAMPLES:
+      *out = number(0, Kind::kInt);
+      return true;
     default:
       return false;
   }

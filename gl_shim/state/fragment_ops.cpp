@@ -1,7 +1,7 @@
-// Per-fragment operations and buffer controls (GL 1.5 spec 4.1.4-4.1.10, 4.2.2, 4.2.3):
+// Per-fragment operations and buffer controls (GL 1.5 spec 4.1.3-4.1.10, 4.2.2, 4.2.3):
 // glAlphaFunc, glStencilFunc/Op/Mask, glBlendFunc/FuncSeparate/Equation/Color, glLogicOp,
-// glDepthMask, glColorMask, glIndexMask, glClearIndex, glClearAccum. The live state is
-// ctx.raster.ops (rec::FragmentOpsState); colour-index state is kept for queries only.
+// glDepthMask, glColorMask, glIndexMask, glClearIndex, glClearAccum, glSampleCoverage. The live
+// state is ctx.raster.ops (rec::FragmentOpsState); colour-index state is kept for queries only.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -157,6 +157,11 @@ void glClearIndex(Context& ctx, GLfloat c) {
 void glClearAccum(Context& ctx, GLfloat r, GLfloat g, GLfloat b, GLfloat a) {
   ctx.framebuffer.clear_accum = {clamp_to(r, -1.0f, 1.0f), clamp_to(g, -1.0f, 1.0f),
                                  clamp_to(b, -1.0f, 1.0f), clamp_to(a, -1.0f, 1.0f)};
+}
+
+void glSampleCoverage(Context& ctx, GLfloat value, GLboolean invert) {
+  ctx.framebuffer.sample_coverage_value = clamp_to(value, 0.0f, 1.0f);
+  ctx.framebuffer.sample_coverage_invert = invert != 0;
 }
 
 }  // namespace impl

@@ -302,6 +302,19 @@ TEST_F(GlTest, ClearAccumIsClampedToPlusMinusOne) {
             (std::vector<GLint>{kIntMax, kIntMin, 1073741823, 2147483}));
 }
 
+TEST_F(GlTest, SampleCoverageIsClampedAndReadsBack) {
+  EXPECT_EQ(float1(GL_SAMPLE_COVERAGE_VALUE), 1.0f);
+  EXPECT_FALSE(bool1(GL_SAMPLE_COVERAGE_INVERT));
+  glSampleCoverage(0.25f, GL_TRUE);
+  EXPECT_EQ(float1(GL_SAMPLE_COVERAGE_VALUE), 0.25f);
+  EXPECT_TRUE(bool1(GL_SAMPLE_COVERAGE_INVERT));
+  glSampleCoverage(7.0f, GL_FALSE);
+  EXPECT_EQ(float1(GL_SAMPLE_COVERAGE_VALUE), 1.0f);
+  EXPECT_EQ(int1(GL_SAMPLE_BUFFERS), 0);
+  EXPECT_EQ(int1(GL_SAMPLES), 0);
+  EXPECT_EQ(error(), GLenum{GL_NO_ERROR});
+}
+
 // ---- fog ----------------------------------------------------------------------------------------
 
 TEST_F(GlTest, FogParametersRoundTrip) {
