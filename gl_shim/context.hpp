@@ -16,9 +16,11 @@
 #include "gl_shim/frame/state_snapshot.hpp"
 #include "gl_shim/geometry/vertex_assembly.hpp"
 #include "gl_shim/gl_commands.hpp"
+#include "gl_shim/state/color_index_state.hpp"
 #include "gl_shim/state/current_attributes.hpp"
 #include "gl_shim/state/enable_state.hpp"
 #include "gl_shim/state/framebuffer_state.hpp"
+#include "gl_shim/state/implementation_limits.hpp"
 #include "gl_shim/state/matrix_stack.hpp"
 #include "gl_shim/state/transform_controls.hpp"
 #include "gl_shim/textures/texture_units.hpp"
@@ -47,11 +49,12 @@ class Context {
   TransformControls transform;
   rec::LightingState lighting;
   TextureUnits textures;
-  rec::RasterState raster;
+  rec::RasterState raster = initial_raster_state();
   rec::PixelTransferState pixel_transfer;
   EnableState enables;  // capabilities without a field in the blocks above
   CurrentAttributes current;
   FramebufferState framebuffer;
+  ColorIndexState color_index;  // kept for queries only (glpt renders RGBA)
   VertexAssembly assembly;
   DisplayListState lists;
 

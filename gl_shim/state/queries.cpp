@@ -8,39 +8,16 @@
 #include "gl_shim/context.hpp"
 #include "gl_shim/dispatch.hpp"
 #include "gl_shim/gl_impl_decls.hpp"
+#include "gl_shim/state/query_values.hpp"
 
 namespace glpt {
 namespace {
 
-// How a value converts between the glGet variants (spec 6.1.2).
-enum class Kind { kInt, kFloat, kColor, kBool };
-
-struct Value {
-  Kind kind = Kind::kInt;
-  int count = 0;
-  double v[16] = {};
-};
-
-Value ints(std::initializer_list<double> l) {
-  Value r;
-  r.kind = Kind::kInt;
-  for (double d : l) r.v[r.count++] = d;
-  return r;
-}
-Value floats(const float* p, int n, Kind kind = Kind::kFloat) {
-  Value r;
-  r.kind = kind;
-  r.count = n;
-  for (int i = 0; i < n; ++i) r.v[i] = p[i];
-  return r;
-}
-Value boolean(bool b) {
-  Value r;
-  r.kind = Kind::kBool;
-  r.count = 1;
-  r.v[0] = b ? 1 : 0;
-  return r;
-}
+using query::boolean;
+using query::floats;
+using query::ints;
+using query::Kind;
+using query::Value;
 
 // Implementation limits glpt reports.
 constexpr int kMaxTextureSize = 4096;
@@ -128,7 +105,7 @@ bool lookup(const Context& ctx, GLenum pname, Value* out) {
       *out = ints({1 << 20});
       return true;
     case GL_SUBPIXEL_BITS:
-      *out = ints({4});
+      *out = ints({8});  // Mesa llvmpipe's
       return true;
     case GL_AUX_BUFFERS:
       *out = ints({0});
@@ -273,6 +250,7 @@ bool lookup(const Context& ctx, GLenum pname, Value* out) {
     default:
       break;
   }
+  if (lookup_fixed_function_state(ctx, pname, out)) return true;
   if (auto on = capability_enabled(const_cast<Context&>(ctx), pname)) {
     *out = boolean(*on);
     return true;
@@ -290,17 +268,7 @@ void get(Context& ctx, GLenum pname, T* out) {
     if constexpr (std::is_same_v<T, GLboolean>) {
       out[i] = d != 0.0 ? 1 : 0;
     } else if constexpr (std::is_same_v<T, GLint>) {
-      if (v.kind == Kind::kColor) {
-        // Colours map linearly [-1,1] -> [-2^31, 2^31-1].
-        out[i] = static_cast<GLint>(
-            std::clamp(std::llround((4294967295.0 * d - 1.0) / 2.0),
-                       static_cast<long long>(std::numeric_limits<GLint>::min()),
-                       static_cast<long long>(std::numeric_limits<GLint>::max())));
-      } else {
-        out[i] = static_cast<GLint>(
-            std::clamp(std::llround(d), static_cast<long long>(std::numeric_limits<GLint>::min()),
-                       static_cast<long long>(std::numeric_limits<GLint>::max())));
-      }
+      out[i] = v.kind == Kind::kColor ? query::color_to_int(d) : query::round_to_int(d);
     } else {
       out[i] = static_cast<T>(d);
     }
