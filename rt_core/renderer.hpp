@@ -19,6 +19,13 @@
 
 namespace glpt::rt {
 
+// What happens at the end of a frame, in the same submission as the record's commands (one
+// round trip into the Vulkan queue per frame instead of three).
+struct FrameEnd {
+  bool swap = false;                           // double-buffered swap: back -> front
+  std::vector<uint8_t>* front_rgba = nullptr;  // read the front buffer (RGBA8, bottom row first)
+};
+
 class Renderer {
  public:
   // nullptr + one clear message in *error when no usable Vulkan device exists (it names what is
@@ -36,7 +43,7 @@ class Renderer {
   // Applies the record's commands to the drawable's buffers. Buffers are (re)created when the
   // drawable's configuration changes; their contents are then undefined, as after a resize.
   bool execute(const rec::FrameRecord& record, const rec::DrawableConfig& drawable,
-               FrameStats& stats, std::string* error);
+               FrameStats& stats, std::string* error, const FrameEnd* end = nullptr);
 
   // A rectangle of a colour buffer (GL_FRONT*, GL_BACK*: the resolved read buffer) as RGBA8,
   // rows bottom to top; pixels outside the drawable are zero. False before the first execute.

@@ -29,6 +29,8 @@ layout(std430, set = 0, binding = GLPT_RASTER_BINDING_STATES) readonly buffer St
   RasterState states[];
 };
 layout(push_constant) uniform Push { RasterPushConstants push; };
+// The draw's state, read field by field where used (never copied whole).
+#define S states[push.indices.x]
 
 layout(set = 0, binding = GLPT_RASTER_BINDING_TEXTURES + 0) uniform sampler1D u_tex1d_0;
 layout(set = 0, binding = GLPT_RASTER_BINDING_TEXTURES + 1) uniform sampler2D u_tex2d_0;
@@ -83,7 +85,7 @@ vec3 clamp_coords(uint config, vec3 c) {
   return c;
 }
 
-// The texture colour of unit u: a projective lookup of (s, t, r) / q, as Mesa's fixed-function
+// The texture colour of unit u: a projective lookup of (t, r) / q, as Mesa's fixed-function
 // fragment program does.
 vec4 sample_unit(uint u) {
   uint config = unit_config(u);
@@ -108,7 +110,7 @@ vec4 sample_unit(uint u) {
     if (u == 2u) return texture(u_tex3d_2, c);
     return texture(u_tex3d_3, c);
   }
-  // Cube maps select a face by the direction (s, t, r); q does not take part.
+  // Cube maps select a face by the direction (t, r); q does not take part.
   if (u == 0u) return texture(u_texcube_0, tc.xyz);
   if (u == 1u) return texture(u_texcube_1, tc.xyz);
   if (u == 2u) return texture(u_texcube_2, tc.xyz);
@@ -220,15 +222,14 @@ bool alpha_test_passes(float alpha, float ref) {
 }
 
 void main() {
-  RasterState s = states[push.indices.x];
   if ((kFlags & GLPT_FS_CLEAR) != 0u) {
-    o_color = s.clear_color;
+    o_color = S.clear_color;
     o_color_second = o_color;
     return;
   }
   if ((kFlags & GLPT_FS_POLYGON_STIPPLE) != 0u) {
     uint row = uint(gl_FragCoord.y) & 31u, column = uint(gl_FragCoord.x) & 31u;
-    if (((s.stipple[row >> 2u][row & 3u] >> (31u - column)) & 1u) == 0u) discard;
+    if (((S.stipple[row >> 2u][row & 3u] >> (31u - column)) & 1u) == 0u) discard;
   }
   bool back = (kFlags & GLPT_FS_TWO_SIDE) != 0u && !gl_FrontFacing;
   vec4 primary = back ? v_back_color : v_front_color;
@@ -241,7 +242,7 @@ void main() {
   vec4 color = primary;
   for (uint u = 0u; u < GLPT_RASTER_MAX_UNITS; ++u) {
     if ((unit_config(u) & 7u) == 0u) continue;
-    color = texture_environment(u, texels[u], color, primary, s.env_color[u], s.env_scale[u],
+    color = texture_environment(u, texels[u], color, primary, S.env_color[u], S.env_scale[u],
                                 texels);
   }
 
@@ -252,16 +253,16 @@ void main() {
     float z = v_fog;
     float f;
     if (fog_mode == 1u)
-      f = (s.fog_params.z - z) * s.fog_params.w;
+      f = (S.fog_params.z - z) * S.fog_params.w;
     else if (fog_mode == 2u)
-      f = exp(-s.fog_params.x * z);
+      f = exp(-S.fog_params.x * z);
     else
-      f = exp(-(s.fog_params.x * z) * (s.fog_params.x * z));
+      f = exp(-(S.fog_params.x * z) * (S.fog_params.x * z));
     f = clamp(f, 0.0, 1.0);
-    color.rgb = mix(s.fog_color.rgb, color.rgb, f);
+    color.rgb = mix(S.fog_color.rgb, color.rgb, f);
   }
 
-  if (!alpha_test_passes(color.a, s.alpha_ref.x)) discard;
+  if (!alpha_test_passes(color.a, S.alpha_ref.x)) discard;
   o_color = color;
   o_color_second = color;
 }

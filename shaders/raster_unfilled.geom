@@ -28,6 +28,8 @@ layout(std430, set = 0, binding = GLPT_RASTER_BINDING_EDGES) readonly buffer Edg
   uint edge_masks[];
 };
 layout(push_constant) uniform Push { RasterPushConstants push; };
+// The draw's state, read field by field where used (never copied whole).
+#define S states[push.indices.x]
 
 layout(location = 0) in vec4 g_front_color[];
 layout(location = 1) in vec4 g_back_color[];
@@ -52,13 +54,13 @@ out gl_PerVertex {
   float gl_ClipDistance[8];
 };
 
-vec3 window_of(RasterState s, vec4 clip) {
+vec3 window_of(vec4 clip) {
   vec3 ndc = clip.xyz / clip.w;
-  return vec3((ndc.xy * 0.5 + 0.5) * s.viewport.zw + s.viewport.xy,
-              (ndc.z * 0.5 + 0.5) * (s.depth_range.y - s.depth_range.x) + s.depth_range.x);
+  return vec3((ndc.xy * 0.5 + 0.5) * S.viewport.zw + S.viewport.xy,
+              (ndc.z * 0.5 + 0.5) * (S.depth_range.y - S.depth_range.x) + S.depth_range.x);
 }
 
-void emit(RasterState s, uint i, bool back, uint colour_from, float offset_ndc) {
+void emit(uint i, bool back, uint colour_from, float offset_ndc) {
   vec4 p = gl_in[i].gl_Position;
   p.z += offset_ndc * p.w;
   gl_Position = p;
@@ -85,19 +87,18 @@ void emit(RasterState s, uint i, bool back, uint colour_from, float offset_ndc) 
     gl_ClipDistance[slot++] = p.w - p.y;
   }
   for (; slot < 8; ++slot) gl_ClipDistance[slot] = 1.0;
-  float size = clamp(s.point_size.x, s.point_size.y, s.point_size.z);
+  float size = clamp(S.point_size.x, S.point_size.y, S.point_size.z);
   gl_PointSize = max(1.0, ceil(size - 0.5));
   EmitVertex();
 }
 
 void main() {
-  RasterState s = states[push.indices.x];
   uint mask = (edge_masks[push.indices.y + uint(gl_PrimitiveIDIn) / 4u] >>
                (8u * (uint(gl_PrimitiveIDIn) % 4u))) & 7u;
   // Facing from the window-space area (GL 1.5 2.14.1), with glFrontFace.
-  vec3 w0 = window_of(s, gl_in[0].gl_Position);
-  vec3 w1 = window_of(s, gl_in[1].gl_Position);
-  vec3 w2 = window_of(s, gl_in[2].gl_Position);
+  vec3 w0 = window_of(gl_in[0].gl_Position);
+  vec3 w1 = window_of(gl_in[1].gl_Position);
+  vec3 w2 = window_of(gl_in[2].gl_Position);
   vec3 e = w0 - w2, f = w1 - w2;
   float det = e.x * f.y - e.y * f.x;
   bool ccw = det > 0.0;
@@ -113,8 +114,8 @@ void main() {
     float a = e.y * f.z - e.z * f.y;
     float b = e.z * f.x - e.x * f.z;
     float slope = max(abs(a / det), abs(b / det));
-    float window_offset = slope * s.polygon_offset.x + s.polygon_offset.y;
-    float range = s.depth_range.y - s.depth_range.x;
+    float window_offset = slope * S.polygon_offset.x + S.polygon_offset.y;
+    float range = S.depth_range.y - S.depth_range.x;
     offset = range != 0.0 ? 2.0 * window_offset / range : 0.0;
   }
   bool back = (kVsFlags & GLPT_VS_TWO_SIDE) != 0u && !front;
@@ -123,7 +124,7 @@ void main() {
 #if GLPT_POINTS
   for (uint i = 0u; i < 3u; ++i) {
     if ((mask & (1u << i)) == 0u) continue;
-    emit(s, i, back, flat_shade ? 2u : i, offset);
+    emit(i, back, flat_shade ? 2u : i, offset);
     EndPrimitive();
   }
 #else
@@ -133,8 +134,8 @@ void main() {
     uint edge = order[k];
     if ((mask & (1u << edge)) == 0u) continue;
     uint a = edge, b = (edge + 1u) % 3u;
-    emit(s, a, back, flat_shade ? 2u : a, offset);
-    emit(s, b, back, flat_shade ? 2u : b, offset);
+    emit(a, back, flat_shade ? 2u : a, offset);
+    emit(b, back, flat_shade ? 2u : b, offset);
     EndPrimitive();
   }
 #endif

@@ -44,9 +44,10 @@ class FrameOutput {
   bool execute(const rec::FrameRecord& record, const rec::DrawableConfig& drawable,
                double record_ms);
   // End of a frame: a swap (double-buffered) or glFlush/glFinish of a single-buffered drawable.
-  // Swaps if asked, shows the front buffer in `target` (may be null), writes the PNG and prints
-  // the frame's statistics.
-  void end_frame(WindowTarget* target, bool swap);
+  // Executes the rest of the frame's record, swaps if asked (all in one submission), shows the
+  // front buffer in `target` (may be null), writes the PNG and prints the frame's statistics.
+  void end_frame(const rec::FrameRecord& record, const rec::DrawableConfig& drawable,
+                 double record_ms, WindowTarget* target, bool swap);
 
   rt::Renderer& renderer() { return *renderer_; }
   const rec::DrawableConfig& drawable() const { return drawable_; }

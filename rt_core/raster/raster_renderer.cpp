@@ -85,6 +85,11 @@ struct RasterRenderer::Recording {
   // Texture descriptors currently pushed, per binding (to skip redundant pushes).
   std::array<VkImageView, 4 * GLPT_RASTER_MAX_UNITS> bound_views{};
   bool descriptors_pushed = false;
+  // Dynamic state last set in this command buffer.
+  bool dynamic_valid = false;
+  DynamicDrawState dynamic;
+  VkViewport viewport{};
+  VkRect2D scissor{};
 };
 
 RasterRenderer::RasterRenderer(std::shared_ptr<VulkanDevice> device)
@@ -135,11 +140,15 @@ void RasterRenderer::ensure_buffers(const rec::DrawableConfig& drawable) {
 }
 
 void RasterRenderer::execute(const rec::FrameRecord& record, const rec::DrawableConfig& drawable,
-                             FrameStats& stats, const std::vector<size_t>* commands) {
+                             FrameStats& stats, const std::vector<size_t>* commands,
+                             const FrameEnd* end) {
   const Stopwatch timer;
   ++frame_;
   ensure_buffers(drawable);
-  if (!front_) return;
+  if (!front_) {
+    if (end && end->front_rgba) end->front_rgba->clear();
+    return;
+  }
   std::vector<size_t> all;
   if (commands == nullptr) {
     all.resize(record.commands.size());
@@ -279,6 +288,10 @@ void RasterRenderer::execute(const rec::FrameRecord& record, const rec::Drawable
   vertices_.write(upload.data(), arena.size());
   stats.upload_ms += timer.elapsed_ms();
 
+  if (end && end->front_rgba)
+    ensure_capacity(*device_, readback_, size_t{drawable_.width} * drawable_.height * 4,
+                    VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+
   // ---- record and run
   const Stopwatch raster_timer;
   device_->submit_and_wait([&](VkCommandBuffer cmd) {
@@ -294,8 +307,14 @@ void RasterRenderer::execute(const rec::FrameRecord& record, const rec::Drawable
       }
     }
     if (r.rendering) vkCmdEndRendering(cmd);
+    if (end) record_frame_end(cmd, *end);
   });
   stats.raster_ms += raster_timer.elapsed_ms();
+  if (end && end->front_rgba) {
+    const size_t bytes = size_t{drawable_.width} * drawable_.height * 4;
+    end->front_rgba->resize(bytes);
+    std::memcpy(end->front_rgba->data(), readback_.mapped(), bytes);
+  }
   textures_.evict_unused(frame_);
 }
 
@@ -397,27 +416,48 @@ void RasterRenderer::bind(Recording& r, const PipelineKey& key,
 
 void RasterRenderer::set_dynamic_state(Recording& r, const DynamicDrawState& d,
                                        const VkViewport& viewport, const VkRect2D& scissor) {
+  // Only what changed since the last draw of this command buffer: lavapipe turns dynamic state
+  // changes into new gallium state objects, which cost more than the draw of a small primitive.
   VkCommandBuffer cmd = r.cmd;
-  vkCmdSetViewport(cmd, 0, 1, &viewport);
-  vkCmdSetScissor(cmd, 0, 1, &scissor);
-  vkCmdSetCullMode(cmd, d.cull);
-  vkCmdSetFrontFace(cmd, d.front_face);
-  vkCmdSetDepthTestEnable(cmd, d.depth_test);
-  vkCmdSetDepthWriteEnable(cmd, d.depth_write);
-  vkCmdSetDepthCompareOp(cmd, d.depth_compare);
-  vkCmdSetStencilTestEnable(cmd, d.stencil_test);
-  vkCmdSetStencilOp(cmd, VK_STENCIL_FACE_FRONT_AND_BACK, d.stencil_fail, d.stencil_pass,
-                    d.stencil_depth_fail, d.stencil_compare);
-  vkCmdSetStencilCompareMask(cmd, VK_STENCIL_FACE_FRONT_AND_BACK, d.stencil_compare_mask);
-  vkCmdSetStencilWriteMask(cmd, VK_STENCIL_FACE_FRONT_AND_BACK, d.stencil_write_mask);
-  vkCmdSetStencilReference(cmd, VK_STENCIL_FACE_FRONT_AND_BACK, d.stencil_reference);
-  vkCmdSetDepthBiasEnable(cmd, d.depth_bias);
-  vkCmdSetDepthBias(cmd, d.depth_bias_constant, 0.0f, d.depth_bias_slope);
-  vkCmdSetLineWidth(cmd, d.line_width);
-  set_line_stipple_(cmd, d.line_stipple_factor, d.line_stipple_pattern);
-  const float blend[4] = {d.blend_constant.r, d.blend_constant.g, d.blend_constant.b,
-                          d.blend_constant.a};
-  vkCmdSetBlendConstants(cmd, blend);
+  const bool all = !r.dynamic_valid;
+  const DynamicDrawState& o = r.dynamic;
+  if (all || std::memcmp(&viewport, &r.viewport, sizeof viewport) != 0)
+    vkCmdSetViewport(cmd, 0, 1, &viewport);
+  if (all || std::memcmp(&scissor, &r.scissor, sizeof scissor) != 0)
+    vkCmdSetScissor(cmd, 0, 1, &scissor);
+  if (all || d.cull != o.cull) vkCmdSetCullMode(cmd, d.cull);
+  if (all || d.front_face != o.front_face) vkCmdSetFrontFace(cmd, d.front_face);
+  if (all || d.depth_test != o.depth_test) vkCmdSetDepthTestEnable(cmd, d.depth_test);
+  if (all || d.depth_write != o.depth_write) vkCmdSetDepthWriteEnable(cmd, d.depth_write);
+  if (all || d.depth_compare != o.depth_compare) vkCmdSetDepthCompareOp(cmd, d.depth_compare);
+  if (all || d.stencil_test != o.stencil_test) vkCmdSetStencilTestEnable(cmd, d.stencil_test);
+  if (all || d.stencil_fail != o.stencil_fail || d.stencil_pass != o.stencil_pass ||
+      d.stencil_depth_fail != o.stencil_depth_fail || d.stencil_compare != o.stencil_compare)
+    vkCmdSetStencilOp(cmd, VK_STENCIL_FACE_FRONT_AND_BACK, d.stencil_fail, d.stencil_pass,
+                      d.stencil_depth_fail, d.stencil_compare);
+  if (all || d.stencil_compare_mask != o.stencil_compare_mask)
+    vkCmdSetStencilCompareMask(cmd, VK_STENCIL_FACE_FRONT_AND_BACK, d.stencil_compare_mask);
+  if (all || d.stencil_write_mask != o.stencil_write_mask)
+    vkCmdSetStencilWriteMask(cmd, VK_STENCIL_FACE_FRONT_AND_BACK, d.stencil_write_mask);
+  if (all || d.stencil_reference != o.stencil_reference)
+    vkCmdSetStencilReference(cmd, VK_STENCIL_FACE_FRONT_AND_BACK, d.stencil_reference);
+  if (all || d.depth_bias != o.depth_bias) vkCmdSetDepthBiasEnable(cmd, d.depth_bias);
+  if (all || d.depth_bias_constant != o.depth_bias_constant ||
+      d.depth_bias_slope != o.depth_bias_slope)
+    vkCmdSetDepthBias(cmd, d.depth_bias_constant, 0.0f, d.depth_bias_slope);
+  if (all || d.line_width != o.line_width) vkCmdSetLineWidth(cmd, d.line_width);
+  if (all || d.line_stipple_factor != o.line_stipple_factor ||
+      d.line_stipple_pattern != o.line_stipple_pattern)
+    set_line_stipple_(cmd, d.line_stipple_factor, d.line_stipple_pattern);
+  if (all || d.blend_constant != o.blend_constant) {
+    const float blend[4] = {d.blend_constant.r, d.blend_constant.g, d.blend_constant.b,
+                            d.blend_constant.a};
+    vkCmdSetBlendConstants(cmd, blend);
+  }
+  r.dynamic = d;
+  r.viewport = viewport;
+  r.scissor = scissor;
+  r.dynamic_valid = true;
 }
 
 void RasterRenderer::record_clear(Recording& r, const rec::Clear& clear, uint32_t state_index) {
@@ -554,6 +594,34 @@ void RasterRenderer::record_draw_pass(Recording& r, const rec::Draw& draw, const
                           nullptr, g.strides.data());
   vkCmdBindIndexBuffer(r.cmd, vertices_.handle(), g.index_offset, VK_INDEX_TYPE_UINT32);
   vkCmdDrawIndexed(r.cmd, g.index_count, 1, 0, 0, 0);
+}
+
+void RasterRenderer::record_frame_end(VkCommandBuffer cmd, const FrameEnd& end) {
+  auto barrier = make_info<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
+  barrier.srcAccessMask = VK_ACCESS_MEMORY_WRITE_BIT;
+  barrier.dstAccessMask = VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT;
+  auto wait_for_previous = [&] {
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT,
+                         VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0, 1, &barrier, 0, nullptr, 0,
+                         nullptr);
+  };
+  if (end.swap && drawable_.double_buffered) {
+    wait_for_previous();
+    VkImageCopy copy{};
+    copy.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    copy.dstSubresource = copy.srcSubresource;
+    copy.extent = {drawable_.width, drawable_.height, 1};
+    vkCmdCopyImage(cmd, back_.handle(), VK_IMAGE_LAYOUT_GENERAL, front_.handle(),
+                   VK_IMAGE_LAYOUT_GENERAL, 1, &copy);
+  }
+  if (end.front_rgba) {
+    wait_for_previous();
+    VkBufferImageCopy copy{};
+    copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    copy.imageExtent = {drawable_.width, drawable_.height, 1};
+    vkCmdCopyImageToBuffer(cmd, front_.handle(), VK_IMAGE_LAYOUT_GENERAL, readback_.handle(), 1,
+                           &copy);
+  }
 }
 
 bool RasterRenderer::read_image(const GpuImage& image, VkImageAspectFlags aspect,

@@ -13,6 +13,7 @@
 #include "rt_core/raster/texture_cache.hpp"
 #include "rt_core/record/decompose.hpp"
 #include "rt_core/record/frame_record.hpp"
+#include "rt_core/renderer.hpp"
 #include "rt_core/vk/gpu_buffer.hpp"
 #include "rt_core/vk/gpu_image.hpp"
 #include "rt_core/vk/vk_device.hpp"
@@ -25,8 +26,10 @@ class RasterRenderer {
 
   // Applies the commands of `record` whose indices `commands` lists (all when empty) to the
   // drawable's buffers, which are (re)created when `drawable` changes. Throws VulkanError.
+  // `end`: swap and/or read the front buffer in the same submission.
   void execute(const rec::FrameRecord& record, const rec::DrawableConfig& drawable,
-               FrameStats& stats, const std::vector<size_t>* commands = nullptr);
+               FrameStats& stats, const std::vector<size_t>* commands = nullptr,
+               const FrameEnd* end = nullptr);
 
   // Reads back a rectangle: colour as RGBA8 of GL_FRONT*/GL_BACK*, depth as [0, 1], stencil.
   // Pixels outside the drawable are zero. False before the buffers exist.
@@ -59,6 +62,7 @@ class RasterRenderer {
   void bind(Recording& r, const PipelineKey& key, const rec::StateSnapshot* textures_of);
   void set_dynamic_state(Recording& r, const DynamicDrawState& d, const VkViewport& viewport,
                          const VkRect2D& scissor);
+  void record_frame_end(VkCommandBuffer cmd, const FrameEnd& end);
   bool read_image(const GpuImage& image, VkImageAspectFlags aspect, uint32_t texel_bytes, int32_t x,
                   int32_t y, uint32_t width, uint32_t height, std::vector<uint8_t>& out);
 
