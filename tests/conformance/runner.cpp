@@ -41,12 +41,7 @@ GLenum take_scene_error() {
 // colour buffer unchanged whatever the scene left (GL 1.5 4.3.2 applies the pixel transfer
 // operations to ReadPixels). Runs after the state dump, so the dump shows the scene's values.
 void reset_read_state() {
-  glPixelStorei(GL_PACK_SWAP_BYTES, GL_FALSE);
-  glPixelStorei(GL_PACK_LSB_FIRST, GL_FALSE);
-  glPixelStorei(GL_PACK_ROW_LENGTH, 0);
-  glPixelStorei(GL_PACK_SKIP_ROWS, 0);
-  glPixelStorei(GL_PACK_SKIP_PIXELS, 0);
-  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  set_default_pack_state();
   glPixelTransferi(GL_MAP_COLOR, GL_FALSE);
   const GLenum scales[] = {GL_RED_SCALE, GL_GREEN_SCALE, GL_BLUE_SCALE, GL_ALPHA_SCALE};
   const GLenum biases[] = {GL_RED_BIAS, GL_GREEN_BIAS, GL_BLUE_BIAS, GL_ALPHA_BIAS};

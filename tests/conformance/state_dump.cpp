@@ -21,9 +21,9 @@ struct Pname {
 #define P(name, count) \
   Pname { name, #name, count }
 
-// GL 1.5 tables 6.5-6.31 and 6.33-6.34: the state a glGet pname returns, except per-texture-unit
-// state (kPerUnitPnames), client texture-coordinate arrays (kPerClientUnitPnames) and the
-// implementation-dependent values (kImplementationPnames).
+// GL 1.5 tables 6.5-6.26 and 6.33: the state a glGet pname returns, except capabilities
+// (kCapabilities), per-texture-unit state (kPerUnit*), client texture-coordinate arrays
+// (kPerClientUnit*) and the implementation-dependent values (kImplementationPnames).
 const Pname kStatePnames[] = {
     // 6.5 current values and associated data
     P(GL_CURRENT_COLOR, 4),
@@ -72,8 +72,6 @@ const Pname kStatePnames[] = {
     P(GL_MODELVIEW_STACK_DEPTH, 1),
     P(GL_PROJECTION_STACK_DEPTH, 1),
     P(GL_MATRIX_MODE, 1),
-    P(GL_NORMALIZE, 1),
-    P(GL_RESCALE_NORMAL, 1),
     // 6.11 coloring
     P(GL_FOG_COLOR, 4),
     P(GL_FOG_INDEX, 1),
@@ -81,13 +79,9 @@ const Pname kStatePnames[] = {
     P(GL_FOG_START, 1),
     P(GL_FOG_END, 1),
     P(GL_FOG_MODE, 1),
-    P(GL_FOG, 1),
     P(GL_FOG_COORDINATE_SOURCE, 1),
-    P(GL_COLOR_SUM, 1),
     P(GL_SHADE_MODEL, 1),
     // 6.12 lighting (the model; lights and materials are per-object queries below)
-    P(GL_LIGHTING, 1),
-    P(GL_COLOR_MATERIAL, 1),
     P(GL_COLOR_MATERIAL_PARAMETER, 1),
     P(GL_COLOR_MATERIAL_FACE, 1),
     P(GL_LIGHT_MODEL_AMBIENT, 4),
@@ -96,61 +90,40 @@ const Pname kStatePnames[] = {
     P(GL_LIGHT_MODEL_COLOR_CONTROL, 1),
     // 6.14 rasterization
     P(GL_POINT_SIZE, 1),
-    P(GL_POINT_SMOOTH, 1),
     P(GL_POINT_SIZE_MIN, 1),
     P(GL_POINT_SIZE_MAX, 1),
     P(GL_POINT_FADE_THRESHOLD_SIZE, 1),
     P(GL_POINT_DISTANCE_ATTENUATION, 3),
     P(GL_LINE_WIDTH, 1),
-    P(GL_LINE_SMOOTH, 1),
     P(GL_LINE_STIPPLE_PATTERN, 1),
     P(GL_LINE_STIPPLE_REPEAT, 1),
-    P(GL_LINE_STIPPLE, 1),
-    P(GL_CULL_FACE, 1),
     P(GL_CULL_FACE_MODE, 1),
     P(GL_FRONT_FACE, 1),
-    P(GL_POLYGON_SMOOTH, 1),
     P(GL_POLYGON_MODE, 2),
     P(GL_POLYGON_OFFSET_FACTOR, 1),
     P(GL_POLYGON_OFFSET_UNITS, 1),
-    P(GL_POLYGON_OFFSET_POINT, 1),
-    P(GL_POLYGON_OFFSET_LINE, 1),
-    P(GL_POLYGON_OFFSET_FILL, 1),
-    P(GL_POLYGON_STIPPLE, 1),
     // 6.15 multisampling
-    P(GL_MULTISAMPLE, 1),
-    P(GL_SAMPLE_ALPHA_TO_COVERAGE, 1),
-    P(GL_SAMPLE_ALPHA_TO_ONE, 1),
-    P(GL_SAMPLE_COVERAGE, 1),
     P(GL_SAMPLE_COVERAGE_VALUE, 1),
     P(GL_SAMPLE_COVERAGE_INVERT, 1),
     // 6.18 texture environment (unit-independent part)
     P(GL_ACTIVE_TEXTURE, 1),
     // 6.19 pixel operations
-    P(GL_SCISSOR_TEST, 1),
     P(GL_SCISSOR_BOX, 4),
-    P(GL_ALPHA_TEST, 1),
     P(GL_ALPHA_TEST_FUNC, 1),
     P(GL_ALPHA_TEST_REF, 1),
-    P(GL_STENCIL_TEST, 1),
     P(GL_STENCIL_FUNC, 1),
     P(GL_STENCIL_VALUE_MASK, 1),
     P(GL_STENCIL_REF, 1),
     P(GL_STENCIL_FAIL, 1),
     P(GL_STENCIL_PASS_DEPTH_FAIL, 1),
     P(GL_STENCIL_PASS_DEPTH_PASS, 1),
-    P(GL_DEPTH_TEST, 1),
     P(GL_DEPTH_FUNC, 1),
-    P(GL_BLEND, 1),
     P(GL_BLEND_SRC_RGB, 1),
     P(GL_BLEND_SRC_ALPHA, 1),
     P(GL_BLEND_DST_RGB, 1),
     P(GL_BLEND_DST_ALPHA, 1),
     P(GL_BLEND_EQUATION, 1),
     P(GL_BLEND_COLOR, 4),
-    P(GL_DITHER, 1),
-    P(GL_INDEX_LOGIC_OP, 1),
-    P(GL_COLOR_LOGIC_OP, 1),
     P(GL_LOGIC_OP_MODE, 1),
     // 6.20 framebuffer control
     P(GL_DRAW_BUFFER, 1),
@@ -236,29 +209,10 @@ const Pname kStatePnames[] = {
     P(GL_PIXEL_MAP_A_TO_A_SIZE, 1),
     P(GL_READ_BUFFER, 1),
     // 6.25 evaluators
-    P(GL_MAP1_VERTEX_3, 1),
-    P(GL_MAP1_VERTEX_4, 1),
-    P(GL_MAP1_INDEX, 1),
-    P(GL_MAP1_COLOR_4, 1),
-    P(GL_MAP1_NORMAL, 1),
-    P(GL_MAP1_TEXTURE_COORD_1, 1),
-    P(GL_MAP1_TEXTURE_COORD_2, 1),
-    P(GL_MAP1_TEXTURE_COORD_3, 1),
-    P(GL_MAP1_TEXTURE_COORD_4, 1),
-    P(GL_MAP2_VERTEX_3, 1),
-    P(GL_MAP2_VERTEX_4, 1),
-    P(GL_MAP2_INDEX, 1),
-    P(GL_MAP2_COLOR_4, 1),
-    P(GL_MAP2_NORMAL, 1),
-    P(GL_MAP2_TEXTURE_COORD_1, 1),
-    P(GL_MAP2_TEXTURE_COORD_2, 1),
-    P(GL_MAP2_TEXTURE_COORD_3, 1),
-    P(GL_MAP2_TEXTURE_COORD_4, 1),
     P(GL_MAP1_GRID_DOMAIN, 2),
     P(GL_MAP2_GRID_DOMAIN, 4),
     P(GL_MAP1_GRID_SEGMENTS, 1),
     P(GL_MAP2_GRID_SEGMENTS, 2),
-    P(GL_AUTO_NORMAL, 1),
     // 6.26 hints
     P(GL_PERSPECTIVE_CORRECTION_HINT, 1),
     P(GL_POINT_SMOOTH_HINT, 1),
@@ -282,27 +236,22 @@ const Pname kStatePnames[] = {
 
 // Table 6.5 and 6.16-6.18 state selected by GL_ACTIVE_TEXTURE.
 const Pname kPerUnitPnames[] = {
-    P(GL_CURRENT_TEXTURE_COORDS, 4),
-    P(GL_CURRENT_RASTER_TEXTURE_COORDS, 4),
-    P(GL_TEXTURE_MATRIX, 16),
-    P(GL_TEXTURE_STACK_DEPTH, 1),
-    P(GL_TEXTURE_1D, 1),
-    P(GL_TEXTURE_2D, 1),
-    P(GL_TEXTURE_3D, 1),
-    P(GL_TEXTURE_CUBE_MAP, 1),
-    P(GL_TEXTURE_BINDING_1D, 1),
-    P(GL_TEXTURE_BINDING_2D, 1),
-    P(GL_TEXTURE_BINDING_3D, 1),
-    P(GL_TEXTURE_BINDING_CUBE_MAP, 1),
-    P(GL_TEXTURE_GEN_S, 1),
-    P(GL_TEXTURE_GEN_T, 1),
-    P(GL_TEXTURE_GEN_R, 1),
-    P(GL_TEXTURE_GEN_Q, 1),
+    P(GL_CURRENT_TEXTURE_COORDS, 4), P(GL_CURRENT_RASTER_TEXTURE_COORDS, 4),
+    P(GL_TEXTURE_MATRIX, 16),        P(GL_TEXTURE_STACK_DEPTH, 1),
+    P(GL_TEXTURE_BINDING_1D, 1),     P(GL_TEXTURE_BINDING_2D, 1),
+    P(GL_TEXTURE_BINDING_3D, 1),     P(GL_TEXTURE_BINDING_CUBE_MAP, 1),
+};
+
+// Capabilities selected by GL_ACTIVE_TEXTURE.
+const Pname kPerUnitCapabilities[] = {
+    P(GL_TEXTURE_1D, 1),       P(GL_TEXTURE_2D, 1),    P(GL_TEXTURE_3D, 1),
+    P(GL_TEXTURE_CUBE_MAP, 1), P(GL_TEXTURE_GEN_S, 1), P(GL_TEXTURE_GEN_T, 1),
+    P(GL_TEXTURE_GEN_R, 1),    P(GL_TEXTURE_GEN_Q, 1),
 };
 
 // Table 6.6: texture coordinate arrays, selected by GL_CLIENT_ACTIVE_TEXTURE.
+const Pname kPerClientUnitCapabilities[] = {P(GL_TEXTURE_COORD_ARRAY, 1)};
 const Pname kPerClientUnitPnames[] = {
-    P(GL_TEXTURE_COORD_ARRAY, 1),
     P(GL_TEXTURE_COORD_ARRAY_SIZE, 1),
     P(GL_TEXTURE_COORD_ARRAY_TYPE, 1),
     P(GL_TEXTURE_COORD_ARRAY_STRIDE, 1),
@@ -360,7 +309,8 @@ const Pname kImplementationPnames[] = {
     P(GL_ACCUM_ALPHA_BITS, 1),
 };
 
-// glIsEnabled capabilities (table 6.x "Enable"/"IsEnabled" entries); per-unit ones below.
+// Capabilities (the glEnable/glIsEnabled rows of GL 1.5 tables 6.6-6.25), dumped through
+// glIsEnabled and the glGet functions; the per-unit ones are above.
 const Pname kCapabilities[] = {
     P(GL_VERTEX_ARRAY, 1),
     P(GL_NORMAL_ARRAY, 1),
@@ -574,8 +524,24 @@ void dump_pnames(JsonObject& out, const Pname* begin, const Pname* end, const st
   }
 }
 
+// A two-argument query through its float and integer variants, e.g. glGetLightfv and
+// glGetLightiv of (GL_LIGHT0, GL_POSITION): `b.count` values each.
+void record_fv_iv(JsonObject& out, const std::string& prefix, const std::string& function,
+                  const Pname& a, const Pname& b, void (*fv)(GLenum, GLenum, GLfloat*),
+                  void (*iv)(GLenum, GLenum, GLint*)) {
+  record<GLfloat>(
+      out, prefix + call((function + "fv").c_str(), a.name, b.name), b.count,
+      [&](GLfloat* v) { fv(a.pname, b.pname, v); }, format_float);
+  record<GLint>(
+      out, prefix + call((function + "iv").c_str(), a.name, b.name), b.count,
+      [&](GLint* v) { iv(a.pname, b.pname, v); }, format_int);
+}
+
+// glIsEnabled of each capability, and the glGet functions too (GL 1.5 6.1.1: a capability is
+// also a glGet pname).
 void dump_capabilities(JsonObject& out, const Pname* begin, const Pname* end,
                        const std::string& prefix) {
+  dump_pnames(out, begin, end, prefix);
   for (const Pname* p = begin; p != end; ++p) {
     const GLenum cap = p->pname;
     record<GLboolean>(
@@ -590,12 +556,8 @@ void dump_lights(JsonObject& out) {
   for (int i = 0; i < kLights; ++i) {
     const GLenum light = static_cast<GLenum>(GL_LIGHT0 + i);
     for (const Pname& p : kLightParams) {
-      record<GLfloat>(
-          out, call("glGetLightfv", kNames[i], p.name), p.count,
-          [&](GLfloat* v) { glGetLightfv(light, p.pname, v); }, format_float);
-      record<GLint>(
-          out, call("glGetLightiv", kNames[i], p.name), p.count,
-          [&](GLint* v) { glGetLightiv(light, p.pname, v); }, format_int);
+      record_fv_iv(out, "", "glGetLight", Pname{light, kNames[i], 0}, p, glGetLightfv,
+                   glGetLightiv);
     }
   }
 }
@@ -604,12 +566,7 @@ void dump_materials(JsonObject& out) {
   const Pname faces[] = {{GL_FRONT, "GL_FRONT", 0}, {GL_BACK, "GL_BACK", 0}};
   for (const Pname& face : faces) {
     for (const Pname& p : kMaterialParams) {
-      record<GLfloat>(
-          out, call("glGetMaterialfv", face.name, p.name), p.count,
-          [&](GLfloat* v) { glGetMaterialfv(face.pname, p.pname, v); }, format_float);
-      record<GLint>(
-          out, call("glGetMaterialiv", face.name, p.name), p.count,
-          [&](GLint* v) { glGetMaterialiv(face.pname, p.pname, v); }, format_int);
+      record_fv_iv(out, "", "glGetMaterial", face, p, glGetMaterialfv, glGetMaterialiv);
     }
   }
 }
@@ -633,12 +590,7 @@ void dump_polygon_stipple(JsonObject& out) {
   glPushClientAttrib(GL_CLIENT_PIXEL_STORE_BIT);
   const bool pushed = glGetError() == GL_NO_ERROR;
   if (pushed) {
-    glPixelStorei(GL_PACK_SWAP_BYTES, GL_FALSE);
-    glPixelStorei(GL_PACK_LSB_FIRST, GL_FALSE);
-    glPixelStorei(GL_PACK_ROW_LENGTH, 0);
-    glPixelStorei(GL_PACK_SKIP_ROWS, 0);
-    glPixelStorei(GL_PACK_SKIP_PIXELS, 0);
-    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    set_default_pack_state();
   }
   std::vector<GLubyte> pattern(128 + 4096, 0);
   glGetPolygonStipple(pattern.data());
@@ -657,13 +609,10 @@ void dump_polygon_stipple(JsonObject& out) {
 // generation, and the parameters and level 0 of the texture bound to each target.
 void dump_texture_unit(JsonObject& out, const std::string& prefix) {
   dump_pnames(out, std::begin(kPerUnitPnames), std::end(kPerUnitPnames), prefix);
+  dump_capabilities(out, std::begin(kPerUnitCapabilities), std::end(kPerUnitCapabilities), prefix);
+  const Pname env{GL_TEXTURE_ENV, "GL_TEXTURE_ENV", 0};
   for (const Pname& p : kTexEnvParams) {
-    record<GLfloat>(
-        out, prefix + call("glGetTexEnvfv", "GL_TEXTURE_ENV", p.name), p.count,
-        [&](GLfloat* v) { glGetTexEnvfv(GL_TEXTURE_ENV, p.pname, v); }, format_float);
-    record<GLint>(
-        out, prefix + call("glGetTexEnviv", "GL_TEXTURE_ENV", p.name), p.count,
-        [&](GLint* v) { glGetTexEnviv(GL_TEXTURE_ENV, p.pname, v); }, format_int);
+    record_fv_iv(out, prefix, "glGetTexEnv", env, p, glGetTexEnvfv, glGetTexEnviv);
   }
   record<GLfloat>(
       out, prefix + call("glGetTexEnvfv", "GL_TEXTURE_FILTER_CONTROL", "GL_TEXTURE_LOD_BIAS"), 1,
@@ -671,22 +620,13 @@ void dump_texture_unit(JsonObject& out, const std::string& prefix) {
       format_float);
   for (const Pname& coord : kTexGenCoords) {
     for (const Pname& p : kTexGenParams) {
-      record<GLfloat>(
-          out, prefix + call("glGetTexGenfv", coord.name, p.name), p.count,
-          [&](GLfloat* v) { glGetTexGenfv(coord.pname, p.pname, v); }, format_float);
-      record<GLint>(
-          out, prefix + call("glGetTexGeniv", coord.name, p.name), p.count,
-          [&](GLint* v) { glGetTexGeniv(coord.pname, p.pname, v); }, format_int);
+      record_fv_iv(out, prefix, "glGetTexGen", coord, p, glGetTexGenfv, glGetTexGeniv);
     }
   }
   for (const Pname& target : kTexTargets) {
     for (const Pname& p : kTexParams) {
-      record<GLfloat>(
-          out, prefix + call("glGetTexParameterfv", target.name, p.name), p.count,
-          [&](GLfloat* v) { glGetTexParameterfv(target.pname, p.pname, v); }, format_float);
-      record<GLint>(
-          out, prefix + call("glGetTexParameteriv", target.name, p.name), p.count,
-          [&](GLint* v) { glGetTexParameteriv(target.pname, p.pname, v); }, format_int);
+      record_fv_iv(out, prefix, "glGetTexParameter", target, p, glGetTexParameterfv,
+                   glGetTexParameteriv);
     }
     // A cube map's levels are queried per face; +X stands for the six.
     const bool cube = target.pname == GL_TEXTURE_CUBE_MAP;
@@ -720,6 +660,8 @@ void dump_texture_units(JsonObject& out) {
       out.add_raw(prefix + "glClientActiveTexture", JsonObject::quote(gl_error_name(error)));
     } else {
       dump_pnames(out, std::begin(kPerClientUnitPnames), std::end(kPerClientUnitPnames), prefix);
+      dump_capabilities(out, std::begin(kPerClientUnitCapabilities),
+                        std::end(kPerClientUnitCapabilities), prefix);
     }
   }
   glActiveTexture(static_cast<GLenum>(active));
@@ -728,6 +670,15 @@ void dump_texture_units(JsonObject& out) {
 }
 
 }  // namespace
+
+void set_default_pack_state() {
+  glPixelStorei(GL_PACK_SWAP_BYTES, GL_FALSE);
+  glPixelStorei(GL_PACK_LSB_FIRST, GL_FALSE);
+  glPixelStorei(GL_PACK_ROW_LENGTH, 0);
+  glPixelStorei(GL_PACK_SKIP_ROWS, 0);
+  glPixelStorei(GL_PACK_SKIP_PIXELS, 0);
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+}
 
 std::string gl_error_name(unsigned error) {
   switch (error) {

@@ -22,6 +22,9 @@ namespace glpt::conformance {
 std::string dump_gl_state(const std::string& scene, const std::string& backend,
                           unsigned error_after_scene);
 
+// Sets the pixel-pack state glReadPixels and glGetPolygonStipple use to GL's defaults.
+void set_default_pack_state();
+
 // "GL_INVALID_ENUM" etc.; a hexadecimal number for anything else.
 std::string gl_error_name(unsigned error);
 

@@ -134,6 +134,26 @@ std::string sibling_path(const std::string& path, const std::string& suffix) {
   return path + suffix;
 }
 
+// Writes `diff` where --diff says, or on failure to `failure_path`, and says where and how to read
+// it. Returns false on an I/O error.
+bool write_diff(const Args& args, bool pass, const std::string& failure_path,
+                const ImageRGBA8& diff, const char* command, const std::string& legend) {
+  std::string path;
+  if (args.options.count("--diff")) {
+    path = args.options.at("--diff");
+  } else if (!pass) {
+    path = failure_path;
+  }
+  if (path.empty()) return true;
+  std::string error;
+  if (!glpt::write_png_rgba8(path, diff.width, diff.height, diff.pixels.data(), false, &error)) {
+    std::fprintf(stderr, "glpt_imgcompare: %s\n", error.c_str());
+    return false;
+  }
+  std::printf("%s: diff image %s (%s)\n", command, path.c_str(), legend.c_str());
+  return true;
+}
+
 int cmd_coverage(int argc, char** argv) {
   Args args;
   if (!parse(argc, argv, {"--background", "--tolerance", "--min-iou", "--diff"}, &args)) {
@@ -166,20 +186,9 @@ int cmd_coverage(int argc, char** argv) {
       static_cast<unsigned long long>(r.only_a), static_cast<unsigned long long>(r.only_b),
       static_cast<unsigned long long>(r.neither), tolerance, bg.r, bg.g, bg.b,
       pass ? "PASS" : "FAIL");
-  std::string diff_path;
-  if (args.options.count("--diff")) {
-    diff_path = args.options.at("--diff");
-  } else if (!pass) {
-    diff_path = sibling_path(args.positional[0], ".coverage_diff.png");
-  }
-  if (!diff_path.empty()) {
-    if (!glpt::write_png_rgba8(diff_path, diff.width, diff.height, diff.pixels.data(), false,
-                               &error)) {
-      std::fprintf(stderr, "glpt_imgcompare: %s\n", error.c_str());
-      return kUsage;
-    }
-    std::printf("coverage: diff image (red: only A, green: only B, white: both) %s\n",
-                diff_path.c_str());
+  if (!write_diff(args, pass, sibling_path(args.positional[0], ".coverage_diff.png"), diff,
+                  "coverage", "red: only A, green: only B, white: both")) {
+    return kUsage;
   }
   return pass ? kPass : kFail;
 }
@@ -254,19 +263,9 @@ int cmd_within(int argc, char** argv) {
       "pixels) -> %s\n",
       r.fraction, r.max_diff, psnr_text, max_diff, min_fraction,
       static_cast<unsigned long long>(r.pixels), pass ? "PASS" : "FAIL");
-  std::string diff_path;
-  if (args.options.count("--diff")) {
-    diff_path = args.options.at("--diff");
-  } else if (!pass) {
-    diff_path = sibling_path(args.positional[1], ".diff.png");
-  }
-  if (!diff_path.empty()) {
-    if (!glpt::write_png_rgba8(diff_path, diff.width, diff.height, diff.pixels.data(), false,
-                               &error)) {
-      std::fprintf(stderr, "glpt_imgcompare: %s\n", error.c_str());
-      return kUsage;
-    }
-    std::printf("within: diff image %s (%s)\n", diff_path.c_str(), ic::kDiffPanels);
+  if (!write_diff(args, pass, sibling_path(args.positional[1], ".diff.png"), diff, "within",
+                  ic::kDiffPanels)) {
+    return kUsage;
   }
   return pass ? kPass : kFail;
 }

@@ -11,31 +11,21 @@ float grid_y(int i) { return 96.0f - 32.0f * static_cast<float>(i / 4); }
 
 // The destination of a blend panel: a horizontal gradient in colour and alpha, drawn unblended.
 void destination(float x, float y) {
+  static const float kCorners[4][4] = {{0.9f, 0.2f, 0.1f, 1.0f},
+                                       {0.1f, 0.3f, 0.9f, 0.0f},
+                                       {0.2f, 0.9f, 0.4f, 0.3f},
+                                       {0.8f, 0.8f, 0.2f, 0.7f}};
   glDisable(GL_BLEND);
-  glBegin(GL_QUADS);
-  glColor4f(0.9f, 0.2f, 0.1f, 1.0f);
-  glVertex2f(x + 1, y + 1);
-  glColor4f(0.1f, 0.3f, 0.9f, 0.0f);
-  glVertex2f(x + 31, y + 1);
-  glColor4f(0.2f, 0.9f, 0.4f, 0.3f);
-  glVertex2f(x + 31, y + 31);
-  glColor4f(0.8f, 0.8f, 0.2f, 0.7f);
-  glVertex2f(x + 1, y + 31);
-  glEnd();
+  coloured_quad(x + 1, y + 1, x + 31, y + 31, kCorners);
 }
 
 // The source of a blend panel: a vertical gradient in colour and alpha, inset.
 void source(float x, float y) {
-  glBegin(GL_QUADS);
-  glColor4f(1.0f, 0.9f, 0.2f, 0.1f);
-  glVertex2f(x + 5, y + 5);
-  glColor4f(0.2f, 1.0f, 1.0f, 0.4f);
-  glVertex2f(x + 27, y + 5);
-  glColor4f(1.0f, 0.3f, 0.8f, 0.9f);
-  glVertex2f(x + 27, y + 27);
-  glColor4f(0.4f, 0.4f, 1.0f, 0.6f);
-  glVertex2f(x + 5, y + 27);
-  glEnd();
+  static const float kCorners[4][4] = {{1.0f, 0.9f, 0.2f, 0.1f},
+                                       {0.2f, 1.0f, 1.0f, 0.4f},
+                                       {1.0f, 0.3f, 0.8f, 0.9f},
+                                       {0.4f, 0.4f, 1.0f, 0.6f}};
+  coloured_quad(x + 5, y + 5, x + 27, y + 27, kCorners);
 }
 
 // Fifteen blend factors (GL 1.5 tables 4.1, 4.2), and blending off in the last panel.

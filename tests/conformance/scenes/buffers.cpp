@@ -34,27 +34,23 @@ void pattern(float r, float g, float b) {
   glEnd();
 }
 
-// Single-buffered use: draw into and read from GL_FRONT.
-GLPT_SCENE(buffers_front_draw_and_read, 64, 64) {
-  glDrawBuffer(GL_FRONT);
-  glReadBuffer(GL_FRONT);
-  clear(0.1f, 0.1f, 0.3f);
+// Draws into and reads from `buffer`: the pattern, and the block read back drawn again at
+// (copy_x, copy_y).
+void draw_and_read(GLenum buffer, float r, float g, float b, int copy_x, int copy_y) {
+  glDrawBuffer(buffer);
+  glReadBuffer(buffer);
+  clear(0.1f + 0.2f * r, 0.1f, 0.3f - 0.2f * r);
   ortho_pixels(64, 64);
-  pattern(1, 0.5f, 0.1f);
-  glRasterPos2i(32, 32);
+  pattern(r, g, b);
+  glRasterPos2i(copy_x, copy_y);
   read_and_redraw(0, 0, 32, 32);
 }
 
+// Single-buffered use: draw into and read from GL_FRONT.
+GLPT_SCENE(buffers_front_draw_and_read, 64, 64) { draw_and_read(GL_FRONT, 1, 0.5f, 0.1f, 32, 32); }
+
 // Double-buffered use: draw into and read from GL_BACK.
-GLPT_SCENE(buffers_back_draw_and_read, 64, 64) {
-  glDrawBuffer(GL_BACK);
-  glReadBuffer(GL_BACK);
-  clear(0.3f, 0.1f, 0.1f);
-  ortho_pixels(64, 64);
-  pattern(0.2f, 1, 0.4f);
-  glRasterPos2i(32, 0);
-  read_and_redraw(0, 0, 32, 32);
-}
+GLPT_SCENE(buffers_back_draw_and_read, 64, 64) { draw_and_read(GL_BACK, 0.2f, 1, 0.4f, 32, 0); }
 
 // GL_FRONT_AND_BACK draws into both: reading GL_FRONT and GL_BACK both return the drawing.
 GLPT_SCENE(buffers_front_and_back, 64, 64) {

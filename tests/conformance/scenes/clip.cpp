@@ -14,11 +14,7 @@ void clip_plane(GLenum plane, double a, double b, double c, double d) {
 // A lit sphere (two-sided: the inside shows through the cut in the back material).
 void begin_clip_view() {
   clear(0.1f, 0.1f, 0.25f);
-  perspective(35.0, 1.0, 1.0, 20.0);
-  glEnable(GL_DEPTH_TEST);
-  glEnable(GL_LIGHTING);
-  light4(GL_LIGHT0, GL_POSITION, -1, 1, 1, 0);
-  glEnable(GL_LIGHT0);
+  lit_perspective_light0(35.0, 1.0);
   glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_TRUE);
   material4(GL_FRONT, GL_DIFFUSE, 0.9f, 0.7f, 0.3f);
   material4(GL_BACK, GL_DIFFUSE, 0.3f, 0.7f, 0.9f);

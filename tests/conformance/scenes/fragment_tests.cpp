@@ -161,12 +161,8 @@ GLPT_SCENE(stencil_fail_and_depth_fail_ops, 64, 64) {
   glRectf(20, 0, 40, 64);  // depth 0.5 (z = 0)
   glStencilFunc(GL_LEQUAL, 1, 0xFF);
   glStencilOp(GL_INVERT, GL_INCR, GL_DECR);
-  glBegin(GL_QUADS);  // z = -0.5 is farther: glOrtho maps z to -z
-  glVertex3f(6, 6, -0.5f);
-  glVertex3f(58, 6, -0.5f);
-  glVertex3f(58, 58, -0.5f);
-  glVertex3f(6, 58, -0.5f);
-  glEnd();
+  // z = -0.5 is farther: glOrtho maps z to -z
+  quad(6, 6, 58, 58, -0.5f);
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glDisable(GL_DEPTH_TEST);
   show_stencil_values(64, 64);
@@ -227,12 +223,8 @@ GLPT_SCENE(stencil_two_pass_mask, 64, 64) {
   quad(0, 0, 64, 64);
   glDisable(GL_TEXTURE_2D);
   glStencilFunc(GL_EQUAL, 1, 0xFF);
-  perspective(35.0, 1.0, 1.0, 20.0);
-  glEnable(GL_DEPTH_TEST);
   glClear(GL_DEPTH_BUFFER_BIT);
-  glEnable(GL_LIGHTING);
-  light4(GL_LIGHT0, GL_POSITION, -1, 1, 1, 0);
-  glEnable(GL_LIGHT0);
+  lit_perspective_light0(35.0, 1.0);
   material4(GL_FRONT, GL_DIFFUSE, 0.9f, 0.3f, 0.2f);
   glTranslatef(0, 0, -4);
   sphere(1.4f, 32, 16);
@@ -253,13 +245,8 @@ GLPT_SCENE(depth_funcs, 128, 64) {
     const float z[3] = {0.5f, 0.0f, -0.5f};
     for (int band = 0; band < 3; ++band) {
       glColor3f(1.0f - 0.3f * band, 0.4f + 0.3f * band, 0.2f);
-      glBegin(GL_QUADS);
       const float y0 = y + 4 + 8 * band;
-      glVertex3f(x + 6, y0, z[band]);
-      glVertex3f(x + 26, y0, z[band]);
-      glVertex3f(x + 26, y0 + 8, z[band]);
-      glVertex3f(x + 6, y0 + 8, z[band]);
-      glEnd();
+      quad(x + 6, y0, x + 26, y0 + 8, z[band]);
     }
   }
 }
@@ -272,38 +259,19 @@ GLPT_SCENE(depth_mask, 64, 64) {
   glEnable(GL_DEPTH_TEST);
   glDepthMask(GL_FALSE);
   glColor3f(1, 0.3f, 0.2f);
-  glBegin(GL_QUADS);
-  glVertex3f(4, 4, 0.5f);
-  glVertex3f(40, 4, 0.5f);
-  glVertex3f(40, 40, 0.5f);
-  glVertex3f(4, 40, 0.5f);
-  glEnd();
+  quad(4, 4, 40, 40, 0.5f);
   glDepthMask(GL_TRUE);
   glColor3f(0.2f, 0.8f, 0.3f);
-  glBegin(GL_QUADS);
-  glVertex3f(20, 20, 0);
-  glVertex3f(56, 20, 0);
-  glVertex3f(56, 56, 0);
-  glVertex3f(20, 56, 0);
-  glEnd();
+  quad(20, 20, 56, 56, 0);
   glColor3f(0.3f, 0.4f, 1);
-  glBegin(GL_QUADS);
-  glVertex3f(30, 10, -0.5f);
-  glVertex3f(62, 10, -0.5f);
-  glVertex3f(62, 46, -0.5f);
-  glVertex3f(30, 46, -0.5f);
-  glEnd();
+  quad(30, 10, 62, 46, -0.5f);
 }
 
 // glDepthRange: the nearer sphere is mapped to [0.5, 1] and the farther one to [0, 0.5], so the
 // farther sphere wins where they overlap.
 GLPT_SCENE(depth_range, 64, 64) {
   clear(0.1f, 0.1f, 0.25f);
-  perspective(35.0, 1.0, 1.0, 20.0);
-  glEnable(GL_DEPTH_TEST);
-  glEnable(GL_LIGHTING);
-  light4(GL_LIGHT0, GL_POSITION, -1, 1, 1, 0);
-  glEnable(GL_LIGHT0);
+  lit_perspective_light0(35.0, 1.0);
   glEnable(GL_COLOR_MATERIAL);
   glDepthRange(0.5, 1.0);
   glColor3f(1, 0.5f, 0.2f);
@@ -323,13 +291,9 @@ GLPT_SCENE(depth_range_reversed, 64, 64) {
   clear(0.1f, 0.1f, 0.25f);
   glClearDepth(0.0);
   glClear(GL_DEPTH_BUFFER_BIT);
-  perspective(35.0, 1.0, 1.0, 20.0);
-  glEnable(GL_DEPTH_TEST);
+  lit_perspective_light0(35.0, 1.0);
   glDepthRange(1.0, 0.0);
   glDepthFunc(GL_GREATER);
-  glEnable(GL_LIGHTING);
-  light4(GL_LIGHT0, GL_POSITION, -1, 1, 1, 0);
-  glEnable(GL_LIGHT0);
   glEnable(GL_COLOR_MATERIAL);
   glColor3f(0.3f, 0.6f, 1);
   glPushMatrix();
@@ -363,9 +327,7 @@ GLPT_SCENE(depth_clear_value, 64, 64) {
 // Two interpenetrating boxes: the intersection line comes from per-pixel depth.
 GLPT_SCENE(depth_intersecting_boxes, 64, 64) {
   clear(0.1f, 0.1f, 0.25f);
-  perspective(40.0, 1.0, 1.0, 20.0);
-  glEnable(GL_DEPTH_TEST);
-  glEnable(GL_LIGHTING);
+  lit_perspective(40.0, 1.0);
   light4(GL_LIGHT0, GL_POSITION, -1, 2, 2, 0);
   glEnable(GL_LIGHT0);
   glEnable(GL_COLOR_MATERIAL);

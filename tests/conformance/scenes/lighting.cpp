@@ -10,15 +10,16 @@ namespace {
 
 using namespace glpt::conformance::util;
 
-constexpr double kPi = 3.14159265358979323846;
-
 // A perspective view for spheres of radius ~1 at z = -4 on a dark blue background, depth test
-// and lighting on.
-void begin_lit_view(int width, int height) {
+// and lighting on; with `light0`, GL_LIGHT0 shines from the upper left.
+void begin_lit_view(int width, int height, bool light0 = false) {
   clear(0.1f, 0.1f, 0.25f);
-  perspective(35.0, static_cast<double>(width) / height, 1.0, 20.0);
-  glEnable(GL_DEPTH_TEST);
-  glEnable(GL_LIGHTING);
+  const double aspect = static_cast<double>(width) / height;
+  if (light0) {
+    lit_perspective_light0(35.0, aspect);
+  } else {
+    lit_perspective(35.0, aspect);
+  }
 }
 
 void sphere_at(float x, float y, float z, float radius) {
@@ -55,13 +56,6 @@ void draw_tilted_cylinder(bool rainbow) {
   glRotatef(20, 0, 1, 0);
   open_cylinder(1.0f, 1.6f, 40, rainbow);
   glPopMatrix();
-}
-
-void default_light0_from_upper_left() {
-  light4(GL_LIGHT0, GL_POSITION, -1.0f, 1.0f, 1.0f, 0.0f);
-  light4(GL_LIGHT0, GL_DIFFUSE, 1, 1, 1, 1);
-  light4(GL_LIGHT0, GL_SPECULAR, 1, 1, 1, 1);
-  glEnable(GL_LIGHT0);
 }
 
 // Light `index` alone, in its own colour and direction; even lights directional, odd positional.
@@ -160,8 +154,7 @@ GLPT_SCENE(lighting_attenuation_quadratic, 64, 64) { attenuation_scene(0.2f, 0, 
 // lighting the inside is lit with the back material and reversed normals; without, the inside
 // uses the front material and its normals point away from the light.
 void two_sided_scene(bool two_sided) {
-  begin_lit_view(64, 64);
-  default_light0_from_upper_left();
+  begin_lit_view(64, 64, true);
   glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, two_sided ? GL_TRUE : GL_FALSE);
   material4(GL_FRONT, GL_DIFFUSE, 1, 0.5f, 0.1f);
   material4(GL_BACK, GL_DIFFUSE, 0.1f, 0.8f, 1);
@@ -175,8 +168,7 @@ GLPT_SCENE(lighting_two_sided_off, 64, 64) { two_sided_scene(false); }
 
 // Three spheres whose glColor tracks one material property (GL 1.5 2.14.3).
 void colour_material_mode_scene(GLenum mode) {
-  begin_lit_view(128, 64);
-  default_light0_from_upper_left();
+  begin_lit_view(128, 64, true);
   light4(GL_LIGHT0, GL_AMBIENT, 0.4f, 0.4f, 0.4f, 1);
   material4(GL_FRONT, GL_DIFFUSE, 0.5f, 0.5f, 0.5f);
   material4(GL_FRONT, GL_SPECULAR, 0.5f, 0.5f, 0.5f);
@@ -201,8 +193,7 @@ GLPT_SCENE(lighting_colour_material_ambient_and_diffuse, 128, 64) {
 // Colour material applied to one face only (or both), on the two-sided open cylinder with a
 // per-vertex rainbow: the other face keeps its grey material.
 void colour_material_face_scene(GLenum face) {
-  begin_lit_view(64, 64);
-  default_light0_from_upper_left();
+  begin_lit_view(64, 64, true);
   glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_TRUE);
   material4(GL_FRONT_AND_BACK, GL_DIFFUSE, 0.6f, 0.6f, 0.6f);
   glColorMaterial(face, GL_DIFFUSE);
@@ -219,8 +210,7 @@ GLPT_SCENE(lighting_colour_material_front_and_back, 64, 64) {
 // A checker-textured sphere with a white highlight: with a separate specular colour the
 // highlight is added after texturing and stays white on the dark squares (GL 1.5 3.9).
 void specular_colour_scene(GLenum control) {
-  begin_lit_view(64, 64);
-  default_light0_from_upper_left();
+  begin_lit_view(64, 64, true);
   glLightModeli(GL_LIGHT_MODEL_COLOR_CONTROL, static_cast<GLint>(control));
   material4(GL_FRONT, GL_SPECULAR, 1, 1, 1);
   glMaterialf(GL_FRONT, GL_SHININESS, 15);
@@ -240,8 +230,7 @@ GLPT_SCENE(lighting_single_colour_specular, 64, 64) { specular_colour_scene(GL_S
 // (the inverse transpose scales them by 1/s). GL_NORMALIZE and GL_RESCALE_NORMAL restore unit
 // length for a uniform scale; with neither the shading is dimmer and the highlight wider.
 void normal_scale_scene(GLenum mode, float sx, float sy, float sz) {
-  begin_lit_view(64, 64);
-  default_light0_from_upper_left();
+  begin_lit_view(64, 64, true);
   material4(GL_FRONT, GL_SPECULAR, 0.8f, 0.8f, 0.8f);
   glMaterialf(GL_FRONT, GL_SHININESS, 25);
   if (mode != GL_NONE) glEnable(mode);
@@ -295,8 +284,7 @@ GLPT_SCENE(lighting_global_ambient, 64, 64) {
 
 // Four spheres with shininess 0, 5, 30 and 128.
 GLPT_SCENE(lighting_specular_exponents, 128, 64) {
-  begin_lit_view(128, 64);
-  default_light0_from_upper_left();
+  begin_lit_view(128, 64, true);
   material4(GL_FRONT, GL_DIFFUSE, 0.3f, 0.2f, 0.5f);
   material4(GL_FRONT, GL_SPECULAR, 1, 1, 1);
   const float shininess[4] = {0, 5, 30, 128};
@@ -385,8 +373,7 @@ GLPT_SCENE(lighting_light1_after_light0, 64, 64) {
 // glColor must not change the material, so the right sphere is orange too. The state dump shows
 // the material (glGetMaterialfv) holding the tracked colour.
 GLPT_SCENE(lighting_colour_material_disable_keeps_colour, 128, 64) {
-  begin_lit_view(128, 64);
-  default_light0_from_upper_left();
+  begin_lit_view(128, 64, true);
   glColorMaterial(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE);
   glEnable(GL_COLOR_MATERIAL);
   glColor3f(1, 0.5f, 0);

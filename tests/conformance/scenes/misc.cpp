@@ -10,8 +10,6 @@ namespace {
 
 using namespace glpt::conformance::util;
 
-constexpr double kPi = 3.14159265358979323846;
-
 // glRect in its four type variants; reversed corners give a clockwise rectangle, which back-face
 // culling removes (GL 1.5 2.10: glRect is a polygon with vertices in the stated order).
 GLPT_SCENE(misc_rect_variants, 64, 64) {
@@ -218,8 +216,7 @@ GLPT_SCENE(misc_interleaved_arrays_and_buffer_objects, 64, 64) {
 // lit, through glMapGrid2/glEvalMesh2, and a Bezier curve through glEvalCoord1.
 GLPT_SCENE(misc_evaluators, 64, 64) {
   clear(0.1f, 0.1f, 0.2f);
-  perspective(40.0, 1.0, 1.0, 20.0);
-  glEnable(GL_DEPTH_TEST);
+  lit_perspective_light0(40.0, 1.0);
   GLfloat patch[4][4][3];
   for (int i = 0; i < 4; ++i) {
     for (int j = 0; j < 4; ++j) {
@@ -232,9 +229,6 @@ GLPT_SCENE(misc_evaluators, 64, 64) {
   glMap2f(GL_MAP2_VERTEX_3, 0, 1, 12, 4, 0, 1, 3, 4, &patch[0][0][0]);
   glEnable(GL_MAP2_VERTEX_3);
   glEnable(GL_AUTO_NORMAL);
-  glEnable(GL_LIGHTING);
-  light4(GL_LIGHT0, GL_POSITION, -1, 1, 1, 0);
-  glEnable(GL_LIGHT0);
   // One-sided: glEvalMesh2's quad strips run (u, v), (u, v+1), ... which is clockwise here, so
   // two-sided lighting would light the patch as a back face, with the normal reversed.
   material4(GL_FRONT_AND_BACK, GL_DIFFUSE, 0.8f, 0.6f, 1);
@@ -260,11 +254,7 @@ GLPT_SCENE(misc_evaluators, 64, 64) {
 // depth test. Both halves must use their own projection.
 GLPT_SCENE(misc_hud_over_perspective, 64, 64) {
   clear(0.1f, 0.1f, 0.25f);
-  perspective(45.0, 1.0, 1.0, 20.0);
-  glEnable(GL_DEPTH_TEST);
-  glEnable(GL_LIGHTING);
-  light4(GL_LIGHT0, GL_POSITION, -1, 1, 1, 0);
-  glEnable(GL_LIGHT0);
+  lit_perspective_light0(45.0, 1.0);
   glEnable(GL_COLOR_MATERIAL);
   for (int i = 0; i < 3; ++i) {
     glPushMatrix();
@@ -324,14 +314,7 @@ GLPT_SCENE(misc_several_viewports, 64, 64) {
   glOrtho(-1, 1, -1, 1, -1, 1);
   glMatrixMode(GL_MODELVIEW);
   glLoadIdentity();
-  glBegin(GL_TRIANGLES);
-  glColor3f(1, 0, 0);
-  glVertex2f(-0.9f, -0.9f);
-  glColor3f(0, 1, 0);
-  glVertex2f(0.9f, -0.7f);
-  glColor3f(0, 0, 1);
-  glVertex2f(0, 0.9f);
-  glEnd();
+  rgb_triangle(-0.9f, -0.9f, 0.9f, -0.7f, 0, 0.9f);
   glViewport(0, 0, 32, 32);
   perspective(60.0, 1.0, 0.5, 10.0);
   glEnable(GL_TEXTURE_2D);
@@ -482,11 +465,7 @@ GLPT_SCENE(misc_unlit_colour_alpha, 64, 64) {
 // that width and a lit sphere drawn under that state. The state dump checks the queries.
 GLPT_SCENE(misc_state_query_conversions, 64, 64) {
   clear(0.1f, 0.1f, 0.2f);
-  perspective(35.0, 1.0, 1.0, 20.0);
-  glEnable(GL_DEPTH_TEST);
-  glEnable(GL_LIGHTING);
-  light4(GL_LIGHT0, GL_POSITION, -1, 1, 1, 0);
-  glEnable(GL_LIGHT0);
+  lit_perspective_light0(35.0, 1.0);
   glLightModeli(GL_LIGHT_MODEL_COLOR_CONTROL, GL_SEPARATE_SPECULAR_COLOR);
   material4(GL_FRONT, GL_SPECULAR, 1, 1, 1);
   glMaterialf(GL_FRONT, GL_SHININESS, 20);

@@ -245,14 +245,7 @@ GLPT_SCENE(pixels_draw_with_depth_test, 64, 64) {
 GLPT_SCENE(pixels_copy, 64, 64) {
   clear(0.1f, 0.1f, 0.2f);
   ortho_pixels(64, 64);
-  glBegin(GL_TRIANGLES);
-  glColor3f(1, 0, 0);
-  glVertex2f(2, 2);
-  glColor3f(0, 1, 0);
-  glVertex2f(22, 4);
-  glColor3f(0, 0, 1);
-  glVertex2f(8, 22);
-  glEnd();
+  rgb_triangle(2, 2, 22, 4, 8, 22);
   glRasterPos2i(30, 2);
   glCopyPixels(0, 0, 24, 24, GL_COLOR);
   glPixelZoom(1.5f, 1.5f);
@@ -292,16 +285,9 @@ GLPT_SCENE(accum_clear_and_return_scale, 64, 64) {
   glClear(GL_ACCUM_BUFFER_BIT);
   clear(0, 0, 0);
   ortho_pixels(64, 64);
-  glBegin(GL_QUADS);
-  glColor3f(0, 0, 0);
-  glVertex2f(8, 8);
-  glColor3f(1, 0, 0);
-  glVertex2f(56, 8);
-  glColor3f(0.5f, 0.5f, 1);
-  glVertex2f(56, 56);
-  glColor3f(0, 1, 0);
-  glVertex2f(8, 56);
-  glEnd();
+  static const float kCorners[4][4] = {
+      {0, 0, 0, 1}, {1, 0, 0, 1}, {0.5f, 0.5f, 1, 1}, {0, 1, 0, 1}};
+  coloured_quad(8, 8, 56, 56, kCorners);
   glAccum(GL_ACCUM, 0.6f);
   glAccum(GL_RETURN, 2.0f);
 }

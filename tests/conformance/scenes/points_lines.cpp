@@ -8,8 +8,6 @@ namespace {
 
 using namespace glpt::conformance::util;
 
-constexpr double kPi = 3.14159265358979323846;
-
 // Aliased points of sizes 1..8 (columns) at four sub-pixel offsets (rows): the square's
 // placement depends on GL's centre rounding rules for even and odd sizes.
 GLPT_SCENE(points_sizes, 64, 64) {

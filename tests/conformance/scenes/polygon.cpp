@@ -11,7 +11,6 @@ using namespace glpt::conformance::util;
 // Two rows of shapes: the top row counter-clockwise (front faces by default), the bottom row
 // clockwise (back faces), each a triangle, a quad and a pentagon with per-vertex colours.
 void front_and_back_shapes() {
-  constexpr double kPi = 3.14159265358979323846;
   for (int row = 0; row < 2; ++row) {
     const float cy = row == 0 ? 46.5f : 17.5f;
     const bool clockwise = row == 1;

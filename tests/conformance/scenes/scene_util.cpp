@@ -5,8 +5,6 @@
 namespace glpt::conformance::util {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 GLenum client_format(GLenum internal_format) {
   switch (internal_format) {
     case GL_RGB:
@@ -47,6 +45,18 @@ void perspective(double fovy_degrees, double aspect, double z_near, double z_far
   glFrustum(-top * aspect, top * aspect, -top, top, z_near, z_far);
   glMatrixMode(GL_MODELVIEW);
   glLoadIdentity();
+}
+
+void lit_perspective(double fovy_degrees, double aspect) {
+  perspective(fovy_degrees, aspect, 1.0, 20.0);
+  glEnable(GL_DEPTH_TEST);
+  glEnable(GL_LIGHTING);
+}
+
+void lit_perspective_light0(double fovy_degrees, double aspect) {
+  lit_perspective(fovy_degrees, aspect);
+  light4(GL_LIGHT0, GL_POSITION, -1, 1, 1, 0);
+  glEnable(GL_LIGHT0);
 }
 
 void clear(float r, float g, float b, float a) {
@@ -152,6 +162,27 @@ void tex_env_colour(float r, float g, float b, float a) {
   glTexEnvfv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, v);
 }
 
+void rgb_triangle(float x0, float y0, float x1, float y1, float x2, float y2) {
+  glBegin(GL_TRIANGLES);
+  glColor3f(1, 0, 0);
+  glVertex2f(x0, y0);
+  glColor3f(0, 1, 0);
+  glVertex2f(x1, y1);
+  glColor3f(0, 0, 1);
+  glVertex2f(x2, y2);
+  glEnd();
+}
+
+void coloured_quad(float x0, float y0, float x1, float y1, const float (&corners)[4][4]) {
+  const float xs[4] = {x0, x1, x1, x0}, ys[4] = {y0, y0, y1, y1};
+  glBegin(GL_QUADS);
+  for (int i = 0; i < 4; ++i) {
+    glColor4fv(corners[i]);
+    glVertex2f(xs[i], ys[i]);
+  }
+  glEnd();
+}
+
 std::vector<uint8_t> checker(int width, int height, int cell, Rgba8 a, Rgba8 b) {
   std::vector<uint8_t> out(static_cast<size_t>(width) * height * 4);
   for (int y = 0; y < height; ++y) {
@@ -216,12 +247,17 @@ std::vector<uint8_t> convert(const std::vector<uint8_t>& rgba, GLenum format) {
   return out;
 }
 
+GLuint new_texture(GLenum target, GLenum min_filter, GLenum mag_filter, GLuint name) {
+  if (name == 0) glGenTextures(1, &name);
+  glBindTexture(target, name);
+  glTexParameteri(target, GL_TEXTURE_MIN_FILTER, static_cast<GLint>(min_filter));
+  glTexParameteri(target, GL_TEXTURE_MAG_FILTER, static_cast<GLint>(mag_filter));
+  return name;
+}
+
 GLuint texture_2d(GLenum internal_format, int width, int height, const std::vector<uint8_t>& rgba,
                   GLenum filter, GLenum wrap, GLuint name) {
-  if (name == 0) glGenTextures(1, &name);
-  glBindTexture(GL_TEXTURE_2D, name);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, static_cast<GLint>(filter));
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, static_cast<GLint>(filter));
+  name = new_texture(GL_TEXTURE_2D, filter, filter, name);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, static_cast<GLint>(wrap));
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, static_cast<GLint>(wrap));
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);

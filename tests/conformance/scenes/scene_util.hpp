@@ -14,6 +14,8 @@
 
 namespace glpt::conformance::util {
 
+inline constexpr double kPi = 3.14159265358979323846;
+
 struct Rgba8 {
   uint8_t r, g, b, a;
 };
@@ -23,6 +25,12 @@ struct Rgba8 {
 void ortho_pixels(int width, int height);
 // Projection = glFrustum for a vertical field of view (degrees), modelview = identity.
 void perspective(double fovy_degrees, double aspect, double z_near, double z_far);
+// The usual 3-D setup: the perspective above (near 1, far 20), depth test and lighting on, no
+// light enabled yet.
+void lit_perspective(double fovy_degrees, double aspect);
+// lit_perspective with GL_LIGHT0 on: its default white, directional from the upper left
+// (-1, 1, 1) in eye space.
+void lit_perspective_light0(double fovy_degrees, double aspect);
 // Clears colour (to the given colour) and depth (to 1).
 void clear(float r, float g, float b, float a = 1.0f);
 
@@ -36,6 +44,11 @@ void grid(float x0, float y0, float x1, float y1, int n);
 void cube(float h);
 // A single quad with texture coordinates 0..1 (counter-clockwise from the bottom-left).
 void quad(float x0, float y0, float x1, float y1, float z = 0.0f);
+// A triangle at z = 0 with a red, a green and a blue corner, smooth-shaded between them.
+void rgb_triangle(float x0, float y0, float x1, float y1, float x2, float y2);
+// A quad at z = 0 with its own RGBA colour at each corner: bottom-left, bottom-right, top-right,
+// top-left.
+void coloured_quad(float x0, float y0, float x1, float y1, const float (&corners)[4][4]);
 
 // glLightfv, glMaterialfv, glLightModelfv, glFogfv(GL_FOG_COLOR) and
 // glTexEnvfv(GL_TEXTURE_ENV_COLOR) with four values given inline.
@@ -56,6 +69,9 @@ std::vector<uint8_t> gradient(int width, int height, Rgba8 bottom_left, Rgba8 bo
 // Converts RGBA8 pixels to the components of `format` (GL_RGB, GL_LUMINANCE, GL_ALPHA, ...):
 // luminance and intensity take red, alpha takes alpha.
 std::vector<uint8_t> convert(const std::vector<uint8_t>& rgba, GLenum format);
+// Binds texture object `name` (a new one from glGenTextures when 0) to `target` and sets its
+// filters. Returns the name.
+GLuint new_texture(GLenum target, GLenum min_filter, GLenum mag_filter, GLuint name = 0);
 // Creates and binds a 2D texture of level 0 only from RGBA8 pixels, with the given internal
 // format (pixels converted to the matching client format), filters and wrap modes. The texture
 // object is `name`, or a new one from glGenTextures when `name` is 0.

@@ -10,8 +10,6 @@ namespace {
 
 using namespace glpt::conformance::util;
 
-constexpr double kPi = 3.14159265358979323846;
-
 // Eight distinct colours, cycled per vertex, so that every vertex of a primitive differs.
 void vertex_colour(int i) {
   static const float kPalette[8][3] = {{1, 0.1f, 0.1f}, {0.1f, 1, 0.1f},   {0.2f, 0.3f, 1},
@@ -129,12 +127,8 @@ GLPT_SCENE(shading_smooth_line_loop, 64, 64) { lines(GL_LINE_LOOP, GL_SMOOTH); }
 // whole primitive; a faceted sphere.
 GLPT_SCENE(shading_flat_lit_sphere, 64, 64) {
   clear(0.1f, 0.1f, 0.25f);
-  perspective(35.0, 1.0, 1.0, 20.0);
+  lit_perspective_light0(35.0, 1.0);
   glShadeModel(GL_FLAT);
-  glEnable(GL_DEPTH_TEST);
-  glEnable(GL_LIGHTING);
-  light4(GL_LIGHT0, GL_POSITION, -1, 1, 1, 0);
-  glEnable(GL_LIGHT0);
   material4(GL_FRONT, GL_DIFFUSE, 0.9f, 0.6f, 0.3f);
   glTranslatef(0, 0, -4);
   glRotatef(20, 1, 0, 0);

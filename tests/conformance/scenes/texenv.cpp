@@ -35,6 +35,27 @@ void textured_quad(float x, float y, float size = 24) {
   glEnd();
 }
 
+// A COMBINE function and up to three sources for RGB or alpha (0: leave the source as it is).
+struct Combiner {
+  GLenum function;
+  GLenum sources[3];
+};
+
+// Selects GL_COMBINE with the given RGB and alpha combiners (GL 1.5 table 3.23).
+void combine(const Combiner& rgb, const Combiner& alpha) {
+  static const GLenum kRgbSources[3] = {GL_SOURCE0_RGB, GL_SOURCE1_RGB, GL_SOURCE2_RGB};
+  static const GLenum kAlphaSources[3] = {GL_SOURCE0_ALPHA, GL_SOURCE1_ALPHA, GL_SOURCE2_ALPHA};
+  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_COMBINE);
+  glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_RGB, static_cast<GLint>(rgb.function));
+  glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_ALPHA, static_cast<GLint>(alpha.function));
+  for (int i = 0; i < 3; ++i) {
+    if (rgb.sources[i] != 0)
+      glTexEnvi(GL_TEXTURE_ENV, kRgbSources[i], static_cast<GLint>(rgb.sources[i]));
+    if (alpha.sources[i] != 0)
+      glTexEnvi(GL_TEXTURE_ENV, kAlphaSources[i], static_cast<GLint>(alpha.sources[i]));
+  }
+}
+
 // One quad per base internal format, each with the same texels, in a 4 x 2 grid of 32-pixel
 // cells; alpha is part of the read-back image.
 void env_mode_scene(GLenum mode, bool colour_formats_only) {
@@ -69,15 +90,8 @@ void combine_scene(GLenum rgb_function, GLenum alpha_function, GLenum source1 = 
   ortho_pixels(64, 64);
   glEnable(GL_TEXTURE_2D);
   texture_2d(GL_RGBA, 8, 8, varied_texels());
-  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_COMBINE);
-  glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_RGB, static_cast<GLint>(rgb_function));
-  glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_ALPHA, static_cast<GLint>(alpha_function));
-  glTexEnvi(GL_TEXTURE_ENV, GL_SOURCE0_RGB, GL_TEXTURE);
-  glTexEnvi(GL_TEXTURE_ENV, GL_SOURCE1_RGB, static_cast<GLint>(source1));
-  glTexEnvi(GL_TEXTURE_ENV, GL_SOURCE2_RGB, GL_CONSTANT);
-  glTexEnvi(GL_TEXTURE_ENV, GL_SOURCE0_ALPHA, GL_TEXTURE);
-  glTexEnvi(GL_TEXTURE_ENV, GL_SOURCE1_ALPHA, static_cast<GLint>(source1));
-  glTexEnvi(GL_TEXTURE_ENV, GL_SOURCE2_ALPHA, GL_CONSTANT);
+  combine({rgb_function, {GL_TEXTURE, source1, GL_CONSTANT}},
+          {alpha_function, {GL_TEXTURE, source1, GL_CONSTANT}});
   tex_env_colour(0.25f, 0.5f, 0.75f, 0.4f);
   textured_quad(8, 8, 48);
 }
@@ -114,11 +128,7 @@ void dot3_scene(GLenum function) {
   }
   glEnable(GL_TEXTURE_2D);
   texture_2d(GL_RGBA, kSize, kSize, normals);
-  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_COMBINE);
-  glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_RGB, static_cast<GLint>(function));
-  glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_ALPHA, GL_MODULATE);
-  glTexEnvi(GL_TEXTURE_ENV, GL_SOURCE0_RGB, GL_TEXTURE);
-  glTexEnvi(GL_TEXTURE_ENV, GL_SOURCE1_RGB, GL_PRIMARY_COLOR);
+  combine({function, {GL_TEXTURE, GL_PRIMARY_COLOR, 0}}, {GL_MODULATE, {0, 0, 0}});
   glShadeModel(GL_SMOOTH);
   glBegin(GL_QUADS);
   // The light vector, encoded: from the upper left at one end, from the right at the other.
@@ -140,14 +150,13 @@ void dot3_scene(GLenum function) {
 GLPT_SCENE(texenv_combine_dot3_rgb, 64, 64) { dot3_scene(GL_DOT3_RGB); }
 GLPT_SCENE(texenv_combine_dot3_rgba, 64, 64) { dot3_scene(GL_DOT3_RGBA); }
 
-// Sets a REPLACE/MODULATE combiner for one of four quads; `setup` picks its sources/operands.
+// Four textured quads, each drawn after `setup(i)` chose its combiner.
 template <typename Setup>
 void four_combiner_quads(Setup setup) {
   clear(0.2f, 0.2f, 0.2f, 1.0f);
   ortho_pixels(128, 64);
   glEnable(GL_TEXTURE_2D);
   texture_2d(GL_RGBA, 8, 8, varied_texels());
-  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_COMBINE);
   tex_env_colour(0.9f, 0.5f, 0.1f, 0.6f);
   for (int i = 0; i < 4; ++i) {
     setup(i);
@@ -161,10 +170,7 @@ GLPT_SCENE(texenv_combine_operands, 128, 64) {
   four_combiner_quads([](int i) {
     const GLenum rgb_operands[4] = {GL_SRC_COLOR, GL_ONE_MINUS_SRC_COLOR, GL_SRC_ALPHA,
                                     GL_ONE_MINUS_SRC_ALPHA};
-    glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_RGB, GL_REPLACE);
-    glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_ALPHA, GL_REPLACE);
-    glTexEnvi(GL_TEXTURE_ENV, GL_SOURCE0_RGB, GL_TEXTURE);
-    glTexEnvi(GL_TEXTURE_ENV, GL_SOURCE0_ALPHA, GL_TEXTURE);
+    combine({GL_REPLACE, {GL_TEXTURE, 0, 0}}, {GL_REPLACE, {GL_TEXTURE, 0, 0}});
     glTexEnvi(GL_TEXTURE_ENV, GL_OPERAND0_RGB, static_cast<GLint>(rgb_operands[i]));
     glTexEnvi(GL_TEXTURE_ENV, GL_OPERAND0_ALPHA,
               i % 2 == 0 ? GL_SRC_ALPHA : GL_ONE_MINUS_SRC_ALPHA);
@@ -177,12 +183,7 @@ GLPT_SCENE(texenv_combine_sources, 128, 64) {
   four_combiner_quads([](int i) {
     const GLenum source0[4] = {GL_TEXTURE, GL_CONSTANT, GL_PRIMARY_COLOR, GL_TEXTURE};
     const GLenum source1[4] = {GL_CONSTANT, GL_PRIMARY_COLOR, GL_PREVIOUS, GL_TEXTURE};
-    glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_RGB, GL_MODULATE);
-    glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_ALPHA, GL_MODULATE);
-    glTexEnvi(GL_TEXTURE_ENV, GL_SOURCE0_RGB, static_cast<GLint>(source0[i]));
-    glTexEnvi(GL_TEXTURE_ENV, GL_SOURCE1_RGB, static_cast<GLint>(source1[i]));
-    glTexEnvi(GL_TEXTURE_ENV, GL_SOURCE0_ALPHA, static_cast<GLint>(source0[i]));
-    glTexEnvi(GL_TEXTURE_ENV, GL_SOURCE1_ALPHA, static_cast<GLint>(source1[i]));
+    combine({GL_MODULATE, {source0[i], source1[i], 0}}, {GL_MODULATE, {source0[i], source1[i], 0}});
   });
 }
 
@@ -191,12 +192,8 @@ GLPT_SCENE(texenv_combine_sources, 128, 64) {
 GLPT_SCENE(texenv_combine_scales, 128, 64) {
   four_combiner_quads([](int i) {
     const float rgb_scale[4] = {1, 2, 4, 4}, alpha_scale[4] = {1, 1, 2, 4};
-    glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_RGB, GL_MODULATE);
-    glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_ALPHA, GL_MODULATE);
-    glTexEnvi(GL_TEXTURE_ENV, GL_SOURCE0_RGB, GL_TEXTURE);
-    glTexEnvi(GL_TEXTURE_ENV, GL_SOURCE1_RGB, GL_PRIMARY_COLOR);
-    glTexEnvi(GL_TEXTURE_ENV, GL_SOURCE0_ALPHA, GL_TEXTURE);
-    glTexEnvi(GL_TEXTURE_ENV, GL_SOURCE1_ALPHA, GL_PRIMARY_COLOR);
+    combine({GL_MODULATE, {GL_TEXTURE, GL_PRIMARY_COLOR, 0}},
+            {GL_MODULATE, {GL_TEXTURE, GL_PRIMARY_COLOR, 0}});
     glTexEnvf(GL_TEXTURE_ENV, GL_RGB_SCALE, rgb_scale[i]);
     glTexEnvf(GL_TEXTURE_ENV, GL_ALPHA_SCALE, alpha_scale[i]);
   });
@@ -246,14 +243,9 @@ GLPT_SCENE(texenv_two_units_combine_crossbar, 64, 64) {
   glEnable(GL_TEXTURE_2D);
   glActiveTexture(GL_TEXTURE1);
   texture_2d(GL_RGB, 8, 8, checker(8, 8, 1, Rgba8{255, 255, 255, 255}, Rgba8{30, 30, 30, 255}));
-  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_COMBINE);
-  glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_RGB, GL_INTERPOLATE);
-  glTexEnvi(GL_TEXTURE_ENV, GL_SOURCE0_RGB, GL_TEXTURE0);
-  glTexEnvi(GL_TEXTURE_ENV, GL_SOURCE1_RGB, GL_TEXTURE);
-  glTexEnvi(GL_TEXTURE_ENV, GL_SOURCE2_RGB, GL_PREVIOUS);
+  combine({GL_INTERPOLATE, {GL_TEXTURE0, GL_TEXTURE, GL_PREVIOUS}},
+          {GL_REPLACE, {GL_PRIMARY_COLOR, 0, 0}});
   glTexEnvi(GL_TEXTURE_ENV, GL_OPERAND2_RGB, GL_SRC_ALPHA);
-  glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_ALPHA, GL_REPLACE);
-  glTexEnvi(GL_TEXTURE_ENV, GL_SOURCE0_ALPHA, GL_PRIMARY_COLOR);
   glEnable(GL_TEXTURE_2D);
   multitextured_quad(8, 8, 56, 56);
 }

@@ -77,9 +77,7 @@ GLPT_SCENE(texgen_sphere_map, 64, 64) {
 
 // A cube map with a distinct colour and a checker per face.
 void cube_map_texture() {
-  GLuint name = 0;
-  glGenTextures(1, &name);
-  glBindTexture(GL_TEXTURE_CUBE_MAP, name);
+  new_texture(GL_TEXTURE_CUBE_MAP, GL_NEAREST, GL_NEAREST);
   static const Rgba8 kColours[6] = {{230, 60, 60, 255},  {60, 230, 230, 255}, {60, 230, 60, 255},
                                     {230, 60, 230, 255}, {60, 60, 230, 255},  {230, 230, 60, 255}};
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
@@ -92,8 +90,6 @@ void cube_map_texture() {
     glTexImage2D(static_cast<GLenum>(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face), 0, GL_RGBA, 8, 8, 0,
                  GL_RGBA, GL_UNSIGNED_BYTE, texels.data());
   }
-  glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
   glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
   glEnable(GL_TEXTURE_CUBE_MAP);

@@ -52,14 +52,12 @@ GLPT_SCENE(texture_filter_nearest, 64, 64) { filter_scene(GL_NEAREST); }
 GLPT_SCENE(texture_filter_linear, 64, 64) { filter_scene(GL_LINEAR); }
 
 // A 32x32 texture whose mip levels are distinct colours (each with a darker checker), so the
-// level chosen at each pixel is visible.
-GLuint coloured_mipmaps() {
+// level chosen at each pixel is visible; magnified with NEAREST.
+void coloured_mipmaps(GLenum min_filter) {
   static const Rgba8 kLevelColours[6] = {{255, 255, 255, 255}, {255, 80, 80, 255},
                                          {80, 255, 80, 255},   {80, 80, 255, 255},
                                          {255, 255, 80, 255},  {255, 80, 255, 255}};
-  GLuint name = 0;
-  glGenTextures(1, &name);
-  glBindTexture(GL_TEXTURE_2D, name);
+  new_texture(GL_TEXTURE_2D, min_filter, GL_NEAREST);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
   for (int level = 0, size = 32; size >= 1; ++level, size /= 2) {
     const Rgba8 c = kLevelColours[level];
@@ -69,15 +67,12 @@ GLuint coloured_mipmaps() {
     glTexImage2D(GL_TEXTURE_2D, level, GL_RGBA, size, size, 0, GL_RGBA, GL_UNSIGNED_BYTE,
                  texels.data());
   }
-  return name;
 }
 
 void mipmap_scene(GLenum min_filter) {
   clear(0.3f, 0.5f, 0.7f);
   glEnable(GL_TEXTURE_2D);
-  coloured_mipmaps();
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, static_cast<GLint>(min_filter));
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  coloured_mipmaps(min_filter);
   textured_floor();
 }
 
@@ -91,9 +86,7 @@ GLPT_SCENE(texture_mipmap_linear_linear, 64, 64) { mipmap_scene(GL_LINEAR_MIPMAP
 GLPT_SCENE(texture_lod_controls, 64, 64) {
   clear(0.3f, 0.5f, 0.7f);
   glEnable(GL_TEXTURE_2D);
-  coloured_mipmaps();
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  coloured_mipmaps(GL_NEAREST_MIPMAP_NEAREST);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 1);
   glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MIN_LOD, 0.5f);
   glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_LOD, 2.5f);
@@ -107,12 +100,8 @@ GLPT_SCENE(texture_lod_controls, 64, 64) {
 GLPT_SCENE(texture_generate_mipmap, 64, 64) {
   clear(0.3f, 0.5f, 0.7f);
   glEnable(GL_TEXTURE_2D);
-  GLuint name = 0;
-  glGenTextures(1, &name);
-  glBindTexture(GL_TEXTURE_2D, name);
+  new_texture(GL_TEXTURE_2D, GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR);
   glTexParameteri(GL_TEXTURE_2D, GL_GENERATE_MIPMAP, GL_TRUE);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   const std::vector<uint8_t> texels =
       gradient(32, 32, Rgba8{255, 40, 40, 255}, Rgba8{40, 255, 40, 255}, Rgba8{40, 40, 255, 255},
                Rgba8{255, 255, 40, 255}, 4);
@@ -169,9 +158,7 @@ GLPT_SCENE(texture_1d, 64, 64) {
     texels[i * 4 + 2] = static_cast<uint8_t>(i % 2 == 0 ? 200 : 50);
     texels[i * 4 + 3] = 255;
   }
-  GLuint name = 0;
-  glGenTextures(1, &name);
-  glBindTexture(GL_TEXTURE_1D, name);
+  new_texture(GL_TEXTURE_1D, GL_NEAREST, GL_NEAREST);
   glTexImage1D(GL_TEXTURE_1D, 0, GL_RGBA, 16, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels.data());
   glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_WRAP_S, GL_REPEAT);
   glEnable(GL_TEXTURE_1D);
@@ -212,14 +199,10 @@ GLPT_SCENE(texture_3d, 64, 64) {
       }
     }
   }
-  GLuint name = 0;
-  glGenTextures(1, &name);
-  glBindTexture(GL_TEXTURE_3D, name);
+  new_texture(GL_TEXTURE_3D, GL_LINEAR, GL_LINEAR);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
   glTexImage3D(GL_TEXTURE_3D, 0, GL_RGBA, kSize, kSize, kSize, 0, GL_RGBA, GL_UNSIGNED_BYTE,
                texels.data());
-  glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   glEnable(GL_TEXTURE_3D);
   const float slices[3] = {0.1f, 0.5f, 0.9f};
   for (int i = 0; i < 3; ++i) {
@@ -276,12 +259,8 @@ GLPT_SCENE(texture_cube_map, 64, 64) {
   clear(0.2f, 0.2f, 0.2f);
   perspective(40.0, 1.0, 1.0, 20.0);
   glEnable(GL_DEPTH_TEST);
-  GLuint name = 0;
-  glGenTextures(1, &name);
-  glBindTexture(GL_TEXTURE_CUBE_MAP, name);
+  new_texture(GL_TEXTURE_CUBE_MAP, GL_NEAREST, GL_NEAREST);
   cube_map_faces(16);
-  glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   glEnable(GL_TEXTURE_CUBE_MAP);
   glTranslatef(0, 0, -4);
   glRotatef(30, 1, 0, 0);
@@ -329,21 +308,10 @@ GLPT_SCENE(texture_copy_from_framebuffer, 64, 64) {
   clear(0.1f, 0.1f, 0.4f);
   ortho_pixels(64, 64);
   glShadeModel(GL_SMOOTH);
-  glBegin(GL_TRIANGLES);
-  glColor3f(1, 0, 0);
-  glVertex2f(0, 0);
-  glColor3f(0, 1, 0);
-  glVertex2f(16, 0);
-  glColor3f(0, 0, 1);
-  glVertex2f(0, 16);
-  glEnd();
+  rgb_triangle(0, 0, 16, 0, 0, 16);
   glColor3f(1, 1, 0);
   glRectf(20, 20, 28, 28);
-  GLuint name = 0;
-  glGenTextures(1, &name);
-  glBindTexture(GL_TEXTURE_2D, name);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  new_texture(GL_TEXTURE_2D, GL_NEAREST, GL_NEAREST);
   glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_RGB, 0, 0, 16, 16, 0);
   glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 8, 8, 18, 18, 8, 8);  // part of the yellow square
   clear(0.2f, 0.2f, 0.2f);
@@ -368,11 +336,7 @@ GLPT_SCENE(texture_sized_internal_formats, 128, 64) {
   const GLenum formats[6] = {GL_RGBA8,   GL_RGBA4, GL_RGB5_A1, GL_R3_G3_B2, GL_LUMINANCE4_ALPHA4,
                              GL_RGB10_A2};
   for (int i = 0; i < 6; ++i) {
-    GLuint name = 0;
-    glGenTextures(1, &name);
-    glBindTexture(GL_TEXTURE_2D, name);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    new_texture(GL_TEXTURE_2D, GL_NEAREST, GL_NEAREST);
     glTexImage2D(GL_TEXTURE_2D, 0, static_cast<GLint>(formats[i]), 16, 16, 0, GL_RGBA,
                  GL_UNSIGNED_BYTE, texels.data());
     glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
