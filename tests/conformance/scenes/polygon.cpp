@@ -180,4 +180,35 @@ GLPT_SCENE(polygon_cull_cube_without_depth, 64, 64) {
   cube(0.9f);
 }
 
+// Antialiased polygons (GL_POLYGON_SMOOTH) with the classic saturate blend, drawn front to back:
+// coverage would become alpha at the edges. llvmpipe ignores GL_POLYGON_SMOOTH (its edges are
+// aliased, so the saturate blend keeps the nearer polygon whole), which glpt can match; the
+// tolerance allows an implementation that does smooth the edges.
+GLPT_SCENE_TOLERANCE(
+    polygon_smooth, 64, 64,
+    glpt::conformance::relaxed(0.9, 2,
+                               "antialiased polygon coverage is implementation-defined (GL 1.5 "
+                               "3.5.6) and Vulkan has no polygon smoothing: edge pixels may differ "
+                               "arbitrarily; interiors must match")) {
+  glClearColor(0, 0, 0, 0);
+  glClear(GL_COLOR_BUFFER_BIT);
+  ortho_pixels(64, 64);
+  glEnable(GL_POLYGON_SMOOTH);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_SRC_ALPHA_SATURATE, GL_ONE);
+  glColor3f(1, 0.6f, 0.2f);
+  glBegin(GL_TRIANGLES);
+  glVertex2f(4.3f, 6.1f);
+  glVertex2f(58.2f, 20.7f);
+  glVertex2f(20.6f, 58.4f);
+  glEnd();
+  glColor3f(0.2f, 0.5f, 1);
+  glBegin(GL_QUADS);
+  glVertex2f(30.5f, 4.2f);
+  glVertex2f(60.1f, 12.9f);
+  glVertex2f(52.4f, 60.3f);
+  glVertex2f(26.8f, 40.6f);
+  glEnd();
+}
+
 }  // namespace
