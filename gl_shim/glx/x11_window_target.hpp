@@ -26,6 +26,8 @@ class X11WindowTarget final : public WindowTarget {
   uint32_t window() const { return window_; }
   bool query_size(uint32_t* width, uint32_t* height) override;
   void present(const uint8_t* rgba, uint32_t width, uint32_t height) override;
+  const rt::HostImage* host_image(uint32_t width, uint32_t height) override;
+  void present_host_image() override;
 
  private:
   X11WindowTarget(xcb_connection_t* connection, uint32_t window);
@@ -39,6 +41,14 @@ class X11WindowTarget final : public WindowTarget {
   bool prepared_ = false;
   bool lsb_first_ = true;  // server image byte order
   std::vector<uint32_t> converted_;
+  // MIT-SHM: the frame is written straight into memory the X server reads (as Mesa's software
+  // GLX presents). Unavailable over a network connection or with another pixel layout.
+  bool shm_checked_ = false, shm_available_ = false;
+  uint32_t shm_segment_ = 0;  // xcb_shm_seg_t, 0 when none is attached
+  rt::HostImage shm_image_;
+  uint64_t shm_generations_ = 0;
+  void release_shm();
+  void round_trip();
 };
 
 }  // namespace glpt
