@@ -110,6 +110,27 @@ CUSTOM_ARRAY_COUNTS = {
     ("glCallLists", "lists"): ("GLubyte", "glpt::call_lists_bytes(n, type)"),
 }
 
+# Commands whose client data GL 1.5 5.4 dereferences when they are compiled (vertex arrays),
+# recorded and replayed by hand-written code. While a list is being compiled, the entry point of
+# a command named here (by core name) calls the function given, glpt::f(Context&, ListStream&,
+# <the command's arguments>), which records what it needs under any CommandId; HAND_REPLAYED
+# names the function that replays records of a CommandId, glpt::g(Context&, const
+# ListStream::Reader&). GL_COMPILE_AND_EXECUTE then executes the command as usual. Both are
+# declared in the headers of HAND_COMPILED_HEADERS.
+HAND_COMPILED = {
+    "glArrayElement": "glpt::compile_array_element",
+    "glDrawArrays": "glpt::compile_draw_arrays",
+    "glDrawElements": "glpt::compile_draw_elements",
+    "glDrawRangeElements": "glpt::compile_draw_range_elements",
+    "glMultiDrawArrays": "glpt::compile_multi_draw_arrays",
+    "glMultiDrawElements": "glpt::compile_multi_draw_elements",
+}
+HAND_REPLAYED = {
+    "glArrayElement": "glpt::replay_array_element",
+    "glDrawArrays": "glpt::replay_array_primitive",
+}
+HAND_COMPILED_HEADERS = ["gl_shim/arrays/array_lists.hpp"]
+
 GL_SCALAR_TYPES = {
     "GLenum", "GLboolean", "GLbitfield", "GLbyte", "GLshort", "GLint", "GLubyte", "GLushort",
     "GLuint", "GLsizei", "GLfloat", "GLclampf", "GLdouble", "GLclampd", "GLintptr",
@@ -234,8 +255,11 @@ def literal_count(length):
 def record_plan(cmd):
     """How a compiled command stores its pointer arguments, or None if it needs custom code.
 
-    Returns a list, per pointer parameter, of a C++ expression for its element count.
+    Returns a list, per pointer parameter, of a C++ expression for its element count, or the
+    string "hand" for a HAND_COMPILED command.
     """
+    if core_name(cmd.name) in HAND_COMPILED:
+        return "hand"
     plan = {}
     param_names = {p.name for p in cmd.params}
     for p in cmd.params:
@@ -356,7 +380,10 @@ def emit_entry_points(path, names, commands):
     w('#include <algorithm>\n#include <cstring>\n\n'
       '#include "gl_shim/context.hpp"\n#include "gl_shim/display_lists/list_stream.hpp"\n'
       '#include "gl_shim/dispatch.hpp"\n#include "gl_shim/gl_entry_decls.h"\n'
-      '#include "gl/gl_enums.h"\n\n')
+      '#include "gl/gl_enums.h"\n')
+    for header in HAND_COMPILED_HEADERS:
+        w(f'#include "{header}"\n')
+    w("\n")
     # Weak references to the implementations.
     w("namespace glpt::impl {\n")
     for target in unique_impls(names, commands):
@@ -386,7 +413,7 @@ def emit_entry_points(path, names, commands):
         if compiled(n):
             plans[n] = record_plan(commands[n])
     for n, plan in plans.items():
-        if plan is None:
+        if plan is None or plan == "hand":
             continue
         cmd = commands[n]
         w(f"struct Rec_{n} {{\n")
@@ -403,8 +430,11 @@ def emit_entry_points(path, names, commands):
     w("void replay_list(Context& ctx, const ListStream& list) {\n"
       "  for (ListStream::Reader r(list); !r.done(); r.next()) {\n"
       "    switch (r.command()) {\n")
+    for n, replay in HAND_REPLAYED.items():
+        if n in names:
+            w(f"      case CommandId::{n}:\n        {replay}(ctx, r);\n        break;\n")
     for n, plan in plans.items():
-        if plan is None:
+        if plan is None or plan == "hand":
             continue
         cmd = commands[n]
         w(f"      case CommandId::{n}: {{\n")
@@ -436,6 +466,10 @@ def emit_entry_points(path, names, commands):
             if plan is None:
                 w("  if (ctx->list_being_compiled() != nullptr) {\n")
                 w(f"    glpt::not_compilable(*ctx, glpt::CommandId::{n});\n")
+            elif plan == "hand":
+                w("  if (glpt::ListStream* glpt_list = ctx->list_being_compiled()) {\n")
+                args_list = ", ".join(["*ctx", "*glpt_list"] + [p.name for p in cmd.params])
+                w(f"    {HAND_COMPILED[core_name(n)]}({args_list});\n")
             else:
                 w("  if (glpt::ListStream* glpt_list = ctx->list_being_compiled()) {\n")
                 w(f"    glpt::ListStream::Writer rec_writer(*glpt_list, glpt::CommandId::{n}, "

@@ -88,8 +88,10 @@ bool lookup(const Context& ctx, GLenum pname, Value* out) {
       *out = ints({DisplayListState::kMaxNesting});
       return true;
     case GL_MAX_ATTRIB_STACK_DEPTH:
+      *out = ints({double(kMaxAttribStackDepth)});
+      return true;
     case GL_MAX_CLIENT_ATTRIB_STACK_DEPTH:
-      *out = ints({16});
+      *out = ints({double(kMaxClientAttribStackDepth)});
       return true;
     case GL_MAX_NAME_STACK_DEPTH:
       *out = ints({64});
@@ -100,9 +102,10 @@ bool lookup(const Context& ctx, GLenum pname, Value* out) {
     case GL_MAX_PIXEL_MAP_TABLE:
       *out = ints({256});
       return true;
+    // Mesa's recommended maximums (glpt draws any count up to kMaxArrayDrawVertices).
     case GL_MAX_ELEMENTS_VERTICES:
     case GL_MAX_ELEMENTS_INDICES:
-      *out = ints({1 << 20});
+      *out = ints({3000});
       return true;
     case GL_SUBPIXEL_BITS:
       *out = ints({8});  // Mesa llvmpipe's
@@ -255,6 +258,7 @@ bool lookup(const Context& ctx, GLenum pname, Value* out) {
       break;
   }
   if (lookup_fixed_function_state(ctx, pname, out)) return true;
+  if (lookup_array_state(ctx, pname, out)) return true;
   if (auto on = capability_enabled(const_cast<Context&>(ctx), pname)) {
     *out = boolean(*on);
     return true;
