@@ -8,42 +8,16 @@
 #include "gl_shim/context.hpp"
 #include "gl_shim/dispatch.hpp"
 #include "gl_shim/gl_impl_decls.hpp"
+#include "gl_shim/state/state_query.hpp"
 
 namespace glpt {
 namespace {
 
-// How a value converts between the glGet variants (spec 6.1.2).
-enum class Kind { kInt, kFloat, kColor, kBool };
-
-struct Value {
-  Kind kind = Kind::kInt;
-  int count = 0;
-  double v[16] = {};
-};
-
-Value ints(std::initializer_list<double> l) {
-  Value r;
-  r.kind = Kind::kInt;
-  for (double d : l) r.v[r.count++] = d;
-  return r;
-}
-Value floats(const float* p, int n, Kind kind = Kind::kFloat) {
-  Value r;
-  r.kind = kind;
-  r.count = n;
-  for (int i = 0; i < n; ++i) r.v[i] = p[i];
-  return r;
-}
-Value boolean(bool b) {
-  Value r;
-  r.kind = Kind::kBool;
-  r.count = 1;
-  r.v[0] = b ? 1 : 0;
-  return r;
-}
-
-// Implementation limits glpt reports.
-constexpr int kMaxTextureSize = 4096;
+using query::boolean;
+using query::floats;
+using query::ints;
+using query::Kind;
+using query::Value;
 
 bool lookup(const Context& ctx, GLenum pname, Value* out) {
   const auto& fb = ctx.framebuffer;
@@ -92,21 +66,6 @@ bool lookup(const Context& ctx, GLenum pname, Value* out) {
     case GL_MAX_CLIP_PLANES:
       *out = ints({6});
       return true;
-    case GL_MAX_TEXTURE_SIZE:
-      *out = ints({kMaxTextureSize});
-      return true;
-    case GL_MAX_3D_TEXTURE_SIZE:
-      *out = ints({256});
-      return true;
-    case GL_MAX_CUBE_MAP_TEXTURE_SIZE:
-      *out = ints({kMaxTextureSize});
-      return true;
-    case GL_MAX_TEXTURE_UNITS:
-      *out = ints({double(rec::kMaxTextureUnits)});
-      return true;
-    case GL_ACTIVE_TEXTURE:
-      *out = ints({double(GL_TEXTURE0 + ctx.textures.active)});
-      return true;
     case GL_MAX_LIST_NESTING:
       *out = ints({DisplayListState::kMaxNesting});
       return true;
@@ -119,9 +78,6 @@ bool lookup(const Context& ctx, GLenum pname, Value* out) {
       return true;
     case GL_MAX_EVAL_ORDER:
       *out = ints({30});
-      return true;
-    case GL_MAX_PIXEL_MAP_TABLE:
-      *out = ints({256});
       return true;
     case GL_MAX_ELEMENTS_VERTICES:
     case GL_MAX_ELEMENTS_INDICES:
@@ -273,6 +229,7 @@ bool lookup(const Context& ctx, GLenum pname, Value* out) {
     default:
       break;
   }
+  if (lookup_texture_and_pixel_state(ctx, pname, out)) return true;
   if (auto on = capability_enabled(const_cast<Context&>(ctx), pname)) {
     *out = boolean(*on);
     return true;

@@ -1,0 +1,39 @@
+// Texels as glpt stores them (rec::TexelFormat): conversion of colours to an internal format's
+// base format (GL 1.5 3.8.1, table 3.15), quantization to the component sizes Mesa allocates,
+// and the reverse for glGetTexImage and mipmap generation.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <glm/glm.hpp>
+
+#include "gl_shim/textures/internal_formats.hpp"
+
+namespace glpt {
+
+// Bytes of one texel of `format` (rec::TexelFormat's comments).
+uint32_t bytes_per_texel(rec::TexelFormat format);
+
+// Stores `count` colours (RGBA in [0, 1], after pixel transfer) as texels of `info`. Base format
+// conversion takes L and I from R; channels the base format lacks hold GL's constants
+// (rec::TexelFormat's layout: L -> (L,L,L,1), A -> (0,0,0,A), I -> (I,I,I,I), ...). Each
+// channel is rounded to Mesa's size for it (round(c * (2^b - 1))) and widened to the storage
+// width by bit replication, as Mesa widens narrower formats when it reads them.
+void encode_color_texels(const InternalFormatInfo& info, const glm::vec4* rgba, size_t count,
+                         uint8_t* texels);
+
+// Stores depth values in [0, 1] (kDepth32f), rounded to the format's depth bits.
+void encode_depth_texels(const InternalFormatInfo& info, const float* depth, size_t count,
+                         uint8_t* texels);
+
+// One texel as glGetTexImage sees it: the base format's components (exactly Mesa's stored
+// values) placed as GL 1.5 table 6.1 / Mesa do: L -> (L,0,0,1), I -> (I,0,0,1),
+// LA -> (L,0,0,A), A -> (0,0,0,A), RGB -> (R,G,B,1), RGBA -> (R,G,B,A).
+glm::vec4 decode_color_texel(const InternalFormatInfo& info, const uint8_t* texel);
+float decode_depth_texel(const uint8_t* texel);
+
+// Storage channel value (8 or 16 bits) <-> the quantized value of `bits` bits it represents.
+uint32_t widen_to_storage(uint32_t value, uint32_t bits, uint32_t storage_bits);
+uint32_t narrow_from_storage(uint32_t stored, uint32_t bits, uint32_t storage_bits);
+
+}  // namespace glpt
