@@ -345,6 +345,22 @@ void get_tex_image(Context& ctx, GLenum target, GLint level, GLenum format, GLen
   });
 }
 
+// glCompressedTex*: glpt supports no specific compressed format (GL_NUM_COMPRESSED_TEXTURE_FORMATS
+// is 0, and the generic ones are not accepted by these commands, GL 1.5 3.8.3), so every call
+// that gets past the target and level checks is an error.
+void compressed_tex_image(Context& ctx, int dims, GLenum target, GLint level) {
+  const std::optional<ImageTarget> t = image_target(target, dims, ProxyTargets::kAccepted);
+  if (!t) return record_error(ctx, GL_INVALID_ENUM);
+  if (level < 0 || level >= max_texture_levels(t->slot)) return record_error(ctx, GL_INVALID_VALUE);
+  record_error(ctx, GL_INVALID_ENUM);  // not a compressed internal format glpt supports
+}
+
+void compressed_tex_sub_image(Context& ctx, int dims, GLenum target, GLint level) {
+  const std::optional<ImageTarget> t = image_target(target, dims, ProxyTargets::kRejected);
+  if (!valid_sub_image_args(ctx, t, level, 0, 0, 0)) return;
+  record_error(ctx, GL_INVALID_OPERATION);  // no image is compressed
+}
+
 }  // namespace
 
 namespace impl {
@@ -405,6 +421,38 @@ void glCopyTexSubImage3D(Context& ctx, GLenum target, GLint level, GLint xoffset
 void glGetTexImage(Context& ctx, GLenum target, GLint level, GLenum format, GLenum type,
                    void* pixels) {
   get_tex_image(ctx, target, level, format, type, pixels);
+}
+
+void glCompressedTexImage1D(Context& ctx, GLenum target, GLint level, GLenum, GLsizei, GLint,
+                            GLsizei, const void*) {
+  compressed_tex_image(ctx, 1, target, level);
+}
+void glCompressedTexImage2D(Context& ctx, GLenum target, GLint level, GLenum, GLsizei, GLsizei,
+                            GLint, GLsizei, const void*) {
+  compressed_tex_image(ctx, 2, target, level);
+}
+void glCompressedTexImage3D(Context& ctx, GLenum target, GLint level, GLenum, GLsizei, GLsizei,
+                            GLsizei, GLint, GLsizei, const void*) {
+  compressed_tex_image(ctx, 3, target, level);
+}
+void glCompressedTexSubImage1D(Context& ctx, GLenum target, GLint level, GLint, GLsizei, GLenum,
+                               GLsizei, const void*) {
+  compressed_tex_sub_image(ctx, 1, target, level);
+}
+void glCompressedTexSubImage2D(Context& ctx, GLenum target, GLint level, GLint, GLint, GLsizei,
+                               GLsizei, GLenum, GLsizei, const void*) {
+  compressed_tex_sub_image(ctx, 2, target, level);
+}
+void glCompressedTexSubImage3D(Context& ctx, GLenum target, GLint level, GLint, GLint, GLint,
+                               GLsizei, GLsizei, GLsizei, GLenum, GLsizei, const void*) {
+  compressed_tex_sub_image(ctx, 3, target, level);
+}
+
+void glGetCompressedTexImage(Context& ctx, GLenum target, GLint level, void*) {
+  const std::optional<ImageTarget> t = image_target(target, 0, ProxyTargets::kRejected);
+  if (!t) return record_error(ctx, GL_INVALID_ENUM);
+  if (level < 0 || level >= max_texture_levels(t->slot)) return record_error(ctx, GL_INVALID_VALUE);
+  record_error(ctx, GL_INVALID_OPERATION);  // the image is not compressed (or not defined)
 }
 
 }  // namespace impl
