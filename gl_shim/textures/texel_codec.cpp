@@ -67,7 +67,7 @@ uint32_t narrow_from_storage(uint32_t stored, uint32_t bits, uint32_t storage_bi
 }
 
 void encode_color_texels(const InternalFormatInfo& info, const glm::vec4* rgba, size_t count,
-                         uint8_t* texels) {
+                         uint8_t* texels, uint32_t source_bits) {
   const bool wide = info.texel_format() == rec::TexelFormat::kRgba16;
   const uint32_t storage_bits = wide ? 16 : 8;
   uint32_t bits[4];
@@ -77,7 +77,10 @@ void encode_color_texels(const InternalFormatInfo& info, const glm::vec4* rgba, 
     for (int c = 0; c < 4; ++c) {
       // Channels the base format fills with a constant (0 or 1) are stored at full width.
       const uint32_t b = bits[c] != 0 ? bits[c] : storage_bits;
-      const uint32_t stored = widen_to_storage(quantize(v[c], b), b, storage_bits);
+      const uint32_t q = source_bits != 0 && b > source_bits
+                             ? widen_to_storage(quantize(v[c], source_bits), source_bits, b)
+                             : quantize(v[c], b);
+      const uint32_t stored = widen_to_storage(q, b, storage_bits);
       if (wide) {
         const uint16_t h = uint16_t(stored);
         std::memcpy(texels + i * 8 + size_t(c) * 2, &h, 2);

@@ -19,8 +19,11 @@ uint32_t bytes_per_texel(rec::TexelFormat format);
 // (rec::TexelFormat's layout: L -> (L,L,L,1), A -> (0,0,0,A), I -> (I,I,I,I), ...). Each
 // channel is rounded to Mesa's size for it (round(c * (2^b - 1))) and widened to the storage
 // width by bit replication, as Mesa widens narrower formats when it reads them.
+// `source_bits` (0: the colours were computed in float): colours that are exact n-bit values
+// straight from the client (GL_UNSIGNED_BYTE, no pixel transfer) are widened to channels of more
+// bits by replication, as Mesa's integer conversion does (e.g. GL_RGB10 from bytes).
 void encode_color_texels(const InternalFormatInfo& info, const glm::vec4* rgba, size_t count,
-                         uint8_t* texels);
+                         uint8_t* texels, uint32_t source_bits = 0);
 
 // Stores depth values in [0, 1] (kDepth32f), rounded to the format's depth bits.
 void encode_depth_texels(const InternalFormatInfo& info, const float* depth, size_t count,

@@ -93,7 +93,13 @@ std::vector<uint8_t> texels_from_client(const Context& ctx, const InternalFormat
     encode_depth_texels(info, depth.data(), n, texels.data());
   } else {
     const std::vector<glm::vec4> rgba = unpack_color(src, ctx.pixel_transfer);
-    encode_color_texels(info, rgba.data(), n, texels.data());
+    const rec::PixelTransferState& t = ctx.pixel_transfer;
+    const bool exact_bytes =
+        (shape.type == GL_UNSIGNED_BYTE || shape.type == GL_UNSIGNED_INT_8_8_8_8 ||
+         shape.type == GL_UNSIGNED_INT_8_8_8_8_REV) &&
+        shape.format != GL_COLOR_INDEX && !t.map_color && t.scale == glm::vec4(1.0f) &&
+        t.bias == glm::vec4(0.0f);
+    encode_color_texels(info, rgba.data(), n, texels.data(), exact_bytes ? 8 : 0);
   }
   return texels;
 }
