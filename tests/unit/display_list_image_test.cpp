@@ -183,14 +183,14 @@ TEST(ClientImageCopy, RepacksWithDefaultModes) {
   m.skip_pixels = 1;
   m.lsb_first = true;
   const GLubyte bits[2] = {0x06, 0x00};  // LSB first, skipping bit 0: columns 0 and 1 set
-  const glpt::ClientImageCopy copy = glpt::copy_client_image(
-      m, glpt::ImageShape{3, 1, 1, GL_COLOR_INDEX, GL_BITMAP}, false, bits);
+  const glpt::ClientImageCopy copy =
+      glpt::copy_client_image(m, glpt::ImageShape{3, 1, 1, GL_COLOR_INDEX, GL_BITMAP}, false, bits);
   ASSERT_TRUE(copy.present);
   ASSERT_EQ(copy.bytes.size(), 1u);
   EXPECT_EQ(copy.bytes[0], 0xC0);  // MSB first, no skip
-  EXPECT_FALSE(glpt::copy_client_image(m, glpt::ImageShape{1, 1, 1, GL_RGBA, GL_BITMAP}, false,
-                                       bits)
-                   .present);
+  EXPECT_FALSE(
+      glpt::copy_client_image(m, glpt::ImageShape{1, 1, 1, GL_RGBA, GL_BITMAP}, false, bits)
+          .present);
   EXPECT_FALSE(glpt::copy_client_image(m, glpt::ImageShape{1, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE},
                                        false, nullptr)
                    .present);

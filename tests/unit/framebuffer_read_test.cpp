@@ -44,7 +44,7 @@ TEST_F(FramebufferReadTest, ReadPixelsPacksTheColourBuffer) {
   glPixelStorei(GL_PACK_ALIGNMENT, 4);
   glReadPixels(6, 0, 4, 1, GL_RGBA, GL_UNSIGNED_BYTE, row);
   EXPECT_EQ(row[4], 100);  // x = 7, inside
-  EXPECT_EQ(row[8], 7);   // x = 8, outside
+  EXPECT_EQ(row[8], 7);    // x = 8, outside
   EXPECT_EQ(glGetError(), GLenum{GL_NO_ERROR});
 }
 

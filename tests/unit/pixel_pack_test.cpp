@@ -1,6 +1,8 @@
 // Packing values into client memory (GL 1.5 4.3.2) and the pixel transfer operations (3.6.5).
 // Rounding is Mesa's (measured with OSMesa: nearest even of c * (2^b - 1) in float arithmetic,
 // signed types c * (2^(b-1) - 1)); luminance is R + G + B for glReadPixels, R for glGetTexImage.
+#include "gl_shim/pixels/pixel_pack.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -8,7 +10,6 @@
 #include <vector>
 
 #include "gl/gl_enums.h"
-#include "gl_shim/pixels/pixel_pack.hpp"
 #include "gl_shim/pixels/pixel_transfer.hpp"
 #include "gl_shim/pixels/pixel_unpack.hpp"
 
@@ -54,8 +55,8 @@ TEST(PixelPack, SignedTypesUseTheMagnitudeRange) {
   const PixelStoreModes m = packed_tight();
   int8_t b[4];
   pack(m, 1, 1, GL_RGBA, GL_BYTE, {{0.25f, 0.75f, 0.0f, 1.0f}}, b);
-  EXPECT_EQ(b[0], 32);   // 31.75
-  EXPECT_EQ(b[1], 95);   // 95.25
+  EXPECT_EQ(b[0], 32);  // 31.75
+  EXPECT_EQ(b[1], 95);  // 95.25
   EXPECT_EQ(b[3], 127);
   int16_t s[4];
   pack(m, 1, 1, GL_RGBA, GL_SHORT, {{0.25f, 0.75f, 0.0f, 1.0f}}, s);
@@ -113,8 +114,7 @@ TEST(PixelPack, PackedTypesRoundEachField) {
   // BGRA: first field (bits 0-4) is B = 15.5 -> 16, second G = 0, third R = 31, A = 1.
   EXPECT_EQ(s1555[0], 16 | (0 << 5) | (31 << 10) | (1 << 15));
   uint32_t i2101010[1];
-  pack(m, 1, 1, GL_RGBA, GL_UNSIGNED_INT_2_10_10_10_REV, {{1.0f, 0.0f, 0.0f, 1.0f / 3}},
-       i2101010);
+  pack(m, 1, 1, GL_RGBA, GL_UNSIGNED_INT_2_10_10_10_REV, {{1.0f, 0.0f, 0.0f, 1.0f / 3}}, i2101010);
   EXPECT_EQ(i2101010[0], 1023u | (1u << 30));
   uint8_t b332[1];
   pack(m, 1, 1, GL_RGB, GL_UNSIGNED_BYTE_3_3_2, {{1.0f, 0.0f, 1.0f, 1.0f}}, b332);
@@ -213,8 +213,8 @@ TEST(PixelTransfer, ColorMapsIndexByRoundedComponentTimesSizeMinusOne) {
   maps->maps[GL_PIXEL_MAP_R_TO_R - GL_PIXEL_MAP_I_TO_I] = {0.0f, 0.2f, 1.0f};
   t.maps = maps;
   // Mesa: 63/255*2 = 0.49 -> 0; 64/255*2 = 0.502 -> 1; 0.25*2 = 0.5 -> 0 (even); 0.75 -> 2.
-  std::vector<glm::vec4> c = {{63 / 255.0f, 0, 0, 1}, {64 / 255.0f, 0, 0, 1}, {0.25f, 0, 0, 1},
-                              {0.75f, 0, 0, 1}};
+  std::vector<glm::vec4> c = {
+      {63 / 255.0f, 0, 0, 1}, {64 / 255.0f, 0, 0, 1}, {0.25f, 0, 0, 1}, {0.75f, 0, 0, 1}};
   transfer_rgba(t, c);
   EXPECT_FLOAT_EQ(c[0].r, 0.0f);
   EXPECT_FLOAT_EQ(c[1].r, 0.2f);

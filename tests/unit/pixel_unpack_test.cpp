@@ -1,6 +1,8 @@
 // Unpacking client images (GL 1.5 3.6.4): layout from the unpack modes, every format and type,
 // byte swapping, bitmaps. Expected values are computed by hand from the spec's tables (and Mesa's
 // rule for signed types, measured with OSMesa: max(c / (2^(b-1) - 1), -1)).
+#include "gl_shim/pixels/pixel_unpack.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -9,7 +11,6 @@
 #include "gl/gl_enums.h"
 #include "gl_shim/pixels/pixel_formats.hpp"
 #include "gl_shim/pixels/pixel_layout.hpp"
-#include "gl_shim/pixels/pixel_unpack.hpp"
 
 namespace glpt {
 namespace {
@@ -40,8 +41,7 @@ TEST(PixelFormats, FormatTypeErrorsFollowGlAndMesa) {
   EXPECT_EQ(check_format_and_type(GL_RGBA, GL_BITMAP), GLenum{GL_INVALID_ENUM});
   EXPECT_EQ(check_format_and_type(0x1234, GL_UNSIGNED_BYTE), GLenum{GL_INVALID_ENUM});
   EXPECT_EQ(check_format_and_type(GL_RGB, 0x1234), GLenum{GL_INVALID_ENUM});
-  EXPECT_EQ(check_format_and_type(GL_RGB, GL_UNSIGNED_SHORT_4_4_4_4),
-            GLenum{GL_INVALID_OPERATION});
+  EXPECT_EQ(check_format_and_type(GL_RGB, GL_UNSIGNED_SHORT_4_4_4_4), GLenum{GL_INVALID_OPERATION});
   EXPECT_EQ(check_format_and_type(GL_RGBA, GL_UNSIGNED_SHORT_5_6_5), GLenum{GL_INVALID_OPERATION});
   EXPECT_EQ(check_format_and_type(GL_BGR, GL_UNSIGNED_BYTE_3_3_2), GLenum{GL_INVALID_OPERATION});
   EXPECT_EQ(check_format_and_type(GL_LUMINANCE, GL_UNSIGNED_BYTE_3_3_2),
@@ -90,8 +90,9 @@ TEST(PixelLayout, ImageHeightAndSkipImagesApplyOnlyToThreeDimensionalImages) {
 TEST(PixelLayout, BitmapRowsAreWholeAlignedBytes) {
   PixelStoreModes m = modes_with_alignment(4);
   // 10 bits per row: 2 bytes, padded to 4.
-  EXPECT_EQ(ClientImageLayout(m, ImageShape{10, 3, 1, GL_COLOR_INDEX, GL_BITMAP}, false).row_stride(),
-            4u);
+  EXPECT_EQ(
+      ClientImageLayout(m, ImageShape{10, 3, 1, GL_COLOR_INDEX, GL_BITMAP}, false).row_stride(),
+      4u);
   m.alignment = 1;
   m.skip_pixels = 5;
   const ClientImageLayout l(m, ImageShape{10, 3, 1, GL_COLOR_INDEX, GL_BITMAP}, false);
@@ -100,8 +101,9 @@ TEST(PixelLayout, BitmapRowsAreWholeAlignedBytes) {
   EXPECT_EQ(l.bit_mask(3), 0x80u);
   EXPECT_EQ(l.bit_mask(0), 0x04u);  // bit 5, most significant first
   m.lsb_first = true;
-  EXPECT_EQ(ClientImageLayout(m, ImageShape{10, 3, 1, GL_COLOR_INDEX, GL_BITMAP}, false).bit_mask(0),
-            0x20u);
+  EXPECT_EQ(
+      ClientImageLayout(m, ImageShape{10, 3, 1, GL_COLOR_INDEX, GL_BITMAP}, false).bit_mask(0),
+      0x20u);
 }
 
 TEST(PixelUnpack, ComponentOrderOfEveryColourFormat) {
@@ -157,28 +159,28 @@ TEST(PixelUnpack, EveryPackedTypeUnpacksItsFields) {
   expect_color(unpack(m, 1, 1, GL_RGB, GL_UNSIGNED_BYTE_3_3_2, &b332)[0], 1.0f, 2.0f / 7, 1.0f / 3,
                1.0f);
   // 2_3_3_REV, same byte: R = bits 0-2 = 1/7, G = bits 3-5 = 5/7, B = bits 6-7 = 3/3.
-  expect_color(unpack(m, 1, 1, GL_RGB, GL_UNSIGNED_BYTE_2_3_3_REV, &b332)[0], 1.0f / 7,
-               5.0f / 7, 1.0f, 1.0f);
+  expect_color(unpack(m, 1, 1, GL_RGB, GL_UNSIGNED_BYTE_2_3_3_REV, &b332)[0], 1.0f / 7, 5.0f / 7,
+               1.0f, 1.0f);
   // 5_6_5: R = 31, G = 1, B = 2.
   const uint16_t s565 = uint16_t((31 << 11) | (1 << 5) | 2);
   expect_color(unpack(m, 1, 1, GL_RGB, GL_UNSIGNED_SHORT_5_6_5, &s565)[0], 1.0f, 1.0f / 63,
                2.0f / 31, 1.0f);
-  expect_color(unpack(m, 1, 1, GL_RGB, GL_UNSIGNED_SHORT_5_6_5_REV, &s565)[0], 2.0f / 31,
-               1.0f / 63, 1.0f, 1.0f);
+  expect_color(unpack(m, 1, 1, GL_RGB, GL_UNSIGNED_SHORT_5_6_5_REV, &s565)[0], 2.0f / 31, 1.0f / 63,
+               1.0f, 1.0f);
   const uint16_t s4444 = 0x1234;
-  expect_color(unpack(m, 1, 1, GL_RGBA, GL_UNSIGNED_SHORT_4_4_4_4, &s4444)[0], 1.0f / 15,
-               2.0f / 15, 3.0f / 15, 4.0f / 15);
+  expect_color(unpack(m, 1, 1, GL_RGBA, GL_UNSIGNED_SHORT_4_4_4_4, &s4444)[0], 1.0f / 15, 2.0f / 15,
+               3.0f / 15, 4.0f / 15);
   expect_color(unpack(m, 1, 1, GL_RGBA, GL_UNSIGNED_SHORT_4_4_4_4_REV, &s4444)[0], 4.0f / 15,
                3.0f / 15, 2.0f / 15, 1.0f / 15);
   // With BGRA the first field is blue (GL 1.5 table 3.13).
-  expect_color(unpack(m, 1, 1, GL_BGRA, GL_UNSIGNED_SHORT_4_4_4_4, &s4444)[0], 3.0f / 15,
-               2.0f / 15, 1.0f / 15, 4.0f / 15);
+  expect_color(unpack(m, 1, 1, GL_BGRA, GL_UNSIGNED_SHORT_4_4_4_4, &s4444)[0], 3.0f / 15, 2.0f / 15,
+               1.0f / 15, 4.0f / 15);
   expect_color(unpack(m, 1, 1, GL_ABGR_EXT, GL_UNSIGNED_SHORT_4_4_4_4, &s4444)[0], 4.0f / 15,
                3.0f / 15, 2.0f / 15, 1.0f / 15);
   // 5_5_5_1: R = 3, G = 4, B = 5, A = 1.
   const uint16_t s5551 = uint16_t((3 << 11) | (4 << 6) | (5 << 1) | 1);
-  expect_color(unpack(m, 1, 1, GL_RGBA, GL_UNSIGNED_SHORT_5_5_5_1, &s5551)[0], 3.0f / 31,
-               4.0f / 31, 5.0f / 31, 1.0f);
+  expect_color(unpack(m, 1, 1, GL_RGBA, GL_UNSIGNED_SHORT_5_5_5_1, &s5551)[0], 3.0f / 31, 4.0f / 31,
+               5.0f / 31, 1.0f);
   // 1_5_5_5_REV: R = bits 0-4 = 3, G = 5-9 = 4, B = 10-14 = 5, A = bit 15 = 0.
   const uint16_t s1555 = uint16_t(3 | (4 << 5) | (5 << 10));
   expect_color(unpack(m, 1, 1, GL_RGBA, GL_UNSIGNED_SHORT_1_5_5_5_REV, &s1555)[0], 3.0f / 31,
@@ -264,12 +266,12 @@ TEST(PixelUnpack, BitmapsHonourLsbFirstAndSkipPixels) {
 TEST(PixelUnpack, IndicesAreIntegersAsMesaExtractsThem) {
   const PixelStoreModes m = modes_with_alignment(1);
   const float f[3] = {2.9f, 0.0f, 65536.5f};
-  const std::vector<uint32_t> fi = unpack_indices_raw(
-      UnpackSource{m, ImageShape{3, 1, 1, GL_COLOR_INDEX, GL_FLOAT}, false, f});
+  const std::vector<uint32_t> fi =
+      unpack_indices_raw(UnpackSource{m, ImageShape{3, 1, 1, GL_COLOR_INDEX, GL_FLOAT}, false, f});
   EXPECT_EQ(fi, (std::vector<uint32_t>{2, 0, 65536}));
   const int8_t b[2] = {-1, 5};
-  const std::vector<uint32_t> bi = unpack_indices_raw(
-      UnpackSource{m, ImageShape{2, 1, 1, GL_STENCIL_INDEX, GL_BYTE}, false, b});
+  const std::vector<uint32_t> bi =
+      unpack_indices_raw(UnpackSource{m, ImageShape{2, 1, 1, GL_STENCIL_INDEX, GL_BYTE}, false, b});
   EXPECT_EQ(bi, (std::vector<uint32_t>{0xFFFFFFFFu, 5}));
 }
 

@@ -158,8 +158,8 @@ TEST_F(TexImageTest, ColorIndexImagesGoThroughTheIndexMaps) {
   glPixelTransferf(GL_RED_SCALE, 2.0f);
   const GLubyte idx[4] = {0, 1, 2, 3};
   glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 4, 1, 0, GL_COLOR_INDEX, GL_UNSIGNED_BYTE, idx);
-  EXPECT_EQ(rgba_bytes(0, 4), (std::vector<GLubyte>{64, 0, 0, 128, 191, 0, 0, 128, 64, 0, 0, 128,
-                                                     191, 0, 0, 128}));
+  EXPECT_EQ(rgba_bytes(0, 4),
+            (std::vector<GLubyte>{64, 0, 0, 128, 191, 0, 0, 128, 64, 0, 0, 128, 191, 0, 0, 128}));
   glPixelTransferi(GL_INDEX_SHIFT, 1);  // every index becomes even: 0.25 everywhere
   glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 4, 1, 0, GL_COLOR_INDEX, GL_UNSIGNED_BYTE, idx);
   EXPECT_EQ(rgba_bytes(0, 4)[12], 64);
@@ -188,8 +188,8 @@ TEST_F(TexImageTest, ErrorsMatchMesa) {
   expect(GL_INVALID_VALUE, "negative width");
   glTexImage2D(GL_TEXTURE_2D, -1, GL_RGBA, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, t);
   expect(GL_INVALID_VALUE, "level -1");
-  glTexImage2D(GL_TEXTURE_2D, glpt::kMaxTextureLevels, GL_RGBA, 1, 1, 0, GL_RGBA,
-               GL_UNSIGNED_BYTE, t);
+  glTexImage2D(GL_TEXTURE_2D, glpt::kMaxTextureLevels, GL_RGBA, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+               t);
   expect(GL_INVALID_VALUE, "level too high");
   glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, glpt::kMaxTextureSize + 1, 1, 0, GL_RGBA,
                GL_UNSIGNED_BYTE, nullptr);
@@ -438,9 +438,9 @@ TEST_F(TexImageTest, GeneratedMipmapsMatchMesasBoxFilterRounding) {
   glTexParameteri(GL_TEXTURE_2D, GL_GENERATE_MIPMAP, GL_TRUE);
   // 2x2 -> 1x1 as Mesa's llvmpipe computes it (measured): pairs averaged as (a + b + 1) / 2,
   // along x, then y.
-  const int cases[][5] = {{0, 1, 0, 0, 1},       {1, 1, 0, 0, 1},     {3, 0, 0, 0, 1},
-                          {255, 0, 0, 0, 64},    {255, 255, 0, 0, 128}, {1, 2, 3, 4, 3},
-                          {5, 5, 5, 6, 6},       {10, 11, 12, 13, 12}, {7, 0, 0, 0, 2},
+  const int cases[][5] = {{0, 1, 0, 0, 1},          {1, 1, 0, 0, 1},       {3, 0, 0, 0, 1},
+                          {255, 0, 0, 0, 64},       {255, 255, 0, 0, 128}, {1, 2, 3, 4, 3},
+                          {5, 5, 5, 6, 6},          {10, 11, 12, 13, 12},  {7, 0, 0, 0, 2},
                           {254, 255, 255, 255, 255}};
   for (const auto& c : cases) {
     GLubyte t[16];
@@ -460,8 +460,8 @@ TEST_F(TexImageTest, NonPowerOfTwoMipmapsSampleBilinearlyLikeMesa) {
     for (int k = 0; k < 4; ++k) t[i * 4 + k] = GLubyte(v[i]);
   glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 5, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, t);
   const std::vector<GLubyte> l1 = rgba_bytes(1, 2);
-  EXPECT_EQ(l1[0], 38);   // Mesa
-  EXPECT_EQ(l1[4], 214);  // Mesa
+  EXPECT_EQ(l1[0], 38);                 // Mesa
+  EXPECT_EQ(l1[4], 214);                // Mesa
   EXPECT_EQ(rgba_bytes(2, 1)[0], 126);  // Mesa
   const GLubyte three[12] = {0, 0, 0, 0, 90, 90, 90, 90, 255, 255, 255, 255};
   glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 3, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, three);

@@ -117,7 +117,8 @@ TEST_F(TexStateTest, TextureParameterErrorsMatchMesa) {
   EXPECT_EQ(glGetError(), GLenum{GL_INVALID_ENUM});
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR_MIPMAP_LINEAR);
   EXPECT_EQ(glGetError(), GLenum{GL_INVALID_ENUM});
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, 0x8742 /* GL_MIRROR_CLAMP_EXT */);  // not in GL 1.5
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S,
+                  0x8742 /* GL_MIRROR_CLAMP_EXT */);  // not in GL 1.5
   EXPECT_EQ(glGetError(), GLenum{GL_INVALID_ENUM});
   glTexParameteri(GL_TEXTURE_2D, GL_DEPTH_TEXTURE_MODE, GL_RED);
   EXPECT_EQ(glGetError(), GLenum{GL_INVALID_ENUM});
@@ -330,8 +331,8 @@ TEST_F(TexStateTest, CubeMapsMustBeCubeComplete) {
   glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
   const std::vector<GLubyte> texels(2 * 2 * 4, 50);
   for (int f = 0; f < 5; ++f) {
-    glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f, 0, GL_RGBA, 2, 2, 0, GL_RGBA,
-                 GL_UNSIGNED_BYTE, texels.data());
+    glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f, 0, GL_RGBA, 2, 2, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                 texels.data());
   }
   EXPECT_EQ(snapshot().units[0].target, 0u);  // -Z missing
   glTexImage2D(GL_TEXTURE_CUBE_MAP_NEGATIVE_Z, 0, GL_RGB, 2, 2, 0, GL_RGBA, GL_UNSIGNED_BYTE,
