@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <new>
 
 #include "gl/gl_enums.h"
 #include "gl_shim/context.hpp"
@@ -18,8 +19,10 @@ PixelStoreModes default_unpack_modes() {
   return m;
 }
 
-ClientImageCopy copy_client_image(const PixelStoreModes& modes, const ImageShape& shape,
-                                  bool three_d, const void* data) {
+namespace {
+
+ClientImageCopy copy_image(const PixelStoreModes& modes, const ImageShape& shape, bool three_d,
+                           const void* data) {
   ClientImageCopy copy;
   if (data == nullptr || check_format_and_type(shape.format, shape.type) != GL_NO_ERROR)
     return copy;
@@ -28,7 +31,8 @@ ClientImageCopy copy_client_image(const PixelStoreModes& modes, const ImageShape
   const ClientImageLayout source(modes, shape, three_d);
   const PixelStoreModes defaults = default_unpack_modes();
   const ClientImageLayout stored(defaults, shape, three_d);
-  if (!source.valid() || !stored.valid()) return copy;
+  // A list record holds at most 2 GiB (its offsets are 32-bit).
+  if (!source.valid() || !stored.valid() || stored.end_offset() > (size_t{1} << 31)) return copy;
   copy.present = true;
   if (groups == 0) return copy;
   copy.bytes.resize(stored.end_offset());
@@ -57,6 +61,17 @@ ClientImageCopy copy_client_image(const PixelStoreModes& modes, const ImageShape
     }
   }
   return copy;
+}
+
+}  // namespace
+
+ClientImageCopy copy_client_image(const PixelStoreModes& modes, const ImageShape& shape,
+                                  bool three_d, const void* data) {
+  try {
+    return copy_image(modes, shape, three_d, data);
+  } catch (const std::bad_alloc&) {
+    return ClientImageCopy{};  // not recorded: replayed with no data
+  }
 }
 
 DefaultUnpackModes::DefaultUnpackModes(Context& ctx) : ctx_(ctx), saved_(ctx.framebuffer.unpack) {

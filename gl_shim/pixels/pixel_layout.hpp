@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <new>
 
 #include "gl_shim/gl_types.h"
 #include "gl_shim/state/framebuffer_state.hpp"
@@ -14,10 +15,12 @@ struct ImageShape {
   int32_t width = 0, height = 1, depth = 1;
   GLenum format = 0, type = 0;
 
-  // Groups in the image; 0 when a dimension is not positive.
+  // Groups in the image; 0 when a dimension is not positive, SIZE_MAX when absurdly many.
   size_t groups() const {
     if (width <= 0 || height <= 0 || depth <= 0) return 0;
-    return size_t(width) * size_t(height) * size_t(depth);
+    const unsigned __int128 n =
+        (unsigned __int128)(width) * (unsigned __int128)(height) * (unsigned __int128)(depth);
+    return n > (unsigned __int128)(SIZE_MAX) ? SIZE_MAX : size_t(n);
   }
 };
 

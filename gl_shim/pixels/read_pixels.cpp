@@ -7,6 +7,7 @@
 #include "gl_shim/pixels/pixel_formats.hpp"
 #include "gl_shim/pixels/pixel_pack.hpp"
 #include "gl_shim/pixels/pixel_transfer.hpp"
+#include "gl_shim/state/out_of_memory.hpp"
 
 namespace glpt::impl {
 
@@ -30,26 +31,28 @@ void glReadPixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height,
                               : kind_of_format == PixelClass::kStencilIndex
                                   ? rec::PixelKind::kStencil
                                   : rec::PixelKind::kColor;
-  FramebufferPixels fb;
-  if (!read_framebuffer(ctx, kind, ctx.raster.ops.read_buffer, x, y, uint32_t(width),
-                        uint32_t(height), fb))
-    return;
-  const PackTarget dst{ctx.framebuffer.pack, shape, false, pixels,
-                       fb.inside.size() == shape.groups() ? fb.inside.data() : nullptr};
-  switch (kind) {
-    case rec::PixelKind::kColor:
-      transfer_rgba(ctx.pixel_transfer, fb.color);
-      pack_color(dst, fb.color, LuminanceFrom::kSumRgb);
-      break;
-    case rec::PixelKind::kDepth:
-      transfer_depth(ctx.pixel_transfer, fb.depth);
-      pack_depth(dst, fb.depth);
-      break;
-    case rec::PixelKind::kStencil:
-      transfer_stencil(ctx.pixel_transfer, fb.stencil);
-      pack_indices(dst, fb.stencil);
-      break;
-  }
+  or_out_of_memory(ctx, [&] {
+    FramebufferPixels fb;
+    if (!read_framebuffer(ctx, kind, ctx.raster.ops.read_buffer, x, y, uint32_t(width),
+                          uint32_t(height), fb))
+      return;
+    const PackTarget dst{ctx.framebuffer.pack, shape, false, pixels,
+                         fb.inside.size() == shape.groups() ? fb.inside.data() : nullptr};
+    switch (kind) {
+      case rec::PixelKind::kColor:
+        transfer_rgba(ctx.pixel_transfer, fb.color);
+        pack_color(dst, fb.color, LuminanceFrom::kSumRgb);
+        break;
+      case rec::PixelKind::kDepth:
+        transfer_depth(ctx.pixel_transfer, fb.depth);
+        pack_depth(dst, fb.depth);
+        break;
+      case rec::PixelKind::kStencil:
+        transfer_stencil(ctx.pixel_transfer, fb.stencil);
+        pack_indices(dst, fb.stencil);
+        break;
+    }
+  });
 }
 
 }  // namespace glpt::impl

@@ -6,7 +6,6 @@
 // the stored texels exclude them, as in Mesa's gallium drivers.
 #include <algorithm>
 #include <cstring>
-#include <new>
 
 #include "gl/gl_enums.h"
 #include "gl_shim/context.hpp"
@@ -17,6 +16,7 @@
 #include "gl_shim/pixels/pixel_pack.hpp"
 #include "gl_shim/pixels/pixel_transfer.hpp"
 #include "gl_shim/pixels/pixel_unpack.hpp"
+#include "gl_shim/state/out_of_memory.hpp"
 #include "gl_shim/textures/internal_formats.hpp"
 #include "gl_shim/textures/mipmap_generation.hpp"
 #include "gl_shim/textures/texel_codec.hpp"
@@ -24,16 +24,6 @@
 
 namespace glpt {
 namespace {
-
-// Allocation failure inside a command is GL_OUT_OF_MEMORY, never an exception across the C ABI.
-template <typename F>
-void or_out_of_memory(Context& ctx, F&& f) {
-  try {
-    f();
-  } catch (const std::bad_alloc&) {
-    record_error(ctx, GL_OUT_OF_MEMORY);
-  }
-}
 
 // GL 1.5 3.8.1: depth internal formats take DEPTH_COMPONENT data and colour ones colour (or
 // colour index) data; STENCIL_INDEX never names texels.
