@@ -142,6 +142,24 @@ int type_bytes(GLenum type) {
   }
 }
 
+std::array<uint8_t, 4> unsigned_component_bits(GLenum format, GLenum type) {
+  std::array<uint8_t, 4> bits{};
+  if (pixel_class(format) != PixelClass::kColor) return bits;
+  const PackedLayout packed = packed_layout(type);
+  const uint8_t element_bits = type == GL_UNSIGNED_BYTE ? 8 : type == GL_UNSIGNED_SHORT ? 16 : 0;
+  const std::array<uint8_t, 4> order = format_component_order(format);
+  const int components = packed.components != 0 ? packed.components : format_components(format);
+  for (int e = 0; e < components; ++e) {
+    const uint8_t b = packed.components != 0 ? packed.fields[e].bits : element_bits;
+    if (order[e] == kLuminanceComponent) {
+      bits[0] = bits[1] = bits[2] = b;
+    } else {
+      bits[order[e]] = b;
+    }
+  }
+  return bits;
+}
+
 GLenum check_format_and_type(GLenum format, GLenum type) {
   if (pixel_class(format) == PixelClass::kInvalid) return GL_INVALID_ENUM;
   if (type == GL_BITMAP) {

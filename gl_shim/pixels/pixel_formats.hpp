@@ -38,6 +38,12 @@ struct PackedLayout {
 };
 PackedLayout packed_layout(GLenum type);
 
+// For each RGBA component, the bits of the unsigned normalized integer a colour group of this
+// format/type carries it in (0: none, or a signed, float or 32-bit element, which Mesa converts
+// through float). Luminance counts for R, G and B. Mesa converts such integers to a texture's
+// component size with integer arithmetic (bit replication when widening), not through float.
+std::array<uint8_t, 4> unsigned_component_bits(GLenum format, GLenum type);
+
 // GL_NO_ERROR, or the error GL (and Mesa) report for this format/type pair: an unknown format or
 // type, or GL_BITMAP with a format other than COLOR_INDEX / STENCIL_INDEX, is GL_INVALID_ENUM; a
 // packed type whose component count does not match the format's is GL_INVALID_OPERATION.

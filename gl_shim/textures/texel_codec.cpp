@@ -18,21 +18,22 @@ uint32_t quantize(float c, uint32_t bits) {
   return uint32_t(std::lrint(c * float(max_of(bits))));
 }
 
-// The colour a texel's channel takes before quantization (rec::TexelFormat's layout).
-glm::vec4 to_base_format(GLenum base, const glm::vec4& c) {
+// Which incoming RGBA component a stored channel takes (rec::TexelFormat's layout, GL 1.5 table
+// 3.15), or -1 for GL's constant (0 for R, G, B and 1 for A).
+int source_component(GLenum base, int channel) {
   switch (base) {
     case GL_ALPHA:
-      return {0.0f, 0.0f, 0.0f, c.a};
+      return channel == 3 ? 3 : -1;
     case GL_LUMINANCE:
-      return {c.r, c.r, c.r, 1.0f};
+      return channel < 3 ? 0 : -1;
     case GL_LUMINANCE_ALPHA:
-      return {c.r, c.r, c.r, c.a};
+      return channel < 3 ? 0 : 3;
     case GL_INTENSITY:
-      return {c.r, c.r, c.r, c.r};
+      return 0;
     case GL_RGB:
-      return {c.r, c.g, c.b, 1.0f};
+      return channel < 3 ? channel : -1;
     default:
-      return c;
+      return channel;
   }
 }
 
@@ -67,20 +68,35 @@ uint32_t narrow_from_storage(uint32_t stored, uint32_t bits, uint32_t storage_bi
 }
 
 void encode_color_texels(const InternalFormatInfo& info, const glm::vec4* rgba, size_t count,
-                         uint8_t* texels, uint32_t source_bits) {
+                         uint8_t* texels, const std::array<uint8_t, 4>& source_bits) {
   const bool wide = info.texel_format() == rec::TexelFormat::kRgba16;
   const uint32_t storage_bits = wide ? 16 : 8;
-  uint32_t bits[4];
-  for (int c = 0; c < 4; ++c) bits[c] = info.channel_bits(c);
+  struct Channel {
+    int source;            // RGBA component, or -1 for a constant
+    uint32_t bits;         // Mesa's size for it (storage width for constants)
+    uint32_t source_bits;  // exact unsigned integer bits of the source, or 0
+  };
+  std::array<Channel, 4> channels;
+  for (int c = 0; c < 4; ++c) {
+    const int src = source_component(info.base_format, c);
+    const uint32_t bits = info.channel_bits(c) != 0 ? info.channel_bits(c) : storage_bits;
+    channels[size_t(c)] = {src, bits, src >= 0 ? source_bits[size_t(src)] : 0u};
+  }
   for (size_t i = 0; i < count; ++i) {
-    const glm::vec4 v = to_base_format(info.base_format, rgba[i]);
     for (int c = 0; c < 4; ++c) {
-      // Channels the base format fills with a constant (0 or 1) are stored at full width.
-      const uint32_t b = bits[c] != 0 ? bits[c] : storage_bits;
-      const uint32_t q = source_bits != 0 && b > source_bits
-                             ? widen_to_storage(quantize(v[c], source_bits), source_bits, b)
-                             : quantize(v[c], b);
-      const uint32_t stored = widen_to_storage(q, b, storage_bits);
+      const Channel& ch = channels[size_t(c)];
+      uint32_t q;
+      if (ch.source < 0) {
+        q = c == 3 ? max_of(ch.bits) : 0;
+      } else if (ch.source_bits != 0) {
+        // Mesa's _mesa_unorm_to_unorm on the client's integer.
+        const uint32_t v = quantize(rgba[i][ch.source], ch.source_bits);
+        q = ch.bits >= ch.source_bits ? widen_to_storage(v, ch.source_bits, ch.bits)
+                                      : narrow_from_storage(v, ch.bits, ch.source_bits);
+      } else {
+        q = quantize(rgba[i][ch.source], ch.bits);
+      }
+      const uint32_t stored = widen_to_storage(q, ch.bits, storage_bits);
       if (wide) {
         const uint16_t h = uint16_t(stored);
         std::memcpy(texels + i * 8 + size_t(c) * 2, &h, 2);
@@ -101,7 +117,8 @@ void encode_depth_texels(const InternalFormatInfo& info, const float* depth, siz
   }
 }
 
-glm::vec4 decode_color_texel(const InternalFormatInfo& info, const uint8_t* texel) {
+glm::vec4 decode_color_texel(const InternalFormatInfo& info, const uint8_t* texel,
+                             TexelValue value) {
   const bool wide = info.texel_format() == rec::TexelFormat::kRgba16;
   const uint32_t storage_bits = wide ? 16 : 8;
   glm::vec4 c;
@@ -114,7 +131,9 @@ glm::vec4 decode_color_texel(const InternalFormatInfo& info, const uint8_t* texe
     } else {
       stored = texel[ch];
     }
-    const uint32_t bits = info.channel_bits(ch) != 0 ? info.channel_bits(ch) : storage_bits;
+    const uint32_t bits = value == TexelValue::kStored || info.channel_bits(ch) == 0
+                              ? storage_bits
+                              : info.channel_bits(ch);
     // Mesa's _mesa_unorm_to_float of the value it stored.
     c[ch] = float(narrow_from_storage(stored, bits, storage_bits)) * (1.0f / float(max_of(bits)));
   }

@@ -3,6 +3,7 @@
 // and the reverse for glGetTexImage and mipmap generation.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <glm/glm.hpp>
@@ -19,20 +20,25 @@ uint32_t bytes_per_texel(rec::TexelFormat format);
 // (rec::TexelFormat's layout: L -> (L,L,L,1), A -> (0,0,0,A), I -> (I,I,I,I), ...). Each
 // channel is rounded to Mesa's size for it (round(c * (2^b - 1))) and widened to the storage
 // width by bit replication, as Mesa widens narrower formats when it reads them.
-// `source_bits` (0: the colours were computed in float): colours that are exact n-bit values
-// straight from the client (GL_UNSIGNED_BYTE, no pixel transfer) are widened to channels of more
-// bits by replication, as Mesa's integer conversion does (e.g. GL_RGB10 from bytes).
+// `source_bits` (per RGBA component, 0: the colour was computed in float): components that are
+// exact unsigned integers of that many bits straight from the client (no pixel transfer) are
+// converted with Mesa's integer rule instead: bit replication when the channel is wider (5-bit
+// fields into 8 bits, bytes into GL_RGB10), rounded division when narrower.
 void encode_color_texels(const InternalFormatInfo& info, const glm::vec4* rgba, size_t count,
-                         uint8_t* texels, uint32_t source_bits = 0);
+                         uint8_t* texels, const std::array<uint8_t, 4>& source_bits = {});
 
 // Stores depth values in [0, 1] (kDepth32f), rounded to the format's depth bits.
 void encode_depth_texels(const InternalFormatInfo& info, const float* depth, size_t count,
                          uint8_t* texels);
 
-// One texel as glGetTexImage sees it: the base format's components (exactly Mesa's stored
-// values) placed as GL 1.5 table 6.1 / Mesa do: L -> (L,0,0,1), I -> (I,0,0,1),
-// LA -> (L,0,0,A), A -> (0,0,0,A), RGB -> (R,G,B,1), RGBA -> (R,G,B,A).
-glm::vec4 decode_color_texel(const InternalFormatInfo& info, const uint8_t* texel);
+// One texel as glGetTexImage sees it: the base format's components placed as GL 1.5 table 6.1 /
+// Mesa do: L -> (L,0,0,1), I -> (I,0,0,1), LA -> (L,0,0,A), A -> (0,0,0,A), RGB -> (R,G,B,1),
+// RGBA -> (R,G,B,A). kExact: the value of the component size Mesa stores (q / (2^b - 1));
+// kStored: the 8- or 16-bit value glpt stores, which is what Mesa's integer conversion gives for
+// destinations of that width (a 5-bit 7 read as a byte is 57, not round(7 * 255 / 31) = 58).
+enum class TexelValue : uint8_t { kExact, kStored };
+glm::vec4 decode_color_texel(const InternalFormatInfo& info, const uint8_t* texel,
+                             TexelValue value = TexelValue::kExact);
 float decode_depth_texel(const uint8_t* texel);
 
 // Storage channel value (8 or 16 bits) <-> the quantized value of `bits` bits it represents.

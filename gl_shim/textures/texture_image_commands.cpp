@@ -83,13 +83,12 @@ std::vector<uint8_t> texels_from_client(const Context& ctx, const InternalFormat
     encode_depth_texels(info, depth.data(), n, texels.data());
   } else {
     const std::vector<glm::vec4> rgba = unpack_color(src, ctx.pixel_transfer);
+    // Without pixel transfer, Mesa converts unsigned integer components with integer arithmetic.
     const rec::PixelTransferState& t = ctx.pixel_transfer;
-    const bool exact_bytes =
-        (shape.type == GL_UNSIGNED_BYTE || shape.type == GL_UNSIGNED_INT_8_8_8_8 ||
-         shape.type == GL_UNSIGNED_INT_8_8_8_8_REV) &&
-        shape.format != GL_COLOR_INDEX && !t.map_color && t.scale == glm::vec4(1.0f) &&
-        t.bias == glm::vec4(0.0f);
-    encode_color_texels(info, rgba.data(), n, texels.data(), exact_bytes ? 8 : 0);
+    const bool transfer = t.map_color || t.scale != glm::vec4(1.0f) || t.bias != glm::vec4(0.0f);
+    encode_color_texels(info, rgba.data(), n, texels.data(),
+                        transfer ? std::array<uint8_t, 4>{}
+                                 : unsigned_component_bits(shape.format, shape.type));
   }
   return texels;
 }
@@ -330,12 +329,18 @@ void get_tex_image(Context& ctx, GLenum target, GLint level, GLenum format, GLen
             depth.push_back(decode_depth_texel(source(x, y, z)));
       pack_depth(dst, depth);
     } else {
+      // Bytes come out as Mesa's integer conversion gives them: glpt's stored 8-bit values.
+      const bool bytes = type == GL_UNSIGNED_BYTE || type == GL_UNSIGNED_INT_8_8_8_8 ||
+                         type == GL_UNSIGNED_INT_8_8_8_8_REV;
+      const TexelValue value =
+          bytes && info->texel_format() == rec::TexelFormat::kRgba8 ? TexelValue::kStored
+                                                                     : TexelValue::kExact;
       std::vector<glm::vec4> rgba;
       rgba.reserve(shape.groups());
       for (int32_t z = 0; z < shape.depth; ++z)
         for (int32_t y = 0; y < shape.height; ++y)
           for (int32_t x = 0; x < shape.width; ++x)
-            rgba.push_back(decode_color_texel(*info, source(x, y, z)));
+            rgba.push_back(decode_color_texel(*info, source(x, y, z), value));
       pack_color(dst, rgba, LuminanceFrom::kRed);
     }
   });

@@ -101,6 +101,47 @@ TEST_F(TexImageTest, TexelsAreQuantizedToTheFormatsBitsAsMesaDoes) {
   EXPECT_FLOAT_EQ(back[128 * 4 + 3], 1.0f);
 }
 
+TEST_F(TexImageTest, UnsignedClientIntegersConvertLikeMesasIntegerPath) {
+  // Measured with OSMesa: fields narrower than the texture are widened by bit replication (a
+  // 5-bit 7 becomes 57, not round(7 * 255 / 31) = 58), wider ones rounded.
+  const GLushort s565 = GLushort((13 << 11) | (41 << 5) | 7);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 1, 1, 0, GL_RGB, GL_UNSIGNED_SHORT_5_6_5, &s565);
+  EXPECT_EQ(rgba_bytes(0, 1), (std::vector<GLubyte>{107, 166, 57, 255}));
+  const GLuint i1010102 = (1000u << 22) | (3u << 12) | (513u << 2) | 1u;
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 1, 1, 0, GL_RGBA, GL_UNSIGNED_INT_10_10_10_2,
+               &i1010102);
+  EXPECT_EQ(rgba_bytes(0, 1), (std::vector<GLubyte>{249, 1, 128, 85}));
+  const GLubyte b332 = 0xE9;
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 1, 1, 0, GL_RGB, GL_UNSIGNED_BYTE_3_3_2, &b332);
+  EXPECT_EQ(rgba_bytes(0, 1), (std::vector<GLubyte>{255, 73, 85, 255}));
+  const GLushort s4444 = 0x1234;
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 1, 1, 0, GL_RGBA, GL_UNSIGNED_SHORT_4_4_4_4, &s4444);
+  EXPECT_EQ(rgba_bytes(0, 1), (std::vector<GLubyte>{17, 34, 51, 68}));
+  // Signed bytes go through float: 63/127 * 255 = 126.5 -> 126, 64 -> 128.5 -> 129.
+  const GLbyte b[4] = {63, 64, -5, 127};
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 1, 1, 0, GL_RGBA, GL_BYTE, b);
+  EXPECT_EQ(rgba_bytes(0, 1), (std::vector<GLubyte>{126, 129, 0, 255}));
+  // Luminance data has alpha 1: an ALPHA texture made from it is opaque.
+  const GLubyte l = 77;
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_ALPHA, 1, 1, 0, GL_LUMINANCE, GL_UNSIGNED_BYTE, &l);
+  EXPECT_EQ(rgba_bytes(0, 1), (std::vector<GLubyte>{0, 0, 0, 255}));
+  // Narrow formats read back as bytes give the replicated values (Mesa: 0 99 132 247 for RGB5,
+  // 0 109 146 255 for R3_G3_B2).
+  const GLubyte r[16] = {4, 0, 0, 0, 100, 0, 0, 0, 133, 0, 0, 0, 250, 0, 0, 0};
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB5, 4, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, r);
+  std::vector<GLubyte> back = rgba_bytes(0, 4);
+  EXPECT_EQ((std::vector<int>{back[0], back[4], back[8], back[12]}),
+            (std::vector<int>{0, 99, 132, 247}));
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_R3_G3_B2, 4, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, r);
+  back = rgba_bytes(0, 4);
+  EXPECT_EQ((std::vector<int>{back[0], back[4], back[8], back[12]}),
+            (std::vector<int>{0, 109, 146, 255}));
+  // A 5-bit 7 read as a byte is 57 as well.
+  const GLushort s7 = 7;  // B = 7 in 5_6_5
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB5, 1, 1, 0, GL_RGB, GL_UNSIGNED_SHORT_5_6_5, &s7);
+  EXPECT_EQ(rgba_bytes(0, 1)[2], 57);
+}
+
 TEST_F(TexImageTest, StorageLayoutExpandsTheBaseFormat) {
   const GLubyte c[4] = {100, 50, 30, 200};
   const auto texel_of = [&](GLint internal) {
