@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "gl/gl_enums.h"
+#include "gl_shim/pixels/pixel_formats.hpp"
 
 namespace glpt {
 namespace {
@@ -105,6 +106,36 @@ void encode_color_texels(const InternalFormatInfo& info, const glm::vec4* rgba, 
       }
     }
   }
+}
+
+bool encode_byte_texels(const InternalFormatInfo& info, const UnpackSource& src, uint8_t* texels) {
+  if (src.shape.type != GL_UNSIGNED_BYTE || pixel_class(src.shape.format) != PixelClass::kColor ||
+      info.texel_format() != rec::TexelFormat::kRgba8 || src.data == nullptr)
+    return false;
+  for (int c = 0; c < 4; ++c) {
+    if (info.channel_bits(c) != 0 && info.channel_bits(c) != 8) return false;
+  }
+  const ClientImageLayout layout(src.modes, src.shape, src.three_d);
+  const int components = format_components(src.shape.format);
+  const std::array<uint8_t, 4> order = format_component_order(src.shape.format);
+  std::array<int, 4> source;
+  for (int c = 0; c < 4; ++c) source[size_t(c)] = source_component(info.base_format, c);
+  const auto* base = static_cast<const uint8_t*>(src.data);
+  for_each_group(layout, src.shape, [&](size_t i, size_t offset, int32_t) {
+    const uint8_t* p = base + offset;
+    uint8_t rgba[4] = {0, 0, 0, 255};  // GL's defaults for missing components
+    for (int e = 0; e < components; ++e) {
+      if (order[size_t(e)] == kLuminanceComponent) {
+        rgba[0] = rgba[1] = rgba[2] = p[e];
+      } else {
+        rgba[order[size_t(e)]] = p[e];
+      }
+    }
+    uint8_t* out = texels + i * 4;
+    for (int c = 0; c < 4; ++c)
+      out[c] = source[size_t(c)] >= 0 ? rgba[source[size_t(c)]] : c == 3 ? 255 : 0;
+  });
+  return true;
 }
 
 void encode_depth_texels(const InternalFormatInfo& info, const float* depth, size_t count,

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <glm/glm.hpp>
 
+#include "gl_shim/pixels/pixel_unpack.hpp"
 #include "gl_shim/textures/internal_formats.hpp"
 
 namespace glpt {
@@ -26,6 +27,11 @@ uint32_t bytes_per_texel(rec::TexelFormat format);
 // fields into 8 bits, bytes into GL_RGB10), rounded division when narrower.
 void encode_color_texels(const InternalFormatInfo& info, const glm::vec4* rgba, size_t count,
                          uint8_t* texels, const std::array<uint8_t, 4>& source_bits = {});
+
+// The common case without float conversion: GL_UNSIGNED_BYTE colour data into a format whose
+// channels all have 8 bits, without pixel transfer (the caller checks that), where the client's
+// bytes are the texels. Returns false (nothing written) when the case does not apply.
+bool encode_byte_texels(const InternalFormatInfo& info, const UnpackSource& src, uint8_t* texels);
 
 // Stores depth values in [0, 1] (kDepth32f), rounded to the format's depth bits.
 void encode_depth_texels(const InternalFormatInfo& info, const float* depth, size_t count,

@@ -82,13 +82,14 @@ std::vector<uint8_t> texels_from_client(const Context& ctx, const InternalFormat
     const std::vector<float> depth = unpack_depth(src, ctx.pixel_transfer);
     encode_depth_texels(info, depth.data(), n, texels.data());
   } else {
-    const std::vector<glm::vec4> rgba = unpack_color(src, ctx.pixel_transfer);
     // Without pixel transfer, Mesa converts unsigned integer components with integer arithmetic.
     const rec::PixelTransferState& t = ctx.pixel_transfer;
     const bool transfer = t.map_color || t.scale != glm::vec4(1.0f) || t.bias != glm::vec4(0.0f);
-    encode_color_texels(info, rgba.data(), n, texels.data(),
-                        transfer ? std::array<uint8_t, 4>{}
-                                 : unsigned_component_bits(shape.format, shape.type));
+    if (!transfer && encode_byte_texels(info, src, texels.data())) return texels;
+    const std::vector<glm::vec4> rgba = unpack_color(src, ctx.pixel_transfer);
+    encode_color_texels(
+        info, rgba.data(), n, texels.data(),
+        transfer ? std::array<uint8_t, 4>{} : unsigned_component_bits(shape.format, shape.type));
   }
   return texels;
 }
@@ -332,9 +333,9 @@ void get_tex_image(Context& ctx, GLenum target, GLint level, GLenum format, GLen
       // Bytes come out as Mesa's integer conversion gives them: glpt's stored 8-bit values.
       const bool bytes = type == GL_UNSIGNED_BYTE || type == GL_UNSIGNED_INT_8_8_8_8 ||
                          type == GL_UNSIGNED_INT_8_8_8_8_REV;
-      const TexelValue value =
-          bytes && info->texel_format() == rec::TexelFormat::kRgba8 ? TexelValue::kStored
-                                                                     : TexelValue::kExact;
+      const TexelValue value = bytes && info->texel_format() == rec::TexelFormat::kRgba8
+                                   ? TexelValue::kStored
+                                   : TexelValue::kExact;
       std::vector<glm::vec4> rgba;
       rgba.reserve(shape.groups());
       for (int32_t z = 0; z < shape.depth; ++z)
