@@ -4,7 +4,6 @@
 #include <cstdio>
 #include <cstdlib>
 
-#include "common/stopwatch.hpp"
 #include "gl/gl_enums.h"
 #include "gl_shim/frame/headless_target.hpp"
 
@@ -62,40 +61,78 @@ void bind_target_and_make_current(Context& ctx, WindowTarget* target) {
   fb.viewport_height = static_cast<GLsizei>(h);
   ctx.raster.ops.scissor_box = {0, 0, static_cast<int32_t>(w), static_cast<int32_t>(h)};
   fb.viewport_initialized = true;
+  // GL 1.5 4.2.1, 4.3.2: the initial draw and read buffers are the back buffer when there is one,
+  // else the front.
+  ctx.drawable = target->config();
+  const uint32_t buffer = ctx.drawable.double_buffered ? GL_BACK : GL_FRONT;
+  ctx.raster.ops.draw_buffer = ctx.raster.ops.read_buffer = buffer;
 }
 
 void make_current_headless(Context& ctx, HeadlessTarget& target) {
   bind_target_and_make_current(ctx, &target);
 }
 
-bool render_pending_frame(Context& ctx) {
+namespace {
+
+// A frame that is never swapped or read (a single-buffered program that never flushes) is
+// executed once its record holds this many bytes of vertices.
+constexpr size_t kMaxRecordVertexBytes = size_t{256} << 20;
+
+bool ensure_output(Context& ctx) {
   if (ctx.target == nullptr || ctx.renderer_unavailable) return false;
-  if (!ctx.frame_dirty && ctx.output) return true;
-  const Stopwatch capture_timer;
+  if (ctx.output) return true;
+  std::string error;
+  ctx.output = FrameOutput::create(&error);
   if (!ctx.output) {
-    std::string error;
-    ctx.output = FrameOutput::create(&error);
-    if (!ctx.output) {
-      // Reported once per context (make-current does not retry it); the program keeps
-      // running, showing nothing.
-      std::fprintf(stderr, "%s\n", error.c_str());  // the message names glpt itself
-      ctx.renderer_unavailable = true;
-      return false;
-    }
+    // Reported once per context (make-current does not retry it); the program keeps
+    // running, showing nothing.
+    std::fprintf(stderr, "%s\n", error.c_str());  // the message names glpt itself
+    ctx.renderer_unavailable = true;
+    return false;
   }
-  uint32_t width = 0, height = 0;
-  if (!ctx.target->query_size(&width, &height) || width == 0 || height == 0) return false;
-  rt::Frame& frame = ctx.pending;
-  frame.width = width;
-  frame.height = height;
-  frame.viewport = {ctx.framebuffer.viewport_x, ctx.framebuffer.viewport_y,
-                    static_cast<uint32_t>(std::max(ctx.framebuffer.viewport_width, 0)),
-                    static_cast<uint32_t>(std::max(ctx.framebuffer.viewport_height, 0))};
-  frame.instances = ctx.capture.instances();
-  const double capture_ms = capture_timer.elapsed_ms();
-  const bool ok = ctx.output->render(frame, capture_ms);
-  ctx.frame_dirty = false;
+  return true;
+}
+
+}  // namespace
+
+namespace {
+
+rec::DrawableConfig current_drawable(Context& ctx) {
+  rec::DrawableConfig drawable = ctx.target->config();
+  if (!ctx.target->query_size(&drawable.width, &drawable.height))
+    drawable.width = drawable.height = 0;
+  return drawable;
+}
+
+void start_new_record(Context& ctx) {
+  ctx.recorder.clear();
+  ctx.snapshots.record_cleared();
+  ctx.recording_since.restart();
+}
+
+}  // namespace
+
+bool execute_record(Context& ctx) {
+  if (!ensure_output(ctx)) return false;
+  const rec::DrawableConfig drawable = current_drawable(ctx);
+  ctx.recorder.seal();
+  bool ok = true;
+  if (!ctx.recorder.empty() || drawable != ctx.output->drawable())
+    ok = ctx.output->execute(ctx.recorder.record(), drawable, ctx.recording_since.elapsed_ms());
+  start_new_record(ctx);
   return ok;
+}
+
+void note_frame_content(Context& ctx) {
+  if (ctx.recorder.vertex_bytes() > kMaxRecordVertexBytes) execute_record(ctx);
+}
+
+void end_frame(Context& ctx, bool swap) {
+  if (!ensure_output(ctx)) return;
+  ctx.recorder.seal();
+  ctx.output->end_frame(ctx.recorder.record(), current_drawable(ctx),
+                        ctx.recording_since.elapsed_ms(), ctx.target, swap);
+  start_new_record(ctx);
 }
 
 }  // namespace glpt

@@ -9,14 +9,18 @@
 #include <utility>
 #include <vector>
 
+#include "common/stopwatch.hpp"
 #include "gl_shim/display_lists/display_lists.hpp"
-#include "gl_shim/frame/frame_capture.hpp"
 #include "gl_shim/frame/frame_output.hpp"
+#include "gl_shim/frame/frame_recorder.hpp"
+#include "gl_shim/frame/state_snapshot.hpp"
 #include "gl_shim/geometry/vertex_assembly.hpp"
 #include "gl_shim/gl_commands.hpp"
+#include "gl_shim/state/color_index_state.hpp"
 #include "gl_shim/state/current_attributes.hpp"
 #include "gl_shim/state/enable_state.hpp"
 #include "gl_shim/state/framebuffer_state.hpp"
+#include "gl_shim/state/implementation_limits.hpp"
 #include "gl_shim/state/matrix_stack.hpp"
 #include "gl_shim/state/transform_controls.hpp"
 #include "gl_shim/textures/texture_units.hpp"
@@ -46,24 +50,29 @@ class Context {
   TransformControls transform;
   rec::LightingState lighting;
   TextureUnits textures;
-  rec::RasterState raster;
+  rec::RasterState raster = initial_raster_state();
   rec::PixelTransferState pixel_transfer;
   EnableState enables;  // capabilities without a field in the blocks above
   CurrentAttributes current;
   FramebufferState framebuffer;
+  ColorIndexState color_index;  // kept for queries only (glpt renders RGBA)
   VertexAssembly assembly;
   DisplayListState lists;
 
   // --- the frame --------------------------------------------------------------------------------
-  FrameCapture capture;
-  // The window this context draws to (set by glXMakeCurrent / eglMakeCurrent).
+  // The frame being recorded (commands since the record was last executed) and the snapshots of
+  // the state its commands refer to.
+  FrameRecorder recorder;
+  StateSnapshotter snapshots;
+  Stopwatch recording_since;  // when the current record started (for GLPT_STATS)
+  // The drawable this context draws to (set by glXMakeCurrent / eglMakeCurrent / headless).
   WindowTarget* target = nullptr;
-  std::unique_ptr<FrameOutput> output;    // created on the first frame
+  // The buffers of the drawable the context was first made current with (GLX visual / EGL config):
+  // what GL_DOUBLEBUFFER, GL_*_BITS and the initial draw/read buffers report.
+  rec::DrawableConfig drawable;
+  std::unique_ptr<FrameOutput> output;    // created when the first record is executed
   bool renderer_unavailable = false;      // creation failed: reported once, never retried
   void* window_system_context = nullptr;  // the GLX/EGL context wrapping this one
-  // Something was drawn or cleared since the image was last rendered.
-  bool frame_dirty = false;
-  rt::Frame pending;  // camera, lights and clear colour as last seen by a draw/clear
 
   // --- accounting -------------------------------------------------------------------------------
   std::vector<uint64_t> unimplemented_calls;  // per CommandId
@@ -78,8 +87,17 @@ void set_current_context(Context* ctx);
 // scissor box become the target's size (GL 1.5 2.11.1, 4.1.2).
 void bind_target_and_make_current(Context& ctx, WindowTarget* target);
 
-// Renders what was drawn since the last render, if anything (a read, a swap or glFinish).
-// Returns false if there is no image (no window, or the renderer failed).
-bool render_pending_frame(Context& ctx);
+// Executes the frame record (everything recorded since it was last executed) on the drawable's
+// buffers: at a swap, a read, glFinish/glFlush. Returns false if there is nothing to execute on
+// (no drawable, or no renderer).
+bool execute_record(Context& ctx);
+
+// A primitive or pixel command was recorded: keeps a frame that never ends from growing without
+// bound by executing it early (invisible in raster mode).
+void note_frame_content(Context& ctx);
+
+// The end of a frame (swap, or glFlush/glFinish on a single-buffered drawable): executes the
+// record, then presents and writes PNG/stats (FrameOutput::end_frame).
+void end_frame(Context& ctx, bool swap);
 
 }  // namespace glpt

@@ -61,6 +61,14 @@ RenderSettings parse_render_settings(const std::function<const char*(const char*
     }
   };
   apply(
+      "GLPT_MODE", settings.mode,
+      [](const char* text) -> std::optional<RenderMode> {
+        if (std::strcmp(text, "path") == 0) return RenderMode::kPathTraced;
+        if (std::strcmp(text, "raster") == 0) return RenderMode::kRaster;
+        return std::nullopt;
+      },
+      "path or raster");
+  apply(
       "GLPT_SPP", settings.samples_per_pixel,
       [](const char* text) { return parse_uint(text, 1, kMaxSamplesPerFrame); }, "1..1024");
   apply(

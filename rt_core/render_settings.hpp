@@ -7,7 +7,14 @@
 
 namespace glpt::rt {
 
+// GLPT_MODE: how a frame record becomes pixels.
+enum class RenderMode : uint8_t {
+  kPathTraced,  // "path" (default): traced lighting, with raster pipelines for what is not traced
+  kRaster,      // "raster": GL fixed function on Vulkan graphics pipelines, pixels equal Mesa's
+};
+
 struct RenderSettings {
+  RenderMode mode = RenderMode::kPathTraced;
   // Samples per pixel per frame; GLPT_SPP.
   uint32_t samples_per_pixel = 1;
   // Diffuse bounces after the primary hit; GLPT_BOUNCES (0 = direct light only).

@@ -1,4 +1,8 @@
-// Public entry point of the path tracer: renders a Frame (see frame.hpp) with Vulkan ray queries.
+// rt_core's public entry point: executes frame records (record/frame_record.hpp) on a drawable's
+// buffers, in raster mode (Vulkan pipelines emulating GL fixed function) or path-traced mode.
+//
+// The drawable's buffers (colour front and back, depth, stencil, accumulation) persist between
+// records as GL's do; a record only applies its commands to them. Reads answer from them.
 //
 // Not thread-safe: one Renderer is used by one thread at a time (the GL context's). No exception
 // leaves this API; failures come back as nullptr / false with a message.
@@ -9,36 +13,51 @@
 #include <string>
 #include <vector>
 
-#include "rt_core/frame.hpp"
+#include "rt_core/frame_stats.hpp"
+#include "rt_core/record/frame_record.hpp"
 #include "rt_core/render_settings.hpp"
 
 namespace glpt::rt {
 
-struct FrameStats {
-  // Wall-clock milliseconds per stage (host work, or submit + wait of the GPU work).
-  double upload_ms = 0, blas_ms = 0, tlas_ms = 0, trace_ms = 0, readback_ms = 0;
-  uint32_t blas_builds = 0, blas_reused = 0;
-  // `rays`: rays actually traced this frame (primary + shadow + bounce), counted on the GPU.
-  uint64_t triangles = 0, rays = 0;
-  // Samples per pixel in the image now shown.
-  uint32_t accumulated_samples = 0;
+// What happens at the end of a frame, in the same submission as the record's commands (one
+// round trip into the Vulkan queue per frame instead of three).
+struct FrameEnd {
+  bool swap = false;                           // double-buffered swap: back -> front
+  std::vector<uint8_t>* front_rgba = nullptr;  // read the front buffer (RGBA8, bottom row first)
 };
 
 class Renderer {
  public:
-  // nullptr + one clear message in *error when no Vulkan device with VK_KHR_ray_query and
-  // VK_KHR_acceleration_structure exists (it names what is missing and how to install it).
-  // GLPT_VK_DEVICE=substring selects the device by name.
-  static std::unique_ptr<Renderer> create(const RenderSettings& settings, std::string* error);
+  // nullptr + one clear message in *error when no usable Vulkan device exists (it names what is
+  // missing and how to install it). A device without ray queries gives raster mode, with a
+  // message in *notice. GLPT_VK_DEVICE=substring selects the device by name.
+  static std::unique_ptr<Renderer> create(const RenderSettings& settings, std::string* error,
+                                          std::string* notice = nullptr);
   ~Renderer();
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;
 
-  // Renders `frame` into `rgba` (resized to width*height*4, RGBA8, rows bottom-to-top like
-  // glReadPixels). Returns false (and a message in *error) on a Vulkan failure; never throws.
-  bool render(const Frame& frame, std::vector<uint8_t>& rgba, FrameStats& stats,
-              std::string* error);
+  RenderMode mode() const;
   const std::string& device_name() const;
+
+  // Applies the record's commands to the drawable's buffers. Buffers are (re)created when the
+  // drawable's configuration changes; their contents are then undefined, as after a resize.
+  bool execute(const rec::FrameRecord& record, const rec::DrawableConfig& drawable,
+               FrameStats& stats, std::string* error, const FrameEnd* end = nullptr);
+
+  // A rectangle of a colour buffer (GL_FRONT*, GL_BACK*: the resolved read buffer) as RGBA8,
+  // rows bottom to top; pixels outside the drawable are zero. False before the first execute.
+  bool read_color(uint32_t buffer, int32_t x, int32_t y, uint32_t width, uint32_t height,
+                  std::vector<uint8_t>& rgba, std::string* error);
+  // Window depth in [0, 1] and stencil values of the rectangle; false if the drawable has none.
+  bool read_depth(int32_t x, int32_t y, uint32_t width, uint32_t height, std::vector<float>& depth,
+                  std::string* error);
+  bool read_stencil(int32_t x, int32_t y, uint32_t width, uint32_t height,
+                    std::vector<uint8_t>& stencil, std::string* error);
+
+  // glXSwapBuffers of a double-buffered drawable: the front buffer takes the back buffer's
+  // contents, and the back buffer keeps them (Mesa's software swap does the same).
+  bool swap_buffers(std::string* error);
 
  private:
   class Impl;

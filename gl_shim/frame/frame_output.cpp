@@ -8,7 +8,26 @@
 #include "common/image_io.hpp"
 
 namespace glpt {
-namespace {}  // namespace
+namespace {
+
+void add(rt::FrameStats& sum, const rt::FrameStats& s) {
+  sum.upload_ms += s.upload_ms;
+  sum.blas_ms += s.blas_ms;
+  sum.tlas_ms += s.tlas_ms;
+  sum.trace_ms += s.trace_ms;
+  sum.readback_ms += s.readback_ms;
+  sum.raster_ms += s.raster_ms;
+  sum.blas_builds += s.blas_builds;
+  sum.blas_reused += s.blas_reused;
+  sum.triangles += s.triangles;
+  sum.rays += s.rays;
+  sum.accumulated_samples = s.accumulated_samples;
+  sum.draws += s.draws;
+  sum.pipelines_created += s.pipelines_created;
+  sum.inexpressible += s.inexpressible;
+}
+
+}  // namespace
 
 OutputSettings OutputSettings::from_environment() {
   OutputSettings s;
@@ -28,8 +47,10 @@ OutputSettings OutputSettings::from_environment() {
 }
 
 std::unique_ptr<FrameOutput> FrameOutput::create(std::string* error) {
-  auto renderer = rt::Renderer::create(rt::RenderSettings::from_environment(), error);
+  std::string notice;
+  auto renderer = rt::Renderer::create(rt::RenderSettings::from_environment(), error, &notice);
   if (!renderer) return nullptr;
+  if (!notice.empty()) std::fprintf(stderr, "%s\n", notice.c_str());
   OutputSettings settings = OutputSettings::from_environment();
   if (!settings.png_dir.empty()) {
     std::error_code ec;
@@ -44,56 +65,77 @@ std::unique_ptr<FrameOutput> FrameOutput::create(std::string* error) {
 FrameOutput::FrameOutput(std::unique_ptr<rt::Renderer> renderer, OutputSettings settings)
     : renderer_(std::move(renderer)), settings_(std::move(settings)) {}
 
-bool FrameOutput::render(const rt::Frame& frame, double capture_ms) {
+void FrameOutput::report_failure(const std::string& error) {
+  if (!failure_reported_) std::fprintf(stderr, "%s\n", error.c_str());
+  failure_reported_ = true;
+}
+
+bool FrameOutput::execute(const rec::FrameRecord& record, const rec::DrawableConfig& drawable,
+                          double record_ms) {
   std::string error;
-  last_stats_ = {};
-  last_capture_ms_ = capture_ms;
-  if (!renderer_->render(frame, image_, last_stats_, &error)) {
-    if (!render_failure_reported_) std::fprintf(stderr, "%s\n", error.c_str());
-    render_failure_reported_ = true;
+  rt::FrameStats stats;
+  drawable_ = drawable;
+  record_ms_ += record_ms;
+  if (!renderer_->execute(record, drawable, stats, &error)) {
+    report_failure(error);
     return false;
   }
-  width_ = frame.width;
-  height_ = frame.height;
+  add(frame_stats_, stats);
   return true;
 }
 
-void FrameOutput::swap(WindowTarget* target) {
+void FrameOutput::end_frame(const rec::FrameRecord& record, const rec::DrawableConfig& drawable,
+                            double record_ms, WindowTarget* target, bool swap) {
+  const double frame_ms = since_last_frame_.elapsed_ms();
+  std::string error;
+  rt::FrameStats stats;
+  drawable_ = drawable;
+  record_ms_ += record_ms;
+  const rt::FrameEnd end{swap, &image_};
+  const bool ok = renderer_->execute(record, drawable, stats, &error, &end);
+  if (!ok) report_failure(error);
+  add(frame_stats_, stats);
   const Stopwatch present_timer;
-  const double frame_ms = since_last_swap_.elapsed_ms();
-  if (target && width_ > 0 && height_ > 0) target->present(image_.data(), width_, height_);
+  const uint32_t width = drawable_.width, height = drawable_.height;
+  const bool have_image =
+      ok && width > 0 && height > 0 && image_.size() == size_t{width} * height * 4;
+  if (have_image && target) target->present(image_.data(), width, height);
   const double present_ms = present_timer.elapsed_ms();
 
-  if (!settings_.png_dir.empty() && frame_index_ % settings_.png_every == 0 && width_ > 0) {
+  if (have_image && !settings_.png_dir.empty() && frame_index_ % settings_.png_every == 0) {
     char name[64];
     std::snprintf(name, sizeof name, "frame_%06" PRIu64 ".png", frame_index_);
     // The PNG shows what the window shows: opaque. (glReadPixels still returns GL's alpha.)
-    png_scratch_ = image_;
-    for (size_t i = 3; i < png_scratch_.size(); i += 4) png_scratch_[i] = 255;
-    std::string error;
-    if (!write_png_rgba8(settings_.png_dir + "/" + name, width_, height_, png_scratch_.data(), true,
-                         &error))
+    for (size_t i = 3; i < image_.size(); i += 4) image_[i] = 255;
+    if (!write_png_rgba8(settings_.png_dir + "/" + name, width, height, image_.data(), true,
+                         &error) &&
+        !png_failure_reported_) {
       std::fprintf(stderr, "glpt: %s\n", error.c_str());
+      png_failure_reported_ = true;
+    }
   }
   if (settings_.stats) {
-    const rt::FrameStats& s = last_stats_;
+    const rt::FrameStats& s = frame_stats_;
     const double trace_s = s.trace_ms / 1000.0;
     std::fprintf(stderr,
                  "glpt: frame=%" PRIu64
-                 " size=%ux%u frame_ms=%.2f capture_ms=%.2f upload_ms=%.2f "
+                 " size=%ux%u frame_ms=%.2f capture_ms=%.2f upload_ms=%.2f raster_ms=%.2f "
                  "blas_ms=%.2f tlas_ms=%.2f trace_ms=%.2f readback_ms=%.2f present_ms=%.2f "
-                 "total_ms=%.2f triangles=%" PRIu64 " rays=%" PRIu64
-                 " mrays_per_s=%.3f "
-                 "blas_builds=%u blas_reused=%u spp=%u\n",
-                 frame_index_, width_, height_, frame_ms, last_capture_ms_, s.upload_ms, s.blas_ms,
-                 s.tlas_ms, s.trace_ms, s.readback_ms, present_ms,
-                 last_capture_ms_ + s.upload_ms + s.blas_ms + s.tlas_ms + s.trace_ms +
+                 "total_ms=%.2f draws=%u pipelines_created=%u inexpressible=%u "
+                 "triangles=%" PRIu64 " rays=%" PRIu64
+                 " mrays_per_s=%.3f blas_builds=%u blas_reused=%u spp=%u\n",
+                 frame_index_, width, height, frame_ms, record_ms_, s.upload_ms, s.raster_ms,
+                 s.blas_ms, s.tlas_ms, s.trace_ms, s.readback_ms, present_ms,
+                 record_ms_ + s.upload_ms + s.raster_ms + s.blas_ms + s.tlas_ms + s.trace_ms +
                      s.readback_ms + present_ms,
-                 s.triangles, s.rays, trace_s > 0 ? s.rays / trace_s / 1e6 : 0.0, s.blas_builds,
-                 s.blas_reused, s.accumulated_samples);
+                 s.draws, s.pipelines_created, s.inexpressible, s.triangles, s.rays,
+                 trace_s > 0 ? s.rays / trace_s / 1e6 : 0.0, s.blas_builds, s.blas_reused,
+                 s.accumulated_samples);
   }
+  frame_stats_ = rt::FrameStats();
+  record_ms_ = 0;
   ++frame_index_;
-  since_last_swap_.restart();
+  since_last_frame_.restart();
 }
 
 }  // namespace glpt

@@ -1,5 +1,6 @@
-// The end of a frame: render the captured frame with rt_core, then present it to the window,
-// write it as PNG (GLPT_OUTPUT) and print its statistics (GLPT_STATS).
+// The consumer side of a context's frames: executes frame records with rt_core's Renderer,
+// presents the front buffer to the window, writes it as PNG (GLPT_OUTPUT) and prints statistics
+// (GLPT_STATS).
 #pragma once
 
 #include <cstdint>
@@ -8,12 +9,14 @@
 #include <vector>
 
 #include "common/stopwatch.hpp"
-#include "rt_core/frame.hpp"
+#include "rt_core/frame_stats.hpp"
+#include "rt_core/record/frame_record.hpp"
 #include "rt_core/renderer.hpp"
 
 namespace glpt {
 
-// A window that frames are shown in (an X window through glpt's own X connection).
+// A drawable that frames are shown in (an X window through glpt's own X connection, or a
+// headless surface).
 class WindowTarget {
  public:
   virtual ~WindowTarget() = default;
@@ -21,6 +24,8 @@ class WindowTarget {
   virtual bool query_size(uint32_t* width, uint32_t* height) = 0;
   // `rgba`: width*height RGBA8, rows bottom to top (GL order).
   virtual void present(const uint8_t* rgba, uint32_t width, uint32_t height) = 0;
+  // The buffers the drawable has (GLX visual / EGL config); the size is filled in by the caller.
+  virtual rec::DrawableConfig config() const { return {}; }
 };
 
 struct OutputSettings {
@@ -32,31 +37,35 @@ struct OutputSettings {
 
 class FrameOutput {
  public:
-  // nullptr and a message if no renderer can be created (e.g. no Vulkan ray query).
+  // nullptr and a message if no renderer can be created (e.g. no Vulkan device).
   static std::unique_ptr<FrameOutput> create(std::string* error);
 
-  // Renders `frame`; the result is image(). `capture_ms`: time spent turning GL calls into it.
-  bool render(const rt::Frame& frame, double capture_ms);
-  // A swap: show the last image in `target` (may be null), write the PNG, print stats.
-  void swap(WindowTarget* target);
+  // Applies `record` to the drawable's buffers. `record_ms`: time spent recording it.
+  bool execute(const rec::FrameRecord& record, const rec::DrawableConfig& drawable,
+               double record_ms);
+  // End of a frame: a swap (double-buffered) or glFlush/glFinish of a single-buffered drawable.
+  // Executes the rest of the frame's record, swaps if asked (all in one submission), shows the
+  // front buffer in `target` (may be null), writes the PNG and prints the frame's statistics.
+  void end_frame(const rec::FrameRecord& record, const rec::DrawableConfig& drawable,
+                 double record_ms, WindowTarget* target, bool swap);
 
-  const std::vector<uint8_t>& image() const { return image_; }
-  uint32_t width() const { return width_; }
-  uint32_t height() const { return height_; }
+  rt::Renderer& renderer() { return *renderer_; }
+  const rec::DrawableConfig& drawable() const { return drawable_; }
 
  private:
   FrameOutput(std::unique_ptr<rt::Renderer> renderer, OutputSettings settings);
+  void report_failure(const std::string& error);
 
   std::unique_ptr<rt::Renderer> renderer_;
   OutputSettings settings_;
-  std::vector<uint8_t> image_;
-  std::vector<uint8_t> png_scratch_;
-  uint32_t width_ = 0, height_ = 0;
-  rt::FrameStats last_stats_;
-  double last_capture_ms_ = 0;
+  rec::DrawableConfig drawable_{0, 0};
+  std::vector<uint8_t> image_;  // the front buffer, for presenting
+  rt::FrameStats frame_stats_;  // summed over the records of the frame
+  double record_ms_ = 0;
   uint64_t frame_index_ = 0;
-  bool render_failure_reported_ = false;
-  Stopwatch since_last_swap_;
+  bool failure_reported_ = false;
+  bool png_failure_reported_ = false;
+  Stopwatch since_last_frame_;
 };
 
 }  // namespace glpt

@@ -17,29 +17,51 @@ float clamp01(float v) { return std::clamp(v, 0.0f, 1.0f); }
 
 }  // namespace
 
-// Interim: the colour image of the last render (the frame record and its raster consumer replace
-// this with the drawable's real buffers, depth and stencil included).
-bool read_framebuffer(Context& ctx, rec::PixelKind kind, uint32_t /*buffer*/, int32_t x, int32_t y,
+bool read_framebuffer(Context& ctx, rec::PixelKind kind, uint32_t buffer, int32_t x, int32_t y,
                       uint32_t width, uint32_t height, FramebufferPixels& out) {
   out = FramebufferPixels();
-  if (kind != rec::PixelKind::kColor) return false;
-  if (!render_pending_frame(ctx) || !ctx.output) return false;
-  const std::vector<uint8_t>& img = ctx.output->image();
-  const int64_t fw = ctx.output->width(), fh = ctx.output->height();
-  out.width = width;
-  out.height = height;
-  out.color.assign(size_t{width} * height, glm::vec4(0.0f));
-  out.inside.assign(size_t{width} * height, 0);
-  for (uint32_t j = 0; j < height; ++j) {
-    for (uint32_t i = 0; i < width; ++i) {
-      const int64_t sx = int64_t{x} + i, sy = int64_t{y} + j;
-      if (sx < 0 || sy < 0 || sx >= fw || sy >= fh) continue;
-      const uint8_t* src = &img[static_cast<size_t>((sy * fw + sx) * 4)];
-      const size_t k = size_t{j} * width + i;
-      out.color[k] = glm::vec4(src[0], src[1], src[2], src[3]) / 255.0f;
-      out.inside[k] = 1;
+  if (!execute_record(ctx) || !ctx.output) return false;
+  rt::Renderer& renderer = ctx.output->renderer();
+  const rec::DrawableConfig& drawable = ctx.output->drawable();
+  std::string error;
+  const size_t n = size_t{width} * height;
+  bool ok = false;
+  switch (kind) {
+    case rec::PixelKind::kColor: {
+      std::vector<uint8_t> rgba;
+      ok = renderer.read_color(buffer, x, y, width, height, rgba, &error);
+      if (ok) {
+        out.color.resize(n);
+        for (size_t i = 0; i < n; ++i)
+          out.color[i] =
+              glm::vec4(rgba[4 * i], rgba[4 * i + 1], rgba[4 * i + 2], rgba[4 * i + 3]) / 255.0f;
+      }
+      break;
+    }
+    case rec::PixelKind::kDepth:
+      ok = renderer.read_depth(x, y, width, height, out.depth, &error);
+      break;
+    case rec::PixelKind::kStencil: {
+      std::vector<uint8_t> stencil;
+      ok = renderer.read_stencil(x, y, width, height, stencil, &error);
+      if (ok) out.stencil.assign(stencil.begin(), stencil.end());
+      break;
     }
   }
+  if (!ok) {
+    if (!error.empty()) std::fprintf(stderr, "%s\n", error.c_str());
+    out = FramebufferPixels();
+    return false;
+  }
+  out.width = width;
+  out.height = height;
+  out.inside.assign(n, 0);
+  for (uint32_t j = 0; j < height; ++j)
+    for (uint32_t i = 0; i < width; ++i) {
+      const int64_t sx = int64_t{x} + i, sy = int64_t{y} + j;
+      out.inside[size_t{j} * width + i] =
+          sx >= 0 && sy >= 0 && sx < drawable.width && sy < drawable.height ? 1 : 0;
+    }
   return true;
 }
 
@@ -57,13 +79,15 @@ void glClear(Context& ctx, GLbitfield mask) {
   constexpr GLbitfield kValid =
       GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_ACCUM_BUFFER_BIT;
   if (mask & ~kValid) return record_error(ctx, GL_INVALID_VALUE);
-  if (mask & GL_COLOR_BUFFER_BIT) {
-    // Everything drawn so far is covered by the clear colour (a full-window clear: scissored
-    // clears are not modelled yet).
-    ctx.capture.discard();
-    ctx.pending.clear_color = ctx.framebuffer.clear_color;
-    ctx.frame_dirty = true;
-  }
+  if (mask == 0) return;
+  const FramebufferState& fb = ctx.framebuffer;
+  rec::Clear clear;
+  clear.state = ctx.snapshots.capture(ctx, ctx.recorder.record());
+  clear.mask = mask;
+  clear.color = fb.clear_color;
+  clear.depth = static_cast<float>(fb.clear_depth);
+  clear.stencil = fb.clear_stencil;
+  ctx.recorder.add(clear);
 }
 
 void glViewport(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height) {
@@ -191,8 +215,8 @@ void glPixelStoref(Context& ctx, GLenum pname, GLfloat param) {
 void glFlush(Context&) {}
 
 void glFinish(Context& ctx) {
-  // Rendering is synchronous: finishing means the pending frame is rendered.
-  render_pending_frame(ctx);
+  // Rendering is synchronous: finishing means the recorded commands are executed.
+  execute_record(ctx);
 }
 
 void glHint(Context& ctx, GLenum target, GLenum mode) {

@@ -1,40 +1,25 @@
-// glBegin/glEnd: collects the vertices of the primitive being specified, with the attributes
-// that were current at each glVertex.
+// glBegin/glEnd in progress: the vertices of the primitive being specified, each with the
+// attributes that were current at its glVertex (GL 1.5 2.6, 2.7).
 #pragma once
 
-#include <glm/glm.hpp>
-#include <vector>
+#include <array>
+#include <cstdint>
 
-#include "gl_shim/geometry/triangulate.hpp"
 #include "gl_shim/gl_types.h"
-#include "rt_core/frame.hpp"
+#include "rt_core/record/frame_record.hpp"
 
 namespace glpt {
 
-struct CapturedVertex {
-  glm::vec3 position;  // object space (x/w, y/w, z/w)
-  glm::vec3 normal;    // object space
-  glm::vec4 color;
-  uint32_t material;  // index into VertexAssembly::materials
-};
-
 struct VertexAssembly {
   bool inside = false;
-  GLenum mode = 0;
-  std::vector<CapturedVertex> vertices;
-  // Materials in effect during this primitive (glMaterial may change between vertices).
-  std::vector<rt::Material> materials;
-  uint64_t material_version_seen = ~uint64_t{0};
-  uint64_t dropped_vertices = 0;           // beyond the per-primitive limit
-  std::vector<TriangleIndices> triangles;  // scratch for glEnd, kept to avoid reallocating
-
-  void begin(GLenum primitive_mode) {
-    inside = true;
-    mode = primitive_mode;
-    vertices.clear();
-    materials.clear();
-    material_version_seen = ~uint64_t{0};
-  }
+  rec::StateId state = 0;     // the snapshot the primitive is drawn with (taken at glBegin)
+  uint8_t texture_units = 0;  // bit u: unit u samples a texture, so its coordinates are recorded
+  // glMaterial was called inside this primitive: every vertex records its material. The
+  // vertices before the first call get the material at glBegin.
+  bool per_vertex_material = false;
+  std::array<rec::Material, 2> material_at_begin{};
+  rec::VertexData vertices;       // one value per vertex for every recorded attribute
+  uint64_t dropped_vertices = 0;  // beyond the per-primitive limit
 };
 
 }  // namespace glpt

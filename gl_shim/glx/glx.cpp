@@ -227,11 +227,7 @@ GLPT_EXPORT void glXSwapBuffers(Display* dpy, GLXDrawable drawable) {
   GLXContext ctx = current_glx();
   // Swapping a drawable that is not current here has no GL work of this thread to show.
   if (ctx == nullptr || ctx->drawable != drawable) return;
-  glpt::Context& gl = ctx->gl;
-  glpt::render_pending_frame(gl);
-  if (gl.output) gl.output->swap(gl.target);
-  // After a swap the back buffer's contents are undefined: the next frame starts empty.
-  gl.capture.discard();
+  glpt::end_frame(ctx->gl, /*swap=*/true);
 }
 
 GLPT_EXPORT const char* glXQueryExtensionsString(Display* dpy, int screen) {

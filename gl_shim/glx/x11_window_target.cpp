@@ -6,6 +6,7 @@
 #include <bit>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 
 namespace glpt {
 
@@ -76,9 +77,21 @@ void X11WindowTarget::present(const uint8_t* rgba, uint32_t width, uint32_t heig
   // GL rows run bottom to top, X rows top to bottom; pixels become 32-bit words in the
   // visual's channel layout.
   converted_.resize(size_t{width} * height);
+  // The usual visual (0xRRGGBB words, little-endian server, as on x86 hosts) takes a word-wise
+  // swap of R and B that the compiler vectorizes; any other layout goes channel by channel.
+  const bool rgb_words = red_shift_ == 16 && green_shift_ == 8 && blue_shift_ == 0 && lsb_first_ &&
+                         std::endian::native == std::endian::little;
   for (uint32_t y = 0; y < height; ++y) {
     const uint8_t* src = rgba + size_t{height - 1 - y} * width * 4;
     uint32_t* dst = converted_.data() + size_t{y} * width;
+    if (rgb_words) {
+      std::memcpy(dst, src, size_t{width} * 4);
+      for (uint32_t x = 0; x < width; ++x) {
+        const uint32_t w = dst[x];  // 0xAABBGGRR
+        dst[x] = ((w & 0xFFu) << 16) | (w & 0xFF00u) | ((w >> 16) & 0xFFu);
+      }
+      continue;
+    }
     for (uint32_t x = 0; x < width; ++x, src += 4) {
       uint32_t p = (uint32_t{src[0]} << red_shift_) | (uint32_t{src[1]} << green_shift_) |
                    (uint32_t{src[2]} << blue_shift_);

@@ -17,9 +17,12 @@ void glReadPixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height,
   if (const GLenum e = check_format_and_type(format, type); e != GL_NO_ERROR)
     return record_error(ctx, e);
   const PixelClass kind_of_format = pixel_class(format);
-  // glpt's contexts are RGBA: colour indices cannot be read (GL 1.5 4.3.2). Drawables always
-  // have depth and stencil buffers, so DEPTH_COMPONENT and STENCIL_INDEX are readable.
-  if (kind_of_format == PixelClass::kColorIndex) return record_error(ctx, GL_INVALID_OPERATION);
+  // glpt's contexts are RGBA: colour indices cannot be read (GL 1.5 4.3.2), nor can depth or
+  // stencil values of a drawable without those buffers.
+  if (kind_of_format == PixelClass::kColorIndex ||
+      (kind_of_format == PixelClass::kDepth && ctx.drawable.depth_bits == 0) ||
+      (kind_of_format == PixelClass::kStencilIndex && ctx.drawable.stencil_bits == 0))
+    return record_error(ctx, GL_INVALID_OPERATION);
   const ImageShape shape{width, height, 1, format, type};
   if (shape.groups() > kMaxPixelGroups) return record_error(ctx, GL_OUT_OF_MEMORY);
   const ClientImageLayout layout(ctx.framebuffer.pack, shape, false);

@@ -163,7 +163,12 @@ void set_cap(Context& ctx, GLenum cap, bool on) {
   if (bool* field = flag_field(ctx, cap)) {
     *field = on;
   } else if (BitField b = flag_bit(ctx, cap); b.bits != nullptr) {
+    // Enabling a clip plane makes Mesa derive its clip-space equation, which analyses the
+    // projection matrix (and so decides how later products with it are computed).
+    const bool enabling_clip_plane =
+        on && !(*b.bits & b.mask) && b.bits == &ctx.transform.clip_plane_mask;
     *b.bits = on ? (*b.bits | b.mask) : (*b.bits & ~b.mask);
+    if (enabling_clip_plane) ctx.matrices.projection.top_matrix().analyse();
   } else if (!ctx.enables.set(cap, on)) {
     return record_error(ctx, GL_INVALID_ENUM);
   }

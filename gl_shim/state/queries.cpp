@@ -8,7 +8,7 @@
 #include "gl_shim/context.hpp"
 #include "gl_shim/dispatch.hpp"
 #include "gl_shim/gl_impl_decls.hpp"
-#include "gl_shim/state/state_query.hpp"
+#include "gl_shim/state/query_values.hpp"
 
 namespace glpt {
 namespace {
@@ -84,7 +84,7 @@ bool lookup(const Context& ctx, GLenum pname, Value* out) {
       *out = ints({1 << 20});
       return true;
     case GL_SUBPIXEL_BITS:
-      *out = ints({4});
+      *out = ints({8});  // Mesa llvmpipe's
       return true;
     case GL_AUX_BUFFERS:
       *out = ints({0});
@@ -196,28 +196,32 @@ bool lookup(const Context& ctx, GLenum pname, Value* out) {
     case GL_COLOR_MATERIAL_PARAMETER:
       *out = ints({double(ctx.lighting.color_material_mode)});
       return true;
-    // The framebuffer glpt presents: RGBA8, 24-bit depth, 8-bit stencil, double-buffered.
+    // The drawable's buffers (its GLX visual / EGL config): RGBA8 colour.
     case GL_RED_BITS:
     case GL_GREEN_BITS:
     case GL_BLUE_BITS:
-    case GL_ALPHA_BITS:
       *out = ints({8});
+      return true;
+    case GL_ALPHA_BITS:
+      *out = ints({ctx.drawable.has_alpha ? 8.0 : 0.0});
       return true;
     case GL_DEPTH_BITS:
-      *out = ints({24});
+      *out = ints({double(ctx.drawable.depth_bits)});
       return true;
     case GL_STENCIL_BITS:
-      *out = ints({8});
+      *out = ints({double(ctx.drawable.stencil_bits)});
       return true;
-    case GL_INDEX_BITS:
     case GL_ACCUM_RED_BITS:
     case GL_ACCUM_GREEN_BITS:
     case GL_ACCUM_BLUE_BITS:
     case GL_ACCUM_ALPHA_BITS:
+      *out = ints({double(ctx.drawable.accum_bits)});
+      return true;
+    case GL_INDEX_BITS:
       *out = ints({0});
       return true;
     case GL_DOUBLEBUFFER:
-      *out = boolean(true);
+      *out = boolean(ctx.drawable.double_buffered);
       return true;
     case GL_RGBA_MODE:
       *out = boolean(true);
@@ -229,6 +233,7 @@ bool lookup(const Context& ctx, GLenum pname, Value* out) {
     default:
       break;
   }
+  if (lookup_fixed_function_state(ctx, pname, out)) return true;
   if (lookup_texture_and_pixel_state(ctx, pname, out)) return true;
   if (auto on = capability_enabled(const_cast<Context&>(ctx), pname)) {
     *out = boolean(*on);
@@ -247,17 +252,7 @@ void get(Context& ctx, GLenum pname, T* out) {
     if constexpr (std::is_same_v<T, GLboolean>) {
       out[i] = d != 0.0 ? 1 : 0;
     } else if constexpr (std::is_same_v<T, GLint>) {
-      if (v.kind == Kind::kColor) {
-        // Colours map linearly [-1,1] -> [-2^31, 2^31-1].
-        out[i] = static_cast<GLint>(
-            std::clamp(std::llround((4294967295.0 * d - 1.0) / 2.0),
-                       static_cast<long long>(std::numeric_limits<GLint>::min()),
-                       static_cast<long long>(std::numeric_limits<GLint>::max())));
-      } else {
-        out[i] = static_cast<GLint>(
-            std::clamp(std::llround(d), static_cast<long long>(std::numeric_limits<GLint>::min()),
-                       static_cast<long long>(std::numeric_limits<GLint>::max())));
-      }
+      out[i] = v.kind == Kind::kColor ? query::color_to_int(d) : query::round_to_int(d);
     } else {
       out[i] = static_cast<T>(d);
     }

@@ -7,6 +7,8 @@
 #include "gl_shim/context.hpp"
 #include "gl_shim/dispatch.hpp"
 #include "gl_shim/gl_impl_decls.hpp"
+#include "gl_shim/state/mesa_matrix.hpp"
+#include "gl_shim/state/query_values.hpp"
 #include "gl_shim/state/value_conversions.hpp"
 
 namespace glpt {
@@ -227,8 +229,9 @@ void tex_gen(Context& ctx, GLenum coord, GLenum pname, const T* params, bool vec
       if (pname == GL_OBJECT_PLANE) {
         gen.object_plane = plane;
       } else {
-        // Stored in eye space: the plane times the inverse of the modelview current now.
-        gen.eye_plane = plane * glm::inverse(ctx.matrices.modelview.top());
+        // Stored in eye space: the plane times the inverse of the modelview current now,
+        // computed as Mesa does (its inverse, its row-vector product).
+        gen.eye_plane = transform_row_vector(plane, ctx.matrices.modelview.top_matrix().inverse());
       }
       return;
     }
@@ -308,7 +311,7 @@ void glGetTexEnviv(Context& ctx, GLenum target, GLenum pname, GLint* params) {
   GLint out[4];
   int n = 0;
   const bool ok = get_tex_env(ctx, target, pname, [&](int k, float v, bool color) {
-    out[k] = color ? color_to_int(v) : GLint(std::lround(v));
+    out[k] = color ? query::color_to_int(v) : GLint(std::lround(v));
     n = k + 1;
   });
   if (ok && params != nullptr) std::copy(out, out + n, params);

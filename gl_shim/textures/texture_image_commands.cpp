@@ -249,6 +249,8 @@ void copy_tex_image(Context& ctx, int dims, GLenum target, GLint level, GLenum i
   const InternalFormatInfo* info = internal_format_info(GLint(internal_format));
   if (info == nullptr || internal_format <= 4) return record_error(ctx, GL_INVALID_ENUM);
   if (!legal_dimensions(*t, level, w, h, 1, border)) return record_error(ctx, GL_INVALID_VALUE);
+  if (info->base_format == GL_DEPTH_COMPONENT && ctx.drawable.depth_bits == 0)
+    return record_error(ctx, GL_INVALID_OPERATION);  // nothing to copy depth from
   TextureObject& object = target_object(ctx, *t);
   or_out_of_memory(ctx, [&] {
     std::shared_ptr<rec::TextureImage> img = new_image(*t, GLint(internal_format), w, h, 1, border);
@@ -269,7 +271,10 @@ void copy_tex_sub_image(Context& ctx, int dims, GLenum target, GLint level, GLin
   if (!region_fits(*img, dims, xoff, yoff, zoff, w, dims >= 2 ? h : 1, 1))
     return record_error(ctx, GL_INVALID_VALUE);
   const InternalFormatInfo* info = internal_format_info(GLint(img->internal_format));
-  if (info == nullptr || w == 0 || h == 0) return;
+  if (info == nullptr) return;
+  if (info->base_format == GL_DEPTH_COMPONENT && ctx.drawable.depth_bits == 0)
+    return record_error(ctx, GL_INVALID_OPERATION);
+  if (w == 0 || h == 0) return;
   TextureObject& object = target_object(ctx, *t);
   or_out_of_memory(ctx, [&] {
     const std::vector<uint8_t> texels = texels_from_framebuffer(ctx, *info, x, y, w, h);

@@ -8,6 +8,7 @@
 #include "gl_shim/context.hpp"
 #include "gl_shim/dispatch.hpp"
 #include "gl_shim/gl_impl_decls.hpp"
+#include "gl_shim/state/query_values.hpp"
 #include "gl_shim/state/value_conversions.hpp"
 #include "gl_shim/textures/internal_formats.hpp"
 #include "gl_shim/textures/texture_targets.hpp"
@@ -312,10 +313,10 @@ void glGetTexParameteriv(Context& ctx, GLenum target, GLenum pname, GLint* param
         params[k] = GLint(v.v[size_t(k)]);
         break;
       case ValueKind::kFloat:
-        params[k] = float_to_int(float(v.v[size_t(k)]));
+        params[k] = query::round_to_int(float(v.v[size_t(k)]));
         break;
       case ValueKind::kColor:
-        params[k] = color_to_int(float(v.v[size_t(k)]));
+        params[k] = query::color_to_int(float(v.v[size_t(k)]));
         break;
     }
   }

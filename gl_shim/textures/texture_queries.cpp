@@ -3,7 +3,7 @@
 #include "gl/gl_enums.h"
 #include "gl_shim/context.hpp"
 #include "gl_shim/pixels/pixel_transfer.hpp"
-#include "gl_shim/state/state_query.hpp"
+#include "gl_shim/state/query_values.hpp"
 
 namespace glpt {
 

@@ -9,7 +9,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include "rt_core/frame.hpp"
+#include "rt_core/scene/trace_scene.hpp"
 #include "rt_core/vk/gpu_buffer.hpp"
 #include "rt_core/vk/vk_device.hpp"
 #include "rt_core/vk/vk_raii.hpp"

@@ -1,6 +1,6 @@
-// The top-level acceleration structure: one instance per Frame::Instance, rebuilt (never updated)
-// whenever the instance list changes. Buffers and the AS object are kept and only re-created when
-// the instance count outgrows them.
+// The top-level acceleration structure: one instance per TraceScene::Instance, rebuilt (never
+// updated) whenever the instance list changes. Buffers and the AS object are kept and only
+// re-created when the instance count outgrows them.
 #pragma once
 
 #include <span>

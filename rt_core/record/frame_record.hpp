@@ -61,6 +61,9 @@ struct VertexData {
   std::vector<float> fog_coord;
   std::array<std::vector<glm::vec4>, kMaxTextureUnits> tex_coord;
   std::vector<uint8_t> edge_flag;  // 0 / 1
+  // Only when glMaterial was called between glBegin and glEnd (GL allows it): the front and back
+  // material in effect at each vertex. Empty otherwise: the state snapshot's material applies.
+  std::vector<std::array<Material, 2>> material;
   // Elements -> vertices (empty: element i is vertex i), and the primitives: one range per
   // glBegin/glEnd or per glDrawArrays/Elements call batched into this draw.
   std::vector<uint32_t> indices;

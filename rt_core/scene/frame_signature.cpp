@@ -33,7 +33,7 @@ class WordWriter {
 
 }  // namespace
 
-FrameSignature::FrameSignature(const Frame& frame) : valid_(true) {
+FrameSignature::FrameSignature(const TraceScene& frame) : valid_(true) {
   words_.reserve(64 + frame.lights.size() * 24 + frame.instances.size() * 18);
   WordWriter out(words_);
   out.add(frame.width);

@@ -6,14 +6,14 @@
 #include <cstdint>
 #include <vector>
 
-#include "rt_core/frame.hpp"
+#include "rt_core/scene/trace_scene.hpp"
 
 namespace glpt::rt {
 
 class FrameSignature {
  public:
   FrameSignature() = default;  // equal to no frame's signature
-  explicit FrameSignature(const Frame& frame);
+  explicit FrameSignature(const TraceScene& frame);
 
   bool operator==(const FrameSignature& other) const = default;
 

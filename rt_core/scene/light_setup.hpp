@@ -10,7 +10,7 @@
 #include <span>
 #include <vector>
 
-#include "rt_core/frame.hpp"
+#include "rt_core/scene/trace_scene.hpp"
 #include "shared_types.h"
 
 namespace glpt::rt {

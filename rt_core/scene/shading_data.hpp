@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <span>
 
-#include "rt_core/frame.hpp"
+#include "rt_core/scene/trace_scene.hpp"
 #include "shared_types.h"
 
 namespace glpt::rt {

@@ -16,10 +16,23 @@ constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
 constexpr const char* kInstallHint =
     "On Debian 12 install mesa-vulkan-drivers >= 24.1 from bookworm-backports (lavapipe with "
     "VK_KHR_ray_query), see scripts/setup.sh.";
+}  // namespace
 
-// VK_KHR_deferred_host_operations is required by VK_KHR_acceleration_structure even though all
-// builds run on the queue.
-constexpr const char* kRequiredDeviceExtensions[] = {
+const char* vulkan_install_hint() { return kInstallHint; }
+
+namespace {
+
+// Raster mode: GL's rasterization rules on Vulkan (see docs/architecture.md, "raster parity").
+constexpr const char* kRasterDeviceExtensions[] = {
+    VK_EXT_PROVOKING_VERTEX_EXTENSION_NAME,     // GL's last-vertex convention
+    VK_EXT_LINE_RASTERIZATION_EXTENSION_NAME,   // Bresenham (GL's diamond-exit) lines, stipple
+    VK_EXT_DEPTH_CLIP_CONTROL_EXTENSION_NAME,   // GL's [-1, 1] clip-space depth
+    VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME,      // per-draw textures without descriptor pools
+    VK_EXT_CUSTOM_BORDER_COLOR_EXTENSION_NAME,  // GL's texture border colour
+};
+// Path tracing. VK_KHR_deferred_host_operations is required by VK_KHR_acceleration_structure
+// even though all builds run on the queue.
+constexpr const char* kRayQueryDeviceExtensions[] = {
     VK_KHR_ACCELERATION_STRUCTURE_EXTENSION_NAME,
     VK_KHR_RAY_QUERY_EXTENSION_NAME,
     VK_KHR_DEFERRED_HOST_OPERATIONS_EXTENSION_NAME,
@@ -39,9 +52,22 @@ struct Candidate {
   VkPhysicalDevice device = VK_NULL_HANDLE;
   std::string name;
   VkPhysicalDeviceType type = VK_PHYSICAL_DEVICE_TYPE_OTHER;
-  uint32_t compute_queue_family = UINT32_MAX;
-  std::vector<std::string> missing;  // empty: usable
+  uint32_t queue_family = UINT32_MAX;
+  std::vector<std::string> missing;            // for raster (and anything at all): empty = usable
+  std::vector<std::string> missing_ray_query;  // empty: path tracing possible
+  bool geometry_shader = false;
 };
+
+template <size_t N>
+void require_extensions(const std::vector<VkExtensionProperties>& available,
+                        const char* const (&wanted)[N], std::vector<std::string>& missing) {
+  for (const char* name : wanted) {
+    const bool found = std::any_of(available.begin(), available.end(), [&](const auto& e) {
+      return std::strcmp(e.extensionName, name) == 0;
+    });
+    if (!found) missing.push_back(name);
+  }
+}
 
 Candidate evaluate(VkPhysicalDevice device) {
   Candidate candidate;
@@ -50,32 +76,63 @@ Candidate evaluate(VkPhysicalDevice device) {
   vkGetPhysicalDeviceProperties(device, &properties);
   candidate.name = properties.deviceName;
   candidate.type = properties.deviceType;
-  if (properties.apiVersion < VK_API_VERSION_1_2) candidate.missing.push_back("Vulkan 1.2");
+  if (properties.apiVersion < VK_API_VERSION_1_3) candidate.missing.push_back("Vulkan 1.3");
 
   uint32_t count = 0;
   vkEnumerateDeviceExtensionProperties(device, nullptr, &count, nullptr);
   std::vector<VkExtensionProperties> extensions(count);
   vkEnumerateDeviceExtensionProperties(device, nullptr, &count, extensions.data());
-  for (const char* wanted : kRequiredDeviceExtensions) {
-    bool found = std::any_of(extensions.begin(), extensions.end(), [&](const auto& extension) {
-      return std::strcmp(extension.extensionName, wanted) == 0;
-    });
-    if (!found) candidate.missing.push_back(wanted);
-  }
+  require_extensions(extensions, kRasterDeviceExtensions, candidate.missing);
+  require_extensions(extensions, kRayQueryDeviceExtensions, candidate.missing_ray_query);
   if (!candidate.missing.empty()) return candidate;  // feature structs may not be understood
 
   auto ray_query = make_info<VkPhysicalDeviceRayQueryFeaturesKHR>(
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_QUERY_FEATURES_KHR);
   auto acceleration = make_info<VkPhysicalDeviceAccelerationStructureFeaturesKHR>(
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_FEATURES_KHR, &ray_query);
+  auto provoking = make_info<VkPhysicalDeviceProvokingVertexFeaturesEXT>(
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROVOKING_VERTEX_FEATURES_EXT,
+      candidate.missing_ray_query.empty() ? static_cast<void*>(&acceleration) : nullptr);
+  auto lines = make_info<VkPhysicalDeviceLineRasterizationFeaturesEXT>(
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_LINE_RASTERIZATION_FEATURES_EXT, &provoking);
+  auto depth_clip = make_info<VkPhysicalDeviceDepthClipControlFeaturesEXT>(
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DEPTH_CLIP_CONTROL_FEATURES_EXT, &lines);
+  auto border = make_info<VkPhysicalDeviceCustomBorderColorFeaturesEXT>(
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_CUSTOM_BORDER_COLOR_FEATURES_EXT, &depth_clip);
+  auto vulkan13 = make_info<VkPhysicalDeviceVulkan13Features>(
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES, &border);
   auto vulkan12 = make_info<VkPhysicalDeviceVulkan12Features>(
-      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES, &acceleration);
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES, &vulkan13);
   auto features =
       make_info<VkPhysicalDeviceFeatures2>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &vulkan12);
   vkGetPhysicalDeviceFeatures2(device, &features);
-  if (!vulkan12.bufferDeviceAddress) candidate.missing.push_back("bufferDeviceAddress");
-  if (!acceleration.accelerationStructure) candidate.missing.push_back("accelerationStructure");
-  if (!ray_query.rayQuery) candidate.missing.push_back("rayQuery");
+  const VkPhysicalDeviceFeatures& core = features.features;
+  auto need = [&](bool present, const char* what) {
+    if (!present) candidate.missing.push_back(what);
+  };
+  need(vulkan12.bufferDeviceAddress, "bufferDeviceAddress");
+  need(vulkan13.dynamicRendering, "dynamicRendering");
+  need(vulkan13.synchronization2, "synchronization2");
+  need(vulkan13.maintenance4, "maintenance4");
+  need(core.fillModeNonSolid, "fillModeNonSolid");
+  need(core.wideLines, "wideLines");
+  need(core.largePoints, "largePoints");
+  need(core.logicOp, "logicOp");
+  need(core.shaderClipDistance, "shaderClipDistance");
+  need(core.independentBlend, "independentBlend");
+  need(provoking.provokingVertexLast, "provokingVertexLast");
+  need(lines.bresenhamLines, "bresenhamLines");
+  need(lines.stippledBresenhamLines, "stippledBresenhamLines");
+  need(depth_clip.depthClipControl, "depthClipControl");
+  need(border.customBorderColors, "customBorderColors");
+  need(border.customBorderColorWithoutFormat, "customBorderColorWithoutFormat");
+  // Geometry shaders draw GL's unfilled polygons with edge flags; they also need point sizes.
+  candidate.geometry_shader = core.geometryShader && core.shaderTessellationAndGeometryPointSize;
+  if (candidate.missing_ray_query.empty()) {
+    if (!acceleration.accelerationStructure)
+      candidate.missing_ray_query.push_back("accelerationStructure");
+    if (!ray_query.rayQuery) candidate.missing_ray_query.push_back("rayQuery");
+  }
 
   // The path tracer counts rays with subgroupAdd.
   auto subgroup = make_info<VkPhysicalDeviceSubgroupProperties>(
@@ -85,19 +142,21 @@ Candidate evaluate(VkPhysicalDevice device) {
   vkGetPhysicalDeviceProperties2(device, &properties2);
   if (!(subgroup.supportedStages & VK_SHADER_STAGE_COMPUTE_BIT) ||
       !(subgroup.supportedOperations & VK_SUBGROUP_FEATURE_ARITHMETIC_BIT)) {
-    candidate.missing.push_back("subgroup arithmetic in compute shaders");
+    candidate.missing_ray_query.push_back("subgroup arithmetic in compute shaders");
   }
 
   vkGetPhysicalDeviceQueueFamilyProperties(device, &count, nullptr);
   std::vector<VkQueueFamilyProperties> families(count);
   vkGetPhysicalDeviceQueueFamilyProperties(device, &count, families.data());
+  constexpr VkQueueFlags kWanted = VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT;
   for (uint32_t i = 0; i < count; ++i) {
-    if (families[i].queueFlags & VK_QUEUE_COMPUTE_BIT) {
-      candidate.compute_queue_family = i;
+    if ((families[i].queueFlags & kWanted) == kWanted) {
+      candidate.queue_family = i;
       break;
     }
   }
-  if (candidate.compute_queue_family == UINT32_MAX) candidate.missing.push_back("a compute queue");
+  if (candidate.queue_family == UINT32_MAX)
+    candidate.missing.push_back("a graphics and compute queue");
   return candidate;
 }
 
@@ -110,21 +169,24 @@ std::string join(const std::vector<std::string>& parts, const char* separator) {
   return joined;
 }
 
+// Ranking: usable at all first; then, without a name filter, ray queries, then a CPU device
+// (glpt targets lavapipe, and a machine with both should not silently switch to a GPU with a
+// different look or different bugs).
 const Candidate& choose(const std::vector<Candidate>& candidates, const std::string& name_filter) {
   std::vector<std::string> reasons;
   const Candidate* best = nullptr;
+  auto rank = [&](const Candidate& c) {
+    int r = c.missing_ray_query.empty() ? 2 : 0;
+    if (name_filter.empty() && c.type == VK_PHYSICAL_DEVICE_TYPE_CPU) r += 1;
+    return r;
+  };
   for (const Candidate& candidate : candidates) {
     if (!name_filter.empty() && candidate.name.find(name_filter) == std::string::npos) continue;
     if (!candidate.missing.empty()) {
       reasons.push_back(candidate.name + " lacks " + join(candidate.missing, ", "));
       continue;
     }
-    // Without a filter, prefer a CPU device: glpt targets lavapipe, and a machine with both
-    // should not silently switch to a GPU with a different look or different bugs.
-    bool better =
-        best == nullptr || (name_filter.empty() && candidate.type == VK_PHYSICAL_DEVICE_TYPE_CPU &&
-                            best->type != VK_PHYSICAL_DEVICE_TYPE_CPU);
-    if (better) best = &candidate;
+    if (best == nullptr || rank(candidate) > rank(*best)) best = &candidate;
   }
   if (best != nullptr) return *best;
 
@@ -135,7 +197,7 @@ const Candidate& choose(const std::vector<Candidate>& candidates, const std::str
     message = "GLPT_VK_DEVICE=\"" + name_filter + "\" matches no Vulkan device (devices: " +
               (names.empty() ? std::string("none") : join(names, ", ")) + ").";
   } else {
-    message = "no Vulkan device with VK_KHR_ray_query and VK_KHR_acceleration_structure (" +
+    message = "no usable Vulkan device (" +
               (reasons.empty() ? std::string("no Vulkan devices found") : join(reasons, "; ")) +
               "). " + kInstallHint;
   }
@@ -169,15 +231,16 @@ std::unique_ptr<VulkanDevice> VulkanDevice::create(const DeviceOptions& options)
   auto application = make_info<VkApplicationInfo>(VK_STRUCTURE_TYPE_APPLICATION_INFO);
   application.pApplicationName = "glpt";
   application.pEngineName = "glpt";
-  application.apiVersion = VK_API_VERSION_1_2;
+  application.apiVersion = VK_API_VERSION_1_3;
 
   auto messenger_info = make_info<VkDebugUtilsMessengerCreateInfoEXT>(
       VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT);
   messenger_info.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT |
                                    VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
-  messenger_info.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
-                               VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
-                               VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
+  // Performance hints are left out: they mostly ask for optimal image layouts, and glpt keeps
+  // every image in GENERAL on purpose (gpu_image.hpp).
+  messenger_info.messageType =
+      VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT;
   messenger_info.pfnUserCallback = &VulkanDevice::on_validation_message;
   messenger_info.pUserData = self.get();
 
@@ -208,10 +271,9 @@ std::unique_ptr<VulkanDevice> VulkanDevice::create(const DeviceOptions& options)
   VkInstance instance = VK_NULL_HANDLE;
   VkResult result = vkCreateInstance(&instance_info, nullptr, &instance);
   if (result != VK_SUCCESS) {
-    throw DeviceUnavailable(
-        "glpt: no Vulkan device with VK_KHR_ray_query and VK_KHR_acceleration_structure: cannot "
-        "create a Vulkan instance (" +
-        vk_result_name(result) + "), is a Vulkan driver installed? " + kInstallHint);
+    throw DeviceUnavailable("glpt: no usable Vulkan device: cannot create a Vulkan instance (" +
+                            vk_result_name(result) + "), is a Vulkan driver installed? " +
+                            kInstallHint);
   }
   self->instance_ = vk::Instance(instance, {});
 
@@ -241,29 +303,69 @@ std::unique_ptr<VulkanDevice> VulkanDevice::create(const DeviceOptions& options)
   auto as_properties = make_info<VkPhysicalDeviceAccelerationStructurePropertiesKHR>(
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_PROPERTIES_KHR);
   auto properties = make_info<VkPhysicalDeviceProperties2>(
-      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &as_properties);
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2,
+      chosen.missing_ray_query.empty() ? &as_properties : nullptr);
   vkGetPhysicalDeviceProperties2(chosen.device, &properties);
   self->limits_ = properties.properties.limits;
   self->scratch_alignment_ =
       std::max<VkDeviceSize>(as_properties.minAccelerationStructureScratchOffsetAlignment, 1);
   vkGetPhysicalDeviceMemoryProperties(chosen.device, &self->memory_properties_);
 
-  // ---- logical device: enable exactly what the shaders and builders use
+  // ---- logical device: enable exactly what the shaders, pipelines and builders use
+  self->ray_query_ = chosen.missing_ray_query.empty();
+  self->ray_query_missing_ = join(chosen.missing_ray_query, ", ");
+  self->geometry_shader_ = chosen.geometry_shader;
   auto ray_query = make_info<VkPhysicalDeviceRayQueryFeaturesKHR>(
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_QUERY_FEATURES_KHR);
   ray_query.rayQuery = VK_TRUE;
   auto acceleration = make_info<VkPhysicalDeviceAccelerationStructureFeaturesKHR>(
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_FEATURES_KHR, &ray_query);
   acceleration.accelerationStructure = VK_TRUE;
+  auto provoking = make_info<VkPhysicalDeviceProvokingVertexFeaturesEXT>(
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROVOKING_VERTEX_FEATURES_EXT,
+      self->ray_query_ ? static_cast<void*>(&acceleration) : nullptr);
+  provoking.provokingVertexLast = VK_TRUE;
+  auto lines = make_info<VkPhysicalDeviceLineRasterizationFeaturesEXT>(
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_LINE_RASTERIZATION_FEATURES_EXT, &provoking);
+  lines.bresenhamLines = VK_TRUE;
+  lines.stippledBresenhamLines = VK_TRUE;
+  auto depth_clip = make_info<VkPhysicalDeviceDepthClipControlFeaturesEXT>(
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DEPTH_CLIP_CONTROL_FEATURES_EXT, &lines);
+  depth_clip.depthClipControl = VK_TRUE;
+  auto border = make_info<VkPhysicalDeviceCustomBorderColorFeaturesEXT>(
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_CUSTOM_BORDER_COLOR_FEATURES_EXT, &depth_clip);
+  border.customBorderColors = VK_TRUE;
+  border.customBorderColorWithoutFormat = VK_TRUE;
+  auto vulkan13 = make_info<VkPhysicalDeviceVulkan13Features>(
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES, &border);
+  vulkan13.dynamicRendering = VK_TRUE;
+  vulkan13.synchronization2 = VK_TRUE;
+  // SPIR-V 1.6 (Vulkan 1.3) states compute workgroup sizes with LocalSizeId, which needs this.
+  vulkan13.maintenance4 = VK_TRUE;
   auto vulkan12 = make_info<VkPhysicalDeviceVulkan12Features>(
-      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES, &acceleration);
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES, &vulkan13);
   vulkan12.bufferDeviceAddress = VK_TRUE;
   auto features =
       make_info<VkPhysicalDeviceFeatures2>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &vulkan12);
+  features.features.fillModeNonSolid = VK_TRUE;
+  features.features.wideLines = VK_TRUE;
+  features.features.largePoints = VK_TRUE;
+  features.features.logicOp = VK_TRUE;
+  features.features.shaderClipDistance = VK_TRUE;
+  features.features.independentBlend = VK_TRUE;
+  features.features.geometryShader = chosen.geometry_shader ? VK_TRUE : VK_FALSE;
+  features.features.shaderTessellationAndGeometryPointSize = features.features.geometryShader;
+
+  std::vector<const char*> device_extensions(std::begin(kRasterDeviceExtensions),
+                                             std::end(kRasterDeviceExtensions));
+  if (self->ray_query_) {
+    device_extensions.insert(device_extensions.end(), std::begin(kRayQueryDeviceExtensions),
+                             std::end(kRayQueryDeviceExtensions));
+  }
 
   float priority = 1.0f;
   auto queue_info = make_info<VkDeviceQueueCreateInfo>(VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO);
-  queue_info.queueFamilyIndex = chosen.compute_queue_family;
+  queue_info.queueFamilyIndex = chosen.queue_family;
   queue_info.queueCount = 1;
   queue_info.pQueuePriorities = &priority;
 
@@ -271,12 +373,13 @@ std::unique_ptr<VulkanDevice> VulkanDevice::create(const DeviceOptions& options)
   device_info.pNext = &features;  // pEnabledFeatures stays null when features are chained
   device_info.queueCreateInfoCount = 1;
   device_info.pQueueCreateInfos = &queue_info;
-  device_info.enabledExtensionCount = static_cast<uint32_t>(std::size(kRequiredDeviceExtensions));
-  device_info.ppEnabledExtensionNames = kRequiredDeviceExtensions;
+  device_info.enabledExtensionCount = static_cast<uint32_t>(device_extensions.size());
+  device_info.ppEnabledExtensionNames = device_extensions.data();
   VkDevice device = VK_NULL_HANDLE;
   GLPT_VK_CHECK(vkCreateDevice(chosen.device, &device_info, nullptr, &device));
   self->device_ = vk::Device(device, {});
-  vkGetDeviceQueue(device, chosen.compute_queue_family, 0, &self->queue_);
+  self->queue_family_ = chosen.queue_family;
+  vkGetDeviceQueue(device, chosen.queue_family, 0, &self->queue_);
 
   auto load = [&](const char* name) {
     PFN_vkVoidFunction function = vkGetDeviceProcAddr(device, name);
@@ -284,23 +387,25 @@ std::unique_ptr<VulkanDevice> VulkanDevice::create(const DeviceOptions& options)
       throw VulkanError(std::string("vkGetDeviceProcAddr(") + name + ") failed");
     return function;
   };
-  auto& as = self->as_functions_;
-  as.create = reinterpret_cast<PFN_vkCreateAccelerationStructureKHR>(
-      load("vkCreateAccelerationStructureKHR"));
-  as.destroy = reinterpret_cast<PFN_vkDestroyAccelerationStructureKHR>(
-      load("vkDestroyAccelerationStructureKHR"));
-  as.get_build_sizes = reinterpret_cast<PFN_vkGetAccelerationStructureBuildSizesKHR>(
-      load("vkGetAccelerationStructureBuildSizesKHR"));
-  as.cmd_build = reinterpret_cast<PFN_vkCmdBuildAccelerationStructuresKHR>(
-      load("vkCmdBuildAccelerationStructuresKHR"));
-  as.get_device_address = reinterpret_cast<PFN_vkGetAccelerationStructureDeviceAddressKHR>(
-      load("vkGetAccelerationStructureDeviceAddressKHR"));
+  if (self->ray_query_) {
+    auto& as = self->as_functions_;
+    as.create = reinterpret_cast<PFN_vkCreateAccelerationStructureKHR>(
+        load("vkCreateAccelerationStructureKHR"));
+    as.destroy = reinterpret_cast<PFN_vkDestroyAccelerationStructureKHR>(
+        load("vkDestroyAccelerationStructureKHR"));
+    as.get_build_sizes = reinterpret_cast<PFN_vkGetAccelerationStructureBuildSizesKHR>(
+        load("vkGetAccelerationStructureBuildSizesKHR"));
+    as.cmd_build = reinterpret_cast<PFN_vkCmdBuildAccelerationStructuresKHR>(
+        load("vkCmdBuildAccelerationStructuresKHR"));
+    as.get_device_address = reinterpret_cast<PFN_vkGetAccelerationStructureDeviceAddressKHR>(
+        load("vkGetAccelerationStructureDeviceAddressKHR"));
+  }
 
   // ---- one command buffer + fence, reused by every submit_and_wait
   auto pool_info = make_info<VkCommandPoolCreateInfo>(VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO);
   pool_info.flags =
       VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT | VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
-  pool_info.queueFamilyIndex = chosen.compute_queue_family;
+  pool_info.queueFamilyIndex = chosen.queue_family;
   VkCommandPool pool = VK_NULL_HANDLE;
   GLPT_VK_CHECK(vkCreateCommandPool(device, &pool_info, nullptr, &pool));
   self->command_pool_ = vk::CommandPool(pool, {device});

@@ -1,5 +1,6 @@
-// The Vulkan instance, the chosen physical device, the logical device with ray queries enabled,
-// and one queue with a reusable command buffer for "record, submit, wait" work.
+// The Vulkan instance, the chosen physical device, the logical device (raster features always,
+// ray queries when the device has them), and one graphics+compute queue with a reusable command
+// buffer for "record, submit, wait" work. One per process, shared by every GL context.
 #pragma once
 
 #include <vulkan/vulkan.h>
@@ -13,6 +14,9 @@
 #include "rt_core/vk/vk_raii.hpp"
 
 namespace glpt::rt {
+
+// How to get a Vulkan driver with ray queries on Debian 12 (for messages).
+const char* vulkan_install_hint();
 
 // Thrown by VulkanDevice::create when no usable device exists; the message says what is missing
 // and how to install it.
@@ -47,6 +51,13 @@ class VulkanDevice {
   VulkanDevice& operator=(const VulkanDevice&) = delete;
 
   VkDevice handle() const { return device_.get(); }
+  VkPhysicalDevice physical_device() const { return physical_device_; }
+  uint32_t queue_family() const { return queue_family_; }
+  // Ray queries and acceleration structures (path-traced mode). Without them only raster mode
+  // works; ray_query_missing() names what the device lacks.
+  bool has_ray_query() const { return ray_query_; }
+  const std::string& ray_query_missing() const { return ray_query_missing_; }
+  bool has_geometry_shader() const { return geometry_shader_; }
   const AccelerationStructureFunctions& as_functions() const { return as_functions_; }
   const std::string& name() const { return name_; }
   const VkPhysicalDeviceLimits& limits() const { return limits_; }
@@ -84,6 +95,10 @@ class VulkanDevice {
   vk::CommandPool command_pool_;
   vk::Fence fence_;
   VkQueue queue_ = VK_NULL_HANDLE;
+  uint32_t queue_family_ = 0;
+  bool ray_query_ = false;
+  std::string ray_query_missing_;
+  bool geometry_shader_ = false;
   VkCommandBuffer command_buffer_ = VK_NULL_HANDLE;  // freed with command_pool_
 
   AccelerationStructureFunctions as_functions_;

@@ -88,5 +88,9 @@ using Fence = DeviceChild<VkFence, &vkDestroyFence>;
 using Pipeline = DeviceChild<VkPipeline, &vkDestroyPipeline>;
 using PipelineLayout = DeviceChild<VkPipelineLayout, &vkDestroyPipelineLayout>;
 using ShaderModule = DeviceChild<VkShaderModule, &vkDestroyShaderModule>;
+using Image = DeviceChild<VkImage, &vkDestroyImage>;
+using ImageView = DeviceChild<VkImageView, &vkDestroyImageView>;
+using Sampler = DeviceChild<VkSampler, &vkDestroySampler>;
+using PipelineCache = DeviceChild<VkPipelineCache, &vkDestroyPipelineCache>;
 
 }  // namespace glpt::rt::vk

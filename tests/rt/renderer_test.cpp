@@ -1,7 +1,5 @@
 // Renders of tiny synthetic frames through the public API, checking behaviour that breaks visibly
 // when a part of the tracer (camera, shading, shadow rays, accumulation, caching) is wrong.
-#include "rt_core/renderer.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,6 +7,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <memory>
 #include <string>
+
+#include "rt_core/passes/path_tracer.hpp"
 
 namespace glpt::rt {
 namespace {
@@ -59,8 +59,8 @@ std::shared_ptr<const Geometry> quad(glm::vec3 corner, glm::vec3 u, glm::vec3 v,
   return geometry;
 }
 
-Frame base_frame() {
-  Frame frame;
+TraceScene base_frame() {
+  TraceScene frame;
   frame.width = frame.height = kSize;
   frame.viewport = {0, 0, kSize, kSize};
   frame.projection = glm::perspective(glm::radians(60.0f), 1.0f, 0.1f, 100.0f);
@@ -76,7 +76,7 @@ Light directional_light(glm::vec3 towards_light) {
 }
 
 // Pixel (x, y) where eye-space point p lands with base_frame()'s projection.
-glm::ivec2 project(const Frame& frame, glm::vec3 p) {
+glm::ivec2 project(const TraceScene& frame, glm::vec3 p) {
   glm::vec4 clip = frame.projection * glm::vec4(p, 1.0f);
   glm::vec2 ndc = glm::vec2(clip) / clip.w;
   return glm::ivec2((ndc * 0.5f + 0.5f) * float(kSize));
@@ -90,7 +90,7 @@ class RenderTest : public ::testing::Test {
     settings.samples_per_pixel = 1;
     settings.bounces = 1;
     settings.accumulate = true;
-    renderer_ = Renderer::create(settings, &error_);
+    renderer_ = PathTracer::create(settings, &error_);
   }
   static void TearDownTestSuite() { renderer_.reset(); }
 
@@ -99,7 +99,7 @@ class RenderTest : public ::testing::Test {
     ASSERT_NE(renderer_, nullptr) << error_;
   }
 
-  static Image render(const Frame& frame) {
+  static Image render(const TraceScene& frame) {
     Image image;
     std::string error;
     EXPECT_TRUE(renderer_->render(frame, image.rgba, image.stats, &error)) << error;
@@ -107,15 +107,15 @@ class RenderTest : public ::testing::Test {
     return image;
   }
 
-  static std::unique_ptr<Renderer> renderer_;
+  static std::unique_ptr<PathTracer> renderer_;
   static std::string error_;
 };
 
-std::unique_ptr<Renderer> RenderTest::renderer_;
+std::unique_ptr<PathTracer> RenderTest::renderer_;
 std::string RenderTest::error_;
 
 TEST_F(RenderTest, MissPixelsShowTheClearColour) {
-  Frame frame = base_frame();
+  TraceScene frame = base_frame();
   frame.instances.push_back({quad({-0.5f, -0.5f, -5.0f}, {1, 0, 0}, {0, 1, 0}), glm::mat4(1.0f)});
   frame.lights.push_back(directional_light({0, 0, 1}));
   Image image = render(frame);
@@ -133,7 +133,7 @@ TEST_F(RenderTest, MissPixelsShowTheClearColour) {
 }
 
 TEST_F(RenderTest, PixelsOutsideTheViewportShowTheClearColour) {
-  Frame frame = base_frame();
+  TraceScene frame = base_frame();
   frame.viewport = {16, 16, 32, 32};
   // A quad filling the whole view: every viewport pixel hits it.
   Material unlit;
@@ -153,7 +153,7 @@ TEST_F(RenderTest, PixelsOutsideTheViewportShowTheClearColour) {
 }
 
 TEST_F(RenderTest, UnlitQuadShowsItsExactVertexColour) {
-  Frame frame = base_frame();
+  TraceScene frame = base_frame();
   Material unlit;
   unlit.lit = false;
   frame.instances.push_back(
@@ -171,7 +171,7 @@ TEST_F(RenderTest, UnlitQuadShowsItsExactVertexColour) {
 }
 
 TEST_F(RenderTest, QuadFacingTheLightIsBrighterThanQuadFacingAway) {
-  Frame frame = base_frame();
+  TraceScene frame = base_frame();
   Material white;
   white.diffuse = glm::vec4(0.8f, 0.8f, 0.8f, 1.0f);
   // Same geometry side by side, both seen from the front; the right one's normals point away.
@@ -189,7 +189,7 @@ TEST_F(RenderTest, QuadFacingTheLightIsBrighterThanQuadFacingAway) {
 }
 
 TEST_F(RenderTest, OccluderShadowsThePlaneBehindIt) {
-  Frame frame = base_frame();
+  TraceScene frame = base_frame();
   // A floor at y = -1 lit from straight above, and a small horizontal quad hovering over it.
   frame.instances.push_back({quad({-4, -1, -2}, {8, 0, 0}, {0, 0, -8}), glm::mat4(1.0f)});
   frame.instances.push_back({quad({-0.5f, -0.5f, -4.5f}, {1, 0, 0}, {0, 0, -1}), glm::mat4(1.0f)});
@@ -201,7 +201,7 @@ TEST_F(RenderTest, OccluderShadowsThePlaneBehindIt) {
 }
 
 TEST_F(RenderTest, DefaultLightWhenLitSurfacesHaveNoLight) {
-  Frame frame = base_frame();
+  TraceScene frame = base_frame();
   frame.instances.push_back({quad({-1, -1, -4}, {2, 0, 0}, {0, 2, 0}), glm::mat4(1.0f)});
   Image image = render(frame);
   // Ambient alone would give 0.2 * 0.2 = 0.04 (10); the default light adds 0.8 * N.L.
@@ -212,7 +212,7 @@ TEST_F(RenderTest, PositionalLightIsAttenuatedWithDistance) {
   Material white;
   white.ambient = glm::vec4(0.0f);
   auto render_with_attenuation = [&](float quadratic) {
-    Frame frame = base_frame();
+    TraceScene frame = base_frame();
     frame.global_ambient = glm::vec4(0.0f);
     frame.instances.push_back(
         {quad({-1, -1, -4}, {2, 0, 0}, {0, 2, 0}, glm::vec4(1), white), glm::mat4(1.0f)});
@@ -228,7 +228,7 @@ TEST_F(RenderTest, PositionalLightIsAttenuatedWithDistance) {
 }
 
 TEST_F(RenderTest, OrthographicProjection) {
-  Frame frame = base_frame();
+  TraceScene frame = base_frame();
   frame.projection = glm::ortho(-2.0f, 2.0f, -2.0f, 2.0f, 0.1f, 10.0f);
   Material unlit;
   unlit.lit = false;
@@ -241,7 +241,7 @@ TEST_F(RenderTest, OrthographicProjection) {
 }
 
 TEST_F(RenderTest, AccumulatesUnchangedFramesAndRestartsOnChange) {
-  Frame frame = base_frame();
+  TraceScene frame = base_frame();
   frame.instances.push_back({quad({-1, -1, -4}, {2, 0, 0}, {0, 2, 0}), glm::mat4(1.0f)});
   frame.lights.push_back(directional_light({0, 0, 1}));
   EXPECT_EQ(render(frame).stats.accumulated_samples, 1u);
@@ -257,7 +257,7 @@ TEST_F(RenderTest, AccumulatesUnchangedFramesAndRestartsOnChange) {
 }
 
 TEST_F(RenderTest, ReusesBlasOfUnchangedGeometry) {
-  Frame frame = base_frame();
+  TraceScene frame = base_frame();
   frame.instances.push_back({quad({-1, -1, -4}, {2, 0, 0}, {0, 2, 0}), glm::mat4(1.0f)});
   // A second instance of the same geometry shares its BLAS.
   frame.instances.push_back(
@@ -277,7 +277,7 @@ TEST_F(RenderTest, ReusesBlasOfUnchangedGeometry) {
 TEST_F(RenderTest, ManyInstancesEachFindTheirOwnShadingData) {
   // 8x8 unlit tiles drawn in a scrambled order, each with its own colour: the TLAS reorders
   // instances spatially, and every hit must still reach its own geometry's data.
-  Frame frame = base_frame();
+  TraceScene frame = base_frame();
   frame.projection = glm::ortho(0.0f, 8.0f, 0.0f, 8.0f, 0.1f, 10.0f);
   Material unlit;
   unlit.lit = false;
@@ -299,7 +299,7 @@ TEST_F(RenderTest, ManyInstancesEachFindTheirOwnShadingData) {
 }
 
 TEST_F(RenderTest, EmptyAndDegenerateFramesRenderTheClearColour) {
-  Frame frame = base_frame();
+  TraceScene frame = base_frame();
   Image empty = render(frame);  // no instances: an empty TLAS
   EXPECT_EQ(empty.at(32, 32).b, 153);
   EXPECT_EQ(empty.stats.triangles, 0u);
@@ -327,7 +327,7 @@ TEST_F(RenderTest, EmptyAndDegenerateFramesRenderTheClearColour) {
 }
 
 TEST_F(RenderTest, SpotLightLightsOnlyInsideItsCone) {
-  Frame frame = base_frame();
+  TraceScene frame = base_frame();
   frame.global_ambient = glm::vec4(0.0f);
   Material white;
   white.ambient = glm::vec4(0.0f);
@@ -345,11 +345,11 @@ TEST_F(RenderTest, SpotLightLightsOnlyInsideItsCone) {
 }
 
 TEST_F(RenderTest, MaterialTermsFollowGl) {
-  Frame frame = base_frame();
+  TraceScene frame = base_frame();
   frame.global_ambient = glm::vec4(0.0f);
   frame.lights.push_back(directional_light({0, 0, 1}));  // head-on: N.L = N.H = 1 at the centre
   auto centre_with = [&](const Material& material, glm::vec4 vertex_color) {
-    Frame f = frame;
+    TraceScene f = frame;
     f.instances.push_back(
         {quad({-1, -1, -4}, {2, 0, 0}, {0, 2, 0}, vertex_color, material), glm::mat4(1.0f)});
     return render(f).at(32, 32);
@@ -375,10 +375,10 @@ TEST_F(RenderTest, MaterialTermsFollowGl) {
 }
 
 TEST_F(RenderTest, EvictsBlasUnusedForManyFrames) {
-  Frame first = base_frame();
+  TraceScene first = base_frame();
   first.instances.push_back({quad({-1, -1, -4}, {2, 0, 0}, {0, 2, 0}), glm::mat4(1.0f)});
   EXPECT_EQ(render(first).stats.blas_builds, 1u);
-  Frame other = base_frame();
+  TraceScene other = base_frame();
   other.width = other.height = 8;  // keep the filler frames cheap
   other.viewport = {0, 0, 8, 8};
   other.instances.push_back({quad({-1, -1, -4}, {2, 0, 0}, {0, 2, 0}), glm::mat4(1.0f)});
@@ -391,15 +391,15 @@ TEST_F(RenderTest, EvictsBlasUnusedForManyFrames) {
 }
 
 // Renderers with other settings (cheap to create: lavapipe compiles pipelines in ~50 ms).
-std::unique_ptr<Renderer> make_renderer(RenderSettings settings) {
+std::unique_ptr<PathTracer> make_renderer(RenderSettings settings) {
   settings.validation = RenderSettings::from_environment().validation;
   std::string error;
-  std::unique_ptr<Renderer> renderer = Renderer::create(settings, &error);
+  std::unique_ptr<PathTracer> renderer = PathTracer::create(settings, &error);
   EXPECT_NE(renderer, nullptr) << error;
   return renderer;
 }
 
-Image render_with(Renderer& renderer, const Frame& frame) {
+Image render_with(PathTracer& renderer, const TraceScene& frame) {
   Image image;
   std::string error;
   EXPECT_TRUE(renderer.render(frame, image.rgba, image.stats, &error)) << error;
@@ -407,7 +407,7 @@ Image render_with(Renderer& renderer, const Frame& frame) {
 }
 
 TEST_F(RenderTest, StopsAtMaxAccumulatedAndCanDisableAccumulation) {
-  Frame frame = base_frame();
+  TraceScene frame = base_frame();
   frame.instances.push_back({quad({-1, -1, -4}, {2, 0, 0}, {0, 2, 0}), glm::mat4(1.0f)});
   RenderSettings capped;
   capped.samples_per_pixel = 2;
@@ -433,7 +433,7 @@ TEST_F(RenderTest, StopsAtMaxAccumulatedAndCanDisableAccumulation) {
 TEST_F(RenderTest, DiffuseBounceLightsSurfacesTheLightMisses) {
   // A white floor lit from straight above and a wall standing on it, edge-on to the light: the
   // wall only gets light bounced off the floor.
-  Frame frame = base_frame();
+  TraceScene frame = base_frame();
   frame.global_ambient = glm::vec4(0.0f);
   Material white;
   white.ambient = glm::vec4(0.0f);
@@ -461,7 +461,7 @@ TEST_F(RenderTest, DiffuseBounceLightsSurfacesTheLightMisses) {
 TEST(RenderDeviceSelection, UnknownDeviceNameGivesAClearError) {
   ::setenv("GLPT_VK_DEVICE", "no-such-device-xyz", 1);
   std::string error;
-  std::unique_ptr<Renderer> renderer = Renderer::create(RenderSettings{}, &error);
+  std::unique_ptr<PathTracer> renderer = PathTracer::create(RenderSettings{}, &error);
   ::unsetenv("GLPT_VK_DEVICE");
   EXPECT_EQ(renderer, nullptr);
   EXPECT_NE(error.find("GLPT_VK_DEVICE"), std::string::npos) << error;

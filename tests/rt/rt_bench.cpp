@@ -4,9 +4,9 @@
 //   glpt_rt_bench [--size WxH] [--frames N] [--triangles N] [--instances N] [--png out.png]
 //                 [--moving]
 //
-// Frame 1 includes the BLAS builds; later frames reuse them (and accumulate unless --moving, which
-// changes a transform every frame like an animated GL program). --instances adds N small spheres
-// in random order, like a program drawing many objects with separate draw calls.
+// TraceScene 1 includes the BLAS builds; later frames reuse them (and accumulate unless --moving,
+// which changes a transform every frame like an animated GL program). --instances adds N small
+// spheres in random order, like a program drawing many objects with separate draw calls.
 #include <png.h>
 
 #include <chrono>
@@ -18,13 +18,13 @@
 #include <random>
 #include <string>
 
-#include "rt_core/renderer.hpp"
+#include "rt_core/passes/path_tracer.hpp"
 
 namespace {
 
-using glpt::rt::Frame;
 using glpt::rt::Geometry;
 using glpt::rt::Material;
+using glpt::rt::TraceScene;
 
 std::shared_ptr<Geometry> uv_sphere(int slices, int stacks, glm::vec4 color, uint64_t hash) {
   auto geometry = std::make_shared<Geometry>();
@@ -136,7 +136,8 @@ int main(int argc, char** argv) {
   }
 
   std::string error;
-  auto renderer = glpt::rt::Renderer::create(glpt::rt::RenderSettings::from_environment(), &error);
+  auto renderer =
+      glpt::rt::PathTracer::create(glpt::rt::RenderSettings::from_environment(), &error);
   if (!renderer) {
     std::fprintf(stderr, "%s\n", error.c_str());
     return 1;
@@ -151,7 +152,7 @@ int main(int argc, char** argv) {
   auto small_sphere = uv_sphere(8, 4, glm::vec4(0.2f, 0.8f, 0.3f, 1), 4);
   std::const_pointer_cast<Geometry>(lamp)->materials[0].lit = false;
 
-  Frame frame;
+  TraceScene frame;
   frame.width = width;
   frame.height = height;
   frame.viewport = {0, 0, width, height};

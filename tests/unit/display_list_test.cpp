@@ -1,9 +1,15 @@
+#include <variant>
+
 #include "gl_test_context.hpp"
 
 namespace {
 
-const std::vector<glpt::rt::Instance>& instances(glpt::Context& ctx) {
-  return ctx.capture.instances();
+std::vector<glpt::rec::Draw> draws(glpt::Context& ctx) {
+  ctx.recorder.seal();
+  std::vector<glpt::rec::Draw> out;
+  for (const auto& c : ctx.recorder.record().commands)
+    if (const auto* d = std::get_if<glpt::rec::Draw>(&c)) out.push_back(*d);
+  return out;
 }
 
 TEST_F(GlTest, CompiledListReplaysGeometryAndMaterial) {
@@ -21,25 +27,24 @@ TEST_F(GlTest, CompiledListReplaysGeometryAndMaterial) {
   glEnd();
   glEndList();
   // GL_COMPILE executes nothing.
-  EXPECT_TRUE(instances(ctx_).empty());
+  EXPECT_TRUE(draws(ctx_).empty());
   GLfloat diffuse[4];
   glGetMaterialfv(GL_FRONT, GL_DIFFUSE, diffuse);
   EXPECT_FLOAT_EQ(diffuse[0], 0.8f);  // the default material diffuse
   EXPECT_TRUE(glIsList(list));
 
   glCallList(list);
-  ASSERT_EQ(instances(ctx_).size(), 1u);
-  const auto& g = *instances(ctx_)[0].geometry;
-  ASSERT_EQ(g.triangle_count(), 1u);
-  EXPECT_EQ(g.positions[1], glm::vec3(1, 0, 0));
-  ASSERT_EQ(g.materials.size(), 1u);
-  EXPECT_FLOAT_EQ(g.materials[0].diffuse.r, 0.8f);
-  EXPECT_FLOAT_EQ(g.materials[0].diffuse.g, 0.1f);
-  EXPECT_TRUE(g.materials[0].lit);
+  const auto d = draws(ctx_);
+  ASSERT_EQ(d.size(), 1u);
+  EXPECT_EQ(d[0].vertices->position.at(1), glm::vec4(1, 0, 0, 1));
+  const auto& state = ctx_.recorder.record().states.at(d[0].state);
+  EXPECT_TRUE(state.lighting->enabled);
+  EXPECT_FLOAT_EQ(state.lighting->material[0].diffuse.r, 0.8f);
+  EXPECT_FLOAT_EQ(state.lighting->material[0].diffuse.g, 0.1f);
   EXPECT_EQ(glGetError(), GLenum{GL_NO_ERROR});
 }
 
-TEST_F(GlTest, SameListUnderSameMatrixGivesSameContentHash) {
+TEST_F(GlTest, SameListUnderAnotherMatrixGivesSameGeometry) {
   const GLuint list = glGenLists(1);
   glNewList(list, GL_COMPILE);
   glBegin(GL_QUADS);
@@ -52,12 +57,13 @@ TEST_F(GlTest, SameListUnderSameMatrixGivesSameContentHash) {
   glPushMatrix();
   glCallList(list);
   glPopMatrix();
-  glTranslatef(3, 0, 0);  // a new modelview closes the batch: a second instance
+  glTranslatef(3, 0, 0);  // a new modelview: a second draw
   glCallList(list);
-  const auto& inst = instances(ctx_);
-  ASSERT_EQ(inst.size(), 2u);
-  EXPECT_EQ(inst[0].geometry->content_hash, inst[1].geometry->content_hash);
-  EXPECT_FLOAT_EQ(inst[1].modelview[3][0], 3.0f);
+  const auto d = draws(ctx_);
+  ASSERT_EQ(d.size(), 2u);
+  EXPECT_EQ(d[0].vertices->geometry_key, d[1].vertices->geometry_key);
+  const auto& states = ctx_.recorder.record().states;
+  EXPECT_FLOAT_EQ(states.at(d[1].state).transform->modelview[3][0], 3.0f);
 }
 
 TEST_F(GlTest, CompileAndExecuteRunsImmediately) {

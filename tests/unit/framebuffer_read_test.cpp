@@ -1,9 +1,32 @@
 // glReadPixels, glCopyTexImage and glCopyTexSubImage read the drawable through read_framebuffer:
 // a headless target cleared to a known colour (the renderer reproduces the clear colour exactly).
+#include <cstdlib>
+#include <string>
+
 #include "gl_shim/frame/headless_target.hpp"
 #include "gl_test_context.hpp"
 
 namespace {
+
+// Raster mode: it executes every command, depth and stencil clears included (the path-traced
+// mode is not the subject here).
+class RasterMode {
+ public:
+  RasterMode() {
+    if (const char* old = std::getenv("GLPT_MODE")) saved_ = old;
+    setenv("GLPT_MODE", "raster", 1);
+  }
+  ~RasterMode() {
+    if (saved_.empty()) {
+      unsetenv("GLPT_MODE");
+    } else {
+      setenv("GLPT_MODE", saved_.c_str(), 1);
+    }
+  }
+
+ private:
+  std::string saved_;
+};
 
 class FramebufferReadTest : public GlTest {
  protected:
@@ -17,6 +40,7 @@ class FramebufferReadTest : public GlTest {
     ctx_.target = nullptr;
     GlTest::TearDown();
   }
+  RasterMode raster_mode_;
   glpt::HeadlessTarget target_{8, 8};
 };
 
@@ -73,6 +97,52 @@ TEST_F(FramebufferReadTest, CopyTexImageReadsThroughPixelTransfer) {
   glGetTexImage(GL_TEXTURE_1D, 0, GL_RGBA, GL_UNSIGNED_BYTE, texel);
   EXPECT_EQ(std::vector<int>(texel, texel + 4), (std::vector<int>{100, 50, 30, 255}));
   EXPECT_EQ(glGetError(), GLenum{GL_NO_ERROR});
+}
+
+TEST_F(FramebufferReadTest, ReadPixelsReadsDepthAndStencilThroughTransfer) {
+  glClearDepth(0.5);
+  glClearStencil(5);
+  glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+  GLushort depth16 = 0;
+  glReadPixels(1, 1, 1, 1, GL_DEPTH_COMPONENT, GL_UNSIGNED_SHORT, &depth16);
+  EXPECT_EQ(depth16, 32768);
+  GLfloat depth = 0;
+  glPixelTransferf(GL_DEPTH_SCALE, 0.5f);
+  glPixelTransferf(GL_DEPTH_BIAS, 0.125f);
+  glReadPixels(1, 1, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT, &depth);
+  EXPECT_NEAR(depth, 0.375f, 1e-6f);
+  GLubyte stencil = 0;
+  glReadPixels(1, 1, 1, 1, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, &stencil);
+  EXPECT_EQ(stencil, 5);
+  glPixelTransferi(GL_INDEX_OFFSET, 2);
+  glReadPixels(1, 1, 1, 1, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, &stencil);
+  EXPECT_EQ(stencil, 7);
+  const GLfloat map[8] = {0, 1, 2, 3, 4, 5, 6, 42};
+  glPixelMapfv(GL_PIXEL_MAP_S_TO_S, 8, map);
+  glPixelTransferi(GL_MAP_STENCIL, GL_TRUE);
+  glReadPixels(1, 1, 1, 1, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, &stencil);
+  EXPECT_EQ(stencil, 42);
+  GLubyte bit = 0;  // 42 = 0b101010: the low bit is 0; 7 would give 1
+  glPixelTransferi(GL_MAP_STENCIL, GL_FALSE);
+  glReadPixels(1, 1, 1, 1, GL_STENCIL_INDEX, GL_BITMAP, &bit);
+  EXPECT_EQ(bit, 0x80);
+  EXPECT_EQ(glGetError(), GLenum{GL_NO_ERROR});
+}
+
+TEST_F(GlTest, DepthAndStencilNeedTheBuffers) {
+  glpt::rec::DrawableConfig config;
+  config.depth_bits = 0;
+  config.stencil_bits = 0;
+  glpt::HeadlessTarget target(4, 4, config);
+  glpt::make_current_headless(ctx_, target);
+  GLfloat f[16];
+  glReadPixels(0, 0, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT, f);
+  EXPECT_EQ(glGetError(), GLenum{GL_INVALID_OPERATION});
+  glReadPixels(0, 0, 1, 1, GL_STENCIL_INDEX, GL_FLOAT, f);
+  EXPECT_EQ(glGetError(), GLenum{GL_INVALID_OPERATION});
+  glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, 0, 0, 2, 2, 0);
+  EXPECT_EQ(glGetError(), GLenum{GL_INVALID_OPERATION});
+  ctx_.target = nullptr;
 }
 
 TEST_F(FramebufferReadTest, CopyTexImageErrorsMatchMesa) {

@@ -1,9 +1,8 @@
-// The contract between the GL front end (gl_shim) and the path tracer (rt_core).
-//
-// gl_shim turns one GL frame (everything drawn between two swaps or reads) into a Frame; rt_core
-// renders it. Everything is in GL eye space: the camera sits at the origin looking down -Z, GL
-// lights are already in eye space, and each instance carries the modelview it was drawn with, so
-// a moving camera only changes instance transforms and never geometry contents.
+// The path tracer's scene: triangle geometry in object space with per-instance modelviews, GL
+// lights, one camera. Derived from the frame record by scene_builder.cpp. Everything is in GL eye
+// space: the camera sits at the origin looking down -Z, GL lights are already in eye space, and
+// each instance carries the modelview it was drawn with, so a moving camera only changes
+// instance transforms and never geometry contents.
 #pragma once
 
 #include <cstdint>
@@ -78,7 +77,7 @@ struct Viewport {
   uint32_t width = 0, height = 0;
 };
 
-struct Frame {
+struct TraceScene {
   uint32_t width = 0, height = 0;  // drawable size in pixels
   Viewport viewport;
   glm::mat4 projection{1.0f};  // eye -> clip, for primary rays

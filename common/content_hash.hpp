@@ -1,4 +1,5 @@
-// A fast 64-bit content hash for geometry identity (not cryptographic): BLAS reuse keys on it.
+// A fast 64-bit content hash (not cryptographic): identity of geometry, state and textures across
+// frames (acceleration structures, vertex buffers and pipelines are reused by it).
 #pragma once
 
 #include <cstdint>

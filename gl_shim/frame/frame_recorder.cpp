@@ -1,0 +1,111 @@
+#include "gl_shim/frame/frame_recorder.hpp"
+
+#include <algorithm>
+#include <cstring>
+
+#include "common/content_hash.hpp"
+
+namespace glpt {
+namespace {
+
+// Bitwise equality: the record keeps what GL was given, so -0.0 and 0.0 (or two NaNs) are
+// different values only if their bits differ.
+template <typename T>
+bool all_equal(const std::vector<T>& values) {
+  for (size_t i = 1; i < values.size(); ++i)
+    if (std::memcmp(&values[i], &values[0], sizeof(T)) != 0) return false;
+  return true;
+}
+
+template <typename T>
+void compact(std::vector<T>& values) {
+  if (values.size() > 1 && all_equal(values)) values.resize(1);
+  values.shrink_to_fit();
+}
+
+template <typename T>
+void append(std::vector<T>& to, std::vector<T>& from) {
+  to.insert(to.end(), from.begin(), from.end());
+}
+
+size_t bytes_per_vertex(const rec::VertexData& d) {
+  size_t bytes = sizeof(glm::vec4) * 3 + sizeof(glm::vec3) + sizeof(float) + 1;
+  for (const auto& t : d.tex_coord)
+    if (!t.empty()) bytes += sizeof(glm::vec4);
+  if (!d.material.empty()) bytes += sizeof(d.material[0]);
+  return bytes;
+}
+
+}  // namespace
+
+void finish_vertex_data(rec::VertexData& d) {
+  compact(d.normal);
+  compact(d.color);
+  compact(d.secondary_color);
+  compact(d.fog_coord);
+  for (auto& t : d.tex_coord) compact(t);
+  compact(d.edge_flag);
+  compact(d.material);
+
+  ContentHash geometry;
+  geometry.add_bytes(&d.mode, sizeof d.mode);
+  geometry.add(d.position);
+  geometry.add(d.indices);
+  geometry.add(d.primitives);
+  d.geometry_key = geometry.value();
+
+  ContentHash attributes;
+  attributes.add(d.normal);
+  attributes.add(d.color);
+  attributes.add(d.secondary_color);
+  attributes.add(d.fog_coord);
+  for (const auto& t : d.tex_coord) attributes.add(t);
+  attributes.add(d.edge_flag);
+  attributes.add(d.material);
+  d.attribute_key = attributes.value();
+}
+
+void FrameRecorder::add_primitive(rec::StateId state, rec::VertexData& p) {
+  if (p.position.empty() || p.primitives.size() != 1) return;
+  if (open_ && (open_state_ != state || open_->mode != p.mode ||
+                open_->material.empty() != p.material.empty()))
+    seal();
+  vertex_bytes_ += p.position.size() * bytes_per_vertex(p);
+  if (!open_) {
+    open_ = std::make_unique<rec::VertexData>(std::move(p));
+    open_state_ = state;
+    return;
+  }
+  rec::VertexData& d = *open_;
+  const uint32_t base = d.vertex_count();
+  d.primitives.push_back({base + p.primitives[0].first, p.primitives[0].count});
+  append(d.position, p.position);
+  append(d.normal, p.normal);
+  append(d.color, p.color);
+  append(d.secondary_color, p.secondary_color);
+  append(d.fog_coord, p.fog_coord);
+  for (int u = 0; u < rec::kMaxTextureUnits; ++u) append(d.tex_coord[u], p.tex_coord[u]);
+  append(d.edge_flag, p.edge_flag);
+  append(d.material, p.material);
+}
+
+void FrameRecorder::add(rec::Command command) {
+  seal();
+  record_.commands.push_back(std::move(command));
+}
+
+void FrameRecorder::seal() {
+  if (!open_) return;
+  finish_vertex_data(*open_);
+  record_.commands.push_back(
+      rec::Draw{open_state_, std::shared_ptr<const rec::VertexData>(std::move(open_))});
+  open_.reset();
+}
+
+void FrameRecorder::clear() {
+  record_.clear();
+  open_.reset();
+  vertex_bytes_ = 0;
+}
+
+}  // namespace glpt

@@ -1,0 +1,45 @@
+// Builds the frame record (rt_core/record/frame_record.hpp) from the GL calls of one frame.
+//
+// Consecutive primitives drawn with the same state snapshot and primitive mode are batched into
+// one Draw (one glBegin/glEnd becomes one PrimitiveRange of it), so a display list of thousands
+// of tiny glBegin/glEnd blocks is a handful of draws. A batch stays open, and mutable, until any
+// other command is recorded or the record is sealed; then its attribute arrays are compacted (an
+// attribute that never changed keeps one value) and its identity keys are computed.
+#pragma once
+
+#include <cstddef>
+#include <memory>
+
+#include "rt_core/record/frame_record.hpp"
+
+namespace glpt {
+
+class FrameRecorder {
+ public:
+  // Appends one primitive: `primitive` holds one value per vertex for every attribute it records
+  // and exactly one PrimitiveRange. Its arrays are moved from.
+  void add_primitive(rec::StateId state, rec::VertexData& primitive);
+  // Any other command ends the open batch.
+  void add(rec::Command command);
+  // Completes the open batch; the record is then ready for a consumer.
+  void seal();
+  const rec::FrameRecord& record() const { return record_; }
+  rec::FrameRecord& record() { return record_; }
+  // After the record was executed.
+  void clear();
+  bool empty() const { return record_.empty() && !open_; }
+  // Vertex bytes held by the record (a frame that never ends is executed early past a limit).
+  size_t vertex_bytes() const { return vertex_bytes_; }
+
+ private:
+  rec::FrameRecord record_;
+  std::unique_ptr<rec::VertexData> open_;
+  rec::StateId open_state_ = 0;
+  size_t vertex_bytes_ = 0;
+};
+
+// Shrinks attributes whose values are all equal to one value and computes geometry_key and
+// attribute_key (exposed for tests).
+void finish_vertex_data(rec::VertexData& data);
+
+}  // namespace glpt

@@ -1,0 +1,22 @@
+// What one executed frame record cost, per stage (GLPT_STATS=1 prints it).
+#pragma once
+
+#include <cstdint>
+
+namespace glpt::rt {
+
+struct FrameStats {
+  // Wall-clock milliseconds per stage (host work, or submit + wait of the GPU work).
+  double upload_ms = 0, blas_ms = 0, tlas_ms = 0, trace_ms = 0, readback_ms = 0;
+  double raster_ms = 0;  // raster pipelines (raster mode, and overlays in path-traced mode)
+  uint32_t blas_builds = 0, blas_reused = 0;
+  // `rays`: rays actually traced this frame (primary + shadow + bounce), counted on the GPU.
+  uint64_t triangles = 0, rays = 0;
+  // Samples per pixel in the image now shown.
+  uint32_t accumulated_samples = 0;
+  uint32_t draws = 0;              // Draw commands executed
+  uint32_t pipelines_created = 0;  // raster pipelines compiled for this record (0 once warm)
+  uint32_t inexpressible = 0;      // commands drawn approximately (state raster cannot express)
+};
+
+}  // namespace glpt::rt

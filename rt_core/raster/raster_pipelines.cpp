@@ -1,0 +1,313 @@
+#include "rt_core/raster/raster_pipelines.hpp"
+
+#include <array>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <span>
+#include <vector>
+
+#include "raster_ff_clip_vert_spv.h"
+#include "raster_ff_flat_frag_spv.h"
+#include "raster_ff_smooth_frag_spv.h"
+#include "raster_ff_vert_spv.h"
+#include "raster_types.h"
+#include "raster_unfilled_lines_geom_spv.h"
+#include "raster_unfilled_points_geom_spv.h"
+#include "rt_core/vk/vk_error.hpp"
+#include "rt_core/vk/vk_info.hpp"
+
+namespace glpt::rt {
+namespace {
+
+vk::ShaderModule make_module(VkDevice device, std::span<const uint32_t> spirv) {
+  auto info = make_info<VkShaderModuleCreateInfo>(VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO);
+  info.codeSize = spirv.size_bytes();
+  info.pCode = spirv.data();
+  VkShaderModule module = VK_NULL_HANDLE;
+  GLPT_VK_CHECK(vkCreateShaderModule(device, &info, nullptr, &module));
+  return vk::ShaderModule(module, {device});
+}
+
+std::string pipeline_cache_path(const std::string& device_name) {
+  std::filesystem::path dir;
+  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg)
+    dir = xdg;
+  else if (const char* home = std::getenv("HOME"); home && *home)
+    dir = std::filesystem::path(home) / ".cache";
+  else
+    return {};
+  std::string name = "pipelines-";
+  for (char c : device_name) name += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+  return (dir / "glpt" / (name + ".bin")).string();
+}
+
+std::vector<char> read_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return {};
+  return std::vector<char>(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+}  // namespace
+
+RasterPipelines::RasterPipelines(const VulkanDevice& device) : device_(device) {
+  VkDevice dev = device.handle();
+  // Set 0: the per-state uniforms and one combined image sampler per unit and texture kind,
+  // written with push descriptors per draw.
+  std::vector<VkDescriptorSetLayoutBinding> bindings;
+  bindings.push_back({GLPT_RASTER_BINDING_STATES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1,
+                      VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, nullptr});
+  for (uint32_t i = 0; i < 4 * GLPT_RASTER_MAX_UNITS; ++i)
+    bindings.push_back({GLPT_RASTER_BINDING_TEXTURES + i, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                        1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr});
+  const VkShaderStageFlags geometry =
+      device.has_geometry_shader() ? VK_SHADER_STAGE_GEOMETRY_BIT : 0;
+  bindings.push_back({GLPT_RASTER_BINDING_EDGES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1,
+                      VK_SHADER_STAGE_VERTEX_BIT | geometry, nullptr});
+  bindings[0].stageFlags |= geometry;
+  auto set_info = make_info<VkDescriptorSetLayoutCreateInfo>(
+      VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO);
+  set_info.flags = VK_DESCRIPTOR_SET_LAYOUT_CREATE_PUSH_DESCRIPTOR_BIT_KHR;
+  set_info.bindingCount = static_cast<uint32_t>(bindings.size());
+  set_info.pBindings = bindings.data();
+  VkDescriptorSetLayout set_layout = VK_NULL_HANDLE;
+  GLPT_VK_CHECK(vkCreateDescriptorSetLayout(dev, &set_info, nullptr, &set_layout));
+  set_layout_ = vk::DescriptorSetLayout(set_layout, {dev});
+
+  push_stages_ = VK_SHADER_STAGE_VERTEX_BIT | geometry | VK_SHADER_STAGE_FRAGMENT_BIT;
+  VkPushConstantRange push{push_stages_, 0, sizeof(gpu::RasterPushConstants)};
+  auto layout_info =
+      make_info<VkPipelineLayoutCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO);
+  layout_info.setLayoutCount = 1;
+  layout_info.pSetLayouts = &set_layout;
+  layout_info.pushConstantRangeCount = 1;
+  layout_info.pPushConstantRanges = &push;
+  VkPipelineLayout layout = VK_NULL_HANDLE;
+  GLPT_VK_CHECK(vkCreatePipelineLayout(dev, &layout_info, nullptr, &layout));
+  layout_ = vk::PipelineLayout(layout, {dev});
+
+  vertex_ = make_module(dev, raster_ff_vert_spv);
+  vertex_clip_ = make_module(dev, raster_ff_clip_vert_spv);
+  fragment_smooth_ = make_module(dev, raster_ff_smooth_frag_spv);
+  fragment_flat_ = make_module(dev, raster_ff_flat_frag_spv);
+  if (device.has_geometry_shader()) {
+    unfilled_lines_ = make_module(dev, raster_unfilled_lines_geom_spv);
+    unfilled_points_ = make_module(dev, raster_unfilled_points_geom_spv);
+  }
+
+  cache_path_ = pipeline_cache_path(device.name());
+  std::vector<char> data = cache_path_.empty() ? std::vector<char>() : read_file(cache_path_);
+  auto cache_info =
+      make_info<VkPipelineCacheCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_CACHE_CREATE_INFO);
+  cache_info.initialDataSize = data.size();
+  cache_info.pInitialData = data.empty() ? nullptr : data.data();
+  VkPipelineCache cache = VK_NULL_HANDLE;
+  // A stale or corrupt cache file is the driver's to reject; start empty then.
+  if (vkCreatePipelineCache(dev, &cache_info, nullptr, &cache) != VK_SUCCESS) {
+    cache_info.initialDataSize = 0;
+    cache_info.pInitialData = nullptr;
+    GLPT_VK_CHECK(vkCreatePipelineCache(dev, &cache_info, nullptr, &cache));
+  }
+  cache_ = vk::PipelineCache(cache, {dev});
+}
+
+RasterPipelines::~RasterPipelines() {
+  if (cache_path_.empty() || !cache_) return;
+  size_t size = 0;
+  if (vkGetPipelineCacheData(device_.handle(), cache_.get(), &size, nullptr) != VK_SUCCESS) return;
+  std::vector<char> data(size);
+  if (vkGetPipelineCacheData(device_.handle(), cache_.get(), &size, data.data()) != VK_SUCCESS)
+    return;
+  // Written to a temporary name and renamed, so concurrent processes never read half a file.
+  std::error_code ec;
+  std::filesystem::create_directories(std::filesystem::path(cache_path_).parent_path(), ec);
+  const std::string temporary = cache_path_ + "." + std::to_string(::getpid()) + ".tmp";
+  {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    if (!out) return;
+    out.write(data.data(), static_cast<std::streamsize>(size));
+  }
+  std::filesystem::rename(temporary, cache_path_, ec);
+  if (ec) std::filesystem::remove(temporary, ec);
+}
+
+VkPipeline RasterPipelines::get(const PipelineKey& key, bool* created) {
+  auto it = pipelines_.find(key);
+  if (it != pipelines_.end()) {
+    if (created) *created = false;
+    return it->second.get();
+  }
+  VkPipeline pipeline = create(key);
+  pipelines_.emplace(key, vk::Pipeline(pipeline, {device_.handle()}));
+  if (created) *created = true;
+  return pipeline;
+}
+
+VkPipeline RasterPipelines::create(const PipelineKey& key) {
+  std::array<VkSpecializationMapEntry, PipelineKey::kConstants> entries;
+  for (uint32_t i = 0; i < PipelineKey::kConstants; ++i)
+    entries[i] = {i, static_cast<uint32_t>(i * sizeof(uint32_t)), sizeof(uint32_t)};
+  VkSpecializationInfo specialization{PipelineKey::kConstants, entries.data(), sizeof key.constants,
+                                      key.constants};
+  std::array<VkPipelineShaderStageCreateInfo, 3> stages{};
+  stages[0] = make_info<VkPipelineShaderStageCreateInfo>(
+      VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO);
+  stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
+  stages[0].module = key.clip_variant ? vertex_clip_.get() : vertex_.get();
+  stages[0].pName = "main";
+  stages[0].pSpecializationInfo = &specialization;
+  stages[1] = stages[0];
+  stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
+  stages[1].module = key.flat ? fragment_flat_.get() : fragment_smooth_.get();
+  uint32_t stage_count = 2;
+  if (key.unfilled != 0 && unfilled_lines_) {
+    stages[2] = stages[0];
+    stages[2].stage = VK_SHADER_STAGE_GEOMETRY_BIT;
+    stages[2].module = key.unfilled == 1 ? unfilled_lines_.get() : unfilled_points_.get();
+    stage_count = 3;
+  }
+
+  // One binding per attribute; strides are dynamic (0 for an attribute with one value).
+  struct Attribute {
+    uint32_t location;
+    VkFormat format;
+  };
+  const Attribute attributes[] = {
+      {GLPT_RASTER_ATTR_POSITION, VK_FORMAT_R32G32B32A32_SFLOAT},
+      {GLPT_RASTER_ATTR_NORMAL, VK_FORMAT_R32G32B32_SFLOAT},
+      {GLPT_RASTER_ATTR_COLOR, VK_FORMAT_R32G32B32A32_SFLOAT},
+      {GLPT_RASTER_ATTR_SECONDARY, VK_FORMAT_R32G32B32A32_SFLOAT},
+      {GLPT_RASTER_ATTR_FOG, VK_FORMAT_R32_SFLOAT},
+      {GLPT_RASTER_ATTR_TEXCOORD0 + 0, VK_FORMAT_R32G32B32A32_SFLOAT},
+      {GLPT_RASTER_ATTR_TEXCOORD0 + 1, VK_FORMAT_R32G32B32A32_SFLOAT},
+      {GLPT_RASTER_ATTR_TEXCOORD0 + 2, VK_FORMAT_R32G32B32A32_SFLOAT},
+      {GLPT_RASTER_ATTR_TEXCOORD0 + 3, VK_FORMAT_R32G32B32A32_SFLOAT},
+  };
+  std::vector<VkVertexInputBindingDescription> binding_descriptions;
+  std::vector<VkVertexInputAttributeDescription> attribute_descriptions;
+  for (const Attribute& a : attributes) {
+    binding_descriptions.push_back({a.location, 16, VK_VERTEX_INPUT_RATE_VERTEX});
+    attribute_descriptions.push_back({a.location, a.location, a.format, 0});
+  }
+  auto vertex_input = make_info<VkPipelineVertexInputStateCreateInfo>(
+      VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO);
+  vertex_input.vertexBindingDescriptionCount = static_cast<uint32_t>(binding_descriptions.size());
+  vertex_input.pVertexBindingDescriptions = binding_descriptions.data();
+  vertex_input.vertexAttributeDescriptionCount =
+      static_cast<uint32_t>(attribute_descriptions.size());
+  vertex_input.pVertexAttributeDescriptions = attribute_descriptions.data();
+
+  const auto topology = static_cast<RasterTopology>(key.topology);
+  auto input_assembly = make_info<VkPipelineInputAssemblyStateCreateInfo>(
+      VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO);
+  input_assembly.topology = topology == RasterTopology::kPoints  ? VK_PRIMITIVE_TOPOLOGY_POINT_LIST
+                            : topology == RasterTopology::kLines ? VK_PRIMITIVE_TOPOLOGY_LINE_LIST
+                            : topology == RasterTopology::kLineStrip
+                                ? VK_PRIMITIVE_TOPOLOGY_LINE_STRIP
+                                : VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+  // Several GL line strips in one draw are separated by restart indices.
+  input_assembly.primitiveRestartEnable = topology == RasterTopology::kLineStrip;
+
+  // GL's clip-space depth is [-1, 1].
+  auto depth_clip = make_info<VkPipelineViewportDepthClipControlCreateInfoEXT>(
+      VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_DEPTH_CLIP_CONTROL_CREATE_INFO_EXT);
+  depth_clip.negativeOneToOne = VK_TRUE;
+  auto viewport = make_info<VkPipelineViewportStateCreateInfo>(
+      VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO, &depth_clip);
+  viewport.viewportCount = 1;
+  viewport.scissorCount = 1;
+
+  // GL's provoking vertex is the last one (the decomposition orders triangles for it).
+  auto provoking = make_info<VkPipelineRasterizationProvokingVertexStateCreateInfoEXT>(
+      VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_PROVOKING_VERTEX_STATE_CREATE_INFO_EXT);
+  provoking.provokingVertexMode = VK_PROVOKING_VERTEX_MODE_LAST_VERTEX_EXT;
+  auto line_state = make_info<VkPipelineRasterizationLineStateCreateInfoEXT>(
+      VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_LINE_STATE_CREATE_INFO_EXT, &provoking);
+  line_state.lineRasterizationMode = static_cast<VkLineRasterizationModeEXT>(key.line_mode);
+  line_state.stippledLineEnable = key.line_stipple;
+  line_state.lineStippleFactor = 1;
+  line_state.lineStipplePattern = 0xFFFF;
+  auto rasterization = make_info<VkPipelineRasterizationStateCreateInfo>(
+      VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO, &line_state);
+  rasterization.polygonMode = static_cast<VkPolygonMode>(key.polygon_mode);
+  rasterization.lineWidth = 1.0f;
+
+  auto multisample = make_info<VkPipelineMultisampleStateCreateInfo>(
+      VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO);
+  multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
+
+  auto depth_stencil = make_info<VkPipelineDepthStencilStateCreateInfo>(
+      VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO);
+
+  VkPipelineColorBlendAttachmentState blend{};
+  blend.blendEnable = key.blend;
+  blend.srcColorBlendFactor = static_cast<VkBlendFactor>(key.blend_src_rgb);
+  blend.dstColorBlendFactor = static_cast<VkBlendFactor>(key.blend_dst_rgb);
+  blend.colorBlendOp = static_cast<VkBlendOp>(key.blend_op_rgb);
+  blend.srcAlphaBlendFactor = static_cast<VkBlendFactor>(key.blend_src_alpha);
+  blend.dstAlphaBlendFactor = static_cast<VkBlendFactor>(key.blend_dst_alpha);
+  blend.alphaBlendOp = static_cast<VkBlendOp>(key.blend_op_alpha);
+  blend.colorWriteMask = key.color_write_mask;
+  const std::array<VkPipelineColorBlendAttachmentState, 2> blends{blend, blend};
+  auto color_blend = make_info<VkPipelineColorBlendStateCreateInfo>(
+      VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO);
+  color_blend.logicOpEnable = key.logic_op_enable;
+  color_blend.logicOp = static_cast<VkLogicOp>(key.logic_op);
+  color_blend.attachmentCount = key.attachments;
+  color_blend.pAttachments = blends.data();
+
+  const VkDynamicState dynamic_states[] = {
+      VK_DYNAMIC_STATE_VIEWPORT,
+      VK_DYNAMIC_STATE_SCISSOR,
+      VK_DYNAMIC_STATE_LINE_WIDTH,
+      VK_DYNAMIC_STATE_DEPTH_BIAS,
+      VK_DYNAMIC_STATE_BLEND_CONSTANTS,
+      VK_DYNAMIC_STATE_STENCIL_COMPARE_MASK,
+      VK_DYNAMIC_STATE_STENCIL_WRITE_MASK,
+      VK_DYNAMIC_STATE_STENCIL_REFERENCE,
+      VK_DYNAMIC_STATE_CULL_MODE,
+      VK_DYNAMIC_STATE_FRONT_FACE,
+      VK_DYNAMIC_STATE_DEPTH_TEST_ENABLE,
+      VK_DYNAMIC_STATE_DEPTH_WRITE_ENABLE,
+      VK_DYNAMIC_STATE_DEPTH_COMPARE_OP,
+      VK_DYNAMIC_STATE_STENCIL_TEST_ENABLE,
+      VK_DYNAMIC_STATE_STENCIL_OP,
+      VK_DYNAMIC_STATE_DEPTH_BIAS_ENABLE,
+      VK_DYNAMIC_STATE_VERTEX_INPUT_BINDING_STRIDE,
+      VK_DYNAMIC_STATE_LINE_STIPPLE_EXT,
+  };
+  auto dynamic = make_info<VkPipelineDynamicStateCreateInfo>(
+      VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO);
+  dynamic.dynamicStateCount = static_cast<uint32_t>(std::size(dynamic_states));
+  dynamic.pDynamicStates = dynamic_states;
+
+  const std::array<VkFormat, 2> color_formats{kColorFormat, kColorFormat};
+  auto rendering =
+      make_info<VkPipelineRenderingCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO);
+  rendering.colorAttachmentCount = key.attachments;
+  rendering.pColorAttachmentFormats = color_formats.data();
+  rendering.depthAttachmentFormat = kDepthStencilFormat;
+  rendering.stencilAttachmentFormat = kDepthStencilFormat;
+
+  auto info = make_info<VkGraphicsPipelineCreateInfo>(
+      VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO, &rendering);
+  info.stageCount = stage_count;
+  info.pStages = stages.data();
+  info.pVertexInputState = &vertex_input;
+  info.pInputAssemblyState = &input_assembly;
+  info.pViewportState = &viewport;
+  info.pRasterizationState = &rasterization;
+  info.pMultisampleState = &multisample;
+  info.pDepthStencilState = &depth_stencil;
+  info.pColorBlendState = &color_blend;
+  info.pDynamicState = &dynamic;
+  info.layout = layout_.get();
+  VkPipeline pipeline = VK_NULL_HANDLE;
+  GLPT_VK_CHECK(
+      vkCreateGraphicsPipelines(device_.handle(), cache_.get(), 1, &info, nullptr, &pipeline));
+  return pipeline;
+}
+
+}  // namespace glpt::rt

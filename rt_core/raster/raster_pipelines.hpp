@@ -1,0 +1,50 @@
+// The fixed-function raster pipelines: one VkPipeline per PipelineKey, compiled on first use and
+// kept (no pipeline is compiled per draw once a program's states have been seen). Compiled
+// pipelines also go to a VkPipelineCache that is loaded from and saved to disk
+// ($XDG_CACHE_HOME/glpt or ~/.cache/glpt), so a program's second run compiles nothing either.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <string>
+#include <unordered_map>
+
+#include "rt_core/raster/pipeline_key.hpp"
+#include "rt_core/vk/vk_device.hpp"
+#include "rt_core/vk/vk_raii.hpp"
+
+namespace glpt::rt {
+
+inline constexpr VkFormat kColorFormat = VK_FORMAT_R8G8B8A8_UNORM;
+inline constexpr VkFormat kDepthStencilFormat = VK_FORMAT_D24_UNORM_S8_UINT;
+
+class RasterPipelines {
+ public:
+  explicit RasterPipelines(const VulkanDevice& device);
+  ~RasterPipelines();  // saves the pipeline cache
+  RasterPipelines(const RasterPipelines&) = delete;
+  RasterPipelines& operator=(const RasterPipelines&) = delete;
+
+  // The pipeline for `key`, compiled now if it is new (`created` says so). Throws VulkanError.
+  VkPipeline get(const PipelineKey& key, bool* created);
+
+  VkPipelineLayout layout() const { return layout_.get(); }
+  VkDescriptorSetLayout set_layout() const { return set_layout_.get(); }
+  VkShaderStageFlags push_constant_stages() const { return push_stages_; }
+  size_t size() const { return pipelines_.size(); }
+
+ private:
+  VkPipeline create(const PipelineKey& key);
+
+  const VulkanDevice& device_;
+  vk::DescriptorSetLayout set_layout_;
+  vk::PipelineLayout layout_;
+  vk::ShaderModule vertex_, vertex_clip_, fragment_smooth_, fragment_flat_;
+  vk::ShaderModule unfilled_lines_, unfilled_points_;  // null without geometry shaders
+  VkShaderStageFlags push_stages_ = 0;
+  vk::PipelineCache cache_;
+  std::string cache_path_;
+  std::unordered_map<PipelineKey, vk::Pipeline, PipelineKeyHash> pipelines_;
+};
+
+}  // namespace glpt::rt

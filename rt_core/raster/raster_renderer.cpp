@@ -1,0 +1,711 @@
+#include "rt_core/raster/raster_renderer.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <unordered_set>
+
+#include "common/stopwatch.hpp"
+#include "raster_types.h"
+#include "rt_core/raster/state_uniforms.hpp"
+#include "rt_core/vk/vk_error.hpp"
+#include "rt_core/vk/vk_info.hpp"
+
+namespace glpt::rt {
+namespace {
+
+constexpr uint32_t kRestartIndex = 0xFFFFFFFFu;
+
+template <typename T>
+T load_device_function(const VulkanDevice& device, const char* name) {
+  auto f = reinterpret_cast<T>(vkGetDeviceProcAddr(device.handle(), name));
+  if (f == nullptr) throw VulkanError(std::string("vkGetDeviceProcAddr(") + name + ") failed");
+  return f;
+}
+
+bool finite(const glm::vec4& v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && std::isfinite(v.w);
+}
+
+// Appends values to the per-record upload buffer, 16-byte aligned.
+class Arena {
+ public:
+  explicit Arena(std::vector<uint8_t>& bytes) : bytes_(bytes) { bytes_.clear(); }
+  template <typename T>
+  VkDeviceSize add(const T* data, size_t count) {
+    const size_t offset = (bytes_.size() + 15) & ~size_t{15};
+    bytes_.resize(offset + count * sizeof(T));
+    if (count > 0) std::memcpy(bytes_.data() + offset, data, count * sizeof(T));
+    return offset;
+  }
+  size_t size() const { return bytes_.size(); }
+
+ private:
+  std::vector<uint8_t>& bytes_;
+};
+
+VkRect2D intersect_with_framebuffer(int32_t x, int32_t y, int32_t w, int32_t h,
+                                    const rec::DrawableConfig& d) {
+  const int64_t x0 = std::clamp<int64_t>(x, 0, d.width), y0 = std::clamp<int64_t>(y, 0, d.height);
+  const int64_t x1 = std::clamp<int64_t>(int64_t{x} + std::max(w, 0), 0, d.width);
+  const int64_t y1 = std::clamp<int64_t>(int64_t{y} + std::max(h, 0), 0, d.height);
+  return {{static_cast<int32_t>(x0), static_cast<int32_t>(y0)},
+          {static_cast<uint32_t>(x1 - x0), static_cast<uint32_t>(y1 - y0)}};
+}
+
+VkRect2D scissor_of(const rec::FragmentOpsState& ops, const rec::DrawableConfig& d) {
+  if (!ops.scissor_test) return {{0, 0}, {d.width, d.height}};
+  return intersect_with_framebuffer(ops.scissor_box[0], ops.scissor_box[1], ops.scissor_box[2],
+                                    ops.scissor_box[3], d);
+}
+
+}  // namespace
+
+// Where one draw's attributes and indices are in the upload buffer.
+struct RasterRenderer::DrawGeometry {
+  std::array<VkDeviceSize, GLPT_RASTER_ATTR_COUNT> offsets{};
+  std::array<VkDeviceSize, GLPT_RASTER_ATTR_COUNT> strides{};
+  VkDeviceSize index_offset = 0;
+  uint32_t index_count = 0;
+  VkDeviceSize edge_offset = 0;  // unfilled draws: per-triangle boundary-edge masks
+  RasterTopology topology = RasterTopology::kTriangles;
+};
+
+struct RasterRenderer::Recording {
+  VkCommandBuffer cmd = VK_NULL_HANDLE;
+  const rec::FrameRecord* record = nullptr;
+  FrameStats* stats = nullptr;
+  std::vector<DrawGeometry> geometry;  // per command index (draws only)
+  std::vector<uint32_t> clear_state;   // per command index: the state entry of a quad clear
+  DrawGeometry clear_geometry;
+  bool rendering = false;
+  ColorTargets targets = ColorTargets::kBack;
+  VkPipeline bound_pipeline = VK_NULL_HANDLE;
+  // Texture descriptors currently pushed, per binding (to skip redundant pushes).
+  std::array<VkImageView, 4 * GLPT_RASTER_MAX_UNITS> bound_views{};
+  bool descriptors_pushed = false;
+  // Dynamic state last set in this command buffer.
+  bool dynamic_valid = false;
+  DynamicDrawState dynamic;
+  VkViewport viewport{};
+  VkRect2D scissor{};
+};
+
+RasterRenderer::RasterRenderer(std::shared_ptr<VulkanDevice> device)
+    : device_(std::move(device)), pipelines_(*device_), textures_(*device_) {
+  push_descriptor_set_ =
+      load_device_function<PFN_vkCmdPushDescriptorSetKHR>(*device_, "vkCmdPushDescriptorSetKHR");
+  set_line_stipple_ =
+      load_device_function<PFN_vkCmdSetLineStippleEXT>(*device_, "vkCmdSetLineStippleEXT");
+}
+
+void RasterRenderer::ensure_buffers(const rec::DrawableConfig& drawable) {
+  if (drawable == drawable_ && front_) return;
+  drawable_ = drawable;
+  front_ = GpuImage();
+  back_ = GpuImage();
+  depth_stencil_ = GpuImage();
+  if (drawable.width == 0 || drawable.height == 0) return;
+  GpuImageInfo color;
+  color.format = kColorFormat;
+  color.extent = {drawable.width, drawable.height, 1};
+  color.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+                VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
+                VK_IMAGE_USAGE_STORAGE_BIT;
+  front_ = GpuImage::create(*device_, color);
+  back_ = GpuImage::create(*device_, color);
+  GpuImageInfo depth = color;
+  depth.format = kDepthStencilFormat;
+  depth.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+                VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+  depth.aspect = VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT;
+  depth_stencil_ = GpuImage::create(*device_, depth);
+  // GL leaves a new drawable's contents undefined; glpt starts from transparent black, depth 1
+  // and stencil 0, like a freshly cleared Mesa drawable.
+  device_->submit_and_wait([&](VkCommandBuffer cmd) {
+    const VkClearColorValue black{};
+    const VkImageSubresourceRange color_range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+    for (const GpuImage* image : {&front_, &back_}) {
+      image->initial_barrier(cmd);
+      vkCmdClearColorImage(cmd, image->handle(), VK_IMAGE_LAYOUT_GENERAL, &black, 1, &color_range);
+    }
+    depth_stencil_.initial_barrier(cmd);
+    const VkClearDepthStencilValue far{1.0f, 0};
+    const VkImageSubresourceRange ds_range{VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT,
+                                           0, 1, 0, 1};
+    vkCmdClearDepthStencilImage(cmd, depth_stencil_.handle(), VK_IMAGE_LAYOUT_GENERAL, &far, 1,
+                                &ds_range);
+  });
+}
+
+void RasterRenderer::execute(const rec::FrameRecord& record, const rec::DrawableConfig& drawable,
+                             FrameStats& stats, const std::vector<size_t>* commands,
+                             const FrameEnd* end) {
+  const Stopwatch timer;
+  ++frame_;
+  ensure_buffers(drawable);
+  if (!front_) {
+    if (end && end->front_rgba) end->front_rgba->clear();
+    return;
+  }
+  std::vector<size_t> all;
+  if (commands == nullptr) {
+    all.resize(record.commands.size());
+    for (size_t i = 0; i < all.size(); ++i) all[i] = i;
+    commands = &all;
+  }
+
+  // ---- per-record data: state uniforms, textures, vertices and indices
+  const size_t state_count = record.states.size();
+  size_t quad_clears = 0;
+  for (size_t i : *commands)
+    if (std::holds_alternative<rec::Clear>(record.commands[i])) ++quad_clears;
+  std::vector<gpu::RasterState> states(state_count + quad_clears + 1);
+  for (size_t i = 0; i < state_count; ++i) pack_state_uniforms(record.states[i], states[i]);
+
+  std::vector<const rec::TextureObjectSnapshot*> textures;
+  for (const rec::StateSnapshot& s : record.states)
+    for (const rec::TextureUnitState& unit : s.texturing->units)
+      if (unit.target != 0 && unit.texture) textures.push_back(unit.texture.get());
+  textures_.prepare(textures, frame_);
+
+  Recording r;
+  r.record = &record;
+  r.stats = &stats;
+  r.geometry.resize(record.commands.size());
+  r.clear_state.assign(record.commands.size(), 0);
+  std::vector<uint8_t> upload;
+  Arena arena(upload);
+  // Attributes a draw lacks read one default value (stride 0): GL's initial current values.
+  const glm::vec4 defaults[] = {glm::vec4(0, 0, 0, 1), glm::vec4(0, 0, 1, 0), glm::vec4(1.0f),
+                                glm::vec4(0, 0, 0, 1), glm::vec4(0.0f)};
+  const VkDeviceSize default_offset = arena.add(defaults, std::size(defaults));
+  // Clears drawn as a quad: one triangle covering the viewport, in clip space.
+  const glm::vec4 clear_triangle[] = {glm::vec4(-1, -1, 0, 1), glm::vec4(3, -1, 0, 1),
+                                      glm::vec4(-1, 3, 0, 1)};
+  const uint32_t clear_indices[] = {0, 1, 2};
+  r.clear_geometry.offsets.fill(default_offset);
+  r.clear_geometry.offsets[GLPT_RASTER_ATTR_POSITION] = arena.add(clear_triangle, 3);
+  r.clear_geometry.strides[GLPT_RASTER_ATTR_POSITION] = sizeof(glm::vec4);
+  r.clear_geometry.index_offset = arena.add(clear_indices, 3);
+  r.clear_geometry.index_count = 3;
+  std::vector<uint32_t> indices;
+  std::vector<uint8_t> edge_masks;
+  size_t next_clear_state = state_count;
+  for (size_t i : *commands) {
+    const rec::Command& command = record.commands[i];
+    if (const auto* clear = std::get_if<rec::Clear>(&command)) {
+      gpu::RasterState& s = states[next_clear_state];
+      s = states[clear->state];
+      s.mvp = glm::mat4(1.0f);
+      s.clear_color = glm::clamp(clear->color, 0.0f, 1.0f);
+      r.clear_state[i] = static_cast<uint32_t>(next_clear_state++);
+      continue;
+    }
+    const auto* draw = std::get_if<rec::Draw>(&command);
+    if (draw == nullptr || !draw->vertices) continue;
+    const rec::VertexData& v = *draw->vertices;
+    DrawGeometry& g = r.geometry[i];
+    auto attribute = [&](uint32_t location, const auto& values, VkDeviceSize default_at) {
+      using T = typename std::decay_t<decltype(values)>::value_type;
+      if (values.empty()) {
+        g.offsets[location] = default_offset + default_at;
+        g.strides[location] = 0;
+        return;
+      }
+      g.offsets[location] = arena.add(values.data(), values.size());
+      g.strides[location] = values.size() == 1 ? 0 : sizeof(T);
+    };
+    attribute(GLPT_RASTER_ATTR_POSITION, v.position, 0);
+    attribute(GLPT_RASTER_ATTR_NORMAL, v.normal, 16);
+    attribute(GLPT_RASTER_ATTR_COLOR, v.color, 32);
+    attribute(GLPT_RASTER_ATTR_SECONDARY, v.secondary_color, 64);
+    attribute(GLPT_RASTER_ATTR_FOG, v.fog_coord, 64);
+    for (int u = 0; u < rec::kMaxTextureUnits; ++u)
+      attribute(GLPT_RASTER_ATTR_TEXCOORD0 + u, v.tex_coord[u], 48);
+
+    // Indices in GL's assembly order. Primitives with a non-finite vertex are dropped (GL
+    // accepts such vertices; what they draw is undefined, and glpt draws nothing).
+    indices.clear();
+    const rec::PrimitiveClass cls = rec::primitive_class(v.mode);
+    auto ok = [&](uint32_t vertex) { return finite(v.position[vertex]); };
+    if (cls == rec::PrimitiveClass::kLines && v.mode != GL_LINES) {
+      g.topology = RasterTopology::kLineStrip;
+      for (const rec::PrimitiveRange& range : v.primitives) {
+        if (range.count < 2) continue;
+        const bool indexed = !v.indices.empty();
+        if (uint64_t{range.first} + range.count > (indexed ? v.indices.size() : v.vertex_count()))
+          continue;
+        auto element = [&](uint32_t k) {
+          return indexed ? v.indices[range.first + k] : range.first + k;
+        };
+        bool good = true;
+        for (uint32_t k = 0; k < range.count; ++k)
+          good = good && element(k) < v.vertex_count() && ok(element(k));
+        if (!good) continue;
+        if (!indices.empty()) indices.push_back(kRestartIndex);
+        for (uint32_t k = 0; k < range.count; ++k) indices.push_back(element(k));
+        if (v.mode == GL_LINE_LOOP) indices.push_back(element(0));
+      }
+    } else {
+      decomposed_.clear();
+      rec::decompose(v, decomposed_);
+      if (cls == rec::PrimitiveClass::kPoints) {
+        g.topology = RasterTopology::kPoints;
+        for (uint32_t p : decomposed_.points)
+          if (ok(p)) indices.push_back(p);
+      } else if (cls == rec::PrimitiveClass::kLines) {
+        g.topology = RasterTopology::kLines;
+        for (const auto& l : decomposed_.lines)
+          if (ok(l.v[0]) && ok(l.v[1])) indices.insert(indices.end(), {l.v[0], l.v[1]});
+      } else {
+        g.topology = RasterTopology::kTriangles;
+        edge_masks.clear();
+        for (const auto& t : decomposed_.triangles) {
+          if (!ok(t.v[0]) || !ok(t.v[1]) || !ok(t.v[2])) continue;
+          indices.insert(indices.end(), {t.v[0], t.v[1], t.v[2]});
+          edge_masks.push_back(t.boundary_edges);
+        }
+        // The geometry shader of unfilled polygons reads each triangle's boundary edges.
+        const rec::PrimitiveState& p = record.states[draw->state].raster->primitive;
+        if (p.polygon_mode_front != GL_FILL || p.polygon_mode_back != GL_FILL) {
+          edge_masks.resize((edge_masks.size() + 3) & ~size_t{3}, 0);
+          g.edge_offset = arena.add(edge_masks.data(), edge_masks.size());
+        }
+      }
+    }
+    g.index_offset = arena.add(indices.data(), indices.size());
+    g.index_count = static_cast<uint32_t>(indices.size());
+  }
+
+  const size_t states_bytes = states.size() * sizeof(gpu::RasterState);
+  ensure_capacity(*device_, states_, states_bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  states_.write(states.data(), states_bytes);
+  ensure_capacity(*device_, vertices_, arena.size(),
+                  VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_INDEX_BUFFER_BIT |
+                      VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  vertices_.write(upload.data(), arena.size());
+  stats.upload_ms += timer.elapsed_ms();
+
+  if (end && end->front_rgba)
+    ensure_capacity(*device_, readback_, size_t{drawable_.width} * drawable_.height * 4,
+                    VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+
+  // ---- record and run
+  const Stopwatch raster_timer;
+  device_->submit_and_wait([&](VkCommandBuffer cmd) {
+    r.cmd = cmd;
+    for (size_t i : *commands) {
+      const rec::Command& command = record.commands[i];
+      if (const auto* clear = std::get_if<rec::Clear>(&command)) {
+        record_clear(r, *clear, r.clear_state[i]);
+      } else if (const auto* draw = std::get_if<rec::Draw>(&command)) {
+        record_draw(r, *draw, r.geometry[i]);
+      } else if (!std::holds_alternative<rec::Read>(command)) {
+        ++stats.inexpressible;  // pixel operations and accumulation: not drawn yet
+      }
+    }
+    if (r.rendering) vkCmdEndRendering(cmd);
+    if (end) record_frame_end(cmd, *end);
+  });
+  stats.raster_ms += raster_timer.elapsed_ms();
+  if (end && end->front_rgba) {
+    const size_t bytes = size_t{drawable_.width} * drawable_.height * 4;
+    end->front_rgba->resize(bytes);
+    std::memcpy(end->front_rgba->data(), readback_.mapped(), bytes);
+  }
+  textures_.evict_unused(frame_);
+}
+
+void RasterRenderer::begin_rendering(Recording& r, ColorTargets targets) {
+  // GL_NONE still writes depth and stencil: render to the back (or front) buffer with a colour
+  // write mask of zero (the pipeline key has it).
+  if (targets == ColorTargets::kNone)
+    targets = drawable_.double_buffered ? ColorTargets::kBack : ColorTargets::kFront;
+  if (r.rendering && r.targets == targets) return;
+  if (r.rendering) vkCmdEndRendering(r.cmd);
+  std::array<VkRenderingAttachmentInfo, 2> colors{};
+  uint32_t count = 0;
+  auto add_color = [&](const GpuImage& image) {
+    VkRenderingAttachmentInfo& a = colors[count++];
+    a = make_info<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
+    a.imageView = image.view();
+    a.imageLayout = VK_IMAGE_LAYOUT_GENERAL;
+    a.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
+    a.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  };
+  if (targets == ColorTargets::kFront || targets == ColorTargets::kFrontAndBack) add_color(front_);
+  if (targets == ColorTargets::kBack || targets == ColorTargets::kFrontAndBack) add_color(back_);
+  auto depth = make_info<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
+  depth.imageView = depth_stencil_.view();
+  depth.imageLayout = VK_IMAGE_LAYOUT_GENERAL;
+  depth.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
+  depth.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  auto info = make_info<VkRenderingInfo>(VK_STRUCTURE_TYPE_RENDERING_INFO);
+  info.renderArea = {{0, 0}, {drawable_.width, drawable_.height}};
+  info.layerCount = 1;
+  info.colorAttachmentCount = count;
+  info.pColorAttachments = colors.data();
+  info.pDepthAttachment = &depth;
+  info.pStencilAttachment = &depth;
+  vkCmdBeginRendering(r.cmd, &info);
+  r.rendering = true;
+  r.targets = targets;
+  r.bound_pipeline = VK_NULL_HANDLE;
+}
+
+void RasterRenderer::bind(Recording& r, const PipelineKey& key,
+                          const rec::StateSnapshot* textures_of) {
+  bool created = false;
+  VkPipeline pipeline = pipelines_.get(key, &created);
+  if (created) ++r.stats->pipelines_created;
+  if (pipeline != r.bound_pipeline) {
+    vkCmdBindPipeline(r.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
+    r.bound_pipeline = pipeline;
+  }
+  // Descriptors: the states buffer and, per unit, the texture of the unit's target (every other
+  // binding holds a dummy). Pushed only when they change.
+  std::array<VkImageView, 4 * GLPT_RASTER_MAX_UNITS> views{};
+  std::array<VkSampler, 4 * GLPT_RASTER_MAX_UNITS> samplers{};
+  for (uint32_t b = 0; b < views.size(); ++b) {
+    views[b] = textures_.dummy_view(b % 4);
+    samplers[b] = textures_.dummy_sampler();
+  }
+  if (textures_of != nullptr) {
+    for (int u = 0; u < rec::kMaxTextureUnits; ++u) {
+      const rec::TextureUnitState& unit = textures_of->texturing->units[u];
+      if (unit.target == 0 || !unit.texture) continue;
+      const uint32_t kind = unit.target == GL_TEXTURE_1D         ? GLPT_RASTER_TEXTURE_1D
+                            : unit.target == GL_TEXTURE_3D       ? GLPT_RASTER_TEXTURE_3D
+                            : unit.target == GL_TEXTURE_CUBE_MAP ? GLPT_RASTER_TEXTURE_CUBE
+                                                                 : GLPT_RASTER_TEXTURE_2D;
+      if (VkImageView view = textures_.view(*unit.texture)) {
+        views[u * 4 + kind] = view;
+        samplers[u * 4 + kind] = textures_.sampler(*unit.texture, unit.env.lod_bias);
+      }
+    }
+  }
+  if (r.descriptors_pushed && views == r.bound_views) return;
+  std::array<VkDescriptorImageInfo, 4 * GLPT_RASTER_MAX_UNITS> images{};
+  std::array<VkWriteDescriptorSet, 2 + 4 * GLPT_RASTER_MAX_UNITS> writes{};
+  VkDescriptorBufferInfo states{states_.handle(), 0, VK_WHOLE_SIZE};
+  writes[0] = make_info<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
+  writes[0].dstBinding = GLPT_RASTER_BINDING_STATES;
+  writes[0].descriptorCount = 1;
+  writes[0].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+  writes[0].pBufferInfo = &states;
+  VkDescriptorBufferInfo edges{vertices_.handle(), 0, VK_WHOLE_SIZE};
+  writes[1] = writes[0];
+  writes[1].dstBinding = GLPT_RASTER_BINDING_EDGES;
+  writes[1].pBufferInfo = &edges;
+  for (uint32_t b = 0; b < images.size(); ++b) {
+    images[b] = {samplers[b], views[b], VK_IMAGE_LAYOUT_GENERAL};
+    VkWriteDescriptorSet& w = writes[2 + b];
+    w = make_info<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
+    w.dstBinding = GLPT_RASTER_BINDING_TEXTURES + b;
+    w.descriptorCount = 1;
+    w.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+    w.pImageInfo = &images[b];
+  }
+  push_descriptor_set_(r.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.layout(), 0,
+                       static_cast<uint32_t>(writes.size()), writes.data());
+  r.bound_views = views;
+  r.descriptors_pushed = true;
+}
+
+void RasterRenderer::set_dynamic_state(Recording& r, const DynamicDrawState& d,
+                                       const VkViewport& viewport, const VkRect2D& scissor) {
+  // Only what changed since the last draw of this command buffer: lavapipe turns dynamic state
+  // changes into new gallium state objects, which cost more than the draw of a small primitive.
+  VkCommandBuffer cmd = r.cmd;
+  const bool all = !r.dynamic_valid;
+  const DynamicDrawState& o = r.dynamic;
+  if (all || std::memcmp(&viewport, &r.viewport, sizeof viewport) != 0)
+    vkCmdSetViewport(cmd, 0, 1, &viewport);
+  if (all || std::memcmp(&scissor, &r.scissor, sizeof scissor) != 0)
+    vkCmdSetScissor(cmd, 0, 1, &scissor);
+  if (all || d.cull != o.cull) vkCmdSetCullMode(cmd, d.cull);
+  if (all || d.front_face != o.front_face) vkCmdSetFrontFace(cmd, d.front_face);
+  if (all || d.depth_test != o.depth_test) vkCmdSetDepthTestEnable(cmd, d.depth_test);
+  if (all || d.depth_write != o.depth_write) vkCmdSetDepthWriteEnable(cmd, d.depth_write);
+  if (all || d.depth_compare != o.depth_compare) vkCmdSetDepthCompareOp(cmd, d.depth_compare);
+  if (all || d.stencil_test != o.stencil_test) vkCmdSetStencilTestEnable(cmd, d.stencil_test);
+  if (all || d.stencil_fail != o.stencil_fail || d.stencil_pass != o.stencil_pass ||
+      d.stencil_depth_fail != o.stencil_depth_fail || d.stencil_compare != o.stencil_compare)
+    vkCmdSetStencilOp(cmd, VK_STENCIL_FACE_FRONT_AND_BACK, d.stencil_fail, d.stencil_pass,
+                      d.stencil_depth_fail, d.stencil_compare);
+  if (all || d.stencil_compare_mask != o.stencil_compare_mask)
+    vkCmdSetStencilCompareMask(cmd, VK_STENCIL_FACE_FRONT_AND_BACK, d.stencil_compare_mask);
+  if (all || d.stencil_write_mask != o.stencil_write_mask)
+    vkCmdSetStencilWriteMask(cmd, VK_STENCIL_FACE_FRONT_AND_BACK, d.stencil_write_mask);
+  if (all || d.stencil_reference != o.stencil_reference)
+    vkCmdSetStencilReference(cmd, VK_STENCIL_FACE_FRONT_AND_BACK, d.stencil_reference);
+  if (all || d.depth_bias != o.depth_bias) vkCmdSetDepthBiasEnable(cmd, d.depth_bias);
+  if (all || d.depth_bias_constant != o.depth_bias_constant ||
+      d.depth_bias_slope != o.depth_bias_slope)
+    vkCmdSetDepthBias(cmd, d.depth_bias_constant, 0.0f, d.depth_bias_slope);
+  if (all || d.line_width != o.line_width) vkCmdSetLineWidth(cmd, d.line_width);
+  if (all || d.line_stipple_factor != o.line_stipple_factor ||
+      d.line_stipple_pattern != o.line_stipple_pattern)
+    set_line_stipple_(cmd, d.line_stipple_factor, d.line_stipple_pattern);
+  if (all || d.blend_constant != o.blend_constant) {
+    const float blend[4] = {d.blend_constant.r, d.blend_constant.g, d.blend_constant.b,
+                            d.blend_constant.a};
+    vkCmdSetBlendConstants(cmd, blend);
+  }
+  r.dynamic = d;
+  r.viewport = viewport;
+  r.scissor = scissor;
+  r.dynamic_valid = true;
+}
+
+void RasterRenderer::record_clear(Recording& r, const rec::Clear& clear, uint32_t state_index) {
+  const rec::FragmentOpsState& ops = r.record->states[clear.state].raster->ops;
+  const VkRect2D rect = scissor_of(ops, drawable_);
+  if (rect.extent.width == 0 || rect.extent.height == 0) return;
+  const ColorTargets targets = resolve_draw_buffer(ops.draw_buffer, drawable_.double_buffered);
+  const bool all_channels =
+      ops.color_write[0] && ops.color_write[1] && ops.color_write[2] && ops.color_write[3];
+  const bool color =
+      (clear.mask & GL_COLOR_BUFFER_BIT) && targets != ColorTargets::kNone &&
+      (ops.color_write[0] || ops.color_write[1] || ops.color_write[2] || ops.color_write[3]);
+  const bool depth = (clear.mask & GL_DEPTH_BUFFER_BIT) && ops.depth_write && drawable_.depth_bits;
+  const uint32_t stencil_mask = ops.stencil_write_mask & 0xFFu;
+  const bool stencil =
+      (clear.mask & GL_STENCIL_BUFFER_BIT) && stencil_mask != 0 && drawable_.stencil_bits;
+  if (clear.mask & GL_ACCUM_BUFFER_BIT) ++r.stats->inexpressible;  // accumulation: not yet
+  if (!color && !depth && !stencil) return;
+  begin_rendering(r, color ? targets : ColorTargets::kNone);
+
+  // Full masks: a plain attachment clear. Partial colour or stencil masks: a quad through a
+  // pipeline whose write masks are GL's (GL 1.5 4.2.3: only the scissor, dithering and the
+  // write masks affect glClear).
+  if ((!color || all_channels) && (!stencil || stencil_mask == 0xFFu)) {
+    std::array<VkClearAttachment, 3> attachments{};
+    uint32_t n = 0;
+    if (color) {
+      const uint32_t color_count = r.targets == ColorTargets::kFrontAndBack ? 2 : 1;
+      for (uint32_t c = 0; c < color_count; ++c) {
+        VkClearAttachment& a = attachments[n++];
+        a.aspectMask = VK_IMAGE_ASPECT_COLOR_BIT;
+        a.colorAttachment = c;
+        const glm::vec4 v = glm::clamp(clear.color, 0.0f, 1.0f);
+        a.clearValue.color = {{v.r, v.g, v.b, v.a}};
+      }
+    }
+    if (depth || stencil) {
+      VkClearAttachment& a = attachments[n++];
+      a.aspectMask =
+          (depth ? VK_IMAGE_ASPECT_DEPTH_BIT : 0) | (stencil ? VK_IMAGE_ASPECT_STENCIL_BIT : 0);
+      a.clearValue.depthStencil = {std::clamp(clear.depth, 0.0f, 1.0f),
+                                   static_cast<uint32_t>(clear.stencil) & 0xFFu};
+    }
+    const VkClearRect clear_rect{rect, 0, 1};
+    vkCmdClearAttachments(r.cmd, n, attachments.data(), 1, &clear_rect);
+    return;
+  }
+  PipelineKey key;
+  key.constants[GLPT_SC_FS_FLAGS] = GLPT_FS_CLEAR;
+  key.topology = static_cast<uint8_t>(RasterTopology::kTriangles);
+  key.polygon_mode = VK_POLYGON_MODE_FILL;
+  key.line_mode = VK_LINE_RASTERIZATION_MODE_BRESENHAM_EXT;
+  key.logic_op = VK_LOGIC_OP_COPY;
+  uint8_t mask = 0;
+  if (color) {
+    for (int c = 0; c < 4; ++c)
+      if (ops.color_write[c]) mask |= static_cast<uint8_t>(1u << c);
+  }
+  key.color_write_mask = mask;
+  key.attachments = r.targets == ColorTargets::kFrontAndBack ? 2 : 1;
+  bind(r, key, nullptr);
+  DynamicDrawState d;
+  d.depth_test = depth;
+  d.depth_write = depth;
+  d.depth_compare = VK_COMPARE_OP_ALWAYS;
+  d.stencil_test = stencil;
+  d.stencil_fail = d.stencil_depth_fail = d.stencil_pass = VK_STENCIL_OP_REPLACE;
+  d.stencil_compare = VK_COMPARE_OP_ALWAYS;
+  d.stencil_write_mask = stencil_mask;
+  d.stencil_reference = static_cast<uint32_t>(clear.stencil) & 0xFFu;
+  // The whole drawable at the clear depth: a viewport whose depth range is that one value.
+  const float z = std::clamp(clear.depth, 0.0f, 1.0f);
+  const VkViewport viewport{
+      0.0f, 0.0f, static_cast<float>(drawable_.width), static_cast<float>(drawable_.height), z, z};
+  set_dynamic_state(r, d, viewport, rect);
+  const gpu::RasterPushConstants push{glm::uvec4(state_index, 0, 0, 0)};
+  vkCmdPushConstants(r.cmd, pipelines_.layout(), pipelines_.push_constant_stages(), 0, sizeof push,
+                     &push);
+  const DrawGeometry& g = r.clear_geometry;
+  std::array<VkBuffer, GLPT_RASTER_ATTR_COUNT> buffers;
+  buffers.fill(vertices_.handle());
+  vkCmdBindVertexBuffers2(r.cmd, 0, GLPT_RASTER_ATTR_COUNT, buffers.data(), g.offsets.data(),
+                          nullptr, g.strides.data());
+  vkCmdBindIndexBuffer(r.cmd, vertices_.handle(), g.index_offset, VK_INDEX_TYPE_UINT32);
+  vkCmdDrawIndexed(r.cmd, g.index_count, 1, 0, 0, 0);
+}
+
+void RasterRenderer::record_draw(Recording& r, const rec::Draw& draw, const DrawGeometry& g) {
+  if (g.index_count == 0) return;
+  ++r.stats->draws;
+  record_draw_pass(r, draw, g, VK_CULL_MODE_NONE);
+}
+
+void RasterRenderer::record_draw_pass(Recording& r, const rec::Draw& draw, const DrawGeometry& g,
+                                      VkCullModeFlags face_pass) {
+  const rec::StateSnapshot& state = r.record->states[draw.state];
+  const rec::TransformState& t = *state.transform;
+  DrawContext context;
+  context.topology = g.topology;
+  context.targets = resolve_draw_buffer(state.raster->ops.draw_buffer, drawable_.double_buffered);
+  context.drawable_has_alpha = drawable_.has_alpha;
+  context.stencil_bits = drawable_.stencil_bits;
+  context.face_pass = face_pass;
+  const DrawSetup setup = make_draw_setup(state, context);
+  if (setup.skip) return;
+  if (setup.split_faces) {
+    // GL draws front faces with the front polygon mode and back faces with the back one.
+    record_draw_pass(r, draw, g, VK_CULL_MODE_BACK_BIT);
+    record_draw_pass(r, draw, g, VK_CULL_MODE_FRONT_BIT);
+    return;
+  }
+  if (setup.approximated) ++r.stats->inexpressible;
+  if (t.viewport[2] <= 0 || t.viewport[3] <= 0) return;  // GL draws nothing in an empty viewport
+  const VkRect2D scissor = scissor_of(state.raster->ops, drawable_);
+  if (scissor.extent.width == 0 || scissor.extent.height == 0) return;
+  begin_rendering(r, context.targets);
+  bind(r, setup.key, &state);
+  DynamicDrawState d = setup.dynamic;
+  if (drawable_.depth_bits == 0) d.depth_test = d.depth_write = false;
+  const VkViewport viewport{static_cast<float>(t.viewport[0]),
+                            static_cast<float>(t.viewport[1]),
+                            static_cast<float>(t.viewport[2]),
+                            static_cast<float>(t.viewport[3]),
+                            t.depth_near,
+                            t.depth_far};
+  set_dynamic_state(r, d, viewport, scissor);
+  const gpu::RasterPushConstants push{
+      glm::uvec4(draw.state, static_cast<uint32_t>(g.edge_offset / 4), 0, 0)};
+  vkCmdPushConstants(r.cmd, pipelines_.layout(), pipelines_.push_constant_stages(), 0, sizeof push,
+                     &push);
+  std::array<VkBuffer, GLPT_RASTER_ATTR_COUNT> buffers;
+  buffers.fill(vertices_.handle());
+  vkCmdBindVertexBuffers2(r.cmd, 0, GLPT_RASTER_ATTR_COUNT, buffers.data(), g.offsets.data(),
+                          nullptr, g.strides.data());
+  vkCmdBindIndexBuffer(r.cmd, vertices_.handle(), g.index_offset, VK_INDEX_TYPE_UINT32);
+  vkCmdDrawIndexed(r.cmd, g.index_count, 1, 0, 0, 0);
+}
+
+void RasterRenderer::record_frame_end(VkCommandBuffer cmd, const FrameEnd& end) {
+  auto barrier = make_info<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
+  barrier.srcAccessMask = VK_ACCESS_MEMORY_WRITE_BIT;
+  barrier.dstAccessMask = VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT;
+  auto wait_for_previous = [&] {
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT,
+                         VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0, 1, &barrier, 0, nullptr, 0,
+                         nullptr);
+  };
+  if (end.swap && drawable_.double_buffered) {
+    wait_for_previous();
+    VkImageCopy copy{};
+    copy.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    copy.dstSubresource = copy.srcSubresource;
+    copy.extent = {drawable_.width, drawable_.height, 1};
+    vkCmdCopyImage(cmd, back_.handle(), VK_IMAGE_LAYOUT_GENERAL, front_.handle(),
+                   VK_IMAGE_LAYOUT_GENERAL, 1, &copy);
+  }
+  if (end.front_rgba) {
+    wait_for_previous();
+    VkBufferImageCopy copy{};
+    copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    copy.imageExtent = {drawable_.width, drawable_.height, 1};
+    vkCmdCopyImageToBuffer(cmd, front_.handle(), VK_IMAGE_LAYOUT_GENERAL, readback_.handle(), 1,
+                           &copy);
+  }
+}
+
+bool RasterRenderer::read_image(const GpuImage& image, VkImageAspectFlags aspect,
+                                uint32_t texel_bytes, int32_t x, int32_t y, uint32_t width,
+                                uint32_t height, std::vector<uint8_t>& out) {
+  out.assign(size_t{width} * height * texel_bytes, 0);
+  if (!image) return false;
+  const VkRect2D inside = intersect_with_framebuffer(x, y, static_cast<int32_t>(width),
+                                                     static_cast<int32_t>(height), drawable_);
+  if (inside.extent.width == 0 || inside.extent.height == 0) return true;
+  const VkDeviceSize bytes = VkDeviceSize{inside.extent.width} * inside.extent.height * texel_bytes;
+  ensure_capacity(*device_, readback_, bytes,
+                  VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+  device_->submit_and_wait([&](VkCommandBuffer cmd) {
+    VkBufferImageCopy copy{};
+    copy.imageSubresource = {aspect, 0, 0, 1};
+    copy.imageOffset = {inside.offset.x, inside.offset.y, 0};
+    copy.imageExtent = {inside.extent.width, inside.extent.height, 1};
+    vkCmdCopyImageToBuffer(cmd, image.handle(), VK_IMAGE_LAYOUT_GENERAL, readback_.handle(), 1,
+                           &copy);
+  });
+  const auto* src = static_cast<const uint8_t*>(readback_.mapped());
+  const size_t row_bytes = size_t{inside.extent.width} * texel_bytes;
+  for (uint32_t j = 0; j < inside.extent.height; ++j) {
+    const size_t dst_row = static_cast<size_t>(inside.offset.y - y + static_cast<int32_t>(j));
+    const size_t dst_col = static_cast<size_t>(inside.offset.x - x);
+    std::memcpy(&out[(dst_row * width + dst_col) * texel_bytes], src + j * row_bytes, row_bytes);
+  }
+  return true;
+}
+
+bool RasterRenderer::read_color(uint32_t buffer, int32_t x, int32_t y, uint32_t width,
+                                uint32_t height, std::vector<uint8_t>& rgba) {
+  const bool front = buffer == GL_FRONT || buffer == GL_FRONT_LEFT || buffer == GL_LEFT ||
+                     !drawable_.double_buffered;
+  return read_image(front ? front_ : back_, VK_IMAGE_ASPECT_COLOR_BIT, 4, x, y, width, height,
+                    rgba);
+}
+
+bool RasterRenderer::read_depth(int32_t x, int32_t y, uint32_t width, uint32_t height,
+                                std::vector<float>& depth) {
+  std::vector<uint8_t> raw;
+  if (!read_image(depth_stencil_, VK_IMAGE_ASPECT_DEPTH_BIT, 4, x, y, width, height, raw))
+    return false;
+  // The depth aspect of D24_UNORM_S8_UINT copies as 32-bit words holding 24 bits of depth.
+  depth.resize(size_t{width} * height);
+  for (size_t i = 0; i < depth.size(); ++i) {
+    uint32_t word;
+    std::memcpy(&word, &raw[i * 4], 4);
+    depth[i] = static_cast<float>(static_cast<double>(word & 0xFFFFFFu) / 16777215.0);
+  }
+  return true;
+}
+
+bool RasterRenderer::read_stencil(int32_t x, int32_t y, uint32_t width, uint32_t height,
+                                  std::vector<uint8_t>& stencil) {
+  return read_image(depth_stencil_, VK_IMAGE_ASPECT_STENCIL_BIT, 1, x, y, width, height, stencil);
+}
+
+void RasterRenderer::write_color(bool front, const std::vector<uint8_t>& rgba) {
+  const GpuImage& image = front || !drawable_.double_buffered ? front_ : back_;
+  if (!image || rgba.size() != size_t{drawable_.width} * drawable_.height * 4) return;
+  ensure_capacity(*device_, readback_, rgba.size(),
+                  VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+  readback_.write(rgba.data(), rgba.size());
+  device_->submit_and_wait([&](VkCommandBuffer cmd) {
+    VkBufferImageCopy copy{};
+    copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    copy.imageExtent = {drawable_.width, drawable_.height, 1};
+    vkCmdCopyBufferToImage(cmd, readback_.handle(), image.handle(), VK_IMAGE_LAYOUT_GENERAL, 1,
+                           &copy);
+  });
+}
+
+void RasterRenderer::swap_buffers() {
+  if (!front_ || !drawable_.double_buffered) return;
+  device_->submit_and_wait([&](VkCommandBuffer cmd) {
+    VkImageCopy copy{};
+    copy.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    copy.dstSubresource = copy.srcSubresource;
+    copy.extent = {drawable_.width, drawable_.height, 1};
+    vkCmdCopyImage(cmd, back_.handle(), VK_IMAGE_LAYOUT_GENERAL, front_.handle(),
+                   VK_IMAGE_LAYOUT_GENERAL, 1, &copy);
+  });
+}
+
+}  // namespace glpt::rt

@@ -1,0 +1,83 @@
+// Raster mode: executes a frame record with Vulkan graphics pipelines that emulate GL 1.5 fixed
+// function, on the drawable's persistent buffers (colour front and back, depth/stencil). The
+// pixels are meant to equal Mesa's (docs/architecture.md, "Raster mode").
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "rt_core/frame_stats.hpp"
+#include "rt_core/raster/pipeline_key.hpp"
+#include "rt_core/raster/raster_pipelines.hpp"
+#include "rt_core/raster/texture_cache.hpp"
+#include "rt_core/record/decompose.hpp"
+#include "rt_core/record/frame_record.hpp"
+#include "rt_core/renderer.hpp"
+#include "rt_core/vk/gpu_buffer.hpp"
+#include "rt_core/vk/gpu_image.hpp"
+#include "rt_core/vk/vk_device.hpp"
+
+namespace glpt::rt {
+
+class RasterRenderer {
+ public:
+  explicit RasterRenderer(std::shared_ptr<VulkanDevice> device);
+
+  // Applies the commands of `record` whose indices `commands` lists (all when empty) to the
+  // drawable's buffers, which are (re)created when `drawable` changes. Throws VulkanError.
+  // `end`: swap and/or read the front buffer in the same submission.
+  void execute(const rec::FrameRecord& record, const rec::DrawableConfig& drawable,
+               FrameStats& stats, const std::vector<size_t>* commands = nullptr,
+               const FrameEnd* end = nullptr);
+
+  // Reads back a rectangle: colour as RGBA8 of GL_FRONT*/GL_BACK*, depth as [0, 1], stencil.
+  // Pixels outside the drawable are zero. False before the buffers exist.
+  bool read_color(uint32_t buffer, int32_t x, int32_t y, uint32_t width, uint32_t height,
+                  std::vector<uint8_t>& rgba);
+  bool read_depth(int32_t x, int32_t y, uint32_t width, uint32_t height, std::vector<float>& depth);
+  bool read_stencil(int32_t x, int32_t y, uint32_t width, uint32_t height,
+                    std::vector<uint8_t>& stencil);
+  // Copies the back buffer into the front buffer (the back keeps its contents).
+  void swap_buffers();
+  // Replaces a whole colour buffer with `rgba` (RGBA8, rows bottom to top): the path tracer's
+  // image, before the draws it does not take are rasterized over it.
+  void write_color(bool front, const std::vector<uint8_t>& rgba);
+
+  const rec::DrawableConfig& drawable() const { return drawable_; }
+  VulkanDevice& device() { return *device_; }
+  // The buffers, for path-traced mode (which writes the traced image into them).
+  const GpuImage& color_image(bool front) const { return front ? front_ : back_; }
+  const GpuImage& depth_stencil_image() const { return depth_stencil_; }
+
+ private:
+  struct DrawGeometry;  // uploaded vertices and indices of one draw
+  struct Recording;     // state of one command-buffer recording
+  void ensure_buffers(const rec::DrawableConfig& drawable);
+  void record_clear(Recording& r, const rec::Clear& clear, uint32_t state_index);
+  void record_draw(Recording& r, const rec::Draw& draw, const DrawGeometry& geometry);
+  void record_draw_pass(Recording& r, const rec::Draw& draw, const DrawGeometry& geometry,
+                        VkCullModeFlags face_pass);
+  void begin_rendering(Recording& r, ColorTargets targets);
+  void bind(Recording& r, const PipelineKey& key, const rec::StateSnapshot* textures_of);
+  void set_dynamic_state(Recording& r, const DynamicDrawState& d, const VkViewport& viewport,
+                         const VkRect2D& scissor);
+  void record_frame_end(VkCommandBuffer cmd, const FrameEnd& end);
+  bool read_image(const GpuImage& image, VkImageAspectFlags aspect, uint32_t texel_bytes, int32_t x,
+                  int32_t y, uint32_t width, uint32_t height, std::vector<uint8_t>& out);
+
+  std::shared_ptr<VulkanDevice> device_;
+  RasterPipelines pipelines_;
+  TextureCache textures_;
+  PFN_vkCmdPushDescriptorSetKHR push_descriptor_set_ = nullptr;
+  PFN_vkCmdSetLineStippleEXT set_line_stipple_ = nullptr;
+  rec::DrawableConfig drawable_{0, 0};
+  GpuImage front_, back_, depth_stencil_;
+  GpuBuffer states_;    // RasterState per snapshot (+ one per clear drawn as a quad)
+  GpuBuffer vertices_;  // this record's attributes and indices
+  GpuBuffer readback_;
+  uint64_t frame_ = 0;
+  rec::Decomposed decomposed_;  // scratch
+};
+
+}  // namespace glpt::rt

@@ -1,0 +1,224 @@
+#include "rt_core/raster/texture_cache.hpp"
+
+#include <algorithm>
+#include <cstring>
+
+#include "common/content_hash.hpp"
+#include "rt_core/vk/vk_error.hpp"
+#include "rt_core/vk/vk_info.hpp"
+
+namespace glpt::rt {
+namespace {
+
+constexpr uint64_t kEvictAfterUnusedFrames = 120;
+
+VkFormat format_of(rec::TexelFormat format) {
+  switch (format) {
+    case rec::TexelFormat::kRgba16:
+      return VK_FORMAT_R16G16B16A16_UNORM;
+    case rec::TexelFormat::kRgba32f:
+      return VK_FORMAT_R32G32B32A32_SFLOAT;
+    case rec::TexelFormat::kDepth32f:
+      return VK_FORMAT_R32_SFLOAT;
+    default:
+      return VK_FORMAT_R8G8B8A8_UNORM;
+  }
+}
+
+// A depth texture samples as (d, d, d, 1) for GL_LUMINANCE, (d, d, d, d) for GL_INTENSITY and
+// (0, 0, 0, d) for GL_ALPHA (GL 1.4 3.8.4, DEPTH_TEXTURE_MODE).
+VkComponentMapping swizzle_of(const rec::TextureObjectSnapshot& t) {
+  if (t.texel_format != rec::TexelFormat::kDepth32f) return {};
+  const VkComponentSwizzle r = VK_COMPONENT_SWIZZLE_R, one = VK_COMPONENT_SWIZZLE_ONE,
+                           zero = VK_COMPONENT_SWIZZLE_ZERO;
+  switch (t.sampler.depth_texture_mode) {
+    case GL_INTENSITY:
+      return {r, r, r, r};
+    case GL_ALPHA:
+      return {zero, zero, zero, r};
+    default:
+      return {r, r, r, one};
+  }
+}
+
+VkSamplerAddressMode address_mode(uint32_t wrap) {
+  switch (wrap) {
+    case GL_CLAMP_TO_EDGE:
+      return VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    case GL_MIRRORED_REPEAT:
+      return VK_SAMPLER_ADDRESS_MODE_MIRRORED_REPEAT;
+    // GL_CLAMP: the shader clamps coordinates to [0, 1] and the border blends in at the edge.
+    case GL_CLAMP:
+    case GL_CLAMP_TO_BORDER:
+      return VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER;
+    default:
+      return VK_SAMPLER_ADDRESS_MODE_REPEAT;
+  }
+}
+
+bool is_mipmap_filter(uint32_t filter) { return filter != GL_NEAREST && filter != GL_LINEAR; }
+
+}  // namespace
+
+size_t TextureCache::SamplerKeyHash::operator()(const SamplerKey& key) const {
+  ContentHash h;
+  h.add_bytes(&key.state, sizeof key.state);
+  h.add_bytes(&key.lod_bias, sizeof key.lod_bias);
+  h.add_bytes(&key.levels, sizeof key.levels);
+  return static_cast<size_t>(h.value());
+}
+
+TextureCache::TextureCache(VulkanDevice& device) : device_(device) {
+  const GpuImageInfo kinds[4] = {
+      {VK_IMAGE_TYPE_1D, VK_IMAGE_VIEW_TYPE_1D, VK_FORMAT_R8G8B8A8_UNORM, {1, 1, 1}, 1, 1},
+      {VK_IMAGE_TYPE_2D, VK_IMAGE_VIEW_TYPE_2D, VK_FORMAT_R8G8B8A8_UNORM, {1, 1, 1}, 1, 1},
+      {VK_IMAGE_TYPE_3D, VK_IMAGE_VIEW_TYPE_3D, VK_FORMAT_R8G8B8A8_UNORM, {1, 1, 1}, 1, 1},
+      {VK_IMAGE_TYPE_2D, VK_IMAGE_VIEW_TYPE_CUBE, VK_FORMAT_R8G8B8A8_UNORM, {1, 1, 1}, 1, 6},
+  };
+  for (int i = 0; i < 4; ++i) dummies_[i] = GpuImage::create(device_, kinds[i]);
+  device_.submit_and_wait([&](VkCommandBuffer cmd) {
+    for (const GpuImage& image : dummies_) {
+      image.initial_barrier(cmd);
+      const VkClearColorValue white{{1.0f, 1.0f, 1.0f, 1.0f}};
+      const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, image.info().layers};
+      vkCmdClearColorImage(cmd, image.handle(), VK_IMAGE_LAYOUT_GENERAL, &white, 1, &range);
+    }
+  });
+  auto info = make_info<VkSamplerCreateInfo>(VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO);
+  info.magFilter = info.minFilter = VK_FILTER_NEAREST;
+  VkSampler sampler = VK_NULL_HANDLE;
+  GLPT_VK_CHECK(vkCreateSampler(device_.handle(), &info, nullptr, &sampler));
+  dummy_sampler_ = vk::Sampler(sampler, {device_.handle()});
+}
+
+namespace {
+
+int32_t base_level_of(const rec::TextureObjectSnapshot& t) {
+  return std::clamp(t.sampler.base_level, 0, std::max(t.last_level, 0));
+}
+
+}  // namespace
+
+void TextureCache::prepare(const std::vector<const rec::TextureObjectSnapshot*>& textures,
+                           uint64_t frame) {
+  struct Upload {
+    const rec::TextureObjectSnapshot* texture;
+    GpuImage* image;
+  };
+  std::vector<Upload> uploads;
+  size_t staging_bytes = 0;
+  for (const rec::TextureObjectSnapshot* t : textures) {
+    auto it = entries_.find(t->content_version);
+    if (it != entries_.end()) {
+      it->second.last_used = frame;
+      continue;
+    }
+    const int32_t base_level = base_level_of(*t);
+    if (t->faces.empty() || t->faces[0].size() <= static_cast<size_t>(base_level) ||
+        !t->faces[0][base_level])
+      continue;
+    const rec::TextureImage& base = *t->faces[0][base_level];
+    if (base.width == 0 || base.height == 0 || base.depth == 0) continue;
+    GpuImageInfo info;
+    const bool cube = t->target == GL_TEXTURE_CUBE_MAP;
+    info.type = t->target == GL_TEXTURE_1D   ? VK_IMAGE_TYPE_1D
+                : t->target == GL_TEXTURE_3D ? VK_IMAGE_TYPE_3D
+                                             : VK_IMAGE_TYPE_2D;
+    info.view_type = t->target == GL_TEXTURE_1D   ? VK_IMAGE_VIEW_TYPE_1D
+                     : t->target == GL_TEXTURE_3D ? VK_IMAGE_VIEW_TYPE_3D
+                     : cube                       ? VK_IMAGE_VIEW_TYPE_CUBE
+                                                  : VK_IMAGE_VIEW_TYPE_2D;
+    info.format = format_of(t->texel_format);
+    info.extent = {base.width, base.height, base.depth};
+    info.mip_levels = static_cast<uint32_t>(std::max(t->last_level - base_level + 1, 1));
+    info.layers = cube ? 6 : 1;
+    info.swizzle = swizzle_of(*t);
+    Entry& entry = entries_[t->content_version];
+    entry.image = GpuImage::create(device_, info);
+    entry.last_used = frame;
+    uploads.push_back({t, &entry.image});
+    for (const auto& face : t->faces)
+      for (const auto& level : face)
+        if (level) staging_bytes += (level->texels.size() + 15) & ~size_t{15};
+  }
+  if (uploads.empty()) return;
+  ensure_capacity(device_, staging_, staging_bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+  std::vector<VkBufferImageCopy> copies;
+  size_t offset = 0;
+  device_.submit_and_wait([&](VkCommandBuffer cmd) {
+    for (const Upload& u : uploads) {
+      const int32_t base_level = base_level_of(*u.texture);
+      u.image->initial_barrier(cmd);
+      copies.clear();
+      const uint32_t levels = u.image->info().mip_levels;
+      for (size_t f = 0; f < u.texture->faces.size() && f < u.image->info().layers; ++f) {
+        const auto& face = u.texture->faces[f];
+        for (uint32_t l = 0; l < levels && base_level + l < face.size(); ++l) {
+          const rec::TextureImage* img = face[base_level + l].get();
+          if (img == nullptr || img->texels.empty()) continue;
+          staging_.write(img->texels.data(), img->texels.size(), offset);
+          VkBufferImageCopy copy{};
+          copy.bufferOffset = offset;
+          copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, l, static_cast<uint32_t>(f), 1};
+          copy.imageExtent = {img->width, img->height, img->depth};
+          copies.push_back(copy);
+          offset += (img->texels.size() + 15) & ~size_t{15};
+        }
+      }
+      if (!copies.empty())
+        vkCmdCopyBufferToImage(cmd, staging_.handle(), u.image->handle(), VK_IMAGE_LAYOUT_GENERAL,
+                               static_cast<uint32_t>(copies.size()), copies.data());
+    }
+  });
+}
+
+VkImageView TextureCache::view(const rec::TextureObjectSnapshot& texture) const {
+  auto it = entries_.find(texture.content_version);
+  return it == entries_.end() ? VK_NULL_HANDLE : it->second.image.view();
+}
+
+VkSampler TextureCache::sampler(const rec::TextureObjectSnapshot& texture, float unit_lod_bias) {
+  SamplerKey key{texture.sampler, unit_lod_bias + texture.sampler.lod_bias,
+                 std::max(texture.last_level - base_level_of(texture) + 1, 1)};
+  auto it = samplers_.find(key);
+  if (it != samplers_.end()) return it->second.get();
+  const rec::SamplerState& s = texture.sampler;
+  auto border = make_info<VkSamplerCustomBorderColorCreateInfoEXT>(
+      VK_STRUCTURE_TYPE_SAMPLER_CUSTOM_BORDER_COLOR_CREATE_INFO_EXT);
+  std::memcpy(border.customBorderColor.float32, &s.border_color, sizeof(float) * 4);
+  border.format = VK_FORMAT_UNDEFINED;
+  auto info = make_info<VkSamplerCreateInfo>(VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO, &border);
+  info.magFilter = s.mag_filter == GL_NEAREST ? VK_FILTER_NEAREST : VK_FILTER_LINEAR;
+  const bool min_linear = s.min_filter == GL_LINEAR || s.min_filter == GL_LINEAR_MIPMAP_NEAREST ||
+                          s.min_filter == GL_LINEAR_MIPMAP_LINEAR;
+  info.minFilter = min_linear ? VK_FILTER_LINEAR : VK_FILTER_NEAREST;
+  info.mipmapMode =
+      s.min_filter == GL_NEAREST_MIPMAP_LINEAR || s.min_filter == GL_LINEAR_MIPMAP_LINEAR
+          ? VK_SAMPLER_MIPMAP_MODE_LINEAR
+          : VK_SAMPLER_MIPMAP_MODE_NEAREST;
+  info.addressModeU = address_mode(s.wrap_s);
+  info.addressModeV = address_mode(s.wrap_t);
+  info.addressModeW = address_mode(s.wrap_r);
+  info.mipLodBias = key.lod_bias;
+  // Without a mipmap filter GL samples the base level only (the view starts at level 0, which
+  // holds the base level).
+  if (is_mipmap_filter(s.min_filter)) {
+    info.minLod = std::max(s.min_lod, 0.0f);
+    info.maxLod = std::min(s.max_lod, static_cast<float>(key.levels - 1));
+  } else {
+    info.minLod = 0.0f;
+    info.maxLod = 0.0f;
+  }
+  info.borderColor = VK_BORDER_COLOR_FLOAT_CUSTOM_EXT;
+  VkSampler sampler = VK_NULL_HANDLE;
+  GLPT_VK_CHECK(vkCreateSampler(device_.handle(), &info, nullptr, &sampler));
+  return samplers_.emplace(key, vk::Sampler(sampler, {device_.handle()})).first->second.get();
+}
+
+void TextureCache::evict_unused(uint64_t frame) {
+  std::erase_if(entries_, [&](const auto& kv) {
+    return frame > kv.second.last_used + kEvictAfterUnusedFrames;
+  });
+}
+
+}  // namespace glpt::rt

@@ -1,0 +1,57 @@
+// GPU images of the record's textures, one per TextureObjectSnapshot::content_version (a texture
+// whose content did not change is uploaded once), and samplers per GL sampler state. Entries not
+// used for a while are dropped.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <cstdint>
+#include <memory>
+#include <unordered_map>
+
+#include "rt_core/record/texture.hpp"
+#include "rt_core/vk/gpu_buffer.hpp"
+#include "rt_core/vk/gpu_image.hpp"
+#include "rt_core/vk/vk_device.hpp"
+
+namespace glpt::rt {
+
+class TextureCache {
+ public:
+  explicit TextureCache(VulkanDevice& device);
+
+  // Makes sure every texture in `textures` has an image, uploading new ones with one submission.
+  // The image holds the texture's levels base_level..last_level as its levels 0..n-1.
+  void prepare(const std::vector<const rec::TextureObjectSnapshot*>& textures, uint64_t frame);
+  // The image view of a prepared texture (null if it could not be made, e.g. zero size).
+  VkImageView view(const rec::TextureObjectSnapshot& texture) const;
+  VkSampler sampler(const rec::TextureObjectSnapshot& texture, float unit_lod_bias);
+  // 1x1 white textures of each kind (1D, 2D, 3D, cube) for bindings nothing samples.
+  VkImageView dummy_view(uint32_t kind) const { return dummies_[kind].view(); }
+  VkSampler dummy_sampler() const { return dummy_sampler_.get(); }
+  void evict_unused(uint64_t frame);
+
+ private:
+  struct Entry {
+    GpuImage image;
+    uint64_t last_used = 0;
+  };
+  struct SamplerKey {
+    rec::SamplerState state;
+    float lod_bias;
+    int32_t levels;
+    bool operator==(const SamplerKey&) const = default;
+  };
+  struct SamplerKeyHash {
+    size_t operator()(const SamplerKey& key) const;
+  };
+
+  VulkanDevice& device_;
+  std::unordered_map<uint64_t, Entry> entries_;
+  std::unordered_map<SamplerKey, vk::Sampler, SamplerKeyHash> samplers_;
+  GpuImage dummies_[4];
+  vk::Sampler dummy_sampler_;
+  GpuBuffer staging_;
+};
+
+}  // namespace glpt::rt

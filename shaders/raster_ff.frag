@@ -1,0 +1,268 @@
+#version 460
+// GL 1.5 fixed-function fragment processing: polygon stipple, texturing with per-unit texture
+// environments (GL 1.5 3.8.13, including GL_COMBINE and crossbar sources), colour sum, fog
+// (3.10) and the alpha test (4.1.4). Blending, logic op, stencil, depth and masks are fixed
+// function in the pipeline. Specialization constants (raster_types.h) select each unit's target,
+// environment and texture base format, so a pipeline contains only what its state uses.
+//
+// Built twice: GLPT_FLAT 1 takes the colours of the provoking vertex (GL_FLAT).
+#extension GL_GOOGLE_include_directive : require
+
+#include "raster_types.h"
+
+layout(constant_id = GLPT_SC_UNIT0 + 0) const uint kUnit0 = 0u;
+layout(constant_id = GLPT_SC_UNIT0 + 1) const uint kUnit1 = 0u;
+layout(constant_id = GLPT_SC_UNIT0 + 2) const uint kUnit2 = 0u;
+layout(constant_id = GLPT_SC_UNIT0 + 3) const uint kUnit3 = 0u;
+layout(constant_id = GLPT_SC_COMBINE0 + 0) const uint kCombine0 = 0u;
+layout(constant_id = GLPT_SC_COMBINE0 + 1) const uint kCombine1 = 0u;
+layout(constant_id = GLPT_SC_COMBINE0 + 2) const uint kCombine2 = 0u;
+layout(constant_id = GLPT_SC_COMBINE0 + 3) const uint kCombine3 = 0u;
+layout(constant_id = GLPT_SC_COMBINE_ALPHA_OPERANDS0 + 0) const uint kAlphaOperands0 = 0u;
+layout(constant_id = GLPT_SC_COMBINE_ALPHA_OPERANDS0 + 1) const uint kAlphaOperands1 = 0u;
+layout(constant_id = GLPT_SC_COMBINE_ALPHA_OPERANDS0 + 2) const uint kAlphaOperands2 = 0u;
+layout(constant_id = GLPT_SC_COMBINE_ALPHA_OPERANDS0 + 3) const uint kAlphaOperands3 = 0u;
+layout(constant_id = GLPT_SC_FS_FLAGS) const uint kFlags = 0u;
+layout(constant_id = GLPT_SC_FS_ALPHA_FOG) const uint kAlphaFog = 0u;
+
+layout(std430, set = 0, binding = GLPT_RASTER_BINDING_STATES) readonly buffer States {
+  RasterState states[];
+};
+layout(push_constant) uniform Push { RasterPushConstants push; };
+// The draw's state, read field by field where used (never copied whole).
+#define S states[push.indices.x]
+
+layout(set = 0, binding = GLPT_RASTER_BINDING_TEXTURES + 0) uniform sampler1D u_tex1d_0;
+layout(set = 0, binding = GLPT_RASTER_BINDING_TEXTURES + 1) uniform sampler2D u_tex2d_0;
+layout(set = 0, binding = GLPT_RASTER_BINDING_TEXTURES + 2) uniform sampler3D u_tex3d_0;
+layout(set = 0, binding = GLPT_RASTER_BINDING_TEXTURES + 3) uniform samplerCube u_texcube_0;
+layout(set = 0, binding = GLPT_RASTER_BINDING_TEXTURES + 4) uniform sampler1D u_tex1d_1;
+layout(set = 0, binding = GLPT_RASTER_BINDING_TEXTURES + 5) uniform sampler2D u_tex2d_1;
+layout(set = 0, binding = GLPT_RASTER_BINDING_TEXTURES + 6) uniform sampler3D u_tex3d_1;
+layout(set = 0, binding = GLPT_RASTER_BINDING_TEXTURES + 7) uniform samplerCube u_texcube_1;
+layout(set = 0, binding = GLPT_RASTER_BINDING_TEXTURES + 8) uniform sampler1D u_tex1d_2;
+layout(set = 0, binding = GLPT_RASTER_BINDING_TEXTURES + 9) uniform sampler2D u_tex2d_2;
+layout(set = 0, binding = GLPT_RASTER_BINDING_TEXTURES + 10) uniform sampler3D u_tex3d_2;
+layout(set = 0, binding = GLPT_RASTER_BINDING_TEXTURES + 11) uniform samplerCube u_texcube_2;
+layout(set = 0, binding = GLPT_RASTER_BINDING_TEXTURES + 12) uniform sampler1D u_tex1d_3;
+layout(set = 0, binding = GLPT_RASTER_BINDING_TEXTURES + 13) uniform sampler2D u_tex2d_3;
+layout(set = 0, binding = GLPT_RASTER_BINDING_TEXTURES + 14) uniform sampler3D u_tex3d_3;
+layout(set = 0, binding = GLPT_RASTER_BINDING_TEXTURES + 15) uniform samplerCube u_texcube_3;
+
+#if GLPT_FLAT
+#define INTERPOLATION flat
+#else
+#define INTERPOLATION
+#endif
+layout(location = 0) INTERPOLATION in vec4 v_front_color;
+layout(location = 1) INTERPOLATION in vec4 v_back_color;
+layout(location = 2) INTERPOLATION in vec4 v_front_secondary;
+layout(location = 3) INTERPOLATION in vec4 v_back_secondary;
+layout(location = 4) in vec4 v_texcoord[GLPT_RASTER_MAX_UNITS];
+layout(location = 8) in float v_fog;
+
+layout(location = 0) out vec4 o_color;
+layout(location = 1) out vec4 o_color_second;  // GL_FRONT_AND_BACK: the same colour twice
+
+uint unit_config(uint u) {
+  return u == 0u ? kUnit0 : u == 1u ? kUnit1 : u == 2u ? kUnit2 : kUnit3;
+}
+uint unit_combine(uint u) {
+  return u == 0u ? kCombine0 : u == 1u ? kCombine1 : u == 2u ? kCombine2 : kCombine3;
+}
+uint unit_alpha_operands(uint u) {
+  return u == 0u ? kAlphaOperands0 : u == 1u ? kAlphaOperands1 : u == 2u ? kAlphaOperands2
+                                                               : kAlphaOperands3;
+}
+
+// GL_CLAMP (GL 1.5 3.8.7) has no Vulkan address mode: coordinates are clamped to [0, 1] here and
+// the sampler uses CLAMP_TO_BORDER, so linear filtering at the edge blends with the border as GL
+// specifies.
+vec3 clamp_coords(uint config, vec3 c) {
+  if ((config & 0x200u) != 0u) c.x = clamp(c.x, 0.0, 1.0);
+  if ((config & 0x400u) != 0u) c.y = clamp(c.y, 0.0, 1.0);
+  if ((config & 0x800u) != 0u) c.z = clamp(c.z, 0.0, 1.0);
+  return c;
+}
+
+// The texture colour of unit u: a projective lookup of (t, r) / q, as Mesa's fixed-function
+// fragment program does.
+vec4 sample_unit(uint u) {
+  uint config = unit_config(u);
+  uint target = config & 7u;
+  vec4 tc = v_texcoord[u];
+  vec3 c = clamp_coords(config, tc.xyz / tc.w);
+  if (target == 1u) {
+    if (u == 0u) return texture(u_tex1d_0, c.x);
+    if (u == 1u) return texture(u_tex1d_1, c.x);
+    if (u == 2u) return texture(u_tex1d_2, c.x);
+    return texture(u_tex1d_3, c.x);
+  }
+  if (target == 2u) {
+    if (u == 0u) return texture(u_tex2d_0, c.xy);
+    if (u == 1u) return texture(u_tex2d_1, c.xy);
+    if (u == 2u) return texture(u_tex2d_2, c.xy);
+    return texture(u_tex2d_3, c.xy);
+  }
+  if (target == 3u) {
+    if (u == 0u) return texture(u_tex3d_0, c);
+    if (u == 1u) return texture(u_tex3d_1, c);
+    if (u == 2u) return texture(u_tex3d_2, c);
+    return texture(u_tex3d_3, c);
+  }
+  // Cube maps select a face by the direction (t, r); q does not take part.
+  if (u == 0u) return texture(u_texcube_0, tc.xyz);
+  if (u == 1u) return texture(u_texcube_1, tc.xyz);
+  if (u == 2u) return texture(u_texcube_2, tc.xyz);
+  return texture(u_texcube_3, tc.xyz);
+}
+
+vec4 combine_source(uint source, vec4 texel, vec4 primary, vec4 previous, vec4 constant,
+                    vec4 texels[GLPT_RASTER_MAX_UNITS]) {
+  if (source == GLPT_SRC_TEXTURE) return texel;
+  if (source == GLPT_SRC_CONSTANT) return constant;
+  if (source == GLPT_SRC_PRIMARY) return primary;
+  if (source == GLPT_SRC_PREVIOUS) return previous;
+  return texels[source - GLPT_SRC_TEXTURE0];
+}
+
+vec3 rgb_operand(uint operand, vec4 v) {
+  if (operand == 0u) return v.rgb;
+  if (operand == 1u) return 1.0 - v.rgb;
+  if (operand == 2u) return vec3(v.a);
+  return vec3(1.0 - v.a);
+}
+
+float alpha_operand(uint operand, vec4 v) { return operand == 0u ? v.a : 1.0 - v.a; }
+
+vec3 combine_rgb(uint function, vec3 a0, vec3 a1, vec3 a2) {
+  if (function == GLPT_COMBINE_REPLACE) return a0;
+  if (function == GLPT_COMBINE_MODULATE) return a0 * a1;
+  if (function == GLPT_COMBINE_ADD) return a0 + a1;
+  if (function == GLPT_COMBINE_ADD_SIGNED) return a0 + a1 - 0.5;
+  if (function == GLPT_COMBINE_INTERPOLATE) return a0 * a2 + a1 * (1.0 - a2);
+  if (function == GLPT_COMBINE_SUBTRACT) return a0 - a1;
+  return vec3(4.0 * dot(a0 - 0.5, a1 - 0.5));  // DOT3_RGB(A)
+}
+
+float combine_alpha(uint function, float a0, float a1, float a2) {
+  if (function == GLPT_COMBINE_REPLACE) return a0;
+  if (function == GLPT_COMBINE_MODULATE) return a0 * a1;
+  if (function == GLPT_COMBINE_ADD) return a0 + a1;
+  if (function == GLPT_COMBINE_ADD_SIGNED) return a0 + a1 - 0.5;
+  if (function == GLPT_COMBINE_INTERPOLATE) return a0 * a2 + a1 * (1.0 - a2);
+  return a0 - a1;  // SUBTRACT
+}
+
+// GL 1.5 table 3.22/3.23: one unit's environment applied to the fragment colour `cf`.
+vec4 texture_environment(uint u, vec4 texel, vec4 cf, vec4 primary, vec4 constant, vec4 scale,
+                         vec4 texels[GLPT_RASTER_MAX_UNITS]) {
+  uint config = unit_config(u);
+  uint mode = (config >> 3u) & 7u;
+  uint format = (config >> 6u) & 7u;
+  const uint kRgba = 0u, kRgb = 1u, kAlpha = 2u, kLuminance = 3u, kLuminanceAlpha = 4u;
+  // Components the texture has: L/I give their value as RGB (stored expanded); ALPHA has no
+  // colour; RGB/L have no alpha. `texel` already holds GL's expansion (rgb of A is 0, a of RGB
+  // is 1), so only the formulas that treat missing components as "keep the fragment's" differ.
+  bool has_color = format != kAlpha;
+  bool has_alpha = format == kRgba || format == kAlpha || format == kLuminanceAlpha || format == 5u;
+  vec4 result = cf;
+  if (mode == 0u) {  // MODULATE
+    result.rgb = has_color ? cf.rgb * texel.rgb : cf.rgb;
+    result.a = has_alpha ? cf.a * texel.a : cf.a;
+  } else if (mode == 1u) {  // DECAL (defined for RGB and RGBA)
+    if (format == kRgb) result.rgb = texel.rgb;
+    if (format == kRgba) result.rgb = mix(cf.rgb, texel.rgb, texel.a);
+  } else if (mode == 2u) {  // BLEND
+    if (has_color) result.rgb = mix(cf.rgb, constant.rgb, texel.rgb);
+    if (has_alpha) result.a = format == 5u ? mix(cf.a, constant.a, texel.a) : cf.a * texel.a;
+  } else if (mode == 3u) {  // REPLACE
+    if (has_color) result.rgb = texel.rgb;
+    if (has_alpha) result.a = texel.a;
+  } else if (mode == 4u) {  // ADD
+    if (has_color) result.rgb = cf.rgb + texel.rgb;
+    if (has_alpha) result.a = format == 5u ? cf.a + texel.a : cf.a * texel.a;
+  } else {  // COMBINE
+    uint c = unit_combine(u);
+    uint alpha_operands = unit_alpha_operands(u);
+    vec4 previous = cf;
+    vec3 a_rgb[3];
+    float a_alpha[3];
+    for (uint i = 0u; i < 3u; ++i) {
+      vec4 src_rgb =
+          combine_source((c >> (8u + 3u * i)) & 7u, texel, primary, previous, constant, texels);
+      vec4 src_alpha =
+          combine_source((c >> (17u + 3u * i)) & 7u, texel, primary, previous, constant, texels);
+      a_rgb[i] = rgb_operand((c >> (26u + 2u * i)) & 3u, src_rgb);
+      a_alpha[i] = alpha_operand((alpha_operands >> i) & 1u, src_alpha);
+    }
+    uint rgb_function = c & 15u;
+    result.rgb = clamp(combine_rgb(rgb_function, a_rgb[0], a_rgb[1], a_rgb[2]) * scale.x, 0.0, 1.0);
+    if (rgb_function == GLPT_COMBINE_DOT3_RGBA) {
+      result.a = result.r;
+    } else {
+      result.a = clamp(combine_alpha((c >> 4u) & 15u, a_alpha[0], a_alpha[1], a_alpha[2]) * scale.y,
+                       0.0, 1.0);
+    }
+    return result;
+  }
+  return clamp(result, 0.0, 1.0);
+}
+
+bool alpha_test_passes(float alpha, float ref) {
+  uint func = (kAlphaFog >> 8u) & 7u;  // GL_NEVER + func - 1
+  if (func == 1u) return false;                 // NEVER
+  if (func == 2u) return alpha < ref;           // LESS
+  if (func == 3u) return alpha == ref;          // EQUAL
+  if (func == 4u) return alpha <= ref;          // LEQUAL
+  if (func == 5u) return alpha > ref;           // GREATER
+  if (func == 6u) return alpha != ref;          // NOTEQUAL
+  if (func == 7u) return alpha >= ref;          // GEQUAL
+  return true;                                  // ALWAYS
+}
+
+void main() {
+  if ((kFlags & GLPT_FS_CLEAR) != 0u) {
+    o_color = S.clear_color;
+    o_color_second = o_color;
+    return;
+  }
+  if ((kFlags & GLPT_FS_POLYGON_STIPPLE) != 0u) {
+    uint row = uint(gl_FragCoord.y) & 31u, column = uint(gl_FragCoord.x) & 31u;
+    if (((S.stipple[row >> 2u][row & 3u] >> (31u - column)) & 1u) == 0u) discard;
+  }
+  bool back = (kFlags & GLPT_FS_TWO_SIDE) != 0u && !gl_FrontFacing;
+  vec4 primary = back ? v_back_color : v_front_color;
+  vec4 secondary = back ? v_back_secondary : v_front_secondary;
+
+  // Texture units in order; every unit's texel first (crossbar sources may name any unit).
+  vec4 texels[GLPT_RASTER_MAX_UNITS];
+  for (uint u = 0u; u < GLPT_RASTER_MAX_UNITS; ++u)
+    texels[u] = (unit_config(u) & 7u) != 0u ? sample_unit(u) : vec4(1.0);
+  vec4 color = primary;
+  for (uint u = 0u; u < GLPT_RASTER_MAX_UNITS; ++u) {
+    if ((unit_config(u) & 7u) == 0u) continue;
+    color = texture_environment(u, texels[u], color, primary, S.env_color[u], S.env_scale[u],
+                                texels);
+  }
+
+  if ((kFlags & GLPT_FS_COLOR_SUM) != 0u) color.rgb = min(color.rgb + secondary.rgb, 1.0);
+
+  uint fog_mode = (kAlphaFog >> 12u) & 3u;
+  if (fog_mode != 0u) {
+    float z = v_fog;
+    float f;
+    if (fog_mode == 1u)
+      f = (S.fog_params.z - z) * S.fog_params.w;
+    else if (fog_mode == 2u)
+      f = exp(-S.fog_params.x * z);
+    else
+      f = exp(-(S.fog_params.x * z) * (S.fog_params.x * z));
+    f = clamp(f, 0.0, 1.0);
+    color.rgb = mix(S.fog_color.rgb, color.rgb, f);
+  }
+
+  if (!alpha_test_passes(color.a, S.alpha_ref.x)) discard;
+  o_color = color;
+  o_color_second = color;
+}

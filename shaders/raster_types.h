@@ -1,0 +1,168 @@
+// Data layouts shared by rt_core/raster (C++) and the fixed-function raster shaders
+// (raster_ff.vert, raster_ff.frag, raster_ff.geom).
+//
+// Compiled as C++ (glm types) and as GLSL. Every member is a 16-byte vector or a mat4, so the
+// std430 storage-buffer layout equals the C++ layout without padding rules to get wrong; the C++
+// side checks sizes with static_assert.
+#ifndef GLPT_SHADERS_RASTER_TYPES_H
+#define GLPT_SHADERS_RASTER_TYPES_H
+
+#ifdef __cplusplus
+#include <glm/glm.hpp>
+namespace glpt::rt::gpu {
+using vec4 = glm::vec4;
+using uvec4 = glm::uvec4;
+using ivec4 = glm::ivec4;
+using mat4 = glm::mat4;
+#endif
+
+#define GLPT_RASTER_MAX_LIGHTS 8
+#define GLPT_RASTER_MAX_UNITS 4
+#define GLPT_RASTER_MAX_CLIP_PLANES 6
+
+// ---- descriptor set 0 --------------------------------------------------------------------------
+#define GLPT_RASTER_BINDING_STATES 0  // RasterState[]: one per state snapshot of the record
+// Combined image samplers: binding GLPT_RASTER_BINDING_TEXTURES + 4 * unit + kind, kind 0..3 =
+// 1D, 2D, 3D, cube (unused bindings hold a 1x1 dummy texture).
+#define GLPT_RASTER_BINDING_TEXTURES 1
+#define GLPT_RASTER_TEXTURE_1D 0
+#define GLPT_RASTER_TEXTURE_2D 1
+#define GLPT_RASTER_TEXTURE_3D 2
+#define GLPT_RASTER_TEXTURE_CUBE 3
+// uint[]: per triangle of an unfilled draw, its boundary-edge mask (8 bits per triangle, four
+// per uint), starting at RasterPushConstants.indices.y
+#define GLPT_RASTER_BINDING_EDGES (GLPT_RASTER_BINDING_TEXTURES + 4 * GLPT_RASTER_MAX_UNITS)
+
+// ---- vertex inputs (one binding per attribute; a binding's stride is 0 when the record holds
+// one value for the whole draw) ------------------------------------------------------------------
+#define GLPT_RASTER_ATTR_POSITION 0   // vec4
+#define GLPT_RASTER_ATTR_NORMAL 1     // vec3
+#define GLPT_RASTER_ATTR_COLOR 2      // vec4
+#define GLPT_RASTER_ATTR_SECONDARY 3  // vec4
+#define GLPT_RASTER_ATTR_FOG 4        // float
+#define GLPT_RASTER_ATTR_EDGE 5       // uint8 as uint (geometry shader only)
+#define GLPT_RASTER_ATTR_TEXCOORD0 6  // vec4 x GLPT_RASTER_MAX_UNITS
+#define GLPT_RASTER_ATTR_COUNT (GLPT_RASTER_ATTR_TEXCOORD0 + GLPT_RASTER_MAX_UNITS)
+
+// ---- specialization constants (constant_id) ----------------------------------------------------
+// Vertex stage
+#define GLPT_SC_VS_FLAGS 0
+#define GLPT_VS_LIGHTING 1u
+#define GLPT_VS_TWO_SIDE 2u
+#define GLPT_VS_LOCAL_VIEWER 4u
+#define GLPT_VS_SEPARATE_SPECULAR 8u
+#define GLPT_VS_NORMALIZE 16u
+#define GLPT_VS_RESCALE_NORMAL 32u
+#define GLPT_VS_POINTS 64u  // point primitives: size, attenuation, GL's point rules
+#define GLPT_VS_POINT_ATTENUATION 128u
+#define GLPT_VS_LINES 256u             // line primitives: exact view clipping (clip distances)
+#define GLPT_VS_FOG_COORD_SOURCE 512u  // fog coordinate from glFogCoord, not eye distance
+#define GLPT_VS_NEEDS_EYE 1024u        // eye position needed (fog, texgen, clip planes, lights)
+#define GLPT_SC_LIGHT_MASK 1
+// bits 0-2: GL_COLOR_MATERIAL mode (0 off, 1 ambient, 2 diffuse, 3 ambient+diffuse, 4 specular,
+// 5 emission); bit 3: front tracked; bit 4: back tracked
+#define GLPT_SC_COLOR_MATERIAL 2
+// 3 bits per coordinate (s, t, r, q) per unit, 12 bits per unit: 0 off, 1 object linear,
+// 2 eye linear, 3 sphere map, 4 reflection map, 5 normal map. Units 0-1, then 2-3.
+#define GLPT_SC_TEXGEN_01 3
+#define GLPT_SC_TEXGEN_23 4
+#define GLPT_SC_TEXCOORD_UNITS 5  // bit u: unit u samples a texture
+#define GLPT_SC_CLIP_PLANES 6     // bit i: user clip plane i enabled
+// Geometry stage (raster_unfilled.geom): polygon mode GL_LINE / GL_POINT
+#define GLPT_SC_UNFILLED 7
+#define GLPT_UNFILLED_FRONT_CW 1u    // glFrontFace(GL_CW)
+#define GLPT_UNFILLED_CULL_FRONT 2u  // front-facing triangles are not drawn (culling, or the
+#define GLPT_UNFILLED_CULL_BACK 4u   // other face's pass); likewise back-facing ones
+#define GLPT_UNFILLED_OFFSET 8u      // polygon offset enabled for this mode
+#define GLPT_UNFILLED_FLAT 16u       // GL_FLAT: the provoking vertex's colours
+// Fragment stage
+// per unit (10..13): bits 0-2 target (0 off, 1 1D, 2 2D, 3 3D, 4 cube), bits 3-5 env mode
+// (0 modulate, 1 decal, 2 blend, 3 replace, 4 add, 5 combine), bits 6-8 base format (0 RGBA,
+// 1 RGB, 2 ALPHA, 3 LUMINANCE, 4 LUMINANCE_ALPHA, 5 INTENSITY), bits 9-11: GL_CLAMP on s, t, r
+#define GLPT_SC_UNIT0 10
+// per unit (14..17): combine rgb function (bits 0-3), alpha function (4-7), rgb sources (8-16,
+// 3 bits each), alpha sources (17-25), rgb operands (26-31, 2 bits each)
+#define GLPT_SC_COMBINE0 14
+// per unit (18..21): alpha operands (bits 0-2, 1 bit each)
+#define GLPT_SC_COMBINE_ALPHA_OPERANDS0 18
+#define GLPT_SC_FS_FLAGS 22
+#define GLPT_FS_TWO_SIDE 1u
+#define GLPT_FS_COLOR_SUM 2u  // add the secondary colour after texturing
+#define GLPT_FS_POLYGON_STIPPLE 4u
+#define GLPT_FS_CLEAR 8u  // the clear pipeline: output the clear colour only
+// bits 8-10: alpha test function (0 off, else GL_NEVER + n - 0x200 + 1); bits 12-13: fog mode
+// (0 off, 1 linear, 2 exp, 3 exp2)
+#define GLPT_SC_FS_ALPHA_FOG 23
+
+// Combine sources (3 bits) and functions (4 bits) as encoded above.
+#define GLPT_SRC_TEXTURE 0u
+#define GLPT_SRC_CONSTANT 1u
+#define GLPT_SRC_PRIMARY 2u
+#define GLPT_SRC_PREVIOUS 3u
+#define GLPT_SRC_TEXTURE0 4u  // + unit (ARB_texture_env_crossbar)
+#define GLPT_COMBINE_REPLACE 0u
+#define GLPT_COMBINE_MODULATE 1u
+#define GLPT_COMBINE_ADD 2u
+#define GLPT_COMBINE_ADD_SIGNED 3u
+#define GLPT_COMBINE_INTERPOLATE 4u
+#define GLPT_COMBINE_SUBTRACT 5u
+#define GLPT_COMBINE_DOT3_RGB 6u
+#define GLPT_COMBINE_DOT3_RGBA 7u
+
+struct RasterLight {
+  vec4 ambient;
+  vec4 diffuse;
+  vec4 specular;
+  vec4 position;     // eye space; w == 0: directional, xyz then normalized (as Mesa)
+  vec4 spot;         // xyz: normalized eye-space spot direction, w: cos(cutoff) (-2: none)
+  vec4 attenuation;  // x constant, y linear, z quadratic, w spot exponent
+  vec4 half_vector;  // directional light, infinite viewer: normalize(VP + (0, 0, 1))
+};
+
+struct RasterMaterial {
+  vec4 ambient;
+  vec4 diffuse;
+  vec4 specular;
+  vec4 emission;
+  vec4 shininess;  // x
+};
+
+// Everything a draw's shaders read, one per state snapshot of the record.
+struct RasterState {
+  mat4 modelview;
+  mat4 mvp;            // projection * modelview, computed on the CPU as Mesa does
+  mat4 normal_matrix;  // inverse transpose of the modelview (upper 3x3)
+  mat4 texture_matrix[GLPT_RASTER_MAX_UNITS];
+  vec4 viewport;      // x, y, width, height
+  vec4 depth_range;   // near, far
+  vec4 normal_scale;  // x: GL_RESCALE_NORMAL factor
+  vec4 light_model_ambient;
+  RasterLight lights[GLPT_RASTER_MAX_LIGHTS];
+  RasterMaterial material[2];                     // front, back
+  vec4 texgen_object[GLPT_RASTER_MAX_UNITS * 4];  // [unit * 4 + coord]
+  vec4 texgen_eye[GLPT_RASTER_MAX_UNITS * 4];
+  vec4 env_color[GLPT_RASTER_MAX_UNITS];
+  vec4 env_scale[GLPT_RASTER_MAX_UNITS];  // x: RGB scale, y: alpha scale
+  vec4 fog_color;
+  vec4 fog_params;                                // x density, y start, z end, w 1 / (end - start)
+  vec4 alpha_ref;                                 // x
+  vec4 clip_planes[GLPT_RASTER_MAX_CLIP_PLANES];  // eye space
+  uvec4 stipple[8];        // 32 rows of the polygon stipple, row r in stipple[r / 4][r % 4]
+  vec4 point_size;         // x size, y min, z max, w fade threshold
+  vec4 point_attenuation;  // xyz: constant, linear, quadratic
+  vec4 clear_color;        // the clear pipeline's colour
+  vec4 polygon_offset;     // x: factor, y: units times twice the depth buffer's resolution
+};
+
+struct RasterPushConstants {
+  uvec4 indices;  // x: state index, y: first edge-mask word of an unfilled draw
+};
+
+#ifdef __cplusplus
+static_assert(sizeof(RasterLight) == 112);
+static_assert(sizeof(RasterMaterial) == 80);
+static_assert(sizeof(RasterPushConstants) == 16);
+}  // namespace glpt::rt::gpu
+#endif
+
+#endif  // GLPT_SHADERS_RASTER_TYPES_H

@@ -1,0 +1,228 @@
+// The frame record as the GL front end builds it: commands in GL's order, primitives as GL
+// assembled them, and the state snapshot each draw refers to.
+#include <variant>
+
+#include "gl_test_context.hpp"
+
+namespace {
+
+class RecordTest : public GlTest {
+ protected:
+  const glpt::rec::FrameRecord& record() {
+    ctx_.recorder.seal();
+    return ctx_.recorder.record();
+  }
+  std::vector<const glpt::rec::Draw*> draws() {
+    std::vector<const glpt::rec::Draw*> out;
+    for (const auto& c : record().commands)
+      if (const auto* d = std::get_if<glpt::rec::Draw>(&c)) out.push_back(d);
+    return out;
+  }
+  const glpt::rec::StateSnapshot& state_of(const glpt::rec::Draw& d) {
+    return record().states.at(d.state);
+  }
+};
+
+void triangle(float z = 0.0f) {
+  glBegin(GL_TRIANGLES);
+  glColor3f(1, 0, 0);
+  glVertex4f(0, 0, z, 1);
+  glColor3f(0, 1, 0);
+  glVertex4f(2, 0, z, 2);  // homogeneous: kept as given
+  glVertex3f(0, 1, z);
+  glEnd();
+}
+
+TEST_F(RecordTest, ABeginEndBecomesOneDrawWithItsVertices) {
+  glNormal3f(0, 1, 0);
+  triangle();
+  const auto d = draws();
+  ASSERT_EQ(d.size(), 1u);
+  const glpt::rec::VertexData& v = *d[0]->vertices;
+  EXPECT_EQ(v.mode, GLenum{GL_TRIANGLES});
+  ASSERT_EQ(v.vertex_count(), 3u);
+  EXPECT_EQ(v.position[1], glm::vec4(2, 0, 0, 2));
+  ASSERT_EQ(v.color.size(), 3u);  // colours changed between vertices
+  EXPECT_EQ(v.color[2], glm::vec4(0, 1, 0, 1));
+  ASSERT_EQ(v.normal.size(), 1u);  // the normal did not: one shared value
+  EXPECT_EQ(v.normal[0], glm::vec3(0, 1, 0));
+  ASSERT_EQ(v.primitives.size(), 1u);
+  EXPECT_EQ(v.primitives[0].count, 3u);
+}
+
+TEST_F(RecordTest, PrimitivesWithOneStateBatchIntoOneDraw) {
+  for (int i = 0; i < 40; ++i) triangle();
+  ASSERT_EQ(draws().size(), 1u);
+  EXPECT_EQ(draws()[0]->vertices->primitives.size(), 40u);
+  EXPECT_EQ(draws()[0]->vertices->primitives[39].first, 117u);
+}
+
+TEST_F(RecordTest, AStateChangeStartsANewDrawAndSnapshot) {
+  triangle();
+  glTranslatef(1, 0, 0);
+  triangle();
+  triangle();
+  const auto d = draws();
+  ASSERT_EQ(d.size(), 2u);
+  EXPECT_NE(d[0]->state, d[1]->state);
+  const auto& a = state_of(*d[0]);
+  const auto& b = state_of(*d[1]);
+  EXPECT_NE(a.transform->modelview, b.transform->modelview);
+  // Blocks that did not change are shared, not copied.
+  EXPECT_EQ(a.lighting, b.lighting);
+  EXPECT_EQ(a.raster, b.raster);
+}
+
+TEST_F(RecordTest, EachDrawKeepsTheLightsItWasDrawnWith) {
+  glEnable(GL_LIGHTING);
+  glEnable(GL_LIGHT0);
+  triangle();
+  glDisable(GL_LIGHT0);
+  glEnable(GL_LIGHT1);
+  triangle();
+  const auto d = draws();
+  ASSERT_EQ(d.size(), 2u);
+  EXPECT_EQ(state_of(*d[0]).lighting->light_mask, 1u);
+  EXPECT_EQ(state_of(*d[1]).lighting->light_mask, 2u);
+}
+
+TEST_F(RecordTest, ProjectionAndViewportMayChangeWithinAFrame) {
+  glMatrixMode(GL_PROJECTION);
+  glFrustum(-1, 1, -1, 1, 1, 10);
+  triangle(-2);
+  glLoadIdentity();
+  glOrtho(0, 100, 0, 100, -1, 1);
+  glViewport(0, 0, 50, 50);
+  triangle();
+  const auto d = draws();
+  ASSERT_EQ(d.size(), 2u);
+  EXPECT_NE(state_of(*d[0]).transform->projection, state_of(*d[1]).transform->projection);
+  EXPECT_EQ(state_of(*d[1]).transform->viewport, (std::array<int32_t, 4>{0, 0, 50, 50}));
+}
+
+TEST_F(RecordTest, ClearsAreCommandsInDrawOrder) {
+  triangle();
+  glClearColor(0.25f, 0.5f, 0.75f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  triangle();
+  const auto& commands = record().commands;
+  ASSERT_EQ(commands.size(), 3u);
+  EXPECT_TRUE(std::holds_alternative<glpt::rec::Draw>(commands[0]));
+  const auto* clear = std::get_if<glpt::rec::Clear>(&commands[1]);
+  ASSERT_NE(clear, nullptr);
+  EXPECT_EQ(clear->mask, GLbitfield{GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT});
+  EXPECT_EQ(clear->color, glm::vec4(0.25f, 0.5f, 0.75f, 1.0f));
+  EXPECT_TRUE(std::holds_alternative<glpt::rec::Draw>(commands[2]));
+}
+
+TEST_F(RecordTest, PointsAndLinesAreRecorded) {
+  glBegin(GL_POINTS);
+  glVertex2f(0, 0);
+  glEnd();
+  glBegin(GL_LINE_LOOP);
+  glVertex2f(0, 0);
+  glVertex2f(1, 0);
+  glVertex2f(1, 1);
+  glEnd();
+  const auto d = draws();
+  ASSERT_EQ(d.size(), 2u);
+  EXPECT_EQ(d[0]->vertices->mode, GLenum{GL_POINTS});
+  EXPECT_EQ(d[1]->vertices->mode, GLenum{GL_LINE_LOOP});
+}
+
+TEST_F(RecordTest, RecolouringKeepsTheGeometryKey) {
+  triangle();
+  glColor3f(0, 0, 1);
+  glBegin(GL_TRIANGLES);
+  glVertex4f(0, 0, 0, 1);
+  glVertex4f(2, 0, 0, 2);
+  glVertex3f(0, 1, 0);
+  glEnd();
+  glTranslatef(0, 0, 0.5f);  // a separate draw
+  glBegin(GL_TRIANGLES);
+  glVertex4f(0, 0, 0, 1);
+  glVertex4f(2, 0, 0, 2);
+  glVertex3f(0, 1, 0);
+  glEnd();
+  // The first two triangles share a draw; compare the last draw with a fresh one of the same
+  // positions and colours.
+  const auto d = draws();
+  ASSERT_EQ(d.size(), 2u);
+  glpt::rec::VertexData recoloured = *d[1]->vertices;
+  recoloured.color = {glm::vec4(1, 1, 0, 1)};
+  glpt::finish_vertex_data(recoloured);
+  EXPECT_EQ(recoloured.geometry_key, d[1]->vertices->geometry_key);
+  EXPECT_NE(recoloured.attribute_key, d[1]->vertices->attribute_key);
+}
+
+TEST_F(RecordTest, DisablingColorMaterialKeepsTheColourItWrote) {
+  glEnable(GL_LIGHTING);
+  glColorMaterial(GL_FRONT, GL_DIFFUSE);
+  glEnable(GL_COLOR_MATERIAL);
+  glColor4f(0.1f, 0.2f, 0.3f, 0.4f);
+  glDisable(GL_COLOR_MATERIAL);
+  glColor4f(1, 1, 1, 1);  // no longer tracked
+  GLfloat diffuse[4];
+  glGetMaterialfv(GL_FRONT, GL_DIFFUSE, diffuse);
+  EXPECT_FLOAT_EQ(diffuse[0], 0.1f);
+  EXPECT_FLOAT_EQ(diffuse[3], 0.4f);
+  glGetMaterialfv(GL_BACK, GL_DIFFUSE, diffuse);
+  EXPECT_FLOAT_EQ(diffuse[0], 0.8f);  // the back was not tracked
+  triangle();
+  EXPECT_EQ(state_of(*draws()[0]).lighting->material[0].diffuse, glm::vec4(0.1f, 0.2f, 0.3f, 0.4f));
+}
+
+TEST_F(RecordTest, EnablingColorMaterialAppliesTheCurrentColourAtOnce) {
+  glColor3f(0.5f, 0.25f, 0.125f);
+  glColorMaterial(GL_FRONT_AND_BACK, GL_EMISSION);
+  glEnable(GL_COLOR_MATERIAL);
+  GLfloat emission[4];
+  glGetMaterialfv(GL_BACK, GL_EMISSION, emission);
+  EXPECT_FLOAT_EQ(emission[1], 0.25f);
+}
+
+TEST_F(RecordTest, MaterialChangesInsideBeginEndArePerVertex) {
+  const GLfloat red[4] = {1, 0, 0, 1}, blue[4] = {0, 0, 1, 1};
+  glBegin(GL_TRIANGLES);
+  glVertex3f(0, 0, 0);
+  glMaterialfv(GL_FRONT, GL_DIFFUSE, red);
+  glVertex3f(1, 0, 0);
+  glMaterialfv(GL_FRONT, GL_DIFFUSE, blue);
+  glVertex3f(0, 1, 0);
+  glEnd();
+  EXPECT_EQ(glGetError(), GLenum{GL_NO_ERROR});
+  const auto& m = draws().at(0)->vertices->material;
+  ASSERT_EQ(m.size(), 3u);
+  EXPECT_EQ(m[0][0].diffuse, glm::vec4(0.8f, 0.8f, 0.8f, 1.0f));  // before the first glMaterial
+  EXPECT_EQ(m[1][0].diffuse, glm::vec4(1, 0, 0, 1));
+  EXPECT_EQ(m[2][0].diffuse, glm::vec4(0, 0, 1, 1));
+}
+
+TEST_F(RecordTest, ADisplayListDrawnTwiceGivesEqualKeys) {
+  const GLuint list = glGenLists(1);
+  glNewList(list, GL_COMPILE);
+  triangle();
+  glEndList();
+  glCallList(list);
+  glTranslatef(1, 0, 0);
+  glCallList(list);
+  const auto d = draws();
+  ASSERT_EQ(d.size(), 2u);
+  EXPECT_EQ(d[0]->vertices->geometry_key, d[1]->vertices->geometry_key);
+  EXPECT_EQ(d[0]->vertices->attribute_key, d[1]->vertices->attribute_key);
+}
+
+TEST_F(RecordTest, EndListInsideBeginEndIsAnError) {
+  const GLuint list = glGenLists(1);
+  glNewList(list, GL_COMPILE_AND_EXECUTE);
+  glBegin(GL_TRIANGLES);
+  glEndList();  // GL_INVALID_OPERATION, and the list stays open
+  glEnd();
+  EXPECT_EQ(glGetError(), GLenum{GL_INVALID_OPERATION});
+  EXPECT_FALSE(glIsList(list));
+  glEndList();
+  EXPECT_EQ(glGetError(), GLenum{GL_NO_ERROR});
+  EXPECT_TRUE(glIsList(list));
+}
+
+}  // namespace
