@@ -142,22 +142,72 @@ int type_bytes(GLenum type) {
   }
 }
 
-std::array<uint8_t, 4> unsigned_component_bits(GLenum format, GLenum type) {
-  std::array<uint8_t, 4> bits{};
-  if (pixel_class(format) != PixelClass::kColor) return bits;
+ColorSourceLayout ColorSourceLayout::floats() {
+  ColorSourceLayout l;
+  l.kind.fill(Kind::kFloat);
+  l.rgba_floats = true;
+  return l;
+}
+
+ColorSourceLayout ColorSourceLayout::bytes() {
+  ColorSourceLayout l;
+  l.kind.fill(Kind::kUnsigned);
+  l.bits.fill(8);
+  l.rgba_bytes = true;
+  return l;
+}
+
+ColorSourceLayout color_source_layout(GLenum format, GLenum type) {
+  using Kind = ColorSourceLayout::Kind;
+  ColorSourceLayout l;
   const PackedLayout packed = packed_layout(type);
-  const uint8_t element_bits = type == GL_UNSIGNED_BYTE ? 8 : type == GL_UNSIGNED_SHORT ? 16 : 0;
+  const bool byte_array_packed =
+      type == GL_UNSIGNED_INT_8_8_8_8 || type == GL_UNSIGNED_INT_8_8_8_8_REV;
+  l.packed = packed.components != 0 && !byte_array_packed;
+  Kind kind = Kind::kFloat;
+  uint8_t bits = 0;
+  switch (type) {
+    case GL_UNSIGNED_BYTE:
+      kind = Kind::kUnsigned, bits = 8;
+      break;
+    case GL_UNSIGNED_SHORT:
+      kind = Kind::kUnsigned, bits = 16;
+      break;
+    case GL_BYTE:
+      kind = Kind::kSigned, bits = 8;
+      break;
+    case GL_SHORT:
+      kind = Kind::kSigned, bits = 16;
+      break;
+    case GL_UNSIGNED_INT:
+      kind = Kind::kUnsigned, bits = 32;
+      break;
+    case GL_INT:
+      kind = Kind::kSigned, bits = 32;
+      break;
+    default:
+      if (packed.components != 0) kind = Kind::kUnsigned;
+      break;
+  }
   const std::array<uint8_t, 4> order = format_component_order(format);
   const int components = packed.components != 0 ? packed.components : format_components(format);
   for (int e = 0; e < components; ++e) {
-    const uint8_t b = packed.components != 0 ? packed.fields[e].bits : element_bits;
-    if (order[e] == kLuminanceComponent) {
-      bits[0] = bits[1] = bits[2] = b;
+    const uint8_t b = packed.components != 0 ? packed.fields[size_t(e)].bits : bits;
+    const auto set = [&](int c) {
+      l.kind[size_t(c)] = kind;
+      l.bits[size_t(c)] = b;
+    };
+    if (order[size_t(e)] == kLuminanceComponent) {
+      set(0), set(1), set(2);
     } else {
-      bits[order[e]] = b;
+      set(order[size_t(e)]);
     }
   }
-  return bits;
+  // Little-endian: UNSIGNED_INT_8_8_8_8_REV with RGBA is the bytes R, G, B, A.
+  l.rgba_bytes =
+      format == GL_RGBA && (type == GL_UNSIGNED_BYTE || type == GL_UNSIGNED_INT_8_8_8_8_REV);
+  l.rgba_floats = format == GL_RGBA && type == GL_FLOAT;
+  return l;
 }
 
 GLenum check_format_and_type(GLenum format, GLenum type) {

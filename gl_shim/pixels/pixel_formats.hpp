@@ -38,11 +38,25 @@ struct PackedLayout {
 };
 PackedLayout packed_layout(GLenum type);
 
-// For each RGBA component, the bits of the unsigned normalized integer a colour group of this
-// format/type carries it in (0: none, or a signed, float or 32-bit element, which Mesa converts
-// through float). Luminance counts for R, G and B. Mesa converts such integers to a texture's
-// component size with integer arithmetic (bit replication when widening), not through float.
-std::array<uint8_t, 4> unsigned_component_bits(GLenum format, GLenum type);
+// How a colour group of a format/type carries each RGBA component, as Mesa's format conversion
+// (_mesa_format_convert) sees the client's image: it converts integer components with integer
+// arithmetic, and which intermediate it takes depends on whether the client format is an array
+// of components and whether it is exactly RGBA bytes or floats.
+struct ColorSourceLayout {
+  enum class Kind : uint8_t { kMissing, kUnsigned, kSigned, kFloat };
+  std::array<Kind, 4> kind{};     // per RGBA component (luminance counts for R, G and B)
+  std::array<uint8_t, 4> bits{};  // integer bits (kUnsigned, kSigned)
+  bool packed = false;            // a packed type that is no byte array (5_6_5, 10_10_10_2, ...)
+  bool rgba_bytes = false;        // R, G, B, A unsigned bytes in this order
+  bool rgba_floats = false;       // R, G, B, A floats in this order
+
+  // What Mesa converts from once pixel transfer has run: RGBA floats.
+  static ColorSourceLayout floats();
+  // What Mesa converts colour indices to before storing them: RGBA bytes.
+  static ColorSourceLayout bytes();
+};
+// For a colour format (not COLOR_INDEX) and a valid type.
+ColorSourceLayout color_source_layout(GLenum format, GLenum type);
 
 // GL_NO_ERROR, or the error GL (and Mesa) report for this format/type pair: an unknown format or
 // type, or GL_BITMAP with a format other than COLOR_INDEX / STENCIL_INDEX, is GL_INVALID_ENUM; a

@@ -116,6 +116,56 @@ std::vector<glm::vec4> unpack_color_raw(const UnpackSource& src) {
   return out;
 }
 
+std::vector<glm::uvec4> unpack_color_integers(const UnpackSource& src) {
+  const ClientImageLayout layout(src.modes, src.shape, src.three_d);
+  std::vector<glm::uvec4> out(src.shape.groups(), glm::uvec4(0u));
+  if (src.data == nullptr || out.empty()) return out;
+  const auto* base = static_cast<const uint8_t*>(src.data);
+  const GLenum type = src.shape.type;
+  const int components = format_components(src.shape.format);
+  const std::array<uint8_t, 4> order = format_component_order(src.shape.format);
+  const PackedLayout packed = packed_layout(type);
+  const int element_bytes = type_bytes(type);
+  const bool swap = layout.swap_bytes();
+  const auto put = [&](glm::uvec4& px, int element, uint32_t value) {
+    if (order[size_t(element)] == kLuminanceComponent) {
+      px.r = px.g = px.b = value;
+    } else {
+      px[order[size_t(element)]] = value;
+    }
+  };
+  for_each_group(layout, src.shape, [&](size_t i, size_t offset, int32_t) {
+    const uint8_t* p = base + offset;
+    if (packed.components != 0) {
+      const uint32_t bits = load_bits(p, element_bytes, swap);
+      for (int c = 0; c < packed.components; ++c) {
+        const PackedField f = packed.fields[size_t(c)];
+        put(out[i], c, (bits >> f.shift) & ((1u << f.bits) - 1u));
+      }
+      return;
+    }
+    for (int c = 0; c < components; ++c) {
+      const uint32_t bits = load_bits(p + c * element_bytes, element_bytes, swap);
+      uint32_t v = 0;
+      switch (type) {
+        case GL_BYTE:
+          v = uint32_t(int32_t(int8_t(bits)));
+          break;
+        case GL_SHORT:
+          v = uint32_t(int32_t(int16_t(bits)));
+          break;
+        case GL_FLOAT:
+          break;
+        default:
+          v = bits;
+          break;
+      }
+      put(out[i], c, v);
+    }
+  });
+  return out;
+}
+
 std::vector<uint32_t> unpack_indices_raw(const UnpackSource& src) {
   const ClientImageLayout layout(src.modes, src.shape, src.three_d);
   std::vector<uint32_t> out(src.shape.groups(), 0u);

@@ -33,6 +33,12 @@ struct UnpackSource {
 // R, G and B (GL 1.5 3.6.4 "Conversion to RGB").
 std::vector<glm::vec4> unpack_color_raw(const UnpackSource& src);
 
+// Colour formats: each component as the integer the client stored (unsigned elements and
+// packed fields as they are, signed elements sign-extended to 32 bits), luminance in R, G and B,
+// 0 for components the format lacks and for float elements. For conversions that, like Mesa's,
+// work on the integers themselves.
+std::vector<glm::uvec4> unpack_color_integers(const UnpackSource& src);
+
 // COLOR_INDEX and STENCIL_INDEX: integer indices. Float elements are truncated and signed ones
 // taken modulo 2^32, as Mesa extracts them; GL_BITMAP groups are 0 or 1.
 std::vector<uint32_t> unpack_indices_raw(const UnpackSource& src);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <initializer_list>
 
 #include "gl/gl_enums.h"
 
@@ -105,7 +106,57 @@ constexpr auto kSorted = [] {
   return sorted;
 }();
 
+// GL_RGB565 (GL 4.1): not a GL 1.5 internal format, but what Mesa stores GL_RGB as when it is
+// given GL_UNSIGNED_SHORT_5_6_5 data.
+constexpr GLint kRgb565 = 0x8D62;
+constexpr InternalFormatInfo kRgb565Info = {GL_RGB, 5, 6, 5, 0, 0, 0, 0, GL_RGB};
+
+bool is_any(GLenum v, std::initializer_list<GLenum> set) {
+  return std::find(set.begin(), set.end(), v) != set.end();
+}
+
 }  // namespace
+
+GLint sized_format_for(GLint internal_format, GLenum format, GLenum type) {
+  const bool rgba_or_bgra = format == GL_RGBA || format == GL_BGRA;
+  switch (internal_format) {
+    case GL_ALPHA:
+      return format == GL_ALPHA && type == GL_UNSIGNED_SHORT ? GL_ALPHA16 : internal_format;
+    case GL_LUMINANCE:
+      return format == GL_LUMINANCE && type == GL_UNSIGNED_SHORT ? GL_LUMINANCE16 : internal_format;
+    case GL_LUMINANCE_ALPHA:
+      return format == GL_LUMINANCE_ALPHA && type == GL_UNSIGNED_SHORT ? GL_LUMINANCE16_ALPHA16
+                                                                       : internal_format;
+    case GL_RGB:
+      if (format == GL_RGB && is_any(type, {GL_UNSIGNED_BYTE_3_3_2, GL_UNSIGNED_BYTE_2_3_3_REV}))
+        return GL_R3_G3_B2;
+      if (format == GL_RGB && is_any(type, {GL_UNSIGNED_SHORT_5_6_5, GL_UNSIGNED_SHORT_5_6_5_REV}))
+        return kRgb565;
+      if (rgba_or_bgra && type == GL_UNSIGNED_SHORT_5_5_5_1) return GL_RGB5;
+      if (rgba_or_bgra &&
+          is_any(type, {GL_UNSIGNED_INT_10_10_10_2, GL_UNSIGNED_INT_2_10_10_10_REV}))
+        return GL_RGB10;
+      return internal_format;
+    case GL_RGBA:
+      if (format == GL_RGBA && type == GL_UNSIGNED_SHORT) return GL_RGBA16;
+      if ((rgba_or_bgra || format == GL_ABGR_EXT) &&
+          is_any(type, {GL_UNSIGNED_SHORT_4_4_4_4, GL_UNSIGNED_SHORT_4_4_4_4_REV}))
+        return GL_RGBA4;
+      if (rgba_or_bgra && is_any(type, {GL_UNSIGNED_SHORT_5_5_5_1, GL_UNSIGNED_SHORT_1_5_5_5_REV}))
+        return GL_RGB5_A1;
+      if (rgba_or_bgra &&
+          is_any(type, {GL_UNSIGNED_INT_10_10_10_2, GL_UNSIGNED_INT_2_10_10_10_REV}))
+        return GL_RGB10_A2;
+      return internal_format;
+    default:
+      return internal_format;
+  }
+}
+
+const InternalFormatInfo* stored_format_info(uint32_t internal_format, uint32_t sized_format) {
+  const GLint f = GLint(sized_format != 0 ? sized_format : internal_format);
+  return f == kRgb565 ? &kRgb565Info : internal_format_info(f);
+}
 
 const InternalFormatInfo* internal_format_info(GLint internal_format) {
   const auto it = std::lower_bound(kSorted.begin(), kSorted.end(), internal_format,

@@ -29,4 +29,14 @@ struct InternalFormatInfo {
 // Null when `internal_format` is not a GL 1.5 texture internal format.
 const InternalFormatInfo* internal_format_info(GLint internal_format);
 
+// The sized format Mesa 25 (llvmpipe) stores an image as: `internal_format` itself, except for
+// the unsized GL_ALPHA, GL_LUMINANCE, GL_LUMINANCE_ALPHA, GL_RGB and GL_RGBA given data whose
+// type has another precision (measured: GL_RGBA from GL_RGBA/GL_UNSIGNED_SHORT is GL_RGBA16,
+// GL_RGB from GL_UNSIGNED_SHORT_5_6_5 is 5-6-5, from GL_UNSIGNED_INT_10_10_10_2 GL_RGB10, ...).
+GLint sized_format_for(GLint internal_format, GLenum format, GLenum type);
+
+// The sizes of an image's texels: its sized format's (TextureImage::sized_format, or
+// internal_format when that is 0). Includes the 5-6-5 format only Mesa's choice produces.
+const InternalFormatInfo* stored_format_info(uint32_t internal_format, uint32_t sized_format);
+
 }  // namespace glpt

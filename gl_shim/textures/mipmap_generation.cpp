@@ -108,6 +108,7 @@ std::shared_ptr<rec::TextureImage> downsample(const rec::TextureImage& src,
   dst->depth = std::max(1u, src.depth / 2);
   dst->border = src.border;
   dst->internal_format = src.internal_format;
+  dst->sized_format = src.sized_format;
   const uint32_t texel = bytes_per_texel(format);
   dst->texels.resize(size_t(dst->width) * dst->height * dst->depth * texel);
   const std::vector<Tap> tx = taps(src.width, dst->width);
@@ -140,7 +141,8 @@ void generate_mipmaps(TextureObject& object, int face) {
   const int base = object.sampler().base_level;
   const rec::TextureImage* base_image = object.image(face, base);
   if (base_image == nullptr || base_image->texels.empty()) return;
-  const InternalFormatInfo* info = internal_format_info(GLint(base_image->internal_format));
+  const InternalFormatInfo* info =
+      stored_format_info(base_image->internal_format, base_image->sized_format);
   if (info == nullptr) return;
   const int top =
       std::min(object.sampler().max_level, max_texture_levels(texture_slot(object.target())) - 1);

@@ -68,20 +68,77 @@ uint32_t narrow_from_storage(uint32_t stored, uint32_t bits, uint32_t storage_bi
   return uint32_t((uint64_t{stored} * max_of(bits) + half) / max_of(storage_bits));
 }
 
+namespace {
+
+// Mesa's _mesa_unorm_to_unorm.
+uint32_t unorm_to_unorm(uint32_t x, uint32_t from, uint32_t to) {
+  if (to > from) return widen_to_storage(x, from, to);
+  if (to < from) return narrow_from_storage(x, to, from);
+  return x;
+}
+
+// How _mesa_format_convert gets from the client's components to the texture's format.
+enum class Route : uint8_t {
+  kDirect,    // component by component (array formats, or RGBA bytes/floats into packed ones)
+  kViaBytes,  // through RGBA bytes (packed formats of at most 8 bits per channel)
+  kViaFloat   // through RGBA floats (wider packed formats)
+};
+
+Route conversion_route(const InternalFormatInfo& info, const ColorSourceLayout& source) {
+  const uint32_t storage_bits = info.texel_format() == rec::TexelFormat::kRgba16 ? 16 : 8;
+  bool array = true;  // Mesa's format for it is an array of 8- or 16-bit channels
+  uint32_t max_bits = 0;
+  for (int c = 0; c < 4; ++c) {
+    const uint32_t bits = info.channel_bits(c);
+    if (bits != 0 && bits != storage_bits) array = false;
+    max_bits = std::max(max_bits, bits);
+  }
+  if (array) {
+    if (!source.packed) return Route::kDirect;
+    return storage_bits <= 8 ? Route::kViaBytes : Route::kViaFloat;
+  }
+  if (source.rgba_bytes || source.rgba_floats) return Route::kDirect;
+  return max_bits > 8 ? Route::kViaFloat : Route::kViaBytes;
+}
+
+// One component as `bits` bits: `v` its value as a float, `raw` (when `has_raw`) the client's
+// integer, of `kind` and `from_bits` bits.
+uint32_t convert_component(float v, uint32_t raw, bool has_raw, ColorSourceLayout::Kind kind,
+                           uint32_t from_bits, uint32_t bits, Route route) {
+  using Kind = ColorSourceLayout::Kind;
+  if (route == Route::kViaFloat || kind == Kind::kFloat || kind == Kind::kMissing) {
+    if (route != Route::kViaBytes) return quantize(v, bits);
+    return unorm_to_unorm(quantize(v, 8), 8, bits);
+  }
+  const uint32_t to = route == Route::kViaBytes ? 8 : bits;
+  uint32_t x;
+  if (kind == Kind::kUnsigned) {
+    const uint32_t u = has_raw ? raw : uint32_t(std::lrint(double(v) * max_of(from_bits)));
+    x = unorm_to_unorm(u, from_bits, to);
+  } else {  // signed: negative values are 0, the rest has one bit less (_mesa_snorm_to_unorm)
+    const int64_t s =
+        has_raw ? int64_t(int32_t(raw)) : std::llrint(double(v) * max_of(from_bits - 1));
+    x = s <= 0 ? 0 : unorm_to_unorm(uint32_t(s), from_bits - 1, to);
+  }
+  return route == Route::kViaBytes ? unorm_to_unorm(x, 8, bits) : x;
+}
+
+}  // namespace
+
 void encode_color_texels(const InternalFormatInfo& info, const glm::vec4* rgba, size_t count,
-                         uint8_t* texels, const std::array<uint8_t, 4>& source_bits) {
+                         uint8_t* texels, const ColorSourceLayout& source,
+                         const glm::uvec4* integers) {
   const bool wide = info.texel_format() == rec::TexelFormat::kRgba16;
   const uint32_t storage_bits = wide ? 16 : 8;
+  const Route route = conversion_route(info, source);
   struct Channel {
-    int source;            // RGBA component, or -1 for a constant
-    uint32_t bits;         // Mesa's size for it (storage width for constants)
-    uint32_t source_bits;  // exact unsigned integer bits of the source, or 0
+    int source;     // RGBA component, or -1 for a constant
+    uint32_t bits;  // Mesa's size for it (storage width for constants)
   };
   std::array<Channel, 4> channels;
   for (int c = 0; c < 4; ++c) {
-    const int src = source_component(info.base_format, c);
     const uint32_t bits = info.channel_bits(c) != 0 ? info.channel_bits(c) : storage_bits;
-    channels[size_t(c)] = {src, bits, src >= 0 ? source_bits[size_t(src)] : 0u};
+    channels[size_t(c)] = {source_component(info.base_format, c), bits};
   }
   for (size_t i = 0; i < count; ++i) {
     for (int c = 0; c < 4; ++c) {
@@ -89,13 +146,10 @@ void encode_color_texels(const InternalFormatInfo& info, const glm::vec4* rgba, 
       uint32_t q;
       if (ch.source < 0) {
         q = c == 3 ? max_of(ch.bits) : 0;
-      } else if (ch.source_bits != 0) {
-        // Mesa's _mesa_unorm_to_unorm on the client's integer.
-        const uint32_t v = quantize(rgba[i][ch.source], ch.source_bits);
-        q = ch.bits >= ch.source_bits ? widen_to_storage(v, ch.source_bits, ch.bits)
-                                      : narrow_from_storage(v, ch.bits, ch.source_bits);
       } else {
-        q = quantize(rgba[i][ch.source], ch.bits);
+        const size_t s = size_t(ch.source);
+        q = convert_component(rgba[i][ch.source], integers ? integers[i][ch.source] : 0u,
+                              integers != nullptr, source.kind[s], source.bits[s], ch.bits, route);
       }
       const uint32_t stored = widen_to_storage(q, ch.bits, storage_bits);
       if (wide) {

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <glm/glm.hpp>
 
+#include "gl_shim/pixels/pixel_formats.hpp"
 #include "gl_shim/pixels/pixel_unpack.hpp"
 #include "gl_shim/textures/internal_formats.hpp"
 
@@ -16,17 +17,20 @@ namespace glpt {
 // Bytes of one texel of `format` (rec::TexelFormat's comments).
 uint32_t bytes_per_texel(rec::TexelFormat format);
 
-// Stores `count` colours (RGBA in [0, 1], after pixel transfer) as texels of `info`. Base format
-// conversion takes L and I from R; channels the base format lacks hold GL's constants
-// (rec::TexelFormat's layout: L -> (L,L,L,1), A -> (0,0,0,A), I -> (I,I,I,I), ...). Each
-// channel is rounded to Mesa's size for it (round(c * (2^b - 1))) and widened to the storage
-// width by bit replication, as Mesa widens narrower formats when it reads them.
-// `source_bits` (per RGBA component, 0: the colour was computed in float): components that are
-// exact unsigned integers of that many bits straight from the client (no pixel transfer) are
-// converted with Mesa's integer rule instead: bit replication when the channel is wider (5-bit
-// fields into 8 bits, bytes into GL_RGB10), rounded division when narrower.
+// Stores `count` colours (RGBA, as unpacked from the client or after pixel transfer) as texels
+// of `info`. Base format conversion takes L and I from R; channels the base format lacks hold GL's
+// constants (rec::TexelFormat's layout: L -> (L,L,L,1), A -> (0,0,0,A), I -> (I,I,I,I), ...).
+// Each channel gets Mesa's size for it and the value Mesa's format conversion gives it from the
+// client's components (`source`): integers converted with integer arithmetic (bit replication
+// when widening, rounding when narrowing), through a byte or float intermediate where Mesa takes
+// one, floats rounded to nearest even. The stored value is that widened to 8 or 16 bits by bit
+// replication, as Mesa widens narrower formats when it reads them.
+// `integers` (may be null when `source` has only floats): the client's integer components
+// (unpack_color_integers), which the integer conversions use.
 void encode_color_texels(const InternalFormatInfo& info, const glm::vec4* rgba, size_t count,
-                         uint8_t* texels, const std::array<uint8_t, 4>& source_bits = {});
+                         uint8_t* texels,
+                         const ColorSourceLayout& source = ColorSourceLayout::floats(),
+                         const glm::uvec4* integers = nullptr);
 
 // The common case without float conversion: GL_UNSIGNED_BYTE colour data into a format whose
 // channels all have 8 bits, without pixel transfer (the caller checks that), where the client's

@@ -82,14 +82,21 @@ std::vector<uint8_t> texels_from_client(const Context& ctx, const InternalFormat
     const std::vector<float> depth = unpack_depth(src, ctx.pixel_transfer);
     encode_depth_texels(info, depth.data(), n, texels.data());
   } else {
-    // Without pixel transfer, Mesa converts unsigned integer components with integer arithmetic.
+    // Mesa converts from the client's own components unless pixel transfer ran (then from RGBA
+    // floats) or they are colour indices (then from the RGBA bytes it looks them up as).
     const rec::PixelTransferState& t = ctx.pixel_transfer;
     const bool transfer = t.map_color || t.scale != glm::vec4(1.0f) || t.bias != glm::vec4(0.0f);
     if (!transfer && encode_byte_texels(info, src, texels.data())) return texels;
     const std::vector<glm::vec4> rgba = unpack_color(src, ctx.pixel_transfer);
-    encode_color_texels(
-        info, rgba.data(), n, texels.data(),
-        transfer ? std::array<uint8_t, 4>{} : unsigned_component_bits(shape.format, shape.type));
+    if (shape.format == GL_COLOR_INDEX || transfer) {
+      encode_color_texels(info, rgba.data(), n, texels.data(),
+                          shape.format == GL_COLOR_INDEX ? ColorSourceLayout::bytes()
+                                                         : ColorSourceLayout::floats());
+    } else {
+      const std::vector<glm::uvec4> integers = unpack_color_integers(src);
+      encode_color_texels(info, rgba.data(), n, texels.data(),
+                          color_source_layout(shape.format, shape.type), integers.data());
+    }
   }
   return texels;
 }
@@ -164,16 +171,18 @@ void tex_image(Context& ctx, int dims, GLenum target, GLint level, GLint interna
   if (level < 0 || level >= max_texture_levels(t->slot)) return record_error(ctx, GL_INVALID_VALUE);
   if (border < 0 || border > 1 || w < 0 || h < 0 || d < 0)
     return record_error(ctx, GL_INVALID_VALUE);
-  const InternalFormatInfo* info = internal_format_info(internal_format);
-  if (info == nullptr) return record_error(ctx, GL_INVALID_VALUE);
+  if (internal_format_info(internal_format) == nullptr) return record_error(ctx, GL_INVALID_VALUE);
   if (const GLenum e = check_format_and_type(format, type); e != GL_NO_ERROR)
     return record_error(ctx, e);
+  const GLint sized = sized_format_for(internal_format, format, type);
+  const InternalFormatInfo* info = stored_format_info(uint32_t(internal_format), uint32_t(sized));
   if (!formats_agree(*info, format)) return record_error(ctx, GL_INVALID_OPERATION);
   const bool legal = legal_dimensions(*t, level, w, h, d, border);
   TextureObject& object = target_object(ctx, *t);
   if (t->proxy) {
     // GL 1.5 3.8.11: an unsupported proxy image is no error; its state becomes all zero.
     std::shared_ptr<rec::TextureImage> img = new_image(*t, internal_format, w, h, d, border);
+    img->sized_format = sized != internal_format ? uint32_t(sized) : 0u;
     if (!legal) {
       *img = rec::TextureImage{};
       img->height = img->depth = 0;
@@ -186,6 +195,7 @@ void tex_image(Context& ctx, int dims, GLenum target, GLint level, GLint interna
     return record_error(ctx, GL_INVALID_VALUE);
   or_out_of_memory(ctx, [&] {
     std::shared_ptr<rec::TextureImage> img = new_image(*t, internal_format, w, h, d, border);
+    img->sized_format = sized != internal_format ? uint32_t(sized) : 0u;
     const ImageShape inner{GLsizei(img->width), GLsizei(img->height), GLsizei(img->depth), format,
                            type};
     img->texels =
@@ -219,7 +229,7 @@ void tex_sub_image(Context& ctx, int dims, GLenum target, GLint level, GLint xof
     return record_error(ctx, e);
   const rec::TextureImage* img = target_object(ctx, *t).image(t->face, level);
   if (img == nullptr) return record_error(ctx, GL_INVALID_OPERATION);  // undefined image
-  const InternalFormatInfo* info = internal_format_info(GLint(img->internal_format));
+  const InternalFormatInfo* info = stored_format_info(img->internal_format, img->sized_format);
   if (info == nullptr || !formats_agree(*info, format))
     return record_error(ctx, GL_INVALID_OPERATION);
   if (!region_fits(*img, dims, xoff, yoff, zoff, w, h, d))
@@ -270,7 +280,7 @@ void copy_tex_sub_image(Context& ctx, int dims, GLenum target, GLint level, GLin
   if (img == nullptr) return record_error(ctx, GL_INVALID_OPERATION);  // undefined image
   if (!region_fits(*img, dims, xoff, yoff, zoff, w, dims >= 2 ? h : 1, 1))
     return record_error(ctx, GL_INVALID_VALUE);
-  const InternalFormatInfo* info = internal_format_info(GLint(img->internal_format));
+  const InternalFormatInfo* info = stored_format_info(img->internal_format, img->sized_format);
   if (info == nullptr) return;
   if (info->base_format == GL_DEPTH_COMPONENT && ctx.drawable.depth_bits == 0)
     return record_error(ctx, GL_INVALID_OPERATION);
@@ -300,7 +310,7 @@ void get_tex_image(Context& ctx, GLenum target, GLint level, GLenum format, GLen
     return record_error(ctx, e);
   const rec::TextureImage* img = target_object(ctx, *t).image(t->face, level);
   if (img == nullptr) return;  // nothing defined, nothing written (not an error)
-  const InternalFormatInfo* info = internal_format_info(GLint(img->internal_format));
+  const InternalFormatInfo* info = stored_format_info(img->internal_format, img->sized_format);
   if (info == nullptr) return;
   if ((info->base_format == GL_DEPTH_COMPONENT) != (format == GL_DEPTH_COMPONENT))
     return record_error(ctx, GL_INVALID_OPERATION);

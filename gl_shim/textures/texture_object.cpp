@@ -90,7 +90,8 @@ void TextureObject::analyze() {
   for (int f = 0; f < faces(); ++f) {
     const rec::TextureImage* img = image(f, base);
     if (img == nullptr || img->width != first->width || img->height != first->height ||
-        img->depth != first->depth || img->internal_format != first->internal_format)
+        img->depth != first->depth || img->internal_format != first->internal_format ||
+        img->sized_format != first->sized_format)
       return;
     if (target_ == GL_TEXTURE_CUBE_MAP && img->width != img->height) return;
   }
@@ -106,6 +107,7 @@ void TextureObject::analyze() {
     for (int f = 0; f < faces() && consistent; ++f) {
       const rec::TextureImage* img = image(f, level);
       consistent = img != nullptr && img->internal_format == first->internal_format &&
+                   img->sized_format == first->sized_format &&
                    img->width == std::max(1u, first->width >> shift) &&
                    img->height == std::max(1u, first->height >> shift) &&
                    img->depth == std::max(1u, first->depth >> shift);
@@ -145,7 +147,8 @@ std::shared_ptr<const rec::TextureObjectSnapshot> TextureObject::snapshot() {
   }
   s->content_version = content_version_;
   if (const rec::TextureImage* base = image(0, std::max(sampler_.base_level, 0))) {
-    if (const InternalFormatInfo* info = internal_format_info(GLint(base->internal_format))) {
+    if (const InternalFormatInfo* info =
+            stored_format_info(base->internal_format, base->sized_format)) {
       s->base_format = info->base_format;
       s->texel_format = info->texel_format();
     }

@@ -217,7 +217,11 @@ bool tex_level_parameter_value(Context& ctx, GLenum target, GLint level, GLenum 
     return false;
   }
   const rec::TextureImage* img = target_object(ctx, *t).image(t->face, level);
+  // Sizes are those of the format the texels are stored in; the internal format is reported as
+  // requested.
   const InternalFormatInfo* info =
+      img != nullptr ? stored_format_info(img->internal_format, img->sized_format) : nullptr;
+  const InternalFormatInfo* requested =
       img != nullptr ? internal_format_info(GLint(img->internal_format)) : nullptr;
   const auto size = [&](uint32_t stored, bool bordered) {
     if (img == nullptr) return GLint(0);
@@ -240,7 +244,7 @@ bool tex_level_parameter_value(Context& ctx, GLenum target, GLint level, GLenum 
     case GL_TEXTURE_INTERNAL_FORMAT:  // == GL_TEXTURE_COMPONENTS
       // GL 1.5 table 6.17: 1 for an undefined image (Mesa answers GL_RGBA, GL 4's value); a
       // proxy image GL could not create has all-zero state.
-      out = info ? info->reported : img ? GLint(img->internal_format) : 1;
+      out = requested ? requested->reported : img ? GLint(img->internal_format) : 1;
       return true;
     case GL_TEXTURE_RED_SIZE:
       out = info ? info->red : 0;
