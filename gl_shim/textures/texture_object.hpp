@@ -92,8 +92,11 @@ class TextureObject {
 };
 
 // The texture objects of a share group (GLX share_list), like DisplayListStore for lists.
+// Contexts of one share group may run on several threads (a loader thread uploading textures
+// while another draws is common): the name table is guarded by `mutex`.
 struct TextureStore {
   TextureStore();
+  std::mutex mutex;
   // Named objects; generated names map to an object whose target is 0 until first bound.
   std::unordered_map<GLuint, std::shared_ptr<TextureObject>> objects;
   // Texture 0 of each target. Mesa keeps them in the share group's state too.

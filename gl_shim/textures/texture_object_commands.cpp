@@ -1,6 +1,7 @@
 // glGenTextures, glDeleteTextures, glBindTexture, glIsTexture, glAreTexturesResident,
 // glPrioritizeTextures (GL 1.5 3.8.12); the EXT_texture_object names share these (gen_gl_api.py).
 #include <algorithm>
+#include <mutex>
 
 #include "gl/gl_enums.h"
 #include "gl_shim/context.hpp"
@@ -13,6 +14,7 @@ void glGenTextures(Context& ctx, GLsizei n, GLuint* textures) {
   if (n < 0) return record_error(ctx, GL_INVALID_VALUE);
   if (textures == nullptr) return;
   TextureStore& store = *ctx.textures.store;
+  const std::lock_guard lock(store.mutex);
   for (GLsizei i = 0; i < n; ++i) {
     GLuint name = store.next_name;
     while (name == 0 || store.objects.count(name) != 0) ++name;
@@ -28,6 +30,7 @@ void glDeleteTextures(Context& ctx, GLsizei n, const GLuint* textures) {
   if (n < 0) return record_error(ctx, GL_INVALID_VALUE);
   if (textures == nullptr) return;
   TextureStore& store = *ctx.textures.store;
+  const std::lock_guard lock(store.mutex);
   for (GLsizei i = 0; i < n; ++i) {
     const auto it = store.objects.find(textures[i]);
     if (textures[i] == 0 || it == store.objects.end()) continue;  // silently ignored
@@ -51,6 +54,7 @@ void glBindTexture(Context& ctx, GLenum target, GLuint texture) {
     return;
   }
   TextureStore& store = *ctx.textures.store;
+  const std::lock_guard lock(store.mutex);
   std::shared_ptr<TextureObject>& object = store.objects[texture];
   if (!object) object = std::make_shared<TextureObject>(texture, target);  // an unused name
   if (object->target() == 0) object->set_target(target);
@@ -59,7 +63,8 @@ void glBindTexture(Context& ctx, GLenum target, GLuint texture) {
 }
 
 GLboolean glIsTexture(Context& ctx, GLuint texture) {
-  const TextureStore& store = *ctx.textures.store;
+  TextureStore& store = *ctx.textures.store;
+  const std::lock_guard lock(store.mutex);
   const auto it = store.objects.find(texture);
   return texture != 0 && it != store.objects.end() && it->second->target() != 0 ? 1 : 0;
 }
@@ -71,7 +76,8 @@ GLboolean glAreTexturesResident(Context& ctx, GLsizei n, const GLuint* textures,
     return 0;
   }
   if (textures == nullptr) return 0;
-  const TextureStore& store = *ctx.textures.store;
+  TextureStore& store = *ctx.textures.store;
+  const std::lock_guard lock(store.mutex);
   for (GLsizei i = 0; i < n; ++i) {
     if (textures[i] == 0 || store.objects.count(textures[i]) == 0) {
       record_error(ctx, GL_INVALID_VALUE);
@@ -88,6 +94,7 @@ void glPrioritizeTextures(Context& ctx, GLsizei n, const GLuint* textures,
   if (n < 0) return record_error(ctx, GL_INVALID_VALUE);
   if (textures == nullptr || priorities == nullptr) return;
   TextureStore& store = *ctx.textures.store;
+  const std::lock_guard lock(store.mutex);
   for (GLsizei i = 0; i < n; ++i) {
     if (textures[i] == 0) continue;  // GL ignores texture 0
     const auto it = store.objects.find(textures[i]);
