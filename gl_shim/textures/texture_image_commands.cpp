@@ -180,12 +180,12 @@ void tex_image(Context& ctx, int dims, GLenum target, GLint level, GLint interna
   const bool legal = legal_dimensions(*t, level, w, h, d, border);
   TextureObject& object = target_object(ctx, *t);
   if (t->proxy) {
-    // GL 1.5 3.8.11: an unsupported proxy image is no error; its state becomes all zero.
-    std::shared_ptr<rec::TextureImage> img = new_image(*t, internal_format, w, h, d, border);
-    img->sized_format = sized != internal_format ? uint32_t(sized) : 0u;
-    if (!legal) {
-      *img = rec::TextureImage{};
-      img->height = img->depth = 0;
+    // GL 1.5 3.8.11: an unsupported proxy image is no error; its state becomes all zero (it
+    // reads as an undefined image, as in Mesa).
+    std::shared_ptr<rec::TextureImage> img;
+    if (legal) {
+      img = new_image(*t, internal_format, w, h, d, border);
+      img->sized_format = sized != internal_format ? uint32_t(sized) : 0u;
     }
     return object.set_image(t->face, level, std::move(img));
   }

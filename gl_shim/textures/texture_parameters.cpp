@@ -242,9 +242,9 @@ bool tex_level_parameter_value(Context& ctx, GLenum target, GLint level, GLenum 
       out = img ? GLint(img->border) : 0;
       return true;
     case GL_TEXTURE_INTERNAL_FORMAT:  // == GL_TEXTURE_COMPONENTS
-      // GL 1.5 table 6.17: 1 for an undefined image (Mesa answers GL_RGBA, GL 4's value); a
-      // proxy image GL could not create has all-zero state.
-      out = requested ? requested->reported : img ? GLint(img->internal_format) : 1;
+      // An undefined image (or a proxy GL could not create) answers GL_RGBA, as Mesa and GL 3+
+      // do; GL 1.5's table 6.17 says 1 (no program can tell the difference in what it draws).
+      out = requested ? requested->reported : GL_RGBA;
       return true;
     case GL_TEXTURE_RED_SIZE:
       out = info ? info->red : 0;
