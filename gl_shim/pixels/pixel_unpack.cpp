@@ -80,58 +80,27 @@ uint32_t index_element(uint32_t bits, GLenum type) {
 
 }  // namespace
 
-std::vector<glm::vec4> unpack_color_raw(const UnpackSource& src) {
-  const ClientImageLayout layout(src.modes, src.shape, src.three_d);
-  std::vector<glm::vec4> out(src.shape.groups(), glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
-  if (src.data == nullptr || out.empty()) return out;
-  const auto* base = static_cast<const uint8_t*>(src.data);
-  const GLenum type = src.shape.type;
-  const int components = format_components(src.shape.format);
-  const std::array<uint8_t, 4> order = format_component_order(src.shape.format);
-  const PackedLayout packed = packed_layout(type);
-  const int element_bytes = type_bytes(type);
-  const bool swap = layout.swap_bytes();
-  const auto put = [&](glm::vec4& px, int element, float value) {
-    if (order[element] == kLuminanceComponent) {
-      px.r = px.g = px.b = value;
-    } else {
-      px[order[element]] = value;
-    }
-  };
-  for_each_group(layout, src.shape, [&](size_t i, size_t offset, int32_t) {
-    const uint8_t* p = base + offset;
-    glm::vec4& px = out[i];
-    if (packed.components != 0) {
-      const uint32_t bits = load_bits(p, element_bytes, swap);
-      for (int c = 0; c < packed.components; ++c) {
-        const PackedField f = packed.fields[c];
-        const uint32_t max = (1u << f.bits) - 1u;
-        put(px, c, unorm((bits >> f.shift) & max, max));
-      }
-      return;
-    }
-    for (int c = 0; c < components; ++c)
-      put(px, c, normalized_element(load_bits(p + c * element_bytes, element_bytes, swap), type));
-  });
-  return out;
-}
+namespace {
 
-std::vector<glm::uvec4> unpack_color_integers(const UnpackSource& src) {
+// The components of every group of a colour image, placed in RGBA order (luminance in R, G and
+// B) into pixels that start as `initial`. value(raw, field_bits) gives a component from its bits:
+// a packed field of `field_bits` bits, or an element as loaded (field_bits 0).
+template <typename Pixel, typename Value>
+std::vector<Pixel> unpack_color_components(const UnpackSource& src, Pixel initial, Value&& value) {
   const ClientImageLayout layout(src.modes, src.shape, src.three_d);
-  std::vector<glm::uvec4> out(src.shape.groups(), glm::uvec4(0u));
+  std::vector<Pixel> out(src.shape.groups(), initial);
   if (src.data == nullptr || out.empty()) return out;
   const auto* base = static_cast<const uint8_t*>(src.data);
-  const GLenum type = src.shape.type;
   const int components = format_components(src.shape.format);
   const std::array<uint8_t, 4> order = format_component_order(src.shape.format);
-  const PackedLayout packed = packed_layout(type);
-  const int element_bytes = type_bytes(type);
+  const PackedLayout packed = packed_layout(src.shape.type);
+  const int element_bytes = type_bytes(src.shape.type);
   const bool swap = layout.swap_bytes();
-  const auto put = [&](glm::uvec4& px, int element, uint32_t value) {
+  const auto put = [&](Pixel& px, int element, auto component) {
     if (order[size_t(element)] == kLuminanceComponent) {
-      px.r = px.g = px.b = value;
+      px.r = px.g = px.b = component;
     } else {
-      px[order[size_t(element)]] = value;
+      px[order[size_t(element)]] = component;
     }
   };
   for_each_group(layout, src.shape, [&](size_t i, size_t offset, int32_t) {
@@ -140,30 +109,42 @@ std::vector<glm::uvec4> unpack_color_integers(const UnpackSource& src) {
       const uint32_t bits = load_bits(p, element_bytes, swap);
       for (int c = 0; c < packed.components; ++c) {
         const PackedField f = packed.fields[size_t(c)];
-        put(out[i], c, (bits >> f.shift) & ((1u << f.bits) - 1u));
+        put(out[i], c, value((bits >> f.shift) & ((1u << f.bits) - 1u), f.bits));
       }
       return;
     }
-    for (int c = 0; c < components; ++c) {
-      const uint32_t bits = load_bits(p + c * element_bytes, element_bytes, swap);
-      uint32_t v = 0;
-      switch (type) {
-        case GL_BYTE:
-          v = uint32_t(int32_t(int8_t(bits)));
-          break;
-        case GL_SHORT:
-          v = uint32_t(int32_t(int16_t(bits)));
-          break;
-        case GL_FLOAT:
-          break;
-        default:
-          v = bits;
-          break;
-      }
-      put(out[i], c, v);
-    }
+    for (int c = 0; c < components; ++c)
+      put(out[i], c, value(load_bits(p + c * element_bytes, element_bytes, swap), 0));
   });
   return out;
+}
+
+}  // namespace
+
+std::vector<glm::vec4> unpack_color_raw(const UnpackSource& src) {
+  const GLenum type = src.shape.type;
+  return unpack_color_components(src, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f),
+                                 [type](uint32_t raw, int field_bits) {
+                                   return field_bits != 0 ? unorm(raw, (1u << field_bits) - 1u)
+                                                          : normalized_element(raw, type);
+                                 });
+}
+
+std::vector<glm::uvec4> unpack_color_integers(const UnpackSource& src) {
+  const GLenum type = src.shape.type;
+  return unpack_color_components(src, glm::uvec4(0u), [type](uint32_t raw, int field_bits) {
+    if (field_bits != 0) return raw;
+    switch (type) {
+      case GL_BYTE:
+        return uint32_t(int32_t(int8_t(raw)));
+      case GL_SHORT:
+        return uint32_t(int32_t(int16_t(raw)));
+      case GL_FLOAT:
+        return 0u;
+      default:
+        return raw;
+    }
+  });
 }
 
 std::vector<uint32_t> unpack_indices_raw(const UnpackSource& src) {
