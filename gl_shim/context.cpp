@@ -21,6 +21,7 @@ Context::Context(const Context* shared)
   if (shared != nullptr) {
     lists.store = shared->lists.store;
     buffers = shared->buffers;
+    textures.store = shared->textures.store;
   }
 }
 

@@ -34,7 +34,8 @@ namespace glpt {
 
 class Context {
  public:
-  // `shared` (may be null): a context whose display lists and buffer objects this one shares
+  // `shared` (may be null): a context whose display lists, texture and buffer objects this one
+  // shares
   // (GLX share_list).
   explicit Context(const Context* shared);
   ~Context();

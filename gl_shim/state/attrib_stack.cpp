@@ -122,6 +122,14 @@ constexpr GLenum kMultisampleCaps[] = {GL_MULTISAMPLE, GL_SAMPLE_ALPHA_TO_COVERA
 }  // namespace
 
 // The state a glPushAttrib saved: copies of the blocks its groups live in.
+// A texture object's state of the texture group (GL 1.5 table 6.16: its parameters).
+struct TextureParams {
+  GLuint name = 0;
+  rec::SamplerState sampler;
+  bool generate_mipmap = false;
+  float priority = 1.0f;
+};
+
 struct AttribFrame {
   GLbitfield mask = 0;
   CurrentAttributes current;
@@ -133,6 +141,10 @@ struct AttribFrame {
   rec::PixelTransferState pixel_transfer;
   ColorIndexState color_index;
   TextureUnits textures;
+  // The objects bound to each unit's targets, and texture 0 of each target (Mesa saves these
+  // separately: they are shared by every unit that has nothing bound).
+  std::array<std::array<TextureParams, kSlotCount>, rec::kMaxTextureUnits> bound_textures;
+  std::array<TextureParams, kSlotCount> default_textures;
   HintState hints;
   GLuint list_base = 0;
   std::array<bool, kCapCount> caps{};
@@ -159,6 +171,25 @@ void set_cap(Context& ctx, GLenum cap, bool on) {
     impl::glEnable(ctx, cap);
   else
     impl::glDisable(ctx, cap);
+}
+
+TextureParams params_of(const TextureObject& t) {
+  return {t.name(), t.sampler(), t.generate_mipmap, t.priority};
+}
+
+void apply_params(TextureObject& t, const TextureParams& p) {
+  if (!(t.sampler() == p.sampler)) t.edit_sampler() = p.sampler;
+  t.generate_mipmap = p.generate_mipmap;
+  t.priority = p.priority;
+}
+
+void save_textures(const Context& ctx, AttribFrame& f) {
+  const TextureUnits& t = ctx.textures;
+  for (int s = 0; s < kSlotCount; ++s)
+    f.default_textures[size_t(s)] = params_of(*t.store->defaults[size_t(s)]);
+  for (size_t u = 0; u < t.units.size(); ++u)
+    for (int s = 0; s < kSlotCount; ++s)
+      f.bound_textures[u][size_t(s)] = params_of(t.bound(t.units[u], s));
 }
 
 void save_enables(Context& ctx, AttribFrame& f) {
@@ -307,7 +338,9 @@ void restore_polygon(Context& ctx, const AttribFrame& f) {
 
 // Pixel transfer and zoom, and the read buffer (table 6.22; pixel maps are in no group).
 void restore_pixel_mode(Context& ctx, const AttribFrame& f) {
+  const std::shared_ptr<const rec::PixelMaps> maps = ctx.pixel_transfer.maps;
   ctx.pixel_transfer = f.pixel_transfer;
+  ctx.pixel_transfer.maps = maps;
   ctx.raster.ops.read_buffer = f.raster.ops.read_buffer;
 }
 
@@ -319,10 +352,29 @@ void restore_transform(Context& ctx, const AttribFrame& f, bool changed) {
   ctx.transform = f.transform;
 }
 
+// As Mesa does it: the units' state, then each binding by name (a texture deleted meanwhile is
+// bound again as a new object, as glBindTexture would), then the saved parameters into the
+// objects now bound and into the default textures.
 void restore_texture(Context& ctx, const AttribFrame& f) {
-  for (size_t u = 0; u < ctx.textures.units.size(); ++u)
-    ctx.textures.units[u] = f.textures.units[u];
-  ctx.textures.active = f.textures.active;
+  TextureUnits& t = ctx.textures;
+  for (size_t u = 0; u < t.units.size(); ++u) {
+    const auto bound = t.units[u].bound;
+    t.units[u] = f.textures.units[u];
+    t.units[u].bound = bound;
+  }
+  for (uint32_t u = 0; u < t.units.size(); ++u) {
+    t.active = u;
+    for (int s = 0; s < kSlotCount; ++s) {
+      const TextureParams& saved = f.bound_textures[u][size_t(s)];
+      if (t.bound(t.units[u], s).name() != saved.name)
+        impl::glBindTexture(ctx, slot_target(s), saved.name);
+      TextureObject& now = t.bound(t.units[u], s);
+      if (now.name() != 0 && now.name() == saved.name) apply_params(now, saved);
+    }
+  }
+  for (int s = 0; s < kSlotCount; ++s)
+    apply_params(*t.store->defaults[size_t(s)], f.default_textures[size_t(s)]);
+  t.active = f.textures.active;
 }
 
 void restore_viewport(Context& ctx, const AttribFrame& f) {
@@ -364,6 +416,7 @@ void glPushAttrib(Context& ctx, GLbitfield mask) {
   f->pixel_transfer = ctx.pixel_transfer;
   f->color_index = ctx.color_index;
   f->textures = ctx.textures;
+  save_textures(ctx, *f);
   f->hints = ctx.hints;
   f->list_base = ctx.lists.list_base;
   save_enables(ctx, *f);

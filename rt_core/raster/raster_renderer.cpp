@@ -89,6 +89,8 @@ struct RasterRenderer::Recording {
   VkPipeline bound_pipeline = VK_NULL_HANDLE;
   // Texture descriptors currently pushed, per binding (to skip redundant pushes).
   std::array<VkImageView, 4 * GLPT_RASTER_MAX_UNITS> bound_views{};
+  // ... and their samplers: a texture whose parameters changed keeps its view (same texels).
+  std::array<VkSampler, 4 * GLPT_RASTER_MAX_UNITS> bound_samplers{};
   bool descriptors_pushed = false;
   // Dynamic state last set in this command buffer.
   bool dynamic_valid = false;
@@ -410,7 +412,7 @@ void RasterRenderer::bind(Recording& r, const PipelineKey& key,
       }
     }
   }
-  if (r.descriptors_pushed && views == r.bound_views) return;
+  if (r.descriptors_pushed && views == r.bound_views && samplers == r.bound_samplers) return;
   std::array<VkDescriptorImageInfo, 4 * GLPT_RASTER_MAX_UNITS> images{};
   std::array<VkWriteDescriptorSet, 2 + 4 * GLPT_RASTER_MAX_UNITS> writes{};
   VkDescriptorBufferInfo states{states_.handle(), 0, VK_WHOLE_SIZE};
@@ -435,6 +437,7 @@ void RasterRenderer::bind(Recording& r, const PipelineKey& key,
   push_descriptor_set_(r.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.layout(), 0,
                        static_cast<uint32_t>(writes.size()), writes.data());
   r.bound_views = views;
+  r.bound_samplers = samplers;
   r.descriptors_pushed = true;
 }
 
