@@ -31,6 +31,9 @@ namespace {
 
 constexpr uint32_t bit(ArrayKind kind) { return 1u << int(kind); }
 
+// What a live draw reads: every array but the colour index one (glpt renders RGBA).
+constexpr uint32_t kDrawnArrays = kAllArrays & ~bit(ArrayKind::kIndex);
+
 template <typename T>
 void append_values(const ArrayReader& reader, const std::vector<uint32_t>& vertices,
                    std::vector<T>& out) {
@@ -133,7 +136,7 @@ void draw_elements(Context& ctx, GLenum mode, const std::vector<GLsizei>& counts
   std::vector<uint32_t> vertices;
   compact_indices(elements, vertices);
   ArrayVertices values;
-  read_array_vertices(ctx, vertices, ArrayConversion::kVertexFetch, values);
+  read_array_vertices(ctx, vertices, ArrayConversion::kVertexFetch, values, kDrawnArrays);
   record_array_draw(ctx, mode, values, std::move(elements), std::move(ranges),
                     ArrayDrawSource::kElements);
 }
@@ -189,12 +192,12 @@ bool read_indices(const Context& ctx, GLsizei count, GLenum type, const void* in
 }
 
 void read_array_vertices(const Context& ctx, const std::vector<uint32_t>& vertices,
-                         ArrayConversion conversion, ArrayVertices& out) {
+                         ArrayConversion conversion, ArrayVertices& out, uint32_t kinds) {
   out = ArrayVertices{};
   const VertexArrays& a = ctx.arrays;
   for (int k = 0; k < kArrayKinds; ++k) {
     const ClientArray& array = a.arrays[size_t(k)];
-    if (!array.enabled) continue;
+    if (!array.enabled || (kinds & (1u << k)) == 0) continue;
     out.mask |= 1u << k;
     const ArrayReader reader(array, conversion);
     switch (ArrayKind(k)) {
@@ -296,7 +299,7 @@ void glDrawArrays(Context& ctx, GLenum mode, GLint first, GLsizei count) {
     if (executing_while_compiling(ctx)) return draw_as_immediate(ctx, mode, vertices);
     if (!vertex_array_enabled(ctx)) return;
     ArrayVertices values;
-    read_array_vertices(ctx, vertices, ArrayConversion::kVertexFetch, values);
+    read_array_vertices(ctx, vertices, ArrayConversion::kVertexFetch, values, kDrawnArrays);
     record_array_draw(ctx, mode, values, {}, {{0, uint32_t(count)}}, ArrayDrawSource::kArrays);
   });
 }
@@ -327,7 +330,7 @@ void glMultiDrawArrays(Context& ctx, GLenum mode, const GLint* first, const GLsi
     }
     if (vertices.empty() || !vertex_array_enabled(ctx)) return;
     ArrayVertices values;
-    read_array_vertices(ctx, vertices, ArrayConversion::kVertexFetch, values);
+    read_array_vertices(ctx, vertices, ArrayConversion::kVertexFetch, values, kDrawnArrays);
     record_array_draw(ctx, mode, values, {}, std::move(ranges), ArrayDrawSource::kArrays);
   });
 }

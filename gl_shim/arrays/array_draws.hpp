@@ -18,7 +18,7 @@ class Context;
 inline constexpr uint64_t kMaxArrayDrawVertices = uint64_t{1} << 24;
 
 // The vertices of the enabled arrays at `vertices` (vertex numbers), converted, each attribute
-// stored per vertex. Only the arrays of `recorded` (bits: 1 << ArrayKind) are read.
+// stored per vertex.
 struct ArrayVertices {
   uint32_t mask = 0;  // 1 << ArrayKind of the attributes held
   std::vector<glm::vec4> position, color, secondary_color;
@@ -31,9 +31,12 @@ struct ArrayVertices {
   uint32_t count() const { return uint32_t(position.size()); }
 };
 
-// Reads the listed vertices of every enabled array (the vertex array included) with `conversion`.
+// Reads the listed vertices of every enabled array (the vertex array included) with `conversion`;
+// only the arrays `kinds` names (bits 1 << ArrayKind).
+inline constexpr uint32_t kAllArrays = (1u << kArrayKinds) - 1;
 void read_array_vertices(const Context& ctx, const std::vector<uint32_t>& vertices,
-                         ArrayConversion conversion, ArrayVertices& out);
+                         ArrayConversion conversion, ArrayVertices& out,
+                         uint32_t kinds = kAllArrays);
 
 // glArrayElement's effect for vertex `i` of the enabled arrays (immediate conversions): the
 // current attributes, then a vertex (GL 1.5 2.8). Also what a compiled glArrayElement replays.

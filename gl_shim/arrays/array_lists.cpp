@@ -95,8 +95,10 @@ GLenum draw_error(const Context& ctx, GLenum mode, GLsizei count) {
 void compile_primitive(Context& ctx, ListStream& list, GLenum mode,
                        const std::vector<uint32_t>& vertices) {
   if (vertices.empty() || !ctx.arrays[ArrayKind::kVertex].enabled) return;
+  // The colour index array is left out: a replayed primitive sets no current value.
   ArrayVertices v;
-  read_array_vertices(ctx, vertices, ArrayConversion::kImmediate, v);
+  read_array_vertices(ctx, vertices, ArrayConversion::kImmediate, v,
+                      kAllArrays & ~(1u << int(ArrayKind::kIndex)));
   write(list, CommandId::glDrawArrays, mode, GL_NO_ERROR, v);
 }
 

@@ -287,7 +287,8 @@ const GLubyte* glGetString(Context& ctx, GLenum name) {
       break;
     // Only extensions whose every entry point works are advertised.
     case GL_EXTENSIONS:
-      s = "";
+      s = "GL_ARB_vertex_buffer_object GL_EXT_vertex_array GL_EXT_compiled_vertex_array "
+          "GL_EXT_draw_range_elements GL_EXT_multi_draw_arrays";
       break;
     default:
       record_error(ctx, GL_INVALID_ENUM);
