@@ -49,6 +49,8 @@ void finish_vertex_data(rec::VertexData& d) {
 
   ContentHash geometry;
   geometry.add_bytes(&d.mode, sizeof d.mode);
+  geometry.add_bytes(&d.source, sizeof d.source);
+  geometry.add_bytes(&d.per_vertex, sizeof d.per_vertex);
   geometry.add(d.position);
   geometry.add(d.indices);
   geometry.add(d.primitives);
@@ -67,7 +69,11 @@ void finish_vertex_data(rec::VertexData& d) {
 
 void FrameRecorder::add_primitive(rec::StateId state, rec::VertexData& p) {
   if (p.position.empty() || p.primitives.size() != 1) return;
-  if (open_ && (open_state_ != state || open_->mode != p.mode ||
+  // Mesa draws what it has batched when the program starts giving a colour per vertex (its
+  // vertex layout grows); a primitive without one continues a batch that has one (the layout
+  // stays until the next state change), so `per_vertex` only grows within a draw.
+  if (open_ && (open_state_ != state || open_->mode != p.mode || open_->source != p.source ||
+                (p.per_vertex & ~open_->per_vertex) != 0 ||
                 open_->material.empty() != p.material.empty()))
     seal();
   vertex_bytes_ += p.position.size() * bytes_per_vertex(p);
