@@ -58,6 +58,11 @@ void bind_target_and_make_current(Context& ctx, WindowTarget* target) {
   fb.viewport_height = static_cast<GLsizei>(h);
   ctx.raster.ops.scissor_box = {0, 0, static_cast<int32_t>(w), static_cast<int32_t>(h)};
   fb.viewport_initialized = true;
+  // GL 1.5 4.2.1, 4.3.2: the initial draw and read buffers are the back buffer when there is one,
+  // else the front.
+  ctx.drawable = target->config();
+  const uint32_t buffer = ctx.drawable.double_buffered ? GL_BACK : GL_FRONT;
+  ctx.raster.ops.draw_buffer = ctx.raster.ops.read_buffer = buffer;
 }
 
 void make_current_headless(Context& ctx, HeadlessTarget& target) {

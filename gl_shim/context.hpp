@@ -66,6 +66,9 @@ class Context {
   Stopwatch recording_since;  // when the current record started (for GLPT_STATS)
   // The drawable this context draws to (set by glXMakeCurrent / eglMakeCurrent / headless).
   WindowTarget* target = nullptr;
+  // The buffers of the drawable the context was first made current with (GLX visual / EGL config):
+  // what GL_DOUBLEBUFFER, GL_*_BITS and the initial draw/read buffers report.
+  rec::DrawableConfig drawable;
   std::unique_ptr<FrameOutput> output;    // created when the first record is executed
   bool renderer_unavailable = false;      // creation failed: reported once, never retried
   void* window_system_context = nullptr;  // the GLX/EGL context wrapping this one

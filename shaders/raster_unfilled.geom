@@ -60,9 +60,14 @@ vec3 window_of(vec4 clip) {
               (ndc.z * 0.5 + 0.5) * (S.depth_range.y - S.depth_range.x) + S.depth_range.x);
 }
 
-void emit(uint i, bool back, uint colour_from, float offset_ndc) {
+void emit(uint i, bool back, uint colour_from, float window_offset) {
   vec4 p = gl_in[i].gl_Position;
-  p.z += offset_ndc * p.w;
+  if (window_offset != 0.0) {
+    // As Mesa: the offset moves the vertex's window z, which is then clamped to [0, 1].
+    float n = S.depth_range.x, f = S.depth_range.y;
+    float window_z = clamp((p.z / p.w * 0.5 + 0.5) * (f - n) + n + window_offset, 0.0, 1.0);
+    p.z = f != n ? ((window_z - n) / (f - n) * 2.0 - 1.0) * p.w : p.z;
+  }
   gl_Position = p;
   // Colours: two-sided lighting picks the side the triangle shows (lines and points themselves
   // are always front-facing); flat shading uses the triangle's provoking vertex.
@@ -114,9 +119,7 @@ void main() {
     float a = e.y * f.z - e.z * f.y;
     float b = e.z * f.x - e.x * f.z;
     float slope = max(abs(a / det), abs(b / det));
-    float window_offset = slope * S.polygon_offset.x + S.polygon_offset.y;
-    float range = S.depth_range.y - S.depth_range.x;
-    offset = range != 0.0 ? 2.0 * window_offset / range : 0.0;
+    offset = slope * S.polygon_offset.x + S.polygon_offset.y;
   }
   bool back = (kVsFlags & GLPT_VS_TWO_SIDE) != 0u && !front;
   // The colour each emitted vertex takes: its own, or the provoking vertex's (v2) when flat.

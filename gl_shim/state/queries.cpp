@@ -217,28 +217,32 @@ bool lookup(const Context& ctx, GLenum pname, Value* out) {
     case GL_COLOR_MATERIAL_PARAMETER:
       *out = ints({double(ctx.lighting.color_material_mode)});
       return true;
-    // The framebuffer glpt presents: RGBA8, 24-bit depth, 8-bit stencil, double-buffered.
+    // The drawable's buffers (its GLX visual / EGL config): RGBA8 colour.
     case GL_RED_BITS:
     case GL_GREEN_BITS:
     case GL_BLUE_BITS:
-    case GL_ALPHA_BITS:
       *out = ints({8});
+      return true;
+    case GL_ALPHA_BITS:
+      *out = ints({ctx.drawable.has_alpha ? 8.0 : 0.0});
       return true;
     case GL_DEPTH_BITS:
-      *out = ints({24});
+      *out = ints({double(ctx.drawable.depth_bits)});
       return true;
     case GL_STENCIL_BITS:
-      *out = ints({8});
+      *out = ints({double(ctx.drawable.stencil_bits)});
       return true;
-    case GL_INDEX_BITS:
     case GL_ACCUM_RED_BITS:
     case GL_ACCUM_GREEN_BITS:
     case GL_ACCUM_BLUE_BITS:
     case GL_ACCUM_ALPHA_BITS:
+      *out = ints({double(ctx.drawable.accum_bits)});
+      return true;
+    case GL_INDEX_BITS:
       *out = ints({0});
       return true;
     case GL_DOUBLEBUFFER:
-      *out = boolean(true);
+      *out = boolean(ctx.drawable.double_buffered);
       return true;
     case GL_RGBA_MODE:
       *out = boolean(true);

@@ -236,7 +236,8 @@ ColorTargets resolve_draw_buffer(uint32_t draw_buffer, bool double_buffered) {
       return ColorTargets::kFront;
     case GL_BACK:
     case GL_BACK_LEFT:
-      return double_buffered ? ColorTargets::kBack : ColorTargets::kNone;
+      // A single-buffered drawable has one buffer; Mesa draws GL_BACK into it too.
+      return double_buffered ? ColorTargets::kBack : ColorTargets::kFront;
     case GL_FRONT_AND_BACK:
       return double_buffered ? ColorTargets::kFrontAndBack : ColorTargets::kFront;
     default:  // right buffers: glpt's drawables are not stereo

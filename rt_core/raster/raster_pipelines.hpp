@@ -15,7 +15,9 @@
 
 namespace glpt::rt {
 
-inline constexpr VkFormat kColorFormat = VK_FORMAT_R8G8B8A8_UNORM;
+// BGRA: the byte order X windows show (32-bit 0x..RRGGBB pixels), so presenting is a plain copy.
+// Blending, logic ops and masks work per channel, so the order changes no GL result.
+inline constexpr VkFormat kColorFormat = VK_FORMAT_B8G8R8A8_UNORM;
 inline constexpr VkFormat kDepthStencilFormat = VK_FORMAT_D24_UNORM_S8_UINT;
 
 class RasterPipelines {

@@ -24,6 +24,11 @@ T load_device_function(const VulkanDevice& device, const char* name) {
   return f;
 }
 
+// The colour buffers are BGRA8 (kColorFormat); the front end speaks RGBA8.
+void swap_red_and_blue(uint8_t* pixels, size_t count) {
+  for (size_t i = 0; i < count; ++i) std::swap(pixels[4 * i], pixels[4 * i + 2]);
+}
+
 bool finite(const glm::vec4& v) {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && std::isfinite(v.w);
 }
@@ -294,7 +299,17 @@ void RasterRenderer::execute(const rec::FrameRecord& record, const rec::Drawable
   vertices_.write(upload.data(), arena.size());
   stats.upload_ms += timer.elapsed_ms();
 
-  if (end && end->front_rgba)
+  if (end && end->present_to && end->present_to->generation != present_generation_) {
+    // The window's memory, imported once per allocation (empty if the device cannot import it).
+    present_ = GpuBuffer();
+    const size_t bytes = (size_t{end->present_to->width} * end->present_to->height * 4 +
+                          device_->host_pointer_alignment() - 1) &
+                         ~(device_->host_pointer_alignment() - 1);
+    present_ = GpuBuffer::import_host(*device_, end->present_to->pixels, bytes,
+                                      VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+    present_generation_ = end->present_to->generation;
+  }
+  if (end && (end->front_rgba || (end->present_to && !present_)))
     ensure_capacity(*device_, readback_, size_t{drawable_.width} * drawable_.height * 4,
                     VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
 
@@ -316,10 +331,19 @@ void RasterRenderer::execute(const rec::FrameRecord& record, const rec::Drawable
     if (end) record_frame_end(cmd, *end);
   });
   stats.raster_ms += raster_timer.elapsed_ms();
+  const size_t pixel_count = size_t{drawable_.width} * drawable_.height;
   if (end && end->front_rgba) {
-    const size_t bytes = size_t{drawable_.width} * drawable_.height * 4;
-    end->front_rgba->resize(bytes);
-    std::memcpy(end->front_rgba->data(), readback_.mapped(), bytes);
+    end->front_rgba->resize(pixel_count * 4);
+    std::memcpy(end->front_rgba->data(), readback_.mapped(), pixel_count * 4);
+    swap_red_and_blue(end->front_rgba->data(), pixel_count);
+  }
+  // Without an imported buffer the window's memory is filled here, rows flipped.
+  if (end && end->present_to && !present_ && end->present_to->width == drawable_.width &&
+      end->present_to->height == drawable_.height) {
+    const size_t row = size_t{drawable_.width} * 4;
+    const auto* src = static_cast<const uint8_t*>(readback_.mapped());
+    for (uint32_t y = 0; y < drawable_.height; ++y)
+      std::memcpy(end->present_to->pixels + (drawable_.height - 1 - y) * row, src + y * row, row);
   }
   textures_.evict_unused(frame_);
 }
@@ -620,13 +644,30 @@ void RasterRenderer::record_frame_end(VkCommandBuffer cmd, const FrameEnd& end) 
     vkCmdCopyImage(cmd, back_.handle(), VK_IMAGE_LAYOUT_GENERAL, front_.handle(),
                    VK_IMAGE_LAYOUT_GENERAL, 1, &copy);
   }
-  if (end.front_rgba) {
+  const bool to_window = end.present_to && end.present_to->width == drawable_.width &&
+                         end.present_to->height == drawable_.height;
+  if (end.front_rgba || (to_window && !present_)) {
     wait_for_previous();
     VkBufferImageCopy copy{};
     copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
     copy.imageExtent = {drawable_.width, drawable_.height, 1};
     vkCmdCopyImageToBuffer(cmd, front_.handle(), VK_IMAGE_LAYOUT_GENERAL, readback_.handle(), 1,
                            &copy);
+  }
+  if (to_window && present_) {
+    // Straight into the window's memory, one region per row: X rows run top to bottom.
+    wait_for_previous();
+    std::vector<VkBufferImageCopy> rows(drawable_.height);
+    for (uint32_t y = 0; y < drawable_.height; ++y) {
+      VkBufferImageCopy& copy = rows[y];
+      copy = {};
+      copy.bufferOffset = VkDeviceSize{drawable_.height - 1 - y} * drawable_.width * 4;
+      copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+      copy.imageOffset = {0, static_cast<int32_t>(y), 0};
+      copy.imageExtent = {drawable_.width, 1, 1};
+    }
+    vkCmdCopyImageToBuffer(cmd, front_.handle(), VK_IMAGE_LAYOUT_GENERAL, present_.handle(),
+                           static_cast<uint32_t>(rows.size()), rows.data());
   }
 }
 
@@ -663,8 +704,10 @@ bool RasterRenderer::read_color(uint32_t buffer, int32_t x, int32_t y, uint32_t 
                                 uint32_t height, std::vector<uint8_t>& rgba) {
   const bool front = buffer == GL_FRONT || buffer == GL_FRONT_LEFT || buffer == GL_LEFT ||
                      !drawable_.double_buffered;
-  return read_image(front ? front_ : back_, VK_IMAGE_ASPECT_COLOR_BIT, 4, x, y, width, height,
-                    rgba);
+  if (!read_image(front ? front_ : back_, VK_IMAGE_ASPECT_COLOR_BIT, 4, x, y, width, height, rgba))
+    return false;
+  swap_red_and_blue(rgba.data(), size_t{width} * height);
+  return true;
 }
 
 bool RasterRenderer::read_depth(int32_t x, int32_t y, uint32_t width, uint32_t height,
@@ -693,6 +736,7 @@ void RasterRenderer::write_color(bool front, const std::vector<uint8_t>& rgba) {
   ensure_capacity(*device_, readback_, rgba.size(),
                   VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
   readback_.write(rgba.data(), rgba.size());
+  swap_red_and_blue(static_cast<uint8_t*>(readback_.mapped()), rgba.size() / 4);
   device_->submit_and_wait([&](VkCommandBuffer cmd) {
     VkBufferImageCopy copy{};
     copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};

@@ -76,6 +76,8 @@ class RasterRenderer {
   GpuBuffer states_;    // RasterState per snapshot (+ one per clear drawn as a quad)
   GpuBuffer vertices_;  // this record's attributes and indices
   GpuBuffer readback_;
+  GpuBuffer present_;  // the window's host memory (FrameEnd::present_to), imported
+  uint64_t present_generation_ = 0;
   uint64_t frame_ = 0;
   rec::Decomposed decomposed_;  // scratch
 };

@@ -56,6 +56,7 @@ struct Candidate {
   std::vector<std::string> missing;            // for raster (and anything at all): empty = usable
   std::vector<std::string> missing_ray_query;  // empty: path tracing possible
   bool geometry_shader = false;
+  bool external_host_memory = false;  // VK_EXT_external_memory_host: zero-copy presenting
 };
 
 template <size_t N>
@@ -84,6 +85,10 @@ Candidate evaluate(VkPhysicalDevice device) {
   vkEnumerateDeviceExtensionProperties(device, nullptr, &count, extensions.data());
   require_extensions(extensions, kRasterDeviceExtensions, candidate.missing);
   require_extensions(extensions, kRayQueryDeviceExtensions, candidate.missing_ray_query);
+  candidate.external_host_memory =
+      std::any_of(extensions.begin(), extensions.end(), [](const VkExtensionProperties& e) {
+        return std::strcmp(e.extensionName, VK_EXT_EXTERNAL_MEMORY_HOST_EXTENSION_NAME) == 0;
+      });
   if (!candidate.missing.empty()) return candidate;  // feature structs may not be understood
 
   auto ray_query = make_info<VkPhysicalDeviceRayQueryFeaturesKHR>(
@@ -358,6 +363,16 @@ std::unique_ptr<VulkanDevice> VulkanDevice::create(const DeviceOptions& options)
 
   std::vector<const char*> device_extensions(std::begin(kRasterDeviceExtensions),
                                              std::end(kRasterDeviceExtensions));
+  if (chosen.external_host_memory) {
+    device_extensions.push_back(VK_EXT_EXTERNAL_MEMORY_HOST_EXTENSION_NAME);
+    self->external_host_memory_ = true;
+    auto host_properties = make_info<VkPhysicalDeviceExternalMemoryHostPropertiesEXT>(
+        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_EXTERNAL_MEMORY_HOST_PROPERTIES_EXT);
+    auto properties2 = make_info<VkPhysicalDeviceProperties2>(
+        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &host_properties);
+    vkGetPhysicalDeviceProperties2(chosen.device, &properties2);
+    self->host_pointer_alignment_ = host_properties.minImportedHostPointerAlignment;
+  }
   if (self->ray_query_) {
     device_extensions.insert(device_extensions.end(), std::begin(kRayQueryDeviceExtensions),
                              std::end(kRayQueryDeviceExtensions));

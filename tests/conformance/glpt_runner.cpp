@@ -19,8 +19,15 @@ class GlptBackend final : public glpt::conformance::Backend {
   bool begin_scene(int width, int height, std::string*) override {
     end_scene();
     context_ = std::make_unique<glpt::Context>(nullptr);
+    // The buffers OSMesa's context has (mesa_runner.cpp): single-buffered RGBA8, 24-bit depth,
+    // 8-bit stencil, 16-bit accumulation.
+    glpt::rec::DrawableConfig config;
+    config.double_buffered = false;
+    config.depth_bits = 24;
+    config.stencil_bits = 8;
+    config.accum_bits = 16;
     target_ = std::make_unique<glpt::HeadlessTarget>(static_cast<uint32_t>(width),
-                                                     static_cast<uint32_t>(height));
+                                                     static_cast<uint32_t>(height), config);
     glpt::make_current_headless(*context_, *target_);
     return true;
   }
