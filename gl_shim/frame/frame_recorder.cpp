@@ -69,12 +69,12 @@ void finish_vertex_data(rec::VertexData& d) {
 
 void FrameRecorder::add_primitive(rec::StateId state, rec::VertexData& p) {
   if (p.position.empty() || p.primitives.size() != 1) return;
-  // Mesa draws what it has batched when the program starts giving a colour per vertex (its
-  // vertex layout grows); a primitive without one continues a batch that has one (the layout
-  // stays until the next state change), so `per_vertex` only grows within a draw.
+  // Mesa's immediate-mode vertex layout keeps a per-vertex colour until the next state change,
+  // so a primitive without one still has it; when the layout grows Mesa draws what it has
+  // batched (a new draw here).
+  if (open_ && open_state_ == state && open_->source == p.source) p.per_vertex |= open_->per_vertex;
   if (open_ && (open_state_ != state || open_->mode != p.mode || open_->source != p.source ||
-                (p.per_vertex & ~open_->per_vertex) != 0 ||
-                open_->material.empty() != p.material.empty()))
+                open_->per_vertex != p.per_vertex || open_->material.empty() != p.material.empty()))
     seal();
   vertex_bytes_ += p.position.size() * bytes_per_vertex(p);
   if (!open_) {

@@ -100,8 +100,8 @@ void glBegin(Context& ctx, GLenum mode) {
   reset(a.vertices, mode);
   // Replayed by glCallList: Mesa compiled it into an indexed draw. GL_COMPILE_AND_EXECUTE
   // executes while compiling (call_depth 0): Mesa draws that like immediate mode.
-  a.vertices.source =
-      ctx.lists.call_depth > 0 ? rec::PrimitiveSource::kDisplayList : rec::PrimitiveSource::kImmediate;
+  a.vertices.source = ctx.lists.call_depth > 0 ? rec::PrimitiveSource::kDisplayList
+                                               : rec::PrimitiveSource::kImmediate;
 }
 
 void glEnd(Context& ctx) {

@@ -38,7 +38,9 @@ Split split_of(uint32_t mode) {
   }
 }
 
-uint32_t trim(uint32_t count, Split s) { return count < s.first ? 0 : count - (count - s.first) % s.incr; }
+uint32_t trim(uint32_t count, Split s) {
+  return count < s.first ? 0 : count - (count - s.first) % s.incr;
+}
 
 // vbo_try_prim_conversion: a line strip of one segment is a line, a strip or fan of one triangle
 // a triangle (so consecutive ones merge).
@@ -88,7 +90,8 @@ void emit_batch(uint32_t mode, uint32_t n, const Element& element, AssemblyPath 
       for (uint32_t i = 0; i < n; ++i) out.points.push_back(element(i));
       break;
     case GL_LINES:
-      for (uint32_t i = 0; i + 1 < n; i += 2) out.lines.push_back({{element(i), element(i + 1)}, true});
+      for (uint32_t i = 0; i + 1 < n; i += 2)
+        out.lines.push_back({{element(i), element(i + 1)}, true});
       break;
     case GL_LINE_STRIP:
     case GL_LINE_LOOP:
@@ -405,7 +408,8 @@ void decompose(const VertexData& vertices, const AssemblyState& assembly, Decomp
       if (aero && path == AssemblyPath::kArrays && !bad_index) {
         bool rectangle = false;
         if (aero_rectangle_quirk(assembly, vertices, batch_element, &rectangle)) {
-          if (rectangle) emit_batch(GL_TRIANGLES, 6, batch_element, path, false, vertices.edge_flag, out);
+          if (rectangle)
+            emit_batch(GL_TRIANGLES, 6, batch_element, path, false, vertices.edge_flag, out);
           continue;
         }
       }
@@ -414,8 +418,8 @@ void decompose(const VertexData& vertices, const AssemblyState& assembly, Decomp
           out.lines.push_back({{batch_element(i - 1), batch_element(i)}, true});
         continue;
       }
-      emit_batch(mode, n, batch_element, path, assembly.constant_interpolation,
-                 vertices.edge_flag, out);
+      emit_batch(mode, n, batch_element, path, assembly.constant_interpolation, vertices.edge_flag,
+                 out);
     }
     r = next;
     if (!bad_index) continue;

@@ -61,7 +61,7 @@ struct DecomposedTriangle {
 };
 
 struct DecomposedLine {
-  uint32_t v[2];  // v[1] is the provoking vertex
+  uint32_t v[2];       // v[1] is the provoking vertex
   bool reset_stipple;  // GL restarts the line stipple here (each GL_LINES segment, each strip)
 };
 

@@ -73,7 +73,7 @@ struct VertexData {
   // decompose it as GL does (decompose.hpp): provoking vertices, edge flags, stipple resets.
   uint32_t mode = GL_TRIANGLES;
   PrimitiveSource source = PrimitiveSource::kImmediate;
-  uint8_t per_vertex = 0;  // kPerVertex* bits
+  uint8_t per_vertex = 0;           // kPerVertex* bits
   std::vector<glm::vec4> position;  // homogeneous, as specified (w kept)
   std::vector<glm::vec3> normal;
   std::vector<glm::vec4> color;            // primary
