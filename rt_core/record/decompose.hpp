@@ -55,8 +55,9 @@ namespace glpt::rec {
 struct DecomposedTriangle {
   uint32_t v[3];  // vertex numbers (indices already resolved); v[2] is the provoking vertex
   // Bit k: the edge v[k] -> v[(k+1)%3] is a boundary edge (drawn in GL_LINE / GL_POINT polygon
-  // mode): the structural edges of the GL primitive AND the edge flag of the vertex it starts at
-  // (edge flags apply to independent triangles, quads and polygons only, GL 1.5 2.6.2).
+  // mode): the structural edges of the GL primitive AND the edge flag of the vertex it starts at.
+  // GL 1.5 2.6.2 applies edge flags to independent triangles, quads and polygons only; Mesa's
+  // draw module keeps every vertex's flag, so they apply to strips and fans too (measured).
   uint8_t boundary_edges;
 };
 
