@@ -45,9 +45,14 @@ layout(location = 3) out vec4 v_back_secondary;
 layout(location = 4) out vec4 v_texcoord[GLPT_RASTER_MAX_UNITS];
 layout(location = 8) out float v_fog;
 
+// Declared in full so the geometry shader (raster_unfilled.geom) can match the block exactly.
+out gl_PerVertex {
+  vec4 gl_Position;
+  float gl_PointSize;
 #if GLPT_CLIP
-out float gl_ClipDistance[8];
+  float gl_ClipDistance[8];
 #endif
+};
 
 bool has(uint flag) { return (kFlags & flag) != 0u; }
 
