@@ -245,10 +245,9 @@ void array_element(Context& ctx, const ArrayVertices& v, uint32_t i) {
   if (v.has(ArrayKind::kVertex)) attribute_vertex(ctx, v.position[i]);
 }
 
-// The one place array draws enter the frame record.
-// TODO(assembly): set rec::VertexData::source (kArrays / kElements / kDisplayList from `source`)
-// and per_vertex (kPerVertexColor when the colour array is enabled, kPerVertexSecondaryColor
-// when the secondary colour array is) once the record has them.
+// The one place array draws enter the frame record. It also says how the draw was specified
+// (rec::VertexData::source: Mesa assembles glDrawArrays, glDrawElements and compiled draws
+// differently) and which colours came per vertex from arrays (per_vertex).
 void record_array_draw(Context& ctx, GLenum mode, const ArrayVertices& v,
                        std::vector<uint32_t> indices, std::vector<rec::PrimitiveRange> ranges,
                        ArrayDrawSource source) {
@@ -278,6 +277,11 @@ void record_array_draw(Context& ctx, GLenum mode, const ArrayVertices& v,
                             n, per_vertex);
     d.indices = std::move(indices);
     d.primitives = std::move(ranges);
+    d.source = source == ArrayDrawSource::kArrays     ? rec::PrimitiveSource::kArrays
+               : source == ArrayDrawSource::kElements ? rec::PrimitiveSource::kElements
+                                                      : rec::PrimitiveSource::kDisplayList;
+    d.per_vertex = uint8_t((v.has(ArrayKind::kColor) ? rec::kPerVertexColor : 0) |
+                           (v.has(ArrayKind::kSecondaryColor) ? rec::kPerVertexSecondaryColor : 0));
     if (source == ArrayDrawSource::kDisplayList)
       ctx.recorder.add_primitive(state, d);
     else

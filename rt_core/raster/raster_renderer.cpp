@@ -237,7 +237,11 @@ void RasterRenderer::execute(const rec::FrameRecord& record, const rec::Drawable
     indices.clear();
     const rec::PrimitiveClass cls = rec::primitive_class(v.mode);
     auto ok = [&](uint32_t vertex) { return finite(v.position[vertex]); };
-    if (cls == rec::PrimitiveClass::kLines && v.mode != GL_LINES) {
+    const rec::StateSnapshot& state = record.states[draw->state];
+    // Strips stay strips (one stipple pattern along each) unless Mesa draws them segment by
+    // segment (display lists).
+    if (cls == rec::PrimitiveClass::kLines && v.mode != GL_LINES &&
+        !rec::mesa_draws_strips_as_lines(v)) {
       g.topology = RasterTopology::kLineStrip;
       for (const rec::PrimitiveRange& range : v.primitives) {
         if (range.count < 2) continue;
@@ -257,7 +261,9 @@ void RasterRenderer::execute(const rec::FrameRecord& record, const rec::Drawable
       }
     } else {
       decomposed_.clear();
-      rec::decompose(v, decomposed_);
+      // Mesa's exact triangles and vertex order (decompose.hpp): they decide interpolation and
+      // edge ties.
+      rec::decompose(v, rec::assembly_state(state, v), decomposed_);
       if (cls == rec::PrimitiveClass::kPoints) {
         g.topology = RasterTopology::kPoints;
         for (uint32_t p : decomposed_.points)
@@ -275,7 +281,7 @@ void RasterRenderer::execute(const rec::FrameRecord& record, const rec::Drawable
           edge_masks.push_back(t.boundary_edges);
         }
         // The geometry shader of unfilled polygons reads each triangle's boundary edges.
-        const rec::PrimitiveState& p = record.states[draw->state].raster->primitive;
+        const rec::PrimitiveState& p = state.raster->primitive;
         if (p.polygon_mode_front != GL_FILL || p.polygon_mode_back != GL_FILL) {
           edge_masks.resize((edge_masks.size() + 3) & ~size_t{3}, 0);
           g.edge_offset = arena.add(edge_masks.data(), edge_masks.size());

@@ -475,4 +475,32 @@ TEST_F(ArrayDrawTest, CompileAndExecuteDrawsLikeImmediateModeAndSetsCurrentValue
   EXPECT_EQ(glGetError(), GLenum{GL_NO_ERROR});
 }
 
+// Mesa assembles draws by how they were specified (rt_core/record/decompose.hpp): each array
+// draw says so, and which colours came per vertex from arrays.
+TEST_F(ArrayDrawTest, DrawsSayHowTheyWereSpecified) {
+  const GLfloat colours[4][3] = {};
+  const GLubyte indices[4] = {0, 1, 2, 3};
+  glEnableClientState(GL_VERTEX_ARRAY);
+  glVertexPointer(2, GL_FLOAT, 0, kSquare);
+  glDrawArrays(GL_QUADS, 0, 4);
+  glEnableClientState(GL_COLOR_ARRAY);
+  glColorPointer(3, GL_FLOAT, 0, colours);
+  glDrawElements(GL_QUADS, 4, GL_UNSIGNED_BYTE, indices);
+  glDisableClientState(GL_COLOR_ARRAY);
+  glEnableClientState(GL_SECONDARY_COLOR_ARRAY);
+  glSecondaryColorPointer(3, GL_FLOAT, 0, colours);
+  glNewList(1, GL_COMPILE);
+  glDrawArrays(GL_QUADS, 0, 4);
+  glEndList();
+  glCallList(1);
+  const auto d = draws();
+  ASSERT_EQ(d.size(), 3u);
+  EXPECT_EQ(d[0].vertices->source, glpt::rec::PrimitiveSource::kArrays);
+  EXPECT_EQ(d[0].vertices->per_vertex, 0);
+  EXPECT_EQ(d[1].vertices->source, glpt::rec::PrimitiveSource::kElements);
+  EXPECT_EQ(d[1].vertices->per_vertex, glpt::rec::kPerVertexColor);
+  EXPECT_EQ(d[2].vertices->source, glpt::rec::PrimitiveSource::kDisplayList);
+  EXPECT_EQ(d[2].vertices->per_vertex, glpt::rec::kPerVertexSecondaryColor);
+}
+
 }  // namespace

@@ -2,8 +2,8 @@
 // type, glMultiDrawArrays/glMultiDrawElements, arrays and indices sourced from buffer objects
 // (written by glBufferData, glBufferSubData and through glMapBuffer), array draws compiled into
 // a display list, and the normalized component types (Mesa converts them in its vertex fetch).
-// Only triangles, strips, fans and lines: Mesa decomposes those the same way whichever command
-// specified them.
+// Mesa splits quads differently depending on the command that specified them
+// (arrays_quads_by_command); the other scenes use triangles, strips, fans and lines.
 #include <cmath>
 #include <cstring>
 #include <vector>
@@ -241,6 +241,38 @@ GLPT_SCENE(arrays_normalized_types, 64, 64) {
   material4(GL_FRONT_AND_BACK, GL_DIFFUSE, 0.9f, 0.8f, 0.3f);
   glTranslatef(0, 56, 0);
   glDrawArrays(GL_TRIANGLE_STRIP, 0, 16);
+}
+
+// Smooth quads with four different corner colours: the diagonal Mesa splits them along depends
+// on how they were specified (glDrawArrays: 0-2, glDrawElements and display lists: 1-3). Left
+// column glDrawArrays, middle glDrawElements, right a compiled glDrawArrays; the top row has the
+// colours rotated by one corner.
+GLPT_SCENE(arrays_quads_by_command, 96, 64) {
+  clear(0, 0, 0);
+  ortho_pixels(96, 64);
+  const GLfloat positions[8] = {2, 2, 30, 6, 28, 30, 4, 26};
+  const GLubyte colours[20] = {255, 0,   0,   255, 0,   255, 0,   255, 0, 0,
+                               255, 255, 255, 255, 255, 255, 255, 0,   0, 255};
+  const GLubyte indices[4] = {0, 1, 2, 3};
+  glEnableClientState(GL_VERTEX_ARRAY);
+  glEnableClientState(GL_COLOR_ARRAY);
+  glVertexPointer(2, GL_FLOAT, 0, positions);
+  for (int row = 0; row < 2; ++row) {
+    glColorPointer(4, GL_UNSIGNED_BYTE, 0, colours + 4 * row);
+    const GLuint list = glGenLists(1);
+    glNewList(list, GL_COMPILE);
+    glDrawArrays(GL_QUADS, 0, 4);
+    glEndList();
+    glPushMatrix();
+    glTranslatef(0, 32.0f * static_cast<float>(row), 0);
+    glDrawArrays(GL_QUADS, 0, 4);
+    glTranslatef(32, 0, 0);
+    glDrawElements(GL_QUADS, 4, GL_UNSIGNED_BYTE, indices);
+    glTranslatef(32, 0, 0);
+    glCallList(list);
+    glPopMatrix();
+    glDeleteLists(list, 1);
+  }
 }
 
 }  // namespace
