@@ -25,6 +25,7 @@
 #include "gl_shim/dispatch.hpp"
 #include "gl_shim/geometry/attributes.hpp"
 #include "gl_shim/gl_impl_decls.hpp"
+#include "gl_shim/state/out_of_memory.hpp"
 
 namespace glpt {
 namespace {
@@ -139,16 +140,6 @@ void draw_elements(Context& ctx, GLenum mode, const std::vector<GLsizei>& counts
   read_array_vertices(ctx, vertices, ArrayConversion::kVertexFetch, values, kDrawnArrays);
   record_array_draw(ctx, mode, values, std::move(elements), std::move(ranges),
                     ArrayDrawSource::kElements);
-}
-
-// Runs a draw command; allocation failure is GL_OUT_OF_MEMORY (nothing crosses the C ABI).
-template <typename F>
-void guarded(Context& ctx, F&& draw) {
-  try {
-    draw();
-  } catch (const std::bad_alloc&) {
-    record_error(ctx, GL_OUT_OF_MEMORY);
-  }
 }
 
 }  // namespace
@@ -295,7 +286,7 @@ void record_array_draw(Context& ctx, GLenum mode, const ArrayVertices& v,
 namespace impl {
 
 void glDrawArrays(Context& ctx, GLenum mode, GLint first, GLsizei count) {
-  guarded(ctx, [&] {
+  or_out_of_memory(ctx, [&] {
     if (!begin_live_draw(ctx, check_draw(ctx, mode, count))) return;
     if (count == 0 || first < 0) return;
     if (uint64_t(count) > kMaxArrayDrawVertices) return record_error(ctx, GL_OUT_OF_MEMORY);
@@ -310,7 +301,7 @@ void glDrawArrays(Context& ctx, GLenum mode, GLint first, GLsizei count) {
 
 void glMultiDrawArrays(Context& ctx, GLenum mode, const GLint* first, const GLsizei* count,
                        GLsizei drawcount) {
-  guarded(ctx, [&] {
+  or_out_of_memory(ctx, [&] {
     GLenum error = drawcount < 0 ? GLenum{GL_INVALID_VALUE} : GLenum{GL_NO_ERROR};
     uint64_t total = 0;
     for (GLsizei d = 0; error == GL_NO_ERROR && d < drawcount && count != nullptr; ++d) {
@@ -340,7 +331,7 @@ void glMultiDrawArrays(Context& ctx, GLenum mode, const GLint* first, const GLsi
 }
 
 void glDrawElements(Context& ctx, GLenum mode, GLsizei count, GLenum type, const void* indices) {
-  guarded(ctx, [&] {
+  or_out_of_memory(ctx, [&] {
     GLenum error = check_draw(ctx, mode, count);
     if (error == GL_NO_ERROR && !is_index_type(type)) error = GL_INVALID_ENUM;
     if (!begin_live_draw(ctx, error)) return;
@@ -352,7 +343,7 @@ void glDrawElements(Context& ctx, GLenum mode, GLsizei count, GLenum type, const
 
 void glDrawRangeElements(Context& ctx, GLenum mode, GLuint start, GLuint end, GLsizei count,
                          GLenum type, const void* indices) {
-  guarded(ctx, [&] {
+  or_out_of_memory(ctx, [&] {
     // The range is a promise about the indices; glpt reads the indices themselves (as Mesa does,
     // indices outside it are drawn).
     if (end < start) {
@@ -365,7 +356,7 @@ void glDrawRangeElements(Context& ctx, GLenum mode, GLuint start, GLuint end, GL
 
 void glMultiDrawElements(Context& ctx, GLenum mode, const GLsizei* count, GLenum type,
                          const void* const* indices, GLsizei drawcount) {
-  guarded(ctx, [&] {
+  or_out_of_memory(ctx, [&] {
     GLenum error = drawcount < 0 ? GLenum{GL_INVALID_VALUE} : GLenum{GL_NO_ERROR};
     for (GLsizei d = 0; error == GL_NO_ERROR && d < drawcount && count != nullptr; ++d)
       if (count[d] < 0) error = GL_INVALID_VALUE;
@@ -381,7 +372,7 @@ void glMultiDrawElements(Context& ctx, GLenum mode, const GLsizei* count, GLenum
 }
 
 void glArrayElement(Context& ctx, GLint i) {
-  guarded(ctx, [&] {
+  or_out_of_memory(ctx, [&] {
     if (enabled_array_is_mapped(ctx.arrays)) return record_error(ctx, GL_INVALID_OPERATION);
     if (i < 0) return;  // reads nothing (Mesa reads before the arrays)
     ArrayVertices values;

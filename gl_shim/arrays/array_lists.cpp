@@ -8,6 +8,7 @@
 #include "gl_shim/arrays/array_draws.hpp"
 #include "gl_shim/context.hpp"
 #include "gl_shim/dispatch.hpp"
+#include "gl_shim/state/out_of_memory.hpp"
 
 namespace glpt {
 namespace {
@@ -123,20 +124,10 @@ GLenum elements_error(const Context& ctx, GLenum mode, GLsizei count, GLenum typ
   return error;
 }
 
-// Compiling allocates: failure is GL_OUT_OF_MEMORY, raised at once.
-template <typename F>
-void guarded(Context& ctx, F&& compile) {
-  try {
-    compile();
-  } catch (const std::bad_alloc&) {
-    record_error(ctx, GL_OUT_OF_MEMORY);
-  }
-}
-
 }  // namespace
 
 void compile_array_element(Context& ctx, ListStream& list, GLint i) {
-  guarded(ctx, [&] {
+  or_out_of_memory(ctx, [&] {
     if (enabled_array_is_mapped(ctx.arrays)) return write_error(list, GL_INVALID_OPERATION);
     if (i < 0) return;
     ArrayVertices v;
@@ -146,7 +137,7 @@ void compile_array_element(Context& ctx, ListStream& list, GLint i) {
 }
 
 void compile_draw_arrays(Context& ctx, ListStream& list, GLenum mode, GLint first, GLsizei count) {
-  guarded(ctx, [&] {
+  or_out_of_memory(ctx, [&] {
     if (const GLenum error = draw_error(ctx, mode, count)) return write_error(list, error);
     if (first < 0) return;
     if (uint64_t(count) > kMaxArrayDrawVertices) return record_error(ctx, GL_OUT_OF_MEMORY);
@@ -156,7 +147,7 @@ void compile_draw_arrays(Context& ctx, ListStream& list, GLenum mode, GLint firs
 
 void compile_multi_draw_arrays(Context& ctx, ListStream& list, GLenum mode, const GLint* first,
                                const GLsizei* count, GLsizei drawcount) {
-  guarded(ctx, [&] {
+  or_out_of_memory(ctx, [&] {
     if (drawcount < 0) return write_error(list, GL_INVALID_VALUE);
     if (first == nullptr || count == nullptr) return;
     uint64_t total = 0;
@@ -173,7 +164,7 @@ void compile_multi_draw_arrays(Context& ctx, ListStream& list, GLenum mode, cons
 
 void compile_draw_elements(Context& ctx, ListStream& list, GLenum mode, GLsizei count, GLenum type,
                            const void* indices) {
-  guarded(ctx, [&] {
+  or_out_of_memory(ctx, [&] {
     if (const GLenum error = elements_error(ctx, mode, count, type))
       return write_error(list, error);
     compile_elements(ctx, list, mode, &count, type, &indices, 1);
@@ -182,13 +173,13 @@ void compile_draw_elements(Context& ctx, ListStream& list, GLenum mode, GLsizei 
 
 void compile_draw_range_elements(Context& ctx, ListStream& list, GLenum mode, GLuint start,
                                  GLuint end, GLsizei count, GLenum type, const void* indices) {
-  if (end < start) return guarded(ctx, [&] { write_error(list, GL_INVALID_VALUE); });
+  if (end < start) return or_out_of_memory(ctx, [&] { write_error(list, GL_INVALID_VALUE); });
   compile_draw_elements(ctx, list, mode, count, type, indices);
 }
 
 void compile_multi_draw_elements(Context& ctx, ListStream& list, GLenum mode, const GLsizei* count,
                                  GLenum type, const void* const* indices, GLsizei drawcount) {
-  guarded(ctx, [&] {
+  or_out_of_memory(ctx, [&] {
     if (drawcount < 0) return write_error(list, GL_INVALID_VALUE);
     if (count == nullptr || indices == nullptr) return;
     for (GLsizei d = 0; d < drawcount; ++d)
@@ -199,7 +190,7 @@ void compile_multi_draw_elements(Context& ctx, ListStream& list, GLenum mode, co
 }
 
 void replay_array_element(Context& ctx, const ListStream::Reader& r) {
-  guarded(ctx, [&] {
+  or_out_of_memory(ctx, [&] {
     ArrayVertices v;
     const CompiledVertices rec = read(r, v);
     if (rec.error != GL_NO_ERROR) return record_error(ctx, rec.error);
@@ -208,7 +199,7 @@ void replay_array_element(Context& ctx, const ListStream::Reader& r) {
 }
 
 void replay_array_primitive(Context& ctx, const ListStream::Reader& r) {
-  guarded(ctx, [&] {
+  or_out_of_memory(ctx, [&] {
     ArrayVertices v;
     const CompiledVertices rec = read(r, v);
     if (rec.error != GL_NO_ERROR) return record_error(ctx, rec.error);
