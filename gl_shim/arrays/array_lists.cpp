@@ -93,26 +93,30 @@ GLenum draw_error(const Context& ctx, GLenum mode, GLsizei count) {
 }
 
 // One compiled primitive of the given vertices (glBegin, glArrayElement each, glEnd).
+// Without a vertex array (or vertices) the primitive is empty but still recorded: replayed
+// inside glBegin/glEnd it is an error all the same (Mesa compiles an empty glBegin/glEnd).
 void compile_primitive(Context& ctx, ListStream& list, GLenum mode,
                        const std::vector<uint32_t>& vertices) {
-  if (vertices.empty() || !ctx.arrays[ArrayKind::kVertex].enabled) return;
-  // The colour index array is left out: a replayed primitive sets no current value.
   ArrayVertices v;
-  read_array_vertices(ctx, vertices, ArrayConversion::kImmediate, v,
-                      kAllArrays & ~(1u << int(ArrayKind::kIndex)));
+  // The colour index array is left out: a replayed primitive sets no current value.
+  if (ctx.arrays[ArrayKind::kVertex].enabled)
+    read_array_vertices(ctx, vertices, ArrayConversion::kImmediate, v,
+                        kAllArrays & ~(1u << int(ArrayKind::kIndex)));
   write(list, CommandId::glDrawArrays, mode, GL_NO_ERROR, v);
 }
 
-// Compiles the elements of several index lists, each a primitive.
+// Compiles the elements of several index lists, each a primitive. `multi`: glMultiDrawElements,
+// whose empty lists Mesa does not compile (glDrawElements compiles an empty primitive).
 void compile_elements(Context& ctx, ListStream& list, GLenum mode, const GLsizei* counts,
-                      GLenum type, const void* const* indices, GLsizei draws) {
+                      GLenum type, const void* const* indices, GLsizei draws, bool multi) {
   uint64_t total = 0;
   for (GLsizei d = 0; d < draws; ++d) total += uint64_t(std::max(counts[d], 0));
   if (total > kMaxArrayDrawVertices) return record_error(ctx, GL_OUT_OF_MEMORY);
   std::vector<uint32_t> elements;
   for (GLsizei d = 0; d < draws; ++d) {
-    if (counts[d] > 0 && read_indices(ctx, counts[d], type, indices[d], elements))
-      compile_primitive(ctx, list, mode, elements);
+    if (multi && counts[d] == 0) continue;
+    if (!read_indices(ctx, counts[d], type, indices[d], elements)) elements.clear();
+    compile_primitive(ctx, list, mode, elements);
   }
 }
 
@@ -139,9 +143,9 @@ void compile_array_element(Context& ctx, ListStream& list, GLint i) {
 void compile_draw_arrays(Context& ctx, ListStream& list, GLenum mode, GLint first, GLsizei count) {
   or_out_of_memory(ctx, [&] {
     if (const GLenum error = draw_error(ctx, mode, count)) return write_error(list, error);
-    if (first < 0) return;
     if (uint64_t(count) > kMaxArrayDrawVertices) return record_error(ctx, GL_OUT_OF_MEMORY);
-    compile_primitive(ctx, list, mode, vertex_range(first, count));
+    compile_primitive(ctx, list, mode,
+                      first < 0 ? std::vector<uint32_t>{} : vertex_range(first, count));
   });
 }
 
@@ -157,8 +161,12 @@ void compile_multi_draw_arrays(Context& ctx, ListStream& list, GLenum mode, cons
     }
     if (const GLenum error = draw_error(ctx, mode, 0)) return write_error(list, error);
     if (total > kMaxArrayDrawVertices) return record_error(ctx, GL_OUT_OF_MEMORY);
-    for (GLsizei d = 0; d < drawcount; ++d)
-      if (first[d] >= 0) compile_primitive(ctx, list, mode, vertex_range(first[d], count[d]));
+    for (GLsizei d = 0; d < drawcount; ++d) {
+      if (count[d] > 0)
+        compile_primitive(
+            ctx, list, mode,
+            first[d] < 0 ? std::vector<uint32_t>{} : vertex_range(first[d], count[d]));
+    }
   });
 }
 
@@ -167,7 +175,7 @@ void compile_draw_elements(Context& ctx, ListStream& list, GLenum mode, GLsizei 
   or_out_of_memory(ctx, [&] {
     if (const GLenum error = elements_error(ctx, mode, count, type))
       return write_error(list, error);
-    compile_elements(ctx, list, mode, &count, type, &indices, 1);
+    compile_elements(ctx, list, mode, &count, type, &indices, 1, false);
   });
 }
 
@@ -185,7 +193,7 @@ void compile_multi_draw_elements(Context& ctx, ListStream& list, GLenum mode, co
     for (GLsizei d = 0; d < drawcount; ++d)
       if (count[d] < 0) return write_error(list, GL_INVALID_VALUE);
     if (const GLenum error = elements_error(ctx, mode, 0, type)) return write_error(list, error);
-    compile_elements(ctx, list, mode, count, type, indices, drawcount);
+    compile_elements(ctx, list, mode, count, type, indices, drawcount, true);
   });
 }
 

@@ -158,6 +158,15 @@ TEST_F(ArrayListTest, ErrorsAreRaisedWhenTheListRuns) {
   glCallList(4);
   glEnd();
   EXPECT_EQ(glGetError(), GLenum{GL_INVALID_OPERATION});
+  // Also when it draws nothing: no vertex array when compiled (piglit gl-1.0-dlist-beginend).
+  glDisableClientState(GL_VERTEX_ARRAY);
+  glNewList(5, GL_COMPILE);
+  glDrawArrays(GL_QUADS, 0, 4);
+  glEndList();
+  glBegin(GL_QUADS);
+  glCallList(5);
+  glEnd();
+  EXPECT_EQ(glGetError(), GLenum{GL_INVALID_OPERATION});
   EXPECT_TRUE(recorded_draws(ctx_).empty());
 }
 
