@@ -1,5 +1,3 @@
-#include <cstdio>
-#include <cstdlib>
 #include "rt_core/scene/frame_signature.hpp"
 
 #include <cstring>
@@ -62,10 +60,7 @@ bool FrameSignature::operator==(const FrameSignature& other) const {
       entries_.size() != other.entries_.size())
     return false;
   for (size_t i = 0; i < entries_.size(); ++i)
-    if (!same(entries_[i], other.entries_[i])) {
-      if (getenv("GLPT_DEBUG_SIG")) fprintf(stderr, "sig differs at %zu kind %u\n", i, entries_[i].kind);
-      return false;
-    }
+    if (!same(entries_[i], other.entries_[i])) return false;
   return true;
 }
 

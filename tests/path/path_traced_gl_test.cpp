@@ -287,6 +287,26 @@ TEST(PathTracedGl, LitFaceUnderAnIdentityOrFlippedProjectionIsLit) {
   }
 }
 
+TEST(PathTracedGl, ClipPlanesCutTracedSurfacesWhereMesaDoes) {
+  auto scene = [] {
+    camera_3d();
+    const double plane[] = {1.0, 0.5, 0.0, 0.1};  // keeps x + y / 2 >= -0.1, in eye space
+    glClipPlane(GL_CLIP_PLANE0, plane);
+    glEnable(GL_CLIP_PLANE0);
+    glEnable(GL_LIGHTING);
+    glEnable(GL_LIGHT0);
+    quad(-1, -1, 1, 1, -4);
+  };
+  Image traced = render("path", scene), rasterized = render("raster", scene);
+  auto background = [](Rgba c) { return c == Rgba{0, 0, 64, 255}; };
+  const int uncovered = rasterized.count(background);
+  EXPECT_GT(uncovered, kSize * kSize / 2);  // the plane removes part of the quad
+  EXPECT_LT(uncovered, kSize * kSize - 100);
+  for (int y = 0; y < kSize; ++y)
+    for (int x = 0; x < kSize; ++x)
+      ASSERT_EQ(background(traced.at(x, y)), background(rasterized.at(x, y))) << x << "," << y;
+}
+
 TEST(PathTracedGl, LinesAreDepthTestedAgainstTheTracedSurfaces) {
   // A lit quad at z = -5, a line in front of it and one behind it: only the front one shows.
   Image image = render("path", [] {
