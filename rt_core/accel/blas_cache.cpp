@@ -111,16 +111,16 @@ std::unique_ptr<BlasEntry> BlasCache::create_entry(const Geometry& geometry,
 }
 
 std::unique_ptr<ShadingEntry> BlasCache::create_shading(const Geometry& geometry,
-                                                       const BlasEntry& shape) const {
+                                                        const BlasEntry& shape) const {
   auto entry = std::make_unique<ShadingEntry>();
   const size_t material_count = packed_material_count(geometry);
-  const VkDeviceSize vertex_bytes = 3 * VkDeviceSize{shape.triangle_count} * sizeof(gpu::ShadingVertex);
+  const VkDeviceSize vertex_bytes =
+      3 * VkDeviceSize{shape.triangle_count} * sizeof(gpu::ShadingVertex);
   const VkDeviceSize material_bytes = material_count * sizeof(gpu::GpuMaterial);
-  entry->data = GpuBuffer::create(device_, vertex_bytes + material_bytes,
-                                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  entry->data =
+      GpuBuffer::create(device_, vertex_bytes + material_bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   auto* vertices = entry->data.as<gpu::ShadingVertex>();
-  auto* materials =
-      reinterpret_cast<gpu::GpuMaterial*>(entry->data.as<std::byte>() + vertex_bytes);
+  auto* materials = reinterpret_cast<gpu::GpuMaterial*>(entry->data.as<std::byte>() + vertex_bytes);
   pack_shading(geometry, shape.triangle_order, {vertices, 3 * size_t{shape.triangle_count}},
                {materials, material_count});
   entry->vertices_address = entry->data.address();
@@ -159,7 +159,8 @@ BlasPrepareStats BlasCache::prepare(std::span<const Geometry* const> geometries,
       found->second->last_used_frame = frame_number;
       continue;
     }
-    std::unique_ptr<ShadingEntry> entry = create_shading(*geometry, *shapes.at(geometry->shape_hash));
+    std::unique_ptr<ShadingEntry> entry =
+        create_shading(*geometry, *shapes.at(geometry->shape_hash));
     entry->last_used_frame = frame_number;
     memory_bytes_ += entry->data.size();
     shading_.emplace(key, std::move(entry));

@@ -66,7 +66,7 @@ void PathTracePass::record(VkCommandBuffer cmd, const PathTraceResources& resour
     images[i] = {VK_NULL_HANDLE, views[i], VK_IMAGE_LAYOUT_GENERAL};
     image_writes[i] = make_info<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
     image_writes[i].dstSet = set;
-    image_writes[i].dstBinding = i < 4 ? GLPT_PT_BINDING_GBUFFER + i
+    image_writes[i].dstBinding = i < 4    ? GLPT_PT_BINDING_GBUFFER + i
                                  : i == 4 ? GLPT_PT_BINDING_FRONT
                                           : GLPT_PT_BINDING_BACK;
     image_writes[i].descriptorCount = 1;

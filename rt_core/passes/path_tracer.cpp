@@ -136,7 +136,8 @@ void PathTracer::build_scene_setup(const TraceScene& scene, SceneSetup& setup) c
     if (!instance.geometry || instance.geometry->triangle_count() == 0) continue;
     const Geometry& geometry = *instance.geometry;
     const BlasEntry* entry = blas_cache_.find(geometry.shape_hash);
-    const ShadingEntry* shading = blas_cache_.find_shading(geometry.shape_hash, geometry.shading_hash);
+    const ShadingEntry* shading =
+        blas_cache_.find_shading(geometry.shape_hash, geometry.shading_hash);
     if (entry == nullptr || shading == nullptr) continue;  // cannot happen after prepare
 
     VkAccelerationStructureInstanceKHR tlas_instance{};

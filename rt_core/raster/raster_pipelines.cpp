@@ -19,10 +19,10 @@
 #include "raster_gbuffer_geom_spv.h"
 #include "raster_gbuffer_smooth_frag_spv.h"
 #include "raster_gbuffer_vert_spv.h"
-#include "rt_core/raster/gbuffer_targets.hpp"
 #include "raster_types.h"
 #include "raster_unfilled_lines_geom_spv.h"
 #include "raster_unfilled_points_geom_spv.h"
+#include "rt_core/raster/gbuffer_targets.hpp"
 #include "rt_core/vk/vk_error.hpp"
 #include "rt_core/vk/vk_info.hpp"
 

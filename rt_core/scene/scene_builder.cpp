@@ -261,7 +261,9 @@ glm::vec4 viewer_of_projection(const glm::mat4& projection) {
     return glm::dvec4(projection[0][r], projection[1][r], projection[2][r], projection[3][r]);
   };
   const glm::dvec4 a = row(0), b = row(1), c = row(3);
-  auto det3 = [](glm::dvec3 x, glm::dvec3 y, glm::dvec3 z) { return glm::dot(x, glm::cross(y, z)); };
+  auto det3 = [](glm::dvec3 x, glm::dvec3 y, glm::dvec3 z) {
+    return glm::dot(x, glm::cross(y, z));
+  };
   auto drop = [](const glm::dvec4& v, int i) {
     glm::dvec3 out;
     for (int k = 0, j = 0; k < 4; ++k)
@@ -272,8 +274,7 @@ glm::vec4 viewer_of_projection(const glm::mat4& projection) {
   for (int i = 0; i < 4; ++i)
     centre[i] = ((i % 2) ? -1.0 : 1.0) * det3(drop(a, i), drop(b, i), drop(c, i));
   const double length = glm::length(glm::dvec3(centre));
-  if (!std::isfinite(length) || !std::isfinite(centre.w) ||
-      (length == 0.0 && centre.w == 0.0))
+  if (!std::isfinite(length) || !std::isfinite(centre.w) || (length == 0.0 && centre.w == 0.0))
     return glm::vec4(0.0f, 0.0f, 1.0f, 0.0f);  // degenerate: GL's infinite viewer
   if (std::abs(centre.w) > 1e-6 * length) return glm::vec4(glm::dvec3(centre) / centre.w, 1.0);
   glm::dvec3 direction = glm::dvec3(centre) / length;

@@ -55,10 +55,10 @@ DrawClass classify_draw(const rec::Draw& draw, const rec::StateSnapshot& state,
 
 struct SceneBuild {
   TraceScene scene;
-  std::vector<DrawClass> classes;      // per command (kNotTriangles for non-draws)
-  std::vector<uint8_t> traced;         // per command: 1 for traced draws
-  std::vector<size_t> gbuffer_pass;    // commands of pass 1, in record order
-  std::vector<size_t> after_trace;     // commands of pass 3, in record order
+  std::vector<DrawClass> classes;    // per command (kNotTriangles for non-draws)
+  std::vector<uint8_t> traced;       // per command: 1 for traced draws
+  std::vector<size_t> gbuffer_pass;  // commands of pass 1, in record order
+  std::vector<size_t> after_trace;   // commands of pass 3, in record order
   bool any_traced = false;
 };
 

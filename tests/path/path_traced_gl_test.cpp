@@ -200,8 +200,8 @@ TEST(PathTracedGl, CulledFacesAreAbsent) {
 // GL's planar projection of everything onto `plane` from the light at `light` (homogeneous),
 // as OpenGL demos build it, column-major for glMultMatrixf.
 void shadow_matrix(const float plane[4], const float light[4], float m[16]) {
-  const float dot = plane[0] * light[0] + plane[1] * light[1] + plane[2] * light[2] +
-                    plane[3] * light[3];
+  const float dot =
+      plane[0] * light[0] + plane[1] * light[1] + plane[2] * light[2] + plane[3] * light[3];
   for (int column = 0; column < 4; ++column)
     for (int row = 0; row < 4; ++row)
       m[column * 4 + row] = (row == column ? dot : 0.0f) - light[row] * plane[column];
@@ -365,7 +365,7 @@ TEST(PathTracedGl, ClearsAndBackgroundsKeepTheirPlaceInTheRecord) {
     glClear(GL_COLOR_BUFFER_BIT);
     glDisable(GL_SCISSOR_TEST);
   });
-  EXPECT_EQ(image.at(32, 32), (Rgba{255, 0, 255, 255}));  // scene, then cleared
+  EXPECT_EQ(image.at(32, 32), (Rgba{255, 0, 255, 255}));   // scene, then cleared
   EXPECT_GT(image.at(40, 40).r, 150) << image.at(40, 40);  // scene
   EXPECT_EQ(image.at(60, 60), (Rgba{0, 153, 0, 255}));     // background
 }

@@ -2,6 +2,8 @@
 // path-traced mode: G-buffer pass, trace pass, raster overlays), checking behaviour that breaks
 // visibly when a part (classification, G-buffer, shading, shadow rays, accumulation, caching) is
 // wrong. Expected values come from GL's lighting equations by hand.
+#include "rt_core/renderer.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,7 +13,6 @@
 #include <string>
 
 #include "record_builder.hpp"
-#include "rt_core/renderer.hpp"
 #include "rt_core/scene/scene_builder.hpp"
 
 namespace glpt::rt {
@@ -545,12 +546,12 @@ TEST(ClassifyDraws, TracesOpaqueFilledTrianglesUnderTheMainCameraOnly) {
 
   SceneBuild build;
   build_trace_scene(b.record, b.drawable, build);
-  const std::vector<DrawClass> expected = {
-      DrawClass::kNotTriangles,  // the clear
-      DrawClass::kTraced,       DrawClass::kBlended,     DrawClass::kNotTriangles,
-      DrawClass::kUnfilled,     DrawClass::kMaskedColor, DrawClass::kOtherCamera,
-      DrawClass::kOtherCamera,  DrawClass::kOtherCamera, DrawClass::kOtherCamera,
-      DrawClass::kTraced};
+  const std::vector<DrawClass> expected = {DrawClass::kNotTriangles,  // the clear
+                                           DrawClass::kTraced,       DrawClass::kBlended,
+                                           DrawClass::kNotTriangles, DrawClass::kUnfilled,
+                                           DrawClass::kMaskedColor,  DrawClass::kOtherCamera,
+                                           DrawClass::kOtherCamera,  DrawClass::kOtherCamera,
+                                           DrawClass::kOtherCamera,  DrawClass::kTraced};
   EXPECT_EQ(build.classes, expected);
   EXPECT_EQ(build.gbuffer_pass, (std::vector<size_t>{0, 1, 10}));
   EXPECT_EQ(build.after_trace, (std::vector<size_t>{2, 3, 4, 5, 6, 7, 8, 9}));
@@ -563,8 +564,8 @@ TEST(ClassifyDraws, ViewerOfAProjection) {
   EXPECT_EQ(viewer_of_projection(glm::ortho(0.0f, 4.0f, 4.0f, 0.0f, 1.0f, -1.0f)),
             glm::vec4(0, 0, 1, 0));
   // A perspective camera moved back by 5 (projection * translate): its centre is at z = 5.
-  const glm::vec4 moved = viewer_of_projection(
-      glm::perspective(1.0f, 1.0f, 0.1f, 10.0f) * glm::translate(glm::mat4(1.0f), {0, 0, -5}));
+  const glm::vec4 moved = viewer_of_projection(glm::perspective(1.0f, 1.0f, 0.1f, 10.0f) *
+                                               glm::translate(glm::mat4(1.0f), {0, 0, -5}));
   EXPECT_NEAR(moved.z, 5.0f, 1e-4f);
   EXPECT_EQ(moved.w, 1.0f);
 }
