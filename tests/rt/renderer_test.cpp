@@ -557,6 +557,65 @@ TEST(ClassifyDraws, TracesOpaqueFilledTrianglesUnderTheMainCameraOnly) {
   EXPECT_EQ(build.after_trace, (std::vector<size_t>{2, 3, 4, 5, 6, 7, 8, 9}));
 }
 
+TEST(SceneBuilder, ProjectiveModelviewsGoToTheBlasInEyeSpace) {
+  RecordBuilder b(16, 16);
+  b.transform.projection = glm::perspective(1.0f, 1.0f, 0.1f, 10.0f);
+  glm::mat4 projective(1.0f);
+  projective[1][3] = 0.5f;  // bottom row (0, 0.5, 0, 1): w = 1 + y / 2
+  b.transform.modelview = projective;
+  b.draw(GL_TRIANGLES, {{0, 0, -2}, {1, 0, -2}, {0, 2, -2}}, {0, 0, 1}, glm::vec4(1));
+  SceneBuild build;
+  build_trace_scene(b.record, b.drawable, build);
+  ASSERT_EQ(build.scene.instances.size(), 1u);
+  const Instance& instance = build.scene.instances[0];
+  EXPECT_EQ(instance.modelview, glm::mat4(1.0f));
+  ASSERT_EQ(instance.geometry->positions.size(), 3u);
+  EXPECT_EQ(instance.geometry->positions[2], glm::vec3(0, 1, -1));  // (0, 2, -2) / w = 2
+}
+
+TEST(SceneBuilder, ShapeIdentityIgnoresColoursAndMaterials) {
+  auto build_with = [](glm::vec4 color, float shininess) {
+    RecordBuilder b(16, 16);
+    b.transform.projection = glm::perspective(1.0f, 1.0f, 0.1f, 10.0f);
+    b.lighting.enabled = true;
+    b.lighting.material[0].shininess = shininess;
+    b.quad({-1, -1, -3}, {2, 0, 0}, {0, 2, 0}, color);
+    SceneBuild build;
+    build_trace_scene(b.record, b.drawable, build);
+    return *build.scene.instances.at(0).geometry;
+  };
+  const Geometry white = build_with(glm::vec4(1), 0.0f), red = build_with({1, 0, 0, 1}, 0.0f);
+  const Geometry shiny = build_with(glm::vec4(1), 20.0f);
+  EXPECT_EQ(white.shape_hash, red.shape_hash);
+  EXPECT_EQ(white.shape_hash, shiny.shape_hash);
+  EXPECT_NE(white.shading_hash, red.shading_hash);
+  EXPECT_NE(white.shading_hash, shiny.shading_hash);
+}
+
+TEST(SceneBuilder, EachStateListsItsOwnLights) {
+  RecordBuilder b(16, 16);
+  b.transform.projection = glm::perspective(1.0f, 1.0f, 0.1f, 10.0f);
+  b.directional_light(0, {0, 0, 1});
+  b.quad({-1, -1, -3}, {1, 0, 0}, {0, 1, 0}, glm::vec4(1));
+  b.lighting.light_mask = 2;
+  b.lighting.lights[1].position = glm::vec4(1, 0, 0, 0);
+  b.quad({0, -1, -3}, {1, 0, 0}, {0, 1, 0}, glm::vec4(1));
+  b.lighting.enabled = false;
+  b.quad({0, 0, -3}, {1, 0, 0}, {0, 1, 0}, glm::vec4(1));
+  SceneBuild build;
+  build_trace_scene(b.record, b.drawable, build);
+  ASSERT_EQ(build.scene.lights.size(), 2u);
+  const auto draw_state = [&](size_t command) {
+    return std::get<rec::Draw>(b.record.commands[command]).state;
+  };
+  EXPECT_EQ(build.scene.states[draw_state(0)].lights, (std::vector<uint32_t>{0}));
+  EXPECT_EQ(build.scene.states[draw_state(1)].lights, (std::vector<uint32_t>{1}));
+  // Unlit: no GL lights; at bounce hits lit by the first lit state's.
+  EXPECT_EQ(build.scene.states[draw_state(2)].lights, (std::vector<uint32_t>{0}));
+  EXPECT_EQ(build.scene.lights[1].position, glm::vec4(1, 0, 0, 0));
+  EXPECT_EQ(build.scene.instances.size(), 3u);  // a new light set starts a new instance
+}
+
 TEST(ClassifyDraws, ViewerOfAProjection) {
   EXPECT_EQ(viewer_of_projection(glm::frustum(-1.0f, 1.0f, -1.0f, 1.0f, 1.0f, 10.0f)),
             glm::vec4(0, 0, 0, 1));
