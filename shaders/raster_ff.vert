@@ -58,9 +58,14 @@ layout(location = GLPT_GBUFFER_VARYING_NORMAL) out vec3 v_normal;
 layout(location = GLPT_GBUFFER_VARYING_VERTEX_COLOR) out vec4 v_vertex_color;
 #endif
 
+// Declared in full so the geometry shader (raster_unfilled.geom) can match the block exactly.
+out gl_PerVertex {
+  vec4 gl_Position;
+  float gl_PointSize;
 #if GLPT_CLIP
-out float gl_ClipDistance[8];
+  float gl_ClipDistance[8];
 #endif
+};
 
 bool has(uint flag) { return (kFlags & flag) != 0u; }
 

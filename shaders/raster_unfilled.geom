@@ -39,6 +39,7 @@ layout(location = 4) in vec4 g_texcoord[][GLPT_RASTER_MAX_UNITS];
 layout(location = 8) in float g_fog[];
 in gl_PerVertex {
   vec4 gl_Position;
+  float gl_PointSize;
   float gl_ClipDistance[8];
 } gl_in[];
 

@@ -14,18 +14,26 @@
 namespace glpt {
 
 std::unique_ptr<X11WindowTarget> X11WindowTarget::create(const std::string& display_name,
-                                                         uint32_t window, std::string* error) {
+                                                         uint32_t window,
+                                                         rec::DrawableConfig config,
+                                                         std::string* error) {
   xcb_connection_t* c = xcb_connect(display_name.empty() ? nullptr : display_name.c_str(), nullptr);
   if (xcb_connection_has_error(c)) {
     xcb_disconnect(c);
     *error = "cannot open X display '" + display_name + "' for presenting";
     return nullptr;
   }
-  return std::unique_ptr<X11WindowTarget>(new X11WindowTarget(c, window));
+  // Only windows have a back buffer: GetWindowAttributes fails on a pixmap.
+  xcb_generic_error_t* err = nullptr;
+  free(xcb_get_window_attributes_reply(c, xcb_get_window_attributes(c, window), &err));
+  if (err != nullptr) config.double_buffered = false;
+  free(err);
+  return std::unique_ptr<X11WindowTarget>(new X11WindowTarget(c, window, config));
 }
 
-X11WindowTarget::X11WindowTarget(xcb_connection_t* connection, uint32_t window)
-    : connection_(connection), window_(window) {}
+X11WindowTarget::X11WindowTarget(xcb_connection_t* connection, uint32_t window,
+                                 rec::DrawableConfig config)
+    : connection_(connection), window_(window), config_(config) {}
 
 X11WindowTarget::~X11WindowTarget() {
   release_shm();

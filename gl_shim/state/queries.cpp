@@ -19,9 +19,6 @@ using query::ints;
 using query::Kind;
 using query::Value;
 
-// Implementation limits glpt reports.
-constexpr int kMaxTextureSize = 4096;
-
 bool lookup(const Context& ctx, GLenum pname, Value* out) {
   const auto& fb = ctx.framebuffer;
   const auto& m = ctx.matrices;
@@ -69,21 +66,6 @@ bool lookup(const Context& ctx, GLenum pname, Value* out) {
     case GL_MAX_CLIP_PLANES:
       *out = ints({6});
       return true;
-    case GL_MAX_TEXTURE_SIZE:
-      *out = ints({kMaxTextureSize});
-      return true;
-    case GL_MAX_3D_TEXTURE_SIZE:
-      *out = ints({256});
-      return true;
-    case GL_MAX_CUBE_MAP_TEXTURE_SIZE:
-      *out = ints({kMaxTextureSize});
-      return true;
-    case GL_MAX_TEXTURE_UNITS:
-      *out = ints({double(rec::kMaxTextureUnits)});
-      return true;
-    case GL_ACTIVE_TEXTURE:
-      *out = ints({double(GL_TEXTURE0 + ctx.textures.active)});
-      return true;
     case GL_MAX_LIST_NESTING:
       *out = ints({DisplayListState::kMaxNesting});
       return true;
@@ -96,9 +78,6 @@ bool lookup(const Context& ctx, GLenum pname, Value* out) {
       return true;
     case GL_MAX_EVAL_ORDER:
       *out = ints({30});
-      return true;
-    case GL_MAX_PIXEL_MAP_TABLE:
-      *out = ints({256});
       return true;
     case GL_MAX_ELEMENTS_VERTICES:
     case GL_MAX_ELEMENTS_INDICES:
@@ -255,6 +234,7 @@ bool lookup(const Context& ctx, GLenum pname, Value* out) {
       break;
   }
   if (lookup_fixed_function_state(ctx, pname, out)) return true;
+  if (lookup_texture_and_pixel_state(ctx, pname, out)) return true;
   if (auto on = capability_enabled(const_cast<Context&>(ctx), pname)) {
     *out = boolean(*on);
     return true;

@@ -248,6 +248,9 @@ VkPipeline RasterPipelines::create(const PipelineKey& key) {
   auto line_state = make_info<VkPipelineRasterizationLineStateCreateInfoEXT>(
       VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_LINE_STATE_CREATE_INFO_EXT, &provoking);
   line_state.lineRasterizationMode = static_cast<VkLineRasterizationModeEXT>(key.line_mode);
+  if (line_state.lineRasterizationMode == VK_LINE_RASTERIZATION_MODE_RECTANGULAR_SMOOTH_EXT &&
+      !device_.has_smooth_lines())
+    line_state.lineRasterizationMode = VK_LINE_RASTERIZATION_MODE_BRESENHAM_EXT;
   line_state.stippledLineEnable = key.line_stipple;
   line_state.lineStippleFactor = 1;
   line_state.lineStipplePattern = 0xFFFF;

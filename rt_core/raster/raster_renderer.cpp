@@ -89,6 +89,8 @@ struct RasterRenderer::Recording {
   VkPipeline bound_pipeline = VK_NULL_HANDLE;
   // Texture descriptors currently pushed, per binding (to skip redundant pushes).
   std::array<VkImageView, 4 * GLPT_RASTER_MAX_UNITS> bound_views{};
+  // ... and their samplers: a texture whose parameters changed keeps its view (same texels).
+  std::array<VkSampler, 4 * GLPT_RASTER_MAX_UNITS> bound_samplers{};
   bool descriptors_pushed = false;
   // Dynamic state last set in this command buffer.
   bool dynamic_valid = false;
@@ -237,7 +239,11 @@ void RasterRenderer::execute(const rec::FrameRecord& record, const rec::Drawable
     indices.clear();
     const rec::PrimitiveClass cls = rec::primitive_class(v.mode);
     auto ok = [&](uint32_t vertex) { return finite(v.position[vertex]); };
-    if (cls == rec::PrimitiveClass::kLines && v.mode != GL_LINES) {
+    const rec::StateSnapshot& state = record.states[draw->state];
+    // Strips stay strips (one stipple pattern along each) unless Mesa draws them segment by
+    // segment (display lists).
+    if (cls == rec::PrimitiveClass::kLines && v.mode != GL_LINES &&
+        !rec::mesa_draws_strips_as_lines(v)) {
       g.topology = RasterTopology::kLineStrip;
       for (const rec::PrimitiveRange& range : v.primitives) {
         if (range.count < 2) continue;
@@ -257,7 +263,9 @@ void RasterRenderer::execute(const rec::FrameRecord& record, const rec::Drawable
       }
     } else {
       decomposed_.clear();
-      rec::decompose(v, decomposed_);
+      // Mesa's exact triangles and vertex order (decompose.hpp): they decide interpolation and
+      // edge ties.
+      rec::decompose(v, rec::assembly_state(state, v), decomposed_);
       if (cls == rec::PrimitiveClass::kPoints) {
         g.topology = RasterTopology::kPoints;
         for (uint32_t p : decomposed_.points)
@@ -275,7 +283,7 @@ void RasterRenderer::execute(const rec::FrameRecord& record, const rec::Drawable
           edge_masks.push_back(t.boundary_edges);
         }
         // The geometry shader of unfilled polygons reads each triangle's boundary edges.
-        const rec::PrimitiveState& p = record.states[draw->state].raster->primitive;
+        const rec::PrimitiveState& p = state.raster->primitive;
         if (p.polygon_mode_front != GL_FILL || p.polygon_mode_back != GL_FILL) {
           edge_masks.resize((edge_masks.size() + 3) & ~size_t{3}, 0);
           g.edge_offset = arena.add(edge_masks.data(), edge_masks.size());
@@ -432,7 +440,7 @@ void RasterRenderer::bind(Recording& r, const PipelineKey& key,
       }
     }
   }
-  if (r.descriptors_pushed && views == r.bound_views) return;
+  if (r.descriptors_pushed && views == r.bound_views && samplers == r.bound_samplers) return;
   std::array<VkDescriptorImageInfo, 4 * GLPT_RASTER_MAX_UNITS> images{};
   std::array<VkWriteDescriptorSet, 2 + 4 * GLPT_RASTER_MAX_UNITS> writes{};
   VkDescriptorBufferInfo states{states_.handle(), 0, VK_WHOLE_SIZE};
@@ -457,6 +465,7 @@ void RasterRenderer::bind(Recording& r, const PipelineKey& key,
   push_descriptor_set_(r.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.layout(), 0,
                        static_cast<uint32_t>(writes.size()), writes.data());
   r.bound_views = views;
+  r.bound_samplers = samplers;
   r.descriptors_pushed = true;
 }
 

@@ -57,6 +57,7 @@ struct Candidate {
   std::vector<std::string> missing_ray_query;  // empty: path tracing possible
   bool geometry_shader = false;
   bool external_host_memory = false;  // VK_EXT_external_memory_host: zero-copy presenting
+  bool smooth_lines = false, stippled_smooth_lines = false;
 };
 
 template <size_t N>
@@ -133,6 +134,9 @@ Candidate evaluate(VkPhysicalDevice device) {
   need(border.customBorderColorWithoutFormat, "customBorderColorWithoutFormat");
   // Geometry shaders draw GL's unfilled polygons with edge flags; they also need point sizes.
   candidate.geometry_shader = core.geometryShader && core.shaderTessellationAndGeometryPointSize;
+  // Smooth lines are only used where stippled smooth lines exist too (GL stipples either kind).
+  candidate.smooth_lines = lines.smoothLines && lines.stippledSmoothLines;
+  candidate.stippled_smooth_lines = lines.stippledSmoothLines;
   if (candidate.missing_ray_query.empty()) {
     if (!acceleration.accelerationStructure)
       candidate.missing_ray_query.push_back("accelerationStructure");
@@ -341,6 +345,10 @@ std::unique_ptr<VulkanDevice> VulkanDevice::create(const DeviceOptions& options)
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_LINE_RASTERIZATION_FEATURES_EXT, &provoking);
   lines.bresenhamLines = VK_TRUE;
   lines.stippledBresenhamLines = VK_TRUE;
+  // GL_LINE_SMOOTH draws Vulkan's smooth lines where the device has them (else Bresenham).
+  lines.smoothLines = chosen.smooth_lines;
+  lines.stippledSmoothLines = chosen.smooth_lines && chosen.stippled_smooth_lines;
+  self->smooth_lines_ = chosen.smooth_lines;
   auto depth_clip = make_info<VkPhysicalDeviceDepthClipControlFeaturesEXT>(
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DEPTH_CLIP_CONTROL_FEATURES_EXT, &lines);
   depth_clip.depthClipControl = VK_TRUE;
