@@ -24,7 +24,14 @@ layout(location = 8) in float g_fog[];
 layout(location = GLPT_GBUFFER_VARYING_EYE) in vec4 g_eye[];
 layout(location = GLPT_GBUFFER_VARYING_NORMAL) in vec3 g_normal[];
 layout(location = GLPT_GBUFFER_VARYING_VERTEX_COLOR) in vec4 g_vertex_color[];
-// gl_in and the output block are GLSL's implicit ones, as the vertex shader's.
+// The vertex shader's per-vertex block, member for member (Vulkan compares the blocks).
+in gl_PerVertex {
+  vec4 gl_Position;
+  float gl_PointSize;
+#if GLPT_CLIP
+  float gl_ClipDistance[8];
+#endif
+} gl_in[];
 
 layout(location = 0) out vec4 v_front_color;
 layout(location = 1) out vec4 v_back_color;
@@ -38,9 +45,12 @@ layout(location = GLPT_GBUFFER_VARYING_VERTEX_COLOR) out vec4 v_vertex_color;
 layout(location = GLPT_GBUFFER_VARYING_CORNERS) flat out vec3 v_corner[3];
 layout(location = GLPT_GBUFFER_VARYING_CORNER_NORMALS) flat out vec3 v_corner_normal[3];
 layout(location = GLPT_GBUFFER_VARYING_BARYCENTRIC) out vec2 v_barycentric;
+out gl_PerVertex {
+  vec4 gl_Position;
 #if GLPT_CLIP
-out float gl_ClipDistance[8];
+  float gl_ClipDistance[8];
 #endif
+};
 
 void main() {
   vec3 corners[3], normals[3];
@@ -52,15 +62,7 @@ void main() {
   for (int i = 0; i < 3; ++i) {
     gl_Position = gl_in[i].gl_Position;
 #if GLPT_CLIP
-    // Constant indices: the implicit blocks are sized by their use, as in the vertex shader.
-    gl_ClipDistance[0] = gl_in[i].gl_ClipDistance[0];
-    gl_ClipDistance[1] = gl_in[i].gl_ClipDistance[1];
-    gl_ClipDistance[2] = gl_in[i].gl_ClipDistance[2];
-    gl_ClipDistance[3] = gl_in[i].gl_ClipDistance[3];
-    gl_ClipDistance[4] = gl_in[i].gl_ClipDistance[4];
-    gl_ClipDistance[5] = gl_in[i].gl_ClipDistance[5];
-    gl_ClipDistance[6] = gl_in[i].gl_ClipDistance[6];
-    gl_ClipDistance[7] = gl_in[i].gl_ClipDistance[7];
+    for (int c = 0; c < 8; ++c) gl_ClipDistance[c] = gl_in[i].gl_ClipDistance[c];
 #endif
     v_front_color = g_front_color[i];
     v_back_color = g_back_color[i];
