@@ -30,11 +30,6 @@
 namespace glpt {
 namespace {
 
-constexpr uint32_t bit(ArrayKind kind) { return 1u << int(kind); }
-
-// What a live draw reads: every array but the colour index one (glpt renders RGBA).
-constexpr uint32_t kDrawnArrays = kAllArrays & ~bit(ArrayKind::kIndex);
-
 template <typename T>
 void append_values(const ArrayReader& reader, const std::vector<uint32_t>& vertices,
                    std::vector<T>& out) {

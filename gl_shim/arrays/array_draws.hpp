@@ -34,6 +34,9 @@ struct ArrayVertices {
 // Reads the listed vertices of every enabled array (the vertex array included) with `conversion`;
 // only the arrays `kinds` names (bits 1 << ArrayKind).
 inline constexpr uint32_t kAllArrays = (1u << kArrayKinds) - 1;
+// What a draw reads: every array but the colour index one (glpt renders RGBA, and a draw sets
+// no current value).
+inline constexpr uint32_t kDrawnArrays = kAllArrays & ~(1u << int(ArrayKind::kIndex));
 void read_array_vertices(const Context& ctx, const std::vector<uint32_t>& vertices,
                          ArrayConversion conversion, ArrayVertices& out,
                          uint32_t kinds = kAllArrays);

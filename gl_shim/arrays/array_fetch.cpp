@@ -75,10 +75,6 @@ ArrayReader::ElementFn element_fn(GLenum type, ArrayConversion c, bool normalize
 
 }  // namespace
 
-float convert_component(const void* p, GLenum type, bool normalized, ArrayConversion conversion) {
-  return element_fn(type, conversion, normalized)(static_cast<const uint8_t*>(p), 1).x;
-}
-
 ArrayReader::ArrayReader(const ClientArray& array, ArrayConversion conversion)
     : bytes_(array.orphaned ? nullptr : array.buffer, array.orphaned ? nullptr : array.pointer),
       stride_(array.effective_stride()),

@@ -24,9 +24,6 @@ namespace glpt {
 
 enum class ArrayConversion : uint8_t { kVertexFetch, kImmediate };
 
-// One component of `type` at `p` (unaligned) as a float.
-float convert_component(const void* p, GLenum type, bool normalized, ArrayConversion conversion);
-
 // Reads the elements of one client array.
 class ArrayReader {
  public:
@@ -38,7 +35,6 @@ class ArrayReader {
   // object's store, and every element of an array without data (a null pointer, an orphaned
   // offset), read (0, 0, 0, 1) too.
   glm::vec4 read(uint64_t i) const;
-  bool has_data() const { return bytes_.bytes() != nullptr; }
 
   using ElementFn = glm::vec4 (*)(const uint8_t* element, int size);
 

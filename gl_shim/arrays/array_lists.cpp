@@ -98,10 +98,8 @@ GLenum draw_error(const Context& ctx, GLenum mode, GLsizei count) {
 void compile_primitive(Context& ctx, ListStream& list, GLenum mode,
                        const std::vector<uint32_t>& vertices) {
   ArrayVertices v;
-  // The colour index array is left out: a replayed primitive sets no current value.
   if (ctx.arrays[ArrayKind::kVertex].enabled)
-    read_array_vertices(ctx, vertices, ArrayConversion::kImmediate, v,
-                        kAllArrays & ~(1u << int(ArrayKind::kIndex)));
+    read_array_vertices(ctx, vertices, ArrayConversion::kImmediate, v, kDrawnArrays);
   write(list, CommandId::glDrawArrays, mode, GL_NO_ERROR, v);
 }
 
