@@ -20,6 +20,7 @@ Context::Context(const Context* shared)
       unimplemented_reported(static_cast<size_t>(CommandId::kCount), false) {
   if (shared != nullptr) {
     lists.store = shared->lists.store;
+    buffers = shared->buffers;
     textures.store = shared->textures.store;
   }
 }

@@ -10,16 +10,20 @@
 #include <vector>
 
 #include "common/stopwatch.hpp"
+#include "gl_shim/arrays/vertex_arrays.hpp"
+#include "gl_shim/buffers/buffer_objects.hpp"
 #include "gl_shim/display_lists/display_lists.hpp"
 #include "gl_shim/frame/frame_output.hpp"
 #include "gl_shim/frame/frame_recorder.hpp"
 #include "gl_shim/frame/state_snapshot.hpp"
 #include "gl_shim/geometry/vertex_assembly.hpp"
 #include "gl_shim/gl_commands.hpp"
+#include "gl_shim/state/attrib_stack.hpp"
 #include "gl_shim/state/color_index_state.hpp"
 #include "gl_shim/state/current_attributes.hpp"
 #include "gl_shim/state/enable_state.hpp"
 #include "gl_shim/state/framebuffer_state.hpp"
+#include "gl_shim/state/hints.hpp"
 #include "gl_shim/state/implementation_limits.hpp"
 #include "gl_shim/state/matrix_stack.hpp"
 #include "gl_shim/state/transform_controls.hpp"
@@ -30,7 +34,8 @@ namespace glpt {
 
 class Context {
  public:
-  // `shared` (may be null): a context whose display lists and texture objects this one shares
+  // `shared` (may be null): a context whose display lists, texture and buffer objects this one
+  // shares
   // (GLX share_list).
   explicit Context(const Context* shared);
   ~Context();
@@ -56,8 +61,13 @@ class Context {
   CurrentAttributes current;
   FramebufferState framebuffer;
   ColorIndexState color_index;  // kept for queries only (glpt renders RGBA)
+  HintState hints;
   VertexAssembly assembly;
   DisplayListState lists;
+  VertexArrays arrays;  // client vertex arrays and buffer bindings (GL 1.5 2.8, 2.9)
+  // Buffer objects of the share group (the constructor shares them with share_list).
+  std::shared_ptr<BufferStore> buffers = std::make_shared<BufferStore>();
+  AttribStacks attrib_stacks;  // glPushAttrib / glPushClientAttrib
 
   // --- the frame --------------------------------------------------------------------------------
   // The frame being recorded (commands since the record was last executed) and the snapshots of

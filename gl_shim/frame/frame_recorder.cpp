@@ -95,6 +95,15 @@ void FrameRecorder::add_primitive(rec::StateId state, rec::VertexData& p) {
   append(d.material, p.material);
 }
 
+void FrameRecorder::add_draw(rec::StateId state, rec::VertexData&& draw) {
+  if (draw.position.empty() || draw.primitives.empty()) return;
+  seal();
+  vertex_bytes_ += draw.position.size() * bytes_per_vertex(draw) + draw.indices.size() * 4;
+  auto data = std::make_shared<rec::VertexData>(std::move(draw));
+  finish_vertex_data(*data);
+  record_.commands.push_back(rec::Draw{state, std::move(data)});
+}
+
 void FrameRecorder::add(rec::Command command) {
   seal();
   record_.commands.push_back(std::move(command));

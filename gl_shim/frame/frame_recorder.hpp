@@ -19,6 +19,9 @@ class FrameRecorder {
   // Appends one primitive: `primitive` holds one value per vertex for every attribute it records
   // and exactly one PrimitiveRange. Its arrays are moved from.
   void add_primitive(rec::StateId state, rec::VertexData& primitive);
+  // Appends one complete draw (an array draw: any number of primitives, indices allowed; an
+  // attribute may hold one value for all vertices). It is never batched with others.
+  void add_draw(rec::StateId state, rec::VertexData&& draw);
   // Any other command ends the open batch.
   void add(rec::Command command);
   // Completes the open batch; the record is then ready for a consumer.

@@ -237,22 +237,5 @@ void glFinish(Context& ctx) {
     execute_record(ctx);
 }
 
-void glHint(Context& ctx, GLenum target, GLenum mode) {
-  if (mode != GL_FASTEST && mode != GL_NICEST && mode != GL_DONT_CARE)
-    return record_error(ctx, GL_INVALID_ENUM);
-  switch (target) {
-    case GL_PERSPECTIVE_CORRECTION_HINT:
-    case GL_POINT_SMOOTH_HINT:
-    case GL_LINE_SMOOTH_HINT:
-    case GL_POLYGON_SMOOTH_HINT:
-    case GL_FOG_HINT:
-    case GL_TEXTURE_COMPRESSION_HINT:
-    case GL_GENERATE_MIPMAP_HINT:
-      return;  // hints do not change what glpt renders
-    default:
-      record_error(ctx, GL_INVALID_ENUM);
-  }
-}
-
 }  // namespace impl
 }  // namespace glpt

@@ -36,8 +36,11 @@ they are; its pointer arguments are copied with a length that comes from:
     those default modes in effect (glpt::DefaultUnpackModes) and restores the context's own. A
     table entry may name a condition under which the command is executed at once and never
     compiled (proxy texture targets, GL 1.5 3.8.11).
-Any other pointer argument (client arrays, output pointers) makes a command "not compilable":
-it is counted and not recorded.
+  - HAND_COMPILED: hand-written code that dereferences the client data itself (vertex array
+    draws, whose arrays GL 1.5 5.4 reads at compile time: arrays/array_lists.hpp), recording
+    records of its own that HAND_REPLAYED functions replay.
+Any other pointer argument (output pointers) makes a command "not compilable": it is counted
+and not recorded.
 """
 
 import collections
@@ -178,6 +181,27 @@ EXTRA_ALIASES = {
 EQUIVALENT_TYPES = {"GLclampf": "GLfloat", "GLclampd": "GLdouble", "GLsizeiptrARB": "GLsizeiptr",
                     "GLintptrARB": "GLintptr", "GLenum": "GLint"}
 
+# Commands whose client data GL 1.5 5.4 dereferences when they are compiled (vertex arrays),
+# recorded and replayed by hand-written code. While a list is being compiled, the entry point of
+# a command named here (by core name) calls the function given, glpt::f(Context&, ListStream&,
+# <the command's arguments>), which records what it needs under any CommandId; HAND_REPLAYED
+# names the function that replays records of a CommandId, glpt::g(Context&, const
+# ListStream::Reader&). GL_COMPILE_AND_EXECUTE then executes the command as usual. Both are
+# declared in the headers of HAND_COMPILED_HEADERS.
+HAND_COMPILED = {
+    "glArrayElement": "glpt::compile_array_element",
+    "glDrawArrays": "glpt::compile_draw_arrays",
+    "glDrawElements": "glpt::compile_draw_elements",
+    "glDrawRangeElements": "glpt::compile_draw_range_elements",
+    "glMultiDrawArrays": "glpt::compile_multi_draw_arrays",
+    "glMultiDrawElements": "glpt::compile_multi_draw_elements",
+}
+HAND_REPLAYED = {
+    "glArrayElement": "glpt::replay_array_element",
+    "glDrawArrays": "glpt::replay_array_primitive",
+}
+HAND_COMPILED_HEADERS = ["gl_shim/arrays/array_lists.hpp"]
+
 GL_SCALAR_TYPES = {
     "GLenum", "GLboolean", "GLbitfield", "GLbyte", "GLshort", "GLint", "GLubyte", "GLushort",
     "GLuint", "GLsizei", "GLfloat", "GLclampf", "GLdouble", "GLclampd", "GLintptr",
@@ -303,8 +327,11 @@ def record_plan(cmd):
     """How a compiled command stores its pointer arguments, or None if it cannot be compiled.
 
     Returns a dict: pointer parameter -> a C++ expression for its element count, or
-    "client image" for the image of a CLIENT_IMAGES command.
+    "client image" for the image of a CLIENT_IMAGES command; or the string "hand" for a
+    HAND_COMPILED command.
     """
+    if core_name(cmd.name) in HAND_COMPILED:
+        return "hand"
     plan = {}
     param_names = {p.name for p in cmd.params}
     image = CLIENT_IMAGES.get(core_name(cmd.name))
@@ -440,7 +467,10 @@ def emit_entry_points(path, names, commands):
       '#include "gl_shim/context.hpp"\n#include "gl_shim/display_lists/list_stream.hpp"\n'
       '#include "gl_shim/dispatch.hpp"\n#include "gl_shim/gl_entry_decls.h"\n'
       '#include "gl_shim/pixels/list_images.hpp"\n'
-      '#include "gl/gl_enums.h"\n\n')
+      '#include "gl/gl_enums.h"\n')
+    for header in HAND_COMPILED_HEADERS:
+        w(f'#include "{header}"\n')
+    w("\n")
     # Weak references to the implementations.
     w("namespace glpt::impl {\n")
     for target in unique_impls(names, commands):
@@ -470,7 +500,7 @@ def emit_entry_points(path, names, commands):
         if compiled(n):
             plans[n] = record_plan(commands[n])
     for n, plan in plans.items():
-        if plan is None:
+        if plan is None or plan == "hand":
             continue
         cmd = commands[n]
         w(f"struct Rec_{n} {{\n")
@@ -490,8 +520,11 @@ def emit_entry_points(path, names, commands):
     w("void replay_list(Context& ctx, const ListStream& list) {\n"
       "  for (ListStream::Reader r(list); !r.done(); r.next()) {\n"
       "    switch (r.command()) {\n")
+    for n, replay in HAND_REPLAYED.items():
+        if n in names:
+            w(f"      case CommandId::{n}:\n        {replay}(ctx, r);\n        break;\n")
     for n, plan in plans.items():
-        if plan is None:
+        if plan is None or plan == "hand":
             continue
         cmd = commands[n]
         w(f"      case CommandId::{n}: {{\n")
@@ -528,6 +561,10 @@ def emit_entry_points(path, names, commands):
             if plan is None:
                 w("  if (ctx->list_being_compiled() != nullptr) {\n")
                 w(f"    glpt::not_compilable(*ctx, glpt::CommandId::{n});\n")
+            elif plan == "hand":
+                w("  if (glpt::ListStream* glpt_list = ctx->list_being_compiled()) {\n")
+                args_list = ", ".join(["*ctx", "*glpt_list"] + [p.name for p in cmd.params])
+                w(f"    {HAND_COMPILED[core_name(n)]}({args_list});\n")
             else:
                 w("  if (glpt::ListStream* glpt_list = ctx->list_being_compiled()) {\n")
                 image = CLIENT_IMAGES.get(core_name(n)) if "client image" in plan.values() else None

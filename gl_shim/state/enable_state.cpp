@@ -154,6 +154,11 @@ BitField flag_bit(Context& ctx, GLenum cap) {
 }
 
 void set_cap(Context& ctx, GLenum cap, bool on) {
+  // Client-state capabilities through glEnable: Mesa accepts them (as glEnableClientState).
+  if (ClientArray* array = client_state_array(ctx.arrays, cap, ctx.textures.client_active)) {
+    array->enabled = on;
+    return;
+  }
   if (bool* field = flag_field(ctx, cap)) {
     *field = on;
   } else if (BitField b = flag_bit(ctx, cap); b.bits != nullptr) {
@@ -175,6 +180,8 @@ void set_cap(Context& ctx, GLenum cap, bool on) {
 std::optional<bool> capability_enabled(Context& ctx, GLenum cap) {
   if (bool* field = flag_field(ctx, cap)) return *field;
   if (BitField b = flag_bit(ctx, cap); b.bits != nullptr) return (*b.bits & b.mask) != 0;
+  if (const ClientArray* array = client_state_array(ctx.arrays, cap, ctx.textures.client_active))
+    return array->enabled;
   return ctx.enables.get(cap);
 }
 

@@ -70,8 +70,10 @@ bool lookup(const Context& ctx, GLenum pname, Value* out) {
       *out = ints({DisplayListState::kMaxNesting});
       return true;
     case GL_MAX_ATTRIB_STACK_DEPTH:
+      *out = ints({double(kMaxAttribStackDepth)});
+      return true;
     case GL_MAX_CLIENT_ATTRIB_STACK_DEPTH:
-      *out = ints({16});
+      *out = ints({double(kMaxClientAttribStackDepth)});
       return true;
     case GL_MAX_NAME_STACK_DEPTH:
       *out = ints({64});
@@ -79,9 +81,10 @@ bool lookup(const Context& ctx, GLenum pname, Value* out) {
     case GL_MAX_EVAL_ORDER:
       *out = ints({30});
       return true;
+    // Mesa's recommended maximums (glpt draws any count up to kMaxArrayDrawVertices).
     case GL_MAX_ELEMENTS_VERTICES:
     case GL_MAX_ELEMENTS_INDICES:
-      *out = ints({1 << 20});
+      *out = ints({3000});
       return true;
     case GL_SUBPIXEL_BITS:
       *out = ints({8});  // Mesa llvmpipe's
@@ -234,6 +237,7 @@ bool lookup(const Context& ctx, GLenum pname, Value* out) {
       break;
   }
   if (lookup_fixed_function_state(ctx, pname, out)) return true;
+  if (lookup_array_state(ctx, pname, out)) return true;
   if (lookup_texture_and_pixel_state(ctx, pname, out)) return true;
   if (auto on = capability_enabled(const_cast<Context&>(ctx), pname)) {
     *out = boolean(*on);
@@ -282,8 +286,11 @@ const GLubyte* glGetString(Context& ctx, GLenum name) {
       s = "1.5 glpt " GLPT_VERSION_STRING;
       break;
     // Only extensions whose every entry point works are advertised.
+    // Each name is followed by a space, as in Mesa's string (piglit's glinfo prints the names up
+    // to each space and would leave the last one unterminated).
     case GL_EXTENSIONS:
-      s = "";
+      s = "GL_ARB_vertex_buffer_object GL_EXT_vertex_array GL_EXT_compiled_vertex_array "
+          "GL_EXT_draw_range_elements GL_EXT_multi_draw_arrays ";
       break;
     default:
       record_error(ctx, GL_INVALID_ENUM);

@@ -71,6 +71,10 @@ inline GLint round_to_int(double v) {
 // `pname` is none of those.
 bool lookup_fixed_function_state(const Context& ctx, GLenum pname, query::Value* out);
 
+// Vertex arrays, buffer bindings, attribute stacks and hints (GL 1.5 tables 6.6-6.8, 6.27, 6.31;
+// arrays/array_queries.cpp). False if `pname` is none of those.
+bool lookup_array_state(const Context& ctx, GLenum pname, query::Value* out);
+
 // Texture bindings and limits, pixel store modes of 3-D images, pixel transfer, pixel maps and
 // zoom (gl_shim/textures/texture_queries.cpp). False if `pname` is none of those.
 bool lookup_texture_and_pixel_state(const Context& ctx, GLenum pname, query::Value* out);

@@ -371,3 +371,54 @@ TEST(PathTracedGl, ClearsAndBackgroundsKeepTheirPlaceInTheRecord) {
 }
 
 }  // namespace
+
+namespace {
+
+// The quad of quad() as an indexed draw from buffer objects (two triangles of a fan).
+void buffer_quad(float x0, float y0, float x1, float y1, float z) {
+  const float vertices[4][6] = {
+      {x0, y0, z, 0, 0, 1}, {x1, y0, z, 0, 0, 1}, {x1, y1, z, 0, 0, 1}, {x0, y1, z, 0, 0, 1}};
+  const GLushort indices[6] = {0, 1, 2, 0, 2, 3};
+  GLuint buffers[2];
+  glGenBuffers(2, buffers);
+  glBindBuffer(GL_ARRAY_BUFFER, buffers[0]);
+  glBufferData(GL_ARRAY_BUFFER, sizeof vertices, vertices, GL_STATIC_DRAW);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, buffers[1]);
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, sizeof indices, indices, GL_STATIC_DRAW);
+  glEnableClientState(GL_VERTEX_ARRAY);
+  glEnableClientState(GL_NORMAL_ARRAY);
+  glVertexPointer(3, GL_FLOAT, sizeof vertices[0], nullptr);
+  glNormalPointer(GL_FLOAT, sizeof vertices[0], reinterpret_cast<const void*>(3 * sizeof(float)));
+  glDrawElements(GL_TRIANGLES, 6, GL_UNSIGNED_SHORT, nullptr);
+  glDisableClientState(GL_VERTEX_ARRAY);
+  glDisableClientState(GL_NORMAL_ARRAY);
+  glDeleteBuffers(2, buffers);
+}
+
+}  // namespace
+
+TEST(PathTracedGl, IndexedBufferDrawsAreTracedLikeTheirImmediateTwin) {
+  // The same lit quad, once from glBegin/glEnd and once from glDrawElements over buffer
+  // objects, side by side: the traced surfaces cover the same pixels and are lit alike.
+  Image image = render("path", [] {
+    camera_3d();
+    glEnable(GL_LIGHTING);
+    glEnable(GL_LIGHT0);
+    quad(-2.2f, -1, -0.2f, 1, -5);
+    buffer_quad(0.2f, -1, 2.2f, 1, -5);
+  });
+  for (int y = pixel_of(-0.8f, -5); y <= pixel_of(0.8f, -5); y += 4) {
+    const Rgba left = image.at(pixel_of(-1.2f, -5), y);
+    const Rgba right = image.at(pixel_of(1.2f, -5), y);
+    EXPECT_GT(left.r, 100) << left;
+    EXPECT_NEAR(right.r, left.r, 12) << "row " << y << ": " << right << " vs " << left;
+  }
+  const auto lit = [](Rgba c) { return c.r > 60; };
+  Image left_only = render("path", [] {
+    camera_3d();
+    glEnable(GL_LIGHTING);
+    glEnable(GL_LIGHT0);
+    quad(-2.2f, -1, -0.2f, 1, -5);
+  });
+  EXPECT_NEAR(image.count(lit), 2 * left_only.count(lit), 8);
+}

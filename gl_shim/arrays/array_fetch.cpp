@@ -1,0 +1,95 @@
+#include "gl_shim/arrays/array_fetch.hpp"
+
+#include <algorithm>
+#include <cstring>
+
+#include "gl/gl_enums.h"
+#include "gl_shim/state/normalized_values.hpp"
+
+namespace glpt {
+namespace {
+
+template <typename T>
+T load(const uint8_t* p) {
+  T v;
+  std::memcpy(&v, p, sizeof v);
+  return v;
+}
+
+// llvmpipe's vertex fetch of normalized integers (see the header).
+float fetch_normalized(GLubyte c) { return float(c) * (1.0f / 255.0f); }
+float fetch_normalized(GLushort c) { return float(c) * (1.0f / 65535.0f); }
+float fetch_normalized(GLbyte c) { return std::max(float(c) * (1.0f / 127.0f), -1.0f); }
+float fetch_normalized(GLshort c) { return std::max(float(c) * (1.0f / 32767.0f), -1.0f); }
+float fetch_normalized(GLint c) { return std::max(float(c) * float(1.0 / 2147483647.0), -1.0f); }
+// 32-bit unorm: the 23 high bits become a float mantissa, rescaled to reach 1.0.
+float fetch_normalized(GLuint c) { return float(c >> 9) * 0x1p-23f * float(8388608.0 / 8388607.0); }
+float fetch_normalized(GLfloat c) { return c; }
+float fetch_normalized(GLdouble c) { return float(c); }
+
+template <typename T, ArrayConversion C, bool N>
+float component(T v) {
+  if constexpr (!N)
+    return float(v);
+  else if constexpr (C == ArrayConversion::kVertexFetch)
+    return fetch_normalized(v);
+  else
+    return normalized_component(v);
+}
+
+template <typename T, ArrayConversion C, bool N>
+glm::vec4 element(const uint8_t* p, int size) {
+  glm::vec4 out(0.0f, 0.0f, 0.0f, 1.0f);
+  for (int k = 0; k < size; ++k) out[k] = component<T, C, N>(load<T>(p + size_t(k) * sizeof(T)));
+  return out;
+}
+
+template <typename T>
+ArrayReader::ElementFn element_fn(ArrayConversion c, bool normalized) {
+  if (!normalized) return &element<T, ArrayConversion::kVertexFetch, false>;
+  return c == ArrayConversion::kVertexFetch ? &element<T, ArrayConversion::kVertexFetch, true>
+                                            : &element<T, ArrayConversion::kImmediate, true>;
+}
+
+// Defined for the types of GL 1.5 table 2.4 (the pointer commands accept no other).
+ArrayReader::ElementFn element_fn(GLenum type, ArrayConversion c, bool normalized) {
+  switch (type) {
+    case GL_BYTE:
+      return element_fn<GLbyte>(c, normalized);
+    case GL_UNSIGNED_BYTE:
+      return element_fn<GLubyte>(c, normalized);
+    case GL_SHORT:
+      return element_fn<GLshort>(c, normalized);
+    case GL_UNSIGNED_SHORT:
+      return element_fn<GLushort>(c, normalized);
+    case GL_INT:
+      return element_fn<GLint>(c, normalized);
+    case GL_UNSIGNED_INT:
+      return element_fn<GLuint>(c, normalized);
+    case GL_DOUBLE:
+      return element_fn<GLdouble>(c, normalized);
+    default:
+      return element_fn<GLfloat>(c, normalized);
+  }
+}
+
+}  // namespace
+
+ArrayReader::ArrayReader(const ClientArray& array, ArrayConversion conversion)
+    : bytes_(array.orphaned ? nullptr : array.buffer, array.orphaned ? nullptr : array.pointer),
+      stride_(array.effective_stride()),
+      element_bytes_(array.element_bytes()),
+      size_(array.size),
+      element_(element_fn(array.type, conversion, array.normalized)) {}
+
+glm::vec4 ArrayReader::read(uint64_t i) const {
+  const uint8_t* base = bytes_.bytes();
+  if (base == nullptr) return glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+  // Both factors are below 2^32, so the product cannot overflow.
+  const uint64_t offset = i * stride_;
+  if (offset > bytes_.size() || bytes_.size() - offset < element_bytes_)
+    return glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+  return element_(base + offset, size_);
+}
+
+}  // namespace glpt
