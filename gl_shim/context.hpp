@@ -16,6 +16,7 @@
 #include "gl_shim/frame/state_snapshot.hpp"
 #include "gl_shim/geometry/vertex_assembly.hpp"
 #include "gl_shim/gl_commands.hpp"
+#include "gl_shim/pixels/raster_position.hpp"
 #include "gl_shim/state/current_attributes.hpp"
 #include "gl_shim/state/enable_state.hpp"
 #include "gl_shim/state/framebuffer_state.hpp"
@@ -51,6 +52,7 @@ class Context {
   rec::PixelTransferState pixel_transfer;
   EnableState enables;  // capabilities without a field in the blocks above
   CurrentAttributes current;
+  rec::RasterPosition raster_position = initial_raster_position();  // GL 1.5 2.13
   FramebufferState framebuffer;
   VertexAssembly assembly;
   DisplayListState lists;

@@ -20,6 +20,7 @@ struct FramebufferState {
   glm::vec4 clear_color{0.0f};
   GLdouble clear_depth = 1.0;
   GLint clear_stencil = 0;
+  glm::vec4 clear_accum{0.0f};  // glClearAccum, clamped to [-1, 1]
   GLdouble depth_near = 0.0, depth_far = 1.0;
   PixelStoreModes pack, unpack;
 };

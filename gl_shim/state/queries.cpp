@@ -42,6 +42,9 @@ Value boolean(bool b) {
   return r;
 }
 
+// GL_CURRENT_RASTER_SECONDARY_COLOR is not in the GL 1.5 registry selection; Mesa answers it.
+constexpr GLenum kCurrentRasterSecondaryColor = 0x845F;
+
 // Implementation limits glpt reports.
 constexpr int kMaxTextureSize = 4096;
 
@@ -254,10 +257,6 @@ bool lookup(const Context& ctx, GLenum pname, Value* out) {
       *out = ints({8});
       return true;
     case GL_INDEX_BITS:
-    case GL_ACCUM_RED_BITS:
-    case GL_ACCUM_GREEN_BITS:
-    case GL_ACCUM_BLUE_BITS:
-    case GL_ACCUM_ALPHA_BITS:
       *out = ints({0});
       return true;
     case GL_DOUBLEBUFFER:
@@ -269,6 +268,39 @@ bool lookup(const Context& ctx, GLenum pname, Value* out) {
     case GL_INDEX_MODE:
     case GL_STEREO:
       *out = boolean(false);
+      return true;
+
+    // ---- the raster position (GL 1.5 2.13, table 6.9) and the accumulation buffer (4.2.4) ----
+    // (gl_shim/pixels/). Colours convert as colours; the index is Mesa's 1 in RGBA mode.
+    case GL_CURRENT_RASTER_POSITION:
+      *out = floats(&ctx.raster_position.window.x, 4);
+      return true;
+    case GL_CURRENT_RASTER_POSITION_VALID:
+      *out = boolean(ctx.raster_position.valid);
+      return true;
+    case GL_CURRENT_RASTER_DISTANCE:
+      *out = floats(&ctx.raster_position.distance, 1);
+      return true;
+    case GL_CURRENT_RASTER_COLOR:
+      *out = floats(&ctx.raster_position.color.x, 4, Kind::kColor);
+      return true;
+    case kCurrentRasterSecondaryColor:
+      *out = floats(&ctx.raster_position.secondary_color.x, 4, Kind::kColor);
+      return true;
+    case GL_CURRENT_RASTER_TEXTURE_COORDS:
+      *out = floats(&ctx.raster_position.tex_coord[ctx.textures.active].x, 4);
+      return true;
+    case GL_CURRENT_RASTER_INDEX:
+      *out = ints({1});
+      return true;
+    case GL_ACCUM_RED_BITS:
+    case GL_ACCUM_GREEN_BITS:
+    case GL_ACCUM_BLUE_BITS:
+    case GL_ACCUM_ALPHA_BITS:
+      *out = ints({double(ctx.target != nullptr ? ctx.target->config().accum_bits : 0)});
+      return true;
+    case GL_ACCUM_CLEAR_VALUE:
+      *out = floats(&ctx.framebuffer.clear_accum.x, 4, Kind::kColor);
       return true;
     default:
       break;
