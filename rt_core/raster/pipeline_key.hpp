@@ -36,6 +36,7 @@ struct PipelineKey {
   uint8_t logic_op_enable, logic_op;                                       // VkLogicOp
   uint8_t color_write_mask;                                                // VkColorComponentFlags
   uint8_t attachments;  // colour attachments the pipeline renders to (1 or 2)
+  uint8_t pixels;       // pixel rectangles: the GLPT_PIXELS fragment shader (1, or 2 with depth)
 
   PipelineKey() { std::memset(this, 0, sizeof *this); }
   bool operator==(const PipelineKey& o) const { return std::memcmp(this, &o, sizeof *this) == 0; }

@@ -11,6 +11,8 @@
 
 #include "raster_ff_clip_vert_spv.h"
 #include "raster_ff_flat_frag_spv.h"
+#include "raster_ff_pixels_depth_frag_spv.h"
+#include "raster_ff_pixels_frag_spv.h"
 #include "raster_ff_smooth_frag_spv.h"
 #include "raster_ff_vert_spv.h"
 #include "raster_types.h"
@@ -60,6 +62,8 @@ RasterPipelines::RasterPipelines(const VulkanDevice& device) : device_(device) {
   for (uint32_t i = 0; i < 4 * GLPT_RASTER_MAX_UNITS; ++i)
     bindings.push_back({GLPT_RASTER_BINDING_TEXTURES + i, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
                         1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr});
+  bindings.push_back({GLPT_RASTER_BINDING_PIXELS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1,
+                      VK_SHADER_STAGE_FRAGMENT_BIT, nullptr});
   auto set_info = make_info<VkDescriptorSetLayoutCreateInfo>(
       VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO);
   set_info.flags = VK_DESCRIPTOR_SET_LAYOUT_CREATE_PUSH_DESCRIPTOR_BIT_KHR;
@@ -85,6 +89,8 @@ RasterPipelines::RasterPipelines(const VulkanDevice& device) : device_(device) {
   vertex_clip_ = make_module(dev, raster_ff_clip_vert_spv);
   fragment_smooth_ = make_module(dev, raster_ff_smooth_frag_spv);
   fragment_flat_ = make_module(dev, raster_ff_flat_frag_spv);
+  fragment_pixels_ = make_module(dev, raster_ff_pixels_frag_spv);
+  fragment_pixels_depth_ = make_module(dev, raster_ff_pixels_depth_frag_spv);
 
   cache_path_ = pipeline_cache_path(device.name());
   std::vector<char> data = cache_path_.empty() ? std::vector<char>() : read_file(cache_path_);
@@ -149,7 +155,10 @@ VkPipeline RasterPipelines::create(const PipelineKey& key) {
   stages[0].pSpecializationInfo = &specialization;
   stages[1] = stages[0];
   stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
-  stages[1].module = key.flat ? fragment_flat_.get() : fragment_smooth_.get();
+  stages[1].module = key.pixels == 2 ? fragment_pixels_depth_.get()
+                     : key.pixels    ? fragment_pixels_.get()
+                     : key.flat      ? fragment_flat_.get()
+                                     : fragment_smooth_.get();
 
   // One binding per attribute; strides are dynamic (0 for an attribute with one value).
   struct Attribute {

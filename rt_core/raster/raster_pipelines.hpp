@@ -39,6 +39,7 @@ class RasterPipelines {
   vk::DescriptorSetLayout set_layout_;
   vk::PipelineLayout layout_;
   vk::ShaderModule vertex_, vertex_clip_, fragment_smooth_, fragment_flat_;
+  vk::ShaderModule fragment_pixels_, fragment_pixels_depth_;
   vk::PipelineCache cache_;
   std::string cache_path_;
   std::unordered_map<PipelineKey, vk::Pipeline, PipelineKeyHash> pipelines_;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "rt_core/frame_stats.hpp"
+#include "rt_core/raster/accumulation.hpp"
 #include "rt_core/raster/pipeline_key.hpp"
 #include "rt_core/raster/raster_pipelines.hpp"
 #include "rt_core/raster/texture_cache.hpp"
@@ -18,6 +19,11 @@
 #include "rt_core/vk/vk_device.hpp"
 
 namespace glpt::rt {
+
+namespace gpu {
+struct RasterState;
+}
+class Arena;
 
 class RasterRenderer {
  public:
@@ -62,6 +68,21 @@ class RasterRenderer {
   bool read_image(const GpuImage& image, VkImageAspectFlags aspect, uint32_t texel_bytes, int32_t x,
                   int32_t y, uint32_t width, uint32_t height, std::vector<uint8_t>& out);
 
+  // ---- pixel rectangles and the accumulation buffer (pixel_commands.cpp) ----
+  struct PixelPlan;  // how one pixel rectangle is drawn
+  // Starts a record's pixel rectangles: the number of state entries they add.
+  size_t begin_pixel_commands(const rec::FrameRecord& record, const std::vector<size_t>& commands);
+  // Prepares command `index` if it is a pixel rectangle (its state entry, next_state, is taken
+  // and advanced; its quad goes to `arena`, its image to pixels_); false for other commands.
+  bool prepare_pixels(Recording& r, size_t index, Arena& arena,
+                      std::vector<gpu::RasterState>& states, size_t& next_state);
+  void upload_pixels();
+  void record_pixels(Recording& r, size_t index);
+  // GL_ACCUM, GL_LOAD, GL_RETURN read or write colour: everything before them must have run.
+  static bool accumulation_touches_color(const rec::Accum& accum);
+  void execute_accum(const rec::FrameRecord& record, const rec::Accum& accum);
+  void clear_accum(const rec::FrameRecord& record, const rec::Clear& clear);
+
   std::shared_ptr<VulkanDevice> device_;
   RasterPipelines pipelines_;
   TextureCache textures_;
@@ -73,7 +94,10 @@ class RasterRenderer {
   GpuBuffer vertices_;  // this record's attributes and indices
   GpuBuffer readback_;
   uint64_t frame_ = 0;
-  rec::Decomposed decomposed_;  // scratch
+  rec::Decomposed decomposed_;         // scratch
+  GpuBuffer pixels_;                   // images of this record's pixel rectangles (32-bit words)
+  std::vector<uint32_t> pixel_words_;  // scratch: what goes to pixels_
+  AccumulationBuffer accum_;
 };
 
 }  // namespace glpt::rt
