@@ -267,7 +267,9 @@ vec4 pixel_fragment(RasterState s, vec4 color) {
                   uintBitsToFloat(pixel_words[word + 2u]), uintBitsToFloat(pixel_words[word + 3u]));
     color = clamp((stored ? c : vec4(0.0)) * s.pixel_scale + s.pixel_bias, 0.0, 1.0);
   } else if (format == GLPT_PIXELS_RGBA8) {
-    vec4 c = unpackUnorm4x8(pixel_words[word]);
+    // Bytes times 1/255, as llvmpipe converts Mesa's copy of the colour buffer.
+    uint b = pixel_words[word];
+    vec4 c = vec4(uvec4(b, b >> 8u, b >> 16u, b >> 24u) & 0xFFu) * (1.0 / 255.0);
     color = clamp((stored ? c : vec4(0.0)) * s.pixel_scale + s.pixel_bias, 0.0, 1.0);
   } else if (format == GLPT_PIXELS_DEPTH32F) {
     depth = stored ? uintBitsToFloat(pixel_words[word]) : 0.0;

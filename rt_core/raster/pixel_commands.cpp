@@ -9,7 +9,8 @@
 // depth tests, blending, logic op and masks apply as for any fragment. What the fragments carry
 // besides the image follows Mesa rather than a literal reading of the spec:
 // - the fog coordinate is 0 (Mesa's pass-through vertex shader writes none);
-// - colour images and copies have no secondary colour; bitmaps have the raster's;
+// - bitmaps have the raster's secondary colour (colour images with GL_COLOR_SUM on are not
+//   reproduced: see record_pixels);
 // - depth images (and depth copies) take the raster colour with no texturing, fog or colour sum;
 // - stencil images and copies only write stencil (scissor and stencil write mask apply), drawn
 //   here as one masked pass per bit instead of a stencil export;
@@ -454,12 +455,25 @@ void RasterRenderer::record_pixels(Recording& r, size_t index) {
   context.drawable_has_alpha = drawable_.has_alpha;
   context.stencil_bits = drawable_.stencil_bits;
   DrawSetup setup = make_draw_setup(pixel_state, context);
-  if (setup.approximated || textured) ++r.stats->inexpressible;
+  // Not reproduced: Mesa's texture coordinates for pixel rectangles (the current ones, not the
+  // raster position's); its colour images with GL_COLOR_SUM on (their colour becomes unrelated
+  // to the image: the fragment program reads inputs the pass-through shader lacks); the colour
+  // maps of copies (the record does not carry the maps yet); and, for zoomed images that cross
+  // the window's edge, the groups of fragments on group edges (Mesa clips the quad first).
+  const rec::LightingState& lighting = *state.lighting;
+  const bool color_sum = lighting.enabled ? lighting.separate_specular : ops.color_sum;
+  const glm::vec2 corner = image.origin + glm::vec2(image.width, image.height) * image.zoom;
+  const bool clipped = std::min(image.origin.x, corner.x) < 0.0f ||
+                       std::min(image.origin.y, corner.y) < 0.0f ||
+                       std::max(image.origin.x, corner.x) > float(drawable_.width) ||
+                       std::max(image.origin.y, corner.y) > float(drawable_.height);
+  const bool whole_zoom = image.zoom == glm::round(image.zoom);
+  if (setup.approximated || textured || (color_sum && !image.bitmap && !depth_image) ||
+      (image.copy && state.pixel_transfer->map_color) || (clipped && !whole_zoom))
+    ++r.stats->inexpressible;
   PipelineKey& key = setup.key;
   key.constants[GLPT_SC_VS_FLAGS] = GLPT_VS_FOG_COORD_SOURCE;  // the fog coordinate is 0
   uint32_t fs = key.constants[GLPT_SC_FS_FLAGS] & ~GLPT_FS_COLOR_SUM;
-  const rec::LightingState& lighting = *state.lighting;
-  const bool color_sum = lighting.enabled ? lighting.separate_specular : ops.color_sum;
   if (image.bitmap && color_sum) fs |= GLPT_FS_COLOR_SUM;
   key.constants[GLPT_SC_FS_FLAGS] = fs;
   key.pixels = depth_image ? 2 : 1;
