@@ -21,6 +21,7 @@
 //
 // glAccum runs on the CPU (accumulation.hpp), as in Mesa: the commands before it are executed
 // first (raster_renderer.cpp splits the submission), colour is read back and written back.
+#include <array>
 #include <cmath>
 #include <optional>
 
@@ -56,9 +57,32 @@ struct PixelImage {
   bool bitmap = false, copy = false;
 };
 
-PixelImage describe(const rec::Command& command, const rec::StateSnapshot& state) {
+// Images (glDrawPixels) and copies (glCopyPixels) of colour, depth or stencil.
+template <typename Command>
+PixelImage describe_image(const Command& c, const rec::StateSnapshot& state,
+                          const std::array<uint32_t, 3>& formats) {
   PixelImage p;
-  const glm::vec2 zoom(state.pixel_transfer->zoom_x, state.pixel_transfer->zoom_y);
+  p.raster = &c.raster;
+  p.kind = c.kind;
+  p.width = c.width;
+  p.height = c.height;
+  p.origin = glm::vec2(c.raster.window);
+  p.zoom = glm::vec2(state.pixel_transfer->zoom_x, state.pixel_transfer->zoom_y);
+  p.format = formats[static_cast<size_t>(c.kind)];
+  return p;
+}
+
+PixelImage describe(const rec::Command& command, const rec::StateSnapshot& state) {
+  if (const auto* d = std::get_if<rec::DrawPixels>(&command))
+    return describe_image(*d, state,
+                          {GLPT_PIXELS_RGBA32F, GLPT_PIXELS_DEPTH32F, GLPT_PIXELS_VALUE32});
+  if (const auto* c = std::get_if<rec::CopyPixels>(&command)) {
+    PixelImage p =
+        describe_image(*c, state, {GLPT_PIXELS_RGBA8, GLPT_PIXELS_DEPTH24, GLPT_PIXELS_VALUE8});
+    p.copy = true;
+    return p;
+  }
+  PixelImage p;
   if (const auto* b = std::get_if<rec::Bitmap>(&command)) {
     p.raster = &b->raster;
     p.width = b->width;
@@ -66,27 +90,6 @@ PixelImage describe(const rec::Command& command, const rec::StateSnapshot& state
     p.origin = b->origin;  // bitmaps are never zoomed
     p.format = GLPT_PIXELS_VALUE32;
     p.bitmap = true;
-  } else if (const auto* d = std::get_if<rec::DrawPixels>(&command)) {
-    p.raster = &d->raster;
-    p.kind = d->kind;
-    p.width = d->width;
-    p.height = d->height;
-    p.origin = glm::vec2(d->raster.window);
-    p.zoom = zoom;
-    p.format = d->kind == rec::PixelKind::kColor   ? GLPT_PIXELS_RGBA32F
-               : d->kind == rec::PixelKind::kDepth ? GLPT_PIXELS_DEPTH32F
-                                                   : GLPT_PIXELS_VALUE32;
-  } else if (const auto* c = std::get_if<rec::CopyPixels>(&command)) {
-    p.raster = &c->raster;
-    p.kind = c->kind;
-    p.width = c->width;
-    p.height = c->height;
-    p.origin = glm::vec2(c->raster.window);
-    p.zoom = zoom;
-    p.format = c->kind == rec::PixelKind::kColor   ? GLPT_PIXELS_RGBA8
-               : c->kind == rec::PixelKind::kDepth ? GLPT_PIXELS_DEPTH24
-                                                   : GLPT_PIXELS_VALUE8;
-    p.copy = true;
   }
   return p;
 }
@@ -533,17 +536,7 @@ void RasterRenderer::execute_accum(const rec::FrameRecord& record, const rec::Ac
       continue;
     read_image(*image, VK_IMAGE_ASPECT_COLOR_BIT, 4, rect.x, rect.y, rect.width, rect.height, rgba);
     accum_.return_to(rect, accum.value, mask, rgba);
-    ensure_capacity(*device_, readback_, rgba.size(),
-                    VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
-    readback_.write(rgba.data(), rgba.size());
-    device_->submit_and_wait([&](VkCommandBuffer cmd) {
-      VkBufferImageCopy copy{};
-      copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-      copy.imageOffset = {rect.x, rect.y, 0};
-      copy.imageExtent = {rect.width, rect.height, 1};
-      vkCmdCopyBufferToImage(cmd, readback_.handle(), image->handle(), VK_IMAGE_LAYOUT_GENERAL, 1,
-                             &copy);
-    });
+    write_image(*image, {{rect.x, rect.y}, {rect.width, rect.height}}, rgba);
   }
 }
 

@@ -574,13 +574,19 @@ bool RasterRenderer::read_stencil(int32_t x, int32_t y, uint32_t width, uint32_t
 void RasterRenderer::write_color(bool front, const std::vector<uint8_t>& rgba) {
   const GpuImage& image = front || !drawable_.double_buffered ? front_ : back_;
   if (!image || rgba.size() != size_t{drawable_.width} * drawable_.height * 4) return;
+  write_image(image, {{0, 0}, {drawable_.width, drawable_.height}}, rgba);
+}
+
+void RasterRenderer::write_image(const GpuImage& image, const VkRect2D& rect,
+                                 const std::vector<uint8_t>& rgba) {
   ensure_capacity(*device_, readback_, rgba.size(),
                   VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
   readback_.write(rgba.data(), rgba.size());
   device_->submit_and_wait([&](VkCommandBuffer cmd) {
     VkBufferImageCopy copy{};
     copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-    copy.imageExtent = {drawable_.width, drawable_.height, 1};
+    copy.imageOffset = {rect.offset.x, rect.offset.y, 0};
+    copy.imageExtent = {rect.extent.width, rect.extent.height, 1};
     vkCmdCopyBufferToImage(cmd, readback_.handle(), image.handle(), VK_IMAGE_LAYOUT_GENERAL, 1,
                            &copy);
   });

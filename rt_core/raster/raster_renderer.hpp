@@ -67,6 +67,8 @@ class RasterRenderer {
                          const VkRect2D& scissor);
   bool read_image(const GpuImage& image, VkImageAspectFlags aspect, uint32_t texel_bytes, int32_t x,
                   int32_t y, uint32_t width, uint32_t height, std::vector<uint8_t>& out);
+  // Replaces the rectangle `rect` of a colour image with `rgba` (RGBA8, rows bottom to top).
+  void write_image(const GpuImage& image, const VkRect2D& rect, const std::vector<uint8_t>& rgba);
 
   // ---- pixel rectangles and the accumulation buffer (pixel_commands.cpp) ----
   struct PixelPlan;  // how one pixel rectangle is drawn

@@ -5,7 +5,6 @@
 #define GL_GLEXT_PROTOTYPES 1
 #include <GL/gl.h>
 #include <GL/glext.h>
-#include <GL/osmesa.h>
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -13,6 +12,7 @@
 #include <memory>
 #include <string>
 
+#include "osmesa_context.hpp"
 #include "rt_core/raster/accumulation.hpp"
 #include "rt_core/raster/pixel_quad.hpp"
 #include "rt_core/renderer.hpp"
@@ -132,31 +132,17 @@ class PixelCommandsVsMesa : public ::testing::Test {
 
   // Mesa: a fresh single-buffered RGBA8 / depth 24 / stencil 8 / accum 16 context.
   static Buffers mesa(const std::function<void()>& draw) {
-    const int attribs[] = {OSMESA_FORMAT,
-                           OSMESA_RGBA,
-                           OSMESA_DEPTH_BITS,
-                           24,
-                           OSMESA_STENCIL_BITS,
-                           8,
-                           OSMESA_ACCUM_BITS,
-                           16,
-                           OSMESA_PROFILE,
-                           OSMESA_COMPAT_PROFILE,
-                           0};
-    OSMesaContext context = OSMesaCreateContextAttribs(attribs, nullptr);
-    std::vector<uint8_t> frame(size_t{kSize} * kSize * 4);
-    EXPECT_TRUE(OSMesaMakeCurrent(context, frame.data(), GL_UNSIGNED_BYTE, kSize, kSize));
+    test::OSMesaScope context(kSize, kSize);
+    EXPECT_TRUE(context.ok());
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     draw();
     Buffers b;
-    b.color.resize(frame.size());
+    b.color.resize(size_t{kSize} * kSize * 4);
     b.stencil.resize(size_t{kSize} * kSize);
     glReadPixels(0, 0, kSize, kSize, GL_RGBA, GL_UNSIGNED_BYTE, b.color.data());
     glReadPixels(0, 0, kSize, kSize, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, b.stencil.data());
     EXPECT_EQ(glGetError(), GL_NO_ERROR);
-    OSMesaMakeCurrent(nullptr, nullptr, GL_UNSIGNED_BYTE, 0, 0);
-    OSMesaDestroyContext(context);
     return b;
   }
 
