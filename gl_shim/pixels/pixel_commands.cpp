@@ -17,19 +17,23 @@ namespace glpt {
 namespace {
 
 // Images larger than Mesa's largest texture are cut to it (Mesa draws pixel rectangles through
-// a texture and does the same); images with more groups than kMaxGroups are GL_OUT_OF_MEMORY.
+// a texture and does the same); images with more groups than kMaxGroups (a 4096 x 4096 image;
+// the record holds 16 bytes per group) are GL_OUT_OF_MEMORY.
 constexpr int32_t kMaxImageSide = 16384;
-constexpr int64_t kMaxGroups = int64_t{1} << 26;
+constexpr int64_t kMaxGroups = int64_t{1} << 24;
 
 rec::DrawableConfig drawable_of(const Context& ctx) {
   return ctx.target != nullptr ? ctx.target->config() : rec::DrawableConfig{};
 }
 
 // The raster position of a pixel command, its x and y rounded as Mesa rounds them (lroundf).
+// (A non-finite position stays as it is; nothing is drawn at it.)
 rec::RasterPosition rounded_raster_position(const Context& ctx) {
   rec::RasterPosition p = ctx.raster_position;
-  p.window.x = static_cast<float>(std::lround(p.window.x));
-  p.window.y = static_cast<float>(std::lround(p.window.y));
+  if (std::isfinite(p.window.x) && std::isfinite(p.window.y)) {
+    p.window.x = static_cast<float>(std::llround(double{p.window.x}));
+    p.window.y = static_cast<float>(std::llround(double{p.window.y}));
+  }
   return p;
 }
 

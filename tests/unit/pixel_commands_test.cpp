@@ -2,6 +2,8 @@
 // records them (GL 1.5 3.6-3.7, 4.2.3-4.2.4, 4.3.3): their errors, where the pixels land, the
 // image as unpacked, and the state snapshot they are drawn with. Expected values by hand from the
 // spec, and from Mesa's rules where the comment says so.
+#include <cmath>
+#include <limits>
 #include <variant>
 
 #include "gl_shim/frame/frame_output.hpp"
@@ -191,6 +193,23 @@ TEST_F(PixelCommandTest, MissingBuffersAreInvalidOperations) {
   glDrawPixels(1, 1, GL_RGBA, GL_UNSIGNED_BYTE, data);  // colour is fine without the buffers
   EXPECT_EQ(glGetError(), GL_NO_ERROR);
   ctx_.target = nullptr;
+}
+
+TEST_F(PixelCommandTest, AbsurdSizesAndPositionsAreSafe) {
+  const GLubyte data[4] = {};
+  glDrawPixels(100000, 100000, GL_RGBA, GL_UNSIGNED_BYTE, data);  // never read: too large
+  EXPECT_EQ(glGetError(), GL_OUT_OF_MEMORY);
+  glBitmap(1 << 20, 1 << 20, 0, 0, 0, 0, data);
+  EXPECT_EQ(glGetError(), GL_OUT_OF_MEMORY);
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  glWindowPos2f(nan, 3);
+  glDrawPixels(1, 1, GL_RGBA, GL_UNSIGNED_BYTE, data);
+  glBitmap(1, 1, 0, 0, 1, 1, data);
+  glCopyPixels(0, 0, 16384, 16384, GL_COLOR);
+  EXPECT_EQ(glGetError(), GL_NO_ERROR);
+  const auto d = commands<glpt::rec::DrawPixels>();
+  ASSERT_EQ(d.size(), 1u);
+  EXPECT_TRUE(std::isnan(d[0]->raster.window.x));  // recorded as it is; drawn nowhere
 }
 
 TEST_F(PixelCommandTest, PixelZoomIsInTheSnapshot) {
