@@ -58,6 +58,11 @@ void bind_target_and_make_current(Context& ctx, WindowTarget* target) {
   fb.viewport_height = static_cast<GLsizei>(h);
   ctx.raster.ops.scissor_box = {0, 0, static_cast<int32_t>(w), static_cast<int32_t>(h)};
   fb.viewport_initialized = true;
+  // GL 1.5 4.2.1, 4.3.2: the initial draw and read buffers are the back buffer when there is one,
+  // else the front.
+  ctx.drawable = target->config();
+  const uint32_t buffer = ctx.drawable.double_buffered ? GL_BACK : GL_FRONT;
+  ctx.raster.ops.draw_buffer = ctx.raster.ops.read_buffer = buffer;
 }
 
 void make_current_headless(Context& ctx, HeadlessTarget& target) {
@@ -87,19 +92,31 @@ bool ensure_output(Context& ctx) {
 
 }  // namespace
 
+namespace {
+
+rec::DrawableConfig current_drawable(Context& ctx) {
+  rec::DrawableConfig drawable = ctx.target->config();
+  if (!ctx.target->query_size(&drawable.width, &drawable.height))
+    drawable.width = drawable.height = 0;
+  return drawable;
+}
+
+void start_new_record(Context& ctx) {
+  ctx.recorder.clear();
+  ctx.snapshots.record_cleared();
+  ctx.recording_since.restart();
+}
+
+}  // namespace
+
 bool execute_record(Context& ctx) {
   if (!ensure_output(ctx)) return false;
-  rec::DrawableConfig drawable = ctx.target->config();
-  if (!ctx.target->query_size(&drawable.width, &drawable.height)) {
-    drawable.width = drawable.height = 0;
-  }
+  const rec::DrawableConfig drawable = current_drawable(ctx);
   ctx.recorder.seal();
   bool ok = true;
   if (!ctx.recorder.empty() || drawable != ctx.output->drawable())
     ok = ctx.output->execute(ctx.recorder.record(), drawable, ctx.recording_since.elapsed_ms());
-  ctx.recorder.clear();
-  ctx.snapshots.record_cleared();
-  ctx.recording_since.restart();
+  start_new_record(ctx);
   return ok;
 }
 
@@ -108,8 +125,11 @@ void note_frame_content(Context& ctx) {
 }
 
 void end_frame(Context& ctx, bool swap) {
-  if (!execute_record(ctx)) return;
-  ctx.output->end_frame(ctx.target, swap);
+  if (!ensure_output(ctx)) return;
+  ctx.recorder.seal();
+  ctx.output->end_frame(ctx.recorder.record(), current_drawable(ctx),
+                        ctx.recording_since.elapsed_ms(), ctx.target, swap);
+  start_new_record(ctx);
 }
 
 }  // namespace glpt

@@ -17,9 +17,11 @@
 #include "gl_shim/geometry/vertex_assembly.hpp"
 #include "gl_shim/gl_commands.hpp"
 #include "gl_shim/pixels/raster_position.hpp"
+#include "gl_shim/state/color_index_state.hpp"
 #include "gl_shim/state/current_attributes.hpp"
 #include "gl_shim/state/enable_state.hpp"
 #include "gl_shim/state/framebuffer_state.hpp"
+#include "gl_shim/state/implementation_limits.hpp"
 #include "gl_shim/state/matrix_stack.hpp"
 #include "gl_shim/state/transform_controls.hpp"
 #include "gl_shim/textures/texture_units.hpp"
@@ -48,12 +50,13 @@ class Context {
   TransformControls transform;
   rec::LightingState lighting;
   TextureUnits textures;
-  rec::RasterState raster;
+  rec::RasterState raster = initial_raster_state();
   rec::PixelTransferState pixel_transfer;
   EnableState enables;  // capabilities without a field in the blocks above
   CurrentAttributes current;
   rec::RasterPosition raster_position = initial_raster_position();  // GL 1.5 2.13
   FramebufferState framebuffer;
+  ColorIndexState color_index;  // kept for queries only (glpt renders RGBA)
   VertexAssembly assembly;
   DisplayListState lists;
 
@@ -65,6 +68,9 @@ class Context {
   Stopwatch recording_since;  // when the current record started (for GLPT_STATS)
   // The drawable this context draws to (set by glXMakeCurrent / eglMakeCurrent / headless).
   WindowTarget* target = nullptr;
+  // The buffers of the drawable the context was first made current with (GLX visual / EGL config):
+  // what GL_DOUBLEBUFFER, GL_*_BITS and the initial draw/read buffers report.
+  rec::DrawableConfig drawable;
   std::unique_ptr<FrameOutput> output;    // created when the first record is executed
   bool renderer_unavailable = false;      // creation failed: reported once, never retried
   void* window_system_context = nullptr;  // the GLX/EGL context wrapping this one

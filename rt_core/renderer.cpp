@@ -42,10 +42,10 @@ class Renderer::Impl {
   RasterRenderer& raster() { return raster_; }
 
   bool execute(const rec::FrameRecord& record, const rec::DrawableConfig& drawable,
-               FrameStats& stats, std::string* error) {
+               FrameStats& stats, std::string* error, const FrameEnd* end) {
     stats = FrameStats();
     if (settings_.mode == RenderMode::kRaster || !tracer_) {
-      raster_.execute(record, drawable, stats);
+      raster_.execute(record, drawable, stats, nullptr, end);
       return true;
     }
     // Path-traced mode (interim, until the G-buffer pass): the traced draws are path traced into
@@ -65,7 +65,7 @@ class Renderer::Impl {
     std::vector<size_t> overlay;
     for (size_t i : scene_.overlay)
       if (!std::holds_alternative<rec::Clear>(record.commands[i])) overlay.push_back(i);
-    raster_.execute(record, drawable, stats, &overlay);
+    raster_.execute(record, drawable, stats, &overlay, end);
     stats.upload_ms += traced.upload_ms;
     stats.blas_ms = traced.blas_ms;
     stats.tlas_ms = traced.tlas_ms;
@@ -125,9 +125,9 @@ RenderMode Renderer::mode() const { return impl_->mode(); }
 const std::string& Renderer::device_name() const { return impl_->device_name(); }
 
 bool Renderer::execute(const rec::FrameRecord& record, const rec::DrawableConfig& drawable,
-                       FrameStats& stats, std::string* error) {
+                       FrameStats& stats, std::string* error, const FrameEnd* end) {
   return guarded("render failed", error,
-                 [&] { return impl_->execute(record, drawable, stats, error); });
+                 [&] { return impl_->execute(record, drawable, stats, error, end); });
 }
 
 bool Renderer::read_color(uint32_t buffer, int32_t x, int32_t y, uint32_t width, uint32_t height,

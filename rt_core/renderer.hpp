@@ -19,6 +19,22 @@
 
 namespace glpt::rt {
 
+// Host memory a window shows from directly (an X MIT-SHM segment): 32-bit pixels 0xAARRGGBB
+// (bytes B, G, R, A), rows top to bottom, width * height * 4 bytes, page aligned.
+struct HostImage {
+  uint8_t* pixels = nullptr;
+  uint32_t width = 0, height = 0;
+  uint64_t generation = 0;  // changes whenever `pixels` is (re)allocated
+};
+
+// What happens at the end of a frame, in the same submission as the record's commands (one
+// round trip into the Vulkan queue per frame).
+struct FrameEnd {
+  bool swap = false;                           // double-buffered swap: back -> front
+  std::vector<uint8_t>* front_rgba = nullptr;  // read the front buffer (RGBA8, bottom row first)
+  const HostImage* present_to = nullptr;       // copy the front buffer there for the window
+};
+
 class Renderer {
  public:
   // nullptr + one clear message in *error when no usable Vulkan device exists (it names what is
@@ -36,7 +52,7 @@ class Renderer {
   // Applies the record's commands to the drawable's buffers. Buffers are (re)created when the
   // drawable's configuration changes; their contents are then undefined, as after a resize.
   bool execute(const rec::FrameRecord& record, const rec::DrawableConfig& drawable,
-               FrameStats& stats, std::string* error);
+               FrameStats& stats, std::string* error, const FrameEnd* end = nullptr);
 
   // A rectangle of a colour buffer (GL_FRONT*, GL_BACK*: the resolved read buffer) as RGBA8,
   // rows bottom to top; pixels outside the drawable are zero. False before the first execute.

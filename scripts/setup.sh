@@ -11,7 +11,7 @@ SUDO=""
 export DEBIAN_FRONTEND=noninteractive
 
 stamp=/var/lib/glpt-setup.stamp
-want_version=4  # bump when the package list below changes
+want_version=5  # bump when the package list below changes
 if [ -f "$stamp" ] && [ "$(cat "$stamp")" = "$want_version" ] && [ "${GLPT_SETUP_FORCE:-0}" != 1 ]; then
   echo "setup: packages already installed (rm $stamp or GLPT_SETUP_FORCE=1 to re-run)"
   exit 0
@@ -45,7 +45,7 @@ $SUDO apt-get update -q
 # Build tools and libraries.
 build_pkgs=(cmake ninja-build g++ pkg-config python3 clang-format
             khronos-api libvulkan-dev glslang-tools libglm-dev
-            libx11-dev libxcb1-dev libpng-dev zlib1g-dev libgtest-dev)
+            libx11-dev libxcb1-dev libxcb-shm0-dev libpng-dev zlib1g-dev libgtest-dev)
 # Running and testing: Xvfb, glxgears, real Mesa GL (the raster reference), Vulkan tools.
 run_pkgs=(xvfb xauth mesa-utils x11-utils libgl1-mesa-dri libglx-mesa0 libgl-dev vulkan-tools
           vulkan-validationlayers)

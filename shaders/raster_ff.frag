@@ -36,6 +36,8 @@ layout(std430, set = 0, binding = GLPT_RASTER_BINDING_STATES) readonly buffer St
   RasterState states[];
 };
 layout(push_constant) uniform Push { RasterPushConstants push; };
+// The draw's state, read field by field where used (never copied whole).
+#define S states[push.indices.x]
 
 layout(set = 0, binding = GLPT_RASTER_BINDING_TEXTURES + 0) uniform sampler1D u_tex1d_0;
 layout(set = 0, binding = GLPT_RASTER_BINDING_TEXTURES + 1) uniform sampler2D u_tex2d_0;
@@ -96,7 +98,7 @@ vec3 clamp_coords(uint config, vec3 c) {
   return c;
 }
 
-// The texture colour of unit u: a projective lookup of (s, t, r) / q, as Mesa's fixed-function
+// The texture colour of unit u: a projective lookup of (t, r) / q, as Mesa's fixed-function
 // fragment program does.
 vec4 sample_unit(uint u) {
   uint config = unit_config(u);
@@ -121,7 +123,7 @@ vec4 sample_unit(uint u) {
     if (u == 2u) return texture(u_tex3d_2, c);
     return texture(u_tex3d_3, c);
   }
-  // Cube maps select a face by the direction (s, t, r); q does not take part.
+  // Cube maps select a face by the direction (t, r); q does not take part.
   if (u == 0u) return texture(u_texcube_0, tc.xyz);
   if (u == 1u) return texture(u_texcube_1, tc.xyz);
   if (u == 2u) return texture(u_texcube_2, tc.xyz);
@@ -236,41 +238,41 @@ bool alpha_test_passes(float alpha, float ref) {
 // GL 1.5 3.6.4 "Zoom": the image group whose zoomed rectangle holds the fragment's centre, as
 // Mesa picks it where a centre lies exactly on a group edge: tabulated per window column and row
 // (and per triangle of Mesa's quad) by rt_core/raster/pixel_quad.cpp.
-ivec2 pixel_group(RasterState s) {
-  ivec2 window = ivec2(floor(gl_FragCoord.xy)) - ivec2(int(s.pixel_table.y), int(s.pixel_table.z));
-  ivec2 size = ivec2(s.pixel_image.zw);
-  if (s.pixel_table.x == 0xFFFFFFFFu) return clamp(window, ivec2(0), size - 1);
-  bool first = dot(s.pixel_diagonal.xy, gl_FragCoord.xy) + s.pixel_diagonal.z >= 0.0;
-  uint column = pixel_words[s.pixel_table.x + uint(max(window.x, 0))];
-  uint row = pixel_words[s.pixel_table.x + s.pixel_table.w + uint(max(window.y, 0))];
+ivec2 pixel_group() {
+  ivec2 window = ivec2(floor(gl_FragCoord.xy)) - ivec2(int(S.pixel_table.y), int(S.pixel_table.z));
+  ivec2 size = ivec2(S.pixel_image.zw);
+  if (S.pixel_table.x == 0xFFFFFFFFu) return clamp(window, ivec2(0), size - 1);
+  bool first = dot(S.pixel_diagonal.xy, gl_FragCoord.xy) + S.pixel_diagonal.z >= 0.0;
+  uint column = pixel_words[S.pixel_table.x + uint(max(window.x, 0))];
+  uint row = pixel_words[S.pixel_table.x + S.pixel_table.w + uint(max(window.y, 0))];
   return ivec2(first ? column & 0xFFFFu : column >> 16u, first ? row & 0xFFFFu : row >> 16u);
 }
 
 // The fragment colour of a pixel rectangle: the image's colour for colour images, `color` (the
 // raster colour) otherwise. Depth images give the fragment depth; bitmaps and stencil passes
-// discard the fragments their value does not select (push.indices.y). Groups outside the
+// discard the fragments their value does not select (push.indices.z). Groups outside the
 // stored rectangle of a copy read as zero.
-vec4 pixel_fragment(RasterState s, vec4 color) {
-  ivec2 g = pixel_group(s);
+vec4 pixel_fragment(vec4 color) {
+  ivec2 g = pixel_group();
   // Copies count rows from the top (Mesa reads its y-inverted buffer into the texture).
 
-  ivec2 p = g - ivec2(s.pixel_stored.xy);
-  bool stored = all(greaterThanEqual(p, ivec2(0))) && all(lessThan(p, ivec2(s.pixel_stored.zw)));
-  uint index = stored ? uint(p.y) * s.pixel_stored.z + uint(p.x) : 0u;
-  uint word = s.pixel_image.y + index;
-  uint format = s.pixel_image.x;
+  ivec2 p = g - ivec2(S.pixel_stored.xy);
+  bool stored = all(greaterThanEqual(p, ivec2(0))) && all(lessThan(p, ivec2(S.pixel_stored.zw)));
+  uint index = stored ? uint(p.y) * S.pixel_stored.z + uint(p.x) : 0u;
+  uint word = S.pixel_image.y + index;
+  uint format = S.pixel_image.x;
   float depth = gl_FragCoord.z;
   uint value = 0u;
   if (format == GLPT_PIXELS_RGBA32F) {
-    word = s.pixel_image.y + 4u * index;
+    word = S.pixel_image.y + 4u * index;
     vec4 c = vec4(uintBitsToFloat(pixel_words[word]), uintBitsToFloat(pixel_words[word + 1u]),
                   uintBitsToFloat(pixel_words[word + 2u]), uintBitsToFloat(pixel_words[word + 3u]));
-    color = clamp((stored ? c : vec4(0.0)) * s.pixel_scale + s.pixel_bias, 0.0, 1.0);
+    color = clamp((stored ? c : vec4(0.0)) * S.pixel_scale + S.pixel_bias, 0.0, 1.0);
   } else if (format == GLPT_PIXELS_RGBA8) {
-    // Bytes times 1/255, as llvmpipe converts Mesa's copy of the colour buffer.
+    // A copy of the BGRA8 colour buffer; bytes times 1/255, as llvmpipe converts Mesa's copy.
     uint b = pixel_words[word];
-    vec4 c = vec4(uvec4(b, b >> 8u, b >> 16u, b >> 24u) & 0xFFu) * (1.0 / 255.0);
-    color = clamp((stored ? c : vec4(0.0)) * s.pixel_scale + s.pixel_bias, 0.0, 1.0);
+    vec4 c = vec4(uvec4(b >> 16u, b >> 8u, b, b >> 24u) & 0xFFu) * (1.0 / 255.0);
+    color = clamp((stored ? c : vec4(0.0)) * S.pixel_scale + S.pixel_bias, 0.0, 1.0);
   } else if (format == GLPT_PIXELS_DEPTH32F) {
     depth = stored ? uintBitsToFloat(pixel_words[word]) : 0.0;
   } else if (format == GLPT_PIXELS_DEPTH24) {
@@ -278,13 +280,13 @@ vec4 pixel_fragment(RasterState s, vec4 color) {
   } else if (format == GLPT_PIXELS_VALUE32) {
     value = stored ? pixel_words[word] : 0u;
   } else {  // GLPT_PIXELS_VALUE8
-    uint packed = pixel_words[s.pixel_image.y + index / 4u];
+    uint packed = pixel_words[S.pixel_image.y + index / 4u];
     value = stored ? (packed >> (8u * (index & 3u))) & 0xFFu : 0u;
   }
 #if GLPT_PIXELS == 2
   gl_FragDepth = depth;
 #endif
-  uint keep = push.indices.y;
+  uint keep = push.indices.z;
   if (keep == GLPT_PIXELS_KEEP_NONZERO && value == 0u) discard;
   if ((keep & GLPT_PIXELS_KEEP_BIT) != 0u && ((value >> (keep & 7u)) & 1u) == 0u) discard;
   return color;
@@ -292,21 +294,20 @@ vec4 pixel_fragment(RasterState s, vec4 color) {
 #endif
 
 void main() {
-  RasterState s = states[push.indices.x];
   if ((kFlags & GLPT_FS_CLEAR) != 0u) {
-    o_color = s.clear_color;
+    o_color = S.clear_color;
     o_color_second = o_color;
     return;
   }
   if ((kFlags & GLPT_FS_POLYGON_STIPPLE) != 0u) {
     uint row = uint(gl_FragCoord.y) & 31u, column = uint(gl_FragCoord.x) & 31u;
-    if (((s.stipple[row >> 2u][row & 3u] >> (31u - column)) & 1u) == 0u) discard;
+    if (((S.stipple[row >> 2u][row & 3u] >> (31u - column)) & 1u) == 0u) discard;
   }
   bool back = (kFlags & GLPT_FS_TWO_SIDE) != 0u && !gl_FrontFacing;
   vec4 primary = back ? v_back_color : v_front_color;
   vec4 secondary = back ? v_back_secondary : v_front_secondary;
 #if GLPT_PIXELS
-  primary = pixel_fragment(s, primary);
+  primary = pixel_fragment(primary);
 #endif
 
   // Texture units in order; every unit's texel first (crossbar sources may name any unit).
@@ -316,7 +317,7 @@ void main() {
   vec4 color = primary;
   for (uint u = 0u; u < GLPT_RASTER_MAX_UNITS; ++u) {
     if ((unit_config(u) & 7u) == 0u) continue;
-    color = texture_environment(u, texels[u], color, primary, s.env_color[u], s.env_scale[u],
+    color = texture_environment(u, texels[u], color, primary, S.env_color[u], S.env_scale[u],
                                 texels);
   }
 
@@ -327,16 +328,16 @@ void main() {
     float z = v_fog;
     float f;
     if (fog_mode == 1u)
-      f = (s.fog_params.z - z) * s.fog_params.w;
+      f = (S.fog_params.z - z) * S.fog_params.w;
     else if (fog_mode == 2u)
-      f = exp(-s.fog_params.x * z);
+      f = exp(-S.fog_params.x * z);
     else
-      f = exp(-(s.fog_params.x * z) * (s.fog_params.x * z));
+      f = exp(-(S.fog_params.x * z) * (S.fog_params.x * z));
     f = clamp(f, 0.0, 1.0);
-    color.rgb = mix(s.fog_color.rgb, color.rgb, f);
+    color.rgb = mix(S.fog_color.rgb, color.rgb, f);
   }
 
-  if (!alpha_test_passes(color.a, s.alpha_ref.x)) discard;
+  if (!alpha_test_passes(color.a, S.alpha_ref.x)) discard;
   o_color = color;
   o_color_second = color;
 }

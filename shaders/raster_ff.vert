@@ -25,6 +25,8 @@ layout(std430, set = 0, binding = GLPT_RASTER_BINDING_STATES) readonly buffer St
   RasterState states[];
 };
 layout(push_constant) uniform Push { RasterPushConstants push; };
+// The draw's state, read field by field where used (never copied whole).
+#define S states[push.indices.x]
 
 layout(location = GLPT_RASTER_ATTR_POSITION) in vec4 a_position;
 layout(location = GLPT_RASTER_ATTR_NORMAL) in vec3 a_normal;
@@ -43,9 +45,14 @@ layout(location = 3) out vec4 v_back_secondary;
 layout(location = 4) out vec4 v_texcoord[GLPT_RASTER_MAX_UNITS];
 layout(location = 8) out float v_fog;
 
+// Declared in full so the geometry shader (raster_unfilled.geom) can match the block exactly.
+out gl_PerVertex {
+  vec4 gl_Position;
+  float gl_PointSize;
 #if GLPT_CLIP
-out float gl_ClipDistance[8];
+  float gl_ClipDistance[8];
 #endif
+};
 
 bool has(uint flag) { return (kFlags & flag) != 0u; }
 
@@ -61,8 +68,8 @@ struct Lit {
 };
 
 // GL 1.5 2.14.1 for one face: `n` faces the viewer side being lit.
-Lit light_face(RasterState s, uint face, vec3 n, vec3 eye, vec4 color) {
-  RasterMaterial m = s.material[face];
+Lit light_face(uint face, vec3 n, vec3 eye, vec4 color) {
+  RasterMaterial m = S.material[face];
   const uint cm_mode = kColorMaterial & 7u;
   const bool tracked = (kColorMaterial & (face == 0u ? 8u : 16u)) != 0u;
   vec4 ambient = m.ambient, diffuse = m.diffuse, specular = m.specular, emission = m.emission;
@@ -72,12 +79,12 @@ Lit light_face(RasterState s, uint face, vec3 n, vec3 eye, vec4 color) {
     if (cm_mode == 4u) specular = color;
     if (cm_mode == 5u) emission = color;
   }
-  vec3 sum = emission.rgb + ambient.rgb * s.light_model_ambient.rgb;
+  vec3 sum = emission.rgb + ambient.rgb * S.light_model_ambient.rgb;
   vec3 spec_sum = vec3(0.0);
   vec3 to_viewer = has(GLPT_VS_LOCAL_VIEWER) ? normalize(-eye) : vec3(0.0, 0.0, 1.0);
   for (int i = 0; i < GLPT_RASTER_MAX_LIGHTS; ++i) {
     if ((kLightMask & (1u << i)) == 0u) continue;
-    RasterLight l = s.lights[i];
+    RasterLight l = S.lights[i];
     vec3 vp;
     float attenuation = 1.0;
     vec3 half_vector;
@@ -126,12 +133,11 @@ vec4 tex_coord_input(uint unit) {
 }
 
 void main() {
-  RasterState s = states[push.indices.x];
   vec4 position = a_position;
-  vec4 clip = transform(s.mvp, position);
+  vec4 clip = transform(S.mvp, position);
   vec3 eye = vec3(0.0);
   if (has(GLPT_VS_NEEDS_EYE)) {
-    vec4 eye4 = transform(s.modelview, position);
+    vec4 eye4 = transform(S.modelview, position);
     eye = eye4.xyz / eye4.w;
   }
 
@@ -139,20 +145,20 @@ void main() {
   vec3 normal = vec3(0.0, 0.0, 1.0);
   const bool needs_normal = has(GLPT_VS_LIGHTING) || kTexgen01 != 0u || kTexgen23 != 0u;
   if (needs_normal) {
-    mat3 nm = mat3(s.normal_matrix);
+    mat3 nm = mat3(S.normal_matrix);
     normal = nm[0] * a_normal.x + nm[1] * a_normal.y + nm[2] * a_normal.z;
-    if (has(GLPT_VS_RESCALE_NORMAL)) normal *= s.normal_scale.x;
+    if (has(GLPT_VS_RESCALE_NORMAL)) normal *= S.normal_scale.x;
     if (has(GLPT_VS_NORMALIZE)) normal = normalize(normal);
   }
 
   // Colours.
   vec4 color = a_color;
   if (has(GLPT_VS_LIGHTING)) {
-    Lit front = light_face(s, 0u, normal, eye, color);
+    Lit front = light_face(0u, normal, eye, color);
     v_front_color = front.primary;
     v_front_secondary = vec4(front.secondary, 0.0);
     if (has(GLPT_VS_TWO_SIDE)) {
-      Lit back = light_face(s, 1u, -normal, eye, color);
+      Lit back = light_face(1u, -normal, eye, color);
       v_back_color = back.primary;
       v_back_secondary = vec4(back.secondary, 0.0);
     } else {
@@ -179,10 +185,10 @@ void main() {
       uint mode = texgen_mode(u, c);
       if (mode == 0u) continue;
       float value = t[c];
-      if (mode == 1u) value = dot(s.texgen_object[u * 4u + c], position);
+      if (mode == 1u) value = dot(S.texgen_object[u * 4u + c], position);
       if (mode == 2u) {
-        vec4 eye4 = transform(s.modelview, position);
-        value = dot(s.texgen_eye[u * 4u + c], eye4);
+        vec4 eye4 = transform(S.modelview, position);
+        value = dot(S.texgen_eye[u * 4u + c], eye4);
       }
       if (mode == 3u) {  // sphere map (GL 1.5 2.11.4)
         float m = 2.0 * sqrt(reflected.x * reflected.x + reflected.y * reflected.y +
@@ -193,7 +199,7 @@ void main() {
       if (mode == 5u) value = normal[c];
       t[c] = value;
     }
-    v_texcoord[u] = transform(s.texture_matrix[u], t);
+    v_texcoord[u] = transform(S.texture_matrix[u], t);
   }
 
   // Fog coordinate: the eye distance (approximated by |z|, as Mesa) or glFogCoord.
@@ -205,8 +211,8 @@ void main() {
   int slot = 0;
   for (int i = 0; i < GLPT_RASTER_MAX_CLIP_PLANES; ++i) {
     if ((kClipPlanes & (1u << i)) == 0u) continue;
-    vec4 eye4 = transform(s.modelview, position);
-    gl_ClipDistance[slot++] = dot(s.clip_planes[i], eye4);
+    vec4 eye4 = transform(S.modelview, position);
+    gl_ClipDistance[slot++] = dot(S.clip_planes[i], eye4);
   }
   if (has(GLPT_VS_LINES) && slot + 4 <= 8) {
     gl_ClipDistance[slot++] = clip.w + clip.x;
@@ -218,24 +224,24 @@ void main() {
 #endif
 
   if (has(GLPT_VS_POINTS)) {
-    float size = s.point_size.x;
+    float size = S.point_size.x;
     if (has(GLPT_VS_POINT_ATTENUATION)) {
       float d = abs(eye.z);
-      vec3 a = s.point_attenuation.xyz;
+      vec3 a = S.point_attenuation.xyz;
       size *= inversesqrt(a.x + a.y * d + a.z * d * d);
     }
-    size = clamp(size, s.point_size.y, s.point_size.z);
+    size = clamp(size, S.point_size.y, S.point_size.z);
     // GL's aliased points (GL 1.5 3.3) as llvmpipe rasterizes them: the size rounds to an integer
     // (halves down), the square is centred on floor(x) + 0.5 for odd sizes and on floor(x + 0.5)
     // for even ones, and a point whose centre is outside the view volume is not drawn.
     float width = max(1.0, ceil(size - 0.5));
     bool outside = any(greaterThan(abs(clip.xy), vec2(clip.w)));
     vec2 ndc = clip.xy / clip.w;
-    vec2 window = (ndc * 0.5 + 0.5) * s.viewport.zw + s.viewport.xy;
+    vec2 window = (ndc * 0.5 + 0.5) * S.viewport.zw + S.viewport.xy;
     window = floor(window * 256.0 + 0.5) / 256.0;  // llvmpipe's fixed-point vertex positions
     bool odd = mod(width, 2.0) == 1.0;
     vec2 centre = odd ? floor(window) + 0.5 : floor(window + 0.5);
-    vec2 snapped_ndc = (centre - s.viewport.xy) / s.viewport.zw * 2.0 - 1.0;
+    vec2 snapped_ndc = (centre - S.viewport.xy) / S.viewport.zw * 2.0 - 1.0;
     clip.xy = snapped_ndc * clip.w;
     if (outside) clip = vec4(2.0, 2.0, 2.0, 1.0);  // beyond the view volume: culled
     gl_PointSize = width;

@@ -29,19 +29,22 @@ using mat4 = glm::mat4;
 #define GLPT_RASTER_TEXTURE_2D 1
 #define GLPT_RASTER_TEXTURE_3D 2
 #define GLPT_RASTER_TEXTURE_CUBE 3
+// uint[]: per triangle of an unfilled draw, its boundary-edge mask (8 bits per triangle, four
+// per uint), starting at RasterPushConstants.indices.y
+#define GLPT_RASTER_BINDING_EDGES (GLPT_RASTER_BINDING_TEXTURES + 4 * GLPT_RASTER_MAX_UNITS)
 
 // ---- pixel rectangles (glBitmap, glDrawPixels, glCopyPixels: rt_core/raster/pixel_commands.cpp)
 // Their images, as 32-bit words, for raster_ff.frag built with GLPT_PIXELS (1: fragments keep
 // the rasterized depth; 2: they take the image's depth).
-#define GLPT_RASTER_BINDING_PIXELS (GLPT_RASTER_BINDING_TEXTURES + 4 * GLPT_RASTER_MAX_UNITS)
+#define GLPT_RASTER_BINDING_PIXELS (GLPT_RASTER_BINDING_EDGES + 1)
 // How the words hold one pixel (RasterState::pixel_image.x).
 #define GLPT_PIXELS_RGBA32F 0u   // 4 words: R, G, B, A floats
-#define GLPT_PIXELS_RGBA8 1u     // 1 word: R, G, B, A bytes (a copy of a colour buffer)
+#define GLPT_PIXELS_RGBA8 1u     // 1 word: B, G, R, A bytes (a copy of a BGRA8 colour buffer)
 #define GLPT_PIXELS_DEPTH32F 2u  // 1 word: a float depth
 #define GLPT_PIXELS_DEPTH24 3u  // 1 word: 24-bit depth in the low bits (a copy of the depth buffer)
 #define GLPT_PIXELS_VALUE32 4u  // 1 word: a bitmap bit or a stencil index
 #define GLPT_PIXELS_VALUE8 5u   // 1 byte, 4 per word (a copy of the stencil buffer)
-// Which fragments a pass keeps (push constant indices.y): all, those whose value is not zero
+// Which fragments a pass keeps (push constant indices.z): all, those whose value is not zero
 // (bitmaps), or those whose value has bit (n & 7) set (stencil images, one pass per bit).
 #define GLPT_PIXELS_KEEP_ALL 0u
 #define GLPT_PIXELS_KEEP_NONZERO 0x200u
@@ -82,6 +85,13 @@ using mat4 = glm::mat4;
 #define GLPT_SC_TEXGEN_23 4
 #define GLPT_SC_TEXCOORD_UNITS 5  // bit u: unit u samples a texture
 #define GLPT_SC_CLIP_PLANES 6     // bit i: user clip plane i enabled
+// Geometry stage (raster_unfilled.geom): polygon mode GL_LINE / GL_POINT
+#define GLPT_SC_UNFILLED 7
+#define GLPT_UNFILLED_FRONT_CW 1u    // glFrontFace(GL_CW)
+#define GLPT_UNFILLED_CULL_FRONT 2u  // front-facing triangles are not drawn (culling, or the
+#define GLPT_UNFILLED_CULL_BACK 4u   // other face's pass); likewise back-facing ones
+#define GLPT_UNFILLED_OFFSET 8u      // polygon offset enabled for this mode
+#define GLPT_UNFILLED_FLAT 16u       // GL_FLAT: the provoking vertex's colours
 // Fragment stage
 // per unit (10..13): bits 0-2 target (0 off, 1 1D, 2 2D, 3 3D, 4 cube), bits 3-5 env mode
 // (0 modulate, 1 decal, 2 blend, 3 replace, 4 add, 5 combine), bits 6-8 base format (0 RGBA,
@@ -158,7 +168,7 @@ struct RasterState {
   vec4 point_size;         // x size, y min, z max, w fade threshold
   vec4 point_attenuation;  // xyz: constant, linear, quadratic
   vec4 clear_color;        // the clear pipeline's colour
-  vec4 clear_depth;        // x: the clear pipeline's window depth
+  vec4 polygon_offset;     // x: factor, y: units times twice the depth buffer's resolution
   // Pixel rectangles: their image
   uvec4 pixel_image;   // format (GLPT_PIXELS_*), first word, width, height
   uvec4 pixel_stored;  // the groups the words hold: x0, y0, width, height (others read as 0)
@@ -173,7 +183,7 @@ struct RasterState {
 };
 
 struct RasterPushConstants {
-  uvec4 indices;  // x: state index
+  uvec4 indices;  // x: state index, y: first edge-mask word of an unfilled draw
 };
 
 #ifdef __cplusplus

@@ -84,15 +84,30 @@ bool FrameOutput::execute(const rec::FrameRecord& record, const rec::DrawableCon
   return true;
 }
 
-void FrameOutput::end_frame(WindowTarget* target, bool swap) {
-  const Stopwatch present_timer;
+void FrameOutput::end_frame(const rec::FrameRecord& record, const rec::DrawableConfig& drawable,
+                            double record_ms, WindowTarget* target, bool swap) {
   const double frame_ms = since_last_frame_.elapsed_ms();
   std::string error;
-  if (swap && !renderer_->swap_buffers(&error)) report_failure(error);
+  rt::FrameStats stats;
+  drawable_ = drawable;
+  record_ms_ += record_ms;
+  // With host memory from the window (X shared memory), the frame goes there inside the
+  // renderer's submission and presenting is one request; the RGBA copy is only made for PNGs.
   const uint32_t width = drawable_.width, height = drawable_.height;
-  const bool have_image = width > 0 && height > 0 &&
-                          renderer_->read_color(GL_FRONT, 0, 0, width, height, image_, &error);
-  if (have_image && target) target->present(image_.data(), width, height);
+  const rt::HostImage* host = target ? target->host_image(width, height) : nullptr;
+  const bool want_png = !settings_.png_dir.empty() && frame_index_ % settings_.png_every == 0;
+  const rt::FrameEnd end{swap, host == nullptr || want_png ? &image_ : nullptr, host};
+  image_.clear();
+  const bool ok = renderer_->execute(record, drawable, stats, &error, &end);
+  if (!ok) report_failure(error);
+  add(frame_stats_, stats);
+  const Stopwatch present_timer;
+  const bool have_image =
+      ok && width > 0 && height > 0 && image_.size() == size_t{width} * height * 4;
+  if (ok && host != nullptr)
+    target->present_host_image();
+  else if (have_image && target)
+    target->present(image_.data(), width, height);
   const double present_ms = present_timer.elapsed_ms();
 
   if (have_image && !settings_.png_dir.empty() && frame_index_ % settings_.png_every == 0) {

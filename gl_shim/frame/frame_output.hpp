@@ -26,6 +26,13 @@ class WindowTarget {
   virtual void present(const uint8_t* rgba, uint32_t width, uint32_t height) = 0;
   // The buffers the drawable has (GLX visual / EGL config); the size is filled in by the caller.
   virtual rec::DrawableConfig config() const { return {}; }
+  // Zero-copy presenting: host memory the next frame can be written into directly (the
+  // renderer's own submission copies the front buffer there), shown by present_host_image().
+  // nullptr when the target has no such memory (then present() is used).
+  virtual const rt::HostImage* host_image(uint32_t /*width*/, uint32_t /*height*/) {
+    return nullptr;
+  }
+  virtual void present_host_image() {}
 };
 
 struct OutputSettings {
@@ -44,9 +51,10 @@ class FrameOutput {
   bool execute(const rec::FrameRecord& record, const rec::DrawableConfig& drawable,
                double record_ms);
   // End of a frame: a swap (double-buffered) or glFlush/glFinish of a single-buffered drawable.
-  // Swaps if asked, shows the front buffer in `target` (may be null), writes the PNG and prints
-  // the frame's statistics.
-  void end_frame(WindowTarget* target, bool swap);
+  // Executes the rest of the frame's record, swaps if asked (all in one submission), shows the
+  // front buffer in `target` (may be null), writes the PNG and prints the frame's statistics.
+  void end_frame(const rec::FrameRecord& record, const rec::DrawableConfig& drawable,
+                 double record_ms, WindowTarget* target, bool swap);
 
   rt::Renderer& renderer() { return *renderer_; }
   const rec::DrawableConfig& drawable() const { return drawable_; }

@@ -370,11 +370,29 @@ void glReadPixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height,
   }
 }
 
-void glFlush(Context&) {}
+namespace {
+
+// glFlush/glFinish end a frame when what was drawn goes to the front buffer (a single-buffered
+// drawable, or glDrawBuffer(GL_FRONT)): the window shows the front buffer, and this is the only
+// point where a program drawing there says its image is complete.
+bool draws_to_front(const Context& ctx) {
+  const uint32_t b = ctx.raster.ops.draw_buffer;
+  return !ctx.drawable.double_buffered || b == GL_FRONT || b == GL_FRONT_LEFT || b == GL_LEFT ||
+         b == GL_FRONT_AND_BACK;
+}
+
+}  // namespace
+
+void glFlush(Context& ctx) {
+  if (draws_to_front(ctx)) end_frame(ctx, /*swap=*/false);
+}
 
 void glFinish(Context& ctx) {
   // Rendering is synchronous: finishing means the recorded commands are executed.
-  execute_record(ctx);
+  if (draws_to_front(ctx))
+    end_frame(ctx, /*swap=*/false);
+  else
+    execute_record(ctx);
 }
 
 void glHint(Context& ctx, GLenum target, GLenum mode) {

@@ -14,7 +14,9 @@ class Context;
 
 class HeadlessTarget final : public WindowTarget {
  public:
-  HeadlessTarget(uint32_t width, uint32_t height) : width_(width), height_(height) {}
+  // `config`: the buffers the surface has (its size is the target's own).
+  HeadlessTarget(uint32_t width, uint32_t height, rec::DrawableConfig config = {})
+      : width_(width), height_(height), config_(config) {}
 
   bool query_size(uint32_t* width, uint32_t* height) override {
     *width = width_;
@@ -26,6 +28,8 @@ class HeadlessTarget final : public WindowTarget {
     ++presented_frames_;
   }
 
+  rec::DrawableConfig config() const override { return config_; }
+
   void resize(uint32_t width, uint32_t height) {
     width_ = width;
     height_ = height;
@@ -36,6 +40,7 @@ class HeadlessTarget final : public WindowTarget {
 
  private:
   uint32_t width_, height_;
+  rec::DrawableConfig config_;
   std::vector<uint8_t> presented_;
   uint64_t presented_frames_ = 0;
 };

@@ -8,9 +8,11 @@
 namespace glpt {
 namespace {
 
-void build_transform(const Context& ctx, rec::TransformState& t) {
+void build_transform(Context& ctx, rec::TransformState& t) {
   t.modelview = ctx.matrices.modelview.top();
   t.projection = ctx.matrices.projection.top();
+  t.modelview_projection = ctx.matrices.model_projection();
+  t.modelview_inverse = ctx.matrices.modelview.top_matrix().inverse();
   const FramebufferState& fb = ctx.framebuffer;
   t.viewport = {fb.viewport_x, fb.viewport_y, fb.viewport_width, fb.viewport_height};
   t.depth_near = static_cast<float>(fb.depth_near);
@@ -32,7 +34,7 @@ bool refresh(std::shared_ptr<const T>& block, const T& value) {
 
 }  // namespace
 
-rec::StateId StateSnapshotter::capture(const Context& ctx, rec::FrameRecord& record) {
+rec::StateId StateSnapshotter::capture(Context& ctx, rec::FrameRecord& record) {
   build_transform(ctx, transform_scratch_);
   snapshot_texturing(ctx, texturing_scratch_);
   bool changed = refresh(transform_, transform_scratch_);

@@ -17,7 +17,8 @@ class Context;
 class StateSnapshotter {
  public:
   // The id in `record` of a snapshot of the current state.
-  rec::StateId capture(const Context& ctx, rec::FrameRecord& record);
+  // Non-const: the modelview's inverse is analysed lazily (Mesa's way), if not yet done.
+  rec::StateId capture(Context& ctx, rec::FrameRecord& record);
   // The record's states were cleared (it was executed): the next capture starts a new table.
   // The blocks themselves are kept, so an unchanged state shares them across frames.
   void record_cleared() { last_id_.reset(); }

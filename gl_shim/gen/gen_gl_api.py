@@ -471,48 +471,81 @@ def emit_entry_points(path, names, commands):
 
 
 # ----------------------------------------------------------------------------------------------
-# Attribute families: glColor3ub, glVertex2iv, glMultiTexCoord4d, ... Each member converts its
-# arguments as GL 1.5 spec table 2.9 says and calls one hand-written function
-# (geometry/attributes.hpp).
+# Attribute families: glColor3ub, glVertex2iv, glMultiTexCoord4d, glSecondaryColor3us,
+# glFogCoordd, glEdgeFlagv, glIndexub, ... Each member converts its arguments as GL 1.5 spec
+# table 2.9 says (evaluated as Mesa evaluates it, see state/normalized_values.hpp) and calls one
+# hand-written function (geometry/attributes.hpp).
 
-ATTRIBUTE_FAMILY = re.compile(r"^gl(Vertex|Normal|Color|TexCoord|MultiTexCoord)([1-4])(b|s|i|f|d|ub|us|ui)(v?)$")
-# Missing components default to (0, 0, 0, 1).
-FAMILY_TARGET = {
-    "Vertex": ("attribute_vertex", 4, False),
-    "Normal": ("attribute_normal", 3, True),   # signed integer normals are normalized
-    "Color": ("attribute_color", 4, True),
-    "TexCoord": ("attribute_tex_coord", 4, False),
-    "MultiTexCoord": ("attribute_multi_tex_coord", 4, False),
+ATTRIBUTE_FAMILY = re.compile(
+    r"^gl(Vertex|Normal|Color|TexCoord|MultiTexCoord|SecondaryColor|FogCoord|EdgeFlag|Index)"
+    r"([1-4]?)(b|s|i|f|d|ub|us|ui|)(v?)$")
+
+
+class Family:
+    """How the members of one family convert and deliver their components."""
+
+    def __init__(self, setter, width, conversion, sized=True, typed=True):
+        self.setter = setter
+        self.width = width            # components the setter takes (1: a scalar)
+        self.conversion = conversion  # C++ function applied to each argument
+        self.sized = sized            # names carry a component count (glColor3f vs glFogCoordf)
+        self.typed = typed            # names carry a type suffix (glEdgeFlag has none)
+
+
+FAMILIES = {
+    "Vertex": Family("attribute_vertex", 4, "float_component"),
+    "Normal": Family("attribute_normal", 3, "normalized_component"),
+    "Color": Family("attribute_color", 4, "normalized_component"),
+    "TexCoord": Family("attribute_tex_coord", 4, "float_component"),
+    "MultiTexCoord": Family("attribute_multi_tex_coord", 4, "float_component"),
+    "SecondaryColor": Family("attribute_secondary_color", 3, "normalized_component"),
+    "FogCoord": Family("attribute_fog_coord", 1, "float_component", sized=False),
+    "EdgeFlag": Family("attribute_edge_flag", 1, "0 != ", sized=False, typed=False),
+    "Index": Family("attribute_index", 1, "float_component", sized=False),
 }
+
+
+def attribute_family_member(name):
+    """(Family, family name, vector form) for a member of an attribute family, else None."""
+    m = ATTRIBUTE_FAMILY.match(name)
+    if not m:
+        return None
+    family = FAMILIES[m.group(1)]
+    if bool(m.group(2)) != family.sized or bool(m.group(3)) != family.typed:
+        return None
+    return family, m.group(1), m.group(4) == "v"
 
 
 def emit_attribute_families(path, names, commands):
     out = [HEADER, '#include <glm/glm.hpp>\n\n#include "gl_shim/geometry/attributes.hpp"\n'
            '#include "gl_shim/gl_impl_decls.hpp"\n\nnamespace glpt::impl {\n\n']
     for n in names:
-        m = ATTRIBUTE_FAMILY.match(n)
-        if not m or impl_name(commands[n], commands) != n:
+        member = attribute_family_member(n)
+        if not member or impl_name(commands[n], commands) != n:
             continue
-        family, size, _, vector = m.group(1), int(m.group(2)), m.group(3), m.group(4) == "v"
-        fn, width, normalized = FAMILY_TARGET[family]
+        family, family_name, vector = member
         cmd = commands[n]
         params = list(cmd.params)
         lead = []
-        if family == "MultiTexCoord":
+        if family_name == "MultiTexCoord":
             lead = [params[0].name]
             params = params[1:]
-        conv = "normalized_component" if normalized else "float_component"
+        conv = family.conversion
         if vector:
-            comps = [f"{conv}({params[0].name}[{i}])" for i in range(size)]
+            count = int(ATTRIBUTE_FAMILY.match(n).group(2) or "1")
+            comps = [f"{conv}({params[0].name}[{i}])" for i in range(count)]
         else:
             comps = [f"{conv}({p.name})" for p in params]
-        defaults = ["0.0f", "0.0f", "0.0f", "1.0f"]
-        comps += defaults[len(comps):width]
-        vec = f"glm::vec{width}({', '.join(comps)})"
+        if family.width == 1:
+            value = comps[0]
+        else:
+            defaults = ["0.0f", "0.0f", "0.0f", "1.0f"]  # missing components: (0, 0, 0, 1)
+            comps += defaults[len(comps):family.width]
+            value = f"glm::vec{family.width}({', '.join(comps)})"
         out.append(impl_signature(cmd, n) + " {\n")
         if vector:
             out.append(f"  if ({params[0].name} == nullptr) return;\n")
-        out.append(f"  {fn}({', '.join(['ctx'] + lead + [vec])});\n}}\n\n")
+        out.append(f"  {family.setter}({', '.join(['ctx'] + lead + [value])});\n}}\n\n")
     out.append("}  // namespace glpt::impl\n")
     with open(path, "w") as f:
         f.write("".join(out))

@@ -1,12 +1,13 @@
-// The canonical vertex-attribute setters behind every glVertex*/glNormal*/glColor*/glTexCoord*
-// variant (generated in gl_attribute_families.cpp, which converts the arguments).
+// The canonical vertex-attribute setters behind every glVertex*/glNormal*/glColor*/glTexCoord*/
+// glSecondaryColor*/glFogCoord*/glEdgeFlag*/glIndex* variant (generated in
+// gl_attribute_families.cpp, which converts the arguments: normalized_component for colours and
+// normals, float_component for the rest).
 #pragma once
 
 #include <glm/glm.hpp>
-#include <limits>
-#include <type_traits>
 
 #include "gl_shim/gl_types.h"
+#include "gl_shim/state/normalized_values.hpp"
 
 namespace glpt {
 
@@ -22,18 +23,11 @@ void attribute_multi_tex_coord(Context& ctx, GLenum texture_unit, glm::vec4 coor
 // primitive records its own material. Does nothing outside glBegin/glEnd.
 void material_changed_inside_begin_end(Context& ctx);
 
-// GL 1.5 spec table 2.9: integer colours and normals map to [0,1] (unsigned) or [-1,1] (signed).
-template <typename T>
-float normalized_component(T v) {
-  if constexpr (std::is_floating_point_v<T>) {
-    return static_cast<float>(v);
-  } else if constexpr (std::is_unsigned_v<T>) {
-    return static_cast<float>(static_cast<double>(v) / std::numeric_limits<T>::max());
-  } else {
-    constexpr double kRange = 2.0 * std::numeric_limits<T>::max() + 1.0;  // 2^b - 1
-    return static_cast<float>((2.0 * static_cast<double>(v) + 1.0) / kRange);
-  }
-}
+// extra_attributes.cpp
+void attribute_secondary_color(Context& ctx, glm::vec3 color);  // alpha stays 1 (as in Mesa)
+void attribute_fog_coord(Context& ctx, float coord);
+void attribute_edge_flag(Context& ctx, bool flag);
+void attribute_index(Context& ctx, float index);  // colour-index mode: stored for queries only
 
 template <typename T>
 float float_component(T v) {

@@ -83,6 +83,8 @@ namespace impl {
 
 void glBegin(Context& ctx, GLenum mode) {
   if (!is_primitive_mode(mode)) return record_error(ctx, GL_INVALID_ENUM);
+  // A draw: Mesa validates its derived state here (matrix analysis decides later arithmetic).
+  ctx.matrices.validate_for_draw(ctx.transform.clip_plane_mask);
   VertexAssembly& a = ctx.assembly;
   a.inside = true;
   a.state = ctx.snapshots.capture(ctx, ctx.recorder.record());

@@ -59,8 +59,11 @@ bool make_current(Display* dpy, GLXDrawable draw, GLXDrawable read, GLXContext c
   if (old != ctx) release_current();
   if (!ctx->target || ctx->target->window() != draw) {
     std::string error;
-    ctx->target =
-        glpt::X11WindowTarget::create(DisplayString(dpy), static_cast<uint32_t>(draw), &error);
+    glpt::glx::FBConfig c;
+    glpt::rec::DrawableConfig config;
+    if (glpt::glx::decode(dpy, ctx->config, &c)) config.double_buffered = c.double_buffered;
+    ctx->target = glpt::X11WindowTarget::create(DisplayString(dpy), static_cast<uint32_t>(draw),
+                                                config, &error);
     if (!ctx->target) {
       std::fprintf(stderr, "glpt: %s\n", error.c_str());
       return false;
@@ -324,6 +327,30 @@ GLPT_EXPORT void glXDestroyWindow(Display* dpy, GLXWindow win) {
   (void)win;
 }
 
+// A GLX pixmap is the X pixmap itself: glpt draws into it like into a window (single-buffered).
+GLPT_EXPORT GLXPixmap glXCreatePixmap(Display* dpy, GLXFBConfig config, Pixmap pixmap,
+                                      const int* attrib_list) {
+  (void)attrib_list;
+  glpt::glx::FBConfig c;
+  if (dpy == nullptr || pixmap == None || !glpt::glx::decode(dpy, config, &c)) return None;
+  return pixmap;
+}
+
+GLPT_EXPORT void glXDestroyPixmap(Display* dpy, GLXPixmap pixmap) {
+  (void)dpy;
+  (void)pixmap;
+}
+
+GLPT_EXPORT GLXPixmap glXCreateGLXPixmap(Display* dpy, XVisualInfo* vis, Pixmap pixmap) {
+  if (dpy == nullptr || vis == nullptr || pixmap == None) return None;
+  return pixmap;
+}
+
+GLPT_EXPORT void glXDestroyGLXPixmap(Display* dpy, GLXPixmap pixmap) {
+  (void)dpy;
+  (void)pixmap;
+}
+
 GLPT_EXPORT void glXQueryDrawable(Display* dpy, GLXDrawable draw, int attribute,
                                   unsigned int* value) {
   if (dpy == nullptr || value == nullptr || draw == None) return;
@@ -404,6 +431,10 @@ const GlxProc* glx_proc_table(size_t* count) {
       GLPT_GLX_PROC(glXQueryContext),
       GLPT_GLX_PROC(glXCreateWindow),
       GLPT_GLX_PROC(glXDestroyWindow),
+      GLPT_GLX_PROC(glXCreatePixmap),
+      GLPT_GLX_PROC(glXDestroyPixmap),
+      GLPT_GLX_PROC(glXCreateGLXPixmap),
+      GLPT_GLX_PROC(glXDestroyGLXPixmap),
       GLPT_GLX_PROC(glXQueryDrawable),
       GLPT_GLX_PROC(glXWaitGL),
       GLPT_GLX_PROC(glXWaitX),

@@ -40,6 +40,11 @@ GLPT_EXPORT int glXQueryContext(Display* dpy, GLXContext ctx, int attribute, int
 GLPT_EXPORT GLXWindow glXCreateWindow(Display* dpy, GLXFBConfig config, Window win,
                                       const int* attrib_list);
 GLPT_EXPORT void glXDestroyWindow(Display* dpy, GLXWindow win);
+GLPT_EXPORT GLXPixmap glXCreatePixmap(Display* dpy, GLXFBConfig config, Pixmap pixmap,
+                                      const int* attrib_list);
+GLPT_EXPORT void glXDestroyPixmap(Display* dpy, GLXPixmap pixmap);
+GLPT_EXPORT GLXPixmap glXCreateGLXPixmap(Display* dpy, XVisualInfo* vis, Pixmap pixmap);
+GLPT_EXPORT void glXDestroyGLXPixmap(Display* dpy, GLXPixmap pixmap);
 GLPT_EXPORT void glXQueryDrawable(Display* dpy, GLXDrawable draw, int attribute,
                                   unsigned int* value);
 GLPT_EXPORT void glXWaitGL(void);

@@ -1,31 +1,109 @@
 #include "gl_shim/glx/x11_window_target.hpp"
 
+#include <sys/ipc.h>
+#include <sys/shm.h>
+#include <xcb/shm.h>
 #include <xcb/xcb.h>
 
 #include <algorithm>
 #include <bit>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 
 namespace glpt {
 
 std::unique_ptr<X11WindowTarget> X11WindowTarget::create(const std::string& display_name,
-                                                         uint32_t window, std::string* error) {
+                                                         uint32_t window,
+                                                         rec::DrawableConfig config,
+                                                         std::string* error) {
   xcb_connection_t* c = xcb_connect(display_name.empty() ? nullptr : display_name.c_str(), nullptr);
   if (xcb_connection_has_error(c)) {
     xcb_disconnect(c);
     *error = "cannot open X display '" + display_name + "' for presenting";
     return nullptr;
   }
-  return std::unique_ptr<X11WindowTarget>(new X11WindowTarget(c, window));
+  // Only windows have a back buffer: GetWindowAttributes fails on a pixmap.
+  xcb_generic_error_t* err = nullptr;
+  free(xcb_get_window_attributes_reply(c, xcb_get_window_attributes(c, window), &err));
+  if (err != nullptr) config.double_buffered = false;
+  free(err);
+  return std::unique_ptr<X11WindowTarget>(new X11WindowTarget(c, window, config));
 }
 
-X11WindowTarget::X11WindowTarget(xcb_connection_t* connection, uint32_t window)
-    : connection_(connection), window_(window) {}
+X11WindowTarget::X11WindowTarget(xcb_connection_t* connection, uint32_t window,
+                                 rec::DrawableConfig config)
+    : connection_(connection), window_(window), config_(config) {}
 
 X11WindowTarget::~X11WindowTarget() {
+  release_shm();
   if (gc_ != 0) xcb_free_gc(connection_, gc_);
   xcb_disconnect(connection_);
+}
+
+void X11WindowTarget::round_trip() {
+  // The server has processed (and, for SHM, read) everything sent before the reply; errors of
+  // earlier requests arrive as events on this connection, which nobody else reads.
+  free(xcb_get_input_focus_reply(connection_, xcb_get_input_focus(connection_), nullptr));
+  while (xcb_generic_event_t* e = xcb_poll_for_event(connection_)) free(e);
+}
+
+void X11WindowTarget::release_shm() {
+  if (shm_segment_ != 0) {
+    xcb_shm_detach(connection_, shm_segment_);
+    round_trip();  // the server lets go of the segment before it is unmapped here
+    shm_segment_ = 0;
+  }
+  if (shm_image_.pixels != nullptr) shmdt(shm_image_.pixels);
+  shm_image_ = rt::HostImage();
+}
+
+const rt::HostImage* X11WindowTarget::host_image(uint32_t width, uint32_t height) {
+  if (!prepare()) return nullptr;
+  if (!shm_checked_) {
+    shm_checked_ = true;
+    xcb_shm_query_version_reply_t* v =
+        xcb_shm_query_version_reply(connection_, xcb_shm_query_version(connection_), nullptr);
+    // Only the pixel layout the renderer writes (BGRA bytes = 0x..RRGGBB little-endian words).
+    shm_available_ =
+        v != nullptr && red_shift_ == 16 && green_shift_ == 8 && blue_shift_ == 0 && lsb_first_;
+    free(v);
+  }
+  if (!shm_available_ || width == 0 || height == 0) return nullptr;
+  if (shm_image_.pixels != nullptr && shm_image_.width == width && shm_image_.height == height)
+    return &shm_image_;
+  release_shm();
+  const size_t bytes = (size_t{width} * height * 4 + 4095) & ~size_t{4095};
+  const int id = shmget(IPC_PRIVATE, bytes, IPC_CREAT | 0600);
+  if (id < 0) {
+    shm_available_ = false;
+    return nullptr;
+  }
+  void* memory = shmat(id, nullptr, 0);
+  shm_segment_ = xcb_generate_id(connection_);
+  xcb_void_cookie_t cookie = xcb_shm_attach_checked(connection_, shm_segment_, id, 0);
+  xcb_generic_error_t* error = xcb_request_check(connection_, cookie);
+  // Marked for removal now: the segment disappears once both sides have detached.
+  shmctl(id, IPC_RMID, nullptr);
+  if (memory == reinterpret_cast<void*>(-1) || error != nullptr) {
+    free(error);
+    if (memory != reinterpret_cast<void*>(-1)) shmdt(memory);
+    shm_segment_ = 0;
+    shm_available_ = false;  // e.g. a server on another host
+    return nullptr;
+  }
+  shm_image_ = {static_cast<uint8_t*>(memory), width, height, ++shm_generations_};
+  return &shm_image_;
+}
+
+void X11WindowTarget::present_host_image() {
+  if (shm_segment_ == 0 || shm_image_.pixels == nullptr) return;
+  const uint16_t w = static_cast<uint16_t>(shm_image_.width);
+  const uint16_t h = static_cast<uint16_t>(shm_image_.height);
+  xcb_shm_put_image(connection_, window_, gc_, w, h, 0, 0, w, h, 0, 0, depth_,
+                    XCB_IMAGE_FORMAT_Z_PIXMAP, 0, shm_segment_, 0);
+  // Presenting is synchronous: the next frame may overwrite the segment once this returns.
+  round_trip();
 }
 
 bool X11WindowTarget::query_size(uint32_t* width, uint32_t* height) {
@@ -76,9 +154,21 @@ void X11WindowTarget::present(const uint8_t* rgba, uint32_t width, uint32_t heig
   // GL rows run bottom to top, X rows top to bottom; pixels become 32-bit words in the
   // visual's channel layout.
   converted_.resize(size_t{width} * height);
+  // The usual visual (0xRRGGBB words, little-endian server, as on x86 hosts) takes a word-wise
+  // swap of R and B that the compiler vectorizes; any other layout goes channel by channel.
+  const bool rgb_words = red_shift_ == 16 && green_shift_ == 8 && blue_shift_ == 0 && lsb_first_ &&
+                         std::endian::native == std::endian::little;
   for (uint32_t y = 0; y < height; ++y) {
     const uint8_t* src = rgba + size_t{height - 1 - y} * width * 4;
     uint32_t* dst = converted_.data() + size_t{y} * width;
+    if (rgb_words) {
+      std::memcpy(dst, src, size_t{width} * 4);
+      for (uint32_t x = 0; x < width; ++x) {
+        const uint32_t w = dst[x];  // 0xAABBGGRR
+        dst[x] = ((w & 0xFFu) << 16) | (w & 0xFF00u) | ((w >> 16) & 0xFFu);
+      }
+      continue;
+    }
     for (uint32_t x = 0; x < width; ++x, src += 4) {
       uint32_t p = (uint32_t{src[0]} << red_shift_) | (uint32_t{src[1]} << green_shift_) |
                    (uint32_t{src[2]} << blue_shift_);
@@ -98,9 +188,7 @@ void X11WindowTarget::present(const uint8_t* rgba, uint32_t width, uint32_t heig
                   reinterpret_cast<const uint8_t*>(converted_.data() + size_t{y} * width));
   }
   // Round trip so the image is on screen when the swap returns (and errors are collected).
-  free(xcb_get_input_focus_reply(connection_, xcb_get_input_focus(connection_), nullptr));
-  // Errors (a window destroyed under us) arrive as events on this connection; nobody else reads it.
-  while (xcb_generic_event_t* e = xcb_poll_for_event(connection_)) free(e);
+  round_trip();
 }
 
 }  // namespace glpt

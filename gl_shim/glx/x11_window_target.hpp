@@ -18,27 +18,41 @@ namespace glpt {
 
 class X11WindowTarget final : public WindowTarget {
  public:
-  // nullptr (and a message) if the display cannot be opened.
-  static std::unique_ptr<X11WindowTarget> create(const std::string& display_name, uint32_t window,
-                                                 std::string* error);
+  // nullptr (and a message) if the display cannot be opened. `drawable` is a window or a pixmap
+  // (GLX pixmaps are the X pixmap itself); `config` says what buffers the GLX config has, and a
+  // pixmap is always single-buffered.
+  static std::unique_ptr<X11WindowTarget> create(const std::string& display_name, uint32_t drawable,
+                                                 rec::DrawableConfig config, std::string* error);
   ~X11WindowTarget() override;
 
   uint32_t window() const { return window_; }
   bool query_size(uint32_t* width, uint32_t* height) override;
+  rec::DrawableConfig config() const override { return config_; }
   void present(const uint8_t* rgba, uint32_t width, uint32_t height) override;
+  const rt::HostImage* host_image(uint32_t width, uint32_t height) override;
+  void present_host_image() override;
 
  private:
-  X11WindowTarget(xcb_connection_t* connection, uint32_t window);
+  X11WindowTarget(xcb_connection_t* connection, uint32_t window, rec::DrawableConfig config);
   bool prepare();  // looks up the window's visual and creates the GC, once
 
   xcb_connection_t* connection_;
   uint32_t window_;
+  rec::DrawableConfig config_;
   uint32_t gc_ = 0;
   uint8_t depth_ = 0;
   int red_shift_ = 16, green_shift_ = 8, blue_shift_ = 0;
   bool prepared_ = false;
   bool lsb_first_ = true;  // server image byte order
   std::vector<uint32_t> converted_;
+  // MIT-SHM: the frame is written straight into memory the X server reads (as Mesa's software
+  // GLX presents). Unavailable over a network connection or with another pixel layout.
+  bool shm_checked_ = false, shm_available_ = false;
+  uint32_t shm_segment_ = 0;  // xcb_shm_seg_t, 0 when none is attached
+  rt::HostImage shm_image_;
+  uint64_t shm_generations_ = 0;
+  void release_shm();
+  void round_trip();
 };
 
 }  // namespace glpt

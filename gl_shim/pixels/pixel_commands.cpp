@@ -22,10 +22,6 @@ namespace {
 constexpr int32_t kMaxImageSide = 16384;
 constexpr int64_t kMaxGroups = int64_t{1} << 24;
 
-rec::DrawableConfig drawable_of(const Context& ctx) {
-  return ctx.target != nullptr ? ctx.target->config() : rec::DrawableConfig{};
-}
-
 // The raster position of a pixel command, its x and y rounded as Mesa rounds them (lroundf).
 // (A non-finite position stays as it is; nothing is drawn at it.)
 rec::RasterPosition rounded_raster_position(const Context& ctx) {
@@ -36,6 +32,10 @@ rec::RasterPosition rounded_raster_position(const Context& ctx) {
   }
   return p;
 }
+
+// Mesa validates its state (_mesa_update_state, which analyses the matrices) at these points of
+// glBitmap, glDrawPixels and glCopyPixels; analysis decides later matrix arithmetic.
+void validate_state(Context& ctx) { ctx.matrices.validate_for_draw(ctx.transform.clip_plane_mask); }
 
 template <typename Command>
 void record(Context& ctx, Command command) {
@@ -53,6 +53,7 @@ void glBitmap(Context& ctx, GLsizei width, GLsizei height, GLfloat xorig, GLfloa
   if (width < 0 || height < 0) return record_error(ctx, GL_INVALID_VALUE);
   rec::RasterPosition& rp = ctx.raster_position;
   if (!rp.valid) return;  // nothing drawn, and the raster position does not move (Mesa)
+  validate_state(ctx);
   if (width > 0 && height > 0 && bitmap != nullptr) {
     if (int64_t{width} * height > kMaxGroups) return record_error(ctx, GL_OUT_OF_MEMORY);
     rec::Bitmap b;
@@ -72,9 +73,10 @@ void glBitmap(Context& ctx, GLsizei width, GLsizei height, GLfloat xorig, GLfloa
 void glDrawPixels(Context& ctx, GLsizei width, GLsizei height, GLenum format, GLenum type,
                   const void* pixels) {
   if (width < 0 || height < 0) return record_error(ctx, GL_INVALID_VALUE);
+  validate_state(ctx);
   if (const GLenum error = check_pixel_format_and_type(format, type); error != GL_NO_ERROR)
     return record_error(ctx, error);
-  const rec::DrawableConfig drawable = drawable_of(ctx);
+  const rec::DrawableConfig& drawable = ctx.drawable;
   if ((format == GL_STENCIL_INDEX && drawable.stencil_bits == 0) ||
       (format == GL_DEPTH_COMPONENT && drawable.depth_bits == 0))
     return record_error(ctx, GL_INVALID_OPERATION);
@@ -100,7 +102,8 @@ void glCopyPixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height,
   if (width < 0 || height < 0) return record_error(ctx, GL_INVALID_VALUE);
   if (type != GL_COLOR && type != GL_DEPTH && type != GL_STENCIL)
     return record_error(ctx, GL_INVALID_ENUM);
-  const rec::DrawableConfig drawable = drawable_of(ctx);
+  validate_state(ctx);
+  const rec::DrawableConfig& drawable = ctx.drawable;
   if ((type == GL_DEPTH && drawable.depth_bits == 0) ||
       (type == GL_STENCIL && drawable.stencil_bits == 0))
     return record_error(ctx, GL_INVALID_OPERATION);
@@ -120,7 +123,7 @@ void glCopyPixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height,
 void glAccum(Context& ctx, GLenum op, GLfloat value) {
   if (op != GL_ACCUM && op != GL_LOAD && op != GL_RETURN && op != GL_MULT && op != GL_ADD)
     return record_error(ctx, GL_INVALID_ENUM);
-  if (drawable_of(ctx).accum_bits == 0) return record_error(ctx, GL_INVALID_OPERATION);
+  if (ctx.drawable.accum_bits == 0) return record_error(ctx, GL_INVALID_OPERATION);
   rec::Accum a;
   a.op = op;
   a.value = value;

@@ -27,13 +27,6 @@ namespace {
 
 // ---- Mesa's vector macros (src/mesa/main/macros.h, src/mesa/math/m_xform.h) -------------------
 
-// TRANSFORM_POINT: m * p, summed x, y, z, w.
-glm::vec4 transform_point(const glm::mat4& m, const glm::vec4& p) {
-  glm::vec4 q;
-  for (int r = 0; r < 4; ++r) q[r] = m[0][r] * p.x + m[1][r] * p.y + m[2][r] * p.z + m[3][r] * p.w;
-  return q;
-}
-
 // TRANSFORM_NORMAL: the row vector n times the upper 3x3 of m (with m the inverse modelview this
 // is the inverse transpose applied to n).
 glm::vec3 transform_normal(const glm::vec3& n, const glm::mat4& m) {
@@ -55,25 +48,6 @@ glm::vec3 normalize3(glm::vec3 v) {
     v *= len;
   }
   return v;
-}
-
-// The inverse of a matrix (Mesa keeps one per matrix; computed here in double, which is within
-// a rounding of Mesa's specialised inversions).
-glm::mat4 inverse_of(const glm::mat4& m) { return glm::mat4(glm::inverse(glm::dmat4(m))); }
-
-// Mesa's MAT_FLAGS_LENGTH_PRESERVING, judged from the values as Mesa's analysis does: a rotation
-// plus translation (columns orthonormal and right-handed, no projective row).
-bool length_preserving(const glm::mat4& m) {
-  if (m[0][3] != 0.0f || m[1][3] != 0.0f || m[2][3] != 0.0f || m[3][3] != 1.0f) return false;
-  const glm::vec3 c0(m[0]), c1(m[1]), c2(m[2]);
-  const float l0 = dot3(c0, c0), l1 = dot3(c1, c1), l2 = dot3(c2, c2);
-  constexpr float kEpsilon2 = 1e-6f * 1e-6f;
-  auto sq = [](float v) { return v * v; };
-  if (sq(l0 - l1) >= kEpsilon2 || sq(l0 - l2) >= kEpsilon2 || sq(l0 - 1.0f) > kEpsilon2)
-    return false;
-  if (sq(dot3(c0, c1)) >= kEpsilon2) return false;
-  const glm::vec3 cross = glm::cross(c0, c1) - c2;
-  return dot3(cross, cross) < kEpsilon2;
 }
 
 bool is_spot(const rec::Light& light) { return light.spot_cutoff != 180.0f; }
@@ -100,7 +74,7 @@ bool need_eye_coordinates(const Context& ctx, const rec::TexturingState& texturi
   for (int i = 0; i < rec::kMaxLights; ++i)
     if ((l.light_mask & (1u << i)) && (is_positional(l.lights[i]) || is_spot(l.lights[i])))
       return true;
-  return !length_preserving(ctx.matrices.modelview.top());
+  return !ctx.matrices.modelview.top_matrix().length_preserving();
 }
 
 // One light as Mesa prepares it (compute_light_positions, _mesa_update_material): in the space
@@ -146,12 +120,12 @@ PreparedLight prepare_light(const rec::Light& light, const rec::Material& materi
 }
 
 // shade_rastpos: the lit raster colour and secondary colour (front face).
-void shade(const Context& ctx, bool eye, const glm::vec4& vertex, const glm::vec3& normal,
+void shade(Context& ctx, bool eye, const glm::vec4& vertex, const glm::vec3& normal,
            glm::vec4& color, glm::vec4& secondary) {
   const rec::LightingState& l = ctx.lighting;
   const rec::Material& material = l.material[0];
   const glm::mat4& modelview = ctx.matrices.modelview.top();
-  const glm::mat4 inverse = inverse_of(modelview);
+  const glm::mat4& inverse = ctx.matrices.modelview.top_matrix().inverse();
   const glm::vec3 eye_z =
       eye ? glm::vec3(0.0f, 0.0f, 1.0f) : transform_normal(glm::vec3(0.0f, 0.0f, 1.0f), modelview);
 
@@ -265,16 +239,15 @@ bool inside_view_volume(const glm::vec4& clip) {
   return !(clip.x > clip.w || clip.x < -clip.w || clip.y > clip.w || clip.y < -clip.w);
 }
 
-// Mesa tests user clip planes in clip space: each eye-space plane times the inverse projection.
-bool inside_clip_planes(const Context& ctx, const glm::vec4& clip) {
+// Mesa tests user clip planes in clip space: each eye-space plane times the inverse projection
+// (_ClipUserPlane).
+bool inside_clip_planes(Context& ctx, const glm::vec4& clip) {
   const uint8_t mask = ctx.transform.clip_plane_mask;
   if (mask == 0) return true;
-  const glm::mat4 inverse = inverse_of(ctx.matrices.projection.top());
+  const glm::mat4& inverse = ctx.matrices.projection.top_matrix().inverse();
   for (int p = 0; p < rec::kMaxClipPlanes; ++p) {
     if (!(mask & (1u << p))) continue;
-    const glm::vec4& e = ctx.transform.clip_planes[p];
-    glm::vec4 plane;
-    for (int c = 0; c < 4; ++c) plane[c] = dot4(e, inverse[c]);
+    const glm::vec4 plane = transform_row_vector(ctx.transform.clip_planes[p], inverse);
     if (dot4(clip, plane) < 0.0f) return false;
   }
   return true;
@@ -283,6 +256,7 @@ bool inside_clip_planes(const Context& ctx, const glm::vec4& clip) {
 }  // namespace
 
 void set_raster_position(Context& ctx, const glm::vec4& object) {
+  ctx.matrices.validate_for_draw(ctx.transform.clip_plane_mask);  // Mesa's _mesa_update_state
   rec::RasterPosition& rp = ctx.raster_position;
   const glm::vec4 eye = transform_point(ctx.matrices.modelview.top(), object);
   const glm::vec4 clip = transform_point(ctx.matrices.projection.top(), eye);
@@ -304,8 +278,9 @@ void set_raster_position(Context& ctx, const glm::vec4& object) {
   snapshot_texturing(ctx, texturing);
   const bool eye_space = need_eye_coordinates(ctx, texturing);
   const glm::vec3 normal =
-      eye_space ? transform_normal(ctx.current.normal, inverse_of(ctx.matrices.modelview.top()))
-                : ctx.current.normal;
+      eye_space
+          ? transform_normal(ctx.current.normal, ctx.matrices.modelview.top_matrix().inverse())
+          : ctx.current.normal;
   if (ctx.lighting.enabled) {
     shade(ctx, eye_space, object, normal, rp.color, rp.secondary_color);
   } else {

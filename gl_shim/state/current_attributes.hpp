@@ -19,6 +19,8 @@ struct CurrentAttributes {
     return t;
   }();
   bool edge_flag = true;
+  // glIndex: colour-index mode is not supported; the value is kept for GL_CURRENT_INDEX.
+  float index = 1.0f;
 };
 
 }  // namespace glpt

@@ -20,7 +20,9 @@ struct Cap {
 };
 
 // Server-side capabilities of GL 1.5 (plus the ARB/EXT ones glpt accepts) that have no field in
-// the state blocks (see flag_field/flag_bit below); sorted by enum at compile time.
+// the state blocks (see flag_field/flag_bit below); sorted by enum at compile time. The imaging
+// subset's capabilities (colour tables, convolution, histogram, minmax) are not among them: Mesa
+// does not expose ARB_imaging and answers GL_INVALID_ENUM for them, as glpt does.
 constexpr Cap kCapList[] = {
     {GL_INDEX_LOGIC_OP, false},
     {GL_AUTO_NORMAL, false},
@@ -42,18 +44,10 @@ constexpr Cap kCapList[] = {
     {GL_MAP2_TEXTURE_COORD_4, false},
     {GL_MAP2_VERTEX_3, false},
     {GL_MAP2_VERTEX_4, false},
-    {GL_CONVOLUTION_1D, false},
-    {GL_CONVOLUTION_2D, false},
-    {GL_SEPARABLE_2D, false},
-    {GL_HISTOGRAM, false},
-    {GL_MINMAX, false},
     {GL_MULTISAMPLE, true},
     {GL_SAMPLE_ALPHA_TO_COVERAGE, false},
     {GL_SAMPLE_ALPHA_TO_ONE, false},
     {GL_SAMPLE_COVERAGE, false},
-    {GL_COLOR_TABLE, false},
-    {GL_POST_CONVOLUTION_COLOR_TABLE, false},
-    {GL_POST_COLOR_MATRIX_COLOR_TABLE, false},
     {GL_TEXTURE_RECTANGLE_ARB, false},
 };
 constexpr auto kCaps = [] {
@@ -163,7 +157,12 @@ void set_cap(Context& ctx, GLenum cap, bool on) {
   if (bool* field = flag_field(ctx, cap)) {
     *field = on;
   } else if (BitField b = flag_bit(ctx, cap); b.bits != nullptr) {
+    // Enabling a clip plane makes Mesa derive its clip-space equation, which analyses the
+    // projection matrix (and so decides how later products with it are computed).
+    const bool enabling_clip_plane =
+        on && !(*b.bits & b.mask) && b.bits == &ctx.transform.clip_plane_mask;
     *b.bits = on ? (*b.bits | b.mask) : (*b.bits & ~b.mask);
+    if (enabling_clip_plane) ctx.matrices.projection.top_matrix().analyse();
   } else if (!ctx.enables.set(cap, on)) {
     return record_error(ctx, GL_INVALID_ENUM);
   }

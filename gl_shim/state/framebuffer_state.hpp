@@ -21,6 +21,10 @@ struct FramebufferState {
   GLdouble clear_depth = 1.0;
   GLint clear_stencil = 0;
   glm::vec4 clear_accum{0.0f};  // glClearAccum, clamped to [-1, 1]
+  // glSampleCoverage (GL 1.5 4.1.3). glpt's drawables have no multisample buffer, so these only
+  // read back.
+  float sample_coverage_value = 1.0f;  // clamped to [0, 1]
+  bool sample_coverage_invert = false;
   GLdouble depth_near = 0.0, depth_far = 1.0;
   PixelStoreModes pack, unpack;
 };

@@ -10,15 +10,19 @@
 #include "gl_shim/dispatch.hpp"
 #include "gl_shim/geometry/attributes.hpp"
 #include "gl_shim/gl_impl_decls.hpp"
+#include "gl_shim/state/mesa_matrix.hpp"
+#include "gl_shim/state/normalized_values.hpp"
 
 namespace glpt {
 
 namespace {
 
-// Integer colours map [-2^31, 2^31-1] linearly to [-1, 1] (spec 2.14.1); other integer
-// parameters convert directly.
-float color_component(GLint v) { return static_cast<float>((2.0 * v + 1.0) / 4294967295.0); }
-float color_component(GLfloat v) { return v; }
+// Integer colours map [-2^31, 2^31-1] linearly to [-1, 1] (spec 2.14.1), rounded as Mesa does;
+// other integer parameters convert directly.
+template <typename T>
+float color_component(T v) {
+  return normalized_component(v);
+}
 float plain_component(GLint v) { return static_cast<float>(v); }
 float plain_component(GLfloat v) { return v; }
 
@@ -53,7 +57,6 @@ void set_light(Context& ctx, GLenum light, GLenum pname, const T* p, bool scalar
     record_error(ctx, GL_INVALID_ENUM);
     return;
   }
-  const glm::mat4& mv = ctx.matrices.modelview.top();
   switch (pname) {
     case GL_AMBIENT:
       l->ambient = color4(p);
@@ -64,13 +67,19 @@ void set_light(Context& ctx, GLenum light, GLenum pname, const T* p, bool scalar
     case GL_SPECULAR:
       l->specular = color4(p);
       break;
+    // Stored in eye space, transformed with Mesa's order of operations (bit-identical).
     case GL_POSITION:
-      l->position = mv * plain4(p);
-      break;  // stored in eye space
-    case GL_SPOT_DIRECTION:
-      l->spot_direction = glm::mat3(mv) * glm::vec3(plain_component(p[0]), plain_component(p[1]),
-                                                    plain_component(p[2]));
+      l->position = transform_point(ctx.matrices.modelview.top(), plain4(p));
       break;
+    case GL_SPOT_DIRECTION: {
+      // Mesa analyses the modelview here (which decides how later products are computed).
+      MesaMatrix& mv = ctx.matrices.modelview.top_matrix();
+      mv.analyse();
+      l->spot_direction = transform_direction(
+          glm::vec3(plain_component(p[0]), plain_component(p[1]), plain_component(p[2])),
+          mv.matrix());
+      break;
+    }
     case GL_SPOT_EXPONENT: {
       const float v = plain_component(p[0]);
       if (!(v >= 0.0f && v <= 128.0f)) return record_error(ctx, GL_INVALID_VALUE);

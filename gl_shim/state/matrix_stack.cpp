@@ -1,10 +1,11 @@
-// glMatrixMode, glLoadIdentity, glLoad/MultMatrix, glRotate/Translate/Scale, glFrustum/Ortho,
-// glPush/PopMatrix (GL 1.5 spec 2.11.2).
+// glMatrixMode, glLoadIdentity, glLoad/MultMatrix (and transposed), glRotate/Translate/Scale,
+// glFrustum/Ortho, glPush/PopMatrix (GL 1.5 spec 2.11.2). The arithmetic is Mesa's
+// (mesa_matrix.hpp), and so are the command-level details that decide it: double arguments are
+// converted to float first, and a load of the same matrix, a multiply by the identity and a
+// rotation by 0 degrees leave the matrix (and what Mesa knows about it) untouched.
 #include "gl_shim/state/matrix_stack.hpp"
 
-#include <cmath>
-#include <glm/gtc/matrix_transform.hpp>
-#include <glm/gtc/type_ptr.hpp>
+#include <cstring>
 
 #include "gl/gl_enums.h"
 #include "gl_shim/context.hpp"
@@ -31,135 +32,146 @@ void MatrixState::changed() {
     ++projection_version;
 }
 
+void MatrixState::validate_for_draw(uint8_t clip_plane_mask) {
+  modelview.top_matrix().analyse();
+  // Mesa only needs the projection's inverse (for clip-space planes) when a plane is enabled.
+  if (clip_plane_mask != 0) projection.top_matrix().analyse();
+  for (MatrixStack& t : texture) t.top_matrix().analyse();
+}
+
+glm::mat4 MatrixState::model_projection() const {
+  return MesaMatrix::product(projection.top_matrix(), modelview.top_matrix()).matrix();
+}
+
 namespace {
 
-MatrixStack& current_stack(Context& ctx) { return ctx.matrices.current(ctx.textures.active); }
+constexpr float kIdentity[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
 
-void multiply(Context& ctx, const glm::mat4& m) {
-  current_stack(ctx).top() *= m;
+MesaMatrix& current_top(Context& ctx) {
+  return ctx.matrices.current(ctx.textures.active).top_matrix();
+}
+
+void load(Context& ctx, const float* m) {
+  MesaMatrix& top = current_top(ctx);
+  if (std::memcmp(m, top.data(), sizeof(kIdentity)) == 0) return;
+  top.load(m);
   ctx.matrices.changed();
 }
 
-void load(Context& ctx, const glm::mat4& m) {
-  current_stack(ctx).top() = m;
+void multiply(Context& ctx, const float* m) {
+  if (std::memcmp(m, kIdentity, sizeof(kIdentity)) == 0) return;  // bitwise, as Mesa tests it
+  current_top(ctx).multiply(m);
   ctx.matrices.changed();
+}
+
+// A column-major array of 16 values as floats; `transpose` reads a row-major one.
+template <typename T>
+void to_floats(const T* m, bool transpose, float* out) {
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r)
+      out[c * 4 + r] = static_cast<float>(transpose ? m[r * 4 + c] : m[c * 4 + r]);
 }
 
 template <typename T>
-glm::mat4 from_column_major(const T* m) {
-  glm::mat4 r;
-  for (int c = 0; c < 4; ++c)
-    for (int row = 0; row < 4; ++row) r[c][row] = static_cast<float>(m[c * 4 + row]);
-  return r;
+void load_matrix(Context& ctx, const T* m, bool transpose) {
+  if (m == nullptr) return;  // GL leaves this undefined; Mesa ignores it too
+  float f[16];
+  to_floats(m, transpose, f);
+  load(ctx, f);
 }
 
-void rotate(Context& ctx, double angle_deg, double x, double y, double z) {
-  const double len = std::sqrt(x * x + y * y + z * z);
-  // GL leaves a zero axis undefined; treat it as no rotation rather than producing NaNs.
-  if (!(len > 0.0) || !std::isfinite(len)) return;
-  multiply(ctx, glm::rotate(glm::mat4(1.0f), static_cast<float>(glm::radians(angle_deg)),
-                            glm::vec3(static_cast<float>(x / len), static_cast<float>(y / len),
-                                      static_cast<float>(z / len))));
+template <typename T>
+void mult_matrix(Context& ctx, const T* m, bool transpose) {
+  if (m == nullptr) return;
+  float f[16];
+  to_floats(m, transpose, f);
+  multiply(ctx, f);
 }
 
-void frustum(Context& ctx, double l, double r, double b, double t, double n, double f) {
-  if (n <= 0 || f <= 0 || l == r || b == t || n == f) {
-    record_error(ctx, GL_INVALID_VALUE);
-    return;
-  }
-  // Built in double precision, as the spec writes it, then stored as float.
-  glm::dmat4 m(0.0);
-  m[0][0] = 2 * n / (r - l);
-  m[1][1] = 2 * n / (t - b);
-  m[2][0] = (r + l) / (r - l);
-  m[2][1] = (t + b) / (t - b);
-  m[2][2] = -(f + n) / (f - n);
-  m[2][3] = -1;
-  m[3][2] = -2 * f * n / (f - n);
-  multiply(ctx, glm::mat4(m));
+void rotate(Context& ctx, float angle, float x, float y, float z) {
+  if (angle == 0.0f) return;
+  current_top(ctx).rotate(angle, x, y, z);
+  ctx.matrices.changed();
 }
 
-void ortho(Context& ctx, double l, double r, double b, double t, double n, double f) {
-  if (l == r || b == t || n == f) {
-    record_error(ctx, GL_INVALID_VALUE);
-    return;
-  }
-  glm::dmat4 m(1.0);
-  m[0][0] = 2 / (r - l);
-  m[1][1] = 2 / (t - b);
-  m[2][2] = -2 / (f - n);
-  m[3][0] = -(r + l) / (r - l);
-  m[3][1] = -(t + b) / (t - b);
-  m[3][2] = -(f + n) / (f - n);
-  multiply(ctx, glm::mat4(m));
+void translate(Context& ctx, float x, float y, float z) {
+  current_top(ctx).translate(x, y, z);
+  ctx.matrices.changed();
 }
+
+void scale(Context& ctx, float x, float y, float z) {
+  current_top(ctx).scale(x, y, z);
+  ctx.matrices.changed();
+}
+
+// The bounds are converted to float before they are checked, as in Mesa: bounds that only
+// differ in double precision are equal (GL_INVALID_VALUE).
+void frustum(Context& ctx, float l, float r, float b, float t, float n, float f) {
+  if (n <= 0 || f <= 0 || n == f || l == r || t == b) return record_error(ctx, GL_INVALID_VALUE);
+  current_top(ctx).frustum(l, r, b, t, n, f);
+  ctx.matrices.changed();
+}
+
+void ortho(Context& ctx, float l, float r, float b, float t, float n, float f) {
+  if (l == r || b == t || n == f) return record_error(ctx, GL_INVALID_VALUE);
+  current_top(ctx).ortho(l, r, b, t, n, f);
+  ctx.matrices.changed();
+}
+
+float f32(GLdouble v) { return static_cast<float>(v); }
 
 }  // namespace
 
 namespace impl {
 
 void glMatrixMode(Context& ctx, GLenum mode) {
-  if (mode != GL_MODELVIEW && mode != GL_PROJECTION && mode != GL_TEXTURE) {
-    record_error(ctx, GL_INVALID_ENUM);
-    return;
-  }
+  if (mode != GL_MODELVIEW && mode != GL_PROJECTION && mode != GL_TEXTURE)
+    return record_error(ctx, GL_INVALID_ENUM);
   ctx.matrices.mode = mode;
 }
 
-void glLoadIdentity(Context& ctx) { load(ctx, glm::mat4(1.0f)); }
-void glLoadMatrixf(Context& ctx, const GLfloat* m) { load(ctx, from_column_major(m)); }
-void glLoadMatrixd(Context& ctx, const GLdouble* m) { load(ctx, from_column_major(m)); }
-void glMultMatrixf(Context& ctx, const GLfloat* m) { multiply(ctx, from_column_major(m)); }
-void glMultMatrixd(Context& ctx, const GLdouble* m) { multiply(ctx, from_column_major(m)); }
-void glLoadTransposeMatrixf(Context& ctx, const GLfloat* m) {
-  load(ctx, glm::transpose(from_column_major(m)));
+void glLoadIdentity(Context& ctx) {
+  current_top(ctx).set_identity();
+  ctx.matrices.changed();
 }
-void glLoadTransposeMatrixd(Context& ctx, const GLdouble* m) {
-  load(ctx, glm::transpose(from_column_major(m)));
-}
-void glMultTransposeMatrixf(Context& ctx, const GLfloat* m) {
-  multiply(ctx, glm::transpose(from_column_major(m)));
-}
-void glMultTransposeMatrixd(Context& ctx, const GLdouble* m) {
-  multiply(ctx, glm::transpose(from_column_major(m)));
-}
+void glLoadMatrixf(Context& ctx, const GLfloat* m) { load_matrix(ctx, m, false); }
+void glLoadMatrixd(Context& ctx, const GLdouble* m) { load_matrix(ctx, m, false); }
+void glMultMatrixf(Context& ctx, const GLfloat* m) { mult_matrix(ctx, m, false); }
+void glMultMatrixd(Context& ctx, const GLdouble* m) { mult_matrix(ctx, m, false); }
+void glLoadTransposeMatrixf(Context& ctx, const GLfloat* m) { load_matrix(ctx, m, true); }
+void glLoadTransposeMatrixd(Context& ctx, const GLdouble* m) { load_matrix(ctx, m, true); }
+void glMultTransposeMatrixf(Context& ctx, const GLfloat* m) { mult_matrix(ctx, m, true); }
+void glMultTransposeMatrixd(Context& ctx, const GLdouble* m) { mult_matrix(ctx, m, true); }
 
 void glRotatef(Context& ctx, GLfloat angle, GLfloat x, GLfloat y, GLfloat z) {
   rotate(ctx, angle, x, y, z);
 }
 void glRotated(Context& ctx, GLdouble angle, GLdouble x, GLdouble y, GLdouble z) {
-  rotate(ctx, angle, x, y, z);
+  rotate(ctx, f32(angle), f32(x), f32(y), f32(z));
 }
-
-void glTranslatef(Context& ctx, GLfloat x, GLfloat y, GLfloat z) {
-  multiply(ctx, glm::translate(glm::mat4(1.0f), glm::vec3(x, y, z)));
-}
+void glTranslatef(Context& ctx, GLfloat x, GLfloat y, GLfloat z) { translate(ctx, x, y, z); }
 void glTranslated(Context& ctx, GLdouble x, GLdouble y, GLdouble z) {
-  multiply(ctx, glm::mat4(glm::translate(glm::dmat4(1.0), glm::dvec3(x, y, z))));
+  translate(ctx, f32(x), f32(y), f32(z));
 }
-void glScalef(Context& ctx, GLfloat x, GLfloat y, GLfloat z) {
-  multiply(ctx, glm::scale(glm::mat4(1.0f), glm::vec3(x, y, z)));
-}
+void glScalef(Context& ctx, GLfloat x, GLfloat y, GLfloat z) { scale(ctx, x, y, z); }
 void glScaled(Context& ctx, GLdouble x, GLdouble y, GLdouble z) {
-  multiply(ctx, glm::mat4(glm::scale(glm::dmat4(1.0), glm::dvec3(x, y, z))));
+  scale(ctx, f32(x), f32(y), f32(z));
 }
 
 void glFrustum(Context& ctx, GLdouble l, GLdouble r, GLdouble b, GLdouble t, GLdouble n,
                GLdouble f) {
-  frustum(ctx, l, r, b, t, n, f);
+  frustum(ctx, f32(l), f32(r), f32(b), f32(t), f32(n), f32(f));
 }
 void glOrtho(Context& ctx, GLdouble l, GLdouble r, GLdouble b, GLdouble t, GLdouble n, GLdouble f) {
-  ortho(ctx, l, r, b, t, n, f);
+  ortho(ctx, f32(l), f32(r), f32(b), f32(t), f32(n), f32(f));
 }
 
 void glPushMatrix(Context& ctx) {
-  if (!current_stack(ctx).push()) record_error(ctx, GL_STACK_OVERFLOW);
+  if (!ctx.matrices.current(ctx.textures.active).push()) record_error(ctx, GL_STACK_OVERFLOW);
 }
 void glPopMatrix(Context& ctx) {
-  if (!current_stack(ctx).pop()) {
-    record_error(ctx, GL_STACK_UNDERFLOW);
-    return;
-  }
+  if (!ctx.matrices.current(ctx.textures.active).pop())
+    return record_error(ctx, GL_STACK_UNDERFLOW);
   ctx.matrices.changed();
 }
 

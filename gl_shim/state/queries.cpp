@@ -8,39 +8,16 @@
 #include "gl_shim/context.hpp"
 #include "gl_shim/dispatch.hpp"
 #include "gl_shim/gl_impl_decls.hpp"
+#include "gl_shim/state/query_values.hpp"
 
 namespace glpt {
 namespace {
 
-// How a value converts between the glGet variants (spec 6.1.2).
-enum class Kind { kInt, kFloat, kColor, kBool };
-
-struct Value {
-  Kind kind = Kind::kInt;
-  int count = 0;
-  double v[16] = {};
-};
-
-Value ints(std::initializer_list<double> l) {
-  Value r;
-  r.kind = Kind::kInt;
-  for (double d : l) r.v[r.count++] = d;
-  return r;
-}
-Value floats(const float* p, int n, Kind kind = Kind::kFloat) {
-  Value r;
-  r.kind = kind;
-  r.count = n;
-  for (int i = 0; i < n; ++i) r.v[i] = p[i];
-  return r;
-}
-Value boolean(bool b) {
-  Value r;
-  r.kind = Kind::kBool;
-  r.count = 1;
-  r.v[0] = b ? 1 : 0;
-  return r;
-}
+using query::boolean;
+using query::floats;
+using query::ints;
+using query::Kind;
+using query::Value;
 
 // GL_CURRENT_RASTER_SECONDARY_COLOR is not in the GL 1.5 registry selection; Mesa answers it.
 constexpr GLenum kCurrentRasterSecondaryColor = 0x845F;
@@ -131,7 +108,7 @@ bool lookup(const Context& ctx, GLenum pname, Value* out) {
       *out = ints({1 << 20});
       return true;
     case GL_SUBPIXEL_BITS:
-      *out = ints({4});
+      *out = ints({8});  // Mesa llvmpipe's
       return true;
     case GL_AUX_BUFFERS:
       *out = ints({0});
@@ -243,24 +220,32 @@ bool lookup(const Context& ctx, GLenum pname, Value* out) {
     case GL_COLOR_MATERIAL_PARAMETER:
       *out = ints({double(ctx.lighting.color_material_mode)});
       return true;
-    // The framebuffer glpt presents: RGBA8, 24-bit depth, 8-bit stencil, double-buffered.
+    // The drawable's buffers (its GLX visual / EGL config): RGBA8 colour.
     case GL_RED_BITS:
     case GL_GREEN_BITS:
     case GL_BLUE_BITS:
-    case GL_ALPHA_BITS:
       *out = ints({8});
+      return true;
+    case GL_ALPHA_BITS:
+      *out = ints({ctx.drawable.has_alpha ? 8.0 : 0.0});
       return true;
     case GL_DEPTH_BITS:
-      *out = ints({24});
+      *out = ints({double(ctx.drawable.depth_bits)});
       return true;
     case GL_STENCIL_BITS:
-      *out = ints({8});
+      *out = ints({double(ctx.drawable.stencil_bits)});
+      return true;
+    case GL_ACCUM_RED_BITS:
+    case GL_ACCUM_GREEN_BITS:
+    case GL_ACCUM_BLUE_BITS:
+    case GL_ACCUM_ALPHA_BITS:
+      *out = ints({double(ctx.drawable.accum_bits)});
       return true;
     case GL_INDEX_BITS:
       *out = ints({0});
       return true;
     case GL_DOUBLEBUFFER:
-      *out = boolean(true);
+      *out = boolean(ctx.drawable.double_buffered);
       return true;
     case GL_RGBA_MODE:
       *out = boolean(true);
@@ -270,8 +255,8 @@ bool lookup(const Context& ctx, GLenum pname, Value* out) {
       *out = boolean(false);
       return true;
 
-    // ---- the raster position (GL 1.5 2.13, table 6.9) and the accumulation buffer (4.2.4) ----
-    // (gl_shim/pixels/). Colours convert as colours; the index is Mesa's 1 in RGBA mode.
+    // ---- the raster position (GL 1.5 2.13, table 6.9; gl_shim/pixels/) ----
+    // Colours convert as colours; the index is Mesa's 1 in RGBA mode.
     case GL_CURRENT_RASTER_POSITION:
       *out = floats(&ctx.raster_position.window.x, 4);
       return true;
@@ -293,18 +278,10 @@ bool lookup(const Context& ctx, GLenum pname, Value* out) {
     case GL_CURRENT_RASTER_INDEX:
       *out = ints({1});
       return true;
-    case GL_ACCUM_RED_BITS:
-    case GL_ACCUM_GREEN_BITS:
-    case GL_ACCUM_BLUE_BITS:
-    case GL_ACCUM_ALPHA_BITS:
-      *out = ints({double(ctx.target != nullptr ? ctx.target->config().accum_bits : 0)});
-      return true;
-    case GL_ACCUM_CLEAR_VALUE:
-      *out = floats(&ctx.framebuffer.clear_accum.x, 4, Kind::kColor);
-      return true;
     default:
       break;
   }
+  if (lookup_fixed_function_state(ctx, pname, out)) return true;
   if (auto on = capability_enabled(const_cast<Context&>(ctx), pname)) {
     *out = boolean(*on);
     return true;
@@ -322,17 +299,7 @@ void get(Context& ctx, GLenum pname, T* out) {
     if constexpr (std::is_same_v<T, GLboolean>) {
       out[i] = d != 0.0 ? 1 : 0;
     } else if constexpr (std::is_same_v<T, GLint>) {
-      if (v.kind == Kind::kColor) {
-        // Colours map linearly [-1,1] -> [-2^31, 2^31-1].
-        out[i] = static_cast<GLint>(
-            std::clamp(std::llround((4294967295.0 * d - 1.0) / 2.0),
-                       static_cast<long long>(std::numeric_limits<GLint>::min()),
-                       static_cast<long long>(std::numeric_limits<GLint>::max())));
-      } else {
-        out[i] = static_cast<GLint>(
-            std::clamp(std::llround(d), static_cast<long long>(std::numeric_limits<GLint>::min()),
-                       static_cast<long long>(std::numeric_limits<GLint>::max())));
-      }
+      out[i] = v.kind == Kind::kColor ? query::color_to_int(d) : query::round_to_int(d);
     } else {
       out[i] = static_cast<T>(d);
     }

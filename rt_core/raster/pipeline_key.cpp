@@ -236,7 +236,8 @@ ColorTargets resolve_draw_buffer(uint32_t draw_buffer, bool double_buffered) {
       return ColorTargets::kFront;
     case GL_BACK:
     case GL_BACK_LEFT:
-      return double_buffered ? ColorTargets::kBack : ColorTargets::kNone;
+      // A single-buffered drawable has one buffer; Mesa draws GL_BACK into it too.
+      return double_buffered ? ColorTargets::kBack : ColorTargets::kFront;
     case GL_FRONT_AND_BACK:
       return double_buffered ? ColorTargets::kFrontAndBack : ColorTargets::kFront;
     default:  // right buffers: glpt's drawables are not stereo
@@ -385,10 +386,24 @@ DrawSetup make_draw_setup(const rec::StateSnapshot& state, const DrawContext& co
   sc[GLPT_SC_FS_ALPHA_FOG] = alpha_fog;
   key.flat = prim.shade_model == GL_FLAT;
   key.clip_variant = transform.clip_plane_mask != 0 || lines;
+  // Unfilled polygons become lines or points in the geometry shader, which culls, offsets and
+  // honours edge flags itself (Vulkan's polygon mode has no edge flags).
+  const bool unfilled = triangles && mode != GL_FILL;
+  if (unfilled) {
+    key.unfilled = mode == GL_LINE ? 1 : 2;
+    key.clip_variant = 1;
+    uint32_t u = 0;
+    if (prim.front_face == GL_CW) u |= GLPT_UNFILLED_FRONT_CW;
+    if (cull & VK_CULL_MODE_FRONT_BIT) u |= GLPT_UNFILLED_CULL_FRONT;
+    if (cull & VK_CULL_MODE_BACK_BIT) u |= GLPT_UNFILLED_CULL_BACK;
+    if (mode == GL_LINE ? prim.offset_line : prim.offset_point) u |= GLPT_UNFILLED_OFFSET;
+    if (prim.shade_model == GL_FLAT) u |= GLPT_UNFILLED_FLAT;
+    sc[GLPT_SC_UNFILLED] = u;
+  }
 
   // ---- fixed function
   key.topology = static_cast<uint8_t>(context.topology);
-  key.polygon_mode = static_cast<uint8_t>(polygon_mode(mode));
+  key.polygon_mode = static_cast<uint8_t>(unfilled ? VK_POLYGON_MODE_FILL : polygon_mode(mode));
   key.line_mode =
       static_cast<uint8_t>(prim.line_smooth ? VK_LINE_RASTERIZATION_MODE_RECTANGULAR_SMOOTH_EXT
                                             : VK_LINE_RASTERIZATION_MODE_BRESENHAM_EXT);
@@ -420,7 +435,7 @@ DrawSetup make_draw_setup(const rec::StateSnapshot& state, const DrawContext& co
 
   // ---- dynamic state
   DynamicDrawState& d = setup.dynamic;
-  d.cull = triangles ? cull : VkCullModeFlags{0};
+  d.cull = triangles && !unfilled ? cull : VkCullModeFlags{0};
   // Vulkan's signed area has the opposite sign of GL's for the same coordinates, and glpt's
   // framebuffer coordinates are GL's window coordinates (row 0 is GL's bottom row): GL's
   // counter-clockwise is Vulkan's clockwise.
@@ -439,7 +454,7 @@ DrawSetup make_draw_setup(const rec::StateSnapshot& state, const DrawContext& co
   d.stencil_write_mask = ops.stencil_write_mask & stencil_max;
   d.stencil_reference = static_cast<uint32_t>(
       std::clamp<int32_t>(ops.stencil_ref, 0, static_cast<int32_t>(stencil_max)));
-  if (triangles) {
+  if (triangles && !unfilled) {
     d.depth_bias = mode == GL_FILL   ? prim.offset_fill
                    : mode == GL_LINE ? prim.offset_line
                                      : prim.offset_point;

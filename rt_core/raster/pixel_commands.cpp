@@ -388,10 +388,9 @@ void RasterRenderer::record_pixels(Recording& r, size_t index) {
   const VkRect2D scissor = scissor_of(ops, drawable_);
   if (scissor.extent.width == 0 || scissor.extent.height == 0) return;
   auto draw_quad = [&](uint32_t keep) {
-    const gpu::RasterPushConstants push{glm::uvec4(plan.state, keep, 0, 0)};
-    vkCmdPushConstants(r.cmd, pipelines_.layout(),
-                       VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof push,
-                       &push);
+    const gpu::RasterPushConstants push{glm::uvec4(plan.state, 0, keep, 0)};
+    vkCmdPushConstants(r.cmd, pipelines_.layout(), pipelines_.push_constant_stages(), 0,
+                       sizeof push, &push);
     std::array<VkBuffer, GLPT_RASTER_ATTR_COUNT> buffers;
     buffers.fill(vertices_.handle());
     vkCmdBindVertexBuffers2(r.cmd, 0, GLPT_RASTER_ATTR_COUNT, buffers.data(),
@@ -424,10 +423,11 @@ void RasterRenderer::record_pixels(Recording& r, size_t index) {
     d.stencil_reference = 0;
     set_dynamic_state(r, d, viewport, scissor);
     draw_quad(GLPT_PIXELS_KEEP_ALL);
+    d.stencil_reference = 0xFF;
     for (uint32_t bit = 0; bit < 8; ++bit) {
       if (!(write_mask & (1u << bit))) continue;
-      vkCmdSetStencilWriteMask(r.cmd, VK_STENCIL_FACE_FRONT_AND_BACK, 1u << bit);
-      vkCmdSetStencilReference(r.cmd, VK_STENCIL_FACE_FRONT_AND_BACK, 0xFF);
+      d.stencil_write_mask = 1u << bit;
+      set_dynamic_state(r, d, viewport, scissor);
       draw_quad(GLPT_PIXELS_KEEP_BIT | bit);
     }
     return;
@@ -535,6 +535,7 @@ void RasterRenderer::execute_accum(const rec::FrameRecord& record, const rec::Ac
           (!front && targets == ColorTargets::kBack)))
       continue;
     read_image(*image, VK_IMAGE_ASPECT_COLOR_BIT, 4, rect.x, rect.y, rect.width, rect.height, rgba);
+    swap_red_and_blue(rgba.data(), rect.pixels());  // BGRA8 buffers
     accum_.return_to(rect, accum.value, mask, rgba);
     write_image(*image, {{rect.x, rect.y}, {rect.width, rect.height}}, rgba);
   }

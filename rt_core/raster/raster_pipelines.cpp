@@ -16,6 +16,8 @@
 #include "raster_ff_smooth_frag_spv.h"
 #include "raster_ff_vert_spv.h"
 #include "raster_types.h"
+#include "raster_unfilled_lines_geom_spv.h"
+#include "raster_unfilled_points_geom_spv.h"
 #include "rt_core/vk/vk_error.hpp"
 #include "rt_core/vk/vk_info.hpp"
 
@@ -62,6 +64,11 @@ RasterPipelines::RasterPipelines(const VulkanDevice& device) : device_(device) {
   for (uint32_t i = 0; i < 4 * GLPT_RASTER_MAX_UNITS; ++i)
     bindings.push_back({GLPT_RASTER_BINDING_TEXTURES + i, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
                         1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr});
+  const VkShaderStageFlags geometry =
+      device.has_geometry_shader() ? VK_SHADER_STAGE_GEOMETRY_BIT : 0;
+  bindings.push_back({GLPT_RASTER_BINDING_EDGES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1,
+                      VK_SHADER_STAGE_VERTEX_BIT | geometry, nullptr});
+  bindings[0].stageFlags |= geometry;
   bindings.push_back({GLPT_RASTER_BINDING_PIXELS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1,
                       VK_SHADER_STAGE_FRAGMENT_BIT, nullptr});
   auto set_info = make_info<VkDescriptorSetLayoutCreateInfo>(
@@ -73,8 +80,8 @@ RasterPipelines::RasterPipelines(const VulkanDevice& device) : device_(device) {
   GLPT_VK_CHECK(vkCreateDescriptorSetLayout(dev, &set_info, nullptr, &set_layout));
   set_layout_ = vk::DescriptorSetLayout(set_layout, {dev});
 
-  VkPushConstantRange push{VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
-                           sizeof(gpu::RasterPushConstants)};
+  push_stages_ = VK_SHADER_STAGE_VERTEX_BIT | geometry | VK_SHADER_STAGE_FRAGMENT_BIT;
+  VkPushConstantRange push{push_stages_, 0, sizeof(gpu::RasterPushConstants)};
   auto layout_info =
       make_info<VkPipelineLayoutCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO);
   layout_info.setLayoutCount = 1;
@@ -91,6 +98,10 @@ RasterPipelines::RasterPipelines(const VulkanDevice& device) : device_(device) {
   fragment_flat_ = make_module(dev, raster_ff_flat_frag_spv);
   fragment_pixels_ = make_module(dev, raster_ff_pixels_frag_spv);
   fragment_pixels_depth_ = make_module(dev, raster_ff_pixels_depth_frag_spv);
+  if (device.has_geometry_shader()) {
+    unfilled_lines_ = make_module(dev, raster_unfilled_lines_geom_spv);
+    unfilled_points_ = make_module(dev, raster_unfilled_points_geom_spv);
+  }
 
   cache_path_ = pipeline_cache_path(device.name());
   std::vector<char> data = cache_path_.empty() ? std::vector<char>() : read_file(cache_path_);
@@ -146,7 +157,7 @@ VkPipeline RasterPipelines::create(const PipelineKey& key) {
     entries[i] = {i, static_cast<uint32_t>(i * sizeof(uint32_t)), sizeof(uint32_t)};
   VkSpecializationInfo specialization{PipelineKey::kConstants, entries.data(), sizeof key.constants,
                                       key.constants};
-  std::array<VkPipelineShaderStageCreateInfo, 2> stages{};
+  std::array<VkPipelineShaderStageCreateInfo, 3> stages{};
   stages[0] = make_info<VkPipelineShaderStageCreateInfo>(
       VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO);
   stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
@@ -159,6 +170,13 @@ VkPipeline RasterPipelines::create(const PipelineKey& key) {
                      : key.pixels    ? fragment_pixels_.get()
                      : key.flat      ? fragment_flat_.get()
                                      : fragment_smooth_.get();
+  uint32_t stage_count = 2;
+  if (key.unfilled != 0 && unfilled_lines_) {
+    stages[2] = stages[0];
+    stages[2].stage = VK_SHADER_STAGE_GEOMETRY_BIT;
+    stages[2].module = key.unfilled == 1 ? unfilled_lines_.get() : unfilled_points_.get();
+    stage_count = 3;
+  }
 
   // One binding per attribute; strides are dynamic (0 for an attribute with one value).
   struct Attribute {
@@ -217,6 +235,9 @@ VkPipeline RasterPipelines::create(const PipelineKey& key) {
   auto line_state = make_info<VkPipelineRasterizationLineStateCreateInfoEXT>(
       VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_LINE_STATE_CREATE_INFO_EXT, &provoking);
   line_state.lineRasterizationMode = static_cast<VkLineRasterizationModeEXT>(key.line_mode);
+  if (line_state.lineRasterizationMode == VK_LINE_RASTERIZATION_MODE_RECTANGULAR_SMOOTH_EXT &&
+      !device_.has_smooth_lines())
+    line_state.lineRasterizationMode = VK_LINE_RASTERIZATION_MODE_BRESENHAM_EXT;
   line_state.stippledLineEnable = key.line_stipple;
   line_state.lineStippleFactor = 1;
   line_state.lineStipplePattern = 0xFFFF;
@@ -284,7 +305,7 @@ VkPipeline RasterPipelines::create(const PipelineKey& key) {
 
   auto info = make_info<VkGraphicsPipelineCreateInfo>(
       VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO, &rendering);
-  info.stageCount = static_cast<uint32_t>(stages.size());
+  info.stageCount = stage_count;
   info.pStages = stages.data();
   info.pVertexInputState = &vertex_input;
   info.pInputAssemblyState = &input_assembly;

@@ -15,7 +15,9 @@
 
 namespace glpt::rt {
 
-inline constexpr VkFormat kColorFormat = VK_FORMAT_R8G8B8A8_UNORM;
+// BGRA: the byte order X windows show (32-bit 0x..RRGGBB pixels), so presenting is a plain copy.
+// Blending, logic ops and masks work per channel, so the order changes no GL result.
+inline constexpr VkFormat kColorFormat = VK_FORMAT_B8G8R8A8_UNORM;
 inline constexpr VkFormat kDepthStencilFormat = VK_FORMAT_D24_UNORM_S8_UINT;
 
 class RasterPipelines {
@@ -30,6 +32,7 @@ class RasterPipelines {
 
   VkPipelineLayout layout() const { return layout_.get(); }
   VkDescriptorSetLayout set_layout() const { return set_layout_.get(); }
+  VkShaderStageFlags push_constant_stages() const { return push_stages_; }
   size_t size() const { return pipelines_.size(); }
 
  private:
@@ -40,6 +43,8 @@ class RasterPipelines {
   vk::PipelineLayout layout_;
   vk::ShaderModule vertex_, vertex_clip_, fragment_smooth_, fragment_flat_;
   vk::ShaderModule fragment_pixels_, fragment_pixels_depth_;
+  vk::ShaderModule unfilled_lines_, unfilled_points_;  // null without geometry shaders
+  VkShaderStageFlags push_stages_ = 0;
   vk::PipelineCache cache_;
   std::string cache_path_;
   std::unordered_map<PipelineKey, vk::Pipeline, PipelineKeyHash> pipelines_;

@@ -6,12 +6,18 @@
 #include <algorithm>
 #include <array>
 #include <cstring>
+#include <utility>
 #include <vector>
 
 #include "raster_types.h"
 #include "rt_core/raster/raster_renderer.hpp"
 
 namespace glpt::rt {
+
+// The colour buffers are BGRA8 (kColorFormat); the front end speaks RGBA8.
+inline void swap_red_and_blue(uint8_t* pixels, size_t count) {
+  for (size_t i = 0; i < count; ++i) std::swap(pixels[4 * i], pixels[4 * i + 2]);
+}
 
 // Appends values to the per-record upload buffer, 16-byte aligned.
 class Arena {
@@ -51,6 +57,7 @@ struct RasterRenderer::DrawGeometry {
   std::array<VkDeviceSize, GLPT_RASTER_ATTR_COUNT> strides{};
   VkDeviceSize index_offset = 0;
   uint32_t index_count = 0;
+  VkDeviceSize edge_offset = 0;  // unfilled draws: per-triangle boundary-edge masks
   RasterTopology topology = RasterTopology::kTriangles;
 };
 
@@ -79,6 +86,11 @@ struct RasterRenderer::Recording {
   // Texture descriptors currently pushed, per binding (to skip redundant pushes).
   std::array<VkImageView, 4 * GLPT_RASTER_MAX_UNITS> bound_views{};
   bool descriptors_pushed = false;
+  // Dynamic state last set in this command buffer.
+  bool dynamic_valid = false;
+  DynamicDrawState dynamic;
+  VkViewport viewport{};
+  VkRect2D scissor{};
 };
 
 }  // namespace glpt::rt

@@ -81,11 +81,15 @@ void RasterRenderer::ensure_buffers(const rec::DrawableConfig& drawable) {
 }
 
 void RasterRenderer::execute(const rec::FrameRecord& record, const rec::DrawableConfig& drawable,
-                             FrameStats& stats, const std::vector<size_t>* commands) {
+                             FrameStats& stats, const std::vector<size_t>* commands,
+                             const FrameEnd* end) {
   const Stopwatch timer;
   ++frame_;
   ensure_buffers(drawable);
-  if (!front_) return;
+  if (!front_) {
+    if (end && end->front_rgba) end->front_rgba->clear();
+    return;
+  }
   std::vector<size_t> all;
   if (commands == nullptr) {
     all.resize(record.commands.size());
@@ -130,6 +134,7 @@ void RasterRenderer::execute(const rec::FrameRecord& record, const rec::Drawable
   r.clear_geometry.index_offset = arena.add(clear_indices, 3);
   r.clear_geometry.index_count = 3;
   std::vector<uint32_t> indices;
+  std::vector<uint8_t> edge_masks;
   size_t next_clear_state = state_count;
   for (size_t i : *commands) {
     const rec::Command& command = record.commands[i];
@@ -200,9 +205,18 @@ void RasterRenderer::execute(const rec::FrameRecord& record, const rec::Drawable
           if (ok(l.v[0]) && ok(l.v[1])) indices.insert(indices.end(), {l.v[0], l.v[1]});
       } else {
         g.topology = RasterTopology::kTriangles;
-        for (const auto& t : decomposed_.triangles)
-          if (ok(t.v[0]) && ok(t.v[1]) && ok(t.v[2]))
-            indices.insert(indices.end(), {t.v[0], t.v[1], t.v[2]});
+        edge_masks.clear();
+        for (const auto& t : decomposed_.triangles) {
+          if (!ok(t.v[0]) || !ok(t.v[1]) || !ok(t.v[2])) continue;
+          indices.insert(indices.end(), {t.v[0], t.v[1], t.v[2]});
+          edge_masks.push_back(t.boundary_edges);
+        }
+        // The geometry shader of unfilled polygons reads each triangle's boundary edges.
+        const rec::PrimitiveState& p = record.states[draw->state].raster->primitive;
+        if (p.polygon_mode_front != GL_FILL || p.polygon_mode_back != GL_FILL) {
+          edge_masks.resize((edge_masks.size() + 3) & ~size_t{3}, 0);
+          g.edge_offset = arena.add(edge_masks.data(), edge_masks.size());
+        }
       }
     }
     g.index_offset = arena.add(indices.data(), indices.size());
@@ -213,21 +227,38 @@ void RasterRenderer::execute(const rec::FrameRecord& record, const rec::Drawable
   ensure_capacity(*device_, states_, states_bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   states_.write(states.data(), states_bytes);
   ensure_capacity(*device_, vertices_, arena.size(),
-                  VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+                  VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_INDEX_BUFFER_BIT |
+                      VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   vertices_.write(upload.data(), arena.size());
   upload_pixels();
   stats.upload_ms += timer.elapsed_ms();
 
+  if (end && end->present_to && end->present_to->generation != present_generation_) {
+    // The window's memory, imported once per allocation (empty if the device cannot import it).
+    present_ = GpuBuffer();
+    const size_t bytes = (size_t{end->present_to->width} * end->present_to->height * 4 +
+                          device_->host_pointer_alignment() - 1) &
+                         ~(device_->host_pointer_alignment() - 1);
+    present_ = GpuBuffer::import_host(*device_, end->present_to->pixels, bytes,
+                                      VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+    present_generation_ = end->present_to->generation;
+  }
+  if (end && (end->front_rgba || (end->present_to && !present_)))
+    ensure_capacity(*device_, readback_, size_t{drawable_.width} * drawable_.height * 4,
+                    VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+
   // ---- record and run: one submission, or one more after each glAccum that reads or writes
-  // colour (the accumulation buffer is updated on the CPU, as Mesa does)
+  // colour (the accumulation buffer is updated on the CPU, as Mesa does); the frame end goes with
+  // the last
   const Stopwatch raster_timer;
   size_t position = 0;
-  while (position < commands->size()) {
+  do {
     device_->submit_and_wait([&](VkCommandBuffer cmd) {
       r.cmd = cmd;
       r.rendering = false;
       r.bound_pipeline = VK_NULL_HANDLE;
       r.descriptors_pushed = false;
+      r.dynamic_valid = false;
       for (; position < commands->size(); ++position) {
         const size_t i = (*commands)[position];
         const rec::Command& command = record.commands[i];
@@ -244,11 +275,26 @@ void RasterRenderer::execute(const rec::FrameRecord& record, const rec::Drawable
       }
       if (r.rendering) vkCmdEndRendering(cmd);
       r.rendering = false;
+      if (end && position == commands->size()) record_frame_end(cmd, *end);
     });
     if (position < commands->size())
       execute_accum(record, std::get<rec::Accum>(record.commands[(*commands)[position++]]));
-  }
+  } while (position < commands->size());
   stats.raster_ms += raster_timer.elapsed_ms();
+  const size_t pixel_count = size_t{drawable_.width} * drawable_.height;
+  if (end && end->front_rgba) {
+    end->front_rgba->resize(pixel_count * 4);
+    std::memcpy(end->front_rgba->data(), readback_.mapped(), pixel_count * 4);
+    swap_red_and_blue(end->front_rgba->data(), pixel_count);
+  }
+  // Without an imported buffer the window's memory is filled here, rows flipped.
+  if (end && end->present_to && !present_ && end->present_to->width == drawable_.width &&
+      end->present_to->height == drawable_.height) {
+    const size_t row = size_t{drawable_.width} * 4;
+    const auto* src = static_cast<const uint8_t*>(readback_.mapped());
+    for (uint32_t y = 0; y < drawable_.height; ++y)
+      std::memcpy(end->present_to->pixels + (drawable_.height - 1 - y) * row, src + y * row, row);
+  }
   textures_.evict_unused(frame_);
 }
 
@@ -322,16 +368,20 @@ void RasterRenderer::bind(Recording& r, const PipelineKey& key,
   }
   if (r.descriptors_pushed && views == r.bound_views) return;
   std::array<VkDescriptorImageInfo, 4 * GLPT_RASTER_MAX_UNITS> images{};
-  std::array<VkWriteDescriptorSet, 2 + 4 * GLPT_RASTER_MAX_UNITS> writes{};
+  std::array<VkWriteDescriptorSet, 3 + 4 * GLPT_RASTER_MAX_UNITS> writes{};
   VkDescriptorBufferInfo states{states_.handle(), 0, VK_WHOLE_SIZE};
   writes[0] = make_info<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
   writes[0].dstBinding = GLPT_RASTER_BINDING_STATES;
   writes[0].descriptorCount = 1;
   writes[0].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
   writes[0].pBufferInfo = &states;
+  VkDescriptorBufferInfo edges{vertices_.handle(), 0, VK_WHOLE_SIZE};
+  writes[1] = writes[0];
+  writes[1].dstBinding = GLPT_RASTER_BINDING_EDGES;
+  writes[1].pBufferInfo = &edges;
   for (uint32_t b = 0; b < images.size(); ++b) {
     images[b] = {samplers[b], views[b], VK_IMAGE_LAYOUT_GENERAL};
-    VkWriteDescriptorSet& w = writes[1 + b];
+    VkWriteDescriptorSet& w = writes[2 + b];
     w = make_info<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
     w.dstBinding = GLPT_RASTER_BINDING_TEXTURES + b;
     w.descriptorCount = 1;
@@ -340,12 +390,9 @@ void RasterRenderer::bind(Recording& r, const PipelineKey& key,
   }
   // The pixel rectangles' images (pixel_commands.cpp); the buffer always exists.
   VkDescriptorBufferInfo pixels{pixels_.handle(), 0, VK_WHOLE_SIZE};
-  VkWriteDescriptorSet& pixel_write = writes.back();
-  pixel_write = make_info<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
-  pixel_write.dstBinding = GLPT_RASTER_BINDING_PIXELS;
-  pixel_write.descriptorCount = 1;
-  pixel_write.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-  pixel_write.pBufferInfo = &pixels;
+  writes.back() = writes[0];
+  writes.back().dstBinding = GLPT_RASTER_BINDING_PIXELS;
+  writes.back().pBufferInfo = &pixels;
   push_descriptor_set_(r.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.layout(), 0,
                        static_cast<uint32_t>(writes.size()), writes.data());
   r.bound_views = views;
@@ -354,27 +401,48 @@ void RasterRenderer::bind(Recording& r, const PipelineKey& key,
 
 void RasterRenderer::set_dynamic_state(Recording& r, const DynamicDrawState& d,
                                        const VkViewport& viewport, const VkRect2D& scissor) {
+  // Only what changed since the last draw of this command buffer: lavapipe turns dynamic state
+  // changes into new gallium state objects, which cost more than the draw of a small primitive.
   VkCommandBuffer cmd = r.cmd;
-  vkCmdSetViewport(cmd, 0, 1, &viewport);
-  vkCmdSetScissor(cmd, 0, 1, &scissor);
-  vkCmdSetCullMode(cmd, d.cull);
-  vkCmdSetFrontFace(cmd, d.front_face);
-  vkCmdSetDepthTestEnable(cmd, d.depth_test);
-  vkCmdSetDepthWriteEnable(cmd, d.depth_write);
-  vkCmdSetDepthCompareOp(cmd, d.depth_compare);
-  vkCmdSetStencilTestEnable(cmd, d.stencil_test);
-  vkCmdSetStencilOp(cmd, VK_STENCIL_FACE_FRONT_AND_BACK, d.stencil_fail, d.stencil_pass,
-                    d.stencil_depth_fail, d.stencil_compare);
-  vkCmdSetStencilCompareMask(cmd, VK_STENCIL_FACE_FRONT_AND_BACK, d.stencil_compare_mask);
-  vkCmdSetStencilWriteMask(cmd, VK_STENCIL_FACE_FRONT_AND_BACK, d.stencil_write_mask);
-  vkCmdSetStencilReference(cmd, VK_STENCIL_FACE_FRONT_AND_BACK, d.stencil_reference);
-  vkCmdSetDepthBiasEnable(cmd, d.depth_bias);
-  vkCmdSetDepthBias(cmd, d.depth_bias_constant, 0.0f, d.depth_bias_slope);
-  vkCmdSetLineWidth(cmd, d.line_width);
-  set_line_stipple_(cmd, d.line_stipple_factor, d.line_stipple_pattern);
-  const float blend[4] = {d.blend_constant.r, d.blend_constant.g, d.blend_constant.b,
-                          d.blend_constant.a};
-  vkCmdSetBlendConstants(cmd, blend);
+  const bool all = !r.dynamic_valid;
+  const DynamicDrawState& o = r.dynamic;
+  if (all || std::memcmp(&viewport, &r.viewport, sizeof viewport) != 0)
+    vkCmdSetViewport(cmd, 0, 1, &viewport);
+  if (all || std::memcmp(&scissor, &r.scissor, sizeof scissor) != 0)
+    vkCmdSetScissor(cmd, 0, 1, &scissor);
+  if (all || d.cull != o.cull) vkCmdSetCullMode(cmd, d.cull);
+  if (all || d.front_face != o.front_face) vkCmdSetFrontFace(cmd, d.front_face);
+  if (all || d.depth_test != o.depth_test) vkCmdSetDepthTestEnable(cmd, d.depth_test);
+  if (all || d.depth_write != o.depth_write) vkCmdSetDepthWriteEnable(cmd, d.depth_write);
+  if (all || d.depth_compare != o.depth_compare) vkCmdSetDepthCompareOp(cmd, d.depth_compare);
+  if (all || d.stencil_test != o.stencil_test) vkCmdSetStencilTestEnable(cmd, d.stencil_test);
+  if (all || d.stencil_fail != o.stencil_fail || d.stencil_pass != o.stencil_pass ||
+      d.stencil_depth_fail != o.stencil_depth_fail || d.stencil_compare != o.stencil_compare)
+    vkCmdSetStencilOp(cmd, VK_STENCIL_FACE_FRONT_AND_BACK, d.stencil_fail, d.stencil_pass,
+                      d.stencil_depth_fail, d.stencil_compare);
+  if (all || d.stencil_compare_mask != o.stencil_compare_mask)
+    vkCmdSetStencilCompareMask(cmd, VK_STENCIL_FACE_FRONT_AND_BACK, d.stencil_compare_mask);
+  if (all || d.stencil_write_mask != o.stencil_write_mask)
+    vkCmdSetStencilWriteMask(cmd, VK_STENCIL_FACE_FRONT_AND_BACK, d.stencil_write_mask);
+  if (all || d.stencil_reference != o.stencil_reference)
+    vkCmdSetStencilReference(cmd, VK_STENCIL_FACE_FRONT_AND_BACK, d.stencil_reference);
+  if (all || d.depth_bias != o.depth_bias) vkCmdSetDepthBiasEnable(cmd, d.depth_bias);
+  if (all || d.depth_bias_constant != o.depth_bias_constant ||
+      d.depth_bias_slope != o.depth_bias_slope)
+    vkCmdSetDepthBias(cmd, d.depth_bias_constant, 0.0f, d.depth_bias_slope);
+  if (all || d.line_width != o.line_width) vkCmdSetLineWidth(cmd, d.line_width);
+  if (all || d.line_stipple_factor != o.line_stipple_factor ||
+      d.line_stipple_pattern != o.line_stipple_pattern)
+    set_line_stipple_(cmd, d.line_stipple_factor, d.line_stipple_pattern);
+  if (all || d.blend_constant != o.blend_constant) {
+    const float blend[4] = {d.blend_constant.r, d.blend_constant.g, d.blend_constant.b,
+                            d.blend_constant.a};
+    vkCmdSetBlendConstants(cmd, blend);
+  }
+  r.dynamic = d;
+  r.viewport = viewport;
+  r.scissor = scissor;
+  r.dynamic_valid = true;
 }
 
 void RasterRenderer::record_clear(Recording& r, const rec::Clear& clear, uint32_t state_index) {
@@ -451,8 +519,7 @@ void RasterRenderer::record_clear(Recording& r, const rec::Clear& clear, uint32_
       0.0f, 0.0f, static_cast<float>(drawable_.width), static_cast<float>(drawable_.height), z, z};
   set_dynamic_state(r, d, viewport, rect);
   const gpu::RasterPushConstants push{glm::uvec4(state_index, 0, 0, 0)};
-  vkCmdPushConstants(r.cmd, pipelines_.layout(),
-                     VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof push,
+  vkCmdPushConstants(r.cmd, pipelines_.layout(), pipelines_.push_constant_stages(), 0, sizeof push,
                      &push);
   const DrawGeometry& g = r.clear_geometry;
   std::array<VkBuffer, GLPT_RASTER_ATTR_COUNT> buffers;
@@ -502,9 +569,9 @@ void RasterRenderer::record_draw_pass(Recording& r, const rec::Draw& draw, const
                             t.depth_near,
                             t.depth_far};
   set_dynamic_state(r, d, viewport, scissor);
-  const gpu::RasterPushConstants push{glm::uvec4(draw.state, 0, 0, 0)};
-  vkCmdPushConstants(r.cmd, pipelines_.layout(),
-                     VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof push,
+  const gpu::RasterPushConstants push{
+      glm::uvec4(draw.state, static_cast<uint32_t>(g.edge_offset / 4), 0, 0)};
+  vkCmdPushConstants(r.cmd, pipelines_.layout(), pipelines_.push_constant_stages(), 0, sizeof push,
                      &push);
   std::array<VkBuffer, GLPT_RASTER_ATTR_COUNT> buffers;
   buffers.fill(vertices_.handle());
@@ -512,6 +579,51 @@ void RasterRenderer::record_draw_pass(Recording& r, const rec::Draw& draw, const
                           nullptr, g.strides.data());
   vkCmdBindIndexBuffer(r.cmd, vertices_.handle(), g.index_offset, VK_INDEX_TYPE_UINT32);
   vkCmdDrawIndexed(r.cmd, g.index_count, 1, 0, 0, 0);
+}
+
+void RasterRenderer::record_frame_end(VkCommandBuffer cmd, const FrameEnd& end) {
+  auto barrier = make_info<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
+  barrier.srcAccessMask = VK_ACCESS_MEMORY_WRITE_BIT;
+  barrier.dstAccessMask = VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT;
+  auto wait_for_previous = [&] {
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT,
+                         VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0, 1, &barrier, 0, nullptr, 0,
+                         nullptr);
+  };
+  if (end.swap && drawable_.double_buffered) {
+    wait_for_previous();
+    VkImageCopy copy{};
+    copy.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    copy.dstSubresource = copy.srcSubresource;
+    copy.extent = {drawable_.width, drawable_.height, 1};
+    vkCmdCopyImage(cmd, back_.handle(), VK_IMAGE_LAYOUT_GENERAL, front_.handle(),
+                   VK_IMAGE_LAYOUT_GENERAL, 1, &copy);
+  }
+  const bool to_window = end.present_to && end.present_to->width == drawable_.width &&
+                         end.present_to->height == drawable_.height;
+  if (end.front_rgba || (to_window && !present_)) {
+    wait_for_previous();
+    VkBufferImageCopy copy{};
+    copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    copy.imageExtent = {drawable_.width, drawable_.height, 1};
+    vkCmdCopyImageToBuffer(cmd, front_.handle(), VK_IMAGE_LAYOUT_GENERAL, readback_.handle(), 1,
+                           &copy);
+  }
+  if (to_window && present_) {
+    // Straight into the window's memory, one region per row: X rows run top to bottom.
+    wait_for_previous();
+    std::vector<VkBufferImageCopy> rows(drawable_.height);
+    for (uint32_t y = 0; y < drawable_.height; ++y) {
+      VkBufferImageCopy& copy = rows[y];
+      copy = {};
+      copy.bufferOffset = VkDeviceSize{drawable_.height - 1 - y} * drawable_.width * 4;
+      copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+      copy.imageOffset = {0, static_cast<int32_t>(y), 0};
+      copy.imageExtent = {drawable_.width, 1, 1};
+    }
+    vkCmdCopyImageToBuffer(cmd, front_.handle(), VK_IMAGE_LAYOUT_GENERAL, present_.handle(),
+                           static_cast<uint32_t>(rows.size()), rows.data());
+  }
 }
 
 bool RasterRenderer::read_image(const GpuImage& image, VkImageAspectFlags aspect,
@@ -547,8 +659,10 @@ bool RasterRenderer::read_color(uint32_t buffer, int32_t x, int32_t y, uint32_t 
                                 uint32_t height, std::vector<uint8_t>& rgba) {
   const bool front = buffer == GL_FRONT || buffer == GL_FRONT_LEFT || buffer == GL_LEFT ||
                      !drawable_.double_buffered;
-  return read_image(front ? front_ : back_, VK_IMAGE_ASPECT_COLOR_BIT, 4, x, y, width, height,
-                    rgba);
+  if (!read_image(front ? front_ : back_, VK_IMAGE_ASPECT_COLOR_BIT, 4, x, y, width, height, rgba))
+    return false;
+  swap_red_and_blue(rgba.data(), size_t{width} * height);
+  return true;
 }
 
 bool RasterRenderer::read_depth(int32_t x, int32_t y, uint32_t width, uint32_t height,
@@ -582,6 +696,7 @@ void RasterRenderer::write_image(const GpuImage& image, const VkRect2D& rect,
   ensure_capacity(*device_, readback_, rgba.size(),
                   VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
   readback_.write(rgba.data(), rgba.size());
+  swap_red_and_blue(static_cast<uint8_t*>(readback_.mapped()), rgba.size() / 4);
   device_->submit_and_wait([&](VkCommandBuffer cmd) {
     VkBufferImageCopy copy{};
     copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};

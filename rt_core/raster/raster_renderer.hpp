@@ -14,6 +14,7 @@
 #include "rt_core/raster/texture_cache.hpp"
 #include "rt_core/record/decompose.hpp"
 #include "rt_core/record/frame_record.hpp"
+#include "rt_core/renderer.hpp"
 #include "rt_core/vk/gpu_buffer.hpp"
 #include "rt_core/vk/gpu_image.hpp"
 #include "rt_core/vk/vk_device.hpp"
@@ -31,8 +32,10 @@ class RasterRenderer {
 
   // Applies the commands of `record` whose indices `commands` lists (all when empty) to the
   // drawable's buffers, which are (re)created when `drawable` changes. Throws VulkanError.
+  // `end`: swap and/or read the front buffer in the same submission.
   void execute(const rec::FrameRecord& record, const rec::DrawableConfig& drawable,
-               FrameStats& stats, const std::vector<size_t>* commands = nullptr);
+               FrameStats& stats, const std::vector<size_t>* commands = nullptr,
+               const FrameEnd* end = nullptr);
 
   // Reads back a rectangle: colour as RGBA8 of GL_FRONT*/GL_BACK*, depth as [0, 1], stencil.
   // Pixels outside the drawable are zero. False before the buffers exist.
@@ -65,6 +68,7 @@ class RasterRenderer {
   void bind(Recording& r, const PipelineKey& key, const rec::StateSnapshot* textures_of);
   void set_dynamic_state(Recording& r, const DynamicDrawState& d, const VkViewport& viewport,
                          const VkRect2D& scissor);
+  void record_frame_end(VkCommandBuffer cmd, const FrameEnd& end);
   bool read_image(const GpuImage& image, VkImageAspectFlags aspect, uint32_t texel_bytes, int32_t x,
                   int32_t y, uint32_t width, uint32_t height, std::vector<uint8_t>& out);
   // Replaces the rectangle `rect` of a colour image with `rgba` (RGBA8, rows bottom to top).
@@ -95,6 +99,8 @@ class RasterRenderer {
   GpuBuffer states_;    // RasterState per snapshot (+ one per clear drawn as a quad)
   GpuBuffer vertices_;  // this record's attributes and indices
   GpuBuffer readback_;
+  GpuBuffer present_;  // the window's host memory (FrameEnd::present_to), imported
+  uint64_t present_generation_ = 0;
   uint64_t frame_ = 0;
   rec::Decomposed decomposed_;         // scratch
   GpuBuffer pixels_;                   // images of this record's pixel rectangles (32-bit words)

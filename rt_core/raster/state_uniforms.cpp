@@ -39,29 +39,17 @@ gpu::RasterLight pack(const rec::Light& l) {
 
 }  // namespace
 
-glm::mat4 multiply_like_mesa(const glm::mat4& a, const glm::mat4& b) {
-  // glm is column-major like GL: m[col][row].
-  glm::mat4 p;
-  for (int i = 0; i < 4; ++i) {
-    const float ai0 = a[0][i], ai1 = a[1][i], ai2 = a[2][i], ai3 = a[3][i];
-    for (int j = 0; j < 4; ++j)
-      p[j][i] = ai0 * b[j][0] + ai1 * b[j][1] + ai2 * b[j][2] + ai3 * b[j][3];
-  }
-  return p;
-}
-
 void pack_state_uniforms(const rec::StateSnapshot& state, gpu::RasterState& out) {
   std::memset(&out, 0, sizeof out);
   const rec::TransformState& t = *state.transform;
   out.modelview = t.modelview;
-  out.mvp = multiply_like_mesa(t.projection, t.modelview);
-  // The normal matrix is the inverse transpose of the modelview's upper 3x3 (GL 1.5 2.11.3),
-  // computed in double and rounded once.
-  const glm::dmat4 inverse = glm::inverse(glm::dmat4(t.modelview));
-  out.normal_matrix = glm::mat4(glm::transpose(inverse));
-  const double row = std::sqrt(inverse[0][2] * inverse[0][2] + inverse[1][2] * inverse[1][2] +
-                               inverse[2][2] * inverse[2][2]);
-  out.normal_scale = glm::vec4(row > 0.0 ? static_cast<float>(1.0 / row) : 1.0f, 0, 0, 0);
+  out.mvp = t.modelview_projection;
+  // The normal matrix is the inverse transpose of the modelview's upper 3x3 (GL 1.5 2.11.3).
+  const glm::mat4& inverse = t.modelview_inverse;
+  out.normal_matrix = glm::transpose(inverse);
+  const float row = std::sqrt(inverse[0][2] * inverse[0][2] + inverse[1][2] * inverse[1][2] +
+                              inverse[2][2] * inverse[2][2]);
+  out.normal_scale = glm::vec4(row > 0.0f ? 1.0f / row : 1.0f, 0, 0, 0);
   out.viewport = glm::vec4(t.viewport[0], t.viewport[1], t.viewport[2], t.viewport[3]);
   out.depth_range = glm::vec4(t.depth_near, t.depth_far, 0, 0);
   for (int i = 0; i < rec::kMaxClipPlanes; ++i) out.clip_planes[i] = t.clip_planes[i];
@@ -95,8 +83,11 @@ void pack_state_uniforms(const rec::StateSnapshot& state, gpu::RasterState& out)
     out.stipple[row / 4][row % 4] = r.primitive.stipple_pattern[row];
   out.point_size =
       glm::vec4(r.primitive.point_size, std::max(r.primitive.point_size_min, 1.0f),
-                std::min(r.primitive.point_size_max, 255.0f), r.primitive.point_fade_threshold);
+                std::min(r.primitive.point_size_max, 256.0f), r.primitive.point_fade_threshold);
   out.point_attenuation = glm::vec4(r.primitive.point_distance_attenuation, 0.0f);
+  // Mesa's units: twice the minimum resolvable difference of a 24-bit depth buffer.
+  out.polygon_offset = glm::vec4(r.primitive.offset_factor,
+                                 r.primitive.offset_units * 2.0f / 16777215.0f, 0.0f, 0.0f);
 }
 
 }  // namespace glpt::rt

@@ -9,10 +9,6 @@
 
 namespace glpt::rt {
 
-// projection * modelview with Mesa's float arithmetic and operation order (matmul4: each element
-// a0j*b... summed left to right), so clip coordinates match Mesa's to the bit.
-glm::mat4 multiply_like_mesa(const glm::mat4& a, const glm::mat4& b);
-
 void pack_state_uniforms(const rec::StateSnapshot& state, gpu::RasterState& out);
 
 }  // namespace glpt::rt

@@ -29,11 +29,16 @@ inline constexpr int kMaxClipPlanes = 6;
 struct TransformState {
   glm::mat4 modelview{1.0f};
   glm::mat4 projection{1.0f};
-  std::array<int32_t, 4> viewport{0, 0, 0, 0};  // x, y, width, height
-  float depth_near = 0.0f, depth_far = 1.0f;    // glDepthRange, clamped to [0,1]
-  bool normalize = false;                       // GL_NORMALIZE
-  bool rescale_normal = false;                  // GL_RESCALE_NORMAL
-  uint8_t clip_plane_mask = 0;                  // bit i: GL_CLIP_PLANEi enabled
+  // Derived as Mesa derives them (its matrix analysis decides how products and inverses are
+  // computed, and pixel parity depends on the exact floats): projection * modelview, and the
+  // inverse of the modelview (whose transpose transforms normals).
+  glm::mat4 modelview_projection{1.0f};
+  glm::mat4 modelview_inverse{1.0f};
+  std::array<int32_t, 4> viewport{0, 0, 0, 0};          // x, y, width, height
+  float depth_near = 0.0f, depth_far = 1.0f;            // glDepthRange, clamped to [0,1]
+  bool normalize = false;                               // GL_NORMALIZE
+  bool rescale_normal = false;                          // GL_RESCALE_NORMAL
+  uint8_t clip_plane_mask = 0;                          // bit i: GL_CLIP_PLANEi enabled
   std::array<glm::vec4, kMaxClipPlanes> clip_planes{};  // eye space (transformed at glClipPlane)
 
   bool operator==(const TransformState&) const = default;
@@ -43,9 +48,9 @@ struct TransformState {
 
 struct Light {
   glm::vec4 ambient{0.0f, 0.0f, 0.0f, 1.0f};
-  glm::vec4 diffuse{0.0f, 0.0f, 0.0f, 1.0f};  // GL_LIGHT0: (1,1,1,1)
-  glm::vec4 specular{0.0f, 0.0f, 0.0f, 1.0f};  // GL_LIGHT0: (1,1,1,1)
-  glm::vec4 position{0.0f, 0.0f, 1.0f, 0.0f};  // eye space; w == 0: directional
+  glm::vec4 diffuse{0.0f, 0.0f, 0.0f, 1.0f};    // GL_LIGHT0: (1,1,1,1)
+  glm::vec4 specular{0.0f, 0.0f, 0.0f, 1.0f};   // GL_LIGHT0: (1,1,1,1)
+  glm::vec4 position{0.0f, 0.0f, 1.0f, 0.0f};   // eye space; w == 0: directional
   glm::vec3 spot_direction{0.0f, 0.0f, -1.0f};  // eye space
   float spot_exponent = 0.0f;
   float spot_cutoff = 180.0f;  // degrees; 180 = not a spot light
@@ -130,9 +135,9 @@ struct TextureUnitState {
   // unchanged for as long as the record refers to it.
   std::shared_ptr<const TextureObjectSnapshot> texture;
   TexEnv env;
-  uint8_t texgen_mask = 0;  // bits 0..3: GL_TEXTURE_GEN_S, T, R, Q enabled
+  uint8_t texgen_mask = 0;                          // bits 0..3: GL_TEXTURE_GEN_S, T, R, Q enabled
   std::array<TexGen, 4> texgen = default_texgen();  // s, t, r, q
-  glm::mat4 matrix{1.0f};   // GL_TEXTURE matrix
+  glm::mat4 matrix{1.0f};                           // GL_TEXTURE matrix
 
   bool operator==(const TextureUnitState&) const = default;
 

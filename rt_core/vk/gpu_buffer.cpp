@@ -47,6 +47,55 @@ GpuBuffer GpuBuffer::create(const VulkanDevice& device, VkDeviceSize size,
   return result;
 }
 
+GpuBuffer GpuBuffer::import_host(const VulkanDevice& device, void* pointer, VkDeviceSize size,
+                                 VkBufferUsageFlags usage) {
+  GpuBuffer result;
+  const VkDeviceSize alignment = device.host_pointer_alignment();
+  if (!device.has_external_host_memory() || pointer == nullptr || size == 0 ||
+      reinterpret_cast<uintptr_t>(pointer) % alignment != 0 || size % alignment != 0)
+    return result;
+  auto get_properties = reinterpret_cast<PFN_vkGetMemoryHostPointerPropertiesEXT>(
+      vkGetDeviceProcAddr(device.handle(), "vkGetMemoryHostPointerPropertiesEXT"));
+  auto host_properties = make_info<VkMemoryHostPointerPropertiesEXT>(
+      VK_STRUCTURE_TYPE_MEMORY_HOST_POINTER_PROPERTIES_EXT);
+  if (get_properties == nullptr ||
+      get_properties(device.handle(), VK_EXTERNAL_MEMORY_HANDLE_TYPE_HOST_ALLOCATION_BIT_EXT,
+                     pointer, &host_properties) != VK_SUCCESS)
+    return result;
+
+  auto external = make_info<VkExternalMemoryBufferCreateInfo>(
+      VK_STRUCTURE_TYPE_EXTERNAL_MEMORY_BUFFER_CREATE_INFO);
+  external.handleTypes = VK_EXTERNAL_MEMORY_HANDLE_TYPE_HOST_ALLOCATION_BIT_EXT;
+  auto buffer_info = make_info<VkBufferCreateInfo>(VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO, &external);
+  buffer_info.size = size;
+  buffer_info.usage = usage;
+  buffer_info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+  VkBuffer buffer = VK_NULL_HANDLE;
+  GLPT_VK_CHECK(vkCreateBuffer(device.handle(), &buffer_info, nullptr, &buffer));
+  result.buffer_ = vk::Buffer(buffer, {device.handle()});
+  VkMemoryRequirements requirements;
+  vkGetBufferMemoryRequirements(device.handle(), buffer, &requirements);
+
+  auto import = make_info<VkImportMemoryHostPointerInfoEXT>(
+      VK_STRUCTURE_TYPE_IMPORT_MEMORY_HOST_POINTER_INFO_EXT);
+  import.handleType = VK_EXTERNAL_MEMORY_HANDLE_TYPE_HOST_ALLOCATION_BIT_EXT;
+  import.pHostPointer = pointer;
+  auto allocate_info =
+      make_info<VkMemoryAllocateInfo>(VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO, &import);
+  allocate_info.allocationSize = size;
+  allocate_info.memoryTypeIndex =
+      device.memory_type(requirements.memoryTypeBits & host_properties.memoryTypeBits,
+                         VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT, 0);
+  VkDeviceMemory memory = VK_NULL_HANDLE;
+  if (vkAllocateMemory(device.handle(), &allocate_info, nullptr, &memory) != VK_SUCCESS)
+    return GpuBuffer();
+  result.memory_ = vk::DeviceMemory(memory, {device.handle()});
+  GLPT_VK_CHECK(vkBindBufferMemory(device.handle(), buffer, memory, 0));
+  result.size_ = size;
+  result.mapped_ = pointer;
+  return result;
+}
+
 bool ensure_capacity(const VulkanDevice& device, GpuBuffer& buffer, VkDeviceSize size,
                      VkBufferUsageFlags usage) {
   if (buffer && buffer.size() >= size) return false;

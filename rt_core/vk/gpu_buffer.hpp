@@ -34,6 +34,11 @@ class GpuBuffer {
   }
   // `usage` gets SHADER_DEVICE_ADDRESS added. Throws VulkanError.
   static GpuBuffer create(const VulkanDevice& device, VkDeviceSize size, VkBufferUsageFlags usage);
+  // A buffer over existing host memory (VK_EXT_external_memory_host): `pointer` and `size` must
+  // be aligned to device.host_pointer_alignment(); the memory must outlive the buffer. An empty
+  // buffer when the device cannot import it. Throws VulkanError on other failures.
+  static GpuBuffer import_host(const VulkanDevice& device, void* pointer, VkDeviceSize size,
+                               VkBufferUsageFlags usage);
 
   VkBuffer handle() const { return buffer_.get(); }
   VkDeviceSize size() const { return size_; }

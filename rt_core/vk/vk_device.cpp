@@ -56,6 +56,8 @@ struct Candidate {
   std::vector<std::string> missing;            // for raster (and anything at all): empty = usable
   std::vector<std::string> missing_ray_query;  // empty: path tracing possible
   bool geometry_shader = false;
+  bool external_host_memory = false;  // VK_EXT_external_memory_host: zero-copy presenting
+  bool smooth_lines = false, stippled_smooth_lines = false;
 };
 
 template <size_t N>
@@ -84,6 +86,10 @@ Candidate evaluate(VkPhysicalDevice device) {
   vkEnumerateDeviceExtensionProperties(device, nullptr, &count, extensions.data());
   require_extensions(extensions, kRasterDeviceExtensions, candidate.missing);
   require_extensions(extensions, kRayQueryDeviceExtensions, candidate.missing_ray_query);
+  candidate.external_host_memory =
+      std::any_of(extensions.begin(), extensions.end(), [](const VkExtensionProperties& e) {
+        return std::strcmp(e.extensionName, VK_EXT_EXTERNAL_MEMORY_HOST_EXTENSION_NAME) == 0;
+      });
   if (!candidate.missing.empty()) return candidate;  // feature structs may not be understood
 
   auto ray_query = make_info<VkPhysicalDeviceRayQueryFeaturesKHR>(
@@ -126,7 +132,11 @@ Candidate evaluate(VkPhysicalDevice device) {
   need(depth_clip.depthClipControl, "depthClipControl");
   need(border.customBorderColors, "customBorderColors");
   need(border.customBorderColorWithoutFormat, "customBorderColorWithoutFormat");
-  candidate.geometry_shader = core.geometryShader;
+  // Geometry shaders draw GL's unfilled polygons with edge flags; they also need point sizes.
+  candidate.geometry_shader = core.geometryShader && core.shaderTessellationAndGeometryPointSize;
+  // Smooth lines are only used where stippled smooth lines exist too (GL stipples either kind).
+  candidate.smooth_lines = lines.smoothLines && lines.stippledSmoothLines;
+  candidate.stippled_smooth_lines = lines.stippledSmoothLines;
   if (candidate.missing_ray_query.empty()) {
     if (!acceleration.accelerationStructure)
       candidate.missing_ray_query.push_back("accelerationStructure");
@@ -328,6 +338,10 @@ std::unique_ptr<VulkanDevice> VulkanDevice::create(const DeviceOptions& options)
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_LINE_RASTERIZATION_FEATURES_EXT, &provoking);
   lines.bresenhamLines = VK_TRUE;
   lines.stippledBresenhamLines = VK_TRUE;
+  // GL_LINE_SMOOTH draws Vulkan's smooth lines where the device has them (else Bresenham).
+  lines.smoothLines = chosen.smooth_lines;
+  lines.stippledSmoothLines = chosen.smooth_lines && chosen.stippled_smooth_lines;
+  self->smooth_lines_ = chosen.smooth_lines;
   auto depth_clip = make_info<VkPhysicalDeviceDepthClipControlFeaturesEXT>(
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DEPTH_CLIP_CONTROL_FEATURES_EXT, &lines);
   depth_clip.depthClipControl = VK_TRUE;
@@ -353,9 +367,20 @@ std::unique_ptr<VulkanDevice> VulkanDevice::create(const DeviceOptions& options)
   features.features.shaderClipDistance = VK_TRUE;
   features.features.independentBlend = VK_TRUE;
   features.features.geometryShader = chosen.geometry_shader ? VK_TRUE : VK_FALSE;
+  features.features.shaderTessellationAndGeometryPointSize = features.features.geometryShader;
 
   std::vector<const char*> device_extensions(std::begin(kRasterDeviceExtensions),
                                              std::end(kRasterDeviceExtensions));
+  if (chosen.external_host_memory) {
+    device_extensions.push_back(VK_EXT_EXTERNAL_MEMORY_HOST_EXTENSION_NAME);
+    self->external_host_memory_ = true;
+    auto host_properties = make_info<VkPhysicalDeviceExternalMemoryHostPropertiesEXT>(
+        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_EXTERNAL_MEMORY_HOST_PROPERTIES_EXT);
+    auto properties2 = make_info<VkPhysicalDeviceProperties2>(
+        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &host_properties);
+    vkGetPhysicalDeviceProperties2(chosen.device, &properties2);
+    self->host_pointer_alignment_ = host_properties.minImportedHostPointerAlignment;
+  }
   if (self->ray_query_) {
     device_extensions.insert(device_extensions.end(), std::begin(kRayQueryDeviceExtensions),
                              std::end(kRayQueryDeviceExtensions));

@@ -58,6 +58,10 @@ class VulkanDevice {
   bool has_ray_query() const { return ray_query_; }
   const std::string& ray_query_missing() const { return ray_query_missing_; }
   bool has_geometry_shader() const { return geometry_shader_; }
+  bool has_smooth_lines() const { return smooth_lines_; }
+  // Host memory (an X shared-memory segment) can be imported as a buffer, with this alignment.
+  bool has_external_host_memory() const { return external_host_memory_; }
+  VkDeviceSize host_pointer_alignment() const { return host_pointer_alignment_; }
   const AccelerationStructureFunctions& as_functions() const { return as_functions_; }
   const std::string& name() const { return name_; }
   const VkPhysicalDeviceLimits& limits() const { return limits_; }
@@ -99,6 +103,9 @@ class VulkanDevice {
   bool ray_query_ = false;
   std::string ray_query_missing_;
   bool geometry_shader_ = false;
+  bool smooth_lines_ = false;
+  bool external_host_memory_ = false;
+  VkDeviceSize host_pointer_alignment_ = 4096;
   VkCommandBuffer command_buffer_ = VK_NULL_HANDLE;  // freed with command_pool_
 
   AccelerationStructureFunctions as_functions_;

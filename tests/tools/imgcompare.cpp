@@ -1,5 +1,6 @@
 #include "imgcompare.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
@@ -148,6 +149,46 @@ bool psnr(const ImageRGBA8& a, const ImageRGBA8& b, double* out, std::string* er
   }
   const double mse = static_cast<double>(sum_sq) / static_cast<double>(count);
   *out = 10.0 * std::log10(255.0 * 255.0 / mse);
+  return true;
+}
+
+bool within_tolerance(const ImageRGBA8& reference, const ImageRGBA8& test, int max_channel_diff,
+                      WithinResult* out, ImageRGBA8* diff, std::string* error) {
+  if (!same_size(reference, test, error)) return false;
+  const size_t w = reference.width, h = reference.height;
+  WithinResult r;
+  r.pixels = w * h;
+  if (diff) {
+    diff->width = static_cast<uint32_t>(4 * w);
+    diff->height = static_cast<uint32_t>(h);
+    diff->pixels.assign(16 * w * h, 255);
+  }
+  for (size_t y = 0; y < h; ++y) {
+    for (size_t x = 0; x < w; ++x) {
+      const uint8_t* a = &reference.pixels[(y * w + x) * 4];
+      const uint8_t* b = &test.pixels[(y * w + x) * 4];
+      int largest = 0;
+      for (int c = 0; c < 4; ++c) largest = std::max(largest, std::abs(a[c] - b[c]));
+      r.max_diff = std::max(r.max_diff, largest);
+      const bool within = largest <= max_channel_diff;
+      if (within) ++r.within;
+      if (!diff) continue;
+      uint8_t* row = &diff->pixels[y * 16 * w];
+      uint8_t* panel[4] = {row + x * 4, row + (w + x) * 4, row + (2 * w + x) * 4,
+                           row + (3 * w + x) * 4};
+      for (int c = 0; c < 3; ++c) {
+        panel[0][c] = a[c];
+        panel[1][c] = b[c];
+        panel[2][c] = static_cast<uint8_t>(std::min(255, 16 * std::abs(a[c] - b[c])));
+      }
+      const uint8_t grey = static_cast<uint8_t>(luminance(a) * 255.0 / 3.0);
+      const uint8_t mask[3][3] = {{255, 0, 0}, {0, 96, 255}, {grey, grey, grey}};
+      const int kind = !within ? 0 : largest > 0 ? 1 : 2;
+      for (int c = 0; c < 3; ++c) panel[3][c] = mask[kind][c];
+    }
+  }
+  r.fraction = r.pixels == 0 ? 0.0 : static_cast<double>(r.within) / static_cast<double>(r.pixels);
+  *out = r;
   return true;
 }
 

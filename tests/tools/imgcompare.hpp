@@ -1,5 +1,6 @@
-// Image comparisons for glpt's end-to-end tests: coverage masks and their IoU, "lit vs away"
-// shading checks against a facing oracle, PSNR, and a blank-frame check. The CLI
+// Image comparisons for glpt's end-to-end and conformance tests: coverage masks and their IoU,
+// "lit vs away" shading checks against a facing oracle, per-channel tolerance against a
+// reference image, PSNR, and a blank-frame check. The CLI
 // glpt_imgcompare is a thin wrapper; the unit tests exercise these functions directly.
 #pragma once
 
@@ -59,6 +60,23 @@ struct LitAwayResult {
 // SHADED is brighter where faces turn toward the light than where they turn away.
 bool lit_vs_away(const ImageRGBA8& shaded, const ImageRGBA8& facing, Rgb background,
                  const LitAwayOptions& options, LitAwayResult* out, std::string* error);
+
+struct WithinResult {
+  uint64_t pixels = 0;
+  uint64_t within = 0;    // pixels whose R, G, B and A all differ by at most the tolerance
+  double fraction = 0.0;  // within / pixels
+  int max_diff = 0;       // the largest difference of any channel of any pixel, 0..255
+};
+
+// Compares `test` with `reference` channel by channel (RGBA: alpha is part of what GL returns).
+// If `diff` is non-null it receives a visualisation four panels wide (see kDiffPanels).
+bool within_tolerance(const ImageRGBA8& reference, const ImageRGBA8& test, int max_channel_diff,
+                      WithinResult* out, ImageRGBA8* diff, std::string* error);
+
+// The panels of within_tolerance's difference image, left to right.
+inline constexpr const char* kDiffPanels =
+    "reference (opaque) | test (opaque) | |reference - test| of RGB x16 | mask: red = outside "
+    "the tolerance, blue = differs within it, grey = identical (the reference, dimmed)";
 
 // PSNR over the RGB channels in dB (peak 255); +infinity for identical images.
 bool psnr(const ImageRGBA8& a, const ImageRGBA8& b, double* out, std::string* error);

@@ -1,15 +1,19 @@
-// glpt_imgcompare: image checks for the end-to-end tests. Exit status 0 = pass, 1 = the check
+// glpt_imgcompare: image checks for the end-to-end and conformance tests, and the comparison of
+// two GL state dumps. Exit status 0 = pass, 1 = the check
 // failed, 2 = usage or I/O error. Run without arguments for usage.
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <map>
 #include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include "image_io.hpp"
 #include "imgcompare.hpp"
+#include "state_compare.hpp"
 
 namespace {
 
@@ -32,6 +36,17 @@ const char kUsageText[] =
     "      than --lit are 'lit', darker than --away are 'away' (Rec. 709 luma, 0..1). Passes iff\n"
     "      both classes hold >= min-class-fraction of the covered pixels and SHADED's mean luma\n"
     "      over lit exceeds that over away by >= margin and by a factor >= ratio.\n"
+    "  glpt_imgcompare within REFERENCE.png TEST.png [--max-diff 2] [--min-fraction 0.995]\n"
+    "                  [--diff OUT.png]\n"
+    "      Passes iff at least min-fraction of the pixels have every channel (RGBA) within\n"
+    "      max-diff (0..255) of the reference. Prints that fraction, the largest channel\n"
+    "      difference and the PSNR. Writes a difference image to OUT.png, or on failure next to\n"
+    "      TEST (TEST.diff.png): four panels, reference | test | |difference| x16 | mask\n"
+    "      (red: outside the tolerance, blue: differs within it, grey: identical).\n"
+    "  glpt_imgcompare state REFERENCE.state.json TEST.state.json [--float-tolerance 1e-6]\n"
+    "      Compares two GL state dumps of the conformance runners: integers, enums and booleans\n"
+    "      exactly, floats within the tolerance (relative, absolute below magnitude 1), and\n"
+    "      the error left by the scene. Lists every mismatching query; passes iff none.\n"
     "  glpt_imgcompare psnr A.png B.png\n"
     "      Prints the PSNR over RGB in dB ('inf' for identical images).\n"
     "  glpt_imgcompare nonblank FILE.png... [--min-fraction 0.01] [--tolerance 0]\n"
@@ -119,6 +134,26 @@ std::string sibling_path(const std::string& path, const std::string& suffix) {
   return path + suffix;
 }
 
+// Writes `diff` where --diff says, or on failure to `failure_path`, and says where and how to read
+// it. Returns false on an I/O error.
+bool write_diff(const Args& args, bool pass, const std::string& failure_path,
+                const ImageRGBA8& diff, const char* command, const std::string& legend) {
+  std::string path;
+  if (args.options.count("--diff")) {
+    path = args.options.at("--diff");
+  } else if (!pass) {
+    path = failure_path;
+  }
+  if (path.empty()) return true;
+  std::string error;
+  if (!glpt::write_png_rgba8(path, diff.width, diff.height, diff.pixels.data(), false, &error)) {
+    std::fprintf(stderr, "glpt_imgcompare: %s\n", error.c_str());
+    return false;
+  }
+  std::printf("%s: diff image %s (%s)\n", command, path.c_str(), legend.c_str());
+  return true;
+}
+
 int cmd_coverage(int argc, char** argv) {
   Args args;
   if (!parse(argc, argv, {"--background", "--tolerance", "--min-iou", "--diff"}, &args)) {
@@ -151,20 +186,9 @@ int cmd_coverage(int argc, char** argv) {
       static_cast<unsigned long long>(r.only_a), static_cast<unsigned long long>(r.only_b),
       static_cast<unsigned long long>(r.neither), tolerance, bg.r, bg.g, bg.b,
       pass ? "PASS" : "FAIL");
-  std::string diff_path;
-  if (args.options.count("--diff")) {
-    diff_path = args.options.at("--diff");
-  } else if (!pass) {
-    diff_path = sibling_path(args.positional[0], ".coverage_diff.png");
-  }
-  if (!diff_path.empty()) {
-    if (!glpt::write_png_rgba8(diff_path, diff.width, diff.height, diff.pixels.data(), false,
-                               &error)) {
-      std::fprintf(stderr, "glpt_imgcompare: %s\n", error.c_str());
-      return kUsage;
-    }
-    std::printf("coverage: diff image (red: only A, green: only B, white: both) %s\n",
-                diff_path.c_str());
+  if (!write_diff(args, pass, sibling_path(args.positional[0], ".coverage_diff.png"), diff,
+                  "coverage", "red: only A, green: only B, white: both")) {
+    return kUsage;
   }
   return pass ? kPass : kFail;
 }
@@ -206,6 +230,82 @@ int cmd_lit_vs_away(int argc, char** argv) {
       r.mean_away, o.min_margin, o.min_ratio, 100.0 * o.min_class_fraction,
       r.pass ? "PASS" : "FAIL", r.pass ? "" : ": ", r.reason.c_str());
   return r.pass ? kPass : kFail;
+}
+
+int cmd_within(int argc, char** argv) {
+  Args args;
+  if (!parse(argc, argv, {"--max-diff", "--min-fraction", "--diff"}, &args)) return kUsage;
+  if (args.positional.size() != 2) {
+    std::fprintf(stderr, "glpt_imgcompare within: want REFERENCE.png TEST.png\n");
+    return kUsage;
+  }
+  int max_diff = 2;
+  double min_fraction = 0.995;
+  if (!get_int(args, "--max-diff", 0, 255, &max_diff) ||
+      !get_double(args, "--min-fraction", &min_fraction)) {
+    return kUsage;
+  }
+  ImageRGBA8 reference, test, diff;
+  if (!load(args.positional[0], &reference) || !load(args.positional[1], &test)) return kUsage;
+  ic::WithinResult r;
+  double db = 0.0;
+  std::string error;
+  if (!ic::within_tolerance(reference, test, max_diff, &r, &diff, &error) ||
+      !ic::psnr(reference, test, &db, &error)) {
+    std::fprintf(stderr, "glpt_imgcompare within: %s\n", error.c_str());
+    return kFail;
+  }
+  const bool pass = r.fraction >= min_fraction;
+  char psnr_text[32];
+  std::snprintf(psnr_text, sizeof psnr_text, std::isinf(db) ? "inf" : "%.2f", db);
+  std::printf(
+      "within: fraction=%.6f max_diff=%d psnr=%s (tolerance: %d/255 on >= %.4f of %llu "
+      "pixels) -> %s\n",
+      r.fraction, r.max_diff, psnr_text, max_diff, min_fraction,
+      static_cast<unsigned long long>(r.pixels), pass ? "PASS" : "FAIL");
+  if (!write_diff(args, pass, sibling_path(args.positional[1], ".diff.png"), diff, "within",
+                  ic::kDiffPanels)) {
+    return kUsage;
+  }
+  return pass ? kPass : kFail;
+}
+
+bool load_state(const std::string& path, glpt::statecompare::StateDump* out) {
+  std::ifstream file(path, std::ios::binary);
+  if (!file) {
+    std::fprintf(stderr, "glpt_imgcompare state: cannot read %s\n", path.c_str());
+    return false;
+  }
+  std::stringstream text;
+  text << file.rdbuf();
+  std::string error;
+  if (!glpt::statecompare::parse_state_dump(text.str(), out, &error)) {
+    std::fprintf(stderr, "glpt_imgcompare state: %s: %s\n", path.c_str(), error.c_str());
+    return false;
+  }
+  return true;
+}
+
+int cmd_state(int argc, char** argv) {
+  Args args;
+  if (!parse(argc, argv, {"--float-tolerance"}, &args)) return kUsage;
+  if (args.positional.size() != 2) {
+    std::fprintf(stderr, "glpt_imgcompare state: want REFERENCE.state.json TEST.state.json\n");
+    return kUsage;
+  }
+  double tolerance = 1e-6;
+  if (!get_double(args, "--float-tolerance", &tolerance)) return kUsage;
+  glpt::statecompare::StateDump reference, test;
+  if (!load_state(args.positional[0], &reference) || !load_state(args.positional[1], &test))
+    return kUsage;
+  const auto mismatches = glpt::statecompare::compare_states(reference, test, tolerance);
+  for (const auto& m : mismatches) {
+    std::printf("state: %s: %s %s, %s %s\n", m.key.c_str(), reference.backend.c_str(),
+                m.reference.c_str(), test.backend.c_str(), m.test.c_str());
+  }
+  std::printf("state: %s: %zu queries, %zu mismatches -> %s\n", reference.scene.c_str(),
+              reference.state.size() + 1, mismatches.size(), mismatches.empty() ? "PASS" : "FAIL");
+  return mismatches.empty() ? kPass : kFail;
 }
 
 int cmd_psnr(int argc, char** argv) {
@@ -267,6 +367,8 @@ int main(int argc, char** argv) {
   const std::string cmd = argv[1];
   if (cmd == "coverage") return cmd_coverage(argc, argv);
   if (cmd == "lit-vs-away") return cmd_lit_vs_away(argc, argv);
+  if (cmd == "within") return cmd_within(argc, argv);
+  if (cmd == "state") return cmd_state(argc, argv);
   if (cmd == "psnr") return cmd_psnr(argc, argv);
   if (cmd == "nonblank") return cmd_nonblank(argc, argv);
   if (cmd == "--help" || cmd == "-h") {

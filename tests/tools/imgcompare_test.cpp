@@ -183,6 +183,59 @@ TEST(Psnr, KnownError) {
   EXPECT_NEAR(db, 20.0 * std::log10(255.0), 1e-9);
 }
 
+TEST(Within, CountsPixelsWithEveryChannelInsideTheTolerance) {
+  // 10x10: 90 pixels identical, 5 off by exactly 2 in green (within), 4 off by 3 in blue and 1
+  // off by 40 in alpha only (both outside): 95% within, largest difference 40.
+  ImageRGBA8 ref = filled(10, 10, Rgb{100, 100, 100}), test = ref;
+  for (int i = 0; i < 5; ++i) test.pixels[i * 4 + 1] = 102;
+  for (int i = 5; i < 9; ++i) test.pixels[i * 4 + 2] = 97;
+  test.pixels[9 * 4 + 3] = 215;
+  WithinResult r;
+  std::string error;
+  ASSERT_TRUE(within_tolerance(ref, test, 2, &r, nullptr, &error));
+  EXPECT_EQ(r.pixels, 100u);
+  EXPECT_EQ(r.within, 95u);
+  EXPECT_DOUBLE_EQ(r.fraction, 0.95);
+  EXPECT_EQ(r.max_diff, 40);
+  ASSERT_TRUE(within_tolerance(ref, test, 3, &r, nullptr, &error));
+  EXPECT_EQ(r.within, 99u);
+  ASSERT_TRUE(within_tolerance(ref, ref, 0, &r, nullptr, &error));
+  EXPECT_EQ(r.within, 100u);
+  EXPECT_EQ(r.max_diff, 0);
+}
+
+TEST(Within, DiffImageShowsBothInputsTheDifferenceAndTheMask) {
+  ImageRGBA8 ref = filled(4, 2, Rgb{40, 80, 120}), test = ref;
+  test.pixels[0] = 50;  // pixel (0,0): red off by 10, outside a tolerance of 2
+  test.pixels[5] = 81;  // pixel (1,0): green off by 1, within
+  WithinResult r;
+  ImageRGBA8 diff;
+  std::string error;
+  ASSERT_TRUE(within_tolerance(ref, test, 2, &r, &diff, &error));
+  ASSERT_EQ(diff.width, 16u);
+  ASSERT_EQ(diff.height, 2u);
+  const auto px = [&](uint32_t x, uint32_t y) { return &diff.pixels[(y * diff.width + x) * 4]; };
+  EXPECT_EQ(px(0, 0)[0], 40);   // reference panel
+  EXPECT_EQ(px(4, 0)[0], 50);   // test panel
+  EXPECT_EQ(px(8, 0)[0], 160);  // |difference| x16
+  EXPECT_EQ(px(9, 0)[1], 16);
+  EXPECT_EQ(px(10, 0)[0], 0);
+  EXPECT_EQ(px(12, 0)[0], 255);  // mask: outside the tolerance is red
+  EXPECT_EQ(px(12, 0)[1], 0);
+  EXPECT_EQ(px(13, 0)[2], 255);  // within but different is blue
+  EXPECT_EQ(px(13, 0)[0], 0);
+  EXPECT_EQ(px(14, 0)[0], px(14, 0)[2]);  // identical is grey
+  EXPECT_LT(px(14, 0)[0], 64);
+  for (size_t i = 3; i < diff.pixels.size(); i += 4) EXPECT_EQ(diff.pixels[i], 255);
+}
+
+TEST(Within, SizeMismatchIsAnError) {
+  WithinResult r;
+  std::string error;
+  EXPECT_FALSE(within_tolerance(filled(4, 4, kBg), filled(4, 5, kBg), 2, &r, nullptr, &error));
+  EXPECT_FALSE(error.empty());
+}
+
 TEST(Nonblank, CountsPixelsDifferentFromTheCorner) {
   ImageRGBA8 img = filled(10, 10, kBg);
   EXPECT_DOUBLE_EQ(fraction_differing_from_corner(img, 0), 0.0);

@@ -6,7 +6,6 @@
 #include <limits>
 #include <variant>
 
-#include "gl_shim/frame/frame_output.hpp"
 #include "gl_test_context.hpp"
 
 namespace {
@@ -39,21 +38,6 @@ class PixelCommandTest : public GlTest {
     glGetFloatv(GL_CURRENT_RASTER_POSITION, p);
     return p[0];
   }
-};
-
-// A drawable with chosen buffers, for the errors that depend on them.
-class Target final : public glpt::WindowTarget {
- public:
-  explicit Target(glpt::rec::DrawableConfig config) : config_(config) {}
-  bool query_size(uint32_t* w, uint32_t* h) override {
-    *w = *h = 64;
-    return true;
-  }
-  void present(const uint8_t*, uint32_t, uint32_t) override {}
-  glpt::rec::DrawableConfig config() const override { return config_; }
-
- private:
-  glpt::rec::DrawableConfig config_;
 };
 
 TEST_F(PixelCommandTest, BitmapLandsAtTheFlooredOriginAndMoves) {
@@ -174,8 +158,7 @@ TEST_F(PixelCommandTest, MissingBuffersAreInvalidOperations) {
   config.stencil_bits = 0;
   config.depth_bits = 0;
   config.accum_bits = 0;
-  Target target(config);
-  ctx_.target = &target;
+  ctx_.drawable = config;
   const GLubyte data[4] = {};
   glDrawPixels(1, 1, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, data);
   EXPECT_EQ(glGetError(), GL_INVALID_OPERATION);
@@ -192,7 +175,6 @@ TEST_F(PixelCommandTest, MissingBuffersAreInvalidOperations) {
   EXPECT_EQ(bits, 0);
   glDrawPixels(1, 1, GL_RGBA, GL_UNSIGNED_BYTE, data);  // colour is fine without the buffers
   EXPECT_EQ(glGetError(), GL_NO_ERROR);
-  ctx_.target = nullptr;
 }
 
 TEST_F(PixelCommandTest, AbsurdSizesAndPositionsAreSafe) {
@@ -264,15 +246,12 @@ TEST_F(PixelCommandTest, AccumulationCommandsAndClearValue) {
 }
 
 TEST_F(PixelCommandTest, AccumulationBitsFollowTheDrawable) {
-  glpt::rec::DrawableConfig config;  // 16 bits per component, as Mesa's buffer
-  Target target(config);
-  ctx_.target = &target;
+  ctx_.drawable = glpt::rec::DrawableConfig{};  // 16 bits per component, as Mesa's buffer
   GLint bits[4];
   glGetIntegerv(GL_ACCUM_RED_BITS, &bits[0]);
   glGetIntegerv(GL_ACCUM_ALPHA_BITS, &bits[3]);
   EXPECT_EQ(bits[0], 16);
   EXPECT_EQ(bits[3], 16);
-  ctx_.target = nullptr;
 }
 
 TEST_F(PixelCommandTest, RasterPositionCompilesIntoDisplayLists) {

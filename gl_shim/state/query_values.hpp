@@ -1,0 +1,74 @@
+// One state value as glGet* finds it, before conversion to the requested type (GL 1.5 spec
+// 6.1.2). Shared by the lookups that answer glGet{Boolean,Integer,Float,Double}v: queries.cpp and
+// the per-area lookups it consults (fixed_function_queries.cpp, ...).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <initializer_list>
+
+#include "gl_shim/gl_types.h"
+
+namespace glpt {
+
+class Context;
+
+namespace query {
+
+// How a value converts between the glGet variants (spec 6.1.2): integers and enums as they are,
+// floats rounded to the nearest integer, colours (and normals, depth values) mapped linearly
+// from [-1, 1] to the whole integer range, booleans as 0/1.
+enum class Kind { kInt, kFloat, kColor, kBool };
+
+struct Value {
+  Kind kind = Kind::kInt;
+  int count = 0;
+  double v[16] = {};
+};
+
+inline Value ints(std::initializer_list<double> l) {
+  Value r;
+  r.kind = Kind::kInt;
+  for (double d : l) r.v[r.count++] = d;
+  return r;
+}
+inline Value floats(const float* p, int n, Kind kind = Kind::kFloat) {
+  Value r;
+  r.kind = kind;
+  r.count = n;
+  for (int i = 0; i < n; ++i) r.v[i] = p[i];
+  return r;
+}
+inline Value boolean(bool b) {
+  Value r;
+  r.kind = Kind::kBool;
+  r.count = 1;
+  r.v[0] = b ? 1 : 0;
+  return r;
+}
+
+// A colour component, normal coordinate or depth value as an integer. The spec maps 1.0 to the
+// most positive integer and -1.0 to the most negative, linearly between; between the endpoints
+// Mesa's rounding is used, (2^31 - 1) * c truncated toward zero, so integer queries read what
+// they read on Mesa. Values beyond [-1, 1] saturate (the nearest representable value); NaN is 0.
+inline GLint color_to_int(double c) {
+  if (std::isnan(c)) return 0;
+  if (c <= -1.0) return -2147483647 - 1;
+  if (c >= 1.0) return 2147483647;
+  return static_cast<GLint>(2147483647.0 * c);
+}
+
+// Any other value: rounded to the nearest integer (halfway cases away from zero), saturating.
+inline GLint round_to_int(double v) {
+  if (std::isnan(v)) return 0;
+  return static_cast<GLint>(std::clamp(std::round(v), -2147483648.0, 2147483647.0));
+}
+
+}  // namespace query
+
+// Rasterization, fog, per-fragment, current-attribute, clip and matrix state of GL 1.5 tables
+// 6.5-6.34 and the related implementation limits (fixed_function_queries.cpp). False if
+// `pname` is none of those.
+bool lookup_fixed_function_state(const Context& ctx, GLenum pname, query::Value* out);
+
+}  // namespace glpt
