@@ -16,6 +16,7 @@
 #include "gl_shim/frame/state_snapshot.hpp"
 #include "gl_shim/geometry/vertex_assembly.hpp"
 #include "gl_shim/gl_commands.hpp"
+#include "gl_shim/pixels/bitmap_cache.hpp"
 #include "gl_shim/pixels/raster_position.hpp"
 #include "gl_shim/state/color_index_state.hpp"
 #include "gl_shim/state/current_attributes.hpp"
@@ -55,6 +56,7 @@ class Context {
   EnableState enables;  // capabilities without a field in the blocks above
   CurrentAttributes current;
   rec::RasterPosition raster_position = initial_raster_position();  // GL 1.5 2.13
+  BitmapCache bitmap_cache;  // Mesa's, reproduced in the record (pixels/bitmap_cache.hpp)
   FramebufferState framebuffer;
   ColorIndexState color_index;  // kept for queries only (glpt renders RGBA)
   VertexAssembly assembly;

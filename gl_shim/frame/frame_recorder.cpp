@@ -67,6 +67,7 @@ void finish_vertex_data(rec::VertexData& d) {
 
 void FrameRecorder::add_primitive(rec::StateId state, rec::VertexData& p) {
   if (p.position.empty() || p.primitives.size() != 1) return;
+  ++events_;
   if (open_ && (open_state_ != state || open_->mode != p.mode ||
                 open_->material.empty() != p.material.empty()))
     seal();
@@ -90,6 +91,7 @@ void FrameRecorder::add_primitive(rec::StateId state, rec::VertexData& p) {
 }
 
 void FrameRecorder::add(rec::Command command) {
+  ++events_;
   seal();
   record_.commands.push_back(std::move(command));
 }
@@ -103,6 +105,7 @@ void FrameRecorder::seal() {
 }
 
 void FrameRecorder::clear() {
+  ++events_;
   record_.clear();
   open_.reset();
   vertex_bytes_ = 0;

@@ -384,6 +384,7 @@ bool draws_to_front(const Context& ctx) {
 }  // namespace
 
 void glFlush(Context& ctx) {
+  flush_bitmap_cache(ctx);  // as Mesa's glFlush does
   if (draws_to_front(ctx)) end_frame(ctx, /*swap=*/false);
 }
 

@@ -11,6 +11,7 @@
 #include "gl_shim/context.hpp"
 #include "gl_shim/dispatch.hpp"
 #include "gl_shim/gl_impl_decls.hpp"
+#include "gl_shim/pixels/bitmap_cache.hpp"
 #include "gl_shim/pixels/rectangle_unpack.hpp"
 
 namespace glpt {
@@ -64,7 +65,8 @@ void glBitmap(Context& ctx, GLsizei width, GLsizei height, GLfloat xorig, GLfloa
     b.width = static_cast<uint32_t>(width);
     b.height = static_cast<uint32_t>(height);
     b.bits = unpack_bitmap(ctx.framebuffer.unpack, width, height, bitmap);
-    record(ctx, std::move(b));
+    record_bitmap(ctx, std::move(b));
+    note_frame_content(ctx);
   }
   rp.window.x += xmove;
   rp.window.y += ymove;
@@ -127,7 +129,9 @@ void glAccum(Context& ctx, GLenum op, GLfloat value) {
   rec::Accum a;
   a.op = op;
   a.value = value;
-  record(ctx, a);
+  a.state = ctx.snapshots.capture(ctx, ctx.recorder.record());
+  record_before_bitmap_cache(ctx, a);  // Mesa's glAccum does not flush the bitmap cache
+  note_frame_content(ctx);
 }
 
 }  // namespace impl

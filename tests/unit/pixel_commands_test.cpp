@@ -88,6 +88,67 @@ TEST_F(PixelCommandTest, BitmapErrorsAndNoOps) {
   EXPECT_EQ(glGetError(), GL_INVALID_OPERATION);
 }
 
+// Mesa's bitmap cache (st_cb_bitmap.c): bitmaps that fit a 512 x 32 cache with the same raster
+// colour become one bitmap, drawn with the state of the last glBitmap call.
+TEST_F(PixelCommandTest, CachedBitmapsMergeAndTakeTheLastState) {
+  const GLubyte rows[2] = {0xC0, 0x80};  // bottom row 11, top row 1.
+  glRasterPos2i(10, 10);
+  glBitmap(2, 2, 0, 0, 1, 0, rows);  // overlaps the next: one fragment per pixel
+  glEnable(GL_BLEND);
+  glBitmap(2, 2, 0, 0, 0, 1, rows);
+  auto b = commands<glpt::rec::Bitmap>();
+  ASSERT_EQ(b.size(), 1u);
+  EXPECT_EQ(b[0]->origin, glm::vec2(10, 10));
+  EXPECT_EQ(b[0]->width, 3u);
+  EXPECT_EQ(b[0]->height, 2u);
+  EXPECT_EQ(b[0]->bits, (std::vector<uint8_t>{1, 1, 1, 1, 1, 0}));
+  EXPECT_TRUE(state(b[0]->state).raster->ops.blend);  // validated at the second call
+  // Another colour flushes the cache, with the state validated by the call that flushed it.
+  glColor3f(1, 0, 0);
+  glRasterPos2i(10, 12);
+  glBlendFunc(GL_ONE, GL_ONE);
+  glBitmap(2, 2, 0, 0, 0, 0, rows);
+  b = commands<glpt::rec::Bitmap>();
+  ASSERT_EQ(b.size(), 2u);
+  EXPECT_EQ(b[0]->state, b[1]->state);
+  EXPECT_EQ(state(b[0]->state).raster->ops.blend_src_rgb, GLenum{GL_ONE});
+}
+
+TEST_F(PixelCommandTest, BitmapCacheKeepsItsProgramAndScissorEnable) {
+  const GLubyte rows[1] = {0xFF};
+  glRasterPos2i(10, 10);
+  glBitmap(8, 1, 0, 0, 0, 0, rows);
+  glEnable(GL_SCISSOR_TEST);
+  glEnable(GL_FOG);
+  glEnable(GL_DEPTH_TEST);
+  glBitmap(8, 1, 0, 0, 0, 0, rows);  // another program and scissor enable: flushes the cache
+  const auto b = commands<glpt::rec::Bitmap>();
+  ASSERT_EQ(b.size(), 2u);
+  const glpt::rec::RasterState& first = *state(b[0]->state).raster;
+  EXPECT_TRUE(first.ops.depth_test);
+  EXPECT_FALSE(first.ops.scissor_test);
+  EXPECT_FALSE(first.fog.enabled);
+  EXPECT_TRUE(state(b[1]->state).raster->ops.scissor_test);
+}
+
+TEST_F(PixelCommandTest, LargeBitmapsAndAccumulationGoBeforeTheCache) {
+  const GLubyte rows[40] = {};
+  glRasterPos2i(10, 10);
+  glBitmap(8, 1, 0, 0, 0, 0, rows);
+  glBitmap(8, 40, 0, 0, 0, 0, rows);  // taller than the cache: drawn at once
+  glAccum(GL_LOAD, 1.0f);             // does not flush the cache
+  glBitmap(8, 1, 0, 0, 0, 0, rows);   // joins the cache
+  glFlush();                          // flushes it
+  glBitmap(8, 1, 0, 0, 0, 0, rows);
+  ctx_.recorder.seal();
+  const auto& c = ctx_.recorder.record().commands;
+  ASSERT_EQ(c.size(), 4u);
+  EXPECT_EQ(std::get<glpt::rec::Bitmap>(c[0]).height, 40u);
+  EXPECT_TRUE(std::holds_alternative<glpt::rec::Accum>(c[1]));
+  EXPECT_EQ(std::get<glpt::rec::Bitmap>(c[2]).height, 1u);
+  EXPECT_TRUE(std::holds_alternative<glpt::rec::Bitmap>(c[3]));
+}
+
 TEST_F(PixelCommandTest, DrawPixelsUnpacksFormatsAndRoundsThePosition) {
   glRasterPos2f(2.5f, 3.49f);  // rounded half away from zero: (3, 3)
   const GLubyte rgb[2 * 2 * 3] = {255, 0, 51, 0, 255, 102, 10, 20, 30, 40, 50, 60};
