@@ -18,7 +18,10 @@ thread_local Context* t_current = nullptr;
 Context::Context(const Context* shared)
     : unimplemented_calls(static_cast<size_t>(CommandId::kCount), 0),
       unimplemented_reported(static_cast<size_t>(CommandId::kCount), false) {
-  if (shared != nullptr) lists.store = shared->lists.store;
+  if (shared != nullptr) {
+    lists.store = shared->lists.store;
+    textures.store = shared->textures.store;
+  }
 }
 
 Context::~Context() {

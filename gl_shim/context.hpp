@@ -32,7 +32,8 @@ namespace glpt {
 
 class Context {
  public:
-  // `shared` (may be null): a context whose display lists this one shares (GLX share_list).
+  // `shared` (may be null): a context whose display lists and texture objects this one shares
+  // (GLX share_list).
   explicit Context(const Context* shared);
   ~Context();
   Context(const Context&) = delete;

@@ -1,5 +1,5 @@
 // glClear*, glViewport, glDepthRange, glScissor, glDrawBuffer/glReadBuffer, glPixelStore,
-// glReadPixels, glFlush, glFinish (GL 1.5 spec 2.11.1, 4.2, 4.3, 5.5).
+// glFlush, glFinish (glReadPixels: gl_shim/pixels/read_pixels.cpp) (GL 1.5 spec 2.11.1, 4.2, 4.3, 5.5).
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -14,73 +14,6 @@ namespace glpt {
 namespace {
 
 float clamp01(float v) { return std::clamp(v, 0.0f, 1.0f); }
-
-int components_of(GLenum format) {
-  switch (format) {
-    case GL_RED:
-    case GL_GREEN:
-    case GL_BLUE:
-    case GL_ALPHA:
-    case GL_LUMINANCE:
-      return 1;
-    case GL_LUMINANCE_ALPHA:
-      return 2;
-    case GL_RGB:
-    case GL_BGR:
-      return 3;
-    case GL_RGBA:
-    case GL_BGRA:
-      return 4;
-    default:
-      return 0;
-  }
-}
-
-int type_size(GLenum type) {
-  switch (type) {
-    case GL_UNSIGNED_BYTE:
-    case GL_BYTE:
-      return 1;
-    case GL_UNSIGNED_SHORT:
-    case GL_SHORT:
-      return 2;
-    case GL_UNSIGNED_INT:
-    case GL_INT:
-    case GL_FLOAT:
-      return 4;
-    default:
-      return 0;
-  }
-}
-
-// One colour component in [0,1] written as `type` (GL 1.5 spec table 4.7, inverse of 2.9).
-void store_component(void* dst, GLenum type, float c) {
-  switch (type) {
-    case GL_UNSIGNED_BYTE:
-      *static_cast<GLubyte*>(dst) = static_cast<GLubyte>(std::lround(c * 255.0f));
-      break;
-    case GL_BYTE:
-      *static_cast<GLbyte*>(dst) = static_cast<GLbyte>(std::lround((c * 255.0f - 1.0f) / 2.0f));
-      break;
-    case GL_UNSIGNED_SHORT:
-      *static_cast<GLushort*>(dst) = static_cast<GLushort>(std::lround(c * 65535.0f));
-      break;
-    case GL_SHORT:
-      *static_cast<GLshort*>(dst) = static_cast<GLshort>(std::lround((c * 65535.0f - 1.0f) / 2.0f));
-      break;
-    case GL_UNSIGNED_INT:
-      *static_cast<GLuint*>(dst) = static_cast<GLuint>(std::llround(c * 4294967295.0));
-      break;
-    case GL_INT:
-      *static_cast<GLint*>(dst) = static_cast<GLint>(std::llround((c * 4294967295.0 - 1.0) / 2.0));
-      break;
-    case GL_FLOAT:
-      *static_cast<GLfloat*>(dst) = c;
-      break;
-    default:
-      break;
-  }
-}
 
 }  // namespace
 
@@ -278,96 +211,6 @@ void glPixelStorei(Context& ctx, GLenum pname, GLint param) {
 void glPixelStoref(Context& ctx, GLenum pname, GLfloat param) {
   if (!std::isfinite(param)) return record_error(ctx, GL_INVALID_VALUE);
   glPixelStorei(ctx, pname, static_cast<GLint>(std::lround(param)));
-}
-
-void glReadPixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height, GLenum format,
-                  GLenum type, void* pixels) {
-  if (width < 0 || height < 0) return record_error(ctx, GL_INVALID_VALUE);
-  const int comps = components_of(format);
-  const int tsize = type_size(type);
-  if (format == GL_DEPTH_COMPONENT || format == GL_STENCIL_INDEX || format == GL_COLOR_INDEX) {
-    // Depth/stencil/index reads are not modelled yet: an honest error instead of made-up data.
-    return unimplemented(ctx, CommandId::glReadPixels);
-  }
-  if (comps == 0 || tsize == 0) return record_error(ctx, GL_INVALID_ENUM);
-  if (width == 0 || height == 0 || pixels == nullptr) return;
-  // A read sees everything drawn so far, swapped or not.
-  FramebufferPixels read;
-  if (!read_framebuffer(ctx, rec::PixelKind::kColor, ctx.raster.ops.read_buffer, x, y,
-                        static_cast<uint32_t>(width), static_cast<uint32_t>(height), read))
-    return;
-
-  const PixelStoreModes& pack = ctx.framebuffer.pack;
-  const int64_t row_pixels = pack.row_length > 0 ? pack.row_length : width;
-  const int64_t pixel_bytes = int64_t{comps} * tsize;
-  const int64_t align = pack.alignment;
-  const int64_t row_bytes = (row_pixels * pixel_bytes + align - 1) / align * align;
-  auto* base = static_cast<unsigned char*>(pixels) + pack.skip_rows * row_bytes +
-               pack.skip_pixels * pixel_bytes;
-
-  for (GLsizei j = 0; j < height; ++j) {
-    unsigned char* row = base + j * row_bytes;
-    for (GLsizei i = 0; i < width; ++i) {
-      const size_t k = size_t(j) * width + i;
-      // Pixels outside the window are undefined in GL; glpt leaves the destination untouched.
-      if (!read.inside[k]) continue;
-      const float r = read.color[k].r, g = read.color[k].g, b = read.color[k].b,
-                  a = read.color[k].a;
-      float c[4];
-      switch (format) {
-        case GL_RED:
-          c[0] = r;
-          break;
-        case GL_GREEN:
-          c[0] = g;
-          break;
-        case GL_BLUE:
-          c[0] = b;
-          break;
-        case GL_ALPHA:
-          c[0] = a;
-          break;
-        case GL_LUMINANCE:
-          c[0] = std::min(1.0f, r + g + b);
-          break;  // spec 4.3.2: L = R + G + B
-        case GL_LUMINANCE_ALPHA:
-          c[0] = std::min(1.0f, r + g + b);
-          c[1] = a;
-          break;
-        case GL_RGB:
-          c[0] = r;
-          c[1] = g;
-          c[2] = b;
-          break;
-        case GL_BGR:
-          c[0] = b;
-          c[1] = g;
-          c[2] = r;
-          break;
-        case GL_RGBA:
-          c[0] = r;
-          c[1] = g;
-          c[2] = b;
-          c[3] = a;
-          break;
-        case GL_BGRA:
-          c[0] = b;
-          c[1] = g;
-          c[2] = r;
-          c[3] = a;
-          break;
-        default:
-          break;
-      }
-      unsigned char* dst = row + i * pixel_bytes;
-      if (type == GL_UNSIGNED_BYTE) {
-        for (int k = 0; k < comps; ++k)
-          dst[k] = static_cast<unsigned char>(std::lround(c[k] * 255.0f));
-      } else {
-        for (int k = 0; k < comps; ++k) store_component(dst + k * tsize, type, c[k]);
-      }
-    }
-  }
 }
 
 namespace {

@@ -21,7 +21,26 @@ Every entry point also does, from the table:
   - nothing at all without a current context (GL leaves this undefined; never crash);
   - GL_INVALID_OPERATION between glBegin and glEnd for commands the spec does not allow there;
   - recording into the display list being compiled, for the commands the spec compiles.
+
+Display-list recording is table-driven too. A compiled command's scalar arguments are stored as
+they are; its pointer arguments are copied with a length that comes from:
+  - the registry (len="3", a count parameter, or COMPSIZE(pname) through
+    glpt::pname_value_count, display_lists/param_counts.cpp);
+  - CUSTOM_ARRAY_COUNTS: a hand-written C++ expression for the element count;
+  - CLIENT_IMAGES: an image in client memory laid out by the unpack modes (glTexImage*,
+    glTexSubImage*, glDrawPixels, glBitmap, glPolygonStipple). GL 1.5 5.4 compiles these with the
+    image unpacked at compile time, with the pixel store modes current then. Recording calls the
+    hand-written glpt::copy_client_image (pixels/list_images.hpp), which stores the image in the
+    same format and type laid out with the default unpack modes (alignment 1, no skips, no byte
+    swapping, MSB-first bitmaps: Mesa's display lists do the same); replay runs the command with
+    those default modes in effect (glpt::DefaultUnpackModes) and restores the context's own. A
+    table entry may name a condition under which the command is executed at once and never
+    compiled (proxy texture targets, GL 1.5 3.8.11).
+Any other pointer argument (client arrays, output pointers) makes a command "not compilable":
+it is counted and not recorded.
 """
+
+import collections
 
 import argparse
 import re
@@ -108,7 +127,56 @@ PNAME_COUNT_FAMILIES = re.compile(
 # Pointer parameters with a hand-written size: (command, parameter) -> (element type, count).
 CUSTOM_ARRAY_COUNTS = {
     ("glCallLists", "lists"): ("GLubyte", "glpt::call_lists_bytes(n, type)"),
+    # Only a map size GL accepts is read (an invalid one is an error when the list runs).
+    ("glPixelMapfv", "values"): ("GLfloat", "glpt::pixel_map_values_to_record(mapsize)"),
+    ("glPixelMapuiv", "values"): ("GLuint", "glpt::pixel_map_values_to_record(mapsize)"),
+    ("glPixelMapusv", "values"): ("GLushort", "glpt::pixel_map_values_to_record(mapsize)"),
+    # Compressed images are stored as the bytes they are.
+    ("glCompressedTexImage1D", "data"): ("GLubyte", "glpt::clamp_count(imageSize)"),
+    ("glCompressedTexImage2D", "data"): ("GLubyte", "glpt::clamp_count(imageSize)"),
+    ("glCompressedTexImage3D", "data"): ("GLubyte", "glpt::clamp_count(imageSize)"),
+    ("glCompressedTexSubImage1D", "data"): ("GLubyte", "glpt::clamp_count(imageSize)"),
+    ("glCompressedTexSubImage2D", "data"): ("GLubyte", "glpt::clamp_count(imageSize)"),
+    ("glCompressedTexSubImage3D", "data"): ("GLubyte", "glpt::clamp_count(imageSize)"),
 }
+
+# Images in client memory read through the unpack modes (see the docstring), by core command
+# name: the pointer parameter, whether IMAGE_HEIGHT / SKIP_IMAGES apply (3-D), the C++
+# expressions of width, height, depth, format and type, and a condition for executing the command
+# at once instead of compiling it (or None).
+ClientImage = collections.namedtuple(
+    "ClientImage", "data three_d width height depth format type immediate_if")
+_PROXY = "glpt::is_proxy_texture_target(target)"
+CLIENT_IMAGES = {
+    "glTexImage1D": ClientImage("pixels", False, "width", "1", "1", "format", "type", _PROXY),
+    "glTexImage2D": ClientImage("pixels", False, "width", "height", "1", "format", "type", _PROXY),
+    "glTexImage3D": ClientImage("pixels", True, "width", "height", "depth", "format", "type",
+                                _PROXY),
+    "glTexSubImage1D": ClientImage("pixels", False, "width", "1", "1", "format", "type", None),
+    "glTexSubImage2D": ClientImage("pixels", False, "width", "height", "1", "format", "type",
+                                   None),
+    "glTexSubImage3D": ClientImage("pixels", True, "width", "height", "depth", "format", "type",
+                                   None),
+    "glDrawPixels": ClientImage("pixels", False, "width", "height", "1", "format", "type", None),
+    "glBitmap": ClientImage("bitmap", False, "width", "height", "1", "GL_COLOR_INDEX",
+                            "GL_BITMAP", None),
+    "glPolygonStipple": ClientImage("mask", False, "32", "32", "1", "GL_COLOR_INDEX", "GL_BITMAP",
+                                    None),
+}
+
+# Commands the registry does not mark as aliases (EXT_texture_object's have GLX opcodes of their
+# own) but that are the core command in every implementation, Mesa's included.
+EXTRA_ALIASES = {
+    "glGenTexturesEXT": "glGenTextures",
+    "glDeleteTexturesEXT": "glDeleteTextures",
+    "glIsTextureEXT": "glIsTexture",
+    "glAreTexturesResidentEXT": "glAreTexturesResident",
+}
+# Parameter types an alias may differ in and still share the core implementation: typedefs of
+# the same C type, and internal formats declared GLenum by EXT_texture3D but GLint by GL 1.2
+# (every valid value converts exactly).
+EQUIVALENT_TYPES = {"GLclampf": "GLfloat", "GLclampd": "GLdouble", "GLsizeiptrARB": "GLsizeiptr",
+                    "GLintptrARB": "GLintptr", "GLenum": "GLint"}
 
 GL_SCALAR_TYPES = {
     "GLenum", "GLboolean", "GLbitfield", "GLbyte", "GLshort", "GLint", "GLubyte", "GLushort",
@@ -232,18 +300,23 @@ def literal_count(length):
 
 
 def record_plan(cmd):
-    """How a compiled command stores its pointer arguments, or None if it needs custom code.
+    """How a compiled command stores its pointer arguments, or None if it cannot be compiled.
 
-    Returns a list, per pointer parameter, of a C++ expression for its element count.
+    Returns a dict: pointer parameter -> a C++ expression for its element count, or
+    "client image" for the image of a CLIENT_IMAGES command.
     """
     plan = {}
     param_names = {p.name for p in cmd.params}
+    image = CLIENT_IMAGES.get(core_name(cmd.name))
     for p in cmd.params:
+        if image is not None and p.name == image.data:
+            plan[p.name] = "client image"
+            continue
         if not p.is_pointer:
             if p.ptype not in GL_SCALAR_TYPES:
                 return None
             continue
-        custom = CUSTOM_ARRAY_COUNTS.get((cmd.name, p.name))
+        custom = CUSTOM_ARRAY_COUNTS.get((core_name(cmd.name), p.name))
         if custom:
             plan[p.name] = custom[1]
             continue
@@ -304,12 +377,22 @@ def emit_commands_header(path, names):
                 "  return kCommandNames[static_cast<uint16_t>(id)];\n}\n\n}  // namespace glpt\n")
 
 
+def equivalent_type(ctype):
+    return " ".join(EQUIVALENT_TYPES.get(word, word) for word in ctype.split())
+
+
+def alias_of(cmd):
+    return cmd.alias or EXTRA_ALIASES.get(cmd.name)
+
+
 def impl_name(cmd, commands):
     """The implementation a command uses: its own, or that of the core command it aliases."""
-    if cmd.alias and cmd.alias in commands:
-        target = commands[cmd.alias]
-        if [p.ctype for p in target.params] == [p.ctype for p in cmd.params] and target.ret == cmd.ret:
-            return cmd.alias
+    alias = alias_of(cmd)
+    if alias and alias in commands:
+        target = commands[alias]
+        if ([equivalent_type(p.ctype) for p in target.params] ==
+                [equivalent_type(p.ctype) for p in cmd.params] and target.ret == cmd.ret):
+            return alias
     return cmd.name
 
 
@@ -356,6 +439,7 @@ def emit_entry_points(path, names, commands):
     w('#include <algorithm>\n#include <cstring>\n\n'
       '#include "gl_shim/context.hpp"\n#include "gl_shim/display_lists/list_stream.hpp"\n'
       '#include "gl_shim/dispatch.hpp"\n#include "gl_shim/gl_entry_decls.h"\n'
+      '#include "gl_shim/pixels/list_images.hpp"\n'
       '#include "gl/gl_enums.h"\n\n')
     # Weak references to the implementations.
     w("namespace glpt::impl {\n")
@@ -391,7 +475,10 @@ def emit_entry_points(path, names, commands):
         cmd = commands[n]
         w(f"struct Rec_{n} {{\n")
         for p in cmd.params:
-            if p.is_pointer:
+            if plan.get(p.name) == "client image":
+                w(f"  uint32_t {p.name}_offset;\n  uint32_t {p.name}_bytes;\n"
+                  f"  bool {p.name}_present;\n")
+            elif p.is_pointer:
                 w(f"  uint32_t {p.name}_offset;\n  uint32_t {p.name}_count;\n")
             else:
                 w(f"  {p.ctype} {p.name};\n")
@@ -410,10 +497,15 @@ def emit_entry_points(path, names, commands):
         w(f"      case CommandId::{n}: {{\n")
         if cmd.params:
             w(f"        const auto rec = r.record<Rec_{n}>();\n")
+        if "client image" in plan.values():
+            w("        const DefaultUnpackModes unpack_defaults(ctx);  // the image's own layout\n")
         args = []
         for p in cmd.params:
-            if p.is_pointer:
-                elem = CUSTOM_ARRAY_COUNTS.get((cmd.name, p.name), (p.ptype,))[0]
+            if plan.get(p.name) == "client image":
+                elem = p.ptype or "void"
+                args.append(f"rec.{p.name}_present ? r.payload<{elem}>(rec.{p.name}_offset) : nullptr")
+            elif p.is_pointer:
+                elem = CUSTOM_ARRAY_COUNTS.get((core_name(cmd.name), p.name), (p.ptype,))[0]
                 args.append(f"r.payload<{elem}>(rec.{p.name}_offset)")
             else:
                 args.append(f"rec.{p.name}")
@@ -438,13 +530,27 @@ def emit_entry_points(path, names, commands):
                 w(f"    glpt::not_compilable(*ctx, glpt::CommandId::{n});\n")
             else:
                 w("  if (glpt::ListStream* glpt_list = ctx->list_being_compiled()) {\n")
+                image = CLIENT_IMAGES.get(core_name(n)) if "client image" in plan.values() else None
+                if image is not None and image.immediate_if:
+                    call = ", ".join(["*ctx"] + [p.name for p in cmd.params])
+                    w(f"    if ({image.immediate_if}) return glpt::exec_{n}({call});\n")
+                if image is not None:
+                    w(f"    const glpt::ClientImageCopy image_copy = glpt::copy_client_image("
+                      f"ctx->framebuffer.unpack, glpt::ImageShape{{{image.width}, {image.height}, "
+                      f"{image.depth}, {image.format}, {image.type}}}, "
+                      f"{'true' if image.three_d else 'false'}, {image.data});\n")
                 w(f"    glpt::ListStream::Writer rec_writer(*glpt_list, glpt::CommandId::{n}, "
                   f"sizeof(glpt::Rec_{n}));\n")
                 w(f"    glpt::Rec_{n} rec{{}};\n")
                 for p in cmd.params:
-                    if p.is_pointer:
+                    if plan.get(p.name) == "client image":
+                        w(f"    rec.{p.name}_present = image_copy.present;\n")
+                        w(f"    rec.{p.name}_bytes = uint32_t(image_copy.bytes.size());\n")
+                        w(f"    rec.{p.name}_offset = rec_writer.append_array("
+                          f"image_copy.bytes.data(), rec.{p.name}_bytes);\n")
+                    elif p.is_pointer:
                         w(f"    rec.{p.name}_count = {plan[p.name]};\n")
-                        elem = CUSTOM_ARRAY_COUNTS.get((cmd.name, p.name), (p.ptype,))[0]
+                        elem = CUSTOM_ARRAY_COUNTS.get((core_name(cmd.name), p.name), (p.ptype,))[0]
                         w(f"    rec.{p.name}_offset = rec_writer.append_array("
                           f"static_cast<const {elem}*>({p.name}), rec.{p.name}_count);\n")
                     else:
@@ -566,7 +672,7 @@ def main():
     names, enum_names = collect(gl, "gl", GL_FEATURES, GL_EXTENSIONS, GL_ENUM_ONLY_EXTENSIONS)
     # Aliased core commands must exist for their aliases to use them.
     for n in list(names):
-        a = commands[n].alias
+        a = alias_of(commands[n])
         if a and a in commands and a not in names:
             names.append(a)
     emit_enums(f"{args.enums_out}/gl_enums.h", enum_names, parse_enums(gl, "gl"), "GL 1.0-1.5 + extensions")

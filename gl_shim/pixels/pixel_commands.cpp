@@ -6,13 +6,18 @@
 // draws them (rt_core/raster/pixel_commands.cpp).
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
+#include "common/mesa_float.hpp"
 #include "gl/gl_enums.h"
 #include "gl_shim/context.hpp"
 #include "gl_shim/dispatch.hpp"
 #include "gl_shim/gl_impl_decls.hpp"
 #include "gl_shim/pixels/bitmap_cache.hpp"
-#include "gl_shim/pixels/rectangle_unpack.hpp"
+#include "gl_shim/pixels/pixel_formats.hpp"
+#include "gl_shim/pixels/pixel_layout.hpp"
+#include "gl_shim/pixels/pixel_unpack.hpp"
+#include "gl_shim/state/out_of_memory.hpp"
 
 namespace glpt {
 namespace {
@@ -21,7 +26,7 @@ namespace {
 // a texture and does the same); images with more groups than kMaxGroups (a 4096 x 4096 image;
 // the record holds 16 bytes per group) are GL_OUT_OF_MEMORY.
 constexpr int32_t kMaxImageSide = 16384;
-constexpr int64_t kMaxGroups = int64_t{1} << 24;
+constexpr size_t kMaxGroups = size_t{1} << 24;
 
 // The raster position of a pixel command, its x and y rounded as Mesa rounds them (lroundf).
 // (A non-finite position stays as it is; nothing is drawn at it.)
@@ -45,6 +50,42 @@ void record(Context& ctx, Command command) {
   note_frame_content(ctx);
 }
 
+// glDrawPixels colours through pixel transfer as Mesa 25 draws them. Mesa uploads the image
+// untransferred and applies scale/bias and the colour maps in its fragment shader
+// (nir_lower_drawpixels): c = image * scale + bias (fused), then, with GL_MAP_COLOR, R and G from
+// a 256-texel RGBA8 map texture at floor(c * 256) (entry floor(i * size / 256)), while B and A
+// come from a lookup that samples the *image* at (c.b, c.a) and takes its R and G (the lookup
+// has no texture source; measured, 5600 of 5600 components equal). Colour indices and stencil
+// indices ignore INDEX_SHIFT / INDEX_OFFSET (and stencil MAP_STENCIL): Mesa's shaders do not
+// apply them.
+std::vector<glm::vec4> mesa_transfer_colors(const std::vector<glm::vec4>& image, int32_t width,
+                                            int32_t height, const rec::PixelTransferState& t) {
+  std::vector<glm::vec4> out(image.size());
+  const rec::PixelMaps& maps = t.pixel_maps();
+  auto map_texel = [&](GLenum map, float v) {
+    const std::vector<float>& m = maps.maps[map - GL_PIXEL_MAP_I_TO_I];
+    const int i = std::clamp(static_cast<int>(std::floor(v * 256.0f)), 0, 255);
+    const float entry = m[size_t(i) * m.size() / 256];
+    return float(mesa_float_to_ubyte(entry)) * (1.0f / 255.0f);  // util_pack_color
+  };
+  auto texel = [&](float s, float t_coord) {
+    const int x = std::clamp(static_cast<int>(std::floor(s * float(width))), 0, width - 1);
+    const int y = std::clamp(static_cast<int>(std::floor(t_coord * float(height))), 0, height - 1);
+    return image[size_t(y) * size_t(width) + size_t(x)];
+  };
+  for (size_t i = 0; i < image.size(); ++i) {
+    glm::vec4 c;
+    for (int k = 0; k < 4; ++k) c[k] = std::fma(image[i][k], t.scale[k], t.bias[k]);
+    if (t.map_color) {
+      const glm::vec4 x = texel(c.b, c.a);
+      c = glm::vec4(map_texel(GL_PIXEL_MAP_R_TO_R, c.r), map_texel(GL_PIXEL_MAP_G_TO_G, c.g), x.r,
+                    x.g);
+    }
+    out[i] = glm::clamp(c, 0.0f, 1.0f);
+  }
+  return out;
+}
+
 }  // namespace
 
 namespace impl {
@@ -56,7 +97,7 @@ void glBitmap(Context& ctx, GLsizei width, GLsizei height, GLfloat xorig, GLfloa
   if (!rp.valid) return;  // nothing drawn, and the raster position does not move (Mesa)
   validate_state(ctx);
   if (width > 0 && height > 0 && bitmap != nullptr) {
-    if (int64_t{width} * height > kMaxGroups) return record_error(ctx, GL_OUT_OF_MEMORY);
+    if (size_t(width) * size_t(height) > kMaxGroups) return record_error(ctx, GL_OUT_OF_MEMORY);
     rec::Bitmap b;
     b.raster = rp;
     const float epsilon = 0.0001f;
@@ -76,28 +117,48 @@ void glDrawPixels(Context& ctx, GLsizei width, GLsizei height, GLenum format, GL
                   const void* pixels) {
   if (width < 0 || height < 0) return record_error(ctx, GL_INVALID_VALUE);
   validate_state(ctx);
-  if (const GLenum error = check_pixel_format_and_type(format, type); error != GL_NO_ERROR)
+  if (const GLenum error = check_format_and_type(format, type); error != GL_NO_ERROR)
     return record_error(ctx, error);
+  const PixelClass kind = pixel_class(format);
   const rec::DrawableConfig& drawable = ctx.drawable;
-  if ((format == GL_STENCIL_INDEX && drawable.stencil_bits == 0) ||
-      (format == GL_DEPTH_COMPONENT && drawable.depth_bits == 0))
+  // Colour indices are drawn through the I_TO_R/G/B/A maps (RGBA mode); their sizes are never 0
+  // in GL 1.5, so Mesa's "color index pixels into RGB buffer" error cannot happen.
+  if ((kind == PixelClass::kStencilIndex && drawable.stencil_bits == 0) ||
+      (kind == PixelClass::kDepth && drawable.depth_bits == 0))
     return record_error(ctx, GL_INVALID_OPERATION);
   if (!ctx.raster_position.valid || width == 0 || height == 0 || pixels == nullptr) return;
+  // Images larger than the largest texture are cut to it; rows keep their stride (Mesa's
+  // clamp_size).
+  PixelStoreModes modes = ctx.framebuffer.unpack;
+  if (width > kMaxImageSide && modes.row_length == 0) modes.row_length = width;
+  const ImageShape shape{std::min(width, kMaxImageSide), std::min(height, kMaxImageSide), 1, format,
+                         type};
+  if (shape.groups() > kMaxGroups) return record_error(ctx, GL_OUT_OF_MEMORY);
+  if (!ClientImageLayout(modes, shape, false).valid()) return record_error(ctx, GL_INVALID_VALUE);
   rec::DrawPixels d;
-  // Rows wider than the largest image keep their stride (Mesa's clamp_size).
-  const PixelStoreModes saved = ctx.framebuffer.unpack;
-  if (width > kMaxImageSide && ctx.framebuffer.unpack.row_length == 0)
-    ctx.framebuffer.unpack.row_length = width;
-  const int32_t w = std::min(width, kMaxImageSide), h = std::min(height, kMaxImageSide);
-  if (int64_t{w} * h > kMaxGroups) {
-    ctx.framebuffer.unpack = saved;
-    return record_error(ctx, GL_OUT_OF_MEMORY);
-  }
-  const bool unpacked = unpack_image(ctx, w, h, format, type, pixels, d);
-  ctx.framebuffer.unpack = saved;
-  if (!unpacked) return unimplemented(ctx, CommandId::glDrawPixels);
-  d.raster = rounded_raster_position(ctx);
-  record(ctx, std::move(d));
+  d.width = static_cast<uint32_t>(shape.width);
+  d.height = static_cast<uint32_t>(shape.height);
+  const UnpackSource source{modes, shape, false, pixels};
+  or_out_of_memory(ctx, [&] {
+    if (kind == PixelClass::kDepth) {
+      d.kind = rec::PixelKind::kDepth;
+      d.depth = unpack_depth(source, ctx.pixel_transfer);
+    } else if (kind == PixelClass::kStencilIndex) {
+      d.kind = rec::PixelKind::kStencil;
+      d.stencil = unpack_indices_raw(source);  // no shift, offset or map (Mesa)
+    } else if (kind == PixelClass::kColorIndex) {
+      d.kind = rec::PixelKind::kColor;
+      rec::PixelTransferState t = ctx.pixel_transfer;
+      t.index_shift = t.index_offset = 0;  // Mesa ignores them here
+      d.color = unpack_color(source, t);
+    } else {
+      d.kind = rec::PixelKind::kColor;
+      d.color = mesa_transfer_colors(unpack_color_raw(source), shape.width, shape.height,
+                                     ctx.pixel_transfer);
+    }
+    d.raster = rounded_raster_position(ctx);
+    record(ctx, std::move(d));
+  });
 }
 
 void glCopyPixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height, GLenum type) {

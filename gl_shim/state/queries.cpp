@@ -22,9 +22,6 @@ using query::Value;
 // GL_CURRENT_RASTER_SECONDARY_COLOR is not in the GL 1.5 registry selection; Mesa answers it.
 constexpr GLenum kCurrentRasterSecondaryColor = 0x845F;
 
-// Implementation limits glpt reports.
-constexpr int kMaxTextureSize = 4096;
-
 bool lookup(const Context& ctx, GLenum pname, Value* out) {
   const auto& fb = ctx.framebuffer;
   const auto& m = ctx.matrices;
@@ -72,21 +69,6 @@ bool lookup(const Context& ctx, GLenum pname, Value* out) {
     case GL_MAX_CLIP_PLANES:
       *out = ints({6});
       return true;
-    case GL_MAX_TEXTURE_SIZE:
-      *out = ints({kMaxTextureSize});
-      return true;
-    case GL_MAX_3D_TEXTURE_SIZE:
-      *out = ints({256});
-      return true;
-    case GL_MAX_CUBE_MAP_TEXTURE_SIZE:
-      *out = ints({kMaxTextureSize});
-      return true;
-    case GL_MAX_TEXTURE_UNITS:
-      *out = ints({double(rec::kMaxTextureUnits)});
-      return true;
-    case GL_ACTIVE_TEXTURE:
-      *out = ints({double(GL_TEXTURE0 + ctx.textures.active)});
-      return true;
     case GL_MAX_LIST_NESTING:
       *out = ints({DisplayListState::kMaxNesting});
       return true;
@@ -99,9 +81,6 @@ bool lookup(const Context& ctx, GLenum pname, Value* out) {
       return true;
     case GL_MAX_EVAL_ORDER:
       *out = ints({30});
-      return true;
-    case GL_MAX_PIXEL_MAP_TABLE:
-      *out = ints({256});
       return true;
     case GL_MAX_ELEMENTS_VERTICES:
     case GL_MAX_ELEMENTS_INDICES:
@@ -282,6 +261,7 @@ bool lookup(const Context& ctx, GLenum pname, Value* out) {
       break;
   }
   if (lookup_fixed_function_state(ctx, pname, out)) return true;
+  if (lookup_texture_and_pixel_state(ctx, pname, out)) return true;
   if (auto on = capability_enabled(const_cast<Context&>(ctx), pname)) {
     *out = boolean(*on);
     return true;

@@ -71,4 +71,8 @@ inline GLint round_to_int(double v) {
 // `pname` is none of those.
 bool lookup_fixed_function_state(const Context& ctx, GLenum pname, query::Value* out);
 
+// Texture bindings and limits, pixel store modes of 3-D images, pixel transfer, pixel maps and
+// zoom (gl_shim/textures/texture_queries.cpp). False if `pname` is none of those.
+bool lookup_texture_and_pixel_state(const Context& ctx, GLenum pname, query::Value* out);
+
 }  // namespace glpt

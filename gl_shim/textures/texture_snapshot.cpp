@@ -1,5 +1,3 @@
-// Interim: texture objects are not implemented yet, so no unit samples a texture; environment,
-// texgen and texture matrices are snapshot already.
 #include "gl_shim/textures/texture_snapshot.hpp"
 
 #include "gl_shim/context.hpp"
@@ -7,15 +5,23 @@
 namespace glpt {
 
 void snapshot_texturing(const Context& ctx, rec::TexturingState& out) {
-  for (int i = 0; i < rec::kMaxTextureUnits; ++i) {
-    const TextureUnit& live = ctx.textures.units[i];
-    rec::TextureUnitState& unit = out.units[i];
-    unit.target = 0;
-    unit.texture.reset();
-    unit.env = live.env;
-    unit.texgen_mask = live.texgen_mask;
-    unit.texgen = live.texgen;
-    unit.matrix = ctx.matrices.texture[i].top();
+  for (size_t u = 0; u < out.units.size(); ++u) {
+    const TextureUnit& unit = ctx.textures.units[u];
+    rec::TextureUnitState& s = out.units[u];
+    s.target = 0;
+    s.texture.reset();
+    for (int slot = kSlotCube; slot >= kSlot1D && unit.enabled_targets != 0; --slot) {
+      if ((unit.enabled_targets & (1u << slot)) == 0) continue;
+      TextureObject& object = ctx.textures.bound(unit, slot);
+      if (!object.complete()) continue;  // Mesa falls back to the next enabled target
+      s.target = slot_target(slot);
+      s.texture = object.snapshot();
+      break;
+    }
+    s.env = unit.env;
+    s.texgen_mask = unit.texgen_mask;
+    s.texgen = unit.texgen;
+    s.matrix = ctx.matrices.texture[u].top();
   }
 }
 

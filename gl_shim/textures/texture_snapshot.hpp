@@ -1,4 +1,5 @@
-// The texturing block of a state snapshot (rt_core/record/gl_state.hpp, TexturingState).
+// The texturing state a draw records (rec::TexturingState), taken from the live state at every
+// draw; cheap when nothing changed (texture snapshots are cached by their objects).
 #pragma once
 
 #include "rt_core/record/gl_state.hpp"
@@ -7,9 +8,10 @@ namespace glpt {
 
 class Context;
 
-// Fills `out` from the live texture state: per unit the enabled target with a complete texture
-// (0: texturing off), an immutable snapshot of that texture, the environment, texgen and the
-// texture matrix. Cheap when nothing changed: unchanged textures keep their snapshot pointer.
+// For each unit: the highest-priority enabled target whose bound texture is complete (cube map >
+// 3D > 2D > 1D; an incomplete one is skipped, as Mesa does; 0 when none: texturing is off), its
+// immutable snapshot, the environment, texgen and the texture matrix. (Texture objects, shared
+// with the share group, cache their completeness and snapshot as they are asked.)
 void snapshot_texturing(const Context& ctx, rec::TexturingState& out);
 
 }  // namespace glpt

@@ -30,15 +30,6 @@ float ubyte_to_float(uint8_t b) { return static_cast<float>(b) * (1.0f / 255.0f)
 
 }  // namespace
 
-uint8_t mesa_float_to_ubyte(float f) {
-  if (!(f > 0.0f)) return 0;  // NaN too
-  if (f >= 1.0f) return 255;
-  float t = f * (255.0f / 256.0f) + 32768.0f;
-  uint32_t bits;
-  std::memcpy(&bits, &t, sizeof bits);
-  return static_cast<uint8_t>(bits);
-}
-
 void AccumulationBuffer::resize(uint32_t width, uint32_t height) {
   width_ = width;
   height_ = height;

@@ -12,6 +12,8 @@
 #include <glm/glm.hpp>
 #include <vector>
 
+#include "common/mesa_float.hpp"
+
 namespace glpt::rt {
 
 // A rectangle of the drawable in window coordinates, already clipped to it.
@@ -55,8 +57,6 @@ class AccumulationBuffer {
   std::vector<int16_t> values_;  // RGBA per pixel, rows bottom to top
 };
 
-// Mesa's float_to_ubyte (src/util/u_math.h): [0, 1] to a byte, rounding to nearest through a
-// float magic-number addition.
-uint8_t mesa_float_to_ubyte(float f);
+using glpt::mesa_float_to_ubyte;  // common/mesa_float.hpp
 
 }  // namespace glpt::rt

@@ -85,6 +85,8 @@ struct RasterRenderer::Recording {
   VkPipeline bound_pipeline = VK_NULL_HANDLE;
   // Texture descriptors currently pushed, per binding (to skip redundant pushes).
   std::array<VkImageView, 4 * GLPT_RASTER_MAX_UNITS> bound_views{};
+  // ... and their samplers: a texture whose parameters changed keeps its view (same texels).
+  std::array<VkSampler, 4 * GLPT_RASTER_MAX_UNITS> bound_samplers{};
   bool descriptors_pushed = false;
   // Dynamic state last set in this command buffer.
   bool dynamic_valid = false;

@@ -366,7 +366,7 @@ void RasterRenderer::bind(Recording& r, const PipelineKey& key,
       }
     }
   }
-  if (r.descriptors_pushed && views == r.bound_views) return;
+  if (r.descriptors_pushed && views == r.bound_views && samplers == r.bound_samplers) return;
   std::array<VkDescriptorImageInfo, 4 * GLPT_RASTER_MAX_UNITS> images{};
   std::array<VkWriteDescriptorSet, 3 + 4 * GLPT_RASTER_MAX_UNITS> writes{};
   VkDescriptorBufferInfo states{states_.handle(), 0, VK_WHOLE_SIZE};
@@ -396,6 +396,7 @@ void RasterRenderer::bind(Recording& r, const PipelineKey& key,
   push_descriptor_set_(r.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.layout(), 0,
                        static_cast<uint32_t>(writes.size()), writes.data());
   r.bound_views = views;
+  r.bound_samplers = samplers;
   r.descriptors_pushed = true;
 }
 

@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <glm/glm.hpp>
 #include <memory>
+#include <vector>
 
 #include "gl/gl_enums.h"
 
@@ -246,13 +247,36 @@ struct RasterState {
 
 // ---- pixel transfer (GL 1.5 3.6.3, 3.6.5): glDrawPixels/glCopyPixels/glTexImage conversions ----
 
+// glPixelMap tables (GL 1.5 3.6.3, table 3.3). Immutable once shared: glPixelMap makes a new one.
+struct PixelMaps {
+  // Indexed by map - GL_PIXEL_MAP_I_TO_I: I_TO_I, S_TO_S, I_TO_R, I_TO_G, I_TO_B, I_TO_A, R_TO_R,
+  // G_TO_G, B_TO_B, A_TO_A. Every map has at least one entry (initially the single value 0).
+  // Colour maps (x_TO_R/G/B/A) hold values in [0, 1]; index maps hold indices.
+  static constexpr int kCount = 10;
+  std::array<std::vector<float>, kCount> maps = initial_maps();
+
+  bool operator==(const PixelMaps&) const = default;
+
+  static std::array<std::vector<float>, kCount> initial_maps() {
+    std::array<std::vector<float>, kCount> m;
+    m.fill(std::vector<float>{0.0f});
+    return m;
+  }
+  static const PixelMaps& initial() {
+    static const PixelMaps maps;  // immutable
+    return maps;
+  }
+};
+
 struct PixelTransferState {
   bool map_color = false, map_stencil = false;
   int32_t index_shift = 0, index_offset = 0;
   glm::vec4 scale{1.0f}, bias{0.0f};  // RGBA
   float depth_scale = 1.0f, depth_bias = 0.0f;
   float zoom_x = 1.0f, zoom_y = 1.0f;  // glPixelZoom
+  std::shared_ptr<const PixelMaps> maps;  // null: GL's initial maps
 
+  const PixelMaps& pixel_maps() const { return maps ? *maps : PixelMaps::initial(); }
   bool operator==(const PixelTransferState&) const = default;
 };
 

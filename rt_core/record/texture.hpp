@@ -37,6 +37,10 @@ struct TextureImage {
   uint32_t width = 0, height = 1, depth = 1;
   uint32_t border = 0;           // as specified (for queries); the texels exclude it
   uint32_t internal_format = 0;  // as the program asked (1..4, GL_RGB8, GL_LUMINANCE, ...)
+  // The sized format whose component sizes the texels have: Mesa stores some unsized formats
+  // with the precision of the data they were given (GL_RGBA from GL_UNSIGNED_SHORT data is
+  // GL_RGBA16, GL_RGB from GL_UNSIGNED_SHORT_5_6_5 data is 5-6-5). 0: internal_format itself.
+  uint32_t sized_format = 0;
   std::vector<uint8_t> texels;   // width * height * depth * texel_bytes, rows bottom to top
 };
 

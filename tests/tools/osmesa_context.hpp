@@ -5,6 +5,7 @@
 
 #include <GL/osmesa.h>
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 

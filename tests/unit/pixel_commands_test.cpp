@@ -167,13 +167,14 @@ TEST_F(PixelCommandTest, DrawPixelsUnpacksFormatsAndRoundsThePosition) {
   EXPECT_EQ(d[0]->raster.window.y, 3.0f);
   EXPECT_EQ(d[0]->kind, PixelKind::kColor);
   ASSERT_EQ(d[0]->color.size(), 4u);
-  EXPECT_EQ(d[0]->color[0], glm::vec4(1, 0, 0.2f, 1));
-  EXPECT_EQ(d[0]->color[2], glm::vec4(10, 20, 30, 255) / 255.0f);
+  // Mesa's unorm conversion: c * (1 / 255) in float.
+  EXPECT_EQ(d[0]->color[0], glm::vec4(255, 0, 51, 255) * (1.0f / 255.0f));
+  EXPECT_EQ(d[0]->color[2], glm::vec4(10, 20, 30, 255) * (1.0f / 255.0f));
   EXPECT_EQ(d[1]->color[0], glm::vec4(glm::vec3(1.0f), 0.0f));  // L = 255, A = 0
   EXPECT_EQ(d[2]->color[0], glm::vec4(0, 0, 0, 1));             // A clamped to 1, RGB 0
   EXPECT_EQ(d[2]->color[1], glm::vec4(0, 0, 0, 0));
-  // Signed shorts: max(c / 32767, -1); BGR order.
-  EXPECT_EQ(d[3]->color[0], glm::vec4(16384.0f / 32767.0f, 0, 0, 1));
+  // Signed shorts: max(c * (1 / 32767), -1); BGR order.
+  EXPECT_EQ(d[3]->color[0], glm::vec4(16384.0f * (1.0f / 32767.0f), 0, 0, 1));
   EXPECT_EQ(glGetError(), GL_NO_ERROR);
 }
 

@@ -400,6 +400,109 @@ GLPT_EXACT_SCENE(pixels_copy_depth, 64, 64) {
   quad(0, 0, 64, 64, 0.1f);
 }
 
+// Pixel transfer on glDrawPixels as Mesa draws it: scale and bias, colour maps (R and G looked up
+// in a 256-entry map texture; B and A, through Mesa's map lookup, from the image itself),
+// colour-index images through the I_TO_* maps with INDEX_OFFSET ignored, stencil images with
+// INDEX_SHIFT ignored. The transfer state is reset before the image is read back (glReadPixels
+// applies it too).
+GLPT_EXACT_SCENE(pixels_draw_transfer_maps_and_indices, 96, 64) {
+  clear_all(0.1f, 0.1f, 0.2f);
+  pixel_projection(96, 64);
+  const std::vector<GLubyte> p = pattern(20, 14);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glPixelTransferf(GL_RED_SCALE, 0.6f);
+  glPixelTransferf(GL_GREEN_BIAS, 0.25f);
+  glPixelTransferf(GL_BLUE_SCALE, -1.0f);
+  glPixelTransferf(GL_BLUE_BIAS, 1.0f);
+  glPixelTransferf(GL_ALPHA_SCALE, 0.5f);
+  glRasterPos2i(2, 2);
+  glDrawPixels(20, 14, GL_RGBA, GL_UNSIGNED_BYTE, p.data());
+  float ramp[256], half[256];
+  for (int i = 0; i < 256; ++i) {
+    ramp[i] = float(i) / 255.0f;
+    half[i] = ramp[i] * 0.5f + 0.25f;
+  }
+  const float red[4] = {0.0f, 0.3f, 0.7f, 1.0f}, green[2] = {1.0f, 0.0f};
+  glPixelMapfv(GL_PIXEL_MAP_R_TO_R, 4, red);
+  glPixelMapfv(GL_PIXEL_MAP_G_TO_G, 2, green);
+  glPixelMapfv(GL_PIXEL_MAP_B_TO_B, 256, half);
+  glPixelMapfv(GL_PIXEL_MAP_A_TO_A, 256, ramp);
+  glPixelTransferi(GL_MAP_COLOR, GL_TRUE);
+  glRasterPos2i(26, 2);
+  glDrawPixels(20, 14, GL_RGBA, GL_UNSIGNED_BYTE, p.data());
+  glPixelTransferf(GL_RED_SCALE, 1.0f);
+  glPixelTransferf(GL_GREEN_BIAS, 0.0f);
+  glPixelTransferf(GL_BLUE_SCALE, 1.0f);
+  glPixelTransferf(GL_BLUE_BIAS, 0.0f);
+  glPixelTransferf(GL_ALPHA_SCALE, 1.0f);
+  glRasterPos2i(50, 2);
+  glPixelZoom(2, 2);
+  glDrawPixels(20, 14, GL_RGBA, GL_UNSIGNED_BYTE, p.data());
+  glPixelZoom(1, 1);
+  glPixelTransferi(GL_MAP_COLOR, GL_FALSE);
+  // Colour indices (8 and 16 bits) through the I_TO_R/G/B/A maps.
+  const float i_to_r[8] = {0.1f, 0.3f, 0.5f, 0.7f, 0.9f, 1.0f, 0.2f, 0.0f};
+  const float i_to_g[4] = {0.9f, 0.2f, 0.6f, 0.4f}, i_to_b[2] = {0.3f, 0.8f}, i_to_a[1] = {1.0f};
+  glPixelMapfv(GL_PIXEL_MAP_I_TO_R, 8, i_to_r);
+  glPixelMapfv(GL_PIXEL_MAP_I_TO_G, 4, i_to_g);
+  glPixelMapfv(GL_PIXEL_MAP_I_TO_B, 2, i_to_b);
+  glPixelMapfv(GL_PIXEL_MAP_I_TO_A, 1, i_to_a);
+  std::vector<GLubyte> indices(16 * 12);
+  std::vector<GLushort> indices16(16 * 12);
+  for (size_t i = 0; i < indices.size(); ++i) {
+    indices[i] = GLubyte((i * 7 + i / 16) % 256);
+    indices16[i] = GLushort(i * 263);
+  }
+  glPixelTransferi(GL_INDEX_OFFSET, 3);  // ignored by Mesa's glDrawPixels
+  glRasterPos2i(2, 24);
+  glDrawPixels(16, 12, GL_COLOR_INDEX, GL_UNSIGNED_BYTE, indices.data());
+  glRasterPos2i(22, 24);
+  glDrawPixels(16, 12, GL_COLOR_INDEX, GL_UNSIGNED_SHORT, indices16.data());
+  // A stencil image with INDEX_SHIFT (ignored), then colour where the stencil is 2.
+  std::vector<GLubyte> stencil(16 * 12);
+  for (size_t i = 0; i < stencil.size(); ++i) stencil[i] = GLubyte((i / 3) % 4);
+  glPixelTransferi(GL_INDEX_SHIFT, 1);
+  glRasterPos2i(2, 44);
+  glDrawPixels(16, 12, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, stencil.data());
+  glPixelTransferi(GL_INDEX_SHIFT, 0);
+  glPixelTransferi(GL_INDEX_OFFSET, 0);
+  glEnable(GL_STENCIL_TEST);
+  glStencilFunc(GL_EQUAL, 2, 0xFF);
+  glColor3f(1, 0.8f, 0.2f);
+  glRectf(0, 40, 30, 64);
+  glDisable(GL_STENCIL_TEST);
+}
+
+// Display lists compile glBitmap and glDrawPixels with their images unpacked at compile time
+// (GL 1.5 5.4): later changes to the client memory and to the unpack modes do not matter.
+GLPT_EXACT_SCENE(pixels_display_list_images, 64, 64) {
+  clear_all(0.15f, 0.1f, 0.1f);
+  pixel_projection(64, 64);
+  std::vector<GLubyte> p = pattern(24, 10);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glPixelStorei(GL_UNPACK_ROW_LENGTH, 24);
+  glPixelStorei(GL_UNPACK_SKIP_PIXELS, 4);
+  const GLuint list = glGenLists(1);
+  glNewList(list, GL_COMPILE);
+  glDrawPixels(12, 10, GL_RGBA, GL_UNSIGNED_BYTE, p.data());
+  glBitmap(0, 0, 0, 0, 14, 0, nullptr);
+  glColor3f(1, 1, 0.4f);
+  glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);  // not compiled: executed at once
+  glPixelStorei(GL_UNPACK_SKIP_PIXELS, 0);
+  bitmap_text("GL");
+  glEndList();
+  std::fill(p.begin(), p.end(), GLubyte{0});
+  glPixelStorei(GL_UNPACK_LSB_FIRST, GL_TRUE);
+  glPixelStorei(GL_UNPACK_SKIP_ROWS, 3);
+  glRasterPos2i(2, 4);
+  glCallList(list);
+  glPixelZoom(1.5f, -1);
+  glRasterPos2i(6, 50);
+  glCallList(list);
+  glPixelZoom(1, 1);
+  glDeleteLists(list, 1);
+}
+
 // ---- fragment operations on pixel rectangles -------------------------------------------------
 
 // A w x h RGBA8 image whose alpha rises from 0 at the left to 255 at the right.

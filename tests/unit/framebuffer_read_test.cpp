@@ -1,0 +1,163 @@
+// glReadPixels, glCopyTexImage and glCopyTexSubImage read the drawable through read_framebuffer:
+// a headless target cleared to a known colour (the renderer reproduces the clear colour exactly).
+#include <cstdlib>
+#include <string>
+
+#include "gl_shim/frame/headless_target.hpp"
+#include "gl_test_context.hpp"
+
+namespace {
+
+// Raster mode: it executes every command, depth and stencil clears included (the path-traced
+// mode is not the subject here).
+class RasterMode {
+ public:
+  RasterMode() {
+    if (const char* old = std::getenv("GLPT_MODE")) saved_ = old;
+    setenv("GLPT_MODE", "raster", 1);
+  }
+  ~RasterMode() {
+    if (saved_.empty()) {
+      unsetenv("GLPT_MODE");
+    } else {
+      setenv("GLPT_MODE", saved_.c_str(), 1);
+    }
+  }
+
+ private:
+  std::string saved_;
+};
+
+class FramebufferReadTest : public GlTest {
+ protected:
+  void SetUp() override {
+    GlTest::SetUp();
+    glpt::make_current_headless(ctx_, target_);
+    glClearColor(100 / 255.0f, 50 / 255.0f, 30 / 255.0f, 200 / 255.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+  }
+  void TearDown() override {
+    ctx_.target = nullptr;
+    GlTest::TearDown();
+  }
+  RasterMode raster_mode_;
+  glpt::HeadlessTarget target_{8, 8};
+};
+
+TEST_F(FramebufferReadTest, ReadPixelsPacksTheColourBuffer) {
+  GLubyte rgba[4] = {};
+  glReadPixels(2, 3, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+  ASSERT_EQ(glGetError(), GLenum{GL_NO_ERROR});
+  EXPECT_EQ(std::vector<int>(rgba, rgba + 4), (std::vector<int>{100, 50, 30, 200}));
+  GLubyte la[2] = {};
+  glReadPixels(0, 0, 1, 1, GL_LUMINANCE_ALPHA, GL_UNSIGNED_BYTE, la);
+  EXPECT_EQ(la[0], 180);  // Mesa: R + G + B
+  GLushort s565 = 0;
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, 1, 1, GL_RGB, GL_UNSIGNED_SHORT_5_6_5, &s565);
+  // 100/255*31 = 12.15 -> 12, 50/255*63 = 12.35 -> 12, 30/255*31 = 3.6 -> 4.
+  EXPECT_EQ(s565, (12 << 11) | (12 << 5) | 4);
+  // Pixel transfer applies.
+  glPixelTransferf(GL_RED_SCALE, 0.5f);
+  glReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+  EXPECT_EQ(rgba[0], 50);
+  glPixelTransferf(GL_RED_SCALE, 1.0f);
+  // Pixels outside the drawable are not written.
+  GLubyte row[4 * 4];
+  std::fill(std::begin(row), std::end(row), GLubyte(7));
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  glReadPixels(6, 0, 4, 1, GL_RGBA, GL_UNSIGNED_BYTE, row);
+  EXPECT_EQ(row[4], 100);  // x = 7, inside
+  EXPECT_EQ(row[8], 7);    // x = 8, outside
+  EXPECT_EQ(glGetError(), GLenum{GL_NO_ERROR});
+}
+
+TEST_F(FramebufferReadTest, CopyTexImageReadsThroughPixelTransfer) {
+  glPixelTransferf(GL_RED_SCALE, 0.5f);
+  glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 0, 0, 4, 4, 0);
+  ASSERT_EQ(glGetError(), GLenum{GL_NO_ERROR});
+  GLubyte texel[4 * 16] = {};
+  glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, texel);
+  EXPECT_EQ(std::vector<int>(texel, texel + 4), (std::vector<int>{50, 50, 30, 200}));
+  GLint w = 0;
+  glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, &w);
+  EXPECT_EQ(w, 4);
+  glPixelTransferf(GL_RED_SCALE, 1.0f);
+  glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_LUMINANCE, 0, 0, 2, 2, 0);
+  glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, texel);
+  EXPECT_EQ(texel[0], 100);  // luminance from R
+  // Sub-images land at their offset.
+  const GLubyte zero[4 * 16] = {};
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 4, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, zero);
+  glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 1, 2, 0, 0, 1, 1);
+  glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, texel);
+  EXPECT_EQ(texel[(2 * 4 + 1) * 4], 100);
+  EXPECT_EQ(texel[(2 * 4 + 0) * 4], 0);
+  glCopyTexImage1D(GL_TEXTURE_1D, 0, GL_RGB8, 0, 0, 2, 0);
+  glGetTexImage(GL_TEXTURE_1D, 0, GL_RGBA, GL_UNSIGNED_BYTE, texel);
+  EXPECT_EQ(std::vector<int>(texel, texel + 4), (std::vector<int>{100, 50, 30, 255}));
+  EXPECT_EQ(glGetError(), GLenum{GL_NO_ERROR});
+}
+
+TEST_F(FramebufferReadTest, ReadPixelsReadsDepthAndStencilThroughTransfer) {
+  glClearDepth(0.5);
+  glClearStencil(5);
+  glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+  GLushort depth16 = 0;
+  glReadPixels(1, 1, 1, 1, GL_DEPTH_COMPONENT, GL_UNSIGNED_SHORT, &depth16);
+  EXPECT_EQ(depth16, 32768);
+  GLfloat depth = 0;
+  glPixelTransferf(GL_DEPTH_SCALE, 0.5f);
+  glPixelTransferf(GL_DEPTH_BIAS, 0.125f);
+  glReadPixels(1, 1, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT, &depth);
+  EXPECT_NEAR(depth, 0.375f, 1e-6f);
+  GLubyte stencil = 0;
+  glReadPixels(1, 1, 1, 1, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, &stencil);
+  EXPECT_EQ(stencil, 5);
+  glPixelTransferi(GL_INDEX_OFFSET, 2);
+  glReadPixels(1, 1, 1, 1, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, &stencil);
+  EXPECT_EQ(stencil, 7);
+  const GLfloat map[8] = {0, 1, 2, 3, 4, 5, 6, 42};
+  glPixelMapfv(GL_PIXEL_MAP_S_TO_S, 8, map);
+  glPixelTransferi(GL_MAP_STENCIL, GL_TRUE);
+  glReadPixels(1, 1, 1, 1, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, &stencil);
+  EXPECT_EQ(stencil, 42);
+  GLubyte bit = 0;  // 42 = 0b101010: the low bit is 0; 7 would give 1
+  glPixelTransferi(GL_MAP_STENCIL, GL_FALSE);
+  glReadPixels(1, 1, 1, 1, GL_STENCIL_INDEX, GL_BITMAP, &bit);
+  EXPECT_EQ(bit, 0x80);
+  EXPECT_EQ(glGetError(), GLenum{GL_NO_ERROR});
+}
+
+TEST_F(GlTest, DepthAndStencilNeedTheBuffers) {
+  glpt::rec::DrawableConfig config;
+  config.depth_bits = 0;
+  config.stencil_bits = 0;
+  glpt::HeadlessTarget target(4, 4, config);
+  glpt::make_current_headless(ctx_, target);
+  GLfloat f[16];
+  glReadPixels(0, 0, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT, f);
+  EXPECT_EQ(glGetError(), GLenum{GL_INVALID_OPERATION});
+  glReadPixels(0, 0, 1, 1, GL_STENCIL_INDEX, GL_FLOAT, f);
+  EXPECT_EQ(glGetError(), GLenum{GL_INVALID_OPERATION});
+  glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, 0, 0, 2, 2, 0);
+  EXPECT_EQ(glGetError(), GLenum{GL_INVALID_OPERATION});
+  ctx_.target = nullptr;
+}
+
+TEST_F(FramebufferReadTest, CopyTexImageErrorsMatchMesa) {
+  glCopyTexImage2D(GL_TEXTURE_2D, 0, 3, 0, 0, 4, 4, 0);  // 1..4 are not allowed
+  EXPECT_EQ(glGetError(), GLenum{GL_INVALID_ENUM});
+  glCopyTexImage2D(GL_TEXTURE_2D, 0, 0x1234, 0, 0, 4, 4, 0);
+  EXPECT_EQ(glGetError(), GLenum{GL_INVALID_ENUM});
+  glCopyTexImage2D(GL_PROXY_TEXTURE_2D, 0, GL_RGBA, 0, 0, 4, 4, 0);
+  EXPECT_EQ(glGetError(), GLenum{GL_INVALID_ENUM});
+  glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 0, 0, 4, 4, 2);
+  EXPECT_EQ(glGetError(), GLenum{GL_INVALID_VALUE});
+  glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 0, 0, -4, 4, 0);
+  EXPECT_EQ(glGetError(), GLenum{GL_INVALID_VALUE});
+  glCopyTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_Y, 0, GL_RGBA, 0, 0, 4, 2, 0);
+  EXPECT_EQ(glGetError(), GLenum{GL_INVALID_VALUE});
+}
+
+}  // namespace
