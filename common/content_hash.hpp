@@ -19,7 +19,7 @@ class ContentHash {
       mix(w);
     }
     uint64_t tail = 0;
-    std::memcpy(&tail, p + i, size - i);
+    if (size > i) std::memcpy(&tail, p + i, size - i);  // data may be null when size is 0
     mix(tail ^ (uint64_t{size - i} << 56));
   }
   template <typename T>

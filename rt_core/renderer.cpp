@@ -5,8 +5,10 @@
 #include <cstring>
 #include <exception>
 
+#include "rt_core/passes/gbuffer.hpp"
 #include "rt_core/passes/path_tracer.hpp"
 #include "rt_core/raster/raster_renderer.hpp"
+#include "rt_core/scene/frame_signature.hpp"
 #include "rt_core/scene/scene_builder.hpp"
 #include "rt_core/vk/vk_device.hpp"
 
@@ -41,41 +43,48 @@ class Renderer::Impl {
   const std::string& device_name() const { return device_->name(); }
   RasterRenderer& raster() { return raster_; }
 
+  // Throws on failure (Renderer::execute turns that into false + message).
   bool execute(const rec::FrameRecord& record, const rec::DrawableConfig& drawable,
-               FrameStats& stats, std::string* error, const FrameEnd* end) {
+               FrameStats& stats, const FrameEnd* end) {
     stats = FrameStats();
     if (settings_.mode == RenderMode::kRaster || !tracer_) {
       raster_.execute(record, drawable, stats, nullptr, end);
       return true;
     }
-    // Path-traced mode (interim, until the G-buffer pass): the traced draws are path traced into
-    // the colour buffer the frame draws to; every other command is rasterized over that image.
-    build_trace_scene(record, drawable.width, drawable.height, scene_);
-    raster_.execute(record, drawable, stats, &no_commands_);  // makes the buffers exist
-    if (drawable.width == 0 || drawable.height == 0) return true;
-    bool front = !drawable.double_buffered;
-    for (size_t i : scene_.traced) {
-      const auto& draw = std::get<rec::Draw>(record.commands[i]);
-      const uint32_t buffer = record.states[draw.state].raster->ops.draw_buffer;
-      front = front || buffer == GL_FRONT || buffer == GL_FRONT_LEFT || buffer == GL_LEFT;
+    // Path-traced mode (docs/architecture.md): the traced draws are rasterized into the
+    // G-buffer in record order (after what precedes them), the trace pass lights the G-buffer into
+    // the colour buffers, then the other draws are rasterized over the result.
+    build_trace_scene(record, drawable, scene_);
+    if (!scene_.any_traced || drawable.width == 0 || drawable.height == 0) {
+      // Nothing traced (e.g. the rest of a frame after a glReadPixels): raster mode. The
+      // accumulation stays valid for the next frame with the same signature.
+      raster_.execute(record, drawable, stats, nullptr, end);
+      return true;
     }
-    FrameStats traced;
-    if (!tracer_->render(scene_.scene, traced_image_, traced, error)) return false;
-    raster_.write_color(front, traced_image_);
-    std::vector<size_t> overlay;
-    for (size_t i : scene_.overlay)
-      if (!std::holds_alternative<rec::Clear>(record.commands[i])) overlay.push_back(i);
-    raster_.execute(record, drawable, stats, &overlay, end);
-    stats.upload_ms += traced.upload_ms;
-    stats.blas_ms = traced.blas_ms;
-    stats.tlas_ms = traced.tlas_ms;
-    stats.trace_ms = traced.trace_ms;
-    stats.readback_ms += traced.readback_ms;
-    stats.blas_builds = traced.blas_builds;
-    stats.blas_reused = traced.blas_reused;
-    stats.triangles = traced.triangles;
-    stats.rays = traced.rays;
-    stats.accumulated_samples = traced.accumulated_samples;
+    try {
+      const glm::vec2 jitter =
+          tracer_->begin_frame(FrameSignature(record, scene_.gbuffer_pass, drawable));
+      gbuffer_.ensure(raster_.device(), drawable.width, drawable.height);
+      const GBufferTargets targets = gbuffer_.targets(&scene_.traced, jitter);
+      raster_.execute(record, drawable, stats, &scene_.gbuffer_pass, nullptr, &targets);
+      const TraceTargets trace_targets{&gbuffer_, raster_.color_image(true).view(),
+                                       raster_.color_image(!drawable.double_buffered).view()};
+      FrameStats traced;
+      tracer_->trace(scene_.scene, trace_targets, traced);
+      stats.upload_ms += traced.upload_ms;
+      stats.blas_ms = traced.blas_ms;
+      stats.tlas_ms = traced.tlas_ms;
+      stats.trace_ms = traced.trace_ms;
+      stats.blas_builds = traced.blas_builds;
+      stats.blas_reused = traced.blas_reused;
+      stats.triangles = traced.triangles;
+      stats.rays = traced.rays;
+      stats.accumulated_samples = traced.accumulated_samples;
+    } catch (...) {
+      tracer_->forget_previous_frame();  // nothing about this frame's accumulation holds
+      throw;
+    }
+    raster_.execute(record, drawable, stats, &scene_.after_trace, end);
     return true;
   }
 
@@ -85,8 +94,7 @@ class Renderer::Impl {
   RasterRenderer raster_;
   std::unique_ptr<PathTracer> tracer_;  // null in raster mode or without ray queries
   SceneBuild scene_;
-  std::vector<uint8_t> traced_image_;
-  const std::vector<size_t> no_commands_;
+  GBuffer gbuffer_;
 };
 
 Renderer::Renderer(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
@@ -127,7 +135,7 @@ const std::string& Renderer::device_name() const { return impl_->device_name(); 
 bool Renderer::execute(const rec::FrameRecord& record, const rec::DrawableConfig& drawable,
                        FrameStats& stats, std::string* error, const FrameEnd* end) {
   return guarded("render failed", error,
-                 [&] { return impl_->execute(record, drawable, stats, error, end); });
+                 [&] { return impl_->execute(record, drawable, stats, end); });
 }
 
 bool Renderer::read_color(uint32_t buffer, int32_t x, int32_t y, uint32_t width, uint32_t height,

@@ -11,7 +11,7 @@ SUDO=""
 export DEBIAN_FRONTEND=noninteractive
 
 stamp=/var/lib/glpt-setup.stamp
-want_version=5  # bump when the package list below changes
+want_version=6  # bump when the package list below changes
 if [ -f "$stamp" ] && [ "$(cat "$stamp")" = "$want_version" ] && [ "${GLPT_SETUP_FORCE:-0}" != 1 ]; then
   echo "setup: packages already installed (rm $stamp or GLPT_SETUP_FORCE=1 to re-run)"
   exit 0
@@ -46,13 +46,17 @@ $SUDO apt-get update -q
 build_pkgs=(cmake ninja-build g++ pkg-config python3 clang-format
             khronos-api libvulkan-dev glslang-tools libglm-dev
             libx11-dev libxcb1-dev libxcb-shm0-dev libpng-dev zlib1g-dev libgtest-dev)
-# Running and testing: Xvfb, glxgears, real Mesa GL (the raster reference), Vulkan tools.
-run_pkgs=(xvfb xauth mesa-utils x11-utils libgl1-mesa-dri libglx-mesa0 libgl-dev vulkan-tools
-          vulkan-validationlayers)
+# Running and testing: Xvfb, real programs (glxgears, xscreensaver's GL hacks, piglit's GL 1.x
+# tests), apitrace, Vulkan tools and validation layers.
+run_pkgs=(xvfb xauth mesa-utils x11-utils libgl-dev libegl-dev vulkan-tools vulkan-validationlayers
+          xscreensaver-gl piglit apitrace)
 $SUDO apt-get install -y -q --no-install-recommends "${build_pkgs[@]}" "${run_pkgs[@]}"
 
-# lavapipe with ray query, from backports.
-$SUDO apt-get install -y -q --no-install-recommends -t bookworm-backports mesa-vulkan-drivers
+# Every Mesa package from backports: lavapipe with ray query, and real Mesa GL (GLX, EGL, OSMesa)
+# as the raster reference, which must be the same Mesa whose rasterizer lavapipe shares.
+mesa_pkgs=(mesa-vulkan-drivers libgl1-mesa-dri libglx-mesa0 libegl-mesa0 libgbm1 libosmesa6
+           libosmesa6-dev)
+$SUDO apt-get install -y -q --no-install-recommends -t bookworm-backports "${mesa_pkgs[@]}"
 
 ver=$(dpkg-query -W -f='${Version}' mesa-vulkan-drivers)
 major=${ver%%.*}; rest=${ver#*.}; minor=${rest%%.*}
@@ -61,4 +65,11 @@ if [ "$major" -lt 24 ] || { [ "$major" -eq 24 ] && [ "$minor" -lt 1 ]; }; then
   exit 1
 fi
 echo "setup: mesa-vulkan-drivers $ver (lavapipe with VK_KHR_ray_query)"
+for p in "${mesa_pkgs[@]}"; do
+  v=$(dpkg-query -W -f='${Version}' "$p")
+  if [ "$v" != "$ver" ]; then
+    echo "setup: $p is $v but mesa-vulkan-drivers is $ver: the GL reference must be the same Mesa" >&2
+    exit 1
+  fi
+done
 echo "$want_version" | $SUDO tee "$stamp" >/dev/null

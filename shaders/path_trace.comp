@@ -1,16 +1,25 @@
 #version 460
-// Path tracing pass: for each pixel of the viewport, trace `frame.sampling.y` samples of
-//   primary hit -> GL direct lighting (one shadow ray per light) + ambient (occluded by the next
-//   bounce ray) + emission -> `frame.sampling.z` cosine-sampled diffuse bounces, shaded the same way
-// and add them to the accumulation buffer (rgb: radiance sum, a: how many samples hit geometry).
-// Everything is in GL eye space. Colours are GL-linear; tonemap.comp clamps and quantizes.
+// Trace pass of path-traced mode. Primary visibility comes from the G-buffer (gbuffer_layout.h),
+// which the raster pipelines drew with GL's coverage, depth test, culling and matrices. For each
+// pixel it covers, `frame.sampling.y` samples of
+//   G-buffer surface -> GL direct lighting (one shadow ray per light of the pixel's own state)
+//   + ambient (occluded by the next bounce ray) + emission -> `frame.sampling.z` cosine-sampled
+//   diffuse bounces, shaded the same way (with the lights of the state the hit geometry was
+//   drawn with)
+// are added to the accumulation buffer, and the average over every accumulated frame is written
+// into the colour buffer(s) the pixel's draw writes. Pixels no sample covered keep what the
+// clears and raster draws left; pixels covered by some samples blend with it (anti-aliasing).
+// Unlit surfaces show their G-buffer colour, the exact colour raster mode draws.
+// Everything is in GL eye space. Colours are GL-linear, clamped when written.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_ray_query : require
+#extension GL_EXT_shader_image_load_formatted : require
 #extension GL_EXT_buffer_reference : require
 #extension GL_EXT_buffer_reference_uvec2 : require
 #extension GL_KHR_shader_subgroup_basic : require
 #extension GL_KHR_shader_subgroup_arithmetic : require
 
+#include "gbuffer_layout.h"
 #include "shared_types.h"
 
 layout(local_size_x = GLPT_TILE_SIZE, local_size_y = GLPT_TILE_SIZE) in;
@@ -22,6 +31,11 @@ layout(std430, set = 0, binding = GLPT_PT_BINDING_INSTANCES) readonly buffer Ins
 layout(std430, set = 0, binding = GLPT_PT_BINDING_LIGHTS) readonly buffer LightTable {
   GpuLight lights[];
 };
+layout(std430, set = 0, binding = GLPT_PT_BINDING_STATES) readonly buffer StateTable {
+  GpuTraceState states[];
+};
+// Per pixel two vec4: [2i] rgb: sum of the covered samples' radiance, a: sum of their alpha;
+// [2i + 1] x: how many samples were covered.
 layout(std430, set = 0, binding = GLPT_PT_BINDING_ACCUMULATION) buffer Accumulation {
   vec4 accumulation[];
 };
@@ -31,7 +45,21 @@ layout(std430, set = 0, binding = GLPT_PT_BINDING_COUNTERS) buffer Counters {
 layout(std140, set = 0, binding = GLPT_PT_BINDING_FRAME) uniform FrameBlock {
   FrameUniforms frame;
 };
+layout(set = 0, binding = GLPT_PT_BINDING_GBUFFER + GLPT_GBUFFER_POSITION, rgba32f)
+    uniform readonly image2D gbuffer_position;
+layout(set = 0, binding = GLPT_PT_BINDING_GBUFFER + GLPT_GBUFFER_SURFACE, rgba32ui)
+    uniform readonly uimage2D gbuffer_surface;
+layout(set = 0, binding = GLPT_PT_BINDING_GBUFFER + GLPT_GBUFFER_MATERIAL0, rgba32ui)
+    uniform readonly uimage2D gbuffer_material0;
+layout(set = 0, binding = GLPT_PT_BINDING_GBUFFER + GLPT_GBUFFER_MATERIAL1, rgba32ui)
+    uniform readonly uimage2D gbuffer_material1;
+// The colour buffers are BGRA8: no format qualifier (the view's format converts).
+layout(set = 0, binding = GLPT_PT_BINDING_FRONT) uniform image2D front_buffer;
+layout(set = 0, binding = GLPT_PT_BINDING_BACK) uniform image2D back_buffer;
 
+layout(buffer_reference, std430, buffer_reference_align = 16) readonly buffer PositionArray {
+  GpuPosition positions[];
+};
 layout(buffer_reference, std430, buffer_reference_align = 16) readonly buffer VertexArray {
   ShadingVertex vertices[];
 };
@@ -160,29 +188,33 @@ bool occluded(vec3 origin, vec3 direction, float t_max, uint cull_mask) {
 
 struct Surface {
   vec3 position;         // eye space, on the triangle
-  vec3 shadow_position;  // where secondary rays start (terminator-corrected, see below)
-  vec3 normal;           // shading normal as given (GL one-sided lighting: never flipped)
-  vec3 offset_normal;    // unit geometric normal on the side the incoming ray came from
+  vec3 shadow_position;  // where secondary rays start (terminator-corrected, offset)
+  vec3 normal;           // shading normal (GL one-sided lighting: as given; two-sided lighting:
+                         // flipped for back faces)
+  vec3 offset_normal;    // unit geometric normal on the side secondary rays leave from
   vec3 ambient;
   vec3 diffuse;
   vec3 specular;
   vec3 emission;
   float shininess;
-  bool lit;
-  vec3 vertex_color;
+  uint state;  // record state: lights, ambient, viewer
 };
 
+// A surface where a bounce ray hit the traced geometry (BLAS shading data, no textures).
 Surface load_surface(Hit hit, vec3 ray_direction) {
   GpuInstance instance = instances[hit.instance];
-  VertexArray vertex_array = VertexArray(instance.addresses.xy);
-  MaterialArray material_array = MaterialArray(instance.addresses.zw);
+  PositionArray position_array = PositionArray(instance.addresses.xy);
+  VertexArray vertex_array = VertexArray(instance.addresses.zw);
+  MaterialArray material_array = MaterialArray(instance.materials.xy);
   uint first = 3u * uint(hit.primitive);
   ShadingVertex v0 = vertex_array.vertices[first];
   ShadingVertex v1 = vertex_array.vertices[first + 1u];
   ShadingVertex v2 = vertex_array.vertices[first + 2u];
   vec3 w = vec3(1.0 - hit.barycentrics.x - hit.barycentrics.y, hit.barycentrics);
 
-  vec3 p0 = v0.position.xyz, p1 = v1.position.xyz, p2 = v2.position.xyz;
+  vec3 p0 = position_array.positions[first].position.xyz;
+  vec3 p1 = position_array.positions[first + 1u].position.xyz;
+  vec3 p2 = position_array.positions[first + 2u].position.xyz;
   vec3 n0 = v0.normal.xyz, n1 = v1.normal.xyz, n2 = v2.normal.xyz;
   vec3 p_object = w.x * p0 + w.y * p1 + w.z * p2;
 
@@ -193,6 +225,7 @@ Surface load_surface(Hit hit, vec3 ray_direction) {
   vec3 geometric = normalize_or(geometric_object * normal_matrix_t, vec3(0.0, 0.0, 1.0));
   vec3 shading_object = w.x * n0 + w.y * n1 + w.z * n2;
   Surface s;
+  s.state = instance.materials.z;
   s.normal = normalize_or(shading_object * normal_matrix_t, geometric);
   bool from_front = dot(geometric, ray_direction) < 0.0;
   s.offset_normal = from_front ? geometric : -geometric;
@@ -202,7 +235,8 @@ Surface load_surface(Hit hit, vec3 ray_direction) {
   // on coarse meshes with smooth normals (glutSolidSphere...), secondary rays from the flat
   // triangle would hit the neighbouring triangles near the terminator and show the facets as
   // shadow steps. Lift the origin onto the curved surface the vertex normals describe, on the
-  // side the normals point to (only when the ray arrived from that side).
+  // side the normals point to (only when the ray arrived from that side). The G-buffer pass
+  // does the same for the surfaces the camera sees (raster_ff.frag).
   vec3 shading_side = dot(geometric_object, shading_object) >= 0.0 ? geometric : -geometric;
   vec3 p_shadow = p_object;
   if (dot(shading_side, s.offset_normal) > 0.0) {
@@ -216,18 +250,15 @@ Surface load_surface(Hit hit, vec3 ray_direction) {
   }
   s.shadow_position = offset_ray_origin(hit.object_to_eye * vec4(p_shadow, 1.0), s.offset_normal);
 
-  // Interpolated relative to vertex 0, so a constant colour comes out bit-exact (weights that
-  // sum to 1 - 1ulp would otherwise flip GL's rounding of values like 0.3 * 255 = 76.5).
+  // Interpolated relative to vertex 0, so a constant colour comes out bit-exact.
   vec3 color = v0.color.rgb + w.y * (v1.color.rgb - v0.color.rgb) +
                w.z * (v2.color.rgb - v0.color.rgb);
-  s.vertex_color = color;
-  GpuMaterial m = material_array.materials[uint(v0.position.w)];
+  GpuMaterial m = material_array.materials[uint(v0.normal.w)];
   s.ambient = m.ambient.rgb;
   s.diffuse = m.diffuse.rgb;
   s.specular = m.specular.rgb;
   s.emission = m.emission.rgb;
   s.shininess = uintBitsToFloat(m.params.x);
-  s.lit = m.params.y != 0u;
   // GL_COLOR_MATERIAL: the current colour replaces the tracked material colour(s).
   switch (m.params.z) {
     case GLPT_COLOR_SOURCE_AMBIENT_AND_DIFFUSE: s.ambient = color; s.diffuse = color; break;
@@ -237,21 +268,68 @@ Surface load_surface(Hit hit, vec3 ray_direction) {
     case GLPT_COLOR_SOURCE_SPECULAR: s.specular = color; break;
     default: break;
   }
+  if (m.params.y == 0u) {
+    // Lighting off: for light arriving from elsewhere a plain diffuse reflector of its colour,
+    // not an emitter.
+    s.ambient = color;
+    s.diffuse = color;
+    s.specular = vec3(0.0);
+    s.emission = vec3(0.0);
+  }
+  return s;
+}
+
+// The direction from `p` towards the viewer of `state` (its projection's centre, or GL's
+// infinite viewer for parallel projections).
+vec3 towards_viewer(uint state, vec3 p) {
+  vec4 viewer = states[state].viewer;
+  return viewer.w != 0.0 ? normalize_or(viewer.xyz - p, vec3(0.0, 0.0, 1.0)) : viewer.xyz;
+}
+
+// The lit surface a G-buffer pixel shows; `alpha`: GL's fragment alpha there.
+Surface load_gbuffer_surface(ivec2 pixel, uvec4 surface, out float alpha) {
+  vec4 position = imageLoad(gbuffer_position, pixel);
+  uvec4 m0 = imageLoad(gbuffer_material0, pixel);
+  uvec4 m1 = imageLoad(gbuffer_material1, pixel);
+  Surface s;
+  s.state = surface.x - 1u;
+  s.position = position.xyz;
+  s.normal = gbuffer_unpack_normal(surface.y);
+  vec3 geometric = gbuffer_unpack_normal(surface.z);
+  // Secondary rays leave on the side of the geometric surface that faces the viewer. "The
+  // viewer" is GL's: for a parallel projection (an identity projection, a flipped glOrtho) the
+  // infinite viewer at +Z that GL lights with, so a face GL lights never shadows itself.
+  s.offset_normal =
+      dot(geometric, towards_viewer(s.state, s.position)) >= 0.0 ? geometric : -geometric;
+  vec2 emission_b_lift_x = unpackHalf2x16(m1.z);
+  vec3 lift = vec3(emission_b_lift_x.y, unpackHalf2x16(m1.w));
+  // The terminator fix applies where the vertex normals point to the side rays leave from.
+  vec3 base = dot(lift, s.offset_normal) > 0.0 ? s.position + lift : s.position;
+  s.shadow_position = offset_ray_origin(base, s.offset_normal);
+  vec4 diffuse = vec4(unpackHalf2x16(m0.x), unpackHalf2x16(m0.y));
+  vec2 ambient_rg = unpackHalf2x16(m0.z), ambient_b_specular_r = unpackHalf2x16(m0.w);
+  s.diffuse = diffuse.rgb;
+  alpha = diffuse.a;
+  s.ambient = vec3(ambient_rg, ambient_b_specular_r.x);
+  s.specular = vec3(ambient_b_specular_r.y, unpackHalf2x16(m1.x));
+  s.emission = vec3(unpackHalf2x16(m1.y), emission_b_lift_x.x);
+  s.shininess = unpackHalf2x16(surface.w >> 16).x;
   return s;
 }
 
 // ---- GL lighting ------------------------------------------------------------------------------
 
-// Sum over lights of GL's diffuse + specular terms, each visible only if its shadow ray is
-// unoccluded. `ambient_light` returns global ambient + the lights' ambient terms (attenuated and
-// spot-weighted as GL does), to be multiplied by the material ambient and an occlusion factor.
+// Sum over the lights of the surface's state of GL's diffuse + specular terms, each visible only
+// if its shadow ray is unoccluded. `ambient_light` returns the state's global ambient + the
+// lights' ambient terms (attenuated and spot-weighted as GL does), to be multiplied by the
+// material ambient and an occlusion factor.
 vec3 direct_light(Surface s, vec3 to_viewer, inout uint rng, inout uint rays,
                   out vec3 ambient_light) {
   vec3 radiance = vec3(0.0);
-  ambient_light = frame.global_ambient.rgb;
-  uint light_count = frame.image.z;
+  ambient_light = states[s.state].global_ambient.rgb;
+  uint light_count = states[s.state].info.x;
   for (uint i = 0u; i < light_count; ++i) {
-    GpuLight light = lights[i];
+    GpuLight light = lights[states[s.state].lights[i >> 2u][i & 3u]];
     vec3 to_light;
     float light_distance;
     float attenuation = 1.0;
@@ -287,54 +365,18 @@ vec3 direct_light(Surface s, vec3 to_viewer, inout uint rng, inout uint rays,
 
 // ---- paths ------------------------------------------------------------------------------------
 
-// Returns (radiance, coverage): coverage is 1 when the primary ray hit geometry, else 0 and the
-// radiance is the clear colour.
-vec4 trace_path(vec2 viewport_position, inout uint rng, inout uint rays) {
-  // Unproject the pixel at the near (z = -1) and far (z = +1) planes: works for perspective and
-  // orthographic projections alike, and limits the ray to GL's clip volume.
-  vec2 ndc = 2.0 * viewport_position / vec2(frame.viewport.zw) - 1.0;
-  vec4 near_point = frame.inverse_projection * vec4(ndc, -1.0, 1.0);
-  vec4 far_point = frame.inverse_projection * vec4(ndc, 1.0, 1.0);
-  vec3 origin = near_point.xyz / near_point.w;
-  vec3 direction = far_point.xyz / far_point.w - origin;
-  float t_max = length(direction);
-  direction /= t_max;
-
+// The radiance leaving the G-buffer surface `first` towards the viewer.
+vec3 trace_path(Surface first, inout uint rng, inout uint rays) {
+  Surface s = first;
+  vec3 to_viewer = towards_viewer(s.state, s.position);
   vec3 radiance = vec3(0.0);
   vec3 throughput = vec3(1.0);
   // Ambient term of the previous path vertex, added once the next ray shows it is not occluded.
   vec3 pending_ambient = vec3(0.0);
-  float coverage = 0.0;
   uint bounces = frame.sampling.z;
   for (uint depth = 0u;; ++depth) {
-    Hit hit;
-    bool found = trace_closest(origin, direction, t_max, hit);
-    ++rays;
-    // Ambient occlusion: the previous vertex's ambient counts if this bounce ray got farther
-    // than the AO radius (or left the scene).
-    if (!found || hit.t > frame.params.x) radiance += pending_ambient;
-    if (!found) {
-      if (depth == 0u) radiance = frame.clear_color.rgb;
-      break;
-    }
-    Surface s = load_surface(hit, direction);
-    if (!s.lit) {
-      // Lighting off: the primary hit shows the vertex colour exactly, as GL draws it. For light
-      // arriving from elsewhere it is a plain diffuse reflector of that colour, not an emitter.
-      if (depth == 0u) {
-        radiance = s.vertex_color;
-        coverage = 1.0;
-        break;
-      }
-      s.ambient = s.vertex_color;
-      s.diffuse = s.vertex_color;
-      s.specular = vec3(0.0);
-      s.emission = vec3(0.0);
-    }
-    if (depth == 0u) coverage = 1.0;
-
     vec3 ambient_light;
-    vec3 direct = direct_light(s, -direction, rng, rays, ambient_light);
+    vec3 direct = direct_light(s, to_viewer, rng, rays, ambient_light);
     radiance += throughput * (s.emission + direct);
     pending_ambient = throughput * s.ambient * ambient_light;
     throughput *= s.diffuse;
@@ -343,43 +385,94 @@ vec4 trace_path(vec2 viewport_position, inout uint rng, inout uint rays) {
       break;
     }
 
-    // Cosine-weighted diffuse bounce around the shading normal turned to the side the ray came
+    // Cosine-weighted diffuse bounce around the shading normal turned to the side rays leave
     // from; mirrored back if it would leave through the geometric surface. With a Lambertian
     // BRDF (albedo / pi) and cosine sampling the estimator is simply albedo * incoming radiance,
     // which `throughput` carries.
     vec3 bounce_normal = dot(s.normal, s.offset_normal) >= 0.0 ? s.normal : -s.normal;
-    direction = sample_cosine_hemisphere(bounce_normal, next_random2(rng));
+    vec3 direction = sample_cosine_hemisphere(bounce_normal, next_random2(rng));
     float below = dot(direction, s.offset_normal);
     if (below <= 0.0) direction = normalize(direction - 2.0 * below * s.offset_normal);
-    origin = s.shadow_position;
-    t_max = kUnboundedRay;
+    Hit hit;
+    bool found = trace_closest(s.shadow_position, direction, kUnboundedRay, hit);
+    ++rays;
+    // Ambient occlusion: the previous vertex's ambient counts if this bounce ray got farther
+    // than the AO radius (or left the scene).
+    if (!found || hit.t > frame.params.x) radiance += pending_ambient;
+    if (!found) break;  // a bounce that leaves the scene adds nothing
+    s = load_surface(hit, direction);
+    to_viewer = -direction;
   }
-  return vec4(radiance, coverage);
+  return radiance;
+}
+
+// GL's fog (GL 1.5 3.10) on a lit pixel's radiance; unlit pixels come fogged from the G-buffer.
+vec3 apply_fog(uint state, float fog_coordinate, vec3 radiance) {
+  uint mode = states[state].info.y;
+  if (mode == 0u) return radiance;
+  vec4 p = states[state].fog_params;
+  float z = fog_coordinate;
+  float f = mode == 1u ? (p.z - z) * p.w : mode == 2u ? exp(-p.x * z) : exp(-(p.x * z) * (p.x * z));
+  return mix(states[state].fog_color.rgb, radiance, clamp(f, 0.0, 1.0));
+}
+
+// Writes the pixel's average over all accumulated samples into the colour buffers `targets`:
+// `sum` holds the covered samples (`covered` of them); the others show what the colour buffer
+// holds (the clears and raster draws of this frame).
+void write_average(ivec2 pixel, uint targets, vec4 sum, float covered) {
+  float total = float(frame.sampling.w);
+  for (uint t = 0u; t < 2u; ++t) {
+    if ((targets & (1u << t)) == 0u) continue;
+    vec4 background = t == 0u ? imageLoad(front_buffer, pixel) : imageLoad(back_buffer, pixel);
+    vec4 color = clamp((sum + (total - covered) * background) / total, 0.0, 1.0);
+    if (t == 0u)
+      imageStore(front_buffer, pixel, color);
+    else
+      imageStore(back_buffer, pixel, color);
+  }
 }
 
 void main() {
-  uvec2 pixel = gl_GlobalInvocationID.xy;
+  ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
   uint rays = 0u;
-  ivec2 in_viewport = ivec2(pixel) - frame.viewport.xy;
-  bool inside = pixel.x < frame.image.x && pixel.y < frame.image.y &&
-                all(greaterThanEqual(in_viewport, ivec2(0))) &&
-                all(lessThan(in_viewport, frame.viewport.zw));
-  if (inside && frame.sampling.y > 0u) {
-    uint pixel_index = pixel.y * frame.image.x + pixel.x;
+  if (pixel.x < int(frame.image.x) && pixel.y < int(frame.image.y)) {
+    uint pixel_index = uint(pixel.y) * frame.image.x + uint(pixel.x);
+    uvec4 surface = imageLoad(gbuffer_surface, pixel);
+    bool covered = surface.x != 0u;
+    uint samples = frame.sampling.y;
     vec4 sum = vec4(0.0);
-    for (uint s = 0u; s < frame.sampling.y; ++s) {
-      uint sample_index = frame.sampling.x + s;
-      uint rng = pcg_hash(pixel_index ^ pcg_hash(frame.image.w + sample_index * 0x9E3779B9u));
-      // The first sample of an accumulation goes through the pixel centre, like GL rasterization,
-      // so a single frame lines up with GL's image; later samples jitter for anti-aliasing.
-      vec2 jitter = sample_index == 0u ? vec2(0.5) : next_random2(rng);
-      vec4 path = trace_path(vec2(in_viewport) + jitter, rng, rays);
-      // One NaN (a degenerate transform or triangle) would poison the pixel for the rest of the
-      // accumulation: drop such a sample's radiance instead.
-      if (any(isnan(path.rgb)) || any(isinf(path.rgb))) path.rgb = vec3(0.0);
-      sum += path;
+    if (covered && samples > 0u) {
+      if ((surface.w & GLPT_GBUFFER_LIT) == 0u) {
+        // Lighting off: exactly the colour raster mode draws, no rays.
+        sum = unpackUnorm4x8(imageLoad(gbuffer_material0, pixel).x) * float(samples);
+      } else {
+        float alpha;
+        Surface s = load_gbuffer_surface(pixel, surface, alpha);
+        float fog_coordinate = imageLoad(gbuffer_position, pixel).w;
+        for (uint k = 0u; k < samples; ++k) {
+          uint sample_index = frame.sampling.x + k;
+          uint rng = pcg_hash(pixel_index ^ pcg_hash(frame.image.w + sample_index * 0x9E3779B9u));
+          vec3 radiance = apply_fog(s.state, fog_coordinate, trace_path(s, rng, rays));
+          // One NaN (a degenerate transform or triangle) would poison the pixel for the rest of
+          // the accumulation: drop such a sample's radiance instead.
+          if (any(isnan(radiance)) || any(isinf(radiance))) radiance = vec3(0.0);
+          sum += vec4(radiance, alpha);
+        }
+      }
     }
-    accumulation[pixel_index] = frame.sampling.x == 0u ? sum : accumulation[pixel_index] + sum;
+    float count = covered ? float(samples) : 0.0;
+    if (frame.sampling.x != 0u) {
+      sum += accumulation[2u * pixel_index];
+      count += accumulation[2u * pixel_index + 1u].x;
+    }
+    if (samples > 0u) {
+      accumulation[2u * pixel_index] = sum;
+      accumulation[2u * pixel_index + 1u] = vec4(count, 0.0, 0.0, 0.0);
+    }
+    if (count > 0.0) {
+      uint targets = covered ? states[surface.x - 1u].info.z : frame.image.z;
+      write_average(pixel, targets, sum, count);
+    }
   }
   // Count rays with one atomic per subgroup rather than per invocation.
   uint subgroup_rays = subgroupAdd(rays);

@@ -9,9 +9,17 @@
 // for pixel rectangles: GLPT_PIXELS 1 takes the fragment colour (or, for bitmaps and stencil
 // images, whether there is a fragment) from the image in the pixels buffer; GLPT_PIXELS 2 also
 // its depth (depth images), which needs gl_FragDepth and so a shader of its own.
+// GLPT_GBUFFER 1: path-traced mode's G-buffer pass (after raster_gbuffer.geom): the same coverage,
+// stipple, texturing and alpha test, but the outputs are the G-buffer (gbuffer_layout.h).
 #extension GL_GOOGLE_include_directive : require
 
 #include "raster_types.h"
+#ifndef GLPT_GBUFFER
+#define GLPT_GBUFFER 0
+#endif
+#if GLPT_GBUFFER
+#include "gbuffer_layout.h"
+#endif
 
 #ifndef GLPT_PIXELS
 #define GLPT_PIXELS 0
@@ -74,8 +82,23 @@ layout(location = 3) INTERPOLATION in vec4 v_back_secondary;
 layout(location = 4) in vec4 v_texcoord[GLPT_RASTER_MAX_UNITS];
 layout(location = 8) in float v_fog;
 
+#if GLPT_GBUFFER
+layout(constant_id = GLPT_SC_VS_FLAGS) const uint kVsFlags = 0u;
+layout(constant_id = GLPT_SC_COLOR_MATERIAL) const uint kColorMaterial = 0u;
+layout(location = GLPT_GBUFFER_VARYING_EYE) in vec4 v_eye;
+layout(location = GLPT_GBUFFER_VARYING_NORMAL) INTERPOLATION in vec3 v_normal;
+layout(location = GLPT_GBUFFER_VARYING_VERTEX_COLOR) INTERPOLATION in vec4 v_vertex_color;
+layout(location = GLPT_GBUFFER_VARYING_CORNERS) flat in vec3 v_corner[3];
+layout(location = GLPT_GBUFFER_VARYING_CORNER_NORMALS) flat in vec3 v_corner_normal[3];
+layout(location = GLPT_GBUFFER_VARYING_BARYCENTRIC) in vec2 v_barycentric;
+layout(location = GLPT_GBUFFER_POSITION) out vec4 o_position;
+layout(location = GLPT_GBUFFER_SURFACE) out uvec4 o_surface;
+layout(location = GLPT_GBUFFER_MATERIAL0) out uvec4 o_material0;
+layout(location = GLPT_GBUFFER_MATERIAL1) out uvec4 o_material1;
+#else
 layout(location = 0) out vec4 o_color;
 layout(location = 1) out vec4 o_color_second;  // GL_FRONT_AND_BACK: the same colour twice
+#endif
 
 uint unit_config(uint u) {
   return u == 0u ? kUnit0 : u == 1u ? kUnit1 : u == 2u ? kUnit2 : kUnit3;
@@ -293,12 +316,88 @@ vec4 pixel_fragment(vec4 color) {
 }
 #endif
 
+#if GLPT_GBUFFER
+vec3 normalize_or(vec3 v, vec3 fallback) {
+  float len2 = dot(v, v);
+  return len2 > 1.0e-30 && !isinf(len2) ? v * inversesqrt(len2) : fallback;
+}
+
+// The texture units applied to `base` (a material colour) instead of the lit colour: the
+// surface's albedo under GL's texture environments.
+vec4 textured(vec4 base, vec4 texels[GLPT_RASTER_MAX_UNITS]) {
+  vec4 color = base;
+  for (uint u = 0u; u < GLPT_RASTER_MAX_UNITS; ++u) {
+    if ((unit_config(u) & 7u) == 0u) continue;
+    color = texture_environment(u, texels[u], color, base, S.env_color[u], S.env_scale[u], texels);
+  }
+  return color;
+}
+
+// `color`: the fragment's colour as raster mode computes it (the lit colour after texturing,
+// colour sum and fog); `back`: two-sided lighting lights the back face.
+void write_gbuffer(vec4 color, bool back, vec4 texels[GLPT_RASTER_MAX_UNITS]) {
+  vec3 p = v_eye.xyz / v_eye.w;
+  vec3 edge1 = v_corner[1] - v_corner[0], edge2 = v_corner[2] - v_corner[0];
+  vec3 shading = normalize_or(v_normal, vec3(0.0, 0.0, 1.0));
+  vec3 geometric = normalize_or(cross(edge1, edge2), shading);
+  o_position = vec4(p, v_fog);
+  uint flags = 0u;
+  if ((kVsFlags & GLPT_VS_LIGHTING) == 0u) {
+    // Unlit: the exact colour raster mode writes; nothing to trace at this pixel.
+    o_surface = uvec4(push.indices.x + 1u, gbuffer_pack_normal(shading),
+                      gbuffer_pack_normal(geometric), flags);
+    o_material0 = uvec4(packUnorm4x8(clamp(color, 0.0, 1.0)), 0u, 0u, 0u);
+    o_material1 = uvec4(0u);
+    return;
+  }
+  flags |= GLPT_GBUFFER_LIT;
+  uint face = back ? 1u : 0u;
+  if (back) {
+    flags |= GLPT_GBUFFER_BACK_FACE;
+    shading = -shading;
+  }
+  // GL_COLOR_MATERIAL: the current colour replaces the tracked material colours (as
+  // raster_ff.vert's light_face).
+  RasterMaterial m = S.material[face];
+  vec4 ambient = m.ambient, diffuse = m.diffuse, specular = m.specular, emission = m.emission;
+  const uint cm_mode = kColorMaterial & 7u;
+  if ((kColorMaterial & (face == 0u ? 8u : 16u)) != 0u) {
+    if (cm_mode == 1u || cm_mode == 3u) ambient = v_vertex_color;
+    if (cm_mode == 2u || cm_mode == 3u) diffuse = v_vertex_color;
+    if (cm_mode == 4u) specular = v_vertex_color;
+    if (cm_mode == 5u) emission = v_vertex_color;
+  }
+  diffuse = vec4(textured(diffuse, texels).rgb, color.a);  // alpha: GL's fragment alpha
+  ambient = textured(ambient, texels);
+
+  // Hanika's shadow-terminator fix ("Hacking the shadow terminator", Ray Tracing Gems II ch. 4):
+  // secondary rays from the flat triangle of a coarse smooth mesh would hit its neighbours near
+  // the terminator; their origin moves onto the curved surface the vertex normals describe.
+  vec3 w = vec3(1.0 - v_barycentric.x - v_barycentric.y, v_barycentric);
+  vec3 lift = vec3(0.0);
+  for (int i = 0; i < 3; ++i) {
+    vec3 u = normalize_or(v_corner_normal[i], geometric);
+    lift -= w[i] * min(0.0, dot(p - v_corner[i], u)) * u;
+  }
+  if (any(isnan(lift)) || any(isinf(lift))) lift = vec3(0.0);
+
+  o_surface = uvec4(push.indices.x + 1u, gbuffer_pack_normal(shading),
+                    gbuffer_pack_normal(geometric), flags | (packHalf2x16(vec2(m.shininess.x, 0.0)) << 16));
+  o_material0 = uvec4(packHalf2x16(diffuse.rg), packHalf2x16(diffuse.ba), packHalf2x16(ambient.rg),
+                      packHalf2x16(vec2(ambient.b, specular.r)));
+  o_material1 = uvec4(packHalf2x16(specular.gb), packHalf2x16(emission.rg),
+                      packHalf2x16(vec2(emission.b, lift.x)), packHalf2x16(lift.yz));
+}
+#endif
+
 void main() {
+#if !GLPT_GBUFFER
   if ((kFlags & GLPT_FS_CLEAR) != 0u) {
     o_color = S.clear_color;
     o_color_second = o_color;
     return;
   }
+#endif
   if ((kFlags & GLPT_FS_POLYGON_STIPPLE) != 0u) {
     uint row = uint(gl_FragCoord.y) & 31u, column = uint(gl_FragCoord.x) & 31u;
     if (((S.stipple[row >> 2u][row & 3u] >> (31u - column)) & 1u) == 0u) discard;
@@ -338,6 +437,10 @@ void main() {
   }
 
   if (!alpha_test_passes(color.a, S.alpha_ref.x)) discard;
+#if GLPT_GBUFFER
+  write_gbuffer(color, back, texels);
+#else
   o_color = color;
   o_color_second = color;
+#endif
 }

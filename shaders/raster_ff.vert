@@ -9,9 +9,17 @@
 // CPU (Mesa's order), colours are clamped per vertex.
 //
 // Built twice: GLPT_CLIP 1 declares gl_ClipDistance (user clip planes, exact line clipping).
+// GLPT_GBUFFER 1 (path-traced mode's G-buffer pass) also outputs the eye-space position, normal
+// and current colour (gbuffer_layout.h) and offsets the position by the frame's sub-pixel jitter.
 #extension GL_GOOGLE_include_directive : require
 
 #include "raster_types.h"
+#ifndef GLPT_GBUFFER
+#define GLPT_GBUFFER 0
+#endif
+#if GLPT_GBUFFER
+#include "gbuffer_layout.h"
+#endif
 
 layout(constant_id = GLPT_SC_VS_FLAGS) const uint kFlags = 0u;
 layout(constant_id = GLPT_SC_LIGHT_MASK) const uint kLightMask = 0u;
@@ -44,6 +52,11 @@ layout(location = 2) out vec4 v_front_secondary;
 layout(location = 3) out vec4 v_back_secondary;
 layout(location = 4) out vec4 v_texcoord[GLPT_RASTER_MAX_UNITS];
 layout(location = 8) out float v_fog;
+#if GLPT_GBUFFER
+layout(location = GLPT_GBUFFER_VARYING_EYE) out vec4 v_eye;
+layout(location = GLPT_GBUFFER_VARYING_NORMAL) out vec3 v_normal;
+layout(location = GLPT_GBUFFER_VARYING_VERTEX_COLOR) out vec4 v_vertex_color;
+#endif
 
 // Declared in full so the geometry shader (raster_unfilled.geom) can match the block exactly.
 out gl_PerVertex {
@@ -143,7 +156,8 @@ void main() {
 
   // Normal in eye space, as GL 2.11.3 (inverse transpose; then rescale or normalize).
   vec3 normal = vec3(0.0, 0.0, 1.0);
-  const bool needs_normal = has(GLPT_VS_LIGHTING) || kTexgen01 != 0u || kTexgen23 != 0u;
+  const bool needs_normal =
+      has(GLPT_VS_LIGHTING) || kTexgen01 != 0u || kTexgen23 != 0u || GLPT_GBUFFER != 0;
   if (needs_normal) {
     mat3 nm = mat3(S.normal_matrix);
     normal = nm[0] * a_normal.x + nm[1] * a_normal.y + nm[2] * a_normal.z;
@@ -246,5 +260,16 @@ void main() {
     if (outside) clip = vec4(2.0, 2.0, 2.0, 1.0);  // beyond the view volume: culled
     gl_PointSize = width;
   }
+#if GLPT_GBUFFER
+  // Homogeneous, so a projective modelview (planar shadows) interpolates correctly; the fragment
+  // shader divides.
+  v_eye = transform(S.modelview, position);
+  v_normal = normal;
+  v_vertex_color = a_color;
+  // Sub-pixel jitter of the projection (anti-aliasing by accumulation): push.indices.zw hold the
+  // offset in pixels as float bits.
+  vec2 jitter = uintBitsToFloat(push.indices.zw);
+  clip.xy += jitter * 2.0 / S.viewport.zw * clip.w;
+#endif
   gl_Position = clip;
 }

@@ -21,22 +21,22 @@ using mat4 = glm::mat4;
 #define GLPT_PT_BINDING_SCENE 0         // accelerationStructureEXT (TLAS)
 #define GLPT_PT_BINDING_INSTANCES 1     // GpuInstance[], indexed by instanceCustomIndex
 #define GLPT_PT_BINDING_LIGHTS 2        // GpuLight[]
-#define GLPT_PT_BINDING_ACCUMULATION 3  // vec4[width*height]: rgb radiance sum, a = coverage sum
+#define GLPT_PT_BINDING_ACCUMULATION 3  // vec4[2 * width * height], see path_trace.comp
 #define GLPT_PT_BINDING_COUNTERS 4      // GpuCounters
 #define GLPT_PT_BINDING_FRAME 5         // uniform FrameUniforms
-// tonemap.comp, set 0
-#define GLPT_TM_BINDING_ACCUMULATION 0
-#define GLPT_TM_BINDING_OUTPUT 1  // uint[width*height], RGBA8 (R in the lowest byte)
-#define GLPT_TM_BINDING_FRAME 2
+#define GLPT_PT_BINDING_STATES 6        // GpuTraceState[], one per record state
+#define GLPT_PT_BINDING_GBUFFER 7       // 4 storage images (gbuffer_layout.h), bindings 7..10
+#define GLPT_PT_BINDING_FRONT 11        // colour buffers: storage images, read and written
+#define GLPT_PT_BINDING_BACK 12
 
-// Both passes run 8x8 pixel tiles: neighbouring rays stay coherent, which is what lavapipe's
+// The trace pass runs 8x8 pixel tiles: neighbouring rays stay coherent, which is what lavapipe's
 // ray traversal (one SIMD lane per invocation) rewards.
 #define GLPT_TILE_SIZE 8
 
 // ---- ray masks -------------------------------------------------------------------------------
 // Every instance has GLPT_MASK_VISIBLE set; bits 0..6 say "casts shadows for light i" (lights 7+
-// share bit 6). Primary and bounce rays use GLPT_MASK_VISIBLE, shadow rays the light's bit, so an
-// instance can be visible yet not shadow a light (see light_setup.cpp: lamp markers).
+// share bit 6). Bounce rays use GLPT_MASK_VISIBLE, shadow rays the light's bit, so an instance
+// can be visible yet not shadow a light (see light_setup.cpp: lamp markers).
 #define GLPT_MASK_VISIBLE 0x80u
 #define GLPT_MASK_SHADOW_BITS 7u
 
@@ -48,14 +48,18 @@ using mat4 = glm::mat4;
 #define GLPT_COLOR_SOURCE_EMISSION 4u
 #define GLPT_COLOR_SOURCE_SPECULAR 5u
 
-// One vertex of a triangle soup, in Morton-sorted triangle order: triangle p (the BLAS primitive
-// index) uses vertices 3p..3p+2. The BLAS is built straight from `position.xyz` (stride 48
-// bytes), so positions are stored once for both the builder and the shader. Colours stay full
-// float so an unlit surface reproduces GL's 8-bit rounding of the same value exactly.
+// Geometry of a BLAS, in its Morton-sorted triangle order: triangle p (the BLAS primitive index)
+// uses vertices 3p..3p+2. The BLAS is built straight from these (stride 16 bytes); they depend on
+// the shape only, so recolouring a shape reuses them and its BLAS.
+struct GpuPosition {
+  vec4 position;  // xyz: object-space position (eye space for projective modelviews), w: 0
+};
+
+// Shading data of one vertex, in the same order as the GpuPosition array of its shape. Colours
+// stay full float so an unlit surface reproduces GL's 8-bit rounding of the same value exactly.
 struct ShadingVertex {
-  vec4 position;  // xyz: object-space position; w: material index of the triangle, as a float
-  vec4 normal;    // xyz: object-space normal as given (not necessarily unit length); w: 0
-  vec4 color;     // GL current colour
+  vec4 normal;  // xyz: normal as given (not necessarily unit length); w: material index (float)
+  vec4 color;   // GL current colour
 };
 
 struct GpuMaterial {
@@ -68,11 +72,13 @@ struct GpuMaterial {
 
 // One entry per TLAS instance (instanceCustomIndex indexes this table).
 struct GpuInstance {
-  // xy: device address of the geometry's ShadingVertex array, zw: of its GpuMaterial array
-  // (GL_EXT_buffer_reference_uvec2 turns a uvec2 straight into a buffer reference).
-  // Normals are transformed in the shader with the query's world-to-object matrix (the
-  // inverse-transpose GL uses), so no matrix is stored here.
+  // xy: device address of the shape's GpuPosition array, zw: of its ShadingVertex array
+  // (GL_EXT_buffer_reference_uvec2 turns a uvec2 straight into a buffer reference). Normals are
+  // transformed in the shader with the query's world-to-object matrix (the inverse-transpose GL
+  // uses), so no matrix is stored here.
   uvec4 addresses;
+  // xy: address of the GpuMaterial array, z: the record state whose lights light it, w: unused
+  uvec4 materials;
 };
 
 // A GL light in eye space.
@@ -86,31 +92,41 @@ struct GpuLight {
   uvec4 params;      // x: shadow ray cull mask, yzw: unused
 };
 
+// Per record state: the lighting of pixels (G-buffer) and bounce hits (instances) drawn with it.
+struct GpuTraceState {
+  vec4 global_ambient;  // GL_LIGHT_MODEL_AMBIENT
+  vec4 viewer;          // eye-space viewer: a point (w = 1) or a direction towards it (w = 0)
+  vec4 fog_color;
+  vec4 fog_params;  // density, start, end, 1 / (end - start)
+  // x: light count (<= 8), y: fog mode (0 off, 1 linear, 2 exp, 3 exp2), z: colour buffers
+  // (bit 0 front, bit 1 back), w: unused
+  uvec4 info;
+  uvec4 lights[2];  // GpuLight indices, lights[i / 4][i % 4]
+};
+
 struct FrameUniforms {
-  mat4 inverse_projection;  // clip -> eye, for unprojecting primary rays
-  vec4 clear_color;
-  vec4 global_ambient;
-  ivec4 viewport;  // x, y, width, height (GL window coordinates, y up)
-  // x: image width, y: image height, z: light count, w: random seed of this frame
+  // x: image width, y: image height, z: colour buffers of pixels traced earlier but not in this
+  // frame's G-buffer (bit 0 front, bit 1 back), w: random seed of this frame
   uvec4 image;
-  // x: samples already in the accumulation buffer before this frame (0 = overwrite),
-  // y: samples to trace this frame, z: bounces, w: total samples after this frame (tonemap)
+  // x: samples already accumulated before this frame (0 = overwrite), y: samples to trace this
+  // frame, z: bounces, w: total samples after this frame
   uvec4 sampling;
-  // x: ambient-occlusion radius (eye-space units), y: cos(light angular radius),
-  // z, w: unused
+  // x: ambient-occlusion radius (eye-space units), y: cos(light angular radius), z, w: unused
   vec4 params;
 };
 
 struct GpuCounters {
-  uvec4 rays;  // x: rays traced this frame (primary + shadow + bounce), yzw: unused
+  uvec4 rays;  // x: rays traced this frame (shadow + bounce), yzw: unused
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(ShadingVertex) == 48);
+static_assert(sizeof(GpuPosition) == 16);
+static_assert(sizeof(ShadingVertex) == 32);
 static_assert(sizeof(GpuMaterial) == 80);
-static_assert(sizeof(GpuInstance) == 16);
+static_assert(sizeof(GpuInstance) == 32);
 static_assert(sizeof(GpuLight) == 112);
-static_assert(sizeof(FrameUniforms) == 160);
+static_assert(sizeof(GpuTraceState) == 112);
+static_assert(sizeof(FrameUniforms) == 48);
 static_assert(sizeof(GpuCounters) == 16);
 }  // namespace glpt::rt::gpu
 #endif

@@ -140,6 +140,7 @@ void FrameOutput::end_frame(const rec::FrameRecord& record, const rec::DrawableC
                  trace_s > 0 ? s.rays / trace_s / 1e6 : 0.0, s.blas_builds, s.blas_reused,
                  s.accumulated_samples);
   }
+  last_frame_stats_ = frame_stats_;
   frame_stats_ = rt::FrameStats();
   record_ms_ = 0;
   ++frame_index_;

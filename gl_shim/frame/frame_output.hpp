@@ -57,6 +57,8 @@ class FrameOutput {
                  double record_ms, WindowTarget* target, bool swap);
 
   rt::Renderer& renderer() { return *renderer_; }
+  // What the last completed frame cost (what GLPT_STATS printed for it).
+  const rt::FrameStats& last_frame_stats() const { return last_frame_stats_; }
   const rec::DrawableConfig& drawable() const { return drawable_; }
 
  private:
@@ -68,6 +70,7 @@ class FrameOutput {
   rec::DrawableConfig drawable_{0, 0};
   std::vector<uint8_t> image_;  // the front buffer, for presenting
   rt::FrameStats frame_stats_;  // summed over the records of the frame
+  rt::FrameStats last_frame_stats_;
   double record_ms_ = 0;
   uint64_t frame_index_ = 0;
   bool failure_reported_ = false;

@@ -49,6 +49,8 @@ void finish_vertex_data(rec::VertexData& d) {
 
   ContentHash geometry;
   geometry.add_bytes(&d.mode, sizeof d.mode);
+  geometry.add_bytes(&d.source, sizeof d.source);
+  geometry.add_bytes(&d.per_vertex, sizeof d.per_vertex);
   geometry.add(d.position);
   geometry.add(d.indices);
   geometry.add(d.primitives);
@@ -68,8 +70,12 @@ void finish_vertex_data(rec::VertexData& d) {
 void FrameRecorder::add_primitive(rec::StateId state, rec::VertexData& p) {
   if (p.position.empty() || p.primitives.size() != 1) return;
   ++events_;
-  if (open_ && (open_state_ != state || open_->mode != p.mode ||
-                open_->material.empty() != p.material.empty()))
+  // Mesa's immediate-mode vertex layout keeps a per-vertex colour until the next state change,
+  // so a primitive without one still has it; when the layout grows Mesa draws what it has
+  // batched (a new draw here).
+  if (open_ && open_state_ == state && open_->source == p.source) p.per_vertex |= open_->per_vertex;
+  if (open_ && (open_state_ != state || open_->mode != p.mode || open_->source != p.source ||
+                open_->per_vertex != p.per_vertex || open_->material.empty() != p.material.empty()))
     seal();
   vertex_bytes_ += p.position.size() * bytes_per_vertex(p);
   if (!open_) {

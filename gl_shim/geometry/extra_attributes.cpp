@@ -7,6 +7,7 @@ namespace glpt {
 
 void attribute_secondary_color(Context& ctx, glm::vec3 c) {
   ctx.current.secondary_color = glm::vec4(c, 1.0f);
+  if (ctx.assembly.inside) ctx.assembly.vertices.per_vertex |= rec::kPerVertexSecondaryColor;
 }
 
 void attribute_fog_coord(Context& ctx, float coord) { ctx.current.fog_coord = coord; }

@@ -32,6 +32,7 @@ void reset(rec::VertexData& d, GLenum mode) {
   d.material.clear();
   d.indices.clear();
   d.primitives.clear();
+  d.per_vertex = 0;
 }
 
 }  // namespace
@@ -60,6 +61,7 @@ void attribute_normal(Context& ctx, glm::vec3 n) { ctx.current.normal = n; }
 
 void attribute_color(Context& ctx, glm::vec4 c) {
   ctx.current.color = c;
+  if (ctx.assembly.inside) ctx.assembly.vertices.per_vertex |= rec::kPerVertexColor;
   apply_color_material(ctx);
 }
 
@@ -96,6 +98,10 @@ void glBegin(Context& ctx, GLenum mode) {
   a.per_vertex_material = false;
   a.dropped_vertices = 0;
   reset(a.vertices, mode);
+  // Replayed by glCallList: Mesa compiled it into an indexed draw. GL_COMPILE_AND_EXECUTE
+  // executes while compiling (call_depth 0): Mesa draws that like immediate mode.
+  a.vertices.source = ctx.lists.call_depth > 0 ? rec::PrimitiveSource::kDisplayList
+                                               : rec::PrimitiveSource::kImmediate;
 }
 
 void glEnd(Context& ctx) {

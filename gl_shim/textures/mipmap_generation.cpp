@@ -46,7 +46,7 @@ struct Channels {
 
 Channels load(const rec::TextureImage& img, rec::TexelFormat format, size_t index) {
   Channels c;
-  const uint8_t* p = img.texels.data() + index * bytes_per_texel(format);
+  const uint8_t* p = img.texels.data() + index * rec::texel_bytes(format);
   switch (format) {
     case rec::TexelFormat::kRgba8:
       for (int k = 0; k < 4; ++k) c.v[k] = p[k];
@@ -109,7 +109,7 @@ std::shared_ptr<rec::TextureImage> downsample(const rec::TextureImage& src,
   dst->border = src.border;
   dst->internal_format = src.internal_format;
   dst->sized_format = src.sized_format;
-  const uint32_t texel = bytes_per_texel(format);
+  const uint32_t texel = rec::texel_bytes(format);
   dst->texels.resize(size_t(dst->width) * dst->height * dst->depth * texel);
   const std::vector<Tap> tx = taps(src.width, dst->width);
   const std::vector<Tap> ty = taps(src.height, dst->height);

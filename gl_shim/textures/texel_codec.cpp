@@ -40,19 +40,6 @@ int source_component(GLenum base, int channel) {
 
 }  // namespace
 
-uint32_t bytes_per_texel(rec::TexelFormat format) {
-  switch (format) {
-    case rec::TexelFormat::kRgba8:
-    case rec::TexelFormat::kDepth32f:
-      return 4;
-    case rec::TexelFormat::kRgba16:
-      return 8;
-    case rec::TexelFormat::kRgba32f:
-      return 16;
-  }
-  return 4;
-}
-
 uint32_t widen_to_storage(uint32_t value, uint32_t bits, uint32_t storage_bits) {
   if (bits == 0 || bits >= storage_bits) return value;
   // Mesa's EXTEND_NORMALIZED_INT: bit replication.

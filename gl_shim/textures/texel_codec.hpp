@@ -14,9 +14,6 @@
 
 namespace glpt {
 
-// Bytes of one texel of `format` (rec::TexelFormat's comments).
-uint32_t bytes_per_texel(rec::TexelFormat format);
-
 // Stores `count` colours (RGBA, as unpacked from the client or after pixel transfer) as texels
 // of `info`. Base format conversion takes L and I from R; channels the base format lacks hold GL's
 // constants (rec::TexelFormat's layout: L -> (L,L,L,1), A -> (0,0,0,A), I -> (I,I,I,I), ...).

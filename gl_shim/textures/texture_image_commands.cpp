@@ -75,7 +75,7 @@ std::vector<uint8_t> texels_from_client(const Context& ctx, const InternalFormat
                                         const PixelStoreModes& modes, const ImageShape& shape,
                                         bool three_d, const void* pixels) {
   const size_t n = shape.groups();
-  std::vector<uint8_t> texels(n * bytes_per_texel(info.texel_format()), 0);
+  std::vector<uint8_t> texels(n * rec::texel_bytes(info.texel_format()), 0);
   if (pixels == nullptr || n == 0) return texels;
   const UnpackSource src{modes, shape, three_d, pixels};
   if (info.base_format == GL_DEPTH_COMPONENT) {
@@ -106,7 +106,7 @@ std::vector<uint8_t> texels_from_client(const Context& ctx, const InternalFormat
 std::vector<uint8_t> texels_from_framebuffer(Context& ctx, const InternalFormatInfo& info, GLint x,
                                              GLint y, GLsizei w, GLsizei h) {
   const size_t n = size_t(std::max(w, 0)) * size_t(std::max(h, 0));
-  std::vector<uint8_t> texels(n * bytes_per_texel(info.texel_format()), 0);
+  std::vector<uint8_t> texels(n * rec::texel_bytes(info.texel_format()), 0);
   if (n == 0) return texels;
   const bool depth = info.base_format == GL_DEPTH_COMPONENT;
   FramebufferPixels fb;
@@ -245,7 +245,7 @@ void tex_sub_image(Context& ctx, int dims, GLenum target, GLint level, GLint xof
     const std::vector<uint8_t> texels =
         texels_from_client(ctx, *info, ctx.framebuffer.unpack, shape, dims == 3, pixels);
     write_region(object, *t, level, xoff, yoff, zoff, w, h, d, texels,
-                 bytes_per_texel(info->texel_format()));
+                 rec::texel_bytes(info->texel_format()));
     image_changed(object, *t, level);
   });
 }
@@ -293,7 +293,7 @@ void copy_tex_sub_image(Context& ctx, int dims, GLenum target, GLint level, GLin
   or_out_of_memory(ctx, [&] {
     const std::vector<uint8_t> texels = texels_from_framebuffer(ctx, *info, x, y, w, h);
     write_region(object, *t, level, xoff, yoff, zoff, w, h, 1, texels,
-                 bytes_per_texel(info->texel_format()));
+                 rec::texel_bytes(info->texel_format()));
     image_changed(object, *t, level);
   });
 }
@@ -328,7 +328,7 @@ void get_tex_image(Context& ctx, GLenum target, GLint level, GLenum format, GLen
   if (!ClientImageLayout(ctx.framebuffer.pack, shape, t->dims == 3).valid())
     return record_error(ctx, GL_INVALID_VALUE);
   or_out_of_memory(ctx, [&] {
-    const uint32_t texel = bytes_per_texel(info->texel_format());
+    const uint32_t texel = rec::texel_bytes(info->texel_format());
     const auto source = [&](int32_t x, int32_t y, int32_t z) {
       const auto inside = [](int32_t v, int32_t border, uint32_t n) {
         return size_t(std::clamp(v - border, 0, int32_t(n) - 1));

@@ -5,9 +5,10 @@
 #include <limits>
 #include <unordered_set>
 
+#include "common/content_hash.hpp"
+#include "common/stopwatch.hpp"
 #include "rt_core/accel/morton_sort.hpp"
 #include "rt_core/scene/shading_data.hpp"
-#include "common/stopwatch.hpp"
 #include "rt_core/vk/vk_error.hpp"
 #include "rt_core/vk/vk_info.hpp"
 #include "shared_types.h"
@@ -20,14 +21,21 @@ VkDeviceSize align_up(VkDeviceSize value, VkDeviceSize alignment) {
 }
 
 VkDeviceSize entry_bytes(const BlasEntry& entry) {
-  return entry.shading.size() + entry.storage.size();
+  return entry.positions.size() + entry.storage.size();
+}
+
+uint64_t shading_key(uint64_t shape_hash, uint64_t shading_hash) {
+  ContentHash h;
+  h.add_bytes(&shape_hash, sizeof shape_hash);
+  h.add_bytes(&shading_hash, sizeof shading_hash);
+  return h.value();
 }
 
 }  // namespace
 
 // What one build needs between creating the entry and recording the build command.
 struct BlasCache::PendingBuild {
-  uint64_t content_hash = 0;
+  uint64_t shape_hash = 0;
   std::unique_ptr<BlasEntry> entry;
   VkAccelerationStructureGeometryKHR geometry = make_info<VkAccelerationStructureGeometryKHR>(
       VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR);
@@ -44,20 +52,14 @@ std::unique_ptr<BlasEntry> BlasCache::create_entry(const Geometry& geometry,
   entry->triangle_order = std::move(order.permutation);
   entry->triangle_count = static_cast<uint32_t>(triangle_count);
 
-  const size_t material_count = packed_material_count(geometry);
-  const VkDeviceSize vertex_bytes = 3 * triangle_count * sizeof(gpu::ShadingVertex);
-  const VkDeviceSize material_bytes = material_count * sizeof(gpu::GpuMaterial);
-  entry->shading =
-      GpuBuffer::create(device_, vertex_bytes + material_bytes,
+  const VkDeviceSize position_bytes = 3 * triangle_count * sizeof(gpu::GpuPosition);
+  entry->positions =
+      GpuBuffer::create(device_, position_bytes,
                         VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR |
                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-  auto* vertices = entry->shading.as<gpu::ShadingVertex>();
-  auto* materials =
-      reinterpret_cast<gpu::GpuMaterial*>(entry->shading.as<std::byte>() + vertex_bytes);
-  pack_geometry(geometry, entry->triangle_order, {vertices, 3 * triangle_count},
-                {materials, material_count});
-  entry->vertices_address = entry->shading.address();
-  entry->materials_address = entry->shading.address() + vertex_bytes;
+  pack_positions(geometry, entry->triangle_order,
+                 {entry->positions.as<gpu::GpuPosition>(), 3 * triangle_count});
+  entry->positions_address = entry->positions.address();
 
   glm::vec3 low(std::numeric_limits<float>::max()), high(std::numeric_limits<float>::lowest());
   for (const glm::vec3& p : positions) {
@@ -70,18 +72,14 @@ std::unique_ptr<BlasEntry> BlasCache::create_entry(const Geometry& geometry,
     entry->bounds_min = low;
     entry->bounds_max = high;
   }
-  entry->has_lit_material = geometry.materials.empty() ||
-                            std::any_of(geometry.materials.begin(), geometry.materials.end(),
-                                        [](const Material& material) { return material.lit; });
-
-  // A non-indexed triangle soup read straight from the shading vertices.
+  // A non-indexed triangle soup read straight from the positions.
   build.geometry.geometryType = VK_GEOMETRY_TYPE_TRIANGLES_KHR;
   build.geometry.flags = VK_GEOMETRY_OPAQUE_BIT_KHR;
   auto& triangles = build.geometry.geometry.triangles;
   triangles.sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_TRIANGLES_DATA_KHR;
   triangles.vertexFormat = VK_FORMAT_R32G32B32_SFLOAT;
-  triangles.vertexData.deviceAddress = entry->vertices_address;
-  triangles.vertexStride = sizeof(gpu::ShadingVertex);
+  triangles.vertexData.deviceAddress = entry->positions_address;
+  triangles.vertexStride = sizeof(gpu::GpuPosition);
   triangles.maxVertex = static_cast<uint32_t>(3 * triangle_count - 1);
   triangles.indexType = VK_INDEX_TYPE_NONE_KHR;
 
@@ -112,25 +110,61 @@ std::unique_ptr<BlasEntry> BlasCache::create_entry(const Geometry& geometry,
   return entry;
 }
 
+std::unique_ptr<ShadingEntry> BlasCache::create_shading(const Geometry& geometry,
+                                                        const BlasEntry& shape) const {
+  auto entry = std::make_unique<ShadingEntry>();
+  const size_t material_count = packed_material_count(geometry);
+  const VkDeviceSize vertex_bytes =
+      3 * VkDeviceSize{shape.triangle_count} * sizeof(gpu::ShadingVertex);
+  const VkDeviceSize material_bytes = material_count * sizeof(gpu::GpuMaterial);
+  entry->data =
+      GpuBuffer::create(device_, vertex_bytes + material_bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  auto* vertices = entry->data.as<gpu::ShadingVertex>();
+  auto* materials = reinterpret_cast<gpu::GpuMaterial*>(entry->data.as<std::byte>() + vertex_bytes);
+  pack_shading(geometry, shape.triangle_order, {vertices, 3 * size_t{shape.triangle_count}},
+               {materials, material_count});
+  entry->vertices_address = entry->data.address();
+  entry->materials_address = entry->data.address() + vertex_bytes;
+  entry->shape_hash = geometry.shape_hash;
+  return entry;
+}
+
 BlasPrepareStats BlasCache::prepare(std::span<const Geometry* const> geometries,
                                     uint64_t frame_number) {
   BlasPrepareStats stats;
   const Stopwatch timer;
   std::vector<PendingBuild> pending;
   pending.reserve(geometries.size());  // PendingBuild::geometry is pointed to: no reallocation
-  std::unordered_set<uint64_t> seen;
+  std::unordered_map<uint64_t, const BlasEntry*> shapes;  // this frame's, built or found
   for (const Geometry* geometry : geometries) {
     if (geometry == nullptr || geometry->triangle_count() == 0) continue;
-    if (!seen.insert(geometry->content_hash).second) continue;
-    if (auto found = entries_.find(geometry->content_hash); found != entries_.end()) {
+    if (shapes.count(geometry->shape_hash)) continue;
+    if (auto found = entries_.find(geometry->shape_hash); found != entries_.end()) {
       found->second->last_used_frame = frame_number;
+      shapes[geometry->shape_hash] = found->second.get();
       ++stats.reused;
       continue;
     }
     PendingBuild& build = pending.emplace_back();
-    build.content_hash = geometry->content_hash;
+    build.shape_hash = geometry->shape_hash;
     build.entry = create_entry(*geometry, build);
     build.entry->last_used_frame = frame_number;
+    shapes[geometry->shape_hash] = build.entry.get();
+  }
+  // Shading data needs only the shape's triangle order, known before the BLAS is built.
+  for (const Geometry* geometry : geometries) {
+    if (geometry == nullptr || geometry->triangle_count() == 0) continue;
+    const uint64_t key = shading_key(geometry->shape_hash, geometry->shading_hash);
+    if (auto found = shading_.find(key); found != shading_.end()) {
+      found->second->last_used_frame = frame_number;
+      continue;
+    }
+    std::unique_ptr<ShadingEntry> entry =
+        create_shading(*geometry, *shapes.at(geometry->shape_hash));
+    entry->last_used_frame = frame_number;
+    memory_bytes_ += entry->data.size();
+    shading_.emplace(key, std::move(entry));
+    ++stats.shading_uploads;
   }
   stats.upload_ms = timer.elapsed_ms();
   if (pending.empty()) return stats;
@@ -170,26 +204,41 @@ BlasPrepareStats BlasCache::prepare(std::span<const Geometry* const> geometries,
   });
   for (PendingBuild& build : pending) {
     memory_bytes_ += entry_bytes(*build.entry);
-    entries_.emplace(build.content_hash, std::move(build.entry));
+    entries_.emplace(build.shape_hash, std::move(build.entry));
   }
   stats.builds = static_cast<uint32_t>(pending.size());
   return stats;
 }
 
-const BlasEntry* BlasCache::find(uint64_t content_hash) const {
-  auto found = entries_.find(content_hash);
+const BlasEntry* BlasCache::find(uint64_t shape_hash) const {
+  auto found = entries_.find(shape_hash);
   return found == entries_.end() ? nullptr : found->second.get();
 }
 
+const ShadingEntry* BlasCache::find_shading(uint64_t shape_hash, uint64_t shading_hash) const {
+  auto found = shading_.find(shading_key(shape_hash, shading_hash));
+  return found == shading_.end() ? nullptr : found->second.get();
+}
+
 void BlasCache::evict_unused(uint64_t frame_number) {
+  auto expired = [&](uint64_t last_used) {
+    return last_used + kEvictAfterUnusedFrames < frame_number;
+  };
   std::erase_if(entries_, [&](const auto& item) {
-    const bool expired = item.second->last_used_frame + kEvictAfterUnusedFrames < frame_number;
-    if (expired) memory_bytes_ -= entry_bytes(*item.second);
-    return expired;
+    if (!expired(item.second->last_used_frame)) return false;
+    memory_bytes_ -= entry_bytes(*item.second);
+    return true;
+  });
+  // Shading data goes with its shape (and on its own when unused).
+  std::erase_if(shading_, [&](const auto& item) {
+    if (!expired(item.second->last_used_frame) && entries_.count(item.second->shape_hash))
+      return false;
+    memory_bytes_ -= item.second->data.size();
+    return true;
   });
   if (memory_bytes_ <= kMemoryBudgetBytes) return;
 
-  std::vector<std::pair<uint64_t, uint64_t>> by_age;  // (last used frame, content hash)
+  std::vector<std::pair<uint64_t, uint64_t>> by_age;  // (last used frame, shape hash)
   for (const auto& [hash, entry] : entries_) {
     if (entry->last_used_frame < frame_number) by_age.emplace_back(entry->last_used_frame, hash);
   }
@@ -199,6 +248,19 @@ void BlasCache::evict_unused(uint64_t frame_number) {
     auto found = entries_.find(hash);
     memory_bytes_ -= entry_bytes(*found->second);
     entries_.erase(found);
+    std::erase_if(shading_, [&](const auto& item) {
+      if (item.second->shape_hash != hash) return false;
+      memory_bytes_ -= item.second->data.size();
+      return true;
+    });
+  }
+  // Old shading of shapes still in use (recoloured every frame): dropped when unused this frame.
+  if (memory_bytes_ > kMemoryBudgetBytes) {
+    std::erase_if(shading_, [&](const auto& item) {
+      if (item.second->last_used_frame >= frame_number) return false;
+      memory_bytes_ -= item.second->data.size();
+      return true;
+    });
   }
 }
 

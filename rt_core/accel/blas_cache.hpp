@@ -1,5 +1,7 @@
-// Bottom-level acceleration structures, one per distinct Geometry (by content_hash), built once
-// and reused across frames, together with the geometry's shading data in the same sorted order.
+// Bottom-level acceleration structures, one per distinct shape (Geometry::shape_hash), built once
+// and reused across frames, and the shading data of each (shape, shading) pair in the same sorted
+// order. Recolouring a shape (new colours, normals or materials) uploads new shading data and
+// reuses the BLAS.
 #pragma once
 
 #include <cstdint>
@@ -17,10 +19,8 @@
 namespace glpt::rt {
 
 struct BlasEntry {
-  // ShadingVertex[3 * triangle_count] (also the BLAS build input), then GpuMaterial[].
-  GpuBuffer shading;
-  VkDeviceAddress vertices_address = 0;
-  VkDeviceAddress materials_address = 0;
+  GpuBuffer positions;  // gpu::GpuPosition[3 * triangle_count]: the BLAS build input
+  VkDeviceAddress positions_address = 0;
   GpuBuffer storage;  // backs `blas`
   vk::AccelerationStructure blas;
   VkDeviceAddress blas_address = 0;
@@ -28,7 +28,14 @@ struct BlasEntry {
   std::vector<uint32_t> triangle_order;
   uint32_t triangle_count = 0;
   glm::vec3 bounds_min{0.0f}, bounds_max{0.0f};  // object space, finite vertices only
-  bool has_lit_material = false;
+  uint64_t last_used_frame = 0;
+};
+
+struct ShadingEntry {
+  GpuBuffer data;  // gpu::ShadingVertex[3 * triangle_count], then gpu::GpuMaterial[]
+  VkDeviceAddress vertices_address = 0;
+  VkDeviceAddress materials_address = 0;
+  uint64_t shape_hash = 0;
   uint64_t last_used_frame = 0;
 };
 
@@ -37,6 +44,7 @@ struct BlasPrepareStats {
   double build_ms = 0;   // submit + wait of the builds
   uint32_t builds = 0;
   uint32_t reused = 0;
+  uint32_t shading_uploads = 0;
 };
 
 class BlasCache {
@@ -44,19 +52,20 @@ class BlasCache {
   // Entries not used for this many frames are dropped (geometry that changes every frame would
   // otherwise accumulate without bound).
   static constexpr uint64_t kEvictAfterUnusedFrames = 60;
-  // Above this many bytes (shading data + BLAS), the least recently used entries not needed by
-  // the current frame go early: a program that streams new geometry every frame would otherwise
-  // keep 60 frames' worth of it.
+  // Above this many bytes (positions, BLASes, shading data), the least recently used entries not
+  // needed by the current frame go early: a program that streams new geometry every frame would
+  // otherwise keep 60 frames' worth of it.
   static constexpr VkDeviceSize kMemoryBudgetBytes = VkDeviceSize{512} << 20;
 
   explicit BlasCache(VulkanDevice& device) : device_(device) {}
 
-  // Makes sure every geometry (with at least one triangle) has an entry, building all missing
-  // BLASes in one submission. Duplicates in `geometries` count once. Throws VulkanError; entries
-  // whose build did not complete are not kept.
+  // Makes sure every geometry (with at least one triangle) has a BLAS entry for its shape and a
+  // shading entry for its shading, building all missing BLASes in one submission. Duplicates
+  // count once. Throws VulkanError; entries whose build did not complete are not kept.
   BlasPrepareStats prepare(std::span<const Geometry* const> geometries, uint64_t frame_number);
 
-  const BlasEntry* find(uint64_t content_hash) const;
+  const BlasEntry* find(uint64_t shape_hash) const;
+  const ShadingEntry* find_shading(uint64_t shape_hash, uint64_t shading_hash) const;
   // Drops entries unused for kEvictAfterUnusedFrames, then, while over kMemoryBudgetBytes, the
   // least recently used ones not used in `frame_number`.
   void evict_unused(uint64_t frame_number);
@@ -66,11 +75,14 @@ class BlasCache {
  private:
   struct PendingBuild;
   std::unique_ptr<BlasEntry> create_entry(const Geometry& geometry, PendingBuild& build) const;
+  std::unique_ptr<ShadingEntry> create_shading(const Geometry& geometry,
+                                               const BlasEntry& shape) const;
 
   VulkanDevice& device_;
   std::unordered_map<uint64_t, std::unique_ptr<BlasEntry>> entries_;
+  std::unordered_map<uint64_t, std::unique_ptr<ShadingEntry>> shading_;  // by shading_key()
   GpuBuffer scratch_;              // shared by all builds; only one batch is in flight at a time
-  VkDeviceSize memory_bytes_ = 0;  // sum of entry_bytes() over entries_
+  VkDeviceSize memory_bytes_ = 0;  // bytes of every entry's buffers
 };
 
 }  // namespace glpt::rt

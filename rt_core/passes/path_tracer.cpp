@@ -2,23 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <cstring>
 #include <exception>
-#include <glm/mat4x4.hpp>
-#include <glm/matrix.hpp>
 #include <glm/trigonometric.hpp>
 
 #include "common/stopwatch.hpp"
-#include "rt_core/accel/blas_cache.hpp"
 #include "rt_core/accel/morton_sort.hpp"
-#include "rt_core/accel/tlas.hpp"
-#include "rt_core/passes/path_trace_pass.hpp"
-#include "rt_core/passes/tonemap_pass.hpp"
-#include "rt_core/scene/frame_signature.hpp"
-#include "rt_core/scene/light_setup.hpp"
 #include "rt_core/vk/gpu_buffer.hpp"
-#include "rt_core/vk/vk_device.hpp"
 #include "shared_types.h"
 
 namespace glpt::rt {
@@ -50,221 +40,49 @@ RenderSettings sanitized(RenderSettings settings) {
   return settings;
 }
 
+// The radical inverse of `index` in `base`: the Halton sequence, well spread over [0, 1).
+float halton(uint32_t index, uint32_t base) {
+  float result = 0.0f, fraction = 1.0f;
+  for (; index > 0; index /= base) {
+    fraction /= static_cast<float>(base);
+    result += fraction * static_cast<float>(index % base);
+  }
+  return result;
+}
+
+gpu::GpuTraceState pack_state(const TraceState& state) {
+  gpu::GpuTraceState packed{};
+  packed.global_ambient = state.global_ambient;
+  packed.viewer = state.viewer;
+  packed.fog_color = state.fog_color;
+  packed.fog_params = state.fog_params;
+  const uint32_t count = static_cast<uint32_t>(std::min<size_t>(state.lights.size(), 8));
+  packed.info = glm::uvec4(count, state.fog_mode, state.targets, 0u);
+  for (uint32_t i = 0; i < count; ++i) packed.lights[i / 4][i % 4] = state.lights[i];
+  return packed;
+}
+
+// Writes `values` into `buffer` (at least one element, so a buffer always exists to bind).
+template <typename T>
+void upload(const VulkanDevice& device, GpuBuffer& buffer, const std::vector<T>& values) {
+  ensure_capacity(device, buffer, std::max<size_t>(values.size(), 1) * sizeof(T),
+                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  buffer.write(values.data(), values.size() * sizeof(T));
+}
+
 }  // namespace
 
-class PathTracer::Impl {
- public:
-  Impl(const RenderSettings& settings, std::shared_ptr<VulkanDevice> device)
-      : settings_(sanitized(settings)),
-        device_(std::move(device)),
-        blas_cache_(*device_),
-        tlas_(*device_),
-        path_trace_(*device_),
-        tonemap_(*device_) {
-    frame_uniforms_ =
-        GpuBuffer::create(*device_, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
-    counters_ =
-        GpuBuffer::create(*device_, sizeof(gpu::GpuCounters), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-  }
-
-  const std::string& device_name() const { return device_->name(); }
-
-  // Throws on Vulkan failures; PathTracer::render turns that into false + message.
-  void render(const TraceScene& frame, std::vector<uint8_t>& rgba, FrameStats& stats);
-
-  // After a failure nothing about the previous frame can be trusted.
-  void forget_previous_frame() noexcept {
-    previous_signature_ = FrameSignature();
-    accumulated_samples_ = 0;
-  }
-
- private:
-  // Per-frame scene description on the host, rebuilt from the TraceScene each time.
-  struct SceneSetup {
-    std::vector<VkAccelerationStructureInstanceKHR> tlas_instances;
-    std::vector<gpu::GpuInstance> instance_table;
-    std::vector<EyeBounds> instance_bounds;
-    EyeBounds scene_bounds;
-    bool any_lit = false;
-    uint64_t triangles = 0;
-  };
-  void build_scene_setup(const TraceScene& frame, SceneSetup& setup) const;
-  // lavapipe's TLAS builder, like its BLAS builder, splits the instance *index* range, and GL
-  // draw order is not spatial: put instances in Morton order of their bounds' centres. The
-  // instance table order (instanceCustomIndex) is unaffected.
-  static void sort_instances_spatially(SceneSetup& setup);
-
-  RenderSettings settings_;
-  // Declared first: every member below holds Vulkan objects of this device.
-  std::shared_ptr<VulkanDevice> device_;
-  BlasCache blas_cache_;
-  Tlas tlas_;
-  PathTracePass path_trace_;
-  TonemapPass tonemap_;
-  GpuBuffer frame_uniforms_;
-  GpuBuffer counters_;
-  GpuBuffer instance_table_;
-  GpuBuffer lights_;
-  GpuBuffer accumulation_;
-  GpuBuffer output_;
-
-  FrameSignature previous_signature_;
-  uint32_t accumulated_samples_ = 0;
-  uint64_t frame_number_ = 0;
-  SceneSetup scene_;  // kept to reuse its vectors' capacity
-};
-
-void PathTracer::Impl::build_scene_setup(const TraceScene& frame, SceneSetup& setup) const {
-  setup.tlas_instances.clear();
-  setup.instance_table.clear();
-  setup.instance_bounds.clear();
-  setup.scene_bounds = EyeBounds();
-  setup.any_lit = false;
-  setup.triangles = 0;
-  for (const Instance& instance : frame.instances) {
-    if (!instance.geometry || instance.geometry->triangle_count() == 0) continue;
-    const BlasEntry* entry = blas_cache_.find(instance.geometry->content_hash);
-    if (entry == nullptr) continue;  // cannot happen after BlasCache::prepare
-
-    VkAccelerationStructureInstanceKHR tlas_instance{};
-    tlas_instance.transform = to_vk_transform(instance.modelview);
-    tlas_instance.instanceCustomIndex = static_cast<uint32_t>(setup.instance_table.size());
-    tlas_instance.mask = GLPT_MASK_VISIBLE;  // shadow bits added by setup_lights
-    tlas_instance.instanceShaderBindingTableRecordOffset = 0;
-    tlas_instance.flags = VK_GEOMETRY_INSTANCE_TRIANGLE_FACING_CULL_DISABLE_BIT_KHR |
-                          VK_GEOMETRY_INSTANCE_FORCE_OPAQUE_BIT_KHR;
-    tlas_instance.accelerationStructureReference = entry->blas_address;
-    setup.tlas_instances.push_back(tlas_instance);
-
-    const glm::uvec2 vertices = split_address(entry->vertices_address);
-    const glm::uvec2 materials = split_address(entry->materials_address);
-    setup.instance_table.push_back({glm::uvec4(vertices, materials)});
-
-    const EyeBounds bounds =
-        EyeBounds::transformed(entry->bounds_min, entry->bounds_max, instance.modelview);
-    setup.instance_bounds.push_back(bounds);
-    setup.scene_bounds.extend(bounds);
-    setup.any_lit = setup.any_lit || entry->has_lit_material;
-    setup.triangles += entry->triangle_count;
-  }
+PathTracer::PathTracer(const RenderSettings& settings, std::shared_ptr<VulkanDevice> device)
+    : settings_(sanitized(settings)),
+      device_(std::move(device)),
+      blas_cache_(*device_),
+      tlas_(*device_),
+      trace_pass_(*device_) {
+  frame_uniforms_ =
+      GpuBuffer::create(*device_, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+  counters_ =
+      GpuBuffer::create(*device_, sizeof(gpu::GpuCounters), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
 }
-
-void PathTracer::Impl::sort_instances_spatially(SceneSetup& setup) {
-  if (setup.tlas_instances.size() < 3) return;
-  std::vector<glm::vec3> centres;
-  centres.reserve(setup.instance_bounds.size());
-  for (const EyeBounds& bounds : setup.instance_bounds) {
-    centres.push_back(bounds.empty() ? glm::vec3(0.0f) : (bounds.min + bounds.max) * 0.5f);
-  }
-  const MortonOrder order = morton_order_points(centres);
-  std::vector<VkAccelerationStructureInstanceKHR> sorted;
-  sorted.reserve(setup.tlas_instances.size());
-  for (uint32_t index : order.permutation) sorted.push_back(setup.tlas_instances[index]);
-  setup.tlas_instances = std::move(sorted);
-}
-
-void PathTracer::Impl::render(const TraceScene& frame, std::vector<uint8_t>& rgba,
-                              FrameStats& stats) {
-  stats = FrameStats();
-  ++frame_number_;
-  if (frame.width == 0 || frame.height == 0) {
-    rgba.clear();
-    forget_previous_frame();
-    return;
-  }
-
-  // ---- acceleration structures of new geometry
-  std::vector<const Geometry*> geometries;
-  geometries.reserve(frame.instances.size());
-  for (const Instance& instance : frame.instances) geometries.push_back(instance.geometry.get());
-  const BlasPrepareStats blas = blas_cache_.prepare(geometries, frame_number_);
-  stats.blas_builds = blas.builds;
-  stats.blas_reused = blas.reused;
-  stats.blas_ms = blas.build_ms;
-
-  // ---- per-frame tables
-  const Stopwatch upload_timer;
-  build_scene_setup(frame, scene_);
-  stats.triangles = scene_.triangles;
-  std::vector<Light> lights = frame.lights;
-  if (lights.empty() && scene_.any_lit) lights.push_back(default_light());
-  const LightSetup light_setup = setup_lights(lights, scene_.instance_bounds, scene_.scene_bounds);
-  for (size_t i = 0; i < scene_.tlas_instances.size(); ++i) {
-    scene_.tlas_instances[i].mask = light_setup.instance_masks[i] & 0xFFu;
-  }
-  sort_instances_spatially(scene_);
-  const size_t table_bytes = scene_.instance_table.size() * sizeof(gpu::GpuInstance);
-  ensure_capacity(*device_, instance_table_, table_bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-  instance_table_.write(scene_.instance_table.data(), table_bytes);
-  const size_t light_bytes = light_setup.lights.size() * sizeof(gpu::GpuLight);
-  ensure_capacity(*device_, lights_, light_bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-  lights_.write(light_setup.lights.data(), light_bytes);
-
-  // ---- accumulation: continue only while everything the image depends on is unchanged
-  FrameSignature signature(frame);
-  const bool scene_unchanged = signature == previous_signature_;
-  if (!(settings_.accumulate && scene_unchanged)) accumulated_samples_ = 0;
-  const uint32_t samples = std::min(
-      settings_.samples_per_pixel,
-      settings_.max_accumulated - std::min(accumulated_samples_, settings_.max_accumulated));
-  const size_t pixel_count = size_t{frame.width} * frame.height;
-  ensure_capacity(*device_, accumulation_, pixel_count * sizeof(glm::vec4),
-                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-  ensure_capacity(*device_, output_, pixel_count * sizeof(uint32_t),
-                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-
-  gpu::FrameUniforms uniforms{};
-  uniforms.inverse_projection = glm::mat4(glm::inverse(glm::dmat4(frame.projection)));
-  uniforms.clear_color = frame.clear_color;
-  uniforms.global_ambient = frame.global_ambient;
-  uniforms.viewport =
-      glm::ivec4(frame.viewport.x, frame.viewport.y, static_cast<int32_t>(frame.viewport.width),
-                 static_cast<int32_t>(frame.viewport.height));
-  // The seed changes every frame so accumulated frames (and restarted ones) see new samples.
-  uniforms.image = glm::uvec4(frame.width, frame.height, static_cast<uint32_t>(lights.size()),
-                              static_cast<uint32_t>(frame_number_ * 0x9E3779B9u));
-  uniforms.sampling =
-      glm::uvec4(accumulated_samples_, samples, settings_.bounces, accumulated_samples_ + samples);
-  float ao_radius = kAoRadiusSceneFraction * scene_.scene_bounds.diagonal();
-  if (!std::isfinite(ao_radius)) ao_radius = 0.0f;  // 0: ambient never occluded
-  uniforms.params =
-      glm::vec4(ao_radius, std::cos(glm::radians(settings_.light_angular_radius_deg)), 0.0f, 0.0f);
-  frame_uniforms_.write(&uniforms, sizeof uniforms);
-  const gpu::GpuCounters zero_counters{};
-  counters_.write(&zero_counters, sizeof zero_counters);
-  stats.upload_ms = blas.upload_ms + upload_timer.elapsed_ms();
-
-  // ---- TLAS: the instance list is part of the signature, so an unchanged frame reuses it
-  if (!scene_unchanged || !tlas_.handle()) stats.tlas_ms = tlas_.build(scene_.tlas_instances);
-
-  // ---- trace
-  if (samples > 0) {
-    const PathTraceResources resources{tlas_.handle(), &instance_table_, &lights_,
-                                       &accumulation_, &counters_,       &frame_uniforms_};
-    stats.trace_ms = device_->submit_and_wait([&](VkCommandBuffer cmd) {
-      path_trace_.record(cmd, resources, frame.width, frame.height);
-    });
-    stats.rays = counters_.as<gpu::GpuCounters>()->rays.x;
-  }
-  accumulated_samples_ += samples;
-  previous_signature_ = std::move(signature);
-
-  // ---- tonemap and read back
-  const Stopwatch readback_timer;
-  const TonemapResources tonemap_resources{&accumulation_, &output_, &frame_uniforms_};
-  device_->submit_and_wait([&](VkCommandBuffer cmd) {
-    tonemap_.record(cmd, tonemap_resources, frame.width, frame.height);
-  });
-  rgba.resize(pixel_count * 4);
-  std::memcpy(rgba.data(), output_.mapped(), pixel_count * 4);
-  stats.readback_ms = readback_timer.elapsed_ms();
-  stats.accumulated_samples = accumulated_samples_;
-
-  blas_cache_.evict_unused(frame_number_);
-}
-
-PathTracer::PathTracer(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
-PathTracer::~PathTracer() = default;
 
 std::unique_ptr<PathTracer> PathTracer::create(std::shared_ptr<VulkanDevice> device,
                                                const RenderSettings& settings, std::string* error) {
@@ -280,42 +98,161 @@ std::unique_ptr<PathTracer> PathTracer::create(std::shared_ptr<VulkanDevice> dev
     return nullptr;
   }
   try {
-    auto impl = std::make_unique<Impl>(settings, std::move(device));
-    return std::unique_ptr<PathTracer>(new PathTracer(std::move(impl)));
+    return std::unique_ptr<PathTracer>(new PathTracer(settings, std::move(device)));
   } catch (const std::exception& e) {
     if (error != nullptr) *error = e.what();
   } catch (...) {
-    if (error != nullptr) *error = "glpt: unknown error while creating the Vulkan renderer";
+    if (error != nullptr) *error = "glpt: unknown error while creating the path tracer";
   }
   return nullptr;
 }
 
-std::unique_ptr<PathTracer> PathTracer::create(const RenderSettings& settings, std::string* error) {
-  try {
-    DeviceOptions options;
-    options.validation = settings.validation;
-    if (const char* filter = std::getenv("GLPT_VK_DEVICE")) options.name_filter = filter;
-    return create(VulkanDevice::create(options), settings, error);
-  } catch (const std::exception& e) {
-    if (error != nullptr) *error = e.what();
-  }
-  return nullptr;
+void PathTracer::forget_previous_frame() noexcept {
+  previous_signature_ = FrameSignature();
+  accumulated_samples_ = 0;
+  frame_samples_ = 0;
+  tlas_valid_ = false;
 }
 
-bool PathTracer::render(const TraceScene& frame, std::vector<uint8_t>& rgba, FrameStats& stats,
-                        std::string* error) {
-  try {
-    impl_->render(frame, rgba, stats);
-    return true;
-  } catch (const std::exception& e) {
-    if (error != nullptr) *error = std::string("glpt: render failed: ") + e.what();
-  } catch (...) {
-    if (error != nullptr) *error = "glpt: render failed: unknown error";
-  }
-  impl_->forget_previous_frame();
-  return false;
+glm::vec2 PathTracer::begin_frame(FrameSignature signature) {
+  ++frame_number_;
+  same_scene_ = signature == previous_signature_;
+  if (!(settings_.accumulate && same_scene_)) accumulated_samples_ = 0;
+  frame_samples_ = std::min(
+      settings_.samples_per_pixel,
+      settings_.max_accumulated - std::min(accumulated_samples_, settings_.max_accumulated));
+  previous_signature_ = std::move(signature);
+  if (accumulated_samples_ == 0 || frame_samples_ == 0) return glm::vec2(0.0f);
+  return glm::vec2(halton(accumulated_samples_, 2), halton(accumulated_samples_, 3)) - 0.5f;
 }
 
-const std::string& PathTracer::device_name() const { return impl_->device_name(); }
+void PathTracer::build_scene_setup(const TraceScene& scene, SceneSetup& setup) const {
+  setup.tlas_instances.clear();
+  setup.instance_table.clear();
+  setup.instance_bounds.clear();
+  setup.scene_bounds = EyeBounds();
+  setup.triangles = 0;
+  for (const Instance& instance : scene.instances) {
+    if (!instance.geometry || instance.geometry->triangle_count() == 0) continue;
+    const Geometry& geometry = *instance.geometry;
+    const BlasEntry* entry = blas_cache_.find(geometry.shape_hash);
+    const ShadingEntry* shading =
+        blas_cache_.find_shading(geometry.shape_hash, geometry.shading_hash);
+    if (entry == nullptr || shading == nullptr) continue;  // cannot happen after prepare
+
+    VkAccelerationStructureInstanceKHR tlas_instance{};
+    tlas_instance.transform = to_vk_transform(instance.modelview);
+    tlas_instance.instanceCustomIndex = static_cast<uint32_t>(setup.instance_table.size());
+    tlas_instance.mask = GLPT_MASK_VISIBLE;  // shadow bits added by setup_lights
+    tlas_instance.instanceShaderBindingTableRecordOffset = 0;
+    tlas_instance.flags = VK_GEOMETRY_INSTANCE_TRIANGLE_FACING_CULL_DISABLE_BIT_KHR |
+                          VK_GEOMETRY_INSTANCE_FORCE_OPAQUE_BIT_KHR;
+    tlas_instance.accelerationStructureReference = entry->blas_address;
+    setup.tlas_instances.push_back(tlas_instance);
+
+    const glm::uvec2 positions = split_address(entry->positions_address);
+    const glm::uvec2 vertices = split_address(shading->vertices_address);
+    const glm::uvec2 materials = split_address(shading->materials_address);
+    setup.instance_table.push_back(
+        {glm::uvec4(positions, vertices), glm::uvec4(materials, instance.state, 0u)});
+
+    const EyeBounds bounds =
+        EyeBounds::transformed(entry->bounds_min, entry->bounds_max, instance.modelview);
+    setup.instance_bounds.push_back(bounds);
+    setup.scene_bounds.extend(bounds);
+    setup.triangles += entry->triangle_count;
+  }
+}
+
+void PathTracer::sort_instances_spatially(SceneSetup& setup) {
+  if (setup.tlas_instances.size() < 3) return;
+  std::vector<glm::vec3> centres;
+  centres.reserve(setup.instance_bounds.size());
+  for (const EyeBounds& bounds : setup.instance_bounds) {
+    centres.push_back(bounds.empty() ? glm::vec3(0.0f) : (bounds.min + bounds.max) * 0.5f);
+  }
+  const MortonOrder order = morton_order_points(centres);
+  std::vector<VkAccelerationStructureInstanceKHR> sorted;
+  sorted.reserve(setup.tlas_instances.size());
+  for (uint32_t index : order.permutation) sorted.push_back(setup.tlas_instances[index]);
+  setup.tlas_instances = std::move(sorted);
+}
+
+void PathTracer::trace(const TraceScene& scene, const TraceTargets& targets, FrameStats& stats) {
+  stats = FrameStats();
+  if (scene.width == 0 || scene.height == 0 || targets.gbuffer == nullptr) return;
+
+  // ---- acceleration structures and shading data of new geometry
+  std::vector<const Geometry*> geometries;
+  geometries.reserve(scene.instances.size());
+  for (const Instance& instance : scene.instances) geometries.push_back(instance.geometry.get());
+  const BlasPrepareStats blas = blas_cache_.prepare(geometries, frame_number_);
+  stats.blas_builds = blas.builds;
+  stats.blas_reused = blas.reused;
+  stats.blas_ms = blas.build_ms;
+
+  // ---- per-frame tables
+  const Stopwatch upload_timer;
+  build_scene_setup(scene, scene_);
+  stats.triangles = scene_.triangles;
+  const LightSetup light_setup =
+      setup_lights(scene.lights, scene_.instance_bounds, scene_.scene_bounds);
+  for (size_t i = 0; i < scene_.tlas_instances.size(); ++i)
+    scene_.tlas_instances[i].mask = light_setup.instance_masks[i] & 0xFFu;
+  sort_instances_spatially(scene_);
+  upload(*device_, instance_table_, scene_.instance_table);
+  upload(*device_, lights_, light_setup.lights);
+  std::vector<gpu::GpuTraceState> states;
+  states.reserve(scene.states.size());
+  for (const TraceState& state : scene.states) states.push_back(pack_state(state));
+  upload(*device_, states_, states);
+
+  const size_t pixel_count = size_t{scene.width} * scene.height;
+  ensure_capacity(*device_, accumulation_, 2 * pixel_count * sizeof(glm::vec4),
+                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  gpu::FrameUniforms uniforms{};
+  // The seed changes every frame so accumulated frames (and restarted ones) see new samples.
+  uniforms.image = glm::uvec4(scene.width, scene.height, scene.default_targets,
+                              static_cast<uint32_t>(frame_number_ * 0x9E3779B9u));
+  uniforms.sampling = glm::uvec4(accumulated_samples_, frame_samples_, settings_.bounces,
+                                 accumulated_samples_ + frame_samples_);
+  float ao_radius = kAoRadiusSceneFraction * scene_.scene_bounds.diagonal();
+  if (!std::isfinite(ao_radius)) ao_radius = 0.0f;  // 0: ambient never occluded
+  uniforms.params =
+      glm::vec4(ao_radius, std::cos(glm::radians(settings_.light_angular_radius_deg)), 0.0f, 0.0f);
+  frame_uniforms_.write(&uniforms, sizeof uniforms);
+  const gpu::GpuCounters zero_counters{};
+  counters_.write(&zero_counters, sizeof zero_counters);
+  stats.upload_ms = blas.upload_ms + upload_timer.elapsed_ms();
+
+  // ---- TLAS: the instance list follows from the signature, so an unchanged frame reuses it
+  if (!same_scene_ || !tlas_valid_ || !tlas_.handle()) {
+    tlas_valid_ = false;
+    stats.tlas_ms = tlas_.build(scene_.tlas_instances);
+    tlas_valid_ = true;
+  }
+
+  // ---- trace (also when no sample is left to add: the pass writes the accumulated image)
+  PathTraceResources resources;
+  resources.scene = tlas_.handle();
+  resources.instances = &instance_table_;
+  resources.lights = &lights_;
+  resources.states = &states_;
+  resources.accumulation = &accumulation_;
+  resources.counters = &counters_;
+  resources.frame = &frame_uniforms_;
+  for (int a = 0; a < GLPT_GBUFFER_ATTACHMENTS; ++a)
+    resources.gbuffer[a] = targets.gbuffer->image(a).view();
+  resources.front = targets.front;
+  resources.back = targets.back;
+  stats.trace_ms = device_->submit_and_wait(
+      [&](VkCommandBuffer cmd) { trace_pass_.record(cmd, resources, scene.width, scene.height); });
+  stats.rays = counters_.as<gpu::GpuCounters>()->rays.x;
+  accumulated_samples_ += frame_samples_;
+  frame_samples_ = 0;
+  stats.accumulated_samples = accumulated_samples_;
+
+  blas_cache_.evict_unused(frame_number_);
+}
 
 }  // namespace glpt::rt

@@ -1,43 +1,93 @@
-// The path tracer: renders a TraceScene (scene/trace_scene.hpp) with Vulkan ray queries.
+// The path tracer of path-traced mode: acceleration structures of the traced geometry, the
+// per-frame tables, accumulation, and the trace pass that lights the G-buffer's pixels into the
+// colour buffers (docs/architecture.md, "Path-traced mode"). Used by Renderer, which rasterizes
+// the G-buffer between begin_frame and trace.
 //
-// Not thread-safe: one PathTracer is used by one thread at a time (the GL context's). No exception
-// leaves this API; failures come back as nullptr / false with a message.
+// Not thread-safe: one PathTracer is used by one thread at a time (the GL context's).
 #pragma once
 
 #include <cstdint>
+#include <glm/vec2.hpp>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "rt_core/accel/blas_cache.hpp"
+#include "rt_core/accel/tlas.hpp"
 #include "rt_core/frame_stats.hpp"
+#include "rt_core/passes/gbuffer.hpp"
+#include "rt_core/passes/path_trace_pass.hpp"
 #include "rt_core/render_settings.hpp"
+#include "rt_core/scene/frame_signature.hpp"
+#include "rt_core/scene/light_setup.hpp"
 #include "rt_core/scene/trace_scene.hpp"
 #include "rt_core/vk/vk_device.hpp"
 
 namespace glpt::rt {
+
+// What the trace pass reads and writes.
+struct TraceTargets {
+  const GBuffer* gbuffer = nullptr;
+  VkImageView front = VK_NULL_HANDLE;  // colour buffers (front twice when single-buffered)
+  VkImageView back = VK_NULL_HANDLE;
+};
 
 class PathTracer {
  public:
   // nullptr + a message in *error when `device` has no ray queries (or creation failed).
   static std::unique_ptr<PathTracer> create(std::shared_ptr<VulkanDevice> device,
                                             const RenderSettings& settings, std::string* error);
-  // The same on a device of its own (tests and benchmarks of the tracer alone).
-  // GLPT_VK_DEVICE=substring selects the device by name.
-  static std::unique_ptr<PathTracer> create(const RenderSettings& settings, std::string* error);
-  ~PathTracer();
   PathTracer(const PathTracer&) = delete;
   PathTracer& operator=(const PathTracer&) = delete;
 
-  // Renders `frame` into `rgba` (resized to width*height*4, RGBA8, rows bottom-to-top like
-  // glReadPixels). Returns false (and a message in *error) on a Vulkan failure; never throws.
-  bool render(const TraceScene& frame, std::vector<uint8_t>& rgba, FrameStats& stats,
-              std::string* error);
-  const std::string& device_name() const;
+  // Starts a frame: its samples are added to the previous frames' while `signature` equals the
+  // previous frame's (and GLPT_ACCUMULATE is on); otherwise accumulation restarts. Returns the
+  // sub-pixel offset (pixels) for this frame's G-buffer: 0 for an accumulation's first samples,
+  // so a single frame samples GL's pixel centres, then a Halton (2, 3) sequence in [-0.5, 0.5).
+  glm::vec2 begin_frame(FrameSignature signature);
+  // Builds what `scene` needs (BLASes, TLAS, tables) and runs the trace pass over the G-buffer of
+  // the frame begun last, writing the colour buffers. Throws VulkanError.
+  void trace(const TraceScene& scene, const TraceTargets& targets, FrameStats& stats);
+  // After a failure, or a frame that traced nothing: the next frame starts a new accumulation.
+  void forget_previous_frame() noexcept;
 
  private:
-  class Impl;
-  explicit PathTracer(std::unique_ptr<Impl> impl);
-  std::unique_ptr<Impl> impl_;
+  PathTracer(const RenderSettings& settings, std::shared_ptr<VulkanDevice> device);
+
+  // Per-frame scene description on the host, rebuilt from the TraceScene each time.
+  struct SceneSetup {
+    std::vector<VkAccelerationStructureInstanceKHR> tlas_instances;
+    std::vector<gpu::GpuInstance> instance_table;
+    std::vector<EyeBounds> instance_bounds;
+    EyeBounds scene_bounds;
+    uint64_t triangles = 0;
+  };
+  void build_scene_setup(const TraceScene& scene, SceneSetup& setup) const;
+  // lavapipe's TLAS builder, like its BLAS builder, splits the instance *index* range, and GL
+  // draw order is not spatial: put instances in Morton order of their bounds' centres. The
+  // instance table order (instanceCustomIndex) is unaffected.
+  static void sort_instances_spatially(SceneSetup& setup);
+
+  RenderSettings settings_;
+  // Declared first: every member below holds Vulkan objects of this device.
+  std::shared_ptr<VulkanDevice> device_;
+  BlasCache blas_cache_;
+  Tlas tlas_;
+  PathTracePass trace_pass_;
+  GpuBuffer frame_uniforms_;
+  GpuBuffer counters_;
+  GpuBuffer instance_table_;
+  GpuBuffer lights_;
+  GpuBuffer states_;
+  GpuBuffer accumulation_;
+
+  FrameSignature previous_signature_;
+  bool same_scene_ = false;  // this frame's signature equals the previous frame's
+  bool tlas_valid_ = false;
+  uint32_t accumulated_samples_ = 0;  // before this frame
+  uint32_t frame_samples_ = 0;        // this frame
+  uint64_t frame_number_ = 0;
+  SceneSetup scene_;  // kept to reuse its vectors' capacity
 };
 
 }  // namespace glpt::rt

@@ -467,7 +467,11 @@ DrawSetup make_draw_setup(const rec::StateSnapshot& state, const DrawContext& co
   d.blend_constant = ops.blend_color;
 
   // What raster mode does not reproduce exactly yet.
-  if ((points && prim.point_smooth) || prim.polygon_smooth || (as_lines && prim.line_smooth))
+  // (Polygons are smoothed by the rule of the mode they are rasterized in: GL 1.5 3.5.6.)
+  const bool as_points = points || (triangles && mode == GL_POINT);
+  const bool filled = triangles && mode == GL_FILL;
+  if ((as_points && prim.point_smooth) || (filled && prim.polygon_smooth) ||
+      (as_lines && prim.line_smooth))
     setup.approximated = true;
   return setup;
 }

@@ -18,7 +18,8 @@ namespace glpt::rt {
 enum class RasterTopology : uint8_t { kPoints, kLines, kLineStrip, kTriangles };
 
 // Which colour attachments a draw writes: GL's draw buffer resolved against the drawable.
-enum class ColorTargets : uint8_t { kNone, kFront, kBack, kFrontAndBack };
+// kGBuffer: path-traced mode's G-buffer attachments (gbuffer_targets.hpp) instead of colour.
+enum class ColorTargets : uint8_t { kNone, kFront, kBack, kFrontAndBack, kGBuffer };
 
 struct PipelineKey {
   // Specialization constants, indexed by constant_id (GLPT_SC_* in raster_types.h).
@@ -38,7 +39,8 @@ struct PipelineKey {
   uint8_t attachments;  // colour attachments the pipeline renders to (1 or 2)
   uint8_t unfilled;     // polygon mode through the geometry shader: 0 no, 1 lines, 2 points
   uint8_t pixels;       // pixel rectangles: the GLPT_PIXELS fragment shader (1, or 2 with depth)
-  uint8_t padding[2];
+  uint8_t gbuffer;      // path-traced mode's G-buffer pass: G-buffer shaders and attachments
+  uint8_t padding[1];
 
   PipelineKey() { std::memset(this, 0, sizeof *this); }
   bool operator==(const PipelineKey& o) const { return std::memcmp(this, &o, sizeof *this) == 0; }

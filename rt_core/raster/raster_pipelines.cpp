@@ -15,9 +15,16 @@
 #include "raster_ff_pixels_frag_spv.h"
 #include "raster_ff_smooth_frag_spv.h"
 #include "raster_ff_vert_spv.h"
+#include "raster_gbuffer_clip_geom_spv.h"
+#include "raster_gbuffer_clip_vert_spv.h"
+#include "raster_gbuffer_flat_frag_spv.h"
+#include "raster_gbuffer_geom_spv.h"
+#include "raster_gbuffer_smooth_frag_spv.h"
+#include "raster_gbuffer_vert_spv.h"
 #include "raster_types.h"
 #include "raster_unfilled_lines_geom_spv.h"
 #include "raster_unfilled_points_geom_spv.h"
+#include "rt_core/raster/gbuffer_targets.hpp"
 #include "rt_core/vk/vk_error.hpp"
 #include "rt_core/vk/vk_info.hpp"
 
@@ -101,6 +108,12 @@ RasterPipelines::RasterPipelines(const VulkanDevice& device) : device_(device) {
   if (device.has_geometry_shader()) {
     unfilled_lines_ = make_module(dev, raster_unfilled_lines_geom_spv);
     unfilled_points_ = make_module(dev, raster_unfilled_points_geom_spv);
+    gbuffer_vertex_ = make_module(dev, raster_gbuffer_vert_spv);
+    gbuffer_vertex_clip_ = make_module(dev, raster_gbuffer_clip_vert_spv);
+    gbuffer_geometry_ = make_module(dev, raster_gbuffer_geom_spv);
+    gbuffer_geometry_clip_ = make_module(dev, raster_gbuffer_clip_geom_spv);
+    gbuffer_fragment_smooth_ = make_module(dev, raster_gbuffer_smooth_frag_spv);
+    gbuffer_fragment_flat_ = make_module(dev, raster_gbuffer_flat_frag_spv);
   }
 
   cache_path_ = pipeline_cache_path(device.name());
@@ -175,6 +188,15 @@ VkPipeline RasterPipelines::create(const PipelineKey& key) {
     stages[2] = stages[0];
     stages[2].stage = VK_SHADER_STAGE_GEOMETRY_BIT;
     stages[2].module = key.unfilled == 1 ? unfilled_lines_.get() : unfilled_points_.get();
+    stage_count = 3;
+  }
+  if (key.gbuffer) {
+    if (!gbuffer_geometry_) throw VulkanError("the G-buffer pass needs geometry shaders");
+    stages[0].module = key.clip_variant ? gbuffer_vertex_clip_.get() : gbuffer_vertex_.get();
+    stages[1].module = key.flat ? gbuffer_fragment_flat_.get() : gbuffer_fragment_smooth_.get();
+    stages[2] = stages[0];
+    stages[2].stage = VK_SHADER_STAGE_GEOMETRY_BIT;
+    stages[2].module = key.clip_variant ? gbuffer_geometry_clip_.get() : gbuffer_geometry_.get();
     stage_count = 3;
   }
 
@@ -262,7 +284,12 @@ VkPipeline RasterPipelines::create(const PipelineKey& key) {
   blend.dstAlphaBlendFactor = static_cast<VkBlendFactor>(key.blend_dst_alpha);
   blend.alphaBlendOp = static_cast<VkBlendOp>(key.blend_op_alpha);
   blend.colorWriteMask = key.color_write_mask;
-  const std::array<VkPipelineColorBlendAttachmentState, 2> blends{blend, blend};
+  std::array<VkPipelineColorBlendAttachmentState, GLPT_GBUFFER_ATTACHMENTS> blends{blend, blend};
+  if (key.gbuffer) {
+    VkPipelineColorBlendAttachmentState unblended{};
+    unblended.colorWriteMask = 0xF;
+    blends.fill(unblended);
+  }
   auto color_blend = make_info<VkPipelineColorBlendStateCreateInfo>(
       VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO);
   color_blend.logicOpEnable = key.logic_op_enable;
@@ -299,7 +326,7 @@ VkPipeline RasterPipelines::create(const PipelineKey& key) {
   auto rendering =
       make_info<VkPipelineRenderingCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO);
   rendering.colorAttachmentCount = key.attachments;
-  rendering.pColorAttachmentFormats = color_formats.data();
+  rendering.pColorAttachmentFormats = key.gbuffer ? kGBufferFormats.data() : color_formats.data();
   rendering.depthAttachmentFormat = kDepthStencilFormat;
   rendering.stencilAttachmentFormat = kDepthStencilFormat;
 

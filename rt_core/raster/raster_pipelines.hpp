@@ -44,6 +44,9 @@ class RasterPipelines {
   vk::ShaderModule vertex_, vertex_clip_, fragment_smooth_, fragment_flat_;
   vk::ShaderModule fragment_pixels_, fragment_pixels_depth_;
   vk::ShaderModule unfilled_lines_, unfilled_points_;  // null without geometry shaders
+  // Path-traced mode's G-buffer pass (null without geometry shaders).
+  vk::ShaderModule gbuffer_vertex_, gbuffer_vertex_clip_, gbuffer_geometry_, gbuffer_geometry_clip_;
+  vk::ShaderModule gbuffer_fragment_smooth_, gbuffer_fragment_flat_;
   VkShaderStageFlags push_stages_ = 0;
   vk::PipelineCache cache_;
   std::string cache_path_;

@@ -93,6 +93,7 @@ struct RasterRenderer::Recording {
   DynamicDrawState dynamic;
   VkViewport viewport{};
   VkRect2D scissor{};
+  const GBufferTargets* gbuffer = nullptr;  // path-traced mode's G-buffer pass
 };
 
 }  // namespace glpt::rt

@@ -82,7 +82,7 @@ void RasterRenderer::ensure_buffers(const rec::DrawableConfig& drawable) {
 
 void RasterRenderer::execute(const rec::FrameRecord& record, const rec::DrawableConfig& drawable,
                              FrameStats& stats, const std::vector<size_t>* commands,
-                             const FrameEnd* end) {
+                             const FrameEnd* end, const GBufferTargets* gbuffer) {
   const Stopwatch timer;
   ++frame_;
   ensure_buffers(drawable);
@@ -115,6 +115,7 @@ void RasterRenderer::execute(const rec::FrameRecord& record, const rec::Drawable
   Recording r;
   r.record = &record;
   r.stats = &stats;
+  r.gbuffer = gbuffer;
   r.geometry.resize(record.commands.size());
   r.clear_state.assign(record.commands.size(), 0);
   r.pixels.resize(record.commands.size());
@@ -174,7 +175,11 @@ void RasterRenderer::execute(const rec::FrameRecord& record, const rec::Drawable
     indices.clear();
     const rec::PrimitiveClass cls = rec::primitive_class(v.mode);
     auto ok = [&](uint32_t vertex) { return finite(v.position[vertex]); };
-    if (cls == rec::PrimitiveClass::kLines && v.mode != GL_LINES) {
+    const rec::StateSnapshot& state = record.states[draw->state];
+    // Strips stay strips (one stipple pattern along each) unless Mesa draws them segment by
+    // segment (display lists).
+    if (cls == rec::PrimitiveClass::kLines && v.mode != GL_LINES &&
+        !rec::mesa_draws_strips_as_lines(v)) {
       g.topology = RasterTopology::kLineStrip;
       for (const rec::PrimitiveRange& range : v.primitives) {
         if (range.count < 2) continue;
@@ -194,7 +199,9 @@ void RasterRenderer::execute(const rec::FrameRecord& record, const rec::Drawable
       }
     } else {
       decomposed_.clear();
-      rec::decompose(v, decomposed_);
+      // Mesa's exact triangles and vertex order (decompose.hpp): they decide interpolation and
+      // edge ties.
+      rec::decompose(v, rec::assembly_state(state, v), decomposed_);
       if (cls == rec::PrimitiveClass::kPoints) {
         g.topology = RasterTopology::kPoints;
         for (uint32_t p : decomposed_.points)
@@ -212,7 +219,7 @@ void RasterRenderer::execute(const rec::FrameRecord& record, const rec::Drawable
           edge_masks.push_back(t.boundary_edges);
         }
         // The geometry shader of unfilled polygons reads each triangle's boundary edges.
-        const rec::PrimitiveState& p = record.states[draw->state].raster->primitive;
+        const rec::PrimitiveState& p = state.raster->primitive;
         if (p.polygon_mode_front != GL_FILL || p.polygon_mode_back != GL_FILL) {
           edge_masks.resize((edge_masks.size() + 3) & ~size_t{3}, 0);
           g.edge_offset = arena.add(edge_masks.data(), edge_masks.size());
@@ -259,13 +266,29 @@ void RasterRenderer::execute(const rec::FrameRecord& record, const rec::Drawable
       r.bound_pipeline = VK_NULL_HANDLE;
       r.descriptors_pushed = false;
       r.dynamic_valid = false;
+      if (gbuffer && position == 0) {
+        // Nothing is traced where no traced draw lands: the SURFACE attachment starts at 0.
+        const VkClearColorValue zero{};
+        const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+        vkCmdClearColorImage(cmd, gbuffer->images[GLPT_GBUFFER_SURFACE], VK_IMAGE_LAYOUT_GENERAL,
+                             &zero, 1, &range);
+        auto barrier = make_info<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
+        barrier.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+        barrier.dstAccessMask =
+            VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+        vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                             VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, 0, 1, &barrier, 0,
+                             nullptr, 0, nullptr);
+      }
       for (; position < commands->size(); ++position) {
         const size_t i = (*commands)[position];
         const rec::Command& command = record.commands[i];
         if (const auto* clear = std::get_if<rec::Clear>(&command)) {
           record_clear(r, *clear, r.clear_state[i]);
         } else if (const auto* draw = std::get_if<rec::Draw>(&command)) {
-          record_draw(r, *draw, r.geometry[i]);
+          record_draw(r, *draw, r.geometry[i],
+                      gbuffer && gbuffer->traced && i < gbuffer->traced->size() &&
+                          (*gbuffer->traced)[i] != 0);
         } else if (const auto* accum = std::get_if<rec::Accum>(&command)) {
           if (accumulation_touches_color(*accum)) break;
           execute_accum(record, *accum);
@@ -305,18 +328,22 @@ void RasterRenderer::begin_rendering(Recording& r, ColorTargets targets) {
     targets = drawable_.double_buffered ? ColorTargets::kBack : ColorTargets::kFront;
   if (r.rendering && r.targets == targets) return;
   if (r.rendering) vkCmdEndRendering(r.cmd);
-  std::array<VkRenderingAttachmentInfo, 2> colors{};
+  std::array<VkRenderingAttachmentInfo, GLPT_GBUFFER_ATTACHMENTS> colors{};
   uint32_t count = 0;
-  auto add_color = [&](const GpuImage& image) {
+  auto add_color = [&](VkImageView view) {
     VkRenderingAttachmentInfo& a = colors[count++];
     a = make_info<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
-    a.imageView = image.view();
+    a.imageView = view;
     a.imageLayout = VK_IMAGE_LAYOUT_GENERAL;
     a.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
     a.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
   };
-  if (targets == ColorTargets::kFront || targets == ColorTargets::kFrontAndBack) add_color(front_);
-  if (targets == ColorTargets::kBack || targets == ColorTargets::kFrontAndBack) add_color(back_);
+  if (targets == ColorTargets::kFront || targets == ColorTargets::kFrontAndBack)
+    add_color(front_.view());
+  if (targets == ColorTargets::kBack || targets == ColorTargets::kFrontAndBack)
+    add_color(back_.view());
+  if (targets == ColorTargets::kGBuffer)
+    for (VkImageView view : r.gbuffer->views) add_color(view);
   auto depth = make_info<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
   depth.imageView = depth_stencil_.view();
   depth.imageLayout = VK_IMAGE_LAYOUT_GENERAL;
@@ -489,6 +516,7 @@ void RasterRenderer::record_clear(Recording& r, const rec::Clear& clear, uint32_
     }
     const VkClearRect clear_rect{rect, 0, 1};
     vkCmdClearAttachments(r.cmd, n, attachments.data(), 1, &clear_rect);
+    if (color && r.gbuffer) clear_gbuffer_surface(r, rect);
     return;
   }
   PipelineKey key;
@@ -529,16 +557,27 @@ void RasterRenderer::record_clear(Recording& r, const rec::Clear& clear, uint32_
                           nullptr, g.strides.data());
   vkCmdBindIndexBuffer(r.cmd, vertices_.handle(), g.index_offset, VK_INDEX_TYPE_UINT32);
   vkCmdDrawIndexed(r.cmd, g.index_count, 1, 0, 0, 0);
+  if (color && r.gbuffer) clear_gbuffer_surface(r, rect);
 }
 
-void RasterRenderer::record_draw(Recording& r, const rec::Draw& draw, const DrawGeometry& g) {
+void RasterRenderer::record_draw(Recording& r, const rec::Draw& draw, const DrawGeometry& g,
+                                 bool to_gbuffer) {
   if (g.index_count == 0) return;
   ++r.stats->draws;
-  record_draw_pass(r, draw, g, VK_CULL_MODE_NONE);
+  record_draw_pass(r, draw, g, VK_CULL_MODE_NONE, to_gbuffer);
+}
+
+void RasterRenderer::clear_gbuffer_surface(Recording& r, const VkRect2D& rect) {
+  begin_rendering(r, ColorTargets::kGBuffer);
+  VkClearAttachment attachment{};
+  attachment.aspectMask = VK_IMAGE_ASPECT_COLOR_BIT;
+  attachment.colorAttachment = GLPT_GBUFFER_SURFACE;
+  const VkClearRect clear_rect{rect, 0, 1};
+  vkCmdClearAttachments(r.cmd, 1, &attachment, 1, &clear_rect);
 }
 
 void RasterRenderer::record_draw_pass(Recording& r, const rec::Draw& draw, const DrawGeometry& g,
-                                      VkCullModeFlags face_pass) {
+                                      VkCullModeFlags face_pass, bool to_gbuffer) {
   const rec::StateSnapshot& state = r.record->states[draw.state];
   const rec::TransformState& t = *state.transform;
   DrawContext context;
@@ -547,13 +586,26 @@ void RasterRenderer::record_draw_pass(Recording& r, const rec::Draw& draw, const
   context.drawable_has_alpha = drawable_.has_alpha;
   context.stencil_bits = drawable_.stencil_bits;
   context.face_pass = face_pass;
-  const DrawSetup setup = make_draw_setup(state, context);
+  DrawSetup setup = make_draw_setup(state, context);
   if (setup.skip) return;
   if (setup.split_faces) {
     // GL draws front faces with the front polygon mode and back faces with the back one.
-    record_draw_pass(r, draw, g, VK_CULL_MODE_BACK_BIT);
-    record_draw_pass(r, draw, g, VK_CULL_MODE_FRONT_BIT);
+    record_draw_pass(r, draw, g, VK_CULL_MODE_BACK_BIT, to_gbuffer);
+    record_draw_pass(r, draw, g, VK_CULL_MODE_FRONT_BIT, to_gbuffer);
     return;
+  }
+  if (to_gbuffer) {
+    // The same pipeline with the G-buffer's shaders and attachments (written unblended).
+    context.targets = ColorTargets::kGBuffer;
+    setup.key.gbuffer = 1;
+    setup.key.attachments = GLPT_GBUFFER_ATTACHMENTS;
+    setup.key.color_write_mask = 0xF;
+    setup.key.blend = 0;
+    setup.key.blend_src_rgb = setup.key.blend_dst_rgb = 0;
+    setup.key.blend_src_alpha = setup.key.blend_dst_alpha = 0;
+    setup.key.blend_op_rgb = setup.key.blend_op_alpha = 0;
+    setup.key.logic_op_enable = 0;
+    setup.key.logic_op = VK_LOGIC_OP_COPY;
   }
   if (setup.approximated) ++r.stats->inexpressible;
   if (t.viewport[2] <= 0 || t.viewport[3] <= 0) return;  // GL draws nothing in an empty viewport
@@ -570,8 +622,10 @@ void RasterRenderer::record_draw_pass(Recording& r, const rec::Draw& draw, const
                             t.depth_near,
                             t.depth_far};
   set_dynamic_state(r, d, viewport, scissor);
+  glm::uvec2 jitter(0u);
+  if (to_gbuffer) std::memcpy(&jitter, &r.gbuffer->jitter, sizeof jitter);
   const gpu::RasterPushConstants push{
-      glm::uvec4(draw.state, static_cast<uint32_t>(g.edge_offset / 4), 0, 0)};
+      glm::uvec4(draw.state, static_cast<uint32_t>(g.edge_offset / 4), jitter)};
   vkCmdPushConstants(r.cmd, pipelines_.layout(), pipelines_.push_constant_stages(), 0, sizeof push,
                      &push);
   std::array<VkBuffer, GLPT_RASTER_ATTR_COUNT> buffers;

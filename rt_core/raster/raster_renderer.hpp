@@ -9,6 +9,7 @@
 
 #include "rt_core/frame_stats.hpp"
 #include "rt_core/raster/accumulation.hpp"
+#include "rt_core/raster/gbuffer_targets.hpp"
 #include "rt_core/raster/pipeline_key.hpp"
 #include "rt_core/raster/raster_pipelines.hpp"
 #include "rt_core/raster/texture_cache.hpp"
@@ -33,9 +34,12 @@ class RasterRenderer {
   // Applies the commands of `record` whose indices `commands` lists (all when empty) to the
   // drawable's buffers, which are (re)created when `drawable` changes. Throws VulkanError.
   // `end`: swap and/or read the front buffer in the same submission.
+  // `gbuffer` (path-traced mode): the draws it marks go into the G-buffer instead of the colour
+  // buffers (same coverage, depth and stencil); its SURFACE attachment starts cleared and every
+  // colour clear clears it too.
   void execute(const rec::FrameRecord& record, const rec::DrawableConfig& drawable,
                FrameStats& stats, const std::vector<size_t>* commands = nullptr,
-               const FrameEnd* end = nullptr);
+               const FrameEnd* end = nullptr, const GBufferTargets* gbuffer = nullptr);
 
   // Reads back a rectangle: colour as RGBA8 of GL_FRONT*/GL_BACK*, depth as [0, 1], stencil.
   // Pixels outside the drawable are zero. False before the buffers exist.
@@ -61,9 +65,11 @@ class RasterRenderer {
   struct Recording;     // state of one command-buffer recording
   void ensure_buffers(const rec::DrawableConfig& drawable);
   void record_clear(Recording& r, const rec::Clear& clear, uint32_t state_index);
-  void record_draw(Recording& r, const rec::Draw& draw, const DrawGeometry& geometry);
+  void record_draw(Recording& r, const rec::Draw& draw, const DrawGeometry& geometry,
+                   bool to_gbuffer = false);
   void record_draw_pass(Recording& r, const rec::Draw& draw, const DrawGeometry& geometry,
-                        VkCullModeFlags face_pass);
+                        VkCullModeFlags face_pass, bool to_gbuffer = false);
+  void clear_gbuffer_surface(Recording& r, const VkRect2D& rect);
   void begin_rendering(Recording& r, ColorTargets targets);
   void bind(Recording& r, const PipelineKey& key, const rec::StateSnapshot* textures_of);
   void set_dynamic_state(Recording& r, const DynamicDrawState& d, const VkViewport& viewport,

@@ -46,6 +46,24 @@ struct PrimitiveRange {
   uint32_t count = 0;
 };
 
+// How the program specified a draw's primitives. GL draws the same primitives either way, but
+// Mesa assembles them differently (rt_core/record/decompose.hpp): its immediate-mode and
+// glDrawArrays draws are non-indexed (llvmpipe splits smooth quads along the 0-2 diagonal), its
+// display lists and glDrawElements are indexed (quads always split along 1-3).
+enum class PrimitiveSource : uint8_t {
+  kImmediate,    // glBegin/glEnd executed directly, including GL_COMPILE_AND_EXECUTE's execution
+  kDisplayList,  // glBegin/glEnd replayed by glCallList(s) (Mesa compiles them to indexed draws)
+  kArrays,       // glDrawArrays, glMultiDrawArrays: one range per call
+  kElements,     // glDrawElements, glDrawRangeElements, glMultiDrawElements: indexed
+};
+
+// Bits of VertexData::per_vertex: attributes the program gave per vertex (for kImmediate and
+// kDisplayList: set inside glBegin/glEnd; for arrays: from an enabled client array). Mesa's
+// fragment shader reads such a colour as an interpolated input and a colour set only outside
+// glBegin/glEnd as a constant, which decides how llvmpipe splits flat-shaded quads.
+inline constexpr uint8_t kPerVertexColor = 1;
+inline constexpr uint8_t kPerVertexSecondaryColor = 2;
+
 // Per-vertex attributes of a draw in object space, with GL's current values as they were at
 // each glVertex / array element. Every attribute array holds either one value per vertex or a
 // single value shared by all vertices (it did not change during the draw). A texture coordinate
@@ -54,6 +72,8 @@ struct VertexData {
   // GL primitive type as given to glBegin / glDrawArrays: GL_POINTS .. GL_POLYGON. Consumers
   // decompose it as GL does (decompose.hpp): provoking vertices, edge flags, stipple resets.
   uint32_t mode = GL_TRIANGLES;
+  PrimitiveSource source = PrimitiveSource::kImmediate;
+  uint8_t per_vertex = 0;           // kPerVertex* bits
   std::vector<glm::vec4> position;  // homogeneous, as specified (w kept)
   std::vector<glm::vec3> normal;
   std::vector<glm::vec4> color;            // primary
@@ -70,9 +90,9 @@ struct VertexData {
   std::vector<PrimitiveRange> primitives;
 
   // Identity, computed once by the front end (content hashes, so equal draws in different frames
-  // have equal keys). `geometry_key` covers what decides the shape (mode, positions, indices,
-  // primitives): recolouring never changes it, so an acceleration structure is reused.
-  // `attribute_key` covers everything else.
+  // have equal keys). `geometry_key` covers what decides the shape (mode, source, per_vertex,
+  // positions, indices, primitives): recolouring never changes it, so an acceleration structure
+  // is reused. `attribute_key` covers everything else.
   uint64_t geometry_key = 0;
   uint64_t attribute_key = 0;
 

@@ -28,7 +28,15 @@ enum class TexelFormat : uint8_t {
   kDepth32f  // 4 bytes per texel: GL_DEPTH_COMPONENT textures (ARB_depth_texture, GL 1.4)
 };
 
-uint32_t texel_bytes(TexelFormat format);
+constexpr uint32_t texel_bytes(TexelFormat format) {
+  switch (format) {
+    case TexelFormat::kRgba16: return 8;
+    case TexelFormat::kRgba32f: return 16;
+    case TexelFormat::kRgba8:
+    case TexelFormat::kDepth32f: break;
+  }
+  return 4;
+}
 
 // One mipmap level of one face. GL texture borders are not stored: Mesa strips them when the
 // image is specified (its gallium drivers have no borders), and glpt does the same so both

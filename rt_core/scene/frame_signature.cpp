@@ -5,65 +5,63 @@
 namespace glpt::rt {
 namespace {
 
-class WordWriter {
- public:
-  explicit WordWriter(std::vector<uint32_t>& words) : words_(words) {}
-  void add(uint32_t value) { words_.push_back(value); }
-  void add(int32_t value) { words_.push_back(static_cast<uint32_t>(value)); }
-  void add(uint64_t value) {
-    words_.push_back(static_cast<uint32_t>(value));
-    words_.push_back(static_cast<uint32_t>(value >> 32));
-  }
-  void add(float value) {
-    uint32_t bits;
-    std::memcpy(&bits, &value, sizeof bits);
-    words_.push_back(bits);
-  }
-  template <glm::length_t N>
-  void add(const glm::vec<N, float>& v) {
-    for (glm::length_t i = 0; i < N; ++i) add(v[i]);
-  }
-  void add(const glm::mat4& m) {
-    for (int column = 0; column < 4; ++column) add(m[column]);
-  }
+template <typename Block>
+bool same_block(const std::shared_ptr<const Block>& a, const std::shared_ptr<const Block>& b) {
+  return a == b || (a && b && *a == *b);
+}
 
- private:
-  std::vector<uint32_t>& words_;
-};
+const rec::StateSnapshot* state_of(const rec::FrameRecord& record, const rec::Command& command) {
+  const rec::StateId id = std::visit(
+      [](const auto& c) -> rec::StateId {
+        if constexpr (requires { c.state; })
+          return c.state;
+        else
+          return ~rec::StateId{0};
+      },
+      command);
+  return id < record.states.size() ? &record.states[id] : nullptr;
+}
 
 }  // namespace
 
-FrameSignature::FrameSignature(const TraceScene& frame) : valid_(true) {
-  words_.reserve(64 + frame.lights.size() * 24 + frame.instances.size() * 18);
-  WordWriter out(words_);
-  out.add(frame.width);
-  out.add(frame.height);
-  out.add(frame.viewport.x);
-  out.add(frame.viewport.y);
-  out.add(frame.viewport.width);
-  out.add(frame.viewport.height);
-  out.add(frame.projection);
-  out.add(frame.clear_color);
-  out.add(frame.global_ambient);
-  out.add(static_cast<uint32_t>(frame.lights.size()));
-  for (const Light& light : frame.lights) {
-    out.add(light.position);
-    out.add(light.ambient);
-    out.add(light.diffuse);
-    out.add(light.specular);
-    out.add(light.spot_direction);
-    out.add(light.spot_exponent);
-    out.add(light.spot_cutoff);
-    out.add(light.constant_attenuation);
-    out.add(light.linear_attenuation);
-    out.add(light.quadratic_attenuation);
+FrameSignature::FrameSignature(const rec::FrameRecord& record, std::span<const size_t> commands,
+                               const rec::DrawableConfig& drawable)
+    : valid_(true), drawable_(drawable) {
+  entries_.reserve(commands.size());
+  for (size_t i : commands) {
+    const rec::Command& command = record.commands[i];
+    Entry& e = entries_.emplace_back();
+    e.kind = static_cast<uint32_t>(command.index());
+    if (const rec::StateSnapshot* state = state_of(record, command)) e.state = *state;
+    if (const auto* draw = std::get_if<rec::Draw>(&command); draw && draw->vertices) {
+      e.geometry_key = draw->vertices->geometry_key;
+      e.attribute_key = draw->vertices->attribute_key;
+    } else if (const auto* clear = std::get_if<rec::Clear>(&command)) {
+      e.clear[0] = clear->mask;
+      std::memcpy(&e.clear[1], &clear->color, sizeof clear->color);
+      std::memcpy(&e.clear[5], &clear->depth, sizeof clear->depth);
+      e.clear[6] = static_cast<uint32_t>(clear->stencil);
+    }
   }
-  out.add(static_cast<uint32_t>(frame.instances.size()));
-  for (const Instance& instance : frame.instances) {
-    out.add(instance.geometry ? instance.geometry->content_hash : uint64_t{0});
-    out.add(static_cast<uint32_t>(instance.geometry ? instance.geometry->triangle_count() : 0));
-    out.add(instance.modelview);
-  }
+}
+
+bool FrameSignature::same(const Entry& a, const Entry& b) {
+  return a.kind == b.kind && a.geometry_key == b.geometry_key &&
+         a.attribute_key == b.attribute_key && std::memcmp(a.clear, b.clear, sizeof a.clear) == 0 &&
+         same_block(a.state.transform, b.state.transform) &&
+         same_block(a.state.lighting, b.state.lighting) &&
+         same_block(a.state.texturing, b.state.texturing) &&
+         same_block(a.state.raster, b.state.raster) &&
+         same_block(a.state.pixel_transfer, b.state.pixel_transfer);
+}
+
+bool FrameSignature::operator==(const FrameSignature& other) const {
+  if (!valid_ || !other.valid_ || drawable_ != other.drawable_ ||
+      entries_.size() != other.entries_.size())
+    return false;
+  for (size_t i = 0; i < entries_.size(); ++i)
+    if (!same(entries_[i], other.entries_[i])) return false;
+  return true;
 }
 
 }  // namespace glpt::rt

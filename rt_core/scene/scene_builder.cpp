@@ -1,15 +1,19 @@
 #include "rt_core/scene/scene_builder.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <map>
 
 #include "common/content_hash.hpp"
+#include "rt_core/raster/pipeline_key.hpp"
 #include "rt_core/record/decompose.hpp"
+#include "rt_core/scene/light_setup.hpp"
 
 namespace glpt::rt {
 namespace {
 
+// A camera: where a draw lands on screen. Ordered by raw bits (exact comparison).
 struct Camera {
   glm::mat4 projection;
   std::array<int32_t, 4> viewport;
@@ -21,6 +25,40 @@ struct Camera {
 
 Camera camera_of(const rec::StateSnapshot& s) {
   return {s.transform->projection, s.transform->viewport};
+}
+
+bool same_camera(const Camera& a, const Camera& b) { return !(a < b) && !(b < a); }
+
+// GL's perspective projections have a last row other than (0, 0, 0, 1).
+bool is_perspective(const glm::mat4& projection) {
+  return projection[0][3] != 0.0f || projection[1][3] != 0.0f || projection[2][3] != 0.0f ||
+         projection[3][3] != 1.0f;
+}
+
+// A modelview whose bottom row is not (0, 0, 0, 1) (planar shadow matrices): an affine TLAS
+// instance transform cannot hold it.
+bool is_projective(const glm::mat4& modelview) {
+  return modelview[0][3] != 0.0f || modelview[1][3] != 0.0f || modelview[2][3] != 0.0f ||
+         modelview[3][3] != 1.0f;
+}
+
+// Everything about a draw that makes it traceable except its camera.
+DrawClass classify_ignoring_camera(const rec::Draw& draw, const rec::StateSnapshot& state,
+                                   const rec::DrawableConfig& drawable) {
+  if (!draw.vertices ||
+      rec::primitive_class(draw.vertices->mode) != rec::PrimitiveClass::kTriangles)
+    return DrawClass::kNotTriangles;
+  const rec::PrimitiveState& primitive = state.raster->primitive;
+  if (primitive.polygon_mode_front != GL_FILL || primitive.polygon_mode_back != GL_FILL)
+    return DrawClass::kUnfilled;
+  const rec::FragmentOpsState& ops = state.raster->ops;
+  if (ops.blend || ops.color_logic_op) return DrawClass::kBlended;
+  const bool all_channels =
+      ops.color_write[0] && ops.color_write[1] && ops.color_write[2] && ops.color_write[3];
+  if (!all_channels ||
+      resolve_draw_buffer(ops.draw_buffer, drawable.double_buffered) == ColorTargets::kNone)
+    return DrawClass::kMaskedColor;
+  return DrawClass::kTraced;
 }
 
 ColorSource color_source_of(uint32_t mode) {
@@ -70,6 +108,17 @@ Light light_of(const rec::Light& l) {
   return t;
 }
 
+// Two lighting states light surfaces the same way (ignoring materials, which are per triangle):
+// a batch of draws shares the lights of its instance.
+bool same_light_set(const rec::LightingState& a, const rec::LightingState& b) {
+  if (&a == &b) return true;
+  if (a.enabled != b.enabled || a.light_mask != b.light_mask || a.model_ambient != b.model_ambient)
+    return false;
+  for (int l = 0; l < rec::kMaxLights; ++l)
+    if ((a.light_mask & (1u << l)) && !(a.lights[l] == b.lights[l])) return false;
+  return true;
+}
+
 bool finite(const glm::vec3& v) {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
@@ -81,18 +130,28 @@ uint32_t intern(std::vector<Material>& materials, const Material& m) {
   return static_cast<uint32_t>(materials.size() - 1);
 }
 
-// Consecutive traced draws with one modelview become one Geometry (one BLAS).
+// Consecutive traced draws with one modelview and one light set become one Geometry (one BLAS).
+// Draws under a projective modelview are transformed to eye space here and batched under the
+// identity.
 class Batcher {
  public:
   explicit Batcher(std::vector<Instance>& instances) : instances_(instances) {}
 
-  void add(const rec::Draw& draw, const rec::StateSnapshot& state, rec::Decomposed& scratch) {
-    const glm::mat4& modelview = state.transform->modelview;
-    if (open_ && std::memcmp(&modelview, &open_modelview_, sizeof modelview) != 0) close();
+  void add(const rec::Draw& draw, const rec::StateSnapshot& state, uint32_t state_index,
+           rec::Decomposed& scratch) {
+    const rec::TransformState& transform = *state.transform;
+    const bool projective = is_projective(transform.modelview);
+    const glm::mat4 modelview = projective ? glm::mat4(1.0f) : transform.modelview;
+    if (open_ && (std::memcmp(&modelview, &open_modelview_, sizeof modelview) != 0 ||
+                  !same_light_set(*state.lighting, *open_lighting_)))
+      close();
     if (!open_) {
       open_ = std::make_unique<Geometry>();
       open_modelview_ = modelview;
-      hash_ = ContentHash();
+      open_lighting_ = state.lighting;
+      open_state_ = state_index;
+      shape_ = ContentHash();
+      shading_ = ContentHash();
     }
     const rec::VertexData& v = *draw.vertices;
     scratch.clear();
@@ -102,6 +161,8 @@ class Batcher {
     const uint32_t shared_material =
         v.material.empty() ? intern(open_->materials, material_of(lighting, lighting.material[0]))
                            : 0;
+    // GL's normal transform (the inverse transpose of the modelview) for eye-space normals.
+    const glm::mat3 normal_matrix = glm::transpose(glm::mat3(transform.modelview_inverse));
     Geometry& g = *open_;
     const glm::vec3 kDefaultNormal(0, 0, 1);
     const glm::vec4 kDefaultColor(1.0f);
@@ -109,20 +170,19 @@ class Batcher {
       glm::vec3 p[3];
       bool ok = true;
       for (int k = 0; k < 3; ++k) {
-        const glm::vec4 h = v.position[t.v[k]];
+        glm::vec4 h = v.position[t.v[k]];
+        if (projective) h = transform.modelview * h;
         // A vertex at infinity (w <= 0) or a non-finite one cannot be traced: drop the triangle.
         p[k] = h.w == 1.0f ? glm::vec3(h) : glm::vec3(h) / h.w;
         ok = ok && h.w > 0.0f && finite(p[k]);
       }
-      if (!ok) {
-        ++dropped_;
-        continue;
-      }
+      if (!ok) continue;
       const uint32_t provoking = t.v[2];
       for (int k = 0; k < 3; ++k) {
         const uint32_t src = flat ? provoking : t.v[k];
+        const glm::vec3 normal = rec::attribute_at(v.normal, src, kDefaultNormal);
         g.positions.push_back(p[k]);
-        g.normals.push_back(rec::attribute_at(v.normal, src, kDefaultNormal));
+        g.normals.push_back(projective ? normal_matrix * normal : normal);
         g.colors.push_back(rec::attribute_at(v.color, src, kDefaultColor));
       }
       g.material_ids.push_back(
@@ -130,106 +190,215 @@ class Batcher {
               ? shared_material
               : intern(g.materials, material_of(lighting, v.material[provoking][0])));
     }
-    hash_.add_bytes(&v.geometry_key, sizeof v.geometry_key);
-    hash_.add_bytes(&v.attribute_key, sizeof v.attribute_key);
-    hash_.add_bytes(&flat, sizeof flat);
+    shape_.add_bytes(&v.geometry_key, sizeof v.geometry_key);
+    shading_.add_bytes(&v.attribute_key, sizeof v.attribute_key);
+    shading_.add_bytes(&flat, sizeof flat);
+    if (projective) {
+      shape_.add_bytes(&transform.modelview, sizeof transform.modelview);
+      shading_.add_bytes(&transform.modelview, sizeof transform.modelview);
+    }
   }
 
   void close() {
     if (!open_) return;
     if (!open_->positions.empty()) {
       for (const Material& m : open_->materials) {
-        hash_.add_bytes(&m.ambient, sizeof(glm::vec4) * 4);
-        hash_.add_bytes(&m.shininess, sizeof m.shininess);
+        shading_.add_bytes(&m.ambient, sizeof(glm::vec4) * 4);
+        shading_.add_bytes(&m.shininess, sizeof m.shininess);
         const uint32_t flags = (m.lit ? 1u : 0u) | (static_cast<uint32_t>(m.color_source) << 1);
-        hash_.add_bytes(&flags, sizeof flags);
+        shading_.add_bytes(&flags, sizeof flags);
       }
-      open_->content_hash = hash_.value();
-      instances_.push_back({std::shared_ptr<const Geometry>(std::move(open_)), open_modelview_});
+      open_->shape_hash = shape_.value();
+      open_->shading_hash = shading_.value();
+      instances_.push_back(
+          {std::shared_ptr<const Geometry>(std::move(open_)), open_modelview_, open_state_});
     }
     open_.reset();
+    open_lighting_.reset();
   }
 
  private:
   std::vector<Instance>& instances_;
   std::unique_ptr<Geometry> open_;
   glm::mat4 open_modelview_{1.0f};
-  ContentHash hash_;
-  uint64_t dropped_ = 0;
+  std::shared_ptr<const rec::LightingState> open_lighting_;
+  uint32_t open_state_ = 0;
+  ContentHash shape_, shading_;
 };
+
+uint32_t fog_mode_of(const rec::FogState& fog) {
+  if (!fog.enabled) return 0;
+  return fog.mode == GL_LINEAR ? 1u : fog.mode == GL_EXP2 ? 3u : 2u;
+}
+
+uint32_t targets_of(const rec::FragmentOpsState& ops, const rec::DrawableConfig& drawable) {
+  switch (resolve_draw_buffer(ops.draw_buffer, drawable.double_buffered)) {
+    case ColorTargets::kFront:
+      return 1;
+    case ColorTargets::kBack:
+      return 2;
+    case ColorTargets::kFrontAndBack:
+      return 3;
+    default:
+      return 0;
+  }
+}
+
+// The index of `light` in `lights`, appended if new.
+uint32_t light_index(std::vector<Light>& lights, const Light& light) {
+  for (size_t i = 0; i < lights.size(); ++i)
+    if (lights[i] == light) return static_cast<uint32_t>(i);
+  lights.push_back(light);
+  return static_cast<uint32_t>(lights.size() - 1);
+}
 
 }  // namespace
 
-void build_trace_scene(const rec::FrameRecord& record, uint32_t width, uint32_t height,
-                       SceneBuild& out) {
-  out.scene = TraceScene();
-  out.traced.clear();
-  out.overlay.clear();
-  TraceScene& scene = out.scene;
-  scene.width = width;
-  scene.height = height;
+glm::vec4 viewer_of_projection(const glm::mat4& projection) {
+  // The centre of projection is the eye-space point every clip x, y and w vanish at: the
+  // generalized cross product of the projection's rows 0, 1 and 3.
+  auto row = [&](int r) {
+    return glm::dvec4(projection[0][r], projection[1][r], projection[2][r], projection[3][r]);
+  };
+  const glm::dvec4 a = row(0), b = row(1), c = row(3);
+  auto det3 = [](glm::dvec3 x, glm::dvec3 y, glm::dvec3 z) {
+    return glm::dot(x, glm::cross(y, z));
+  };
+  auto drop = [](const glm::dvec4& v, int i) {
+    glm::dvec3 out;
+    for (int k = 0, j = 0; k < 4; ++k)
+      if (k != i) out[j++] = v[k];
+    return out;
+  };
+  glm::dvec4 centre;
+  for (int i = 0; i < 4; ++i)
+    centre[i] = ((i % 2) ? -1.0 : 1.0) * det3(drop(a, i), drop(b, i), drop(c, i));
+  const double length = glm::length(glm::dvec3(centre));
+  if (!std::isfinite(length) || !std::isfinite(centre.w) || (length == 0.0 && centre.w == 0.0))
+    return glm::vec4(0.0f, 0.0f, 1.0f, 0.0f);  // degenerate: GL's infinite viewer
+  if (std::abs(centre.w) > 1e-6 * length) return glm::vec4(glm::dvec3(centre) / centre.w, 1.0);
+  glm::dvec3 direction = glm::dvec3(centre) / length;
+  if (direction.z < 0.0 || (direction.z == 0.0 && direction.y < 0.0)) direction = -direction;
+  return glm::vec4(glm::vec3(direction), 0.0f);
+}
 
-  // The main camera: the projection and viewport under which the most triangles are drawn.
+MainCamera find_main_camera(const rec::FrameRecord& record, const rec::DrawableConfig& drawable) {
   std::map<Camera, uint64_t> triangles_per_camera;
   for (const rec::Command& command : record.commands) {
     const auto* draw = std::get_if<rec::Draw>(&command);
-    if (draw == nullptr ||
-        rec::primitive_class(draw->vertices->mode) != rec::PrimitiveClass::kTriangles)
-      continue;
-    triangles_per_camera[camera_of(record.states[draw->state])] += draw->vertices->vertex_count();
+    if (draw == nullptr) continue;
+    const rec::StateSnapshot& state = record.states[draw->state];
+    if (classify_ignoring_camera(*draw, state, drawable) != DrawClass::kTraced) continue;
+    triangles_per_camera[camera_of(state)] += draw->vertices->vertex_count();
   }
-  const Camera* main_camera = nullptr;
+  MainCamera main;
   uint64_t most = 0;
+  bool perspective = false;
   for (const auto& [camera, count] : triangles_per_camera) {
-    if (count > most) {
+    const bool candidate_perspective = is_perspective(camera.projection);
+    if (perspective && !candidate_perspective) continue;
+    if ((candidate_perspective && !perspective) || count > most) {
       most = count;
-      main_camera = &camera;
+      perspective = candidate_perspective;
+      main.projection = camera.projection;
+      main.viewport = camera.viewport;
+      main.valid = true;
     }
   }
-  if (main_camera != nullptr) {
-    scene.projection = main_camera->projection;
-    scene.viewport = {main_camera->viewport[0], main_camera->viewport[1],
-                      static_cast<uint32_t>(std::max(main_camera->viewport[2], 0)),
-                      static_cast<uint32_t>(std::max(main_camera->viewport[3], 0))};
-  } else {
-    scene.viewport = {0, 0, width, height};
-  }
+  return main;
+}
 
+DrawClass classify_draw(const rec::Draw& draw, const rec::StateSnapshot& state,
+                        const MainCamera& camera, const rec::DrawableConfig& drawable) {
+  const DrawClass cls = classify_ignoring_camera(draw, state, drawable);
+  if (cls != DrawClass::kTraced) return cls;
+  if (!camera.valid || !same_camera(camera_of(state), {camera.projection, camera.viewport}))
+    return DrawClass::kOtherCamera;
+  return DrawClass::kTraced;
+}
+
+void build_trace_scene(const rec::FrameRecord& record, const rec::DrawableConfig& drawable,
+                       SceneBuild& out) {
+  out.scene = TraceScene();
+  out.classes.assign(record.commands.size(), DrawClass::kNotTriangles);
+  out.traced.assign(record.commands.size(), 0);
+  out.gbuffer_pass.clear();
+  out.after_trace.clear();
+  out.any_traced = false;
+  TraceScene& scene = out.scene;
+  scene.width = drawable.width;
+  scene.height = drawable.height;
+  scene.states.resize(record.states.size());
+
+  const MainCamera camera = find_main_camera(record, drawable);
   Batcher batcher(scene.instances);
   rec::Decomposed scratch;
-  bool lights_taken = false;
+  std::vector<uint8_t> state_used(record.states.size(), 0);
   for (size_t i = 0; i < record.commands.size(); ++i) {
     const rec::Command& command = record.commands[i];
-    if (const auto* clear = std::get_if<rec::Clear>(&command)) {
-      if (clear->mask & GL_COLOR_BUFFER_BIT) scene.clear_color = clear->color;
-      continue;
-    }
     const auto* draw = std::get_if<rec::Draw>(&command);
-    if (draw == nullptr) {
-      out.overlay.push_back(i);
+    if (draw != nullptr) {
+      const rec::StateSnapshot& state = record.states[draw->state];
+      out.classes[i] = classify_draw(*draw, state, camera, drawable);
+    }
+    if (draw == nullptr || out.classes[i] != DrawClass::kTraced) {
+      // Clears act on the G-buffer in its pass; everything else before the first traced draw is
+      // drawn first, the rest after the trace.
+      if (!out.any_traced || std::holds_alternative<rec::Clear>(command))
+        out.gbuffer_pass.push_back(i);
+      else
+        out.after_trace.push_back(i);
       continue;
     }
     const rec::StateSnapshot& state = record.states[draw->state];
-    const Camera camera = camera_of(state);
-    const bool traced =
-        main_camera != nullptr &&
-        rec::primitive_class(draw->vertices->mode) == rec::PrimitiveClass::kTriangles &&
-        !(camera < *main_camera) && !(*main_camera < camera);
-    if (!traced) {
-      out.overlay.push_back(i);
-      continue;
-    }
-    out.traced.push_back(i);
-    batcher.add(*draw, state, scratch);
-    const rec::LightingState& lighting = *state.lighting;
-    if (!lights_taken && lighting.enabled) {
-      lights_taken = true;
-      scene.global_ambient = lighting.model_ambient;
-      for (int l = 0; l < rec::kMaxLights; ++l)
-        if (lighting.light_mask & (1u << l)) scene.lights.push_back(light_of(lighting.lights[l]));
-    }
+    if (!out.any_traced) scene.default_targets = targets_of(state.raster->ops, drawable);
+    out.any_traced = true;
+    out.traced[i] = 1;
+    out.gbuffer_pass.push_back(i);
+    state_used[draw->state] = 1;
+    batcher.add(*draw, state, draw->state, scratch);
   }
   batcher.close();
+
+  // Per-state lighting. Lights are shared between states that have the same light (each light
+  // gets one shadow bit for lamp markers, light_setup.hpp). Unlit states have no GL lights; where
+  // bounce rays hit their surfaces these are lit by the first lit state's lights.
+  int first_lit = -1;
+  bool any_light = false;
+  for (size_t s = 0; s < record.states.size(); ++s) {
+    if (!state_used[s]) continue;
+    const rec::StateSnapshot& state = record.states[s];
+    const rec::LightingState& lighting = *state.lighting;
+    TraceState& t = scene.states[s];
+    t.viewer = viewer_of_projection(state.transform->projection);
+    t.targets = targets_of(state.raster->ops, drawable);
+    const rec::FogState& fog = state.raster->fog;
+    t.fog_mode = fog_mode_of(fog);
+    t.fog_color = fog.color;
+    const float range = fog.end - fog.start;
+    t.fog_params = glm::vec4(fog.density, fog.start, fog.end, range != 0.0f ? 1.0f / range : 1.0f);
+    if (!lighting.enabled) continue;
+    if (first_lit < 0) first_lit = static_cast<int>(s);
+    t.global_ambient = lighting.model_ambient;
+    for (int l = 0; l < rec::kMaxLights; ++l) {
+      if (!(lighting.light_mask & (1u << l))) continue;
+      t.lights.push_back(light_index(scene.lights, light_of(lighting.lights[l])));
+      any_light = true;
+    }
+  }
+  // A lit scene without any enabled light gets the documented default light (light_setup.hpp).
+  if (first_lit >= 0 && !any_light) {
+    scene.lights.push_back(default_light());
+    for (size_t s = 0; s < record.states.size(); ++s)
+      if (state_used[s] && record.states[s].lighting->enabled) scene.states[s].lights = {0};
+  }
+  if (first_lit >= 0) {
+    for (size_t s = 0; s < record.states.size(); ++s) {
+      if (!state_used[s] || record.states[s].lighting->enabled) continue;
+      scene.states[s].lights = scene.states[first_lit].lights;
+      scene.states[s].global_ambient = scene.states[first_lit].global_ambient;
+    }
+  }
 }
 
 }  // namespace glpt::rt

@@ -1,14 +1,31 @@
-// Derives the path tracer's scene (TraceScene) from a frame record: which draws are traced, their
-// triangles (decomposed as GL assembles them), materials resolved from the state snapshots, the
-// camera and the lights.
+// Path-traced mode's view of a frame record: which draws are traced (classify_draw), the order in
+// which the record's commands run around the trace (the passes), and the tracer's scene
+// (TraceScene: triangles for secondary rays, lights and per-state data).
 //
-// Interim policy, until draw classification lands: the "main camera" is the projection and
-// viewport under which the most triangles are drawn; triangle draws under it are traced; the
-// lights are those of the first lit traced draw. Everything else (points, lines, draws under other
-// projections) is left to the raster pipelines (`overlay` lists them, in record order).
+// Classification, per draw, until the classification issue lands:
+//   traced        triangles (filled on both faces) under the main camera, not blended, no logic
+//                 op, writing all colour channels to a colour buffer. Drawn into the G-buffer by
+//                 the raster pipelines and lit by the trace pass.
+//   every other   points, lines, unfilled polygons, draws under another projection or viewport
+//                 (HUD, 2-D overlays, a second view), blended or logic-op draws (they read the
+//                 colour under them), draws with colour writes masked: raster mode draws them.
+// The main camera is the projection and viewport under which the most triangles of otherwise
+// traceable draws are drawn, preferring perspective projections (the 3-D view) over parallel
+// ones (a HUD of many quads must not take the camera from a small 3-D scene).
+//
+// Passes, in order:
+//   1. G-buffer pass (`gbuffer_pass`): the record's commands up to the first traced draw as raster
+//      mode draws them (a background drawn first stays behind the scene), then the traced draws
+//      into the G-buffer and the clears among them, in record order. It shares the depth/stencil
+//      buffer with raster mode, so coverage, depth test, culling, clip planes, polygon offset and
+//      projective matrices are GL's.
+//   2. Trace pass: lights the G-buffer's pixels into the colour buffers.
+//   3. `after_trace`: the remaining commands that are not traced, in record order, by raster mode
+//      over the traced image, depth-tested against the G-buffer's depth.
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "rt_core/record/frame_record.hpp"
@@ -16,13 +33,41 @@
 
 namespace glpt::rt {
 
-struct SceneBuild {
-  TraceScene scene;
-  std::vector<size_t> traced;   // indices of the traced Draw commands
-  std::vector<size_t> overlay;  // indices of commands the tracer does not take
+enum class DrawClass : uint8_t {
+  kTraced,
+  kNotTriangles,  // points, lines
+  kUnfilled,      // GL_LINE / GL_POINT polygon mode
+  kBlended,       // blending or a logic op
+  kMaskedColor,   // some colour channel masked, or no colour buffer drawn to
+  kOtherCamera,   // another projection or viewport than the main camera's
 };
 
-void build_trace_scene(const rec::FrameRecord& record, uint32_t width, uint32_t height,
+// The class of one draw, given the main camera (`main_projection`, `main_viewport`) and the
+// drawable. Draws under the main camera and traceable otherwise are kTraced.
+struct MainCamera {
+  glm::mat4 projection{1.0f};
+  std::array<int32_t, 4> viewport{0, 0, 0, 0};
+  bool valid = false;
+};
+MainCamera find_main_camera(const rec::FrameRecord& record, const rec::DrawableConfig& drawable);
+DrawClass classify_draw(const rec::Draw& draw, const rec::StateSnapshot& state,
+                        const MainCamera& camera, const rec::DrawableConfig& drawable);
+
+struct SceneBuild {
+  TraceScene scene;
+  std::vector<DrawClass> classes;    // per command (kNotTriangles for non-draws)
+  std::vector<uint8_t> traced;       // per command: 1 for traced draws
+  std::vector<size_t> gbuffer_pass;  // commands of pass 1, in record order
+  std::vector<size_t> after_trace;   // commands of pass 3, in record order
+  bool any_traced = false;
+};
+
+void build_trace_scene(const rec::FrameRecord& record, const rec::DrawableConfig& drawable,
                        SceneBuild& out);
+
+// The eye-space viewer of a projection: its centre of projection as a point (w = 1) for
+// perspective projections, a unit direction towards the viewer (w = 0) for parallel ones, where
+// the sign is GL's lighting convention (+Z, the infinite viewer).
+glm::vec4 viewer_of_projection(const glm::mat4& projection);
 
 }  // namespace glpt::rt

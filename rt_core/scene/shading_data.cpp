@@ -30,8 +30,18 @@ size_t packed_material_count(const Geometry& geometry) {
   return geometry.materials.empty() ? 1 : geometry.materials.size();
 }
 
-void pack_geometry(const Geometry& geometry, std::span<const uint32_t> triangle_order,
-                   std::span<gpu::ShadingVertex> vertices, std::span<gpu::GpuMaterial> materials) {
+void pack_positions(const Geometry& geometry, std::span<const uint32_t> triangle_order,
+                    std::span<gpu::GpuPosition> positions) {
+  for (size_t sorted = 0; sorted < triangle_order.size(); ++sorted) {
+    const size_t triangle = triangle_order[sorted];
+    for (size_t corner = 0; corner < 3; ++corner)
+      positions[3 * sorted + corner].position =
+          glm::vec4(geometry.positions[3 * triangle + corner], 0.0f);
+  }
+}
+
+void pack_shading(const Geometry& geometry, std::span<const uint32_t> triangle_order,
+                  std::span<gpu::ShadingVertex> vertices, std::span<gpu::GpuMaterial> materials) {
   const size_t material_count = packed_material_count(geometry);
   for (size_t i = 0; i < material_count; ++i) {
     materials[i] = pack_material(geometry.materials.empty() ? Material{} : geometry.materials[i]);
@@ -50,8 +60,7 @@ void pack_geometry(const Geometry& geometry, std::span<const uint32_t> triangle_
       const glm::vec4 color =
           source < geometry.colors.size() ? geometry.colors[source] : kDefaultColor;
       gpu::ShadingVertex& out = vertices[3 * sorted + corner];
-      out.position = glm::vec4(geometry.positions[source], static_cast<float>(material_id));
-      out.normal = glm::vec4(normal, 0.0f);
+      out.normal = glm::vec4(normal, static_cast<float>(material_id));
       out.color = color;
     }
   }

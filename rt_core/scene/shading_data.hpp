@@ -1,5 +1,6 @@
-// Conversion of a Geometry into the per-vertex and per-material records the path tracer reads
-// (shaders/shared_types.h), in the Morton-sorted triangle order its BLAS is built in.
+// Conversion of a Geometry into the records the path tracer reads (shaders/shared_types.h), in the
+// Morton-sorted triangle order its BLAS is built in: positions (per shape) and shading data
+// (normals, colours, materials: per shading of that shape).
 #pragma once
 
 #include <cstdint>
@@ -12,14 +13,18 @@ namespace glpt::rt {
 
 gpu::GpuMaterial pack_material(const Material& material);
 
-// How many GpuMaterial records pack_geometry writes: at least one, so out-of-range or missing
+// How many GpuMaterial records pack_shading writes: at least one, so out-of-range or missing
 // material ids always have something to point at.
 size_t packed_material_count(const Geometry& geometry);
+
+// Writes 3 * triangle_order.size() positions.
+void pack_positions(const Geometry& geometry, std::span<const uint32_t> triangle_order,
+                    std::span<gpu::GpuPosition> positions);
 
 // Writes 3 * triangle_order.size() vertices and packed_material_count() materials. Vertex
 // attributes the geometry lacks get GL's defaults (normal +Z, colour white); material ids out of
 // range become 0.
-void pack_geometry(const Geometry& geometry, std::span<const uint32_t> triangle_order,
-                   std::span<gpu::ShadingVertex> vertices, std::span<gpu::GpuMaterial> materials);
+void pack_shading(const Geometry& geometry, std::span<const uint32_t> triangle_order,
+                  std::span<gpu::ShadingVertex> vertices, std::span<gpu::GpuMaterial> materials);
 
 }  // namespace glpt::rt

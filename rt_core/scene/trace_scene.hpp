@@ -1,8 +1,8 @@
-// The path tracer's scene: triangle geometry in object space with per-instance modelviews, GL
-// lights, one camera. Derived from the frame record by scene_builder.cpp. Everything is in GL eye
-// space: the camera sits at the origin looking down -Z, GL lights are already in eye space, and
-// each instance carries the modelview it was drawn with, so a moving camera only changes
-// instance transforms and never geometry contents.
+// The path tracer's scene, derived from a frame record by scene_builder.cpp: the traced draws'
+// triangles as geometry (the BLASes, for shadow, bounce and AO rays; primary visibility comes
+// from the G-buffer the raster pipelines draw), GL's lights per record state, and per-state data
+// the trace pass needs. Everything is in GL eye space: each instance carries the modelview it
+// was drawn with, so a moving camera only changes instance transforms, never geometry.
 #pragma once
 
 #include <cstdint>
@@ -28,26 +28,30 @@ struct Material {
   glm::vec4 specular{0.0f, 0.0f, 0.0f, 1.0f};
   glm::vec4 emission{0.0f, 0.0f, 0.0f, 1.0f};
   float shininess = 0.0f;  // GL Blinn-Phong exponent, 0..128
-  // false: GL_LIGHTING was disabled; the surface shows its vertex colour as GL would (see
-  // docs/architecture.md, "unlit policy").
+  // false: GL_LIGHTING was disabled; at bounce hits the surface reflects as a diffuse surface of
+  // its vertex colour (see docs/architecture.md, "unlit policy").
   bool lit = true;
   ColorSource color_source = ColorSource::kNone;
 
   bool operator==(const Material&) const = default;
 };
 
-// A triangle soup in object space. Triangle t uses vertices 3t, 3t+1, 3t+2. GL_FLAT shading is
-// already resolved by the front end (the provoking vertex's normal and colour are copied to all
-// three vertices), so the tracer always interpolates.
+// A triangle soup. Triangle t uses vertices 3t, 3t+1, 3t+2; GL_FLAT is already resolved (the
+// provoking vertex's normal and colour are on all three vertices). Positions are in object space,
+// or in eye space for draws under a projective modelview (the TLAS cannot hold a projective
+// transform), whose instance transform is then the identity.
 struct Geometry {
   std::vector<glm::vec3> positions;
-  std::vector<glm::vec3> normals;  // object space, not necessarily unit length
-  std::vector<glm::vec4> colors;   // current colour per vertex (used per Material::color_source)
+  std::vector<glm::vec3> normals;      // not necessarily unit length
+  std::vector<glm::vec4> colors;       // current colour per vertex (used per color_source)
   std::vector<uint32_t> material_ids;  // one per triangle, index into `materials`
   std::vector<Material> materials;
-  // Identity of the content above (positions, normals, colours, materials). Two geometries with
-  // the same hash are the same geometry: its acceleration structure is built once and reused.
-  uint64_t content_hash = 0;
+  // Identity of the shape (positions, triangle order): geometries with equal shape hashes share
+  // one acceleration structure, so recolouring (new colours, normals, materials) never rebuilds
+  // a BLAS.
+  uint64_t shape_hash = 0;
+  // Identity of the shading data (normals, colours, materials) of that shape.
+  uint64_t shading_hash = 0;
 
   size_t triangle_count() const { return positions.size() / 3; }
 };
@@ -55,6 +59,8 @@ struct Geometry {
 struct Instance {
   std::shared_ptr<const Geometry> geometry;
   glm::mat4 modelview{1.0f};  // object -> eye space at draw time
+  // The record state whose lights light this geometry where bounce rays hit it.
+  uint32_t state = 0;
 };
 
 // A GL light in eye space, with its GL parameters (already transformed by the modelview that was
@@ -70,21 +76,35 @@ struct Light {
   float constant_attenuation = 1.0f;
   float linear_attenuation = 0.0f;
   float quadratic_attenuation = 0.0f;
+
+  bool operator==(const Light&) const = default;
 };
 
-struct Viewport {
-  int32_t x = 0, y = 0;
-  uint32_t width = 0, height = 0;
+// What the trace pass needs of one record state (pixels of the G-buffer and instances refer to
+// record states by index).
+struct TraceState {
+  glm::vec4 global_ambient{0.2f, 0.2f, 0.2f, 1.0f};  // GL_LIGHT_MODEL_AMBIENT
+  std::vector<uint32_t> lights;                      // indices into TraceScene::lights
+  // Where the viewer is in eye space, for the side secondary rays leave a surface from and for
+  // the specular term: a point (w = 1, the centre of a perspective projection) or a direction
+  // towards the viewer (w = 0, parallel projections: GL's infinite viewer, +Z).
+  glm::vec4 viewer{0.0f, 0.0f, 0.0f, 1.0f};
+  uint32_t fog_mode = 0;  // 0 off, 1 linear, 2 exp, 3 exp2 (lit pixels; unlit ones are fogged)
+  glm::vec4 fog_color{0.0f};
+  glm::vec4 fog_params{0.0f};  // density, start, end, 1 / (end - start)
+  uint32_t targets = 0;        // colour buffers its draws write: bit 0 front, bit 1 back
 };
 
 struct TraceScene {
   uint32_t width = 0, height = 0;  // drawable size in pixels
-  Viewport viewport;
-  glm::mat4 projection{1.0f};  // eye -> clip, for primary rays
-  glm::vec4 clear_color{0.0f, 0.0f, 0.0f, 0.0f};
-  glm::vec4 global_ambient{0.2f, 0.2f, 0.2f, 1.0f};  // GL_LIGHT_MODEL_AMBIENT
-  std::vector<Light> lights;                         // enabled GL lights only (GL_LIGHTING enabled)
-  std::vector<Instance> instances;                   // traced geometry
+  // Distinct enabled GL lights of the traced draws' states (a lit scene without any: the default
+  // light), shared by the states that list them.
+  std::vector<Light> lights;
+  std::vector<TraceState> states;  // one per record state
+  std::vector<Instance> instances;
+  // Colour buffers to write where a pixel was traced in earlier samples but not in this frame's
+  // G-buffer (the first traced draw's).
+  uint32_t default_targets = 1;
 };
 
 }  // namespace glpt::rt

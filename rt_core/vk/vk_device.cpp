@@ -141,6 +141,13 @@ Candidate evaluate(VkPhysicalDevice device) {
     if (!acceleration.accelerationStructure)
       candidate.missing_ray_query.push_back("accelerationStructure");
     if (!ray_query.rayQuery) candidate.missing_ray_query.push_back("rayQuery");
+    // Path-traced mode's G-buffer pass (a geometry shader) and its trace pass, which reads and
+    // writes the BGRA colour buffers as storage images.
+    if (!candidate.geometry_shader) candidate.missing_ray_query.push_back("geometryShader");
+    if (!core.shaderStorageImageReadWithoutFormat)
+      candidate.missing_ray_query.push_back("shaderStorageImageReadWithoutFormat");
+    if (!core.shaderStorageImageWriteWithoutFormat)
+      candidate.missing_ray_query.push_back("shaderStorageImageWriteWithoutFormat");
   }
 
   // The path tracer counts rays with subgroupAdd.
@@ -368,6 +375,9 @@ std::unique_ptr<VulkanDevice> VulkanDevice::create(const DeviceOptions& options)
   features.features.independentBlend = VK_TRUE;
   features.features.geometryShader = chosen.geometry_shader ? VK_TRUE : VK_FALSE;
   features.features.shaderTessellationAndGeometryPointSize = features.features.geometryShader;
+  const VkBool32 path_traced = chosen.missing_ray_query.empty() ? VK_TRUE : VK_FALSE;
+  features.features.shaderStorageImageReadWithoutFormat = path_traced;
+  features.features.shaderStorageImageWriteWithoutFormat = path_traced;
 
   std::vector<const char*> device_extensions(std::begin(kRasterDeviceExtensions),
                                              std::end(kRasterDeviceExtensions));

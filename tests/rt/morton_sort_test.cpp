@@ -115,17 +115,19 @@ TEST(MortonSort, PackedGeometryKeepsEachTrianglesData) {
   for (size_t t = 0; t < triangle_count; ++t) geometry.material_ids.push_back(uint32_t(t % 3));
 
   const MortonOrder order = morton_order_triangles(geometry.positions);
+  std::vector<gpu::GpuPosition> positions(3 * triangle_count);
   std::vector<gpu::ShadingVertex> vertices(3 * triangle_count);
   std::vector<gpu::GpuMaterial> materials(packed_material_count(geometry));
-  pack_geometry(geometry, order.permutation, vertices, materials);
+  pack_positions(geometry, order.permutation, positions);
+  pack_shading(geometry, order.permutation, vertices, materials);
 
   for (size_t sorted = 0; sorted < triangle_count; ++sorted) {
     const size_t original = order.permutation[sorted];
     for (size_t corner = 0; corner < 3; ++corner) {
       const gpu::ShadingVertex& vertex = vertices[3 * sorted + corner];
       const size_t source = 3 * original + corner;
-      ASSERT_EQ(glm::vec3(vertex.position), geometry.positions[source]);
-      ASSERT_EQ(vertex.position.w, float(geometry.material_ids[original]));
+      ASSERT_EQ(glm::vec3(positions[3 * sorted + corner].position), geometry.positions[source]);
+      ASSERT_EQ(vertex.normal.w, float(geometry.material_ids[original]));
       ASSERT_EQ(glm::vec3(vertex.normal), geometry.normals[source]);
       ASSERT_EQ(vertex.color, geometry.colors[source]);
     }
@@ -144,9 +146,9 @@ TEST(MortonSort, PackingFillsMissingAttributesWithGlDefaults) {
   std::vector<gpu::ShadingVertex> vertices(3);
   std::vector<gpu::GpuMaterial> materials(packed_material_count(geometry));
   ASSERT_EQ(materials.size(), 1u);  // a default material even when none is given
-  pack_geometry(geometry, order, vertices, materials);
+  pack_shading(geometry, order, vertices, materials);
   for (const auto& vertex : vertices) {
-    EXPECT_EQ(vertex.position.w, 0.0f);
+    EXPECT_EQ(vertex.normal.w, 0.0f);
     EXPECT_EQ(glm::vec3(vertex.normal), glm::vec3(0, 0, 1));
     EXPECT_EQ(vertex.color, glm::vec4(1.0f));
   }

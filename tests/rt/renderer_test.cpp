@@ -1,5 +1,9 @@
-// Renders of tiny synthetic frames through the public API, checking behaviour that breaks visibly
-// when a part of the tracer (camera, shading, shadow rays, accumulation, caching) is wrong.
+// Path-traced renders of small hand-built frame records through the public API (Renderer in
+// path-traced mode: G-buffer pass, trace pass, raster overlays), checking behaviour that breaks
+// visibly when a part (classification, G-buffer, shading, shadow rays, accumulation, caching) is
+// wrong. Expected values come from GL's lighting equations by hand.
+#include "rt_core/renderer.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,10 +12,13 @@
 #include <memory>
 #include <string>
 
-#include "rt_core/passes/path_tracer.hpp"
+#include "record_builder.hpp"
+#include "rt_core/scene/scene_builder.hpp"
 
 namespace glpt::rt {
 namespace {
+
+using test::RecordBuilder;
 
 constexpr uint32_t kSize = 64;
 
@@ -28,160 +35,113 @@ struct Image {
   std::vector<uint8_t> rgba;
   FrameStats stats;
   // (x, y) in GL window coordinates: y = 0 is the bottom row.
-  Rgba at(uint32_t x, uint32_t y) const {
-    const uint8_t* p = &rgba[(size_t{y} * kSize + x) * 4];
+  Rgba at(int x, int y) const {
+    const uint8_t* p = &rgba[(size_t(y) * kSize + size_t(x)) * 4];
     return {p[0], p[1], p[2], p[3]};
   }
 };
 
-// Each test uses its own content hashes so the shared renderer's BLAS cache never mixes them up.
-uint64_t next_hash() {
-  static uint64_t hash = 0x5eed0000;
-  return ++hash;
-}
-
-// A parallelogram from `corner` spanned by edges u and v; its front face and normal point along
-// cross(u, v), or the normals point the other way with `flip_normal` ("facing away").
-std::shared_ptr<const Geometry> quad(glm::vec3 corner, glm::vec3 u, glm::vec3 v,
-                                     glm::vec4 color = glm::vec4(1.0f),
-                                     const Material& material = Material{},
-                                     bool flip_normal = false) {
-  auto geometry = std::make_shared<Geometry>();
-  const glm::vec3 p00 = corner, p10 = corner + u, p01 = corner + v, p11 = corner + u + v;
-  geometry->positions = {p00, p10, p11, p00, p11, p01};
-  glm::vec3 normal = glm::normalize(glm::cross(u, v));
-  if (flip_normal) normal = -normal;
-  geometry->normals.assign(6, normal);
-  geometry->colors.assign(6, color);
-  geometry->material_ids = {0, 0};
-  geometry->materials = {material};
-  geometry->content_hash = next_hash();
-  return geometry;
-}
-
-TraceScene base_frame() {
-  TraceScene frame;
-  frame.width = frame.height = kSize;
-  frame.viewport = {0, 0, kSize, kSize};
-  frame.projection = glm::perspective(glm::radians(60.0f), 1.0f, 0.1f, 100.0f);
-  frame.clear_color = glm::vec4(0.2f, 0.4f, 0.6f, 0.0f);
-  frame.global_ambient = glm::vec4(0.2f, 0.2f, 0.2f, 1.0f);
-  return frame;
-}
-
-Light directional_light(glm::vec3 towards_light) {
-  Light light;
-  light.position = glm::vec4(glm::normalize(towards_light), 0.0f);
-  return light;
+// A 3-D camera: perspective, depth test on, clear colour (0.2, 0.4, 0.6, 0).
+RecordBuilder base_frame() {
+  RecordBuilder b(kSize, kSize);
+  b.transform.projection = glm::perspective(glm::radians(60.0f), 1.0f, 0.1f, 100.0f);
+  b.raster.ops.depth_test = true;
+  b.clear(glm::vec4(0.2f, 0.4f, 0.6f, 0.0f));
+  return b;
 }
 
 // Pixel (x, y) where eye-space point p lands with base_frame()'s projection.
-glm::ivec2 project(const TraceScene& frame, glm::vec3 p) {
-  glm::vec4 clip = frame.projection * glm::vec4(p, 1.0f);
+glm::ivec2 project(const RecordBuilder& b, glm::vec3 p) {
+  glm::vec4 clip = b.transform.projection * glm::vec4(p, 1.0f);
   glm::vec2 ndc = glm::vec2(clip) / clip.w;
   return glm::ivec2((ndc * 0.5f + 0.5f) * float(kSize));
+}
+
+std::unique_ptr<Renderer> make_renderer(RenderSettings settings, std::string* error) {
+  settings.mode = RenderMode::kPathTraced;
+  // GLPT_VALIDATION=1 in the environment runs these tests under the validation layer.
+  settings.validation = RenderSettings::from_environment().validation;
+  return Renderer::create(settings, error);
+}
+
+Image render_with(Renderer& renderer, const RecordBuilder& b) {
+  Image image;
+  std::string error;
+  EXPECT_TRUE(renderer.execute(b.record, b.drawable, image.stats, &error)) << error;
+  EXPECT_TRUE(renderer.read_color(GL_FRONT, 0, 0, kSize, kSize, image.rgba, &error)) << error;
+  return image;
 }
 
 class RenderTest : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    // GLPT_VALIDATION=1 in the environment runs these tests under the validation layer.
-    RenderSettings settings = RenderSettings::from_environment();
+    RenderSettings settings;
     settings.samples_per_pixel = 1;
     settings.bounces = 1;
     settings.accumulate = true;
-    renderer_ = PathTracer::create(settings, &error_);
+    renderer_ = make_renderer(settings, &error_);
   }
   static void TearDownTestSuite() { renderer_.reset(); }
 
   void SetUp() override {
     // No ray-query device is a failure, not a skip: the message says what to install.
     ASSERT_NE(renderer_, nullptr) << error_;
+    ASSERT_EQ(renderer_->mode(), RenderMode::kPathTraced) << "no ray queries: " << error_;
   }
 
-  static Image render(const TraceScene& frame) {
-    Image image;
-    std::string error;
-    EXPECT_TRUE(renderer_->render(frame, image.rgba, image.stats, &error)) << error;
-    EXPECT_EQ(image.rgba.size(), size_t{frame.width} * frame.height * 4);
-    return image;
-  }
+  static Image render(const RecordBuilder& b) { return render_with(*renderer_, b); }
 
-  static std::unique_ptr<PathTracer> renderer_;
+  static std::unique_ptr<Renderer> renderer_;
   static std::string error_;
 };
 
-std::unique_ptr<PathTracer> RenderTest::renderer_;
+std::unique_ptr<Renderer> RenderTest::renderer_;
 std::string RenderTest::error_;
 
-TEST_F(RenderTest, MissPixelsShowTheClearColour) {
-  TraceScene frame = base_frame();
-  frame.instances.push_back({quad({-0.5f, -0.5f, -5.0f}, {1, 0, 0}, {0, 1, 0}), glm::mat4(1.0f)});
-  frame.lights.push_back(directional_light({0, 0, 1}));
-  Image image = render(frame);
+TEST_F(RenderTest, UncoveredPixelsKeepTheClearColourAndCoveredOnesAreTraced) {
+  RecordBuilder b = base_frame();
+  b.directional_light(0, {0, 0, 1});
+  b.quad({-0.5f, -0.5f, -5.0f}, {1, 0, 0}, {0, 1, 0}, glm::vec4(1));
+  Image image = render(b);
   const Rgba expected{51, 102, 153, 0};  // 0.2, 0.4, 0.6, 0.0 as GL rounds them
-  for (auto [x, y] : {std::pair{0u, 0u}, {63u, 63u}, {5u, 60u}}) {
+  for (auto [x, y] : {std::pair{0, 0}, {63, 63}, {5, 60}}) {
     Rgba c = image.at(x, y);
     EXPECT_EQ(c.r, expected.r) << c;
     EXPECT_EQ(c.g, expected.g) << c;
     EXPECT_EQ(c.b, expected.b) << c;
     EXPECT_EQ(c.a, expected.a) << c;
   }
-  EXPECT_EQ(image.at(32, 32).a, 255);  // traced pixels are opaque
+  EXPECT_EQ(image.at(32, 32).a, 255);  // GL's alpha: the material's diffuse alpha
   EXPECT_GT(image.stats.rays, 0u);
   EXPECT_EQ(image.stats.triangles, 2u);
 }
 
-TEST_F(RenderTest, PixelsOutsideTheViewportShowTheClearColour) {
-  TraceScene frame = base_frame();
-  frame.viewport = {16, 16, 32, 32};
-  // A quad filling the whole view: every viewport pixel hits it.
-  Material unlit;
-  unlit.lit = false;
-  frame.instances.push_back(
-      {quad({-50, -50, -5}, {100, 0, 0}, {0, 100, 0}, glm::vec4(1, 0, 0, 1), unlit),
-       glm::mat4(1.0f)});
-  Image image = render(frame);
-  EXPECT_EQ(image.at(32, 32).r, 255);
-  EXPECT_EQ(image.at(16, 16).r, 255);
-  EXPECT_EQ(image.at(47, 47).r, 255);
-  for (auto [x, y] : {std::pair{15u, 32u}, {48u, 32u}, {32u, 15u}, {32u, 48u}}) {
-    Rgba c = image.at(x, y);
-    EXPECT_EQ(c.r, 51) << x << "," << y << " " << c;
-    EXPECT_EQ(c.a, 0) << x << "," << y << " " << c;
-  }
-}
-
-TEST_F(RenderTest, UnlitQuadShowsItsExactVertexColour) {
-  TraceScene frame = base_frame();
-  Material unlit;
-  unlit.lit = false;
-  frame.instances.push_back(
-      {quad({-1, -1, -4}, {2, 0, 0}, {0, 2, 0}, glm::vec4(0.25f, 0.75f, 0.2f, 1.0f), unlit),
-       glm::mat4(1.0f)});
-  frame.lights.push_back(directional_light({1, 1, 1}));  // must not matter
-  Image image = render(frame);
-  for (auto [x, y] : {std::pair{32u, 32u}, {28u, 36u}, {36u, 28u}}) {
-    Rgba c = image.at(x, y);
-    EXPECT_EQ(c.r, 64) << c;
-    EXPECT_EQ(c.g, 191) << c;
-    EXPECT_EQ(c.b, 51) << c;
-    EXPECT_EQ(c.a, 255) << c;
-  }
+TEST_F(RenderTest, UnlitSurfacesAreExactlyWhatRasterModeDraws) {
+  RecordBuilder b = base_frame();
+  b.quad({-1, -1, -4}, {2, 0, 0}, {0, 2, 0}, glm::vec4(0.25f, 0.75f, 0.3f, 1.0f));
+  b.quad({-3, -2, -6}, {2.5f, 0, 0}, {0, 4, 0}, glm::vec4(0.1f, 0.2f, 0.9f, 0.5f));
+  b.directional_light(1, {1, 1, 1});  // lit draws follow; the unlit ones must not care
+  b.lighting.enabled = false;
+  b.quad({1, -1, -5}, {1, 0, 0}, {0, 1, 0}, glm::vec4(0.5f, 0.5f, 0.5f, 1.0f));
+  Image traced = render(b);
+  RenderSettings raster_settings;
+  raster_settings.mode = RenderMode::kRaster;
+  std::string error;
+  auto raster = Renderer::create(raster_settings, &error);
+  ASSERT_NE(raster, nullptr) << error;
+  Image rasterized = render_with(*raster, b);
+  EXPECT_EQ(traced.rgba, rasterized.rgba);
+  EXPECT_EQ(traced.at(32, 32).r, 64);  // 0.25 -> 63.75
 }
 
 TEST_F(RenderTest, QuadFacingTheLightIsBrighterThanQuadFacingAway) {
-  TraceScene frame = base_frame();
-  Material white;
-  white.diffuse = glm::vec4(0.8f, 0.8f, 0.8f, 1.0f);
+  RecordBuilder b = base_frame();
+  b.directional_light(0, {0, 0, 1});
   // Same geometry side by side, both seen from the front; the right one's normals point away.
-  frame.instances.push_back(
-      {quad({-2.2f, -1, -5}, {2, 0, 0}, {0, 2, 0}, glm::vec4(1), white), glm::mat4(1.0f)});
-  frame.instances.push_back(
-      {quad({0.2f, -1, -5}, {2, 0, 0}, {0, 2, 0}, glm::vec4(1), white, true), glm::mat4(1.0f)});
-  frame.lights.push_back(directional_light({0, 0, 1}));
-  Image image = render(frame);
-  const glm::ivec2 facing = project(frame, {-1.2f, 0, -5}), away = project(frame, {1.2f, 0, -5});
+  b.quad({-2.2f, -1, -5}, {2, 0, 0}, {0, 2, 0}, glm::vec4(1));
+  b.quad({0.2f, -1, -5}, {2, 0, 0}, {0, 2, 0}, glm::vec4(1), glm::vec3(0, 0, -1));
+  Image image = render(b);
+  const glm::ivec2 facing = project(b, {-1.2f, 0, -5}), away = project(b, {1.2f, 0, -5});
   const Rgba lit = image.at(facing.x, facing.y), unlit = image.at(away.x, away.y);
   EXPECT_GT(lit.luminance(), unlit.luminance() + 300) << lit << " vs " << unlit;
   // GL: 0.8 diffuse * 1.0 light + 0.2 * 0.2 ambient = 0.84 -> 214 (plus a little bounce light).
@@ -189,38 +149,37 @@ TEST_F(RenderTest, QuadFacingTheLightIsBrighterThanQuadFacingAway) {
 }
 
 TEST_F(RenderTest, OccluderShadowsThePlaneBehindIt) {
-  TraceScene frame = base_frame();
+  RecordBuilder b = base_frame();
+  b.directional_light(0, {0, 1, 0});
   // A floor at y = -1 lit from straight above, and a small horizontal quad hovering over it.
-  frame.instances.push_back({quad({-4, -1, -2}, {8, 0, 0}, {0, 0, -8}), glm::mat4(1.0f)});
-  frame.instances.push_back({quad({-0.5f, -0.5f, -4.5f}, {1, 0, 0}, {0, 0, -1}), glm::mat4(1.0f)});
-  frame.lights.push_back(directional_light({0, 1, 0}));
-  Image image = render(frame);
-  const glm::ivec2 shadowed = project(frame, {0, -1, -5}), open = project(frame, {2, -1, -5});
+  b.quad({-4, -1, -2}, {8, 0, 0}, {0, 0, -8}, glm::vec4(1));
+  b.quad({-0.5f, -0.5f, -4.5f}, {1, 0, 0}, {0, 0, -1}, glm::vec4(1));
+  Image image = render(b);
+  const glm::ivec2 shadowed = project(b, {0, -1, -5}), open = project(b, {2, -1, -5});
   const Rgba in_shadow = image.at(shadowed.x, shadowed.y), in_light = image.at(open.x, open.y);
   EXPECT_LT(in_shadow.luminance() * 2, in_light.luminance()) << in_shadow << " vs " << in_light;
 }
 
 TEST_F(RenderTest, DefaultLightWhenLitSurfacesHaveNoLight) {
-  TraceScene frame = base_frame();
-  frame.instances.push_back({quad({-1, -1, -4}, {2, 0, 0}, {0, 2, 0}), glm::mat4(1.0f)});
-  Image image = render(frame);
+  RecordBuilder b = base_frame();
+  b.lighting.enabled = true;  // and no light enabled
+  b.quad({-1, -1, -4}, {2, 0, 0}, {0, 2, 0}, glm::vec4(1));
+  Image image = render(b);
   // Ambient alone would give 0.2 * 0.2 = 0.04 (10); the default light adds 0.8 * N.L.
   EXPECT_GT(image.at(32, 32).r, 60) << image.at(32, 32);
 }
 
 TEST_F(RenderTest, PositionalLightIsAttenuatedWithDistance) {
-  Material white;
-  white.ambient = glm::vec4(0.0f);
   auto render_with_attenuation = [&](float quadratic) {
-    TraceScene frame = base_frame();
-    frame.global_ambient = glm::vec4(0.0f);
-    frame.instances.push_back(
-        {quad({-1, -1, -4}, {2, 0, 0}, {0, 2, 0}, glm::vec4(1), white), glm::mat4(1.0f)});
-    Light light;
-    light.position = glm::vec4(0, 0, -2, 1);  // 2 units in front of the quad
-    light.quadratic_attenuation = quadratic;
-    frame.lights.push_back(light);
-    return render(frame).at(32, 32);
+    RecordBuilder b = base_frame();
+    b.lighting.enabled = true;
+    b.lighting.light_mask = 1;
+    b.lighting.model_ambient = glm::vec4(0.0f);
+    b.lighting.material[0].ambient = glm::vec4(0.0f);
+    b.lighting.lights[0].position = glm::vec4(0, 0, -2, 1);  // 2 units in front of the quad
+    b.lighting.lights[0].quadratic_attenuation = quadratic;
+    b.quad({-1, -1, -4}, {2, 0, 0}, {0, 2, 0}, glm::vec4(1));
+    return render(b).at(32, 32);
   };
   const Rgba bright = render_with_attenuation(0.0f), dim = render_with_attenuation(0.25f);
   EXPECT_NEAR(bright.r, 204, 6) << bright;  // 0.8 * N.L = 1
@@ -228,240 +187,452 @@ TEST_F(RenderTest, PositionalLightIsAttenuatedWithDistance) {
 }
 
 TEST_F(RenderTest, OrthographicProjection) {
-  TraceScene frame = base_frame();
-  frame.projection = glm::ortho(-2.0f, 2.0f, -2.0f, 2.0f, 0.1f, 10.0f);
-  Material unlit;
-  unlit.lit = false;
+  RecordBuilder b = base_frame();
+  b.transform.projection = glm::ortho(-2.0f, 2.0f, -2.0f, 2.0f, 0.1f, 10.0f);
+  b.directional_light(0, {0, 0, 1});
+  b.lighting.model_ambient = glm::vec4(0.0f);
+  b.lighting.material[0].ambient = glm::vec4(0.0f);
   // Covers x in [-2, 0]: the left half of the image.
-  frame.instances.push_back(
-      {quad({-2, -2, -5}, {2, 0, 0}, {0, 4, 0}, glm::vec4(0, 1, 0, 1), unlit), glm::mat4(1.0f)});
-  Image image = render(frame);
-  EXPECT_EQ(image.at(16, 32).g, 255);
+  b.quad({-2, -2, -5}, {2, 0, 0}, {0, 4, 0}, glm::vec4(1));
+  Image image = render(b);
+  EXPECT_NEAR(image.at(16, 32).r, 204, 3) << image.at(16, 32);
   EXPECT_EQ(image.at(48, 32).g, 102);  // clear colour
 }
 
 TEST_F(RenderTest, AccumulatesUnchangedFramesAndRestartsOnChange) {
-  TraceScene frame = base_frame();
-  frame.instances.push_back({quad({-1, -1, -4}, {2, 0, 0}, {0, 2, 0}), glm::mat4(1.0f)});
-  frame.lights.push_back(directional_light({0, 0, 1}));
-  EXPECT_EQ(render(frame).stats.accumulated_samples, 1u);
-  EXPECT_EQ(render(frame).stats.accumulated_samples, 2u);
-  EXPECT_EQ(render(frame).stats.accumulated_samples, 3u);
-  frame.instances[0].modelview = glm::translate(glm::mat4(1.0f), glm::vec3(0.1f, 0, 0));
-  EXPECT_EQ(render(frame).stats.accumulated_samples, 1u);
-  EXPECT_EQ(render(frame).stats.accumulated_samples, 2u);
-  frame.lights[0].diffuse = glm::vec4(0.5f);
-  EXPECT_EQ(render(frame).stats.accumulated_samples, 1u);
-  frame.clear_color = glm::vec4(1.0f);
-  EXPECT_EQ(render(frame).stats.accumulated_samples, 1u);
+  RecordBuilder b = base_frame();
+  b.directional_light(0, {0, 0, 1});
+  b.quad({-1, -1, -4}, {2, 0, 0}, {0, 2, 0}, glm::vec4(1));
+  EXPECT_EQ(render(b).stats.accumulated_samples, 1u);
+  EXPECT_EQ(render(b).stats.accumulated_samples, 2u);
+  EXPECT_EQ(render(b).stats.accumulated_samples, 3u);
+
+  auto redraw = [&](auto change) {
+    b = base_frame();
+    change(b);
+    b.quad({-1, -1, -4}, {2, 0, 0}, {0, 2, 0}, glm::vec4(1));
+  };
+  redraw([](RecordBuilder& f) {
+    f.directional_light(0, {0, 0, 1});
+    f.transform.modelview = glm::translate(glm::mat4(1.0f), glm::vec3(0.1f, 0, 0));
+  });
+  EXPECT_EQ(render(b).stats.accumulated_samples, 1u);
+  EXPECT_EQ(render(b).stats.accumulated_samples, 2u);
+  redraw([](RecordBuilder& f) { f.directional_light(0, {0, 0, 1}, glm::vec4(0.5f)); });
+  EXPECT_EQ(render(b).stats.accumulated_samples, 1u);
+  // A record that traces nothing (the rest of a frame after glReadPixels) keeps the
+  // accumulation.
+  RecordBuilder nothing(kSize, kSize);
+  render(nothing);
+  EXPECT_EQ(render(b).stats.accumulated_samples, 2u);
 }
 
-TEST_F(RenderTest, ReusesBlasOfUnchangedGeometry) {
-  TraceScene frame = base_frame();
-  frame.instances.push_back({quad({-1, -1, -4}, {2, 0, 0}, {0, 2, 0}), glm::mat4(1.0f)});
-  // A second instance of the same geometry shares its BLAS.
-  frame.instances.push_back(
-      {frame.instances[0].geometry, glm::translate(glm::mat4(1.0f), glm::vec3(0, 0, -3))});
-  Image first = render(frame);
+TEST_F(RenderTest, ReusesBlasOfUnchangedGeometryAndOfRecolouredGeometry) {
+  auto frame = [](glm::vec4 color, float x) {
+    RecordBuilder b = base_frame();
+    b.directional_light(0, {0, 0, 1});
+    b.transform.modelview = glm::translate(glm::mat4(1.0f), glm::vec3(x, 0, 0));
+    b.quad({-1, -1, -4.25f}, {2, 0, 0}, {0, 2, 0}, color);
+    return b;
+  };
+  Image first = render(frame(glm::vec4(1), 0.0f));
   EXPECT_EQ(first.stats.blas_builds, 1u);
-  EXPECT_EQ(first.stats.blas_reused, 0u);
-  EXPECT_EQ(first.stats.triangles, 4u);
-
-  frame.instances[1].modelview = glm::translate(glm::mat4(1.0f), glm::vec3(1, 0, -3));
-  Image second = render(frame);
-  EXPECT_EQ(second.stats.blas_builds, 0u);
-  EXPECT_GT(second.stats.blas_reused, 0u);
-  EXPECT_GT(second.stats.rays, 0u);
+  EXPECT_EQ(first.stats.triangles, 2u);
+  Image moved = render(frame(glm::vec4(1), 0.1f));
+  EXPECT_EQ(moved.stats.blas_builds, 0u);
+  EXPECT_GT(moved.stats.blas_reused, 0u);
+  // GL_COLOR_MATERIAL is off: the colour is an attribute only, the shape is the same.
+  RecordBuilder recoloured = frame(glm::vec4(1, 0, 0, 1), 0.1f);
+  recoloured.lighting.color_material = true;
+  recoloured.record.clear();
+  recoloured.clear(glm::vec4(0.2f, 0.4f, 0.6f, 0.0f));
+  recoloured.quad({-1, -1, -4.25f}, {2, 0, 0}, {0, 2, 0}, glm::vec4(1, 0, 0, 1));
+  Image red = render(recoloured);
+  EXPECT_EQ(red.stats.blas_builds, 0u);  // recolouring never rebuilds a BLAS
+  EXPECT_GT(red.at(32, 32).r, 150) << red.at(32, 32);
+  EXPECT_LT(red.at(32, 32).g, 20) << red.at(32, 32);
 }
 
-TEST_F(RenderTest, ManyInstancesEachFindTheirOwnShadingData) {
-  // 8x8 unlit tiles drawn in a scrambled order, each with its own colour: the TLAS reorders
-  // instances spatially, and every hit must still reach its own geometry's data.
-  TraceScene frame = base_frame();
-  frame.projection = glm::ortho(0.0f, 8.0f, 0.0f, 8.0f, 0.1f, 10.0f);
-  Material unlit;
-  unlit.lit = false;
-  auto colour_of = [](int i, int j) { return glm::vec4(i / 8.0f, j / 8.0f, 0.5f, 1.0f); };
-  for (int k = 0; k < 64; ++k) {
-    const int scrambled = (k * 37) % 64, i = scrambled % 8, j = scrambled / 8;
-    auto tile = quad({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, colour_of(i, j), unlit);
-    frame.instances.push_back(
-        {tile, glm::translate(glm::mat4(1.0f), glm::vec3(float(i), float(j), -5.0f))});
-  }
-  Image image = render(frame);
-  for (int i = 0; i < 8; ++i) {
-    for (int j = 0; j < 8; ++j) {
-      const Rgba c = image.at(uint32_t(i * 8 + 4), uint32_t(j * 8 + 4));
-      ASSERT_EQ(c.r, std::lround(i / 8.0 * 255)) << i << "," << j << " " << c;
-      ASSERT_EQ(c.g, std::lround(j / 8.0 * 255)) << i << "," << j << " " << c;
-    }
-  }
+TEST_F(RenderTest, LightsAreThoseOfEachPixelsOwnDraw) {
+  RecordBuilder b = base_frame();
+  b.lighting.model_ambient = glm::vec4(0.0f);
+  b.lighting.material[0].ambient = glm::vec4(0.0f);
+  b.lighting.enabled = true;
+  // Left quad: GL_LIGHT0 (red) only. Right quad: GL_LIGHT1 (green) only.
+  b.lighting.lights[0].position = glm::vec4(0, 0, 1, 0);
+  b.lighting.lights[0].diffuse = glm::vec4(1, 0, 0, 1);
+  b.lighting.lights[1].position = glm::vec4(0, 0, 1, 0);
+  b.lighting.lights[1].diffuse = glm::vec4(0, 1, 0, 1);
+  b.lighting.light_mask = 1;
+  b.quad({-2.2f, -1, -5}, {2, 0, 0}, {0, 2, 0}, glm::vec4(1));
+  b.lighting.light_mask = 2;
+  b.quad({0.2f, -1, -5}, {2, 0, 0}, {0, 2, 0}, glm::vec4(1));
+  Image image = render(b);
+  const glm::ivec2 left = project(b, {-1.2f, 0, -5}), right = project(b, {1.2f, 0, -5});
+  const Rgba l = image.at(left.x, left.y), r = image.at(right.x, right.y);
+  EXPECT_NEAR(l.r, 204, 4) << l;  // 0.8 * red
+  EXPECT_LT(l.g, 10) << l;
+  EXPECT_NEAR(r.g, 204, 4) << r;  // 0.8 * green
+  EXPECT_LT(r.r, 10) << r;
 }
 
-TEST_F(RenderTest, EmptyAndDegenerateFramesRenderTheClearColour) {
-  TraceScene frame = base_frame();
-  Image empty = render(frame);  // no instances: an empty TLAS
+TEST_F(RenderTest, ColourBleedsFromTheSurfaceEachBounceHits) {
+  // A grey floor lit from above between a glowing red wall (left) and a glowing green wall
+  // (right), among scrambled small tiles: each bounce must read the shading data of the instance
+  // it hit (the TLAS orders instances spatially, the instance table keeps draw order).
+  RenderSettings settings;
+  settings.samples_per_pixel = 16;
+  std::string error;
+  auto renderer = make_renderer(settings, &error);
+  ASSERT_NE(renderer, nullptr) << error;
+  RecordBuilder b = base_frame();
+  b.directional_light(0, {0, 1, 0});
+  b.lighting.model_ambient = glm::vec4(0.0f);
+  b.lighting.material[0].ambient = glm::vec4(0.0f);
+  b.lighting.color_material = true;
+  b.lighting.color_material_mode = GL_EMISSION;
+  for (int k = 0; k < 8; ++k) {  // distant tiles, drawn in a scrambled order
+    const int i = (k * 5) % 8;
+    b.transform.modelview = glm::translate(glm::mat4(1.0f), glm::vec3(i - 4.0f, 3.0f, -20.0f));
+    b.quad({0, 0, 0}, {0.5f, 0, 0}, {0, 0.5f, 0}, glm::vec4(i / 8.0f, 0.2f, 0.7f, 1.0f));
+  }
+  b.transform.modelview = glm::mat4(1.0f);
+  b.quad({-1, -1, -3}, {0, 0, -3}, {0, 2, 0}, glm::vec4(1, 0, 0, 1));  // red, x = -1
+  b.quad({1, -1, -6}, {0, 0, 3}, {0, 2, 0}, glm::vec4(0, 1, 0, 1));    // green, x = 1
+  b.lighting.color_material = false;
+  b.lighting.material[0].diffuse = glm::vec4(0.5f, 0.5f, 0.5f, 1.0f);
+  b.quad({-1, -1, -3}, {2, 0, 0}, {0, 0, -3}, glm::vec4(1));  // floor
+  Image image = render_with(*renderer, b);
+  const glm::ivec2 near_red = project(b, {-0.8f, -1, -4.5f});
+  const glm::ivec2 near_green = project(b, {0.8f, -1, -4.5f});
+  const Rgba by_red = image.at(near_red.x, near_red.y);
+  const Rgba by_green = image.at(near_green.x, near_green.y);
+  EXPECT_GT(by_red.r, by_red.g + 15) << by_red;
+  EXPECT_GT(by_green.g, by_green.r + 15) << by_green;
+  EXPECT_NEAR(by_red.b, 128, 8) << by_red;  // the floor's own 0.5 * 1: nothing blue bounces
+}
+
+TEST_F(RenderTest, EmptyAndDegenerateRecords) {
+  RecordBuilder b = base_frame();
+  Image empty = render(b);  // no draws: the clear colour
   EXPECT_EQ(empty.at(32, 32).b, 153);
   EXPECT_EQ(empty.stats.triangles, 0u);
 
-  auto no_triangles = std::make_shared<Geometry>();
-  no_triangles->content_hash = next_hash();
-  frame.instances.push_back({nullptr, glm::mat4(1.0f)});
-  frame.instances.push_back({no_triangles, glm::mat4(1.0f)});
-  auto broken = std::const_pointer_cast<Geometry>(quad({-1, -1, -4}, {2, 0, 0}, {0, 2, 0}));
-  broken->positions[1].x = std::nanf("");
-  broken->normals.clear();  // missing attributes get GL defaults
-  broken->colors.clear();
-  broken->material_ids.clear();
-  frame.instances.push_back({broken, glm::mat4(1.0f)});
-  Image degenerate = render(frame);
-  EXPECT_EQ(degenerate.stats.triangles, 2u);
+  b.directional_light(0, {0, 0, 1});
+  auto no_vertices = std::make_shared<rec::VertexData>();
+  no_vertices->mode = GL_TRIANGLES;
+  b.draw(no_vertices);
+  b.draw(GL_TRIANGLES, {{-1, -1, -4}, {1, -1, -4}, {std::nanf(""), 1, -4}}, {0, 0, 1},
+         glm::vec4(1));
+  b.draw(GL_TRIANGLES, {{-1, -1, -4}, {1, -1, -4}, {0, 1, -4}}, {0, 0, 0}, glm::vec4(1));
+  Image degenerate = render(b);
+  EXPECT_EQ(degenerate.stats.triangles, 1u);
+  EXPECT_GT(degenerate.at(32, 28).r, degenerate.at(2, 2).r) << degenerate.at(32, 28);
 
-  frame.projection = glm::mat4(0.0f);  // singular: no pixel can be unprojected
-  EXPECT_EQ(render(frame).at(32, 32).b, 153);
-  frame.viewport = {0, 0, 0, 0};
-  EXPECT_EQ(render(frame).at(32, 32).b, 153);
-  frame.width = 0;
-  Image nothing = render(frame);
-  EXPECT_TRUE(nothing.rgba.empty());
+  RecordBuilder singular = base_frame();
+  singular.transform.projection = glm::mat4(0.0f);  // draws nothing
+  singular.directional_light(0, {0, 0, 1});
+  singular.quad({-1, -1, -4}, {2, 0, 0}, {0, 2, 0}, glm::vec4(1));
+  EXPECT_EQ(render(singular).at(32, 32).b, 153);
+  singular.transform.viewport = {0, 0, 0, 0};
+  singular.quad({-1, -1, -4}, {2, 0, 0}, {0, 2, 0}, glm::vec4(1));
+  EXPECT_EQ(render(singular).at(32, 32).b, 153);
+
+  RecordBuilder nothing(0, 0);
+  FrameStats stats;
+  std::string error;
+  EXPECT_TRUE(renderer_->execute(nothing.record, nothing.drawable, stats, &error)) << error;
 }
 
 TEST_F(RenderTest, SpotLightLightsOnlyInsideItsCone) {
-  TraceScene frame = base_frame();
-  frame.global_ambient = glm::vec4(0.0f);
-  Material white;
-  white.ambient = glm::vec4(0.0f);
-  frame.instances.push_back(
-      {quad({-2, -2, -4}, {4, 0, 0}, {0, 4, 0}, glm::vec4(1), white), glm::mat4(1.0f)});
-  Light spot;
-  spot.position = glm::vec4(0, 0, -2, 1);
-  spot.spot_direction = glm::vec3(0, 0, -1);
-  spot.spot_cutoff = 10.0f;
-  frame.lights.push_back(spot);
-  Image image = render(frame);
-  const glm::ivec2 inside = project(frame, {0, 0, -4}), outside = project(frame, {1, 0, -4});
+  RecordBuilder b = base_frame();
+  b.lighting.enabled = true;
+  b.lighting.light_mask = 1;
+  b.lighting.model_ambient = glm::vec4(0.0f);
+  b.lighting.material[0].ambient = glm::vec4(0.0f);
+  b.lighting.lights[0].position = glm::vec4(0, 0, -2, 1);
+  b.lighting.lights[0].spot_direction = glm::vec3(0, 0, -1);
+  b.lighting.lights[0].spot_cutoff = 10.0f;
+  b.quad({-2, -2, -4}, {4, 0, 0}, {0, 4, 0}, glm::vec4(1));
+  Image image = render(b);
+  const glm::ivec2 inside = project(b, {0, 0, -4}), outside = project(b, {1, 0, -4});
   EXPECT_NEAR(image.at(inside.x, inside.y).r, 204, 6) << image.at(inside.x, inside.y);
   EXPECT_LT(image.at(outside.x, outside.y).r, 20) << image.at(outside.x, outside.y);
 }
 
 TEST_F(RenderTest, MaterialTermsFollowGl) {
-  TraceScene frame = base_frame();
-  frame.global_ambient = glm::vec4(0.0f);
-  frame.lights.push_back(directional_light({0, 0, 1}));  // head-on: N.L = N.H = 1 at the centre
-  auto centre_with = [&](const Material& material, glm::vec4 vertex_color) {
-    TraceScene f = frame;
-    f.instances.push_back(
-        {quad({-1, -1, -4}, {2, 0, 0}, {0, 2, 0}, vertex_color, material), glm::mat4(1.0f)});
-    return render(f).at(32, 32);
+  auto centre_with = [&](const rec::Material& material, bool color_material,
+                         glm::vec4 vertex_color) {
+    RecordBuilder b = base_frame();
+    b.directional_light(0, {0, 0, 1});  // head-on: N.L = N.H = 1 at the centre
+    b.lighting.model_ambient = glm::vec4(0.0f);
+    b.lighting.material[0] = material;
+    b.lighting.color_material = color_material;
+    b.quad({-1, -1, -4}, {2, 0, 0}, {0, 2, 0}, vertex_color);
+    return render(b).at(32, 32);
   };
-  Material diffuse_only;
+  rec::Material diffuse_only;
   diffuse_only.diffuse = glm::vec4(0.5f, 0.5f, 0.5f, 1.0f);
-  EXPECT_NEAR(centre_with(diffuse_only, glm::vec4(1)).r, 128, 3);
+  EXPECT_NEAR(centre_with(diffuse_only, false, glm::vec4(1)).r, 128, 3);
 
-  Material shiny = diffuse_only;
+  rec::Material shiny = diffuse_only;
   shiny.specular = glm::vec4(0.25f, 0.25f, 0.25f, 1.0f);
   shiny.shininess = 50.0f;
-  EXPECT_NEAR(centre_with(shiny, glm::vec4(1)).r, 191, 3);  // 0.5 + 0.25
+  EXPECT_NEAR(centre_with(shiny, false, glm::vec4(1)).r, 191, 3);  // 0.5 + 0.25
 
-  Material glowing = diffuse_only;
+  rec::Material glowing = diffuse_only;
   glowing.emission = glm::vec4(0.25f, 0.0f, 0.0f, 1.0f);
-  EXPECT_NEAR(centre_with(glowing, glm::vec4(1)).r, 191, 3);
+  EXPECT_NEAR(centre_with(glowing, false, glm::vec4(1)).r, 191, 3);
 
-  Material tracked = diffuse_only;  // GL_COLOR_MATERIAL, GL_AMBIENT_AND_DIFFUSE
-  tracked.color_source = ColorSource::kAmbientAndDiffuse;
-  Rgba red = centre_with(tracked, glm::vec4(1, 0, 0, 1));
+  // GL_COLOR_MATERIAL, GL_AMBIENT_AND_DIFFUSE: the vertex colour is the diffuse colour.
+  Rgba red = centre_with(diffuse_only, true, glm::vec4(1, 0, 0, 1));
   EXPECT_NEAR(red.r, 255, 3) << red;
   EXPECT_LT(red.g, 5) << red;
 }
 
 TEST_F(RenderTest, EvictsBlasUnusedForManyFrames) {
-  TraceScene first = base_frame();
-  first.instances.push_back({quad({-1, -1, -4}, {2, 0, 0}, {0, 2, 0}), glm::mat4(1.0f)});
+  RecordBuilder first = base_frame();
+  first.quad({-1, -1, -4.5f}, {2, 0, 0}, {0, 2, 0}, glm::vec4(1));
   EXPECT_EQ(render(first).stats.blas_builds, 1u);
-  TraceScene other = base_frame();
-  other.width = other.height = 8;  // keep the filler frames cheap
-  other.viewport = {0, 0, 8, 8};
-  other.instances.push_back({quad({-1, -1, -4}, {2, 0, 0}, {0, 2, 0}), glm::mat4(1.0f)});
+  RecordBuilder other(8, 8);  // keep the filler frames cheap
+  other.transform.projection = glm::perspective(glm::radians(60.0f), 1.0f, 0.1f, 100.0f);
+  other.quad({-1, -1, -4.75f}, {2, 0, 0}, {0, 2, 0}, glm::vec4(1));
   for (int i = 0; i < 70; ++i) {
-    std::vector<uint8_t> rgba;
     FrameStats stats;
-    ASSERT_TRUE(renderer_->render(other, rgba, stats, nullptr));
+    ASSERT_TRUE(renderer_->execute(other.record, other.drawable, stats, nullptr));
   }
   EXPECT_EQ(render(first).stats.blas_builds, 1u);  // rebuilt: it had been evicted
 }
 
-// Renderers with other settings (cheap to create: lavapipe compiles pipelines in ~50 ms).
-std::unique_ptr<PathTracer> make_renderer(RenderSettings settings) {
-  settings.validation = RenderSettings::from_environment().validation;
-  std::string error;
-  std::unique_ptr<PathTracer> renderer = PathTracer::create(settings, &error);
-  EXPECT_NE(renderer, nullptr) << error;
-  return renderer;
-}
-
-Image render_with(PathTracer& renderer, const TraceScene& frame) {
-  Image image;
-  std::string error;
-  EXPECT_TRUE(renderer.render(frame, image.rgba, image.stats, &error)) << error;
-  return image;
-}
-
 TEST_F(RenderTest, StopsAtMaxAccumulatedAndCanDisableAccumulation) {
-  TraceScene frame = base_frame();
-  frame.instances.push_back({quad({-1, -1, -4}, {2, 0, 0}, {0, 2, 0}), glm::mat4(1.0f)});
+  RecordBuilder b = base_frame();
+  b.directional_light(0, {0, 0, 1});
+  b.quad({-1, -1, -4}, {2, 0, 0}, {0, 2, 0}, glm::vec4(1));
   RenderSettings capped;
   capped.samples_per_pixel = 2;
   capped.max_accumulated = 3;
-  auto renderer = make_renderer(capped);
-  ASSERT_NE(renderer, nullptr);
-  EXPECT_EQ(render_with(*renderer, frame).stats.accumulated_samples, 2u);
-  Image second = render_with(*renderer, frame);
+  std::string error;
+  auto renderer = make_renderer(capped, &error);
+  ASSERT_NE(renderer, nullptr) << error;
+  EXPECT_EQ(render_with(*renderer, b).stats.accumulated_samples, 2u);
+  Image second = render_with(*renderer, b);
   EXPECT_EQ(second.stats.accumulated_samples, 3u);
-  Image third = render_with(*renderer, frame);
+  Image third = render_with(*renderer, b);
   EXPECT_EQ(third.stats.accumulated_samples, 3u);
   EXPECT_EQ(third.stats.rays, 0u);  // nothing left to trace
   EXPECT_EQ(third.rgba, second.rgba);
 
   RenderSettings single;
   single.accumulate = false;
-  renderer = make_renderer(single);
-  ASSERT_NE(renderer, nullptr);
-  EXPECT_EQ(render_with(*renderer, frame).stats.accumulated_samples, 1u);
-  EXPECT_EQ(render_with(*renderer, frame).stats.accumulated_samples, 1u);
+  renderer = make_renderer(single, &error);
+  ASSERT_NE(renderer, nullptr) << error;
+  EXPECT_EQ(render_with(*renderer, b).stats.accumulated_samples, 1u);
+  EXPECT_EQ(render_with(*renderer, b).stats.accumulated_samples, 1u);
+}
+
+TEST_F(RenderTest, AccumulationAntiAliasesEdgesAndKeepsInteriorsExact) {
+  // An unlit quad whose left edge crosses pixel column 20 at its middle: every frame's G-buffer
+  // is jittered by a sub-pixel offset, so the edge pixel converges to a mix of quad and
+  // background while interior pixels stay exactly the quad's colour.
+  RecordBuilder b(kSize, kSize);
+  b.transform.projection = glm::ortho(0.0f, float(kSize), 0.0f, float(kSize), -1.0f, 1.0f);
+  b.clear(glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+  b.quad({20.5f, 10, 0}, {20, 0, 0}, {0, 20, 0}, glm::vec4(1.0f));
+  Image image;
+  for (int frame = 0; frame < 16; ++frame) image = render(b);
+  EXPECT_EQ(image.stats.accumulated_samples, 16u);
+  EXPECT_EQ(image.at(30, 20).r, 255);
+  EXPECT_EQ(image.at(19, 20).r, 0);
+  EXPECT_GT(image.at(20, 20).r, 64) << image.at(20, 20);
+  EXPECT_LT(image.at(20, 20).r, 192) << image.at(20, 20);
 }
 
 TEST_F(RenderTest, DiffuseBounceLightsSurfacesTheLightMisses) {
   // A white floor lit from straight above and a wall standing on it, edge-on to the light: the
   // wall only gets light bounced off the floor.
-  TraceScene frame = base_frame();
-  frame.global_ambient = glm::vec4(0.0f);
-  Material white;
-  white.ambient = glm::vec4(0.0f);
-  white.diffuse = glm::vec4(1.0f);
-  frame.instances.push_back(
-      {quad({-4, -1, -2}, {8, 0, 0}, {0, 0, -8}, glm::vec4(1), white), glm::mat4(1.0f)});
-  frame.instances.push_back(
-      {quad({-4, -1, -6}, {8, 0, 0}, {0, 3, 0}, glm::vec4(1), white), glm::mat4(1.0f)});
-  frame.lights.push_back(directional_light({0, 1, 0}));
+  RecordBuilder b = base_frame();
+  b.directional_light(0, {0, 1, 0});
+  b.lighting.model_ambient = glm::vec4(0.0f);
+  b.lighting.material[0].ambient = glm::vec4(0.0f);
+  b.lighting.material[0].diffuse = glm::vec4(1.0f);
+  b.quad({-4, -1, -2}, {8, 0, 0}, {0, 0, -8}, glm::vec4(1));
+  b.quad({-4, -1, -6}, {8, 0, 0}, {0, 3, 0}, glm::vec4(1));
   RenderSettings direct_only;
   direct_only.bounces = 0;
   direct_only.samples_per_pixel = 8;
   RenderSettings one_bounce = direct_only;
   one_bounce.bounces = 1;
-  auto direct_renderer = make_renderer(direct_only);
-  auto bounce_renderer = make_renderer(one_bounce);
-  ASSERT_TRUE(direct_renderer && bounce_renderer);
-  const glm::ivec2 wall = project(frame, {0, -0.5f, -6});
-  const Rgba without = render_with(*direct_renderer, frame).at(wall.x, wall.y);
-  const Rgba with = render_with(*bounce_renderer, frame).at(wall.x, wall.y);
+  std::string error;
+  auto direct_renderer = make_renderer(direct_only, &error);
+  auto bounce_renderer = make_renderer(one_bounce, &error);
+  ASSERT_TRUE(direct_renderer && bounce_renderer) << error;
+  const glm::ivec2 wall = project(b, {0, -0.5f, -6});
+  const Rgba without = render_with(*direct_renderer, b).at(wall.x, wall.y);
+  const Rgba with = render_with(*bounce_renderer, b).at(wall.x, wall.y);
   EXPECT_LT(without.r, 5) << without;
   EXPECT_GT(with.r, 40) << with;
+}
+
+TEST_F(RenderTest, CoarseSmoothSphereShowsNoShadowTerminatorSteps) {
+  // An 8 x 6 UV sphere with smooth normals, lit so that the terminator falls inside the facets
+  // between 90 and 135 degrees of longitude, whose flat normal (at 112.5) already faces away from
+  // the light (at 17.5: 95 degrees). GL lights that facet's near half smoothly (its vertex
+  // normals face the light); without the terminator fix its shadow rays leave through its own
+  // plane and it is black but for ambient.
+  RecordBuilder b = base_frame();
+  b.transform.projection = glm::ortho(-1.1f, 1.1f, -1.1f, 1.1f, 0.1f, 10.0f);
+  const float light_longitude = glm::radians(17.5f);
+  const glm::vec3 to_light(std::cos(light_longitude), 0.0f, std::sin(light_longitude));
+  b.directional_light(0, to_light);
+  b.transform.modelview = glm::translate(glm::mat4(1.0f), glm::vec3(0, 0, -3));
+  auto v = std::make_shared<rec::VertexData>();
+  v->mode = GL_TRIANGLES;
+  const int slices = 8, stacks = 6;
+  auto point = [&](int i, int j) {
+    const float theta = float(j) / stacks * 3.14159265f, phi = float(i) / slices * 6.2831853f;
+    return glm::vec3(std::sin(theta) * std::cos(phi), std::cos(theta),
+                     std::sin(theta) * std::sin(phi));
+  };
+  for (int j = 0; j < stacks; ++j)
+    for (int i = 0; i < slices; ++i)
+      for (glm::vec3 p : {point(i, j), point(i + 1, j + 1), point(i + 1, j), point(i, j),
+                          point(i, j + 1), point(i + 1, j + 1)}) {
+        v->position.push_back(glm::vec4(p, 1.0f));
+        v->normal.push_back(p);
+      }
+  v->color = {glm::vec4(1)};
+  v->primitives.push_back({0, static_cast<uint32_t>(v->position.size())});
+  b.draw(v);
+  Image image = render(b);
+  // Pixels of the row just above the equator whose smooth normal has N.L in [0.1, 0.3].
+  int checked = 0, dark = 0;
+  const int y = 32;
+  for (int x = 0; x < int(kSize); ++x) {
+    const float px = (x + 0.5f) / kSize * 2.2f - 1.1f, py = (y + 0.5f) / kSize * 2.2f - 1.1f;
+    const float r2 = px * px + py * py;
+    if (r2 >= 0.95f) continue;
+    const glm::vec3 normal(px, py, std::sqrt(1.0f - r2));
+    const float n_dot_l = glm::dot(normal, to_light);
+    if (n_dot_l < 0.1f || n_dot_l > 0.3f) continue;
+    ++checked;
+    // GL: 0.8 * N.L + 0.04 >= 0.12 -> 31; a shadowed facet shows the ambient 0.04 (10).
+    if (image.at(x, y).r < 20) ++dark;
+  }
+  EXPECT_GE(checked, 3);
+  EXPECT_EQ(dark, 0) << "of " << checked;
+}
+
+TEST(ClassifyDraws, TracesOpaqueFilledTrianglesUnderTheMainCameraOnly) {
+  RecordBuilder b(16, 16);
+  b.transform.projection = glm::perspective(1.0f, 1.0f, 0.1f, 10.0f);
+  b.clear(glm::vec4(0));
+  b.quad({-1, -1, -3}, {2, 0, 0}, {0, 2, 0}, glm::vec4(1));  // 0 -> traced
+  b.raster.ops.blend = true;
+  b.quad({-1, -1, -3}, {2, 0, 0}, {0, 2, 0}, glm::vec4(1));  // blended
+  b.raster.ops.blend = false;
+  b.draw(GL_LINES, {{0, 0, -3}, {1, 1, -3}}, {0, 0, 1}, glm::vec4(1));  // lines
+  b.raster.primitive.polygon_mode_back = GL_LINE;
+  b.quad({-1, -1, -3}, {2, 0, 0}, {0, 2, 0}, glm::vec4(1));  // unfilled
+  b.raster.primitive.polygon_mode_back = GL_FILL;
+  b.raster.ops.color_write[3] = false;
+  b.quad({-1, -1, -3}, {2, 0, 0}, {0, 2, 0}, glm::vec4(1));  // masked
+  b.raster.ops.color_write[3] = true;
+  const glm::mat4 perspective = b.transform.projection;
+  b.transform.projection = glm::ortho(0.0f, 16.0f, 0.0f, 16.0f, -1.0f, 1.0f);
+  for (int i = 0; i < 4; ++i)  // more triangles than the 3-D scene, but a parallel projection
+    b.quad({0, 0, 0}, {16, 0, 0}, {0, 16, 0}, glm::vec4(1));
+  b.transform.projection = perspective;
+  b.quad({-1, -1, -3}, {2, 0, 0}, {0, 2, 0}, glm::vec4(1));  // traced again
+
+  SceneBuild build;
+  build_trace_scene(b.record, b.drawable, build);
+  const std::vector<DrawClass> expected = {DrawClass::kNotTriangles,  // the clear
+                                           DrawClass::kTraced,       DrawClass::kBlended,
+                                           DrawClass::kNotTriangles, DrawClass::kUnfilled,
+                                           DrawClass::kMaskedColor,  DrawClass::kOtherCamera,
+                                           DrawClass::kOtherCamera,  DrawClass::kOtherCamera,
+                                           DrawClass::kOtherCamera,  DrawClass::kTraced};
+  EXPECT_EQ(build.classes, expected);
+  EXPECT_EQ(build.gbuffer_pass, (std::vector<size_t>{0, 1, 10}));
+  EXPECT_EQ(build.after_trace, (std::vector<size_t>{2, 3, 4, 5, 6, 7, 8, 9}));
+}
+
+TEST(SceneBuilder, ProjectiveModelviewsGoToTheBlasInEyeSpace) {
+  RecordBuilder b(16, 16);
+  b.transform.projection = glm::perspective(1.0f, 1.0f, 0.1f, 10.0f);
+  glm::mat4 projective(1.0f);
+  projective[1][3] = 0.5f;  // bottom row (0, 0.5, 0, 1): w = 1 + y / 2
+  b.transform.modelview = projective;
+  b.draw(GL_TRIANGLES, {{0, 0, -2}, {1, 0, -2}, {0, 2, -2}}, {0, 0, 1}, glm::vec4(1));
+  SceneBuild build;
+  build_trace_scene(b.record, b.drawable, build);
+  ASSERT_EQ(build.scene.instances.size(), 1u);
+  const Instance& instance = build.scene.instances[0];
+  EXPECT_EQ(instance.modelview, glm::mat4(1.0f));
+  ASSERT_EQ(instance.geometry->positions.size(), 3u);
+  EXPECT_EQ(instance.geometry->positions[2], glm::vec3(0, 1, -1));  // (0, 2, -2) / w = 2
+}
+
+TEST(SceneBuilder, ShapeIdentityIgnoresColoursAndMaterials) {
+  auto build_with = [](glm::vec4 color, float shininess) {
+    RecordBuilder b(16, 16);
+    b.transform.projection = glm::perspective(1.0f, 1.0f, 0.1f, 10.0f);
+    b.lighting.enabled = true;
+    b.lighting.material[0].shininess = shininess;
+    b.quad({-1, -1, -3}, {2, 0, 0}, {0, 2, 0}, color);
+    SceneBuild build;
+    build_trace_scene(b.record, b.drawable, build);
+    return *build.scene.instances.at(0).geometry;
+  };
+  const Geometry white = build_with(glm::vec4(1), 0.0f), red = build_with({1, 0, 0, 1}, 0.0f);
+  const Geometry shiny = build_with(glm::vec4(1), 20.0f);
+  EXPECT_EQ(white.shape_hash, red.shape_hash);
+  EXPECT_EQ(white.shape_hash, shiny.shape_hash);
+  EXPECT_NE(white.shading_hash, red.shading_hash);
+  EXPECT_NE(white.shading_hash, shiny.shading_hash);
+}
+
+TEST(SceneBuilder, EachStateListsItsOwnLights) {
+  RecordBuilder b(16, 16);
+  b.transform.projection = glm::perspective(1.0f, 1.0f, 0.1f, 10.0f);
+  b.directional_light(0, {0, 0, 1});
+  b.quad({-1, -1, -3}, {1, 0, 0}, {0, 1, 0}, glm::vec4(1));
+  b.lighting.light_mask = 2;
+  b.lighting.lights[1].position = glm::vec4(1, 0, 0, 0);
+  b.quad({0, -1, -3}, {1, 0, 0}, {0, 1, 0}, glm::vec4(1));
+  b.lighting.enabled = false;
+  b.quad({0, 0, -3}, {1, 0, 0}, {0, 1, 0}, glm::vec4(1));
+  SceneBuild build;
+  build_trace_scene(b.record, b.drawable, build);
+  ASSERT_EQ(build.scene.lights.size(), 2u);
+  const auto draw_state = [&](size_t command) {
+    return std::get<rec::Draw>(b.record.commands[command]).state;
+  };
+  EXPECT_EQ(build.scene.states[draw_state(0)].lights, (std::vector<uint32_t>{0}));
+  EXPECT_EQ(build.scene.states[draw_state(1)].lights, (std::vector<uint32_t>{1}));
+  // Unlit: no GL lights; at bounce hits lit by the first lit state's.
+  EXPECT_EQ(build.scene.states[draw_state(2)].lights, (std::vector<uint32_t>{0}));
+  EXPECT_EQ(build.scene.lights[1].position, glm::vec4(1, 0, 0, 0));
+  EXPECT_EQ(build.scene.instances.size(), 3u);  // a new light set starts a new instance
+}
+
+TEST(ClassifyDraws, ViewerOfAProjection) {
+  EXPECT_EQ(viewer_of_projection(glm::frustum(-1.0f, 1.0f, -1.0f, 1.0f, 1.0f, 10.0f)),
+            glm::vec4(0, 0, 0, 1));
+  EXPECT_EQ(viewer_of_projection(glm::mat4(1.0f)), glm::vec4(0, 0, 1, 0));
+  EXPECT_EQ(viewer_of_projection(glm::ortho(0.0f, 4.0f, 4.0f, 0.0f, 1.0f, -1.0f)),
+            glm::vec4(0, 0, 1, 0));
+  // A perspective camera moved back by 5 (projection * translate): its centre is at z = 5.
+  const glm::vec4 moved = viewer_of_projection(glm::perspective(1.0f, 1.0f, 0.1f, 10.0f) *
+                                               glm::translate(glm::mat4(1.0f), {0, 0, -5}));
+  EXPECT_NEAR(moved.z, 5.0f, 1e-4f);
+  EXPECT_EQ(moved.w, 1.0f);
 }
 
 TEST(RenderDeviceSelection, UnknownDeviceNameGivesAClearError) {
   ::setenv("GLPT_VK_DEVICE", "no-such-device-xyz", 1);
   std::string error;
-  std::unique_ptr<PathTracer> renderer = PathTracer::create(RenderSettings{}, &error);
+  std::unique_ptr<Renderer> renderer = Renderer::create(RenderSettings{}, &error);
   ::unsetenv("GLPT_VK_DEVICE");
   EXPECT_EQ(renderer, nullptr);
   EXPECT_NE(error.find("GLPT_VK_DEVICE"), std::string::npos) << error;

@@ -225,4 +225,60 @@ TEST_F(RecordTest, EndListInsideBeginEndIsAnError) {
   EXPECT_TRUE(glIsList(list));
 }
 
+// How the primitives were given decides how Mesa splits them (rt_core/record/decompose.hpp):
+// glBegin/glEnd replayed from a display list are indexed draws in Mesa; the execution of
+// GL_COMPILE_AND_EXECUTE is immediate mode.
+TEST_F(RecordTest, DrawsRecordWhetherADisplayListDrewThem) {
+  const GLuint list = glGenLists(1);
+  glNewList(list, GL_COMPILE);
+  triangle();
+  glEndList();
+  triangle();
+  glCallList(list);
+  glNewList(list, GL_COMPILE_AND_EXECUTE);
+  glTranslatef(1, 0, 0);  // a new draw
+  triangle();
+  glEndList();
+  const auto d = draws();
+  ASSERT_EQ(d.size(), 3u);
+  EXPECT_EQ(d[0]->vertices->source, glpt::rec::PrimitiveSource::kImmediate);
+  EXPECT_EQ(d[1]->vertices->source, glpt::rec::PrimitiveSource::kDisplayList);
+  EXPECT_EQ(d[2]->vertices->source, glpt::rec::PrimitiveSource::kImmediate);
+}
+
+void quad(bool colour_inside) {
+  glBegin(GL_QUADS);
+  if (colour_inside) glColor3f(1, 0, 0);
+  glVertex2f(0, 0);
+  glVertex2f(1, 0);
+  glVertex2f(1, 1);
+  glVertex2f(0, 1);
+  glEnd();
+}
+
+// Mesa's fragment shader reads a colour given inside glBegin/glEnd per vertex, and one set only
+// outside as a constant. Mesa's vertex layout keeps the colour once it has one, until the next
+// state change; growing the layout ends its batch.
+TEST_F(RecordTest, DrawsRecordWhichColoursWereGivenPerVertex) {
+  glColor3f(0, 1, 0);
+  glSecondaryColor3f(0, 0, 1);
+  quad(false);
+  quad(true);
+  quad(false);  // continues the draw that has per-vertex colours
+  glBegin(GL_QUADS);
+  glSecondaryColor3f(1, 1, 0);
+  glVertex2f(0, 0);
+  glVertex2f(1, 0);
+  glVertex2f(1, 1);
+  glVertex2f(0, 1);
+  glEnd();
+  const auto d = draws();
+  ASSERT_EQ(d.size(), 3u);
+  EXPECT_EQ(d[0]->vertices->per_vertex, 0u);
+  EXPECT_EQ(d[1]->vertices->per_vertex, glpt::rec::kPerVertexColor);
+  EXPECT_EQ(d[1]->vertices->primitives.size(), 2u);
+  EXPECT_EQ(d[2]->vertices->per_vertex,
+            glpt::rec::kPerVertexColor | glpt::rec::kPerVertexSecondaryColor);
+}
+
 }  // namespace

@@ -8,26 +8,6 @@
 
 namespace {
 
-// Raster mode: it executes every command, depth and stencil clears included (the path-traced
-// mode is not the subject here).
-class RasterMode {
- public:
-  RasterMode() {
-    if (const char* old = std::getenv("GLPT_MODE")) saved_ = old;
-    setenv("GLPT_MODE", "raster", 1);
-  }
-  ~RasterMode() {
-    if (saved_.empty()) {
-      unsetenv("GLPT_MODE");
-    } else {
-      setenv("GLPT_MODE", saved_.c_str(), 1);
-    }
-  }
-
- private:
-  std::string saved_;
-};
-
 class FramebufferReadTest : public GlTest {
  protected:
   void SetUp() override {
@@ -40,7 +20,7 @@ class FramebufferReadTest : public GlTest {
     ctx_.target = nullptr;
     GlTest::TearDown();
   }
-  RasterMode raster_mode_;
+  glpt_test::RasterMode raster_mode_;
   glpt::HeadlessTarget target_{8, 8};
 };
 

@@ -1,0 +1,373 @@
+// Path-traced mode through glpt's GL front end: GL scenes drawn by the exported gl* entry points
+// on a headless drawable, read back with glReadPixels. Each test is a defect of the first,
+// primary-ray path tracer (one projection per frame, one light set per frame, projective
+// modelviews flattened, draw order, depth test and culling ignored, lit faces under parallel
+// projections shadowing themselves) and asserts what GL requires instead, often by comparing
+// with raster mode's image of the same scene (raster mode draws what Mesa draws).
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <functional>
+#include <memory>
+#include <vector>
+
+#include "common/image_io.hpp"
+#include "gl/gl_enums.h"
+#include "gl_shim/context.hpp"
+#include "gl_shim/frame/headless_target.hpp"
+#include "gl_shim/gl_entry_decls.h"
+
+namespace {
+
+constexpr int kSize = 64;
+
+struct Rgba {
+  int r, g, b, a;
+  bool operator==(const Rgba&) const = default;
+};
+
+std::ostream& operator<<(std::ostream& out, const Rgba& c) {
+  return out << "(" << c.r << "," << c.g << "," << c.b << "," << c.a << ")";
+}
+
+struct Image {
+  std::vector<uint8_t> rgba;
+  Rgba at(int x, int y) const {  // GL window coordinates: y = 0 is the bottom row
+    const uint8_t* p = &rgba[(size_t(y) * kSize + size_t(x)) * 4];
+    return {p[0], p[1], p[2], p[3]};
+  }
+  int count(const std::function<bool(Rgba)>& match) const {
+    int n = 0;
+    for (int y = 0; y < kSize; ++y)
+      for (int x = 0; x < kSize; ++x) n += match(at(x, y)) ? 1 : 0;
+    return n;
+  }
+};
+
+// Draws `scene` with GL on a fresh context in GLPT_MODE `mode` ("path" or "raster") and reads
+// the frame back: `frames` times the same frame, the last one read.
+Image render(const char* mode, const std::function<void()>& scene, int frames = 1) {
+  ::setenv("GLPT_MODE", mode, 1);  // read when the context creates its renderer
+  glpt::rec::DrawableConfig config;
+  config.double_buffered = false;
+  auto target = std::make_unique<glpt::HeadlessTarget>(kSize, kSize, config);
+  auto context = std::make_unique<glpt::Context>(nullptr);
+  glpt::make_current_headless(*context, *target);
+  Image image;
+  image.rgba.resize(size_t{kSize} * kSize * 4);
+  for (int frame = 0; frame < frames; ++frame) {
+    scene();
+    glFinish();
+  }
+  glReadPixels(0, 0, kSize, kSize, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
+  EXPECT_EQ(glGetError(), GLenum{GL_NO_ERROR});
+  // GLPT_TEST_IMAGES=DIR keeps every image as DIR/<test>_<mode>.png (for looking at failures).
+  if (const char* dir = std::getenv("GLPT_TEST_IMAGES")) {
+    const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
+    const std::string path = std::string(dir) + "/" + test->name() + "_" + mode + ".png";
+    glpt::write_png_rgba8(path, kSize, kSize, image.rgba.data(), true, nullptr);
+  }
+  glpt::set_current_context(nullptr);
+  context.reset();
+  ::unsetenv("GLPT_MODE");
+  return image;
+}
+
+// A 3-D camera (60 degree frustum, near 1, far 20), depth test on, cleared to dark blue.
+void camera_3d() {
+  glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
+  glFrustum(-0.577, 0.577, -0.577, 0.577, 1.0, 20.0);
+  glMatrixMode(GL_MODELVIEW);
+  glLoadIdentity();
+  glClearColor(0.0f, 0.0f, 0.25f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glEnable(GL_DEPTH_TEST);
+}
+
+void quad(float x0, float y0, float x1, float y1, float z) {
+  glBegin(GL_QUADS);
+  glNormal3f(0, 0, 1);
+  glVertex3f(x0, y0, z);
+  glVertex3f(x1, y0, z);
+  glVertex3f(x1, y1, z);
+  glVertex3f(x0, y1, z);
+  glEnd();
+}
+
+void light(GLenum light, float r, float g, float b) {
+  const float position[] = {0, 0, 1, 0};
+  const float diffuse[] = {r, g, b, 1};
+  glLightfv(light, GL_POSITION, position);
+  glLightfv(light, GL_DIFFUSE, diffuse);
+}
+
+// Where eye-space (x, y, z) lands with camera_3d()'s projection.
+int pixel_of(float coordinate, float z) {
+  return static_cast<int>((coordinate / (-z * 0.577f) * 0.5f + 0.5f) * kSize);
+}
+
+TEST(PathTracedGl, EachDrawIsLitByItsOwnLights) {
+  // Left quad: GL_LIGHT0 (red) only. Right quad: GL_LIGHT1 (green) only. One light set for the
+  // frame (the first lit draw's) would light both red.
+  Image image = render("path", [] {
+    camera_3d();
+    glEnable(GL_LIGHTING);
+    light(GL_LIGHT0, 1, 0, 0);
+    light(GL_LIGHT1, 0, 1, 0);
+    glEnable(GL_LIGHT0);
+    quad(-2.2f, -1, -0.2f, 1, -5);
+    glDisable(GL_LIGHT0);
+    glEnable(GL_LIGHT1);
+    quad(0.2f, -1, 2.2f, 1, -5);
+  });
+  const Rgba left = image.at(pixel_of(-1.2f, -5), kSize / 2);
+  const Rgba right = image.at(pixel_of(1.2f, -5), kSize / 2);
+  EXPECT_GT(left.r, 150) << left;  // 0.8 * red + ambient
+  EXPECT_LT(left.g, 40) << left;
+  EXPECT_GT(right.g, 150) << right;
+  EXPECT_LT(right.r, 40) << right;
+}
+
+TEST(PathTracedGl, HudAndSceneBothAppear) {
+  // A lit 3-D quad under a perspective projection, then a 2-D HUD under glOrtho: both show.
+  auto scene = [] {
+    camera_3d();
+    glEnable(GL_LIGHTING);
+    glEnable(GL_LIGHT0);
+    quad(-1, -1, 1, 1, -4);
+    glDisable(GL_LIGHTING);
+    glDisable(GL_DEPTH_TEST);
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glOrtho(0, kSize, 0, kSize, -1, 1);
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+    glColor3f(1, 1, 0);
+    quad(0, 0, 16, 16, 0);    // a corner of the HUD
+    quad(28, 40, 36, 48, 0);  // over the 3-D quad
+  };
+  Image traced = render("path", scene), rasterized = render("raster", scene);
+  EXPECT_EQ(traced.at(8, 8), (Rgba{255, 255, 0, 255}));
+  EXPECT_EQ(traced.at(32, 44), (Rgba{255, 255, 0, 255}));
+  const Rgba centre = traced.at(32, 30);
+  EXPECT_GT(centre.r, 150) << centre;  // the lit quad (Mesa: 0.84 -> 214)
+  EXPECT_NEAR(centre.r, rasterized.at(32, 30).r, 16) << centre << " vs " << rasterized.at(32, 30);
+  EXPECT_EQ(traced.at(60, 4), (Rgba{0, 0, 64, 255}));  // the clear colour
+}
+
+TEST(PathTracedGl, WithoutDepthTestALaterQuadCoversAnEarlierOne) {
+  // The far green quad is drawn after the near red one with the depth test off: GL shows it.
+  Image image = render("path", [] {
+    camera_3d();
+    glDisable(GL_DEPTH_TEST);
+    glEnable(GL_LIGHTING);
+    glEnable(GL_LIGHT0);
+    glEnable(GL_COLOR_MATERIAL);
+    glColor3f(1, 0, 0);
+    quad(-1, -1, 1, 1, -3);
+    glColor3f(0, 1, 0);
+    quad(-1, -1, 1, 1, -6);
+  });
+  // (Dim: in the path tracer the near quad does shadow the far one from the light.)
+  const Rgba overlap = image.at(kSize / 2, kSize / 2);
+  EXPECT_GT(overlap.g, 40) << overlap;
+  EXPECT_LT(overlap.r, 10) << overlap;
+  const Rgba near_only = image.at(pixel_of(0.8f, -3), kSize / 2);  // outside the far quad
+  EXPECT_GT(near_only.r, 150) << near_only;
+}
+
+TEST(PathTracedGl, CulledFacesAreAbsent) {
+  Image image = render("path", [] {
+    camera_3d();
+    glEnable(GL_LIGHTING);
+    glEnable(GL_LIGHT0);
+    glEnable(GL_CULL_FACE);
+    glCullFace(GL_BACK);
+    quad(-2.2f, -1, -0.2f, 1, -5);  // counter-clockwise: front, drawn
+    glBegin(GL_QUADS);              // clockwise: back, culled
+    glNormal3f(0, 0, 1);
+    glVertex3f(0.2f, -1, -5);
+    glVertex3f(0.2f, 1, -5);
+    glVertex3f(2.2f, 1, -5);
+    glVertex3f(2.2f, -1, -5);
+    glEnd();
+  });
+  EXPECT_GT(image.at(pixel_of(-1.2f, -5), kSize / 2).r, 150);
+  EXPECT_EQ(image.at(pixel_of(1.2f, -5), kSize / 2), (Rgba{0, 0, 64, 255}));
+}
+
+// GL's planar projection of everything onto `plane` from the light at `light` (homogeneous),
+// as OpenGL demos build it, column-major for glMultMatrixf.
+void shadow_matrix(const float plane[4], const float light[4], float m[16]) {
+  const float dot =
+      plane[0] * light[0] + plane[1] * light[1] + plane[2] * light[2] + plane[3] * light[3];
+  for (int column = 0; column < 4; ++column)
+    for (int row = 0; row < 4; ++row)
+      m[column * 4 + row] = (row == column ? dot : 0.0f) - light[row] * plane[column];
+}
+
+TEST(PathTracedGl, PlanarShadowIsWhereMesaDrawsIt) {
+  // A floor, a small quad above it, and its planar shadow: the same quad drawn under a
+  // projective modelview (bottom row not 0, 0, 0, 1) in black, over the floor. The traced image
+  // must show the black shadow on exactly the pixels raster mode (Mesa) shows it on.
+  auto scene = [] {
+    camera_3d();
+    glEnable(GL_LIGHTING);
+    glEnable(GL_LIGHT0);
+    const float light_position[] = {1.0f, 4.0f, -3.0f, 1.0f};
+    glLightfv(GL_LIGHT0, GL_POSITION, light_position);
+    glBegin(GL_QUADS);  // the floor, y = -1
+    glNormal3f(0, 1, 0);
+    glVertex3f(-3, -1, -2);
+    glVertex3f(3, -1, -2);
+    glVertex3f(3, -1, -9);
+    glVertex3f(-3, -1, -9);
+    glEnd();
+    auto occluder = [] {
+      glBegin(GL_QUADS);
+      glNormal3f(0, 1, 0);
+      glVertex3f(-1.5f, 0.5f, -4.5f);
+      glVertex3f(0.5f, 0.5f, -4.5f);
+      glVertex3f(0.5f, 0.5f, -6.5f);
+      glVertex3f(-1.5f, 0.5f, -6.5f);
+      glEnd();
+    };
+    occluder();
+    const float floor_plane[] = {0, 1, 0, 1};
+    float m[16];
+    shadow_matrix(floor_plane, light_position, m);
+    glDisable(GL_LIGHTING);
+    glDisable(GL_DEPTH_TEST);
+    glColor3f(0, 0, 0);
+    glPushMatrix();
+    glMultMatrixf(m);
+    occluder();
+    glPopMatrix();
+  };
+  Image traced = render("path", scene), rasterized = render("raster", scene);
+  auto black = [](Rgba c) { return c.r == 0 && c.g == 0 && c.b == 0; };
+  const int shadow_pixels = rasterized.count(black);
+  ASSERT_GT(shadow_pixels, 20);
+  int both = 0, either = 0;
+  for (int y = 0; y < kSize; ++y)
+    for (int x = 0; x < kSize; ++x) {
+      const bool a = black(traced.at(x, y)), b = black(rasterized.at(x, y));
+      both += a && b;
+      either += a || b;
+    }
+  EXPECT_EQ(both, shadow_pixels);
+  EXPECT_EQ(either, shadow_pixels);
+}
+
+void lit_face_under(const std::function<void()>& projection) {
+  glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
+  projection();
+  glMatrixMode(GL_MODELVIEW);
+  glLoadIdentity();
+  glClearColor(0, 0, 0, 1);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glEnable(GL_LIGHTING);
+  glEnable(GL_LIGHT0);  // directional, towards +Z: GL lights the face with N.L = 1
+  quad(-0.5f, -0.5f, 0.5f, 0.5f, 0.0f);
+}
+
+TEST(PathTracedGl, LitFaceUnderAnIdentityOrFlippedProjectionIsLit) {
+  // Both look down +Z at the face (the identity projection keeps z, glOrtho with near and far
+  // swapped too): seen from behind its normal. GL lights it as its normal says; the tracer must
+  // not shadow it with itself.
+  const std::function<void()> projections[] = {[] {}, [] { glOrtho(-1, 1, -1, 1, 1, -1); }};
+  for (const auto& projection : projections) {
+    auto scene = [&] { lit_face_under(projection); };
+    Image traced = render("path", scene), rasterized = render("raster", scene);
+    const Rgba mesa = rasterized.at(kSize / 2, kSize / 2), glpt = traced.at(kSize / 2, kSize / 2);
+    EXPECT_EQ(mesa.r, 214);  // 0.8 + 0.2 * 0.2
+    EXPECT_NEAR(glpt.r, mesa.r, 12) << glpt;
+  }
+}
+
+TEST(PathTracedGl, ClipPlanesCutTracedSurfacesWhereMesaDoes) {
+  auto scene = [] {
+    camera_3d();
+    const double plane[] = {1.0, 0.5, 0.0, 0.1};  // keeps x + y / 2 >= -0.1, in eye space
+    glClipPlane(GL_CLIP_PLANE0, plane);
+    glEnable(GL_CLIP_PLANE0);
+    glEnable(GL_LIGHTING);
+    glEnable(GL_LIGHT0);
+    quad(-1, -1, 1, 1, -4);
+  };
+  Image traced = render("path", scene), rasterized = render("raster", scene);
+  auto background = [](Rgba c) { return c == Rgba{0, 0, 64, 255}; };
+  const int uncovered = rasterized.count(background);
+  EXPECT_GT(uncovered, kSize * kSize / 2);  // the plane removes part of the quad
+  EXPECT_LT(uncovered, kSize * kSize - 100);
+  for (int y = 0; y < kSize; ++y)
+    for (int x = 0; x < kSize; ++x)
+      ASSERT_EQ(background(traced.at(x, y)), background(rasterized.at(x, y))) << x << "," << y;
+}
+
+TEST(PathTracedGl, LinesAreDepthTestedAgainstTheTracedSurfaces) {
+  // A lit quad at z = -5, a line in front of it and one behind it: only the front one shows.
+  Image image = render("path", [] {
+    camera_3d();
+    glEnable(GL_LIGHTING);
+    glEnable(GL_LIGHT0);
+    quad(-1, -1, 1, 1, -5);
+    glDisable(GL_LIGHTING);
+    glColor3f(1, 0, 1);
+    glBegin(GL_LINES);
+    glVertex3f(-3, 0.25f, -4);  // in front
+    glVertex3f(3, 0.25f, -4);
+    glVertex3f(-3, -0.25f, -6);  // behind
+    glVertex3f(3, -0.25f, -6);
+    glEnd();
+  });
+  auto magenta = [](Rgba c) { return c.r == 255 && c.g == 0 && c.b == 255; };
+  const int front_row = pixel_of(0.25f, -4), back_row = pixel_of(-0.25f, -6);
+  int front = 0, back_over_quad = 0, back_outside = 0;
+  for (int x = 0; x < kSize; ++x) {
+    front += magenta(image.at(x, front_row)) ? 1 : 0;
+    if (x > pixel_of(-0.9f, -5) && x < pixel_of(0.9f, -5))
+      back_over_quad += magenta(image.at(x, back_row)) ? 1 : 0;
+    else
+      back_outside += magenta(image.at(x, back_row)) ? 1 : 0;
+  }
+  EXPECT_EQ(front, kSize);
+  EXPECT_EQ(back_over_quad, 0);
+  EXPECT_GT(back_outside, 10);
+}
+
+TEST(PathTracedGl, ClearsAndBackgroundsKeepTheirPlaceInTheRecord) {
+  // A 2-D background drawn first stays behind the 3-D scene; a scissored clear after the scene
+  // wipes it where it clears.
+  Image image = render("path", [] {
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glOrtho(0, kSize, 0, kSize, -1, 1);
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glColor3f(0, 0.6f, 0);
+    quad(0, 0, kSize, kSize, 0);  // background, depth test off
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glFrustum(-0.577, 0.577, -0.577, 0.577, 1.0, 20.0);
+    glMatrixMode(GL_MODELVIEW);
+    glEnable(GL_DEPTH_TEST);
+    glClear(GL_DEPTH_BUFFER_BIT);
+    glEnable(GL_LIGHTING);
+    glEnable(GL_LIGHT0);
+    quad(-1, -1, 1, 1, -4);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(0, 0, 36, 36);
+    glClearColor(1, 0, 1, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glDisable(GL_SCISSOR_TEST);
+  });
+  EXPECT_EQ(image.at(32, 32), (Rgba{255, 0, 255, 255}));   // scene, then cleared
+  EXPECT_GT(image.at(40, 40).r, 150) << image.at(40, 40);  // scene
+  EXPECT_EQ(image.at(60, 60), (Rgba{0, 153, 0, 255}));     // background
+}
+
+}  // namespace
