@@ -129,9 +129,11 @@ void record_bitmap(Context& ctx, rec::Bitmap b) {
       rec::Bitmap& cached = cached_bitmaps(ctx);
       merge(cached, b);
       cached.state = b.state;
+      cached.raster.tex_coord = b.raster.tex_coord;  // Mesa's constants at the flush
       return;
     }
     revalidate(ctx, b.state);  // Mesa flushes the cache after validating this call's state
+    cached_bitmaps(ctx).raster.tex_coord = b.raster.tex_coord;
   }
   cache.open = true;
   cache.x = x;

@@ -39,6 +39,20 @@ rec::RasterPosition rounded_raster_position(const Context& ctx) {
   return p;
 }
 
+// The texture coordinates Mesa's fragments of pixel rectangles have (measured against OSMesa):
+// current ones, untransformed (no texture matrix, no texgen), not the raster position's.
+// glDrawPixels has unit 0's current coordinates; glCopyPixels unit 0's as Mesa last flushed the
+// current values (usually at the glRasterPos); both (0, 0, 0, 1) on the other units. Bitmaps
+// have every unit's as last flushed. (Bitmaps under a texture matrix or texgen read the quad's
+// own coordinates instead: counted by the executor.)
+rec::RasterPosition with_mesa_tex_coords(rec::RasterPosition p,
+                                         const std::array<glm::vec4, rec::kMaxTextureUnits>& from,
+                                         bool all_units) {
+  for (int u = 0; u < rec::kMaxTextureUnits; ++u)
+    p.tex_coord[u] = u == 0 || all_units ? from[u] : glm::vec4(0, 0, 0, 1);
+  return p;
+}
+
 // Mesa validates its state (_mesa_update_state, which analyses the matrices) at these points of
 // glBitmap, glDrawPixels and glCopyPixels; analysis decides later matrix arithmetic.
 void validate_state(Context& ctx) { ctx.matrices.validate_for_draw(ctx.transform.clip_plane_mask); }
@@ -99,7 +113,7 @@ void glBitmap(Context& ctx, GLsizei width, GLsizei height, GLfloat xorig, GLfloa
   if (width > 0 && height > 0 && bitmap != nullptr) {
     if (size_t(width) * size_t(height) > kMaxGroups) return record_error(ctx, GL_OUT_OF_MEMORY);
     rec::Bitmap b;
-    b.raster = rp;
+    b.raster = with_mesa_tex_coords(rp, ctx.flushed_tex_coord, true);
     const float epsilon = 0.0001f;
     b.origin = glm::vec2(std::floor(rp.window.x + epsilon - xorig),
                          std::floor(rp.window.y + epsilon - yorig));
@@ -117,6 +131,7 @@ void glDrawPixels(Context& ctx, GLsizei width, GLsizei height, GLenum format, GL
                   const void* pixels) {
   if (width < 0 || height < 0) return record_error(ctx, GL_INVALID_VALUE);
   validate_state(ctx);
+  ctx.flushed_tex_coord = ctx.current.tex_coord;  // Mesa's FLUSH_CURRENT
   if (const GLenum error = check_format_and_type(format, type); error != GL_NO_ERROR)
     return record_error(ctx, error);
   const PixelClass kind = pixel_class(format);
@@ -156,7 +171,7 @@ void glDrawPixels(Context& ctx, GLsizei width, GLsizei height, GLenum format, GL
       d.color = mesa_transfer_colors(unpack_color_raw(source), shape.width, shape.height,
                                      ctx.pixel_transfer);
     }
-    d.raster = rounded_raster_position(ctx);
+    d.raster = with_mesa_tex_coords(rounded_raster_position(ctx), ctx.current.tex_coord, false);
     record(ctx, std::move(d));
   });
 }
@@ -172,7 +187,7 @@ void glCopyPixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height,
     return record_error(ctx, GL_INVALID_OPERATION);
   if (!ctx.raster_position.valid || width == 0 || height == 0) return;
   rec::CopyPixels c;
-  c.raster = rounded_raster_position(ctx);
+  c.raster = with_mesa_tex_coords(rounded_raster_position(ctx), ctx.flushed_tex_coord, false);
   c.kind = type == GL_DEPTH     ? rec::PixelKind::kDepth
            : type == GL_STENCIL ? rec::PixelKind::kStencil
                                 : rec::PixelKind::kColor;

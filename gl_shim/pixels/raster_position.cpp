@@ -257,6 +257,7 @@ bool inside_clip_planes(Context& ctx, const glm::vec4& clip) {
 
 void set_raster_position(Context& ctx, const glm::vec4& object) {
   ctx.matrices.validate_for_draw(ctx.transform.clip_plane_mask);  // Mesa's _mesa_update_state
+  ctx.flushed_tex_coord = ctx.current.tex_coord;                  // Mesa's FLUSH_CURRENT
   rec::RasterPosition& rp = ctx.raster_position;
   const glm::vec4 eye = transform_point(ctx.matrices.modelview.top(), object);
   const glm::vec4 clip = transform_point(ctx.matrices.projection.top(), eye);
@@ -297,6 +298,7 @@ void set_raster_position(Context& ctx, const glm::vec4& object) {
 }
 
 void set_window_position(Context& ctx, float x, float y, float z) {
+  ctx.flushed_tex_coord = ctx.current.tex_coord;  // Mesa's FLUSH_CURRENT
   rec::RasterPosition& rp = ctx.raster_position;
   const FramebufferState& fb = ctx.framebuffer;
   // In float, from Mesa's float depth range.

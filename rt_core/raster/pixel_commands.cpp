@@ -16,8 +16,9 @@
 //   here as one masked pass per bit instead of a stencil export;
 // - glCopyPixels(GL_COLOR) that Mesa does with a blit (no zoom, no fragment operation that
 //   changes the result, see blit_region) copies the pixels, ignoring the colour write mask.
-// Texture coordinates are the raster position's; Mesa uses the current ones instead, so a
-// textured pixel rectangle is counted in FrameStats::inexpressible.
+// Texture coordinates are Mesa's: the current ones the front end records, untransformed (bitmaps
+// under a texture matrix or texgen, whose coordinates Mesa takes from its bitmap quad, are
+// counted in FrameStats::inexpressible).
 //
 // glAccum runs on the CPU (accumulation.hpp), as in Mesa: the commands before it are executed
 // first (raster_renderer.cpp splits the submission), colour is read back and written back.
@@ -441,11 +442,17 @@ void RasterRenderer::record_pixels(Recording& r, size_t index) {
   transform->clip_plane_mask = 0;
   transform->normalize = transform->rescale_normal = false;
   auto texturing = std::make_shared<rec::TexturingState>(*state.texturing);
-  bool textured = false;
+  // The command carries Mesa's texture coordinates (the current ones, see the front end): no
+  // texgen or texture matrix applies. Bitmaps under a texture matrix or texgen get the
+  // coordinates of Mesa's bitmap quad instead, which are not reproduced.
+  bool unreproduced_coords = false;
   for (rec::TextureUnitState& unit : texturing->units) {
+    if (image.bitmap && unit.target != 0 &&
+        (unit.texgen_mask != 0 || unit.matrix != glm::mat4(1.0f)))
+      unreproduced_coords = true;
     unit.texgen_mask = 0;
+    unit.matrix = glm::mat4(1.0f);
     if (depth_image) unit = rec::TextureUnitState{};
-    textured = textured || unit.target != 0;
   }
   auto raster = std::make_shared<rec::RasterState>(*state.raster);
   raster->primitive = rec::PrimitiveState{};
@@ -458,8 +465,8 @@ void RasterRenderer::record_pixels(Recording& r, size_t index) {
   context.drawable_has_alpha = drawable_.has_alpha;
   context.stencil_bits = drawable_.stencil_bits;
   DrawSetup setup = make_draw_setup(pixel_state, context);
-  // Not reproduced: Mesa's texture coordinates for pixel rectangles (the current ones, not the
-  // raster position's); its colour images with GL_COLOR_SUM on (their colour becomes unrelated
+  // Not reproduced: the texture coordinates of bitmaps under a texture matrix or texgen; Mesa's
+  // colour images with GL_COLOR_SUM on (their colour becomes unrelated
   // to the image: the fragment program reads inputs the pass-through shader lacks); the colour
   // maps of copies (the record does not carry the maps yet); and, for zoomed images that cross
   // the window's edge, the groups of fragments on group edges (Mesa clips the quad first).
@@ -471,7 +478,7 @@ void RasterRenderer::record_pixels(Recording& r, size_t index) {
                        std::max(image.origin.x, corner.x) > float(drawable_.width) ||
                        std::max(image.origin.y, corner.y) > float(drawable_.height);
   const bool whole_zoom = image.zoom == glm::round(image.zoom);
-  if (setup.approximated || textured || (color_sum && !image.bitmap && !depth_image) ||
+  if (setup.approximated || unreproduced_coords || (color_sum && !image.bitmap && !depth_image) ||
       (image.copy && state.pixel_transfer->map_color) || (clipped && !whole_zoom))
     ++r.stats->inexpressible;
   PipelineKey& key = setup.key;

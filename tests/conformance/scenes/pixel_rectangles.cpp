@@ -503,6 +503,62 @@ GLPT_EXACT_SCENE(pixels_display_list_images, 64, 64) {
   glDeleteLists(list, 1);
 }
 
+// Texturing of pixel rectangles as Mesa does it: the fragments take the *current* texture
+// coordinates, untransformed (glDrawPixels and glCopyPixels unit 0's, (0, 0, 0, 1) on the other
+// units; bitmaps every unit's), not the raster position's.
+GLPT_EXACT_SCENE(pixels_textured_rectangles, 64, 64) {
+  clear_all(0.2f, 0.2f, 0.25f);
+  pixel_projection(64, 64);
+  const std::vector<uint8_t> image =
+      gradient(32, 32, Rgba8{250, 30, 30, 255}, Rgba8{30, 250, 30, 255}, Rgba8{30, 30, 250, 255},
+               Rgba8{250, 250, 250, 128}, 4);
+  glActiveTexture(GL_TEXTURE1);
+  texture_2d(GL_RGBA, 32, 32, image, GL_NEAREST, GL_REPEAT);
+  glActiveTexture(GL_TEXTURE0);
+  texture_2d(GL_RGBA, 32, 32, image, GL_LINEAR, GL_REPEAT);
+  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+  glEnable(GL_TEXTURE_2D);
+  const std::vector<GLubyte> p = pattern(12, 10);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glMatrixMode(GL_TEXTURE);
+  glTranslatef(0.25f, 0.1f, 0);  // moves the raster position's coordinates, not Mesa's
+  glMatrixMode(GL_MODELVIEW);
+  glTexCoord2f(0.3f, 0.7f);
+  glRasterPos2i(2, 2);
+  glTexCoord4f(0.8f, 0.2f, 0.0f, 2.0f);  // current after the raster position: this one counts
+  glDrawPixels(12, 10, GL_RGBA, GL_UNSIGNED_BYTE, p.data());
+  glPixelZoom(2, 1.5f);  // not a plain copy: the fragments are textured
+  glRasterPos2i(18, 2);
+  glTexCoord2f(0.55f, 0.45f);
+  glCopyPixels(2, 2, 12, 10, GL_COLOR);
+  glPixelZoom(1, 1);
+  glMatrixMode(GL_TEXTURE);
+  glLoadIdentity();
+  glMatrixMode(GL_MODELVIEW);
+  GLubyte square[8 * 2];
+  std::memset(square, 0xFF, sizeof square);
+  glTexCoord2f(0.1f, 0.9f);
+  glRasterPos2i(2, 30);
+  glBitmap(8, 8, 0, 0, 10, 0, square);
+  glTexCoord2f(0.6f, 0.3f);
+  glRasterPos2i(14, 30);
+  glBitmap(8, 8, 0, 0, 10, 0, square);
+  // Unit 1 as well: bitmaps take its current coordinates, images (0, 0).
+  glActiveTexture(GL_TEXTURE1);
+  glEnable(GL_TEXTURE_2D);
+  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_ADD);
+  glActiveTexture(GL_TEXTURE0);
+  glMultiTexCoord2f(GL_TEXTURE1, 0.4f, 0.35f);
+  glRasterPos2i(30, 30);
+  glBitmap(8, 8, 0, 0, 0, 0, square);
+  glRasterPos2i(42, 30);
+  glDrawPixels(12, 10, GL_RGBA, GL_UNSIGNED_BYTE, p.data());
+  glActiveTexture(GL_TEXTURE1);
+  glDisable(GL_TEXTURE_2D);
+  glActiveTexture(GL_TEXTURE0);
+  glDisable(GL_TEXTURE_2D);
+}
+
 // ---- fragment operations on pixel rectangles -------------------------------------------------
 
 // A w x h RGBA8 image whose alpha rises from 0 at the left to 255 at the right.
