@@ -149,6 +149,39 @@ TEST_F(PixelCommandTest, LargeBitmapsAndAccumulationGoBeforeTheCache) {
   EXPECT_TRUE(std::holds_alternative<glpt::rec::Bitmap>(c[3]));
 }
 
+// Mesa textures pixel rectangles with current coordinates, not the raster position's: images
+// with unit 0's at the call, copies and bitmaps with those current at the last glRasterPos.
+TEST_F(PixelCommandTest, PixelRectanglesTakeMesasTextureCoordinates) {
+  glMatrixMode(GL_TEXTURE);
+  glTranslatef(0.5f, 0, 0);  // moves the raster position's coordinates only
+  glMatrixMode(GL_MODELVIEW);
+  glTexCoord2f(0.1f, 0.2f);
+  glMultiTexCoord2f(GL_TEXTURE1, 0.3f, 0.4f);
+  glRasterPos2i(1, 1);
+  glTexCoord2f(0.7f, 0.8f);  // after the raster position
+  const GLubyte pixel[4] = {1, 2, 3, 4};
+  glCopyPixels(0, 0, 1, 1, GL_COLOR);
+  const GLubyte bit = 0x80;
+  glBitmap(1, 1, 0, 0, 0, 0, &bit);
+  glDrawPixels(1, 1, GL_RGBA, GL_UNSIGNED_BYTE, pixel);
+  glCopyPixels(0, 0, 1, 1, GL_COLOR);  // glDrawPixels flushed the current values
+  const auto c = commands<glpt::rec::CopyPixels>();
+  const auto b = commands<glpt::rec::Bitmap>();
+  const auto d = commands<glpt::rec::DrawPixels>();
+  ASSERT_EQ(c.size(), 2u);
+  ASSERT_EQ(b.size(), 1u);
+  ASSERT_EQ(d.size(), 1u);
+  EXPECT_EQ(c[0]->raster.tex_coord[0], glm::vec4(0.1f, 0.2f, 0, 1));
+  EXPECT_EQ(c[0]->raster.tex_coord[1], glm::vec4(0, 0, 0, 1));
+  EXPECT_EQ(b[0]->raster.tex_coord[0], glm::vec4(0.1f, 0.2f, 0, 1));
+  EXPECT_EQ(b[0]->raster.tex_coord[1], glm::vec4(0.3f, 0.4f, 0, 1));
+  EXPECT_EQ(d[0]->raster.tex_coord[0], glm::vec4(0.7f, 0.8f, 0, 1));
+  EXPECT_EQ(c[1]->raster.tex_coord[0], glm::vec4(0.7f, 0.8f, 0, 1));
+  GLfloat raster[4];
+  glGetFloatv(GL_CURRENT_RASTER_TEXTURE_COORDS, raster);
+  EXPECT_FLOAT_EQ(raster[0], 0.6f);  // the raster position's own, transformed
+}
+
 TEST_F(PixelCommandTest, DrawPixelsUnpacksFormatsAndRoundsThePosition) {
   glRasterPos2f(2.5f, 3.49f);  // rounded half away from zero: (3, 3)
   const GLubyte rgb[2 * 2 * 3] = {255, 0, 51, 0, 255, 102, 10, 20, 30, 40, 50, 60};
