@@ -3,6 +3,7 @@
 // current on each thread (GL's own model).
 #pragma once
 
+#include <array>
 #include <memory>
 #include <optional>
 #include <string>
@@ -18,6 +19,8 @@
 #include "gl_shim/frame/state_snapshot.hpp"
 #include "gl_shim/geometry/vertex_assembly.hpp"
 #include "gl_shim/gl_commands.hpp"
+#include "gl_shim/pixels/bitmap_cache.hpp"
+#include "gl_shim/pixels/raster_position.hpp"
 #include "gl_shim/state/attrib_stack.hpp"
 #include "gl_shim/state/color_index_state.hpp"
 #include "gl_shim/state/current_attributes.hpp"
@@ -59,6 +62,12 @@ class Context {
   rec::PixelTransferState pixel_transfer;
   EnableState enables;  // capabilities without a field in the blocks above
   CurrentAttributes current;
+  rec::RasterPosition raster_position = initial_raster_position();  // GL 1.5 2.13
+  BitmapCache bitmap_cache;
+  // The current texture coordinates as Mesa's GL state last saw them (its FLUSH_CURRENT: at
+  // glRasterPos, glWindowPos, glDrawPixels): what its bitmaps and copies are textured with.
+  std::array<glm::vec4, rec::kMaxTextureUnits> flushed_tex_coord =
+      CurrentAttributes().tex_coord;  // Mesa's, reproduced in the record (pixels/bitmap_cache.hpp)
   FramebufferState framebuffer;
   ColorIndexState color_index;  // kept for queries only (glpt renders RGBA)
   HintState hints;

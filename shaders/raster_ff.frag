@@ -5,7 +5,10 @@
 // function in the pipeline. Specialization constants (raster_types.h) select each unit's target,
 // environment and texture base format, so a pipeline contains only what its state uses.
 //
-// Built twice: GLPT_FLAT 1 takes the colours of the provoking vertex (GL_FLAT).
+// Built twice: GLPT_FLAT 1 takes the colours of the provoking vertex (GL_FLAT). Built twice more
+// for pixel rectangles: GLPT_PIXELS 1 takes the fragment colour (or, for bitmaps and stencil
+// images, whether there is a fragment) from the image in the pixels buffer; GLPT_PIXELS 2 also
+// its depth (depth images), which needs gl_FragDepth and so a shader of its own.
 // GLPT_GBUFFER 1: path-traced mode's G-buffer pass (after raster_gbuffer.geom): the same coverage,
 // stipple, texturing and alpha test, but the outputs are the G-buffer (gbuffer_layout.h).
 #extension GL_GOOGLE_include_directive : require
@@ -16,6 +19,10 @@
 #endif
 #if GLPT_GBUFFER
 #include "gbuffer_layout.h"
+#endif
+
+#ifndef GLPT_PIXELS
+#define GLPT_PIXELS 0
 #endif
 
 layout(constant_id = GLPT_SC_UNIT0 + 0) const uint kUnit0 = 0u;
@@ -56,6 +63,12 @@ layout(set = 0, binding = GLPT_RASTER_BINDING_TEXTURES + 12) uniform sampler1D u
 layout(set = 0, binding = GLPT_RASTER_BINDING_TEXTURES + 13) uniform sampler2D u_tex2d_3;
 layout(set = 0, binding = GLPT_RASTER_BINDING_TEXTURES + 14) uniform sampler3D u_tex3d_3;
 layout(set = 0, binding = GLPT_RASTER_BINDING_TEXTURES + 15) uniform samplerCube u_texcube_3;
+
+#if GLPT_PIXELS
+layout(std430, set = 0, binding = GLPT_RASTER_BINDING_PIXELS) readonly buffer Pixels {
+  uint pixel_words[];
+};
+#endif
 
 #if GLPT_FLAT
 #define INTERPOLATION flat
@@ -244,6 +257,65 @@ bool alpha_test_passes(float alpha, float ref) {
   return true;                                  // ALWAYS
 }
 
+#if GLPT_PIXELS
+// GL 1.5 3.6.4 "Zoom": the image group whose zoomed rectangle holds the fragment's centre, as
+// Mesa picks it where a centre lies exactly on a group edge: tabulated per window column and row
+// (and per triangle of Mesa's quad) by rt_core/raster/pixel_quad.cpp.
+ivec2 pixel_group() {
+  ivec2 window = ivec2(floor(gl_FragCoord.xy)) - ivec2(int(S.pixel_table.y), int(S.pixel_table.z));
+  ivec2 size = ivec2(S.pixel_image.zw);
+  if (S.pixel_table.x == 0xFFFFFFFFu) return clamp(window, ivec2(0), size - 1);
+  bool first = dot(S.pixel_diagonal.xy, gl_FragCoord.xy) + S.pixel_diagonal.z >= 0.0;
+  uint column = pixel_words[S.pixel_table.x + uint(max(window.x, 0))];
+  uint row = pixel_words[S.pixel_table.x + S.pixel_table.w + uint(max(window.y, 0))];
+  return ivec2(first ? column & 0xFFFFu : column >> 16u, first ? row & 0xFFFFu : row >> 16u);
+}
+
+// The fragment colour of a pixel rectangle: the image's colour for colour images, `color` (the
+// raster colour) otherwise. Depth images give the fragment depth; bitmaps and stencil passes
+// discard the fragments their value does not select (push.indices.z). Groups outside the
+// stored rectangle of a copy read as zero.
+vec4 pixel_fragment(vec4 color) {
+  ivec2 g = pixel_group();
+  // Copies count rows from the top (Mesa reads its y-inverted buffer into the texture).
+
+  ivec2 p = g - ivec2(S.pixel_stored.xy);
+  bool stored = all(greaterThanEqual(p, ivec2(0))) && all(lessThan(p, ivec2(S.pixel_stored.zw)));
+  uint index = stored ? uint(p.y) * S.pixel_stored.z + uint(p.x) : 0u;
+  uint word = S.pixel_image.y + index;
+  uint format = S.pixel_image.x;
+  float depth = gl_FragCoord.z;
+  uint value = 0u;
+  if (format == GLPT_PIXELS_RGBA32F) {
+    word = S.pixel_image.y + 4u * index;
+    vec4 c = vec4(uintBitsToFloat(pixel_words[word]), uintBitsToFloat(pixel_words[word + 1u]),
+                  uintBitsToFloat(pixel_words[word + 2u]), uintBitsToFloat(pixel_words[word + 3u]));
+    color = clamp((stored ? c : vec4(0.0)) * S.pixel_scale + S.pixel_bias, 0.0, 1.0);
+  } else if (format == GLPT_PIXELS_RGBA8) {
+    // A copy of the BGRA8 colour buffer; bytes times 1/255, as llvmpipe converts Mesa's copy.
+    uint b = pixel_words[word];
+    vec4 c = vec4(uvec4(b >> 16u, b >> 8u, b, b >> 24u) & 0xFFu) * (1.0 / 255.0);
+    color = clamp((stored ? c : vec4(0.0)) * S.pixel_scale + S.pixel_bias, 0.0, 1.0);
+  } else if (format == GLPT_PIXELS_DEPTH32F) {
+    depth = stored ? uintBitsToFloat(pixel_words[word]) : 0.0;
+  } else if (format == GLPT_PIXELS_DEPTH24) {
+    depth = stored ? float(pixel_words[word] & 0xFFFFFFu) / 16777215.0 : 0.0;
+  } else if (format == GLPT_PIXELS_VALUE32) {
+    value = stored ? pixel_words[word] : 0u;
+  } else {  // GLPT_PIXELS_VALUE8
+    uint packed = pixel_words[S.pixel_image.y + index / 4u];
+    value = stored ? (packed >> (8u * (index & 3u))) & 0xFFu : 0u;
+  }
+#if GLPT_PIXELS == 2
+  gl_FragDepth = depth;
+#endif
+  uint keep = push.indices.z;
+  if (keep == GLPT_PIXELS_KEEP_NONZERO && value == 0u) discard;
+  if ((keep & GLPT_PIXELS_KEEP_BIT) != 0u && ((value >> (keep & 7u)) & 1u) == 0u) discard;
+  return color;
+}
+#endif
+
 #if GLPT_GBUFFER
 vec3 normalize_or(vec3 v, vec3 fallback) {
   float len2 = dot(v, v);
@@ -333,6 +405,9 @@ void main() {
   bool back = (kFlags & GLPT_FS_TWO_SIDE) != 0u && !gl_FrontFacing;
   vec4 primary = back ? v_back_color : v_front_color;
   vec4 secondary = back ? v_back_secondary : v_front_secondary;
+#if GLPT_PIXELS
+  primary = pixel_fragment(primary);
+#endif
 
   // Texture units in order; every unit's texel first (crossbar sources may name any unit).
   vec4 texels[GLPT_RASTER_MAX_UNITS];

@@ -33,6 +33,23 @@ using mat4 = glm::mat4;
 // per uint), starting at RasterPushConstants.indices.y
 #define GLPT_RASTER_BINDING_EDGES (GLPT_RASTER_BINDING_TEXTURES + 4 * GLPT_RASTER_MAX_UNITS)
 
+// ---- pixel rectangles (glBitmap, glDrawPixels, glCopyPixels: rt_core/raster/pixel_commands.cpp)
+// Their images, as 32-bit words, for raster_ff.frag built with GLPT_PIXELS (1: fragments keep
+// the rasterized depth; 2: they take the image's depth).
+#define GLPT_RASTER_BINDING_PIXELS (GLPT_RASTER_BINDING_EDGES + 1)
+// How the words hold one pixel (RasterState::pixel_image.x).
+#define GLPT_PIXELS_RGBA32F 0u   // 4 words: R, G, B, A floats
+#define GLPT_PIXELS_RGBA8 1u     // 1 word: B, G, R, A bytes (a copy of a BGRA8 colour buffer)
+#define GLPT_PIXELS_DEPTH32F 2u  // 1 word: a float depth
+#define GLPT_PIXELS_DEPTH24 3u  // 1 word: 24-bit depth in the low bits (a copy of the depth buffer)
+#define GLPT_PIXELS_VALUE32 4u  // 1 word: a bitmap bit or a stencil index
+#define GLPT_PIXELS_VALUE8 5u   // 1 byte, 4 per word (a copy of the stencil buffer)
+// Which fragments a pass keeps (push constant indices.z): all, those whose value is not zero
+// (bitmaps), or those whose value has bit (n & 7) set (stencil images, one pass per bit).
+#define GLPT_PIXELS_KEEP_ALL 0u
+#define GLPT_PIXELS_KEEP_NONZERO 0x200u
+#define GLPT_PIXELS_KEEP_BIT 0x100u
+
 // ---- vertex inputs (one binding per attribute; a binding's stride is 0 when the record holds
 // one value for the whole draw) ------------------------------------------------------------------
 #define GLPT_RASTER_ATTR_POSITION 0   // vec4
@@ -152,6 +169,17 @@ struct RasterState {
   vec4 point_attenuation;  // xyz: constant, linear, quadratic
   vec4 clear_color;        // the clear pipeline's colour
   vec4 polygon_offset;     // x: factor, y: units times twice the depth buffer's resolution
+  // Pixel rectangles: their image
+  uvec4 pixel_image;   // format (GLPT_PIXELS_*), first word, width, height
+  uvec4 pixel_stored;  // the groups the words hold: x0, y0, width, height (others read as 0)
+  // The group of the image a fragment takes (rt_core/raster/pixel_quad.hpp): with a table
+  // (x = its first word), group column = word[x + window column - y] (low half in the quad's first
+  // triangle, high half in the second), group row = word[x + w + window row - z]; without one
+  // (x = ~0u: bitmaps) the group is (window column - y, window row - z). y and z hold ints.
+  uvec4 pixel_table;
+  vec4 pixel_diagonal;  // a * x + b * y + c >= 0 in the quad's first triangle (window coordinates)
+  vec4 pixel_scale;     // colour copies: pixel transfer scale and bias (GL 1.5 3.6.5)
+  vec4 pixel_bias;
 };
 
 struct RasterPushConstants {

@@ -69,6 +69,7 @@ void finish_vertex_data(rec::VertexData& d) {
 
 void FrameRecorder::add_primitive(rec::StateId state, rec::VertexData& p) {
   if (p.position.empty() || p.primitives.size() != 1) return;
+  ++events_;
   // Mesa's immediate-mode vertex layout keeps a per-vertex colour until the next state change,
   // so a primitive without one still has it; when the layout grows Mesa draws what it has
   // batched (a new draw here).
@@ -105,6 +106,7 @@ void FrameRecorder::add_draw(rec::StateId state, rec::VertexData&& draw) {
 }
 
 void FrameRecorder::add(rec::Command command) {
+  ++events_;
   seal();
   record_.commands.push_back(std::move(command));
 }
@@ -118,6 +120,7 @@ void FrameRecorder::seal() {
 }
 
 void FrameRecorder::clear() {
+  ++events_;
   record_.clear();
   open_.reset();
   vertex_bytes_ = 0;

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 
 #include "rt_core/record/frame_record.hpp"
@@ -33,12 +34,16 @@ class FrameRecorder {
   bool empty() const { return record_.empty() && !open_; }
   // Vertex bytes held by the record (a frame that never ends is executed early past a limit).
   size_t vertex_bytes() const { return vertex_bytes_; }
+  // Counts additions (commands, primitives) and clears: unchanged means nothing was recorded
+  // since, so the last command is still the one added then (gl_shim/pixels/bitmap_cache.hpp).
+  uint64_t events() const { return events_; }
 
  private:
   rec::FrameRecord record_;
   std::unique_ptr<rec::VertexData> open_;
   rec::StateId open_state_ = 0;
   size_t vertex_bytes_ = 0;
+  uint64_t events_ = 0;
 };
 
 // Shrinks attributes whose values are all equal to one value and computes geometry_key and

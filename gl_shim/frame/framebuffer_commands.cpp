@@ -87,6 +87,7 @@ void glClear(Context& ctx, GLbitfield mask) {
   clear.color = fb.clear_color;
   clear.depth = static_cast<float>(fb.clear_depth);
   clear.stencil = fb.clear_stencil;
+  clear.accum = fb.clear_accum;
   ctx.recorder.add(clear);
 }
 
@@ -226,6 +227,7 @@ bool draws_to_front(const Context& ctx) {
 }  // namespace
 
 void glFlush(Context& ctx) {
+  flush_bitmap_cache(ctx);  // as Mesa's glFlush does
   if (draws_to_front(ctx)) end_frame(ctx, /*swap=*/false);
 }
 

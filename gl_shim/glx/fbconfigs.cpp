@@ -82,7 +82,7 @@ bool config_attribute(const FBConfig& c, int attribute, int* value) {
     case GLX_ACCUM_GREEN_SIZE:
     case GLX_ACCUM_BLUE_SIZE:
     case GLX_ACCUM_ALPHA_SIZE:
-      v = 0;
+      v = 16;  // signed 16-bit components, as Mesa's accumulation buffer
       break;
     case GLX_CONFIG_CAVEAT:
       v = GLX_NONE;

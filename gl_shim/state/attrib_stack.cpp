@@ -133,6 +133,7 @@ struct TextureParams {
 struct AttribFrame {
   GLbitfield mask = 0;
   CurrentAttributes current;
+  rec::RasterPosition raster_position;  // GL_CURRENT_BIT includes it (GL 1.5 table 6.5)
   rec::RasterState raster;
   rec::LightingState lighting;
   TransformControls transform;
@@ -408,6 +409,7 @@ void glPushAttrib(Context& ctx, GLbitfield mask) {
   auto f = std::make_unique<AttribFrame>();
   f->mask = mask;
   f->current = ctx.current;
+  f->raster_position = ctx.raster_position;
   f->raster = ctx.raster;
   f->lighting = ctx.lighting;
   f->transform = ctx.transform;
@@ -435,7 +437,10 @@ void glPopAttrib(Context& ctx) {
   const bool transform = (mask & GL_TRANSFORM_BIT) && transform_changed(ctx, f);
   if (mask & GL_ACCUM_BUFFER_BIT) ctx.framebuffer.clear_accum = f.framebuffer.clear_accum;
   if (mask & GL_COLOR_BUFFER_BIT) restore_color_buffer(ctx, f);
-  if (mask & GL_CURRENT_BIT) ctx.current = f.current;
+  if (mask & GL_CURRENT_BIT) {
+    ctx.current = f.current;
+    ctx.raster_position = f.raster_position;
+  }
   if (mask & GL_DEPTH_BUFFER_BIT) restore_depth_buffer(ctx, f);
   if (mask & GL_ENABLE_BIT) restore_enables(ctx, f);
   if (mask & GL_EVAL_BIT) restore_caps(ctx, f, kEvalCaps);

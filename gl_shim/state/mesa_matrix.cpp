@@ -252,6 +252,10 @@ bool MesaMatrix::geometry_flags_within(uint32_t allowed) const {
 
 bool MesaMatrix::dirty() const { return (flags_ & kDirty) != 0; }
 
+bool MesaMatrix::length_preserving() const {
+  return geometry_flags_within(kTranslation | kRotation);
+}
+
 void MesaMatrix::set_identity() {
   m_ = glm::mat4(1.0f);
   inv_ = glm::mat4(1.0f);

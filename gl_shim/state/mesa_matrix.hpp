@@ -63,6 +63,8 @@ class MesaMatrix {
     return inv_;
   }
   Type type() const { return type_; }
+  // Mesa's _math_matrix_is_length_preserving: only rotations and translations went into it.
+  bool length_preserving() const;
 
   bool operator==(const MesaMatrix&) const = default;
 

@@ -19,6 +19,9 @@ using query::ints;
 using query::Kind;
 using query::Value;
 
+// GL_CURRENT_RASTER_SECONDARY_COLOR is not in the GL 1.5 registry selection; Mesa answers it.
+constexpr GLenum kCurrentRasterSecondaryColor = 0x845F;
+
 bool lookup(const Context& ctx, GLenum pname, Value* out) {
   const auto& fb = ctx.framebuffer;
   const auto& m = ctx.matrices;
@@ -232,6 +235,30 @@ bool lookup(const Context& ctx, GLenum pname, Value* out) {
     case GL_INDEX_MODE:
     case GL_STEREO:
       *out = boolean(false);
+      return true;
+
+    // ---- the raster position (GL 1.5 2.13, table 6.9; gl_shim/pixels/) ----
+    // Colours convert as colours; the index is Mesa's 1 in RGBA mode.
+    case GL_CURRENT_RASTER_POSITION:
+      *out = floats(&ctx.raster_position.window.x, 4);
+      return true;
+    case GL_CURRENT_RASTER_POSITION_VALID:
+      *out = boolean(ctx.raster_position.valid);
+      return true;
+    case GL_CURRENT_RASTER_DISTANCE:
+      *out = floats(&ctx.raster_position.distance, 1);
+      return true;
+    case GL_CURRENT_RASTER_COLOR:
+      *out = floats(&ctx.raster_position.color.x, 4, Kind::kColor);
+      return true;
+    case kCurrentRasterSecondaryColor:
+      *out = floats(&ctx.raster_position.secondary_color.x, 4, Kind::kColor);
+      return true;
+    case GL_CURRENT_RASTER_TEXTURE_COORDS:
+      *out = floats(&ctx.raster_position.tex_coord[ctx.textures.active].x, 4);
+      return true;
+    case GL_CURRENT_RASTER_INDEX:
+      *out = ints({1});
       return true;
     default:
       break;

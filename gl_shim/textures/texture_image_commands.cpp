@@ -166,6 +166,7 @@ void image_changed(TextureObject& object, const ImageTarget& t, GLint level) {
 
 void tex_image(Context& ctx, int dims, GLenum target, GLint level, GLint internal_format, GLsizei w,
                GLsizei h, GLsizei d, GLint border, GLenum format, GLenum type, const void* pixels) {
+  flush_bitmap_cache(ctx);  // as Mesa's texture uploads and reads
   const std::optional<ImageTarget> t = image_target(target, dims, ProxyTargets::kAccepted);
   if (!t) return record_error(ctx, GL_INVALID_ENUM);
   if (level < 0 || level >= max_texture_levels(t->slot)) return record_error(ctx, GL_INVALID_VALUE);
@@ -223,6 +224,7 @@ bool valid_sub_image_args(Context& ctx, const std::optional<ImageTarget>& t, GLi
 void tex_sub_image(Context& ctx, int dims, GLenum target, GLint level, GLint xoff, GLint yoff,
                    GLint zoff, GLsizei w, GLsizei h, GLsizei d, GLenum format, GLenum type,
                    const void* pixels) {
+  flush_bitmap_cache(ctx);  // as Mesa's texture uploads and reads
   const std::optional<ImageTarget> t = image_target(target, dims, ProxyTargets::kRejected);
   if (!valid_sub_image_args(ctx, t, level, w, h, d)) return;
   if (const GLenum e = check_format_and_type(format, type); e != GL_NO_ERROR)
@@ -250,6 +252,7 @@ void tex_sub_image(Context& ctx, int dims, GLenum target, GLint level, GLint xof
 
 void copy_tex_image(Context& ctx, int dims, GLenum target, GLint level, GLenum internal_format,
                     GLint x, GLint y, GLsizei w, GLsizei h, GLint border) {
+  flush_bitmap_cache(ctx);  // as Mesa's texture uploads and reads
   const std::optional<ImageTarget> t = image_target(target, dims, ProxyTargets::kRejected);
   if (!t) return record_error(ctx, GL_INVALID_ENUM);
   if (level < 0 || level >= max_texture_levels(t->slot) || border < 0 || border > 1 || w < 0 ||
@@ -274,6 +277,7 @@ void copy_tex_image(Context& ctx, int dims, GLenum target, GLint level, GLenum i
 
 void copy_tex_sub_image(Context& ctx, int dims, GLenum target, GLint level, GLint xoff, GLint yoff,
                         GLint zoff, GLint x, GLint y, GLsizei w, GLsizei h) {
+  flush_bitmap_cache(ctx);  // as Mesa's texture uploads and reads
   const std::optional<ImageTarget> t = image_target(target, dims, ProxyTargets::kRejected);
   if (!valid_sub_image_args(ctx, t, level, w, h, 1)) return;
   const rec::TextureImage* img = target_object(ctx, *t).image(t->face, level);
@@ -302,6 +306,7 @@ bool get_tex_image_format(GLenum format) {
 
 void get_tex_image(Context& ctx, GLenum target, GLint level, GLenum format, GLenum type,
                    void* pixels) {
+  flush_bitmap_cache(ctx);  // as Mesa's texture uploads and reads
   const std::optional<ImageTarget> t = image_target(target, 0, ProxyTargets::kRejected);
   if (!t) return record_error(ctx, GL_INVALID_ENUM);
   if (level < 0 || level >= max_texture_levels(t->slot)) return record_error(ctx, GL_INVALID_VALUE);

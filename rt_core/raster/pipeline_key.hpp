@@ -38,8 +38,9 @@ struct PipelineKey {
   uint8_t color_write_mask;                                                // VkColorComponentFlags
   uint8_t attachments;  // colour attachments the pipeline renders to (1 or 2)
   uint8_t unfilled;     // polygon mode through the geometry shader: 0 no, 1 lines, 2 points
+  uint8_t pixels;       // pixel rectangles: the GLPT_PIXELS fragment shader (1, or 2 with depth)
   uint8_t gbuffer;      // path-traced mode's G-buffer pass: G-buffer shaders and attachments
-  uint8_t padding[2];
+  uint8_t padding[1];
 
   PipelineKey() { std::memset(this, 0, sizeof *this); }
   bool operator==(const PipelineKey& o) const { return std::memcmp(this, &o, sizeof *this) == 0; }

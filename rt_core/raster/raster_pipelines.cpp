@@ -11,6 +11,8 @@
 
 #include "raster_ff_clip_vert_spv.h"
 #include "raster_ff_flat_frag_spv.h"
+#include "raster_ff_pixels_depth_frag_spv.h"
+#include "raster_ff_pixels_frag_spv.h"
 #include "raster_ff_smooth_frag_spv.h"
 #include "raster_ff_vert_spv.h"
 #include "raster_gbuffer_clip_geom_spv.h"
@@ -74,6 +76,8 @@ RasterPipelines::RasterPipelines(const VulkanDevice& device) : device_(device) {
   bindings.push_back({GLPT_RASTER_BINDING_EDGES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1,
                       VK_SHADER_STAGE_VERTEX_BIT | geometry, nullptr});
   bindings[0].stageFlags |= geometry;
+  bindings.push_back({GLPT_RASTER_BINDING_PIXELS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1,
+                      VK_SHADER_STAGE_FRAGMENT_BIT, nullptr});
   auto set_info = make_info<VkDescriptorSetLayoutCreateInfo>(
       VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO);
   set_info.flags = VK_DESCRIPTOR_SET_LAYOUT_CREATE_PUSH_DESCRIPTOR_BIT_KHR;
@@ -99,6 +103,8 @@ RasterPipelines::RasterPipelines(const VulkanDevice& device) : device_(device) {
   vertex_clip_ = make_module(dev, raster_ff_clip_vert_spv);
   fragment_smooth_ = make_module(dev, raster_ff_smooth_frag_spv);
   fragment_flat_ = make_module(dev, raster_ff_flat_frag_spv);
+  fragment_pixels_ = make_module(dev, raster_ff_pixels_frag_spv);
+  fragment_pixels_depth_ = make_module(dev, raster_ff_pixels_depth_frag_spv);
   if (device.has_geometry_shader()) {
     unfilled_lines_ = make_module(dev, raster_unfilled_lines_geom_spv);
     unfilled_points_ = make_module(dev, raster_unfilled_points_geom_spv);
@@ -173,7 +179,10 @@ VkPipeline RasterPipelines::create(const PipelineKey& key) {
   stages[0].pSpecializationInfo = &specialization;
   stages[1] = stages[0];
   stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
-  stages[1].module = key.flat ? fragment_flat_.get() : fragment_smooth_.get();
+  stages[1].module = key.pixels == 2 ? fragment_pixels_depth_.get()
+                     : key.pixels    ? fragment_pixels_.get()
+                     : key.flat      ? fragment_flat_.get()
+                                     : fragment_smooth_.get();
   uint32_t stage_count = 2;
   if (key.unfilled != 0 && unfilled_lines_) {
     stages[2] = stages[0];

@@ -42,6 +42,7 @@ class RasterPipelines {
   vk::DescriptorSetLayout set_layout_;
   vk::PipelineLayout layout_;
   vk::ShaderModule vertex_, vertex_clip_, fragment_smooth_, fragment_flat_;
+  vk::ShaderModule fragment_pixels_, fragment_pixels_depth_;
   vk::ShaderModule unfilled_lines_, unfilled_points_;  // null without geometry shaders
   // Path-traced mode's G-buffer pass (null without geometry shaders).
   vk::ShaderModule gbuffer_vertex_, gbuffer_vertex_clip_, gbuffer_geometry_, gbuffer_geometry_clip_;

@@ -8,6 +8,7 @@
 
 #include "common/stopwatch.hpp"
 #include "raster_types.h"
+#include "rt_core/raster/raster_recording.hpp"
 #include "rt_core/raster/state_uniforms.hpp"
 #include "rt_core/vk/vk_error.hpp"
 #include "rt_core/vk/vk_info.hpp"
@@ -24,81 +25,11 @@ T load_device_function(const VulkanDevice& device, const char* name) {
   return f;
 }
 
-// The colour buffers are BGRA8 (kColorFormat); the front end speaks RGBA8.
-void swap_red_and_blue(uint8_t* pixels, size_t count) {
-  for (size_t i = 0; i < count; ++i) std::swap(pixels[4 * i], pixels[4 * i + 2]);
-}
-
 bool finite(const glm::vec4& v) {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && std::isfinite(v.w);
 }
 
-// Appends values to the per-record upload buffer, 16-byte aligned.
-class Arena {
- public:
-  explicit Arena(std::vector<uint8_t>& bytes) : bytes_(bytes) { bytes_.clear(); }
-  template <typename T>
-  VkDeviceSize add(const T* data, size_t count) {
-    const size_t offset = (bytes_.size() + 15) & ~size_t{15};
-    bytes_.resize(offset + count * sizeof(T));
-    if (count > 0) std::memcpy(bytes_.data() + offset, data, count * sizeof(T));
-    return offset;
-  }
-  size_t size() const { return bytes_.size(); }
-
- private:
-  std::vector<uint8_t>& bytes_;
-};
-
-VkRect2D intersect_with_framebuffer(int32_t x, int32_t y, int32_t w, int32_t h,
-                                    const rec::DrawableConfig& d) {
-  const int64_t x0 = std::clamp<int64_t>(x, 0, d.width), y0 = std::clamp<int64_t>(y, 0, d.height);
-  const int64_t x1 = std::clamp<int64_t>(int64_t{x} + std::max(w, 0), 0, d.width);
-  const int64_t y1 = std::clamp<int64_t>(int64_t{y} + std::max(h, 0), 0, d.height);
-  return {{static_cast<int32_t>(x0), static_cast<int32_t>(y0)},
-          {static_cast<uint32_t>(x1 - x0), static_cast<uint32_t>(y1 - y0)}};
-}
-
-VkRect2D scissor_of(const rec::FragmentOpsState& ops, const rec::DrawableConfig& d) {
-  if (!ops.scissor_test) return {{0, 0}, {d.width, d.height}};
-  return intersect_with_framebuffer(ops.scissor_box[0], ops.scissor_box[1], ops.scissor_box[2],
-                                    ops.scissor_box[3], d);
-}
-
 }  // namespace
-
-// Where one draw's attributes and indices are in the upload buffer.
-struct RasterRenderer::DrawGeometry {
-  std::array<VkDeviceSize, GLPT_RASTER_ATTR_COUNT> offsets{};
-  std::array<VkDeviceSize, GLPT_RASTER_ATTR_COUNT> strides{};
-  VkDeviceSize index_offset = 0;
-  uint32_t index_count = 0;
-  VkDeviceSize edge_offset = 0;  // unfilled draws: per-triangle boundary-edge masks
-  RasterTopology topology = RasterTopology::kTriangles;
-};
-
-struct RasterRenderer::Recording {
-  VkCommandBuffer cmd = VK_NULL_HANDLE;
-  const rec::FrameRecord* record = nullptr;
-  FrameStats* stats = nullptr;
-  std::vector<DrawGeometry> geometry;  // per command index (draws only)
-  std::vector<uint32_t> clear_state;   // per command index: the state entry of a quad clear
-  DrawGeometry clear_geometry;
-  bool rendering = false;
-  ColorTargets targets = ColorTargets::kBack;
-  VkPipeline bound_pipeline = VK_NULL_HANDLE;
-  // Texture descriptors currently pushed, per binding (to skip redundant pushes).
-  std::array<VkImageView, 4 * GLPT_RASTER_MAX_UNITS> bound_views{};
-  // ... and their samplers: a texture whose parameters changed keeps its view (same texels).
-  std::array<VkSampler, 4 * GLPT_RASTER_MAX_UNITS> bound_samplers{};
-  bool descriptors_pushed = false;
-  // Dynamic state last set in this command buffer.
-  bool dynamic_valid = false;
-  DynamicDrawState dynamic;
-  VkViewport viewport{};
-  VkRect2D scissor{};
-  const GBufferTargets* gbuffer = nullptr;  // path-traced mode's G-buffer pass
-};
 
 RasterRenderer::RasterRenderer(std::shared_ptr<VulkanDevice> device)
     : device_(std::move(device)), pipelines_(*device_), textures_(*device_) {
@@ -129,6 +60,8 @@ void RasterRenderer::ensure_buffers(const rec::DrawableConfig& drawable) {
                 VK_IMAGE_USAGE_TRANSFER_DST_BIT;
   depth.aspect = VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT;
   depth_stencil_ = GpuImage::create(*device_, depth);
+  accum_.resize(drawable.accum_bits > 0 ? drawable.width : 0,
+                drawable.accum_bits > 0 ? drawable.height : 0);
   // GL leaves a new drawable's contents undefined; glpt starts from transparent black, depth 1
   // and stencil 0, like a freshly cleared Mesa drawable.
   device_->submit_and_wait([&](VkCommandBuffer cmd) {
@@ -169,7 +102,8 @@ void RasterRenderer::execute(const rec::FrameRecord& record, const rec::Drawable
   size_t quad_clears = 0;
   for (size_t i : *commands)
     if (std::holds_alternative<rec::Clear>(record.commands[i])) ++quad_clears;
-  std::vector<gpu::RasterState> states(state_count + quad_clears + 1);
+  const size_t pixel_states = begin_pixel_commands(record, *commands);
+  std::vector<gpu::RasterState> states(state_count + quad_clears + pixel_states + 1);
   for (size_t i = 0; i < state_count; ++i) pack_state_uniforms(record.states[i], states[i]);
 
   std::vector<const rec::TextureObjectSnapshot*> textures;
@@ -184,6 +118,7 @@ void RasterRenderer::execute(const rec::FrameRecord& record, const rec::Drawable
   r.gbuffer = gbuffer;
   r.geometry.resize(record.commands.size());
   r.clear_state.assign(record.commands.size(), 0);
+  r.pixels.resize(record.commands.size());
   std::vector<uint8_t> upload;
   Arena arena(upload);
   // Attributes a draw lacks read one default value (stride 0): GL's initial current values.
@@ -212,6 +147,7 @@ void RasterRenderer::execute(const rec::FrameRecord& record, const rec::Drawable
       r.clear_state[i] = static_cast<uint32_t>(next_clear_state++);
       continue;
     }
+    if (prepare_pixels(r, i, arena, states, next_clear_state)) continue;
     const auto* draw = std::get_if<rec::Draw>(&command);
     if (draw == nullptr || !draw->vertices) continue;
     const rec::VertexData& v = *draw->vertices;
@@ -301,6 +237,7 @@ void RasterRenderer::execute(const rec::FrameRecord& record, const rec::Drawable
                   VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_INDEX_BUFFER_BIT |
                       VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   vertices_.write(upload.data(), arena.size());
+  upload_pixels();
   stats.upload_ms += timer.elapsed_ms();
 
   if (end && end->present_to && end->present_to->generation != present_generation_) {
@@ -317,39 +254,55 @@ void RasterRenderer::execute(const rec::FrameRecord& record, const rec::Drawable
     ensure_capacity(*device_, readback_, size_t{drawable_.width} * drawable_.height * 4,
                     VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
 
-  // ---- record and run
+  // ---- record and run: one submission, or one more after each glAccum that reads or writes
+  // colour (the accumulation buffer is updated on the CPU, as Mesa does); the frame end goes with
+  // the last
   const Stopwatch raster_timer;
-  device_->submit_and_wait([&](VkCommandBuffer cmd) {
-    r.cmd = cmd;
-    if (gbuffer) {
-      // Nothing is traced where no traced draw lands: the SURFACE attachment starts at 0.
-      const VkClearColorValue zero{};
-      const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-      vkCmdClearColorImage(cmd, gbuffer->images[GLPT_GBUFFER_SURFACE], VK_IMAGE_LAYOUT_GENERAL,
-                           &zero, 1, &range);
-      auto barrier = make_info<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
-      barrier.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-      barrier.dstAccessMask =
-          VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
-      vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                           VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, 0, 1, &barrier, 0,
-                           nullptr, 0, nullptr);
-    }
-    for (size_t i : *commands) {
-      const rec::Command& command = record.commands[i];
-      if (const auto* clear = std::get_if<rec::Clear>(&command)) {
-        record_clear(r, *clear, r.clear_state[i]);
-      } else if (const auto* draw = std::get_if<rec::Draw>(&command)) {
-        record_draw(r, *draw, r.geometry[i],
-                    gbuffer && gbuffer->traced && i < gbuffer->traced->size() &&
-                        (*gbuffer->traced)[i] != 0);
-      } else if (!std::holds_alternative<rec::Read>(command)) {
-        ++stats.inexpressible;  // pixel operations and accumulation: not drawn yet
+  size_t position = 0;
+  do {
+    device_->submit_and_wait([&](VkCommandBuffer cmd) {
+      r.cmd = cmd;
+      r.rendering = false;
+      r.bound_pipeline = VK_NULL_HANDLE;
+      r.descriptors_pushed = false;
+      r.dynamic_valid = false;
+      if (gbuffer && position == 0) {
+        // Nothing is traced where no traced draw lands: the SURFACE attachment starts at 0.
+        const VkClearColorValue zero{};
+        const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+        vkCmdClearColorImage(cmd, gbuffer->images[GLPT_GBUFFER_SURFACE], VK_IMAGE_LAYOUT_GENERAL,
+                             &zero, 1, &range);
+        auto barrier = make_info<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
+        barrier.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+        barrier.dstAccessMask =
+            VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+        vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                             VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, 0, 1, &barrier, 0,
+                             nullptr, 0, nullptr);
       }
-    }
-    if (r.rendering) vkCmdEndRendering(cmd);
-    if (end) record_frame_end(cmd, *end);
-  });
+      for (; position < commands->size(); ++position) {
+        const size_t i = (*commands)[position];
+        const rec::Command& command = record.commands[i];
+        if (const auto* clear = std::get_if<rec::Clear>(&command)) {
+          record_clear(r, *clear, r.clear_state[i]);
+        } else if (const auto* draw = std::get_if<rec::Draw>(&command)) {
+          record_draw(r, *draw, r.geometry[i],
+                      gbuffer && gbuffer->traced && i < gbuffer->traced->size() &&
+                          (*gbuffer->traced)[i] != 0);
+        } else if (const auto* accum = std::get_if<rec::Accum>(&command)) {
+          if (accumulation_touches_color(*accum)) break;
+          execute_accum(record, *accum);
+        } else if (!std::holds_alternative<rec::Read>(command)) {
+          record_pixels(r, i);
+        }
+      }
+      if (r.rendering) vkCmdEndRendering(cmd);
+      r.rendering = false;
+      if (end && position == commands->size()) record_frame_end(cmd, *end);
+    });
+    if (position < commands->size())
+      execute_accum(record, std::get<rec::Accum>(record.commands[(*commands)[position++]]));
+  } while (position < commands->size());
   stats.raster_ms += raster_timer.elapsed_ms();
   const size_t pixel_count = size_t{drawable_.width} * drawable_.height;
   if (end && end->front_rgba) {
@@ -442,7 +395,7 @@ void RasterRenderer::bind(Recording& r, const PipelineKey& key,
   }
   if (r.descriptors_pushed && views == r.bound_views && samplers == r.bound_samplers) return;
   std::array<VkDescriptorImageInfo, 4 * GLPT_RASTER_MAX_UNITS> images{};
-  std::array<VkWriteDescriptorSet, 2 + 4 * GLPT_RASTER_MAX_UNITS> writes{};
+  std::array<VkWriteDescriptorSet, 3 + 4 * GLPT_RASTER_MAX_UNITS> writes{};
   VkDescriptorBufferInfo states{states_.handle(), 0, VK_WHOLE_SIZE};
   writes[0] = make_info<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
   writes[0].dstBinding = GLPT_RASTER_BINDING_STATES;
@@ -462,6 +415,11 @@ void RasterRenderer::bind(Recording& r, const PipelineKey& key,
     w.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
     w.pImageInfo = &images[b];
   }
+  // The pixel rectangles' images (pixel_commands.cpp); the buffer always exists.
+  VkDescriptorBufferInfo pixels{pixels_.handle(), 0, VK_WHOLE_SIZE};
+  writes.back() = writes[0];
+  writes.back().dstBinding = GLPT_RASTER_BINDING_PIXELS;
+  writes.back().pBufferInfo = &pixels;
   push_descriptor_set_(r.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.layout(), 0,
                        static_cast<uint32_t>(writes.size()), writes.data());
   r.bound_views = views;
@@ -529,7 +487,7 @@ void RasterRenderer::record_clear(Recording& r, const rec::Clear& clear, uint32_
   const uint32_t stencil_mask = ops.stencil_write_mask & 0xFFu;
   const bool stencil =
       (clear.mask & GL_STENCIL_BUFFER_BIT) && stencil_mask != 0 && drawable_.stencil_bits;
-  if (clear.mask & GL_ACCUM_BUFFER_BIT) ++r.stats->inexpressible;  // accumulation: not yet
+  if (clear.mask & GL_ACCUM_BUFFER_BIT) clear_accum(*r.record, clear);  // on the CPU, now
   if (!color && !depth && !stencil) return;
   begin_rendering(r, color ? targets : ColorTargets::kNone);
 
@@ -785,6 +743,11 @@ bool RasterRenderer::read_stencil(int32_t x, int32_t y, uint32_t width, uint32_t
 void RasterRenderer::write_color(bool front, const std::vector<uint8_t>& rgba) {
   const GpuImage& image = front || !drawable_.double_buffered ? front_ : back_;
   if (!image || rgba.size() != size_t{drawable_.width} * drawable_.height * 4) return;
+  write_image(image, {{0, 0}, {drawable_.width, drawable_.height}}, rgba);
+}
+
+void RasterRenderer::write_image(const GpuImage& image, const VkRect2D& rect,
+                                 const std::vector<uint8_t>& rgba) {
   ensure_capacity(*device_, readback_, rgba.size(),
                   VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
   readback_.write(rgba.data(), rgba.size());
@@ -792,7 +755,8 @@ void RasterRenderer::write_color(bool front, const std::vector<uint8_t>& rgba) {
   device_->submit_and_wait([&](VkCommandBuffer cmd) {
     VkBufferImageCopy copy{};
     copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-    copy.imageExtent = {drawable_.width, drawable_.height, 1};
+    copy.imageOffset = {rect.offset.x, rect.offset.y, 0};
+    copy.imageExtent = {rect.extent.width, rect.extent.height, 1};
     vkCmdCopyBufferToImage(cmd, readback_.handle(), image.handle(), VK_IMAGE_LAYOUT_GENERAL, 1,
                            &copy);
   });

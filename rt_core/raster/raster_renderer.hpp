@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "rt_core/frame_stats.hpp"
+#include "rt_core/raster/accumulation.hpp"
 #include "rt_core/raster/gbuffer_targets.hpp"
 #include "rt_core/raster/pipeline_key.hpp"
 #include "rt_core/raster/raster_pipelines.hpp"
@@ -20,6 +21,11 @@
 #include "rt_core/vk/vk_device.hpp"
 
 namespace glpt::rt {
+
+namespace gpu {
+struct RasterState;
+}
+class Arena;
 
 class RasterRenderer {
  public:
@@ -71,6 +77,23 @@ class RasterRenderer {
   void record_frame_end(VkCommandBuffer cmd, const FrameEnd& end);
   bool read_image(const GpuImage& image, VkImageAspectFlags aspect, uint32_t texel_bytes, int32_t x,
                   int32_t y, uint32_t width, uint32_t height, std::vector<uint8_t>& out);
+  // Replaces the rectangle `rect` of a colour image with `rgba` (RGBA8, rows bottom to top).
+  void write_image(const GpuImage& image, const VkRect2D& rect, const std::vector<uint8_t>& rgba);
+
+  // ---- pixel rectangles and the accumulation buffer (pixel_commands.cpp) ----
+  struct PixelPlan;  // how one pixel rectangle is drawn
+  // Starts a record's pixel rectangles: the number of state entries they add.
+  size_t begin_pixel_commands(const rec::FrameRecord& record, const std::vector<size_t>& commands);
+  // Prepares command `index` if it is a pixel rectangle (its state entry, next_state, is taken
+  // and advanced; its quad goes to `arena`, its image to pixels_); false for other commands.
+  bool prepare_pixels(Recording& r, size_t index, Arena& arena,
+                      std::vector<gpu::RasterState>& states, size_t& next_state);
+  void upload_pixels();
+  void record_pixels(Recording& r, size_t index);
+  // GL_ACCUM, GL_LOAD, GL_RETURN read or write colour: everything before them must have run.
+  static bool accumulation_touches_color(const rec::Accum& accum);
+  void execute_accum(const rec::FrameRecord& record, const rec::Accum& accum);
+  void clear_accum(const rec::FrameRecord& record, const rec::Clear& clear);
 
   std::shared_ptr<VulkanDevice> device_;
   RasterPipelines pipelines_;
@@ -85,7 +108,10 @@ class RasterRenderer {
   GpuBuffer present_;  // the window's host memory (FrameEnd::present_to), imported
   uint64_t present_generation_ = 0;
   uint64_t frame_ = 0;
-  rec::Decomposed decomposed_;  // scratch
+  rec::Decomposed decomposed_;         // scratch
+  GpuBuffer pixels_;                   // images of this record's pixel rectangles (32-bit words)
+  std::vector<uint32_t> pixel_words_;  // scratch: what goes to pixels_
+  AccumulationBuffer accum_;
 };
 
 }  // namespace glpt::rt

@@ -52,6 +52,7 @@ const Group kGroups[] = {
        glFogCoordf(3);
        glIndexf(9);
        glEdgeFlag(GL_FALSE);
+       glWindowPos3f(5, 6, 0.25f);
      },
      [](Reading& r) {
        get(r, GL_CURRENT_COLOR, 4);
@@ -60,6 +61,10 @@ const Group kGroups[] = {
        get(r, GL_CURRENT_FOG_COORD, 1);
        get(r, GL_CURRENT_INDEX, 1);
        get(r, GL_EDGE_FLAG, 1);
+       get(r, GL_CURRENT_RASTER_POSITION, 4);
+       get(r, GL_CURRENT_RASTER_COLOR, 4);
+       get(r, GL_CURRENT_RASTER_DISTANCE, 1);
+       get(r, GL_CURRENT_RASTER_POSITION_VALID, 1);
        for_units(r, [](Reading& r, const std::string& u) {
          std::vector<float> v(4);
          glGetFloatv(GL_CURRENT_TEXTURE_COORDS, v.data());

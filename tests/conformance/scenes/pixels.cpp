@@ -9,38 +9,6 @@ namespace {
 
 using namespace glpt::conformance::util;
 
-// A 5x7 font for the few characters the scenes write; rows top to bottom, bit 7 = left column.
-struct Glyph {
-  char c;
-  GLubyte rows[7];
-};
-const Glyph kFont[] = {
-    {'G', {0x70, 0x88, 0x80, 0xB8, 0x88, 0x88, 0x78}},
-    {'L', {0x80, 0x80, 0x80, 0x80, 0x80, 0x80, 0xF8}},
-    {'P', {0xF0, 0x88, 0x88, 0xF0, 0x80, 0x80, 0x80}},
-    {'T', {0xF8, 0x20, 0x20, 0x20, 0x20, 0x20, 0x20}},
-    {'1', {0x20, 0x60, 0x20, 0x20, 0x20, 0x20, 0x70}},
-    {'5', {0xF8, 0x80, 0xF0, 0x08, 0x08, 0x88, 0x70}},
-    {'.', {0x00, 0x00, 0x00, 0x00, 0x00, 0x60, 0x60}},
-    {'O', {0x70, 0x88, 0x88, 0x88, 0x88, 0x88, 0x70}},
-    {'K', {0x88, 0x90, 0xA0, 0xC0, 0xA0, 0x90, 0x88}},
-    {'A', {0x70, 0x88, 0x88, 0xF8, 0x88, 0x88, 0x88}},
-    {' ', {0, 0, 0, 0, 0, 0, 0}},
-};
-
-// Draws `text` with glBitmap at the current raster position, advancing 6 pixels per glyph.
-void bitmap_text(const char* text) {
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  for (const char* p = text; *p; ++p) {
-    for (const Glyph& g : kFont) {
-      if (g.c != *p) continue;
-      GLubyte bottom_up[7];
-      for (int r = 0; r < 7; ++r) bottom_up[r] = g.rows[6 - r];
-      glBitmap(5, 7, 0, 0, 6, 0, bottom_up);
-    }
-  }
-}
-
 // Text-like glyphs: the raster colour is latched from the current colour at glRasterPos time
 // (a glColor after it does not change the next bitmap), glBitmap's origin offsets and moves.
 GLPT_SCENE(pixels_bitmap_glyphs, 64, 64) {

@@ -78,4 +78,9 @@ GLuint new_texture(GLenum target, GLenum min_filter, GLenum mag_filter, GLuint n
 GLuint texture_2d(GLenum internal_format, int width, int height, const std::vector<uint8_t>& rgba,
                   GLenum filter = GL_NEAREST, GLenum wrap = GL_REPEAT, GLuint name = 0);
 
+// glBitmap text at the current raster position with a 5x7 font, advancing 6 pixels per
+// character (GL_UNPACK_ALIGNMENT is set to 1). Knows A B C G K L O P T X 1 5 '.' and ' '; other
+// characters draw nothing and do not advance.
+void bitmap_text(const char* text);
+
 }  // namespace glpt::conformance::util

@@ -1,0 +1,99 @@
+// Internal to rt_core/raster: what RasterRenderer's implementation files share while they record
+// one frame record into command buffers (raster_renderer.cpp: clears and draws;
+// pixel_commands.cpp: pixel rectangles and the accumulation buffer).
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cstring>
+#include <utility>
+#include <vector>
+
+#include "raster_types.h"
+#include "rt_core/raster/raster_renderer.hpp"
+
+namespace glpt::rt {
+
+// The colour buffers are BGRA8 (kColorFormat); the front end speaks RGBA8.
+inline void swap_red_and_blue(uint8_t* pixels, size_t count) {
+  for (size_t i = 0; i < count; ++i) std::swap(pixels[4 * i], pixels[4 * i + 2]);
+}
+
+// Appends values to the per-record upload buffer, 16-byte aligned.
+class Arena {
+ public:
+  explicit Arena(std::vector<uint8_t>& bytes) : bytes_(bytes) { bytes_.clear(); }
+  template <typename T>
+  VkDeviceSize add(const T* data, size_t count) {
+    const size_t offset = (bytes_.size() + 15) & ~size_t{15};
+    bytes_.resize(offset + count * sizeof(T));
+    if (count > 0) std::memcpy(bytes_.data() + offset, data, count * sizeof(T));
+    return offset;
+  }
+  size_t size() const { return bytes_.size(); }
+
+ private:
+  std::vector<uint8_t>& bytes_;
+};
+
+inline VkRect2D intersect_with_framebuffer(int32_t x, int32_t y, int32_t w, int32_t h,
+                                           const rec::DrawableConfig& d) {
+  const int64_t x0 = std::clamp<int64_t>(x, 0, d.width), y0 = std::clamp<int64_t>(y, 0, d.height);
+  const int64_t x1 = std::clamp<int64_t>(int64_t{x} + std::max(w, 0), 0, d.width);
+  const int64_t y1 = std::clamp<int64_t>(int64_t{y} + std::max(h, 0), 0, d.height);
+  return {{static_cast<int32_t>(x0), static_cast<int32_t>(y0)},
+          {static_cast<uint32_t>(x1 - x0), static_cast<uint32_t>(y1 - y0)}};
+}
+
+inline VkRect2D scissor_of(const rec::FragmentOpsState& ops, const rec::DrawableConfig& d) {
+  if (!ops.scissor_test) return {{0, 0}, {d.width, d.height}};
+  return intersect_with_framebuffer(ops.scissor_box[0], ops.scissor_box[1], ops.scissor_box[2],
+                                    ops.scissor_box[3], d);
+}
+
+// Where one draw's attributes and indices are in the upload buffer.
+struct RasterRenderer::DrawGeometry {
+  std::array<VkDeviceSize, GLPT_RASTER_ATTR_COUNT> offsets{};
+  std::array<VkDeviceSize, GLPT_RASTER_ATTR_COUNT> strides{};
+  VkDeviceSize index_offset = 0;
+  uint32_t index_count = 0;
+  VkDeviceSize edge_offset = 0;  // unfilled draws: per-triangle boundary-edge masks
+  RasterTopology topology = RasterTopology::kTriangles;
+};
+
+// How one pixel rectangle (glBitmap, glDrawPixels, glCopyPixels) is drawn; prepared with the
+// record's uploads (pixel_commands.cpp).
+struct RasterRenderer::PixelPlan {
+  bool prepared = false;
+  uint32_t state = 0;       // its entry in the states buffer
+  DrawGeometry quad;        // the image's window rectangle as two triangles
+  uint32_t first_word = 0;  // its image (a copy: where the source is copied to) in pixels_
+  bool blit = false;        // a glCopyPixels Mesa does as a plain copy (blit_copy_pixels)
+  VkRect2D blit_source{}, blit_destination{};
+};
+
+struct RasterRenderer::Recording {
+  VkCommandBuffer cmd = VK_NULL_HANDLE;
+  const rec::FrameRecord* record = nullptr;
+  FrameStats* stats = nullptr;
+  std::vector<DrawGeometry> geometry;  // per command index (draws only)
+  std::vector<uint32_t> clear_state;   // per command index: the state entry of a quad clear
+  std::vector<PixelPlan> pixels;       // per command index (pixel rectangles only)
+  DrawGeometry clear_geometry;
+  bool rendering = false;
+  ColorTargets targets = ColorTargets::kBack;
+  VkPipeline bound_pipeline = VK_NULL_HANDLE;
+  // Texture descriptors currently pushed, per binding (to skip redundant pushes).
+  std::array<VkImageView, 4 * GLPT_RASTER_MAX_UNITS> bound_views{};
+  // ... and their samplers: a texture whose parameters changed keeps its view (same texels).
+  std::array<VkSampler, 4 * GLPT_RASTER_MAX_UNITS> bound_samplers{};
+  bool descriptors_pushed = false;
+  // Dynamic state last set in this command buffer.
+  bool dynamic_valid = false;
+  DynamicDrawState dynamic;
+  VkViewport viewport{};
+  VkRect2D scissor{};
+  const GBufferTargets* gbuffer = nullptr;  // path-traced mode's G-buffer pass
+};
+
+}  // namespace glpt::rt
