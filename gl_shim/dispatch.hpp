@@ -43,6 +43,11 @@ struct GlProcEntry {
 // Every exported GL command, sorted by name (generated).
 const GlProcEntry* gl_proc_table(size_t* count);
 
+// glGetString(GL_EXTENSIONS) (generated from gen_gl_api.py's ADVERTISED_GL_EXTENSIONS) and the
+// commands those extensions add, every one of which must be implemented.
+const char* gl_extensions_string();
+const char* const* advertised_extension_commands(size_t* count);
+
 // The exported entry point for `name` if glpt implements it, else nullptr.
 GlProc lookup_gl_proc(const char* name);
 

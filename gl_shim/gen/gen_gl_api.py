@@ -79,6 +79,30 @@ GL_ENUM_ONLY_EXTENSIONS = [
     "GL_ARB_texture_rectangle", "GL_EXT_texture_env_dot3", "GL_ARB_texture_env_dot3",
 ]
 
+# What glGetString(GL_EXTENSIONS) advertises: the extensions GL 1.1-1.5 made core (programs of
+# the time test for them rather than for the version) and GL 1.x-era ones glpt implements
+# besides. Every command an advertised extension adds must be implemented (checked by
+# tests/unit/extensions_test.cpp through advertised_extension_commands()). Not advertised:
+# GL_ARB_occlusion_query (queries are not implemented yet), GL_EXT_polygon_offset (its bias
+# differs from glPolygonOffset's), GL_ARB_imaging (only its GL 1.4 blend subset is implemented).
+ADVERTISED_GL_EXTENSIONS = [
+    "GL_ARB_depth_texture", "GL_ARB_multisample", "GL_ARB_multitexture", "GL_ARB_point_parameters",
+    "GL_ARB_shadow", "GL_ARB_texture_border_clamp", "GL_ARB_texture_compression",
+    "GL_ARB_texture_cube_map", "GL_ARB_texture_env_add", "GL_ARB_texture_env_combine",
+    "GL_ARB_texture_env_crossbar", "GL_ARB_texture_env_dot3", "GL_ARB_texture_mirrored_repeat",
+    "GL_ARB_transpose_matrix", "GL_ARB_vertex_buffer_object", "GL_ARB_window_pos",
+    "GL_EXT_bgra", "GL_EXT_blend_color", "GL_EXT_blend_func_separate", "GL_EXT_blend_logic_op",
+    "GL_EXT_blend_minmax", "GL_EXT_blend_subtract", "GL_EXT_compiled_vertex_array",
+    "GL_EXT_copy_texture", "GL_EXT_draw_range_elements", "GL_EXT_fog_coord",
+    "GL_EXT_multi_draw_arrays", "GL_EXT_packed_pixels", "GL_EXT_point_parameters",
+    "GL_EXT_rescale_normal", "GL_EXT_secondary_color", "GL_EXT_separate_specular_color",
+    "GL_EXT_shadow_funcs", "GL_EXT_stencil_wrap", "GL_EXT_subtexture", "GL_EXT_texture",
+    "GL_EXT_texture3D", "GL_EXT_texture_env_add", "GL_EXT_texture_env_combine",
+    "GL_EXT_texture_env_dot3", "GL_EXT_texture_lod_bias", "GL_EXT_texture_object",
+    "GL_EXT_vertex_array", "GL_NV_blend_square", "GL_NV_texgen_reflection",
+    "GL_SGIS_generate_mipmap", "GL_SGIS_texture_edge_clamp", "GL_SGIS_texture_lod",
+]
+
 GLX_FEATURES = ["GLX_VERSION_1_0", "GLX_VERSION_1_1", "GLX_VERSION_1_2", "GLX_VERSION_1_3",
                 "GLX_VERSION_1_4"]
 GLX_EXTENSIONS = ["GLX_ARB_create_context", "GLX_ARB_create_context_profile",
@@ -459,7 +483,7 @@ def emit_impl_decls(path, names, commands):
         f.write("\n}  // namespace impl\n}  // namespace glpt\n")
 
 
-def emit_entry_points(path, names, commands):
+def emit_entry_points(path, names, commands, gl_root):
     out = []
     w = out.append
     w(HEADER)
@@ -607,7 +631,32 @@ def emit_entry_points(path, names, commands):
         target = impl_name(commands[n], commands)
         w(f'      {{"{n}", reinterpret_cast<GlProc>(&::{n}), '
           f'reinterpret_cast<GlProc>(&impl::{target}) != nullptr}},\n')
-    w("  };\n  *count = sizeof(table) / sizeof(table[0]);\n  return table;\n}\n\n"
+    w("  };\n  *count = sizeof(table) / sizeof(table[0]);\n  return table;\n}\n\n")
+
+    # glGetString(GL_EXTENSIONS) and the commands it promises. Each name is followed by a space,
+    # as in Mesa's string (piglit's glinfo prints the names up to each space).
+    registry = {e.get("name"): e for e in gl_root.iter("extension")}
+    promised = []
+    for ext in ADVERTISED_GL_EXTENSIONS:
+        if ext not in registry:
+            sys.exit(f"gen_gl_api: advertised extension {ext} is not in gl.xml")
+        for req in registry[ext].findall("require"):
+            if req.get("api") not in (None, "gl"):
+                continue
+            for c in req.findall("command"):
+                if c.get("name") not in names:
+                    sys.exit(f"gen_gl_api: {ext} needs {c.get('name')}, which glpt does not export")
+                if c.get("name") not in promised:
+                    promised.append(c.get("name"))
+    w("const char* gl_extensions_string() {\n  return\n")
+    for ext in ADVERTISED_GL_EXTENSIONS:
+        w(f'      "{ext} "\n')
+    w("      ;\n}\n\n")
+    w("const char* const* advertised_extension_commands(size_t* count) {\n"
+      "  static const char* const names[] = {\n")
+    for c in promised:
+        w(f'      "{c}",\n')
+    w("  };\n  *count = sizeof(names) / sizeof(names[0]);\n  return names;\n}\n\n"
       "}  // namespace glpt\n")
     with open(path, "w") as f:
         f.write("".join(out))
@@ -716,7 +765,7 @@ def main():
     emit_commands_header(f"{args.out}/gl_commands.hpp", names)
     emit_impl_decls(f"{args.out}/gl_impl_decls.hpp", names, commands)
     emit_entry_decls(f"{args.out}/gl_entry_decls.h", names, commands)
-    emit_entry_points(f"{args.out}/gl_entry_points.cpp", names, commands)
+    emit_entry_points(f"{args.out}/gl_entry_points.cpp", names, commands, gl)
     emit_attribute_families(f"{args.out}/gl_attribute_families.cpp", names, commands)
 
     glx = ET.parse(args.glx_xml).getroot()

@@ -16,6 +16,7 @@
 //     group), and glpt restores them.
 #include "gl_shim/state/attrib_stack.hpp"
 
+#include <algorithm>
 #include <array>
 #include <iterator>
 
@@ -296,6 +297,8 @@ void restore_lighting(Context& ctx, const AttribFrame& f, bool changed) {
   // Mesa analyses the modelview before restoring the lights.
   ctx.matrices.modelview.top_matrix().analyse();
   ctx.lighting = f.lighting;
+  std::copy(&f.color_index.material_indexes[0][0], &f.color_index.material_indexes[0][0] + 6,
+            &ctx.color_index.material_indexes[0][0]);
   ctx.raster.primitive.shade_model = f.raster.primitive.shade_model;
 }
 

@@ -10,6 +10,9 @@ struct ColorIndexState {
   GLuint write_mask = ~0u;  // glIndexMask
   GLint clear_index = 0;    // glClearIndex, truncated to an integer as Mesa stores it
   float fog_index = 0.0f;   // glFog(GL_FOG_INDEX)
+  // glMaterial(GL_COLOR_INDEXES): ambient, diffuse and specular indexes of the front and back
+  // materials (GL 1.5 table 6.12; part of GL_LIGHTING_BIT).
+  float material_indexes[2][3] = {{0, 1, 1}, {0, 1, 1}};
 };
 
 }  // namespace glpt

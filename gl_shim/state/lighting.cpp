@@ -2,8 +2,10 @@
 // (GL 1.5 spec 2.14). The live state is ctx.lighting, a rec::LightingState.
 #include "gl_shim/state/lighting.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 #include "gl/gl_enums.h"
 #include "gl_shim/context.hpp"
@@ -12,6 +14,7 @@
 #include "gl_shim/gl_impl_decls.hpp"
 #include "gl_shim/state/mesa_matrix.hpp"
 #include "gl_shim/state/normalized_values.hpp"
+#include "gl_shim/state/query_values.hpp"
 
 namespace glpt {
 
@@ -166,8 +169,12 @@ void set_material(Context& ctx, GLenum face, GLenum pname, const T* p, bool scal
         m.shininess = v;
         return true;
       }
-      case GL_COLOR_INDEXES:
-        return true;  // colour-index mode is not supported; accepted and ignored
+      case GL_COLOR_INDEXES: {
+        // Only read back: glpt renders RGBA (colour-index lighting is never used).
+        float* indexes = ctx.color_index.material_indexes[&m == &ctx.lighting.material[0] ? 0 : 1];
+        for (int i = 0; i < 3; ++i) indexes[i] = plain_component(p[i]);
+        return true;
+      }
       default:
         record_error(ctx, GL_INVALID_ENUM);
         return false;
@@ -179,22 +186,30 @@ void set_material(Context& ctx, GLenum face, GLenum pname, const T* p, bool scal
   if (ok && face != GL_FRONT) apply(ctx.lighting.material[1]);
 }
 
+// An RGBA colour as glGet*fv (unchanged) or glGet*iv (GL 1.5 6.1.2: linearly mapped, 1.0 to the
+// most positive integer) returns it.
+void put_color(const float* v, GLfloat* out) { std::copy(v, v + 4, out); }
+void put_color(const float* v, GLint* out) {
+  for (int i = 0; i < 4; ++i) out[i] = query::color_to_int(v[i]);
+}
+
 template <typename T>
 void get_light(Context& ctx, GLenum light, GLenum pname, T* out) {
   rec::Light* l = light_of(ctx, light);
   if (!l) return;
+  // As Mesa: other values truncate toward zero when read as integers.
   auto put = [&](const float* v, int n) {
     for (int i = 0; i < n; ++i) out[i] = static_cast<T>(v[i]);
   };
   switch (pname) {
     case GL_AMBIENT:
-      put(&l->ambient.x, 4);
+      put_color(&l->ambient.x, out);
       break;
     case GL_DIFFUSE:
-      put(&l->diffuse.x, 4);
+      put_color(&l->diffuse.x, out);
       break;
     case GL_SPECULAR:
-      put(&l->specular.x, 4);
+      put_color(&l->specular.x, out);
       break;
     case GL_POSITION:
       put(&l->position.x, 4);
@@ -225,25 +240,36 @@ void get_light(Context& ctx, GLenum light, GLenum pname, T* out) {
 template <typename T>
 void get_material(Context& ctx, GLenum face, GLenum pname, T* out) {
   if (face != GL_FRONT && face != GL_BACK) return record_error(ctx, GL_INVALID_ENUM);
-  const rec::Material& m = ctx.lighting.material[face == GL_FRONT ? 0 : 1];
+  const int side = face == GL_FRONT ? 0 : 1;
+  const rec::Material& m = ctx.lighting.material[side];
+  // As Mesa: other values round to the nearest integer when read as integers.
   auto put = [&](const float* v, int n) {
-    for (int i = 0; i < n; ++i) out[i] = static_cast<T>(v[i]);
+    for (int i = 0; i < n; ++i) {
+      if constexpr (std::is_integral_v<T>) {
+        out[i] = query::round_to_int(v[i]);
+      } else {
+        out[i] = v[i];
+      }
+    }
   };
   switch (pname) {
     case GL_AMBIENT:
-      put(&m.ambient.x, 4);
+      put_color(&m.ambient.x, out);
       break;
     case GL_DIFFUSE:
-      put(&m.diffuse.x, 4);
+      put_color(&m.diffuse.x, out);
       break;
     case GL_SPECULAR:
-      put(&m.specular.x, 4);
+      put_color(&m.specular.x, out);
       break;
     case GL_EMISSION:
-      put(&m.emission.x, 4);
+      put_color(&m.emission.x, out);
       break;
     case GL_SHININESS:
       put(&m.shininess, 1);
+      break;
+    case GL_COLOR_INDEXES:
+      put(ctx.color_index.material_indexes[side], 3);
       break;
     default:
       record_error(ctx, GL_INVALID_ENUM);

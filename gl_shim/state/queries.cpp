@@ -312,12 +312,8 @@ const GLubyte* glGetString(Context& ctx, GLenum name) {
     case GL_VERSION:
       s = "1.5 glpt " GLPT_VERSION_STRING;
       break;
-    // Only extensions whose every entry point works are advertised.
-    // Each name is followed by a space, as in Mesa's string (piglit's glinfo prints the names up
-    // to each space and would leave the last one unterminated).
     case GL_EXTENSIONS:
-      s = "GL_ARB_vertex_buffer_object GL_EXT_vertex_array GL_EXT_compiled_vertex_array "
-          "GL_EXT_draw_range_elements GL_EXT_multi_draw_arrays ";
+      s = gl_extensions_string();
       break;
     default:
       record_error(ctx, GL_INVALID_ENUM);

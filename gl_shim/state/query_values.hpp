@@ -47,13 +47,14 @@ inline Value boolean(bool b) {
   return r;
 }
 
-// A colour component, normal coordinate or depth value as an integer. The spec maps 1.0 to the
-// most positive integer and -1.0 to the most negative, linearly between; between the endpoints
-// Mesa's rounding is used, (2^31 - 1) * c truncated toward zero, so integer queries read what
-// they read on Mesa. Values beyond [-1, 1] saturate (the nearest representable value); NaN is 0.
+// A colour component, normal coordinate or depth value as an integer: Mesa's mapping,
+// (2^31 - 1) * c truncated toward zero, so integer queries read what they read on Mesa. (The
+// spec's -1.0 is the most negative integer, -2^31; Mesa's is -(2^31 - 1), and glpt's state is
+// compared query for query with Mesa's.) Values beyond [-1, 1] saturate where Mesa's conversion
+// overflows; NaN is 0.
 inline GLint color_to_int(double c) {
   if (std::isnan(c)) return 0;
-  if (c <= -1.0) return -2147483647 - 1;
+  if (c <= -1.0) return -2147483647;
   if (c >= 1.0) return 2147483647;
   return static_cast<GLint>(2147483647.0 * c);
 }

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
-#include <map>
 #include <string>
 #include <vector>
 
@@ -379,28 +378,6 @@ TEST_F(GlTest, ArrayCommandsAreFoundByName) {
         "glDrawArraysEXT", "glMultiDrawArraysEXT", "glDrawRangeElementsEXT",
         "glSecondaryColorPointerEXT", "glFogCoordPointerEXT", "glPushClientAttrib", "glPopAttrib"})
     EXPECT_NE(glpt::lookup_gl_proc(name), nullptr) << name;
-}
-
-// glGetString(GL_EXTENSIONS) lists only extensions whose every entry point works.
-TEST_F(GlTest, AdvertisedArrayExtensionsHaveEveryEntryPoint) {
-  const std::map<std::string, std::vector<const char*>> commands = {
-      {"GL_ARB_vertex_buffer_object",
-       {"glBindBufferARB", "glDeleteBuffersARB", "glGenBuffersARB", "glIsBufferARB",
-        "glBufferDataARB", "glBufferSubDataARB", "glGetBufferSubDataARB", "glMapBufferARB",
-        "glUnmapBufferARB", "glGetBufferParameterivARB", "glGetBufferPointervARB"}},
-      {"GL_EXT_vertex_array",
-       {"glArrayElementEXT", "glColorPointerEXT", "glDrawArraysEXT", "glEdgeFlagPointerEXT",
-        "glGetPointervEXT", "glIndexPointerEXT", "glNormalPointerEXT", "glTexCoordPointerEXT",
-        "glVertexPointerEXT"}},
-      {"GL_EXT_compiled_vertex_array", {"glLockArraysEXT", "glUnlockArraysEXT"}},
-      {"GL_EXT_draw_range_elements", {"glDrawRangeElementsEXT"}},
-      {"GL_EXT_multi_draw_arrays", {"glMultiDrawArraysEXT", "glMultiDrawElementsEXT"}},
-  };
-  const std::string extensions = reinterpret_cast<const char*>(glGetString(GL_EXTENSIONS));
-  for (const auto& [extension, names] : commands) {
-    EXPECT_NE((" " + extensions + " ").find(" " + extension + " "), std::string::npos) << extension;
-    for (const char* name : names) EXPECT_NE(glpt::lookup_gl_proc(name), nullptr) << name;
-  }
 }
 
 }  // namespace
