@@ -140,4 +140,32 @@ TEST_F(FramebufferReadTest, CopyTexImageErrorsMatchMesa) {
   EXPECT_EQ(glGetError(), GLenum{GL_INVALID_VALUE});
 }
 
+// GL 1.5 4.2.1: GL_LEFT names the front left and the back left buffer (piglit
+// gl-1.0-drawbuffer-modes); a non-stereo drawable has no right buffers.
+TEST_F(FramebufferReadTest, DrawBufferLeftWritesFrontAndBack) {
+  glDrawBuffer(GL_LEFT);
+  glClearColor(0.0f, 0.0f, 1.0f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glColor3f(0.0f, 1.0f, 0.0f);
+  glRectf(-1.0f, -1.0f, 0.0f, 0.0f);  // the lower left quarter: pixels (0..3, 0..3)
+  ASSERT_EQ(glGetError(), GLenum{GL_NO_ERROR});
+  for (GLenum buffer : {GL_FRONT, GL_BACK}) {
+    glReadBuffer(buffer);
+    GLubyte rgba[4] = {};
+    glReadPixels(1, 1, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+    EXPECT_EQ(std::vector<int>(rgba, rgba + 4), (std::vector<int>{0, 255, 0, 255})) << buffer;
+    glReadPixels(6, 6, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+    EXPECT_EQ(std::vector<int>(rgba, rgba + 4), (std::vector<int>{0, 0, 255, 255})) << buffer;
+  }
+  for (GLenum right : {GL_RIGHT, GL_FRONT_RIGHT, GL_BACK_RIGHT}) {
+    glDrawBuffer(right);
+    EXPECT_EQ(glGetError(), GLenum{GL_INVALID_OPERATION});
+    glReadBuffer(right);
+    EXPECT_EQ(glGetError(), GLenum{GL_INVALID_OPERATION});
+  }
+  GLint draw_buffer = 0;
+  glGetIntegerv(GL_DRAW_BUFFER, &draw_buffer);
+  EXPECT_EQ(draw_buffer, GL_LEFT);
+}
+
 }  // namespace
