@@ -74,7 +74,7 @@ class Context {
   HintState hints;
   VertexAssembly assembly;
   DisplayListState lists;
-  VertexArrays arrays;  // client vertex arrays and buffer bindings (GL 1.5 2.8, 2.9)
+  VertexArrays arrays;        // client vertex arrays and buffer bindings (GL 1.5 2.8, 2.9)
   EvaluatorState evaluators;  // maps and grids (GL 1.5 5.1); their enables are in `enables`
   // Buffer objects of the share group (the constructor shares them with share_list).
   std::shared_ptr<BufferStore> buffers = std::make_shared<BufferStore>();

@@ -25,6 +25,35 @@ class Scratch {
   std::array<float, kMaxEvalOrder * kMaxEvalOrder> values_{};
 };
 
+// Mesa's de Casteljau variants where one order is the smaller and its last step is linear:
+// that step (between `a` and `b`, two rows of control points or of scratch values, with weights
+// s_linear, t_linear), the difference along it kept in scratch row `diff`, then the remaining
+// steps along the other direction (s, t) from step `first_h` on. `cell(row, n)` is the scratch
+// value of that row at index n of the other direction. Returns the point and the derivatives
+// along the linear direction and along the other.
+template <typename Cell, typename RowA, typename RowB>
+void linear_then_de_casteljau(Cell cell, RowA a, RowB b, unsigned diff, unsigned first_h,
+                              unsigned order, float s_linear, float t_linear, float s, float t,
+                              float& out, float& d_linear, float& d_other) {
+  cell(diff, 0) = b(0) - a(0);
+  cell(0, 0) = s_linear * a(0) + t_linear * b(0);
+  for (unsigned n = 0; n + 1 < order; ++n) {
+    cell(diff, n + 1) = b(n + 1) - a(n + 1);
+    cell(diff, n) = s * cell(diff, n) + t * cell(diff, n + 1);
+    cell(0, n + 1) = s_linear * a(n + 1) + t_linear * b(n + 1);
+    cell(0, n) = s * cell(0, n) + t * cell(0, n + 1);
+  }
+  for (unsigned h = first_h; h + 1 < order; ++h) {
+    for (unsigned n = 0; n < order - h; ++n) {
+      cell(diff, n) = s * cell(diff, n) + t * cell(diff, n + 1);
+      cell(0, n) = s * cell(0, n) + t * cell(0, n + 1);
+    }
+  }
+  d_other = cell(0, 1) - cell(0, 0);
+  d_linear = s * cell(diff, 0) + t * cell(diff, 1);
+  out = s * cell(0, 0) + t * cell(0, 1);
+}
+
 }  // namespace
 
 void curve(const float* cp, std::size_t stride, unsigned dim, unsigned order, float t, float* out) {
@@ -75,50 +104,29 @@ void surface_with_derivatives(const float* cn, unsigned dim, unsigned uorder, un
   Scratch d(vorder);
   for (unsigned k = 0; k < dim; ++k) {
     auto p = [&](unsigned i, unsigned j) { return cn[(i * vorder + j) * dim + k]; };
-    if (min_order < 3 && uorder == vorder) {  // bilinear
-      du[k] = vs * (p(1, 0) - p(0, 0)) + v * (p(1, 1) - p(0, 1));
-      dv[k] = us * (p(0, 1) - p(0, 0)) + u * (p(1, 1) - p(1, 0));
-      out[k] = us * (vs * p(0, 0) + v * p(0, 1)) + u * (vs * p(1, 0) + v * p(1, 1));
+    // The last bilinear step, on 2 x 2 values c(i, j).
+    auto bilinear = [&](auto c) {
+      du[k] = vs * (c(1, 0) - c(0, 0)) + v * (c(1, 1) - c(0, 1));
+      dv[k] = us * (c(0, 1) - c(0, 0)) + u * (c(1, 1) - c(1, 0));
+      out[k] = us * (vs * c(0, 0) + v * c(0, 1)) + u * (vs * c(1, 0) + v * c(1, 1));
+    };
+    if (min_order < 3 && uorder == vorder) {
+      bilinear(p);
       continue;
     }
+    // Rows of u (index i) and columns of v (index j) of the control net and of the scratch.
+    auto u_rows = [&](unsigned r, unsigned j) -> float& { return d(r, j); };
+    auto v_columns = [&](unsigned c, unsigned i) -> float& { return d(i, c); };
     if (min_order < 3 && min_order == uorder) {  // linear in u, de Casteljau in v
-      d(1, 0) = p(1, 0) - p(0, 0);
-      d(0, 0) = us * p(0, 0) + u * p(1, 0);
-      for (unsigned j = 0; j + 1 < vorder; ++j) {
-        d(1, j + 1) = p(1, j + 1) - p(0, j + 1);
-        d(1, j) = vs * d(1, j) + v * d(1, j + 1);
-        d(0, j + 1) = us * p(0, j + 1) + u * p(1, j + 1);
-        d(0, j) = vs * d(0, j) + v * d(0, j + 1);
-      }
-      for (unsigned h = min_order; h + 1 < vorder; ++h) {
-        for (unsigned j = 0; j < vorder - h; ++j) {
-          d(1, j) = vs * d(1, j) + v * d(1, j + 1);
-          d(0, j) = vs * d(0, j) + v * d(0, j + 1);
-        }
-      }
-      dv[k] = d(0, 1) - d(0, 0);
-      du[k] = vs * d(1, 0) + v * d(1, 1);
-      out[k] = vs * d(0, 0) + v * d(0, 1);
+      linear_then_de_casteljau(
+          u_rows, [&](unsigned j) { return p(0, j); }, [&](unsigned j) { return p(1, j); }, 1,
+          min_order, vorder, us, u, vs, v, out[k], du[k], dv[k]);
       continue;
     }
     if (min_order < 3) {  // linear in v, de Casteljau in u
-      d(0, 1) = p(0, 1) - p(0, 0);
-      d(0, 0) = vs * p(0, 0) + v * p(0, 1);
-      for (unsigned i = 0; i + 1 < uorder; ++i) {
-        d(i + 1, 1) = p(i + 1, 1) - p(i + 1, 0);
-        d(i, 1) = us * d(i, 1) + u * d(i + 1, 1);
-        d(i + 1, 0) = vs * p(i + 1, 0) + v * p(i + 1, 1);
-        d(i, 0) = us * d(i, 0) + u * d(i + 1, 0);
-      }
-      for (unsigned h = min_order; h + 1 < uorder; ++h) {
-        for (unsigned i = 0; i < uorder - h; ++i) {
-          d(i, 1) = us * d(i, 1) + u * d(i + 1, 1);
-          d(i, 0) = us * d(i, 0) + u * d(i + 1, 0);
-        }
-      }
-      du[k] = d(1, 0) - d(0, 0);
-      dv[k] = us * d(0, 1) + u * d(1, 1);
-      out[k] = us * d(0, 0) + u * d(1, 0);
+      linear_then_de_casteljau(
+          v_columns, [&](unsigned i) { return p(i, 0); }, [&](unsigned i) { return p(i, 1); }, 1,
+          min_order, uorder, vs, v, us, u, out[k], dv[k], du[k]);
       continue;
     }
     // Both orders >= 3: bilinear steps while both directions have steps left.
@@ -138,48 +146,16 @@ void surface_with_derivatives(const float* cn, unsigned dim, unsigned uorder, un
         }
       }
     }
-    if (uorder == vorder) {  // the last bilinear step
-      du[k] = vs * (d(1, 0) - d(0, 0)) + v * (d(1, 1) - d(0, 1));
-      dv[k] = us * (d(0, 1) - d(0, 0)) + u * (d(1, 1) - d(1, 0));
-      out[k] = us * (vs * d(0, 0) + v * d(0, 1)) + u * (vs * d(1, 0) + v * d(1, 1));
-    } else if (min_order == uorder) {
-      // The last step in u, keeping the u difference in row 2; then linear steps in v.
-      d(2, 0) = d(1, 0) - d(0, 0);
-      d(0, 0) = us * d(0, 0) + u * d(1, 0);
-      for (unsigned j = 0; j + 1 < vorder; ++j) {
-        d(2, j + 1) = d(1, j + 1) - d(0, j + 1);
-        d(2, j) = vs * d(2, j) + v * d(2, j + 1);
-        d(0, j + 1) = us * d(0, j + 1) + u * d(1, j + 1);
-        d(0, j) = vs * d(0, j) + v * d(0, j + 1);
-      }
-      for (unsigned h = min_order; h + 1 < vorder; ++h) {
-        for (unsigned j = 0; j < vorder - h; ++j) {
-          d(2, j) = vs * d(2, j) + v * d(2, j + 1);
-          d(0, j) = vs * d(0, j) + v * d(0, j + 1);
-        }
-      }
-      dv[k] = d(0, 1) - d(0, 0);
-      du[k] = vs * d(2, 0) + v * d(2, 1);
-      out[k] = vs * d(0, 0) + v * d(0, 1);
-    } else {
-      // The last step in v, keeping the v difference in column 2; then linear steps in u.
-      d(0, 2) = d(0, 1) - d(0, 0);
-      d(0, 0) = vs * d(0, 0) + v * d(0, 1);
-      for (unsigned i = 0; i + 1 < uorder; ++i) {
-        d(i + 1, 2) = d(i + 1, 1) - d(i + 1, 0);
-        d(i, 2) = us * d(i, 2) + u * d(i + 1, 2);
-        d(i + 1, 0) = vs * d(i + 1, 0) + v * d(i + 1, 1);
-        d(i, 0) = us * d(i, 0) + u * d(i + 1, 0);
-      }
-      for (unsigned h = min_order; h + 1 < uorder; ++h) {
-        for (unsigned i = 0; i < uorder - h; ++i) {
-          d(i, 2) = us * d(i, 2) + u * d(i + 1, 2);
-          d(i, 0) = us * d(i, 0) + u * d(i + 1, 0);
-        }
-      }
-      du[k] = d(1, 0) - d(0, 0);
-      dv[k] = us * d(0, 2) + u * d(1, 2);
-      out[k] = us * d(0, 0) + u * d(1, 0);
+    if (uorder == vorder) {
+      bilinear([&](unsigned i, unsigned j) { return d(i, j); });
+    } else if (min_order == uorder) {  // the last step in u, then linear steps in v
+      linear_then_de_casteljau(
+          u_rows, [&](unsigned j) { return d(0, j); }, [&](unsigned j) { return d(1, j); }, 2,
+          min_order, vorder, us, u, vs, v, out[k], du[k], dv[k]);
+    } else {  // the last step in v, then linear steps in u
+      linear_then_de_casteljau(
+          v_columns, [&](unsigned i) { return d(i, 0); }, [&](unsigned i) { return d(i, 1); }, 2,
+          min_order, uorder, vs, v, us, u, out[k], dv[k], du[k]);
     }
   }
 }

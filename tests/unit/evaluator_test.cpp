@@ -118,7 +118,6 @@ INSTANTIATE_TEST_SUITE_P(Sequences, MesaEvaluatorTest,
                            return std::string(kEvalSequences[info.param].name);
                          });
 
-
 // ---- hand-derived cases ------------------------------------------------------------------------
 
 class EvaluatorTest : public GlTest {
@@ -238,8 +237,8 @@ TEST_F(EvaluatorTest, GetMapReadsThePackedControlPoints) {
 // glGetMapiv converts as Mesa does (lroundf, then the long narrowed to GLint; measured with
 // OSMesa): halves away from zero, out-of-range values wrap or read 0.
 TEST_F(EvaluatorTest, GetMapivRoundsAsMesa) {
-  const GLfloat p[8] = {2.5f,       -2.5f, 1e10f, std::numeric_limits<float>::quiet_NaN(),
-                        0.49999997f, 3e9f, -0.5f, std::numeric_limits<float>::infinity()};
+  const GLfloat p[8] = {2.5f,        -2.5f, 1e10f, std::numeric_limits<float>::quiet_NaN(),
+                        0.49999997f, 3e9f,  -0.5f, std::numeric_limits<float>::infinity()};
   glMap1f(GL_MAP1_TEXTURE_COORD_1, -1.5f, 2.5f, 1, 8, p);
   GLint v[8];
   glGetMapiv(GL_MAP1_TEXTURE_COORD_1, GL_COEFF, v);
@@ -321,7 +320,7 @@ TEST_F(EvaluatorTest, MeshesOfEveryShape) {
   EXPECT_EQ(lines.position[7], glm::vec4(0, 1, 0, 1));  // the first column's end
 
   ctx_.recorder.record().commands.clear();
-  glEvalMesh2(GL_FILL, 0, 2, 1, 1);  // a single row of points has no strip
+  glEvalMesh2(GL_FILL, 0, 2, 1, 1);   // a single row of points has no strip
   glEvalMesh2(GL_POINT, 2, 1, 0, 2);  // reversed range: nothing
   EXPECT_TRUE(recorded_draws(ctx_).empty());
   EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
@@ -408,7 +407,8 @@ TEST_F(EvaluatorTest, AutoNormalOfAnOrderOneDirection) {
   EXPECT_EQ(at(draws[0].vertices->normal, 0), glm::vec3(0));
 }
 
-// ---- display lists -------------------------------------------------------------------------------
+// ---- display lists
+// -------------------------------------------------------------------------------
 
 TEST_F(EvaluatorTest, ListsCopyControlPointsWhenCompiled) {
   GLfloat p[8] = {1, 2, 3, -1, 5, 6, 7, -1};  // stride 4

@@ -36,6 +36,18 @@ Patch bump_patch(float bump) {
 const GLfloat kCornerColours[2][2][4] = {{{1, 0.2f, 0.2f, 1}, {0.2f, 1, 0.2f, 1}},
                                          {{0.2f, 0.3f, 1, 1}, {1, 1, 0.2f, 1}}};
 
+// Loads bump_patch(bump) as the enabled GL_MAP2_VERTEX_3 and, with `colours`, kCornerColours as
+// the enabled GL_MAP2_COLOR_4.
+void load_bump_patch(float bump, bool colours) {
+  const Patch patch = bump_patch(bump);
+  glMap2f(GL_MAP2_VERTEX_3, 0, 1, 12, 4, 0, 1, 3, 4, &patch.p[0][0][0]);
+  glEnable(GL_MAP2_VERTEX_3);
+  if (colours) {
+    glMap2f(GL_MAP2_COLOR_4, 0, 1, 8, 2, 0, 1, 4, 2, &kCornerColours[0][0][0]);
+    glEnable(GL_MAP2_COLOR_4);
+  }
+}
+
 void settle_current_values() {
   glColor4f(1, 1, 1, 1);
   glNormal3f(0, 0, 1);
@@ -47,9 +59,7 @@ void settle_current_values() {
 GLPT_SCENE(evaluators_patch_lit, 64, 64) {
   clear(0.1f, 0.1f, 0.25f);
   lit_perspective_light0(40.0, 1.0);
-  const Patch patch = bump_patch(1.6f);
-  glMap2f(GL_MAP2_VERTEX_3, 0, 1, 12, 4, 0, 1, 3, 4, &patch.p[0][0][0]);
-  glEnable(GL_MAP2_VERTEX_3);
+  load_bump_patch(1.6f, false);
   glEnable(GL_AUTO_NORMAL);
   material4(GL_FRONT_AND_BACK, GL_DIFFUSE, 0.9f, 0.7f, 0.4f);
   material4(GL_FRONT_AND_BACK, GL_SPECULAR, 0.6f, 0.6f, 0.6f);
@@ -71,13 +81,9 @@ GLPT_SCENE(evaluators_patch_colour_texture, 64, 64) {
   texture_2d(GL_RGBA, 16, 16, checker(16, 16, 4, {255, 255, 255, 255}, {60, 60, 60, 255}));
   glEnable(GL_TEXTURE_2D);
   glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
-  const Patch patch = bump_patch(-1.0f);
-  glMap2f(GL_MAP2_VERTEX_3, 0, 1, 12, 4, 0, 1, 3, 4, &patch.p[0][0][0]);
-  glMap2f(GL_MAP2_COLOR_4, 0, 1, 8, 2, 0, 1, 4, 2, &kCornerColours[0][0][0]);
+  load_bump_patch(-1.0f, true);
   const GLfloat st[2][2][2] = {{{0, 0}, {0, 3}}, {{3, 0}, {3, 3}}};
   glMap2f(GL_MAP2_TEXTURE_COORD_2, 0, 1, 4, 2, 0, 1, 2, 2, &st[0][0][0]);
-  glEnable(GL_MAP2_VERTEX_3);
-  glEnable(GL_MAP2_COLOR_4);
   glEnable(GL_MAP2_TEXTURE_COORD_2);
   glTranslatef(0, 0, -5.5f);
   glRotatef(-30, 1, 0, 0);
@@ -92,11 +98,7 @@ GLPT_SCENE(evaluators_mesh_lines, 64, 64) {
   clear(0.05f, 0.05f, 0.1f);
   perspective(40.0, 1.0, 1.0, 20.0);
   glEnable(GL_DEPTH_TEST);
-  const Patch patch = bump_patch(1.8f);
-  glMap2f(GL_MAP2_VERTEX_3, 0, 1, 12, 4, 0, 1, 3, 4, &patch.p[0][0][0]);
-  glMap2f(GL_MAP2_COLOR_4, 0, 1, 8, 2, 0, 1, 4, 2, &kCornerColours[0][0][0]);
-  glEnable(GL_MAP2_VERTEX_3);
-  glEnable(GL_MAP2_COLOR_4);
+  load_bump_patch(1.8f, true);
   glTranslatef(0, 0, -6);
   glRotatef(-50, 1, 0, 0);
   glRotatef(20, 0, 0, 1);
@@ -110,11 +112,7 @@ GLPT_SCENE(evaluators_mesh_lines, 64, 64) {
 GLPT_SCENE(evaluators_mesh_points, 64, 64) {
   clear(0.1f, 0.1f, 0.1f);
   perspective(40.0, 1.0, 1.0, 20.0);
-  const Patch patch = bump_patch(1.2f);
-  glMap2f(GL_MAP2_VERTEX_3, 0, 1, 12, 4, 0, 1, 3, 4, &patch.p[0][0][0]);
-  glMap2f(GL_MAP2_COLOR_4, 0, 1, 8, 2, 0, 1, 4, 2, &kCornerColours[0][0][0]);
-  glEnable(GL_MAP2_VERTEX_3);
-  glEnable(GL_MAP2_COLOR_4);
+  load_bump_patch(1.2f, true);
   glPointSize(3);
   glTranslatef(0, 0, -5.5f);
   glRotatef(-35, 1, 0, 0);
@@ -196,11 +194,7 @@ GLPT_SCENE(evaluators_rational_patch_lit, 64, 64) {
 GLPT_SCENE(evaluators_colour_material, 64, 64) {
   clear(0.1f, 0.1f, 0.25f);
   lit_perspective_light0(40.0, 1.0);
-  const Patch patch = bump_patch(1.4f);
-  glMap2f(GL_MAP2_VERTEX_3, 0, 1, 12, 4, 0, 1, 3, 4, &patch.p[0][0][0]);
-  glMap2f(GL_MAP2_COLOR_4, 0, 1, 8, 2, 0, 1, 4, 2, &kCornerColours[0][0][0]);
-  glEnable(GL_MAP2_VERTEX_3);
-  glEnable(GL_MAP2_COLOR_4);
+  load_bump_patch(1.4f, true);
   glEnable(GL_AUTO_NORMAL);
   glEnable(GL_COLOR_MATERIAL);
   glColorMaterial(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE);
