@@ -84,10 +84,11 @@ GL_ENUM_ONLY_EXTENSIONS = [
 # the time test for them rather than for the version) and GL 1.x-era ones glpt implements
 # besides. Every command an advertised extension adds must be implemented (checked by
 # tests/unit/extensions_test.cpp through advertised_extension_commands()). Not advertised:
-# GL_ARB_occlusion_query (queries are not implemented yet), GL_EXT_polygon_offset (its bias
-# differs from glPolygonOffset's), GL_ARB_imaging (only its GL 1.4 blend subset is implemented).
+# GL_EXT_polygon_offset (its bias differs from glPolygonOffset's), GL_ARB_imaging (only its
+# GL 1.4 blend subset is implemented).
 ADVERTISED_GL_EXTENSIONS = [
-    "GL_ARB_depth_texture", "GL_ARB_multisample", "GL_ARB_multitexture", "GL_ARB_point_parameters",
+    "GL_ARB_depth_texture", "GL_ARB_multisample", "GL_ARB_multitexture", "GL_ARB_occlusion_query",
+    "GL_ARB_point_parameters",
     "GL_ARB_shadow", "GL_ARB_texture_border_clamp", "GL_ARB_texture_compression",
     "GL_ARB_texture_cube_map", "GL_ARB_texture_env_add", "GL_ARB_texture_env_combine",
     "GL_ARB_texture_env_crossbar", "GL_ARB_texture_env_dot3", "GL_ARB_texture_mirrored_repeat",
