@@ -18,6 +18,8 @@ struct VertexAssembly {
   // vertices before the first call get the material at glBegin.
   bool per_vertex_material = false;
   std::array<rec::Material, 2> material_at_begin{};
+  // The material fields glMaterial set inside this primitive (material_field_bit).
+  uint16_t material_fields_set = 0;
   rec::VertexData vertices;       // one value per vertex for every recorded attribute
   uint64_t dropped_vertices = 0;  // beyond the per-primitive limit
 };

@@ -191,10 +191,24 @@ void set_material(Context& ctx, GLenum face, GLenum pname, const T* p) {
         return false;
     }
   };
-  material_changed_inside_begin_end(ctx);
   bool ok = true;
   if (face != GL_BACK) ok = apply(ctx.lighting.material[0]);
-  if (ok && face != GL_FRONT) apply(ctx.lighting.material[1]);
+  if (ok && face != GL_FRONT) ok = apply(ctx.lighting.material[1]);
+  if (!ok) return;
+  // The fields set, for the front face (material_field_bit's numbering); GL_COLOR_INDEXES is not
+  // drawn.
+  const uint32_t front_fields = pname == GL_AMBIENT_AND_DIFFUSE ? 0b00011u
+                                : pname == GL_AMBIENT           ? 0b00001u
+                                : pname == GL_DIFFUSE           ? 0b00010u
+                                : pname == GL_SPECULAR          ? 0b00100u
+                                : pname == GL_EMISSION          ? 0b01000u
+                                : pname == GL_SHININESS         ? 0b10000u
+                                                                : 0u;
+  static_assert(material_field_bit(1, 0) == 1u << 5);
+  uint32_t fields = 0;
+  if (face != GL_BACK) fields |= front_fields;
+  if (face != GL_FRONT) fields |= front_fields << 5;
+  material_set_inside_begin_end(ctx, fields);
 }
 
 // An RGBA colour as glGet*fv (unchanged) or glGet*iv (GL 1.5 6.1.2: linearly mapped, 1.0 to the
