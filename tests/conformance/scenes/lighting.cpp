@@ -468,7 +468,9 @@ GLPT_SCENE(lighting_flipped_ortho, 64, 64) {
 // attributes. One triangle strip per material parameter (rows: ambient, diffuse, specular,
 // emission), red at its third vertex and green at its fifth; the left column in immediate mode,
 // the right one replayed from a display list. `shade_model` GL_FLAT: each triangle takes the
-// material of its provoking (last) vertex; GL_SMOOTH: colours blend between vertices.
+// material of its provoking (last) vertex; GL_SMOOTH: colours blend between vertices, and the
+// display list's first two vertices take the red given after them (Mesa's display lists copy a
+// material's first value in the list into the vertices before it).
 void materials_between_begin_end(GLenum shade_model) {
   clear(0, 0, 0);
   glMatrixMode(GL_PROJECTION);
