@@ -374,12 +374,14 @@ float compare_level(uint u, uint target, vec2 c, int level, bool linear, float r
   return fma(wt, v1 - v0, v0);  // lp_build_lerp: lp_build_mad (llvm.fmuladd)
 }
 
-// The comparison result of unit u at coordinates c (s, t) against ref (r / q).
+// The comparison result of unit u at the projected coordinates c. Mesa's fixed-function
+// program takes the reference from the coordinate after the texture's own (ff_fragment_shader.c
+// load_texture): t / q for a 1D texture, r / q for a 2D one.
 float compare_unit(uint u, uint target, vec3 c) {
   uint flags = S.tex_mode[u].y;
   // gallivm clamps the reference to [0, 1] for normalized depth formats (all of Mesa's
   // GL_DEPTH_COMPONENT* formats).
-  float ref = clamp(c.z, 0.0, 1.0);
+  float ref = clamp(target == 1u ? c.y : c.z, 0.0, 1.0);
   vec3 ddx, ddy;
   quad_derivatives(c, ddx, ddy);
   uint dims = target == 1u ? 1u : 2u;

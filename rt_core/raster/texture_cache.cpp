@@ -1,6 +1,7 @@
 #include "rt_core/raster/texture_cache.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 
 #include "common/content_hash.hpp"
@@ -64,6 +65,31 @@ TextureCache::TextureCache(VulkanDevice& device) : device_(device) {
 
 namespace {
 
+// Depth texels as gallivm samples them (lp_build_unsigned_norm_to_float) from the unorm value z
+// Mesa stores: float(z) times the float nearest 1 / (2^n - 1) for its 16- and 24-bit formats;
+// the top 23 bits of a 32-bit z as a mantissa, scaled by 2^23 / (2^23 - 1). The record holds
+// z / (2^n - 1) (the value glGetTexImage returns), from which z is exact for up to 24 bits.
+void depth_samples(const rec::TextureImage& image, std::vector<float>& out) {
+  const uint32_t bits = image.internal_format == GL_DEPTH_COMPONENT16   ? 16
+                        : image.internal_format == GL_DEPTH_COMPONENT32 ? 32
+                                                                        : 24;
+  const double max = bits == 32 ? 4294967295.0 : double((1u << bits) - 1);
+  out.resize(image.texels.size() / 4);
+  for (size_t i = 0; i < out.size(); ++i) {
+    float stored;
+    std::memcpy(&stored, image.texels.data() + i * 4, 4);
+    const uint32_t z = static_cast<uint32_t>(std::min(std::nearbyint(double(stored) * max), max));
+    if (bits <= 24) {
+      out[i] = static_cast<float>(z) * static_cast<float>(1.0 / max);
+    } else {
+      const uint32_t mantissa_bits = (z >> 9) | 0x3F800000u;
+      float m;
+      std::memcpy(&m, &mantissa_bits, 4);
+      out[i] = (m - 1.0f) * static_cast<float>(8388608.0 / 8388607.0);
+    }
+  }
+}
+
 int32_t base_level_of(const rec::TextureObjectSnapshot& t) {
   return std::clamp(t.sampler.base_level, 0, std::max(t.last_level, 0));
 }
@@ -126,7 +152,12 @@ void TextureCache::prepare(const std::vector<const rec::TextureObjectSnapshot*>&
         for (uint32_t l = 0; l < levels && base_level + l < face.size(); ++l) {
           const rec::TextureImage* img = face[base_level + l].get();
           if (img == nullptr || img->texels.empty()) continue;
-          staging_.write(img->texels.data(), img->texels.size(), offset);
+          if (u.texture->texel_format == rec::TexelFormat::kDepth32f) {
+            depth_samples(*img, depth_scratch_);
+            staging_.write(depth_scratch_.data(), depth_scratch_.size() * 4, offset);
+          } else {
+            staging_.write(img->texels.data(), img->texels.size(), offset);
+          }
           VkBufferImageCopy copy{};
           copy.bufferOffset = offset;
           copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, l, static_cast<uint32_t>(f), 1};

@@ -49,6 +49,7 @@ class TextureCache {
   GpuImage dummies_[4];
   vk::Sampler dummy_sampler_;
   GpuBuffer staging_;
+  std::vector<float> depth_scratch_;  // depth texels converted for upload
 };
 
 }  // namespace glpt::rt
