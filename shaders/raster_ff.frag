@@ -150,44 +150,62 @@ struct Lod {
   float fpart;    // weight of level1 (GL_*_MIPMAP_LINEAR)
 };
 
+// gallivm's rho from the quad derivatives (lp_build_rho with llvmpipe's defaults: exact, not
+// approximated): squared for 2 and 3 coordinates. `dims`: 1, 2 or 3 coordinates.
+float quad_rho(uint u, uint dims, vec3 ddx, vec3 ddy) {
+  vec3 size = S.tex_size[u].xyz;
+  precise float rho;
+  if (dims > 1u) {
+    precise vec3 sx = ddx * size, sy = ddy * size;
+    precise float rx = sx.x * sx.x + sx.y * sx.y;
+    precise float ry = sy.x * sy.x + sy.y * sy.y;
+    if (dims > 2u) {
+      rx = rx + sx.z * sx.z;
+      ry = ry + sy.z * sy.z;
+    }
+    rho = max(rx, ry);  // rho squared
+  } else {
+    rho = max(abs(ddx.x), abs(ddy.x)) * size.x;
+  }
+  return rho;
+}
+
+// Whether gallivm takes the shortcut without post-log2 adjustments (no bias, no lod clamps, no
+// linear mip filter): then lod > 0 is rho > 1 and the nearest level comes from the exponent bits.
+bool lod_shortcut(uint flags) {
+  return (flags & (GLPT_TEX_LOD_BIAS | GLPT_TEX_APPLY_MIN_LOD | GLPT_TEX_APPLY_MAX_LOD |
+                   GLPT_TEX_MIP_LINEAR)) == 0u;
+}
+// The shortcut's integer lod: iround(log2(rho)) from the exponent of rho (squared) or rho * sqrt 2.
+int shortcut_level(uint dims, float rho) {
+  precise float scaled = rho * 1.41421356;
+  return dims > 1u ? exponent_of(rho, 1) >> 1 : exponent_of(scaled, 0);
+}
+// The lod before bias and clamps: lp_build_fast_log2 of rho squared, halved.
+float unadjusted_lod(uint dims, float rho) {
+  precise float squared = dims > 1u ? rho : rho * rho;
+  precise float l = fast_log2(squared) * 0.5;
+  return l;
+}
+
 // lp_build_lod_selector with llvmpipe's defaults (exact rho, no brilinear), then
-// lp_build_nearest_mip_level / lp_build_linear_mip_levels. `dims`: 1, 2 or 3 coordinates.
+// lp_build_nearest_mip_level / lp_build_linear_mip_levels.
 Lod select_lod(uint u, uint dims, vec3 ddx, vec3 ddy) {
   uint flags = S.tex_mode[u].y;
-  vec3 size = S.tex_size[u].xyz;
   int last = max(int(S.tex_size[u].w) - 1, 0);
   Lod r = Lod(false, 0, 0, 0.0);
   float lod;
   if ((flags & GLPT_TEX_MIN_MAX_LOD_EQUAL) != 0u) {
     lod = S.tex_lod[u].y;
   } else {
-    bool squared = dims > 1u;
-    precise float rho;
-    if (squared) {
-      precise vec3 sx = ddx * size, sy = ddy * size;
-      precise float rx = sx.x * sx.x + sx.y * sx.y;
-      precise float ry = sy.x * sy.x + sy.y * sy.y;
-      if (dims > 2u) {
-        rx = rx + sx.z * sx.z;
-        ry = ry + sy.z * sy.z;
-      }
-      rho = max(rx, ry);  // rho squared
-    } else {
-      rho = max(abs(ddx.x), abs(ddy.x)) * size.x;
-    }
-    bool adjusted =
-        (flags & (GLPT_TEX_LOD_BIAS | GLPT_TEX_APPLY_MIN_LOD | GLPT_TEX_APPLY_MAX_LOD)) != 0u;
-    if (!adjusted && (flags & GLPT_TEX_MIP_LINEAR) == 0u) {
-      // The shortcut without post-log2 adjustments: lod > 0 is rho > 1, and the nearest level
-      // is iround(log2(rho)) from the exponent bits.
+    float rho = quad_rho(u, dims, ddx, ddy);
+    if (lod_shortcut(flags)) {
       r.minified = rho > 1.0;
-      precise float scaled = rho * 1.41421356;
-      int ipart = squared ? exponent_of(rho, 1) >> 1 : exponent_of(scaled, 0);
+      int ipart = shortcut_level(dims, rho);
       r.level0 = r.level1 = (flags & GLPT_TEX_MIP_NEAREST) != 0u ? clamp(ipart, 0, last) : 0;
       return r;
     }
-    if (!squared) rho = rho * rho;
-    precise float l = fast_log2(rho) * 0.5;
+    precise float l = unadjusted_lod(dims, rho);
     if ((flags & GLPT_TEX_LOD_BIAS) != 0u) l = l + S.tex_lod[u].x;
     if ((flags & GLPT_TEX_APPLY_MAX_LOD) != 0u) l = min(l, S.tex_lod[u].z);
     if ((flags & GLPT_TEX_APPLY_MIN_LOD) != 0u) l = max(l, S.tex_lod[u].y);
@@ -205,6 +223,35 @@ Lod select_lod(uint u, uint dims, vec3 ddx, vec3 ddy) {
     r.level0 = r.level1 = clamp(int(roundEven(lod)), 0, last);
   }
   return r;
+}
+
+// Whether the lod decides anything for unit u (a mip filter, or different minification and
+// magnification filters).
+bool lod_matters(uint u) {
+  uint flags = S.tex_mode[u].y;
+  bool min_linear = (flags & GLPT_TEX_MIN_LINEAR) != 0u;
+  bool mag_linear = (flags & GLPT_TEX_MAG_LINEAR) != 0u;
+  return (flags & (GLPT_TEX_MIP_NEAREST | GLPT_TEX_MIP_LINEAR)) != 0u || min_linear != mag_linear;
+}
+
+// The explicit lod for textureLod that makes lavapipe's sampler choose what llvmpipe's implicit
+// lod does from Mesa's quad derivatives (quad_derivatives): lavapipe's own implicit lod would
+// take ddx from the other row of the quad. Both are gallivm, which adds the sampler's bias to an
+// explicit lod and clamps it to the sampler's lods exactly as it does an implicit one, so the
+// value passed is the lod before those adjustments. In gallivm's shortcut (no adjustments) the
+// level is an integer and lod > 0 is rho > 1: an integer lod, or a tiny positive one for a
+// minified level 0, gives the same level and filter choice.
+float mesa_explicit_lod(uint u, uint dims, vec3 c) {
+  uint flags = S.tex_mode[u].y;
+  if ((flags & GLPT_TEX_MIN_MAX_LOD_EQUAL) != 0u) return 0.0;  // gallivm takes the sampler's
+  vec3 ddx, ddy;
+  quad_derivatives(c, ddx, ddy);
+  float rho = quad_rho(u, dims, ddx, ddy);
+  if (lod_shortcut(flags)) {
+    int ipart = shortcut_level(dims, rho);
+    return ipart != 0 ? float(ipart) : rho > 1.0 ? 1.0 / 1024.0 : 0.0;
+  }
+  return unadjusted_lod(dims, rho);
 }
 
 // Whether a quad's lookup filters linearly (the minification filter when minified).
@@ -409,6 +456,26 @@ vec4 sample_unit(uint u) {
   if ((config & GLPT_UNIT_COMPARE) != 0u && (target == 1u || target == 2u))
     return vec4(compare_unit(u, target, projected));
   vec3 c = clamp_coords(u, config, projected);
+  if (target != 4u && lod_matters(u)) {
+    // The lod from the unclamped coordinates, as gallivm computes it before wrapping.
+    float lod = mesa_explicit_lod(u, target, projected);
+    if (target == 1u) {
+      if (u == 0u) return textureLod(u_tex1d_0, c.x, lod);
+      if (u == 1u) return textureLod(u_tex1d_1, c.x, lod);
+      if (u == 2u) return textureLod(u_tex1d_2, c.x, lod);
+      return textureLod(u_tex1d_3, c.x, lod);
+    }
+    if (target == 2u) {
+      if (u == 0u) return textureLod(u_tex2d_0, c.xy, lod);
+      if (u == 1u) return textureLod(u_tex2d_1, c.xy, lod);
+      if (u == 2u) return textureLod(u_tex2d_2, c.xy, lod);
+      return textureLod(u_tex2d_3, c.xy, lod);
+    }
+    if (u == 0u) return textureLod(u_tex3d_0, c, lod);
+    if (u == 1u) return textureLod(u_tex3d_1, c, lod);
+    if (u == 2u) return textureLod(u_tex3d_2, c, lod);
+    return textureLod(u_tex3d_3, c, lod);
+  }
   if (target == 1u) {
     if (u == 0u) return texture(u_tex1d_0, c.x);
     if (u == 1u) return texture(u_tex1d_1, c.x);
