@@ -9,6 +9,8 @@
 
 namespace {
 
+constexpr GLenum kTextureStencilSize = 0x88F1;  // GL 3.0
+
 class TexImageTest : public GlTest {
  protected:
   void SetUp() override {
@@ -473,6 +475,20 @@ TEST_F(TexImageTest, DepthTexturesQuantizeToTheirBits) {
   GLubyte c[8];
   glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, c);
   EXPECT_EQ(glGetError(), GLenum{GL_INVALID_OPERATION});
+}
+
+// GL_TEXTURE_STENCIL_SIZE (GL 3.0, EXT_packed_depth_stencil) is answered as Mesa does in a
+// compatibility context: 0 for every format glpt has, with or without an image, no error.
+TEST_F(TexImageTest, StencilSizeIsZero) {
+  EXPECT_EQ(level_parameter(kTextureStencilSize), 0);
+  const GLubyte t[16] = {};
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 2, 2, 0, GL_RGBA, GL_UNSIGNED_BYTE, t);
+  EXPECT_EQ(level_parameter(kTextureStencilSize), 0);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT16, 2, 2, 0, GL_DEPTH_COMPONENT,
+               GL_UNSIGNED_BYTE, t);
+  EXPECT_EQ(level_parameter(kTextureStencilSize), 0);
+  EXPECT_EQ(level_parameter(kTextureStencilSize, 0, GL_PROXY_TEXTURE_2D), 0);
+  EXPECT_EQ(glGetError(), GLenum{GL_NO_ERROR});
 }
 
 // Integer depth data as Mesa stores it (values read back as floats from OSMesa): the texture's own
