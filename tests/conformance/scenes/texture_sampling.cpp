@@ -290,3 +290,84 @@ GLPT_SCENE(texture_sampling_depth_compare_mipmapped, 64, 64) {
 }
 
 }  // namespace
+
+namespace {
+
+using namespace glpt::conformance::util;
+
+// Coloured levels (a checker of a colour per level) for a texture of `target` whose level 0 is
+// size texels wide (and high and deep for 3D: 8).
+void coloured_levels(GLenum target, int size) {
+  static const Rgba8 kLevelColours[6] = {{255, 255, 255, 255}, {255, 80, 80, 255},
+                                         {80, 255, 80, 255},   {80, 80, 255, 255},
+                                         {255, 255, 80, 255},  {255, 80, 255, 255}};
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  for (int level = 0, n = size; n >= 1; ++level, n /= 2) {
+    const Rgba8 c = kLevelColours[level % 6];
+    const Rgba8 dark{static_cast<uint8_t>(c.r / 2), static_cast<uint8_t>(c.g / 2),
+                     static_cast<uint8_t>(c.b / 2), 255};
+    const int depth = target == GL_TEXTURE_3D ? n : 1;
+    const std::vector<uint8_t> plane = checker(n, n, std::max(1, n / 4), c, dark);
+    std::vector<uint8_t> texels;
+    for (int z = 0; z < depth; ++z) texels.insert(texels.end(), plane.begin(), plane.end());
+    if (target == GL_TEXTURE_1D)
+      glTexImage1D(target, level, GL_RGBA, n, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels.data());
+    else if (target == GL_TEXTURE_2D)
+      glTexImage2D(target, level, GL_RGBA, n, n, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels.data());
+    else
+      glTexImage3D(target, level, GL_RGBA, n, n, n, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels.data());
+  }
+}
+
+// A floor receding from the viewer with texture coordinates (s, t, r) = (0..s1, 0..t1, 0.3).
+void receding_floor(float s0, float s1, float t1) {
+  perspective(60.0, 1.0, 0.3, 30.0);
+  glTranslatef(0, -0.6f, -1.0f);
+  glRotatef(-75, 1, 0, 0);
+  glBegin(GL_QUADS);
+  glColor3f(1, 1, 1);
+  glTexCoord3f(s0, 0, 0.3f);
+  glVertex3f(-2, -0.5f, 0);
+  glTexCoord3f(s1, 0, 0.3f);
+  glVertex3f(2, -0.5f, 0);
+  glTexCoord3f(s1, t1, 0.3f);
+  glVertex3f(2, 12, 0);
+  glTexCoord3f(s0, t1, 0.3f);
+  glVertex3f(-2, 12, 0);
+  glEnd();
+}
+
+// The level of detail of mipmapped 1D and 3D lookups (llvmpipe takes the derivatives from its
+// y-flipped quads; raster mode passes that lod explicitly).
+GLPT_SCENE(texture_sampling_mipmapped_1d, 64, 64) {
+  clear(0.3f, 0.5f, 0.7f);
+  new_texture(GL_TEXTURE_1D, GL_LINEAR_MIPMAP_LINEAR, GL_NEAREST);
+  coloured_levels(GL_TEXTURE_1D, 32);
+  glEnable(GL_TEXTURE_1D);
+  receding_floor(0, 6, 12);
+}
+GLPT_SCENE(texture_sampling_mipmapped_3d, 64, 64) {
+  clear(0.3f, 0.5f, 0.7f);
+  new_texture(GL_TEXTURE_3D, GL_NEAREST_MIPMAP_LINEAR, GL_LINEAR);
+  coloured_levels(GL_TEXTURE_3D, 16);
+  glEnable(GL_TEXTURE_3D);
+  receding_floor(0, 6, 12);
+}
+
+// GL_CLAMP on a mipmapped texture with a lod bias: llvmpipe takes the lod from the unclamped
+// coordinates (s from -1 to 2), so the clamped region (constant coordinates) is still minified
+// in the distance.
+GLPT_SCENE(texture_sampling_mipmapped_clamp_bias, 64, 64) {
+  clear(0.3f, 0.5f, 0.7f);
+  new_texture(GL_TEXTURE_2D, GL_LINEAR_MIPMAP_NEAREST, GL_LINEAR);
+  coloured_levels(GL_TEXTURE_2D, 32);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+  glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_LOD_BIAS, 0.7f);
+  const float border[4] = {1, 0, 1, 1};
+  glTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, border);
+  glEnable(GL_TEXTURE_2D);
+  receding_floor(-1, 2, 6);
+}
+
+}  // namespace
