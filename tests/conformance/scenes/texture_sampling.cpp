@@ -36,6 +36,34 @@ void textured_quad(float x0, float y0, float x1, float y1, float s0, float t0, f
   glEnd();
 }
 
+// A floor receding from the viewer with texture coordinates (s, t, r) = (s0..s1, t0..t1, 0.3).
+void receding_floor(float s0, float t0, float s1, float t1) {
+  perspective(60.0, 1.0, 0.3, 30.0);
+  glTranslatef(0, -0.6f, -1.0f);
+  glRotatef(-75, 1, 0, 0);
+  glBegin(GL_QUADS);
+  glColor3f(1, 1, 1);
+  glTexCoord3f(s0, t0, 0.3f);
+  glVertex3f(-2, -0.5f, 0);
+  glTexCoord3f(s1, t0, 0.3f);
+  glVertex3f(2, -0.5f, 0);
+  glTexCoord3f(s1, t1, 0.3f);
+  glVertex3f(2, 12, 0);
+  glTexCoord3f(s0, t1, 0.3f);
+  glVertex3f(-2, 12, 0);
+  glEnd();
+}
+
+// A 4x4 texture of distinct texels with GL_CLAMP, `filter` and a magenta border, drawn with
+// GL_REPLACE.
+void clamped_distinct_texture(GLenum filter) {
+  const float border[4] = {1, 0, 1, 1};
+  glEnable(GL_TEXTURE_2D);
+  texture_2d(GL_RGBA, 4, 4, distinct_texels(), filter, GL_CLAMP);
+  glTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, border);
+  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+}
+
 // GL_CLAMP with GL_NEAREST samples the edge texels beyond [0, 1] and never the border colour
 // (magenta): gallivm treats it as GL_CLAMP_TO_EDGE. Coordinates run from -1 to 2 over 48 pixels,
 // so pixel centres fall exactly on s = 1 and t = 1. Left: a 2D texture; right: a 1D texture
@@ -43,13 +71,10 @@ void textured_quad(float x0, float y0, float x1, float y1, float s0, float t0, f
 GLPT_SCENE(texture_sampling_clamp_nearest, 64, 64) {
   clear(0.2f, 0.2f, 0.2f);
   ortho_pixels(64, 64);
-  const float border[4] = {1, 0, 1, 1};
-  glEnable(GL_TEXTURE_2D);
-  texture_2d(GL_RGBA, 4, 4, distinct_texels(), GL_NEAREST, GL_CLAMP);
-  glTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, border);
-  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+  clamped_distinct_texture(GL_NEAREST);
   textured_quad(2, 2, 50, 50, -1, -1, 2, 2);
   glDisable(GL_TEXTURE_2D);
+  const float border[4] = {1, 0, 1, 1};
   new_texture(GL_TEXTURE_1D, GL_NEAREST, GL_NEAREST);
   glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_WRAP_S, GL_CLAMP);
   glTexParameterfv(GL_TEXTURE_1D, GL_TEXTURE_BORDER_COLOR, border);
@@ -71,11 +96,7 @@ GLPT_SCENE(texture_sampling_clamp_nearest, 64, 64) {
 GLPT_SCENE(texture_sampling_clamp_linear, 64, 64) {
   clear(0.2f, 0.2f, 0.2f);
   ortho_pixels(64, 64);
-  const float border[4] = {1, 0, 1, 1};
-  glEnable(GL_TEXTURE_2D);
-  texture_2d(GL_RGBA, 4, 4, distinct_texels(), GL_LINEAR, GL_CLAMP);
-  glTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, border);
-  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+  clamped_distinct_texture(GL_LINEAR);
   textured_quad(2, 2, 62, 62, -0.5f, -0.5f, 1.5f, 1.5f);
 }
 
@@ -84,9 +105,6 @@ GLPT_SCENE(texture_sampling_clamp_linear, 64, 64) {
 // texels, no border) and the far part minified (linear: blended with the border, magenta).
 void clamp_mixed_scene(GLenum min_filter, GLenum mag_filter) {
   clear(0.3f, 0.5f, 0.7f);
-  perspective(60.0, 1.0, 0.3, 30.0);
-  glTranslatef(0, -0.6f, -1.0f);
-  glRotatef(-75, 1, 0, 0);
   const float border[4] = {1, 0, 1, 1};
   glEnable(GL_TEXTURE_2D);
   texture_2d(GL_RGBA, 8, 8, checker(8, 8, 2, Rgba8{240, 240, 240, 255}, Rgba8{40, 60, 160, 255}),
@@ -94,17 +112,7 @@ void clamp_mixed_scene(GLenum min_filter, GLenum mag_filter) {
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, static_cast<GLint>(min_filter));
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, static_cast<GLint>(mag_filter));
   glTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, border);
-  glBegin(GL_QUADS);
-  glColor3f(1, 1, 1);
-  glTexCoord2f(-0.2f, -0.1f);
-  glVertex3f(-2, -0.5f, 0);
-  glTexCoord2f(1.2f, -0.1f);
-  glVertex3f(2, -0.5f, 0);
-  glTexCoord2f(1.2f, 1.1f);
-  glVertex3f(2, 12, 0);
-  glTexCoord2f(-0.2f, 1.1f);
-  glVertex3f(-2, 12, 0);
-  glEnd();
+  receding_floor(-0.2f, -0.1f, 1.2f, 1.1f);
 }
 
 GLPT_SCENE(texture_sampling_clamp_min_linear_mag_nearest, 64, 64) {
@@ -119,24 +127,11 @@ GLPT_SCENE(texture_sampling_clamp_min_nearest_mag_linear, 64, 64) {
 // smooth in front.
 GLPT_SCENE(texture_sampling_min_nearest_mag_linear, 64, 64) {
   clear(0.3f, 0.5f, 0.7f);
-  perspective(60.0, 1.0, 0.3, 30.0);
-  glTranslatef(0, -0.6f, -1.0f);
-  glRotatef(-75, 1, 0, 0);
   glEnable(GL_TEXTURE_2D);
   texture_2d(GL_RGB, 16, 16, checker(16, 16, 4, Rgba8{240, 240, 240, 255}, Rgba8{40, 60, 160, 255}),
              GL_NEAREST);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glBegin(GL_QUADS);
-  glColor3f(1, 1, 1);
-  glTexCoord2f(0, 0);
-  glVertex3f(-2, -0.5f, 0);
-  glTexCoord2f(2, 0);
-  glVertex3f(2, -0.5f, 0);
-  glTexCoord2f(2, 12);
-  glVertex3f(2, 12, 0);
-  glTexCoord2f(0, 12);
-  glVertex3f(-2, 12, 0);
-  glEnd();
+  receding_floor(0, 0, 2, 12);
 }
 
 // The border colour of each base format (st_translate_color: RGB has alpha 1, ALPHA no colour,
@@ -289,12 +284,6 @@ GLPT_SCENE(texture_sampling_depth_compare_mipmapped, 64, 64) {
   glEnd();
 }
 
-}  // namespace
-
-namespace {
-
-using namespace glpt::conformance::util;
-
 // Coloured levels (a checker of a colour per level) for a texture of `target` whose level 0 is
 // size texels wide (and high and deep for 3D: 8).
 void coloured_levels(GLenum target, int size) {
@@ -319,24 +308,6 @@ void coloured_levels(GLenum target, int size) {
   }
 }
 
-// A floor receding from the viewer with texture coordinates (s, t, r) = (0..s1, 0..t1, 0.3).
-void receding_floor(float s0, float s1, float t1) {
-  perspective(60.0, 1.0, 0.3, 30.0);
-  glTranslatef(0, -0.6f, -1.0f);
-  glRotatef(-75, 1, 0, 0);
-  glBegin(GL_QUADS);
-  glColor3f(1, 1, 1);
-  glTexCoord3f(s0, 0, 0.3f);
-  glVertex3f(-2, -0.5f, 0);
-  glTexCoord3f(s1, 0, 0.3f);
-  glVertex3f(2, -0.5f, 0);
-  glTexCoord3f(s1, t1, 0.3f);
-  glVertex3f(2, 12, 0);
-  glTexCoord3f(s0, t1, 0.3f);
-  glVertex3f(-2, 12, 0);
-  glEnd();
-}
-
 // The level of detail of mipmapped 1D and 3D lookups (llvmpipe takes the derivatives from its
 // y-flipped quads; raster mode passes that lod explicitly).
 GLPT_SCENE(texture_sampling_mipmapped_1d, 64, 64) {
@@ -344,14 +315,14 @@ GLPT_SCENE(texture_sampling_mipmapped_1d, 64, 64) {
   new_texture(GL_TEXTURE_1D, GL_LINEAR_MIPMAP_LINEAR, GL_NEAREST);
   coloured_levels(GL_TEXTURE_1D, 32);
   glEnable(GL_TEXTURE_1D);
-  receding_floor(0, 6, 12);
+  receding_floor(0, 0, 6, 12);
 }
 GLPT_SCENE(texture_sampling_mipmapped_3d, 64, 64) {
   clear(0.3f, 0.5f, 0.7f);
   new_texture(GL_TEXTURE_3D, GL_NEAREST_MIPMAP_LINEAR, GL_LINEAR);
   coloured_levels(GL_TEXTURE_3D, 16);
   glEnable(GL_TEXTURE_3D);
-  receding_floor(0, 6, 12);
+  receding_floor(0, 0, 6, 12);
 }
 
 // GL_CLAMP on a mipmapped texture with a lod bias: llvmpipe takes the lod from the unclamped
@@ -367,7 +338,7 @@ GLPT_SCENE(texture_sampling_mipmapped_clamp_bias, 64, 64) {
   const float border[4] = {1, 0, 1, 1};
   glTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, border);
   glEnable(GL_TEXTURE_2D);
-  receding_floor(-1, 2, 6);
+  receding_floor(-1, 0, 2, 6);
 }
 
 }  // namespace
