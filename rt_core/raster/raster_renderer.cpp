@@ -108,7 +108,10 @@ void RasterRenderer::execute(const rec::FrameRecord& record, const rec::Drawable
     if (std::holds_alternative<rec::Clear>(record.commands[i])) ++quad_clears;
   const size_t pixel_states = begin_pixel_commands(record, *commands);
   std::vector<gpu::RasterState> states(state_count + quad_clears + pixel_states + 1);
-  for (size_t i = 0; i < state_count; ++i) pack_state_uniforms(record.states[i], states[i]);
+  for (size_t i = 0; i < state_count; ++i) {
+    pack_state_uniforms(record.states[i], states[i]);
+    states[i].drawable = glm::uvec4(drawable.width, drawable.height, 0, 0);
+  }
 
   std::vector<const rec::TextureObjectSnapshot*> textures;
   for (const rec::StateSnapshot& s : record.states)
