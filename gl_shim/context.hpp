@@ -21,6 +21,7 @@
 #include "gl_shim/gl_commands.hpp"
 #include "gl_shim/pixels/bitmap_cache.hpp"
 #include "gl_shim/pixels/raster_position.hpp"
+#include "gl_shim/render_modes/render_modes.hpp"
 #include "gl_shim/state/attrib_stack.hpp"
 #include "gl_shim/state/color_index_state.hpp"
 #include "gl_shim/state/current_attributes.hpp"
@@ -77,6 +78,7 @@ class Context {
   // Buffer objects of the share group (the constructor shares them with share_list).
   std::shared_ptr<BufferStore> buffers = std::make_shared<BufferStore>();
   AttribStacks attrib_stacks;  // glPushAttrib / glPushClientAttrib
+  RenderModeState render_mode;  // GL_RENDER, GL_SELECT, GL_FEEDBACK (GL 1.5 5.2, 5.3)
 
   // --- the frame --------------------------------------------------------------------------------
   // The frame being recorded (commands since the record was last executed) and the snapshots of

@@ -18,6 +18,7 @@ struct VertexAssembly {
   // vertices before the first call get the material at glBegin.
   bool per_vertex_material = false;
   std::array<rec::Material, 2> material_at_begin{};
+  bool edge_flag_given = false;  // glEdgeFlag was called inside this primitive
   rec::VertexData vertices;       // one value per vertex for every recorded attribute
   uint64_t dropped_vertices = 0;  // beyond the per-primitive limit
 };
