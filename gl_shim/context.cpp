@@ -107,6 +107,7 @@ rec::DrawableConfig current_drawable(Context& ctx) {
 
 void start_new_record(Context& ctx) {
   ctx.recorder.clear();
+  ctx.recorder.record().query_at_start = ctx.queries.active_id();
   ctx.snapshots.record_cleared();
   ctx.recording_since.restart();
 }
@@ -118,9 +119,12 @@ bool execute_record(Context& ctx) {
   const rec::DrawableConfig drawable = current_drawable(ctx);
   ctx.recorder.seal();
   bool ok = true;
+  std::vector<rt::QuerySamples> samples;
   if (!ctx.recorder.empty() || drawable != ctx.output->drawable())
-    ok = ctx.output->execute(ctx.recorder.record(), drawable, ctx.recording_since.elapsed_ms());
+    ok = ctx.output->execute(ctx.recorder.record(), drawable, ctx.recording_since.elapsed_ms(),
+                             &samples);
   start_new_record(ctx);
+  count_query_samples(ctx.queries, samples);
   return ok;
 }
 
@@ -131,9 +135,11 @@ void note_frame_content(Context& ctx) {
 void end_frame(Context& ctx, bool swap) {
   if (!ensure_output(ctx)) return;
   ctx.recorder.seal();
+  std::vector<rt::QuerySamples> samples;
   ctx.output->end_frame(ctx.recorder.record(), current_drawable(ctx),
-                        ctx.recording_since.elapsed_ms(), ctx.target, swap);
+                        ctx.recording_since.elapsed_ms(), ctx.target, swap, &samples);
   start_new_record(ctx);
+  count_query_samples(ctx.queries, samples);
 }
 
 }  // namespace glpt

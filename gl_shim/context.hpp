@@ -14,6 +14,7 @@
 #include "gl_shim/arrays/vertex_arrays.hpp"
 #include "gl_shim/buffers/buffer_objects.hpp"
 #include "gl_shim/display_lists/display_lists.hpp"
+#include "gl_shim/evaluators/evaluator_state.hpp"
 #include "gl_shim/frame/frame_output.hpp"
 #include "gl_shim/frame/frame_recorder.hpp"
 #include "gl_shim/frame/state_snapshot.hpp"
@@ -21,6 +22,7 @@
 #include "gl_shim/gl_commands.hpp"
 #include "gl_shim/pixels/bitmap_cache.hpp"
 #include "gl_shim/pixels/raster_position.hpp"
+#include "gl_shim/queries/query_objects.hpp"
 #include "gl_shim/render_modes/render_modes.hpp"
 #include "gl_shim/state/attrib_stack.hpp"
 #include "gl_shim/state/color_index_state.hpp"
@@ -74,11 +76,13 @@ class Context {
   HintState hints;
   VertexAssembly assembly;
   DisplayListState lists;
-  VertexArrays arrays;  // client vertex arrays and buffer bindings (GL 1.5 2.8, 2.9)
+  VertexArrays arrays;        // client vertex arrays and buffer bindings (GL 1.5 2.8, 2.9)
+  EvaluatorState evaluators;  // maps and grids (GL 1.5 5.1); their enables are in `enables`
   // Buffer objects of the share group (the constructor shares them with share_list).
   std::shared_ptr<BufferStore> buffers = std::make_shared<BufferStore>();
-  AttribStacks attrib_stacks;  // glPushAttrib / glPushClientAttrib
+  AttribStacks attrib_stacks;   // glPushAttrib / glPushClientAttrib
   RenderModeState render_mode;  // GL_RENDER, GL_SELECT, GL_FEEDBACK (GL 1.5 5.2, 5.3)
+  QueryState queries;           // occlusion queries: this context's own, never shared
 
   // --- the frame --------------------------------------------------------------------------------
   // The frame being recorded (commands since the record was last executed) and the snapshots of

@@ -45,10 +45,10 @@ class Renderer::Impl {
 
   // Throws on failure (Renderer::execute turns that into false + message).
   bool execute(const rec::FrameRecord& record, const rec::DrawableConfig& drawable,
-               FrameStats& stats, const FrameEnd* end) {
+               FrameStats& stats, const FrameEnd* end, std::vector<QuerySamples>* queries) {
     stats = FrameStats();
     if (settings_.mode == RenderMode::kRaster || !tracer_) {
-      raster_.execute(record, drawable, stats, nullptr, end);
+      raster_.execute(record, drawable, stats, nullptr, end, nullptr, queries);
       return true;
     }
     // Path-traced mode (docs/architecture.md): the traced draws are rasterized into the
@@ -58,7 +58,7 @@ class Renderer::Impl {
     if (!scene_.any_traced || drawable.width == 0 || drawable.height == 0) {
       // Nothing traced (e.g. the rest of a frame after a glReadPixels): raster mode. The
       // accumulation stays valid for the next frame with the same signature.
-      raster_.execute(record, drawable, stats, nullptr, end);
+      raster_.execute(record, drawable, stats, nullptr, end, nullptr, queries);
       return true;
     }
     try {
@@ -66,7 +66,10 @@ class Renderer::Impl {
           tracer_->begin_frame(FrameSignature(record, scene_.gbuffer_pass, drawable));
       gbuffer_.ensure(raster_.device(), drawable.width, drawable.height);
       const GBufferTargets targets = gbuffer_.targets(&scene_.traced, jitter);
-      raster_.execute(record, drawable, stats, &scene_.gbuffer_pass, nullptr, &targets);
+      // Occlusion queries count the traced draws' samples here, where they are rasterized with
+      // their own pipelines' coverage, depth and stencil tests (only their outputs differ), and
+      // the other draws' in pass 3.
+      raster_.execute(record, drawable, stats, &scene_.gbuffer_pass, nullptr, &targets, queries);
       const TraceTargets trace_targets{&gbuffer_, raster_.color_image(true).view(),
                                        raster_.color_image(!drawable.double_buffered).view()};
       FrameStats traced;
@@ -84,7 +87,7 @@ class Renderer::Impl {
       tracer_->forget_previous_frame();  // nothing about this frame's accumulation holds
       throw;
     }
-    raster_.execute(record, drawable, stats, &scene_.after_trace, end);
+    raster_.execute(record, drawable, stats, &scene_.after_trace, end, nullptr, queries);
     return true;
   }
 
@@ -133,9 +136,11 @@ RenderMode Renderer::mode() const { return impl_->mode(); }
 const std::string& Renderer::device_name() const { return impl_->device_name(); }
 
 bool Renderer::execute(const rec::FrameRecord& record, const rec::DrawableConfig& drawable,
-                       FrameStats& stats, std::string* error, const FrameEnd* end) {
+                       FrameStats& stats, std::string* error, const FrameEnd* end,
+                       std::vector<QuerySamples>* queries) {
+  if (queries != nullptr) queries->clear();
   return guarded("render failed", error,
-                 [&] { return impl_->execute(record, drawable, stats, end); });
+                 [&] { return impl_->execute(record, drawable, stats, end, queries); });
 }
 
 bool Renderer::read_color(uint32_t buffer, int32_t x, int32_t y, uint32_t width, uint32_t height,

@@ -35,6 +35,13 @@ struct FrameEnd {
   const HostImage* present_to = nullptr;       // copy the front buffer there for the window
 };
 
+// The samples one execute counted for an occlusion query (rec::BeginQuery .. rec::EndQuery): those
+// of the record's commands while the query was active that passed the depth and stencil tests.
+struct QuerySamples {
+  uint64_t id = 0;
+  uint64_t samples = 0;
+};
+
 class Renderer {
  public:
   // nullptr + one clear message in *error when no usable Vulkan device exists (it names what is
@@ -51,8 +58,11 @@ class Renderer {
 
   // Applies the record's commands to the drawable's buffers. Buffers are (re)created when the
   // drawable's configuration changes; their contents are then undefined, as after a resize.
+  // `queries` (may be null) receives one entry per occlusion query the record counts into
+  // (active at its start or begun in it), zero samples included.
   bool execute(const rec::FrameRecord& record, const rec::DrawableConfig& drawable,
-               FrameStats& stats, std::string* error, const FrameEnd* end = nullptr);
+               FrameStats& stats, std::string* error, const FrameEnd* end = nullptr,
+               std::vector<QuerySamples>* queries = nullptr);
 
   // A rectangle of a colour buffer (GL_FRONT*, GL_BACK*: the resolved read buffer) as RGBA8,
   // rows bottom to top; pixels outside the drawable are zero. False before the first execute.

@@ -71,12 +71,12 @@ void FrameOutput::report_failure(const std::string& error) {
 }
 
 bool FrameOutput::execute(const rec::FrameRecord& record, const rec::DrawableConfig& drawable,
-                          double record_ms) {
+                          double record_ms, std::vector<rt::QuerySamples>* queries) {
   std::string error;
   rt::FrameStats stats;
   drawable_ = drawable;
   record_ms_ += record_ms;
-  if (!renderer_->execute(record, drawable, stats, &error)) {
+  if (!renderer_->execute(record, drawable, stats, &error, nullptr, queries)) {
     report_failure(error);
     return false;
   }
@@ -85,7 +85,8 @@ bool FrameOutput::execute(const rec::FrameRecord& record, const rec::DrawableCon
 }
 
 void FrameOutput::end_frame(const rec::FrameRecord& record, const rec::DrawableConfig& drawable,
-                            double record_ms, WindowTarget* target, bool swap) {
+                            double record_ms, WindowTarget* target, bool swap,
+                            std::vector<rt::QuerySamples>* queries) {
   const double frame_ms = since_last_frame_.elapsed_ms();
   std::string error;
   rt::FrameStats stats;
@@ -98,7 +99,7 @@ void FrameOutput::end_frame(const rec::FrameRecord& record, const rec::DrawableC
   const bool want_png = !settings_.png_dir.empty() && frame_index_ % settings_.png_every == 0;
   const rt::FrameEnd end{swap, host == nullptr || want_png ? &image_ : nullptr, host};
   image_.clear();
-  const bool ok = renderer_->execute(record, drawable, stats, &error, &end);
+  const bool ok = renderer_->execute(record, drawable, stats, &error, &end, queries);
   if (!ok) report_failure(error);
   add(frame_stats_, stats);
   const Stopwatch present_timer;

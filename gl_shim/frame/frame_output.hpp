@@ -48,13 +48,15 @@ class FrameOutput {
   static std::unique_ptr<FrameOutput> create(std::string* error);
 
   // Applies `record` to the drawable's buffers. `record_ms`: time spent recording it.
+  // `queries`: the samples counted for its occlusion queries (rt::Renderer::execute).
   bool execute(const rec::FrameRecord& record, const rec::DrawableConfig& drawable,
-               double record_ms);
+               double record_ms, std::vector<rt::QuerySamples>* queries = nullptr);
   // End of a frame: a swap (double-buffered) or glFlush/glFinish of a single-buffered drawable.
   // Executes the rest of the frame's record, swaps if asked (all in one submission), shows the
   // front buffer in `target` (may be null), writes the PNG and prints the frame's statistics.
   void end_frame(const rec::FrameRecord& record, const rec::DrawableConfig& drawable,
-                 double record_ms, WindowTarget* target, bool swap);
+                 double record_ms, WindowTarget* target, bool swap,
+                 std::vector<rt::QuerySamples>* queries = nullptr);
 
   rt::Renderer& renderer() { return *renderer_; }
   // What the last completed frame cost (what GLPT_STATS printed for it).

@@ -37,7 +37,8 @@ they are; its pointer arguments are copied with a length that comes from:
     table entry may name a condition under which the command is executed at once and never
     compiled (proxy texture targets, GL 1.5 3.8.11).
   - HAND_COMPILED: hand-written code that dereferences the client data itself (vertex array
-    draws, whose arrays GL 1.5 5.4 reads at compile time: arrays/array_lists.hpp), recording
+    draws, whose arrays GL 1.5 5.4 reads at compile time: arrays/array_lists.hpp; evaluator
+    maps, whose control points it reads: evaluators/evaluator_lists.hpp), recording
     records of its own that HAND_REPLAYED functions replay.
 Any other pointer argument (output pointers) makes a command "not compilable": it is counted
 and not recorded.
@@ -83,10 +84,11 @@ GL_ENUM_ONLY_EXTENSIONS = [
 # the time test for them rather than for the version) and GL 1.x-era ones glpt implements
 # besides. Every command an advertised extension adds must be implemented (checked by
 # tests/unit/extensions_test.cpp through advertised_extension_commands()). Not advertised:
-# GL_ARB_occlusion_query (queries are not implemented yet), GL_EXT_polygon_offset (its bias
-# differs from glPolygonOffset's), GL_ARB_imaging (only its GL 1.4 blend subset is implemented).
+# GL_EXT_polygon_offset (its bias differs from glPolygonOffset's), GL_ARB_imaging (only its
+# GL 1.4 blend subset is implemented).
 ADVERTISED_GL_EXTENSIONS = [
-    "GL_ARB_depth_texture", "GL_ARB_multisample", "GL_ARB_multitexture", "GL_ARB_point_parameters",
+    "GL_ARB_depth_texture", "GL_ARB_multisample", "GL_ARB_multitexture", "GL_ARB_occlusion_query",
+    "GL_ARB_point_parameters",
     "GL_ARB_shadow", "GL_ARB_texture_border_clamp", "GL_ARB_texture_compression",
     "GL_ARB_texture_cube_map", "GL_ARB_texture_env_add", "GL_ARB_texture_env_combine",
     "GL_ARB_texture_env_crossbar", "GL_ARB_texture_env_dot3", "GL_ARB_texture_mirrored_repeat",
@@ -205,7 +207,8 @@ EXTRA_ALIASES = {
 EQUIVALENT_TYPES = {"GLclampf": "GLfloat", "GLclampd": "GLdouble", "GLsizeiptrARB": "GLsizeiptr",
                     "GLintptrARB": "GLintptr", "GLenum": "GLint"}
 
-# Commands whose client data GL 1.5 5.4 dereferences when they are compiled (vertex arrays),
+# Commands whose client data GL 1.5 5.4 dereferences when they are compiled (vertex arrays,
+# evaluator control points),
 # recorded and replayed by hand-written code. While a list is being compiled, the entry point of
 # a command named here (by core name) calls the function given, glpt::f(Context&, ListStream&,
 # <the command's arguments>), which records what it needs under any CommandId; HAND_REPLAYED
@@ -219,12 +222,18 @@ HAND_COMPILED = {
     "glDrawRangeElements": "glpt::compile_draw_range_elements",
     "glMultiDrawArrays": "glpt::compile_multi_draw_arrays",
     "glMultiDrawElements": "glpt::compile_multi_draw_elements",
+    "glMap1f": "glpt::compile_map1f",
+    "glMap1d": "glpt::compile_map1d",
+    "glMap2f": "glpt::compile_map2f",
+    "glMap2d": "glpt::compile_map2d",
 }
 HAND_REPLAYED = {
     "glArrayElement": "glpt::replay_array_element",
     "glDrawArrays": "glpt::replay_array_primitive",
+    "glMap1f": "glpt::replay_map1",
+    "glMap2f": "glpt::replay_map2",
 }
-HAND_COMPILED_HEADERS = ["gl_shim/arrays/array_lists.hpp"]
+HAND_COMPILED_HEADERS = ["gl_shim/arrays/array_lists.hpp", "gl_shim/evaluators/evaluator_lists.hpp"]
 
 GL_SCALAR_TYPES = {
     "GLenum", "GLboolean", "GLbitfield", "GLbyte", "GLshort", "GLint", "GLubyte", "GLushort",

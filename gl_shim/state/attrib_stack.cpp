@@ -149,6 +149,7 @@ struct AttribFrame {
   std::array<TextureParams, kSlotCount> default_textures;
   HintState hints;
   GLuint list_base = 0;
+  EvaluatorGrid eval_grid;  // GL_EVAL_BIT (the maps themselves are in no group)
   std::array<bool, kCapCount> caps{};
   std::array<std::array<bool, kUnitCapCount>, rec::kMaxTextureUnits> unit_caps{};
 };
@@ -424,6 +425,7 @@ void glPushAttrib(Context& ctx, GLbitfield mask) {
   save_textures(ctx, *f);
   f->hints = ctx.hints;
   f->list_base = ctx.lists.list_base;
+  f->eval_grid = ctx.evaluators.grid;
   save_enables(ctx, *f);
   stack.push_back(std::move(f));
 }
@@ -446,7 +448,10 @@ void glPopAttrib(Context& ctx) {
   }
   if (mask & GL_DEPTH_BUFFER_BIT) restore_depth_buffer(ctx, f);
   if (mask & GL_ENABLE_BIT) restore_enables(ctx, f);
-  if (mask & GL_EVAL_BIT) restore_caps(ctx, f, kEvalCaps);
+  if (mask & GL_EVAL_BIT) {
+    restore_caps(ctx, f, kEvalCaps);
+    ctx.evaluators.grid = f.eval_grid;
+  }
   if (mask & GL_FOG_BIT) restore_fog(ctx, f);
   if (mask & GL_HINT_BIT) ctx.hints = f.hints;
   if (mask & GL_LIGHTING_BIT) restore_lighting(ctx, f, lighting);

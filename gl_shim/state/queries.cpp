@@ -264,6 +264,7 @@ bool lookup(const Context& ctx, GLenum pname, Value* out) {
   if (lookup_array_state(ctx, pname, out)) return true;
   if (lookup_texture_and_pixel_state(ctx, pname, out)) return true;
   if (lookup_render_mode_state(ctx, pname, out)) return true;
+  if (lookup_evaluator_state(ctx, pname, out)) return true;
   if (auto on = capability_enabled(const_cast<Context&>(ctx), pname)) {
     *out = boolean(*on);
     return true;

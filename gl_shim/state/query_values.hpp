@@ -84,4 +84,8 @@ bool lookup_texture_and_pixel_state(const Context& ctx, GLenum pname, query::Val
 // gl_shim/render_modes/render_mode_commands.cpp). False if `pname` is none of those.
 bool lookup_render_mode_state(const Context& ctx, GLenum pname, query::Value* out);
 
+// The evaluator grids of GL 1.5 table 6.25 (gl_shim/evaluators/evaluator_commands.cpp). False if
+// `pname` is none of those.
+bool lookup_evaluator_state(const Context& ctx, GLenum pname, query::Value* out);
+
 }  // namespace glpt

@@ -230,7 +230,10 @@ bool RasterRenderer::prepare_pixels(Recording& r, size_t index, Arena& arena,
   } else if (const auto* c = std::get_if<rec::CopyPixels>(&command)) {
     const ColorTargets targets =
         resolve_draw_buffer(state->raster->ops.draw_buffer, drawable_.double_buffered);
-    if (const std::optional<Blit> blit = blit_region(*c, *state, drawable_, targets)) {
+    // Mesa never blits while an occlusion query is active: the copy's fragments count.
+    const std::optional<Blit> blit =
+        queries_.query_of(index) == 0 ? blit_region(*c, *state, drawable_, targets) : std::nullopt;
+    if (blit) {
       plan.prepared = true;
       plan.blit = true;
       plan.blit_source = blit->source;
@@ -342,8 +345,7 @@ void RasterRenderer::record_pixels(Recording& r, size_t index) {
 
   // ---- glCopyPixels: the source first (a plain copy when Mesa blits)
   if (image.copy) {
-    if (r.rendering) vkCmdEndRendering(r.cmd);
-    r.rendering = false;
+    end_rendering(r);
     memory_barrier(r.cmd, kAttachmentStages, kAttachmentAccess, VK_PIPELINE_STAGE_TRANSFER_BIT,
                    VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_TRANSFER_WRITE_BIT);
     if (plan.blit) {
@@ -397,6 +399,7 @@ void RasterRenderer::record_pixels(Recording& r, size_t index) {
     vkCmdBindVertexBuffers2(r.cmd, 0, GLPT_RASTER_ATTR_COUNT, buffers.data(),
                             plan.quad.offsets.data(), nullptr, plan.quad.strides.data());
     vkCmdBindIndexBuffer(r.cmd, vertices_.handle(), plan.quad.index_offset, VK_INDEX_TYPE_UINT32);
+    queries_.before_draw(r.cmd, r.counting);
     vkCmdDrawIndexed(r.cmd, plan.quad.index_count, 1, 0, 0, 0);
   };
 
@@ -405,7 +408,8 @@ void RasterRenderer::record_pixels(Recording& r, size_t index) {
   if (image.kind == rec::PixelKind::kStencil) {
     const uint32_t stencil_max = (1u << std::min(drawable_.stencil_bits, 8u)) - 1;
     const uint32_t write_mask = ops.stencil_write_mask & stencil_max;
-    if (drawable_.stencil_bits == 0 || write_mask == 0) return;
+    // Mesa draws the quad (its fragments count in an occlusion query) even when it writes nothing.
+    if ((drawable_.stencil_bits == 0 || write_mask == 0) && r.counting == 0) return;
     PipelineKey key;
     key.topology = static_cast<uint8_t>(RasterTopology::kTriangles);
     key.polygon_mode = VK_POLYGON_MODE_FILL;
@@ -423,7 +427,9 @@ void RasterRenderer::record_pixels(Recording& r, size_t index) {
     d.stencil_write_mask = write_mask;
     d.stencil_reference = 0;
     set_dynamic_state(r, d, viewport, scissor);
-    draw_quad(GLPT_PIXELS_KEEP_ALL);
+    draw_quad(GLPT_PIXELS_KEEP_ALL);  // every fragment of Mesa's one quad: the pass that counts
+    queries_.stop(r.cmd);
+    r.counting = 0;
     d.stencil_reference = 0xFF;
     for (uint32_t bit = 0; bit < 8; ++bit) {
       if (!(write_mask & (1u << bit))) continue;

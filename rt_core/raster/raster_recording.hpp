@@ -94,6 +94,9 @@ struct RasterRenderer::Recording {
   VkViewport viewport{};
   VkRect2D scissor{};
   const GBufferTargets* gbuffer = nullptr;  // path-traced mode's G-buffer pass
+  // The occlusion query the command being recorded counts into (0: none); its draw calls pass
+  // it to OcclusionQueries::before_draw.
+  uint64_t counting = 0;
 };
 
 }  // namespace glpt::rt

@@ -82,19 +82,22 @@ void RasterRenderer::ensure_buffers(const rec::DrawableConfig& drawable) {
 
 void RasterRenderer::execute(const rec::FrameRecord& record, const rec::DrawableConfig& drawable,
                              FrameStats& stats, const std::vector<size_t>* commands,
-                             const FrameEnd* end, const GBufferTargets* gbuffer) {
+                             const FrameEnd* end, const GBufferTargets* gbuffer,
+                             std::vector<QuerySamples>* queries) {
   const Stopwatch timer;
   ++frame_;
   ensure_buffers(drawable);
-  if (!front_) {
-    if (end && end->front_rgba) end->front_rgba->clear();
-    return;
-  }
   std::vector<size_t> all;
   if (commands == nullptr) {
     all.resize(record.commands.size());
     for (size_t i = 0; i < all.size(); ++i) all[i] = i;
     commands = &all;
+  }
+  queries_.begin_record(record, front_ ? *commands : std::vector<size_t>{});
+  if (!front_) {
+    if (end && end->front_rgba) end->front_rgba->clear();
+    if (queries) queries_.collect(*queries);  // nothing drawn: no samples
+    return;
   }
 
   // ---- per-record data: state uniforms, textures, vertices and indices
@@ -266,6 +269,7 @@ void RasterRenderer::execute(const rec::FrameRecord& record, const rec::Drawable
       r.bound_pipeline = VK_NULL_HANDLE;
       r.descriptors_pushed = false;
       r.dynamic_valid = false;
+      if (position == 0) queries_.reset_slots(cmd);
       if (gbuffer && position == 0) {
         // Nothing is traced where no traced draw lands: the SURFACE attachment starts at 0.
         const VkClearColorValue zero{};
@@ -283,6 +287,8 @@ void RasterRenderer::execute(const rec::FrameRecord& record, const rec::Drawable
       for (; position < commands->size(); ++position) {
         const size_t i = (*commands)[position];
         const rec::Command& command = record.commands[i];
+        r.counting = queries_.query_of(i);
+        if (r.counting == 0) queries_.stop(cmd);  // nothing else counts (clears in particular)
         if (const auto* clear = std::get_if<rec::Clear>(&command)) {
           record_clear(r, *clear, r.clear_state[i]);
         } else if (const auto* draw = std::get_if<rec::Draw>(&command)) {
@@ -292,18 +298,20 @@ void RasterRenderer::execute(const rec::FrameRecord& record, const rec::Drawable
         } else if (const auto* accum = std::get_if<rec::Accum>(&command)) {
           if (accumulation_touches_color(*accum)) break;
           execute_accum(record, *accum);
-        } else if (!std::holds_alternative<rec::Read>(command)) {
+        } else if (!std::holds_alternative<rec::Read>(command) &&
+                   !std::holds_alternative<rec::BeginQuery>(command) &&
+                   !std::holds_alternative<rec::EndQuery>(command)) {
           record_pixels(r, i);
         }
       }
-      if (r.rendering) vkCmdEndRendering(cmd);
-      r.rendering = false;
+      end_rendering(r);
       if (end && position == commands->size()) record_frame_end(cmd, *end);
     });
     if (position < commands->size())
       execute_accum(record, std::get<rec::Accum>(record.commands[(*commands)[position++]]));
   } while (position < commands->size());
   stats.raster_ms += raster_timer.elapsed_ms();
+  if (queries) queries_.collect(*queries);
   const size_t pixel_count = size_t{drawable_.width} * drawable_.height;
   if (end && end->front_rgba) {
     end->front_rgba->resize(pixel_count * 4);
@@ -327,7 +335,7 @@ void RasterRenderer::begin_rendering(Recording& r, ColorTargets targets) {
   if (targets == ColorTargets::kNone)
     targets = drawable_.double_buffered ? ColorTargets::kBack : ColorTargets::kFront;
   if (r.rendering && r.targets == targets) return;
-  if (r.rendering) vkCmdEndRendering(r.cmd);
+  end_rendering(r);
   std::array<VkRenderingAttachmentInfo, GLPT_GBUFFER_ATTACHMENTS> colors{};
   uint32_t count = 0;
   auto add_color = [&](VkImageView view) {
@@ -360,6 +368,13 @@ void RasterRenderer::begin_rendering(Recording& r, ColorTargets targets) {
   r.rendering = true;
   r.targets = targets;
   r.bound_pipeline = VK_NULL_HANDLE;
+}
+
+void RasterRenderer::end_rendering(Recording& r) {
+  if (!r.rendering) return;
+  queries_.stop(r.cmd);  // a Vulkan query ends inside the rendering instance it began in
+  vkCmdEndRendering(r.cmd);
+  r.rendering = false;
 }
 
 void RasterRenderer::bind(Recording& r, const PipelineKey& key,
@@ -633,6 +648,7 @@ void RasterRenderer::record_draw_pass(Recording& r, const rec::Draw& draw, const
   vkCmdBindVertexBuffers2(r.cmd, 0, GLPT_RASTER_ATTR_COUNT, buffers.data(), g.offsets.data(),
                           nullptr, g.strides.data());
   vkCmdBindIndexBuffer(r.cmd, vertices_.handle(), g.index_offset, VK_INDEX_TYPE_UINT32);
+  queries_.before_draw(r.cmd, r.counting);
   vkCmdDrawIndexed(r.cmd, g.index_count, 1, 0, 0, 0);
 }
 

@@ -10,6 +10,7 @@
 #include "rt_core/frame_stats.hpp"
 #include "rt_core/raster/accumulation.hpp"
 #include "rt_core/raster/gbuffer_targets.hpp"
+#include "rt_core/raster/occlusion_queries.hpp"
 #include "rt_core/raster/pipeline_key.hpp"
 #include "rt_core/raster/raster_pipelines.hpp"
 #include "rt_core/raster/texture_cache.hpp"
@@ -37,9 +38,12 @@ class RasterRenderer {
   // `gbuffer` (path-traced mode): the draws it marks go into the G-buffer instead of the colour
   // buffers (same coverage, depth and stencil); its SURFACE attachment starts cleared and every
   // colour clear clears it too.
+  // `queries`: the samples these commands count into the record's occlusion queries are added
+  // to it (an entry per query of the record, occlusion_queries.hpp).
   void execute(const rec::FrameRecord& record, const rec::DrawableConfig& drawable,
                FrameStats& stats, const std::vector<size_t>* commands = nullptr,
-               const FrameEnd* end = nullptr, const GBufferTargets* gbuffer = nullptr);
+               const FrameEnd* end = nullptr, const GBufferTargets* gbuffer = nullptr,
+               std::vector<QuerySamples>* queries = nullptr);
 
   // Reads back a rectangle: colour as RGBA8 of GL_FRONT*/GL_BACK*, depth as [0, 1], stencil.
   // Pixels outside the drawable are zero. False before the buffers exist.
@@ -71,6 +75,7 @@ class RasterRenderer {
                         VkCullModeFlags face_pass, bool to_gbuffer = false);
   void clear_gbuffer_surface(Recording& r, const VkRect2D& rect);
   void begin_rendering(Recording& r, ColorTargets targets);
+  void end_rendering(Recording& r);  // ends the rendering instance (and counting in it)
   void bind(Recording& r, const PipelineKey& key, const rec::StateSnapshot* textures_of);
   void set_dynamic_state(Recording& r, const DynamicDrawState& d, const VkViewport& viewport,
                          const VkRect2D& scissor);
@@ -112,6 +117,7 @@ class RasterRenderer {
   GpuBuffer pixels_;                   // images of this record's pixel rectangles (32-bit words)
   std::vector<uint32_t> pixel_words_;  // scratch: what goes to pixels_
   AccumulationBuffer accum_;
+  OcclusionQueries queries_{*device_};
 };
 
 }  // namespace glpt::rt

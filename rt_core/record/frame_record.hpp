@@ -2,7 +2,8 @@
 // front end (gl_shim, which produces it) and its consumers in rt_core (raster mode draws it; the
 // path tracer derives its scene from it). Nothing in it is specific to either consumer.
 //
-//   commands   Clear | Draw | Bitmap | DrawPixels | CopyPixels | Accum | Read, in call order
+//   commands   Clear | Draw | Bitmap | DrawPixels | CopyPixels | Accum | Read | BeginQuery |
+//              EndQuery, in call order
 //   states     immutable, deduplicated snapshots of the GL state that decides pixels; each
 //              command that produces fragments refers to one by StateId
 //   vertices   per draw: the primitives as GL assembled them, attributes in object space
@@ -185,15 +186,34 @@ struct Read {
   uint32_t width = 0, height = 0;
 };
 
-using Command = std::variant<Clear, Draw, Bitmap, DrawPixels, CopyPixels, Accum, Read>;
+// glBeginQuery(GL_SAMPLES_PASSED, ...) and glEndQuery (GL 1.5 4.1.6): the samples of the
+// commands between them that pass the depth and stencil tests are counted into the occlusion
+// query `id`. Ids are the front end's (one per glBeginQuery, never reused by a context), so a
+// restarted or deleted query never receives another query's samples. A query may begin in an
+// earlier record (FrameRecord::query_at_start) and end in a later one; at most one is active at a
+// time. Fragments count as Mesa counts them: those of glDrawPixels, glCopyPixels (Mesa never
+// blits while a query is active) and glBitmap too, those of glClear and glAccum never.
+struct BeginQuery {
+  uint64_t id = 0;
+};
+struct EndQuery {
+  uint64_t id = 0;
+};
+
+using Command =
+    std::variant<Clear, Draw, Bitmap, DrawPixels, CopyPixels, Accum, Read, BeginQuery, EndQuery>;
 
 struct FrameRecord {
   std::vector<StateSnapshot> states;
   std::vector<Command> commands;
+  // The occlusion query active when the record starts (its BeginQuery was in an earlier record);
+  // 0: none.
+  uint64_t query_at_start = 0;
 
   void clear() {
     states.clear();
     commands.clear();
+    query_at_start = 0;
   }
   bool empty() const { return commands.empty(); }
 };

@@ -58,6 +58,7 @@ struct Candidate {
   bool geometry_shader = false;
   bool external_host_memory = false;  // VK_EXT_external_memory_host: zero-copy presenting
   bool smooth_lines = false, stippled_smooth_lines = false;
+  bool precise_occlusion_queries = false;
 };
 
 template <size_t N>
@@ -137,6 +138,8 @@ Candidate evaluate(VkPhysicalDevice device) {
   // Smooth lines are only used where stippled smooth lines exist too (GL stipples either kind).
   candidate.smooth_lines = lines.smoothLines && lines.stippledSmoothLines;
   candidate.stippled_smooth_lines = lines.stippledSmoothLines;
+  // GL's occlusion queries count samples; without this feature Vulkan may only count 0 or not 0.
+  candidate.precise_occlusion_queries = core.occlusionQueryPrecise;
   if (candidate.missing_ray_query.empty()) {
     if (!acceleration.accelerationStructure)
       candidate.missing_ray_query.push_back("accelerationStructure");
@@ -373,6 +376,8 @@ std::unique_ptr<VulkanDevice> VulkanDevice::create(const DeviceOptions& options)
   features.features.logicOp = VK_TRUE;
   features.features.shaderClipDistance = VK_TRUE;
   features.features.independentBlend = VK_TRUE;
+  features.features.occlusionQueryPrecise = chosen.precise_occlusion_queries ? VK_TRUE : VK_FALSE;
+  self->precise_occlusion_queries_ = chosen.precise_occlusion_queries;
   features.features.geometryShader = chosen.geometry_shader ? VK_TRUE : VK_FALSE;
   features.features.shaderTessellationAndGeometryPointSize = features.features.geometryShader;
   const VkBool32 path_traced = chosen.missing_ray_query.empty() ? VK_TRUE : VK_FALSE;

@@ -59,6 +59,8 @@ class VulkanDevice {
   const std::string& ray_query_missing() const { return ray_query_missing_; }
   bool has_geometry_shader() const { return geometry_shader_; }
   bool has_smooth_lines() const { return smooth_lines_; }
+  // occlusionQueryPrecise: occlusion queries count samples (else only zero / not zero).
+  bool has_precise_occlusion_queries() const { return precise_occlusion_queries_; }
   // Host memory (an X shared-memory segment) can be imported as a buffer, with this alignment.
   bool has_external_host_memory() const { return external_host_memory_; }
   VkDeviceSize host_pointer_alignment() const { return host_pointer_alignment_; }
@@ -104,6 +106,7 @@ class VulkanDevice {
   std::string ray_query_missing_;
   bool geometry_shader_ = false;
   bool smooth_lines_ = false;
+  bool precise_occlusion_queries_ = false;
   bool external_host_memory_ = false;
   VkDeviceSize host_pointer_alignment_ = 4096;
   VkCommandBuffer command_buffer_ = VK_NULL_HANDLE;  // freed with command_pool_

@@ -92,5 +92,6 @@ using Image = DeviceChild<VkImage, &vkDestroyImage>;
 using ImageView = DeviceChild<VkImageView, &vkDestroyImageView>;
 using Sampler = DeviceChild<VkSampler, &vkDestroySampler>;
 using PipelineCache = DeviceChild<VkPipelineCache, &vkDestroyPipelineCache>;
+using QueryPool = DeviceChild<VkQueryPool, &vkDestroyQueryPool>;
 
 }  // namespace glpt::rt::vk

@@ -49,7 +49,9 @@ foreach(line IN LISTS lines)
       "${max_diff} ${min_fraction})\n"
       "set_tests_properties(conformance.${scene} PROPERTIES ${image_properties} TIMEOUT 60)\n")
   endif()
-  if(WITH_GLPT AND WITH_STATE)
+  # A pending scene's state is compared once it leaves pending.txt (until then it may fail either
+  # way, and an expected failure cannot say which query).
+  if(WITH_GLPT AND WITH_STATE AND NOT scene IN_LIST pending_scenes)
     string(APPEND text
       "add_test(conformance_state.${scene} \"${RUN_SCENE}\" state \"${scene}\" "
       "\"${OUT_DIR}/state/${scene}\" \"${MESA_RUNNER}\" \"${GLPT_RUNNER}\" \"${IMGCOMPARE}\")\n"

@@ -7,7 +7,8 @@
 #       Mesa and glpt render SCENE; glpt's image must be within the scene's tolerance of Mesa's.
 #       On failure OUT/glpt/SCENE.diff.png shows where (see README.md).
 #   run_scene.sh state SCENE OUT MESA GLPT IMGCOMPARE
-#       Mesa and glpt render SCENE; their GL state dumps must agree.
+#       Mesa and glpt render SCENE; their GL state dumps must agree (but for the deliberate
+#       differences state_known.txt lists with their reasons).
 #   run_scene.sh table MESA MIN_SCENES
 #       The scene table is valid (the runner checks it) and has at least MIN_SCENES scenes.
 #   run_scene.sh compare-fails OUT MESA IMGCOMPARE
@@ -50,7 +51,8 @@ case "$mode" in
     scene=$1 out=$2 mesa=$3 glpt=$4 imgcompare=$5
     render "$mesa" "$scene" "$out/mesa"
     render "$glpt" "$scene" "$out/glpt"
-    "$imgcompare" state "$out/mesa/$scene.state.json" "$out/glpt/$scene.state.json"
+    "$imgcompare" state "$out/mesa/$scene.state.json" "$out/glpt/$scene.state.json" \
+      --known "$(dirname "$0")/state_known.txt"
     ;;
   table)
     mesa=$1 min_scenes=$2

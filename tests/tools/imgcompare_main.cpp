@@ -44,9 +44,11 @@ const char kUsageText[] =
     "      TEST (TEST.diff.png): four panels, reference | test | |difference| x16 | mask\n"
     "      (red: outside the tolerance, blue: differs within it, grey: identical).\n"
     "  glpt_imgcompare state REFERENCE.state.json TEST.state.json [--float-tolerance 1e-6]\n"
+    "                  [--known KNOWN.txt]\n"
     "      Compares two GL state dumps of the conformance runners: integers, enums and booleans\n"
     "      exactly, floats within the tolerance (relative, absolute below magnitude 1), and\n"
-    "      the error left by the scene. Lists every mismatching query; passes iff none.\n"
+    "      the error left by the scene. Lists every mismatching query; passes iff none but\n"
+    "      those KNOWN.txt accepts (lines `REGEX  reason`, the regex searched in the key).\n"
     "  glpt_imgcompare psnr A.png B.png\n"
     "      Prints the PSNR over RGB in dB ('inf' for identical images).\n"
     "  glpt_imgcompare nonblank FILE.png... [--min-fraction 0.01] [--tolerance 0]\n"
@@ -288,24 +290,41 @@ bool load_state(const std::string& path, glpt::statecompare::StateDump* out) {
 
 int cmd_state(int argc, char** argv) {
   Args args;
-  if (!parse(argc, argv, {"--float-tolerance"}, &args)) return kUsage;
+  if (!parse(argc, argv, {"--float-tolerance", "--known"}, &args)) return kUsage;
   if (args.positional.size() != 2) {
     std::fprintf(stderr, "glpt_imgcompare state: want REFERENCE.state.json TEST.state.json\n");
     return kUsage;
   }
   double tolerance = 1e-6;
   if (!get_double(args, "--float-tolerance", &tolerance)) return kUsage;
+  std::vector<glpt::statecompare::KnownDifference> known;
+  if (auto it = args.options.find("--known"); it != args.options.end()) {
+    std::ifstream file(it->second);
+    std::stringstream text;
+    text << file.rdbuf();
+    std::string error;
+    if (!file || !glpt::statecompare::parse_known_differences(text.str(), &known, &error)) {
+      std::fprintf(stderr, "glpt_imgcompare state: %s: %s\n", it->second.c_str(),
+                   file ? error.c_str() : "cannot read");
+      return kUsage;
+    }
+  }
   glpt::statecompare::StateDump reference, test;
   if (!load_state(args.positional[0], &reference) || !load_state(args.positional[1], &test))
     return kUsage;
   const auto mismatches = glpt::statecompare::compare_states(reference, test, tolerance);
+  size_t unexpected = 0;
   for (const auto& m : mismatches) {
-    std::printf("state: %s: %s %s, %s %s\n", m.key.c_str(), reference.backend.c_str(),
-                m.reference.c_str(), test.backend.c_str(), m.test.c_str());
+    const auto* k = glpt::statecompare::find_known(known, m);
+    if (!k) ++unexpected;
+    std::printf("state: %s: %s %s, %s %s%s%s\n", m.key.c_str(), reference.backend.c_str(),
+                m.reference.c_str(), test.backend.c_str(), m.test.c_str(),
+                k ? " (known: " : "", k ? (k->reason + ")").c_str() : "");
   }
-  std::printf("state: %s: %zu queries, %zu mismatches -> %s\n", reference.scene.c_str(),
-              reference.state.size() + 1, mismatches.size(), mismatches.empty() ? "PASS" : "FAIL");
-  return mismatches.empty() ? kPass : kFail;
+  std::printf("state: %s: %zu queries, %zu mismatches (%zu known) -> %s\n",
+              reference.scene.c_str(), reference.state.size() + 1, mismatches.size(),
+              mismatches.size() - unexpected, unexpected == 0 ? "PASS" : "FAIL");
+  return unexpected == 0 ? kPass : kFail;
 }
 
 int cmd_psnr(int argc, char** argv) {

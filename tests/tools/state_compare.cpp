@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <limits>
+#include <regex>
+#include <sstream>
 
 namespace glpt::statecompare {
 namespace {
@@ -214,6 +216,43 @@ std::vector<Mismatch> compare_states(const StateDump& reference, const StateDump
     if (!reference.state.count(key)) out.push_back({key, "(missing)", value.text});
   }
   return out;
+}
+
+bool parse_known_differences(const std::string& text, std::vector<KnownDifference>* out,
+                             std::string* error) {
+  std::istringstream lines(text);
+  int number = 0;
+  for (std::string line; std::getline(lines, line);) {
+    ++number;
+    const size_t start = line.find_first_not_of(" \t");
+    if (start == std::string::npos || line[start] == '#') continue;
+    const size_t gap = line.find("  ", start);
+    if (gap == std::string::npos) {
+      *error = "line " + std::to_string(number) + ": want `REGEX  reason` (two spaces)";
+      return false;
+    }
+    KnownDifference known{line.substr(start, gap - start), line.substr(gap)};
+    known.reason.erase(0, known.reason.find_first_not_of(' '));
+    try {
+      (void)std::regex(known.pattern);
+    } catch (const std::regex_error&) {
+      *error = "line " + std::to_string(number) + ": bad regex " + known.pattern;
+      return false;
+    }
+    if (known.reason.empty()) {
+      *error = "line " + std::to_string(number) + ": a known difference needs its reason";
+      return false;
+    }
+    out->push_back(std::move(known));
+  }
+  return true;
+}
+
+const KnownDifference* find_known(const std::vector<KnownDifference>& known,
+                                  const Mismatch& mismatch) {
+  for (const KnownDifference& k : known)
+    if (std::regex_search(mismatch.key, std::regex(k.pattern))) return &k;
+  return nullptr;
 }
 
 }  // namespace glpt::statecompare

@@ -41,6 +41,18 @@ struct Mismatch {
 
 // Every query of `reference`'s state whose value in `test` differs (or is missing), every query
 // only `test` has, and the error left by the scene (key "error_after_scene").
+// Mismatches a known-differences file accepts: lines `REGEX  reason` (the regex is searched for
+// in the query's key; `#` starts a comment line). Used for queries where glpt deliberately
+// follows the GL 1.5 spec rather than Mesa, each with its reason.
+struct KnownDifference {
+  std::string pattern, reason;
+};
+bool parse_known_differences(const std::string& text, std::vector<KnownDifference>* out,
+                             std::string* error);
+// The known difference that accepts `mismatch`, or nullptr.
+const KnownDifference* find_known(const std::vector<KnownDifference>& known,
+                                  const Mismatch& mismatch);
+
 std::vector<Mismatch> compare_states(const StateDump& reference, const StateDump& test,
                                      double float_tolerance = 1e-6);
 

@@ -136,5 +136,23 @@ TEST(StateCompare, ErrorsMissingKeysAndTheSceneErrorAreMismatches) {
   EXPECT_TRUE(compare_states(ref, parsed(replaced(kDump, "[8]", "[16]"))).empty());
 }
 
+TEST(StateCompare, KnownDifferencesAcceptOnlyTheQueriesTheyName) {
+  std::vector<KnownDifference> known;
+  std::string error;
+  ASSERT_TRUE(parse_known_differences(
+      "# comment\n\nglGetIntegerv\\(GL_[A-Z]+_MATRIX\\)  the spec rounds matrices\n", &known,
+      &error))
+      << error;
+  ASSERT_EQ(known.size(), 1u);
+  EXPECT_EQ(known[0].reason, "the spec rounds matrices");
+  EXPECT_NE(find_known(known, {"unit2 glGetIntegerv(GL_TEXTURE_MATRIX)", "", ""}), nullptr);
+  EXPECT_EQ(find_known(known, {"glGetFloatv(GL_TEXTURE_MATRIX)", "", ""}), nullptr);
+  EXPECT_EQ(find_known(known, {"glGetIntegerv(GL_VIEWPORT)", "", ""}), nullptr);
+  // Each line needs a reason, and a valid regex.
+  known.clear();
+  EXPECT_FALSE(parse_known_differences("GL_FOO\n", &known, &error));
+  EXPECT_FALSE(parse_known_differences("GL_(FOO  reason\n", &known, &error));
+}
+
 }  // namespace
 }  // namespace glpt::statecompare

@@ -325,11 +325,17 @@ const Group kGroups[] = {
        glEnable(GL_MAP1_VERTEX_3);
        glEnable(GL_MAP2_TEXTURE_COORD_2);
        glEnable(GL_AUTO_NORMAL);
+       glMapGrid1f(7, 0.25f, 3.5f);
+       glMapGrid2f(3, -1.0f, 2.0f, 9, 0.5f, 0.75f);
      },
      [](Reading& r) {
        enabled(r, GL_MAP1_VERTEX_3);
        enabled(r, GL_MAP2_TEXTURE_COORD_2);
        enabled(r, GL_AUTO_NORMAL);
+       get(r, GL_MAP1_GRID_DOMAIN, 2);
+       get(r, GL_MAP1_GRID_SEGMENTS, 1);
+       get(r, GL_MAP2_GRID_DOMAIN, 4);
+       get(r, GL_MAP2_GRID_SEGMENTS, 2);
      }},
     {"list", GL_LIST_BIT, [] { glListBase(7); }, [](Reading& r) { get(r, GL_LIST_BASE, 1); }},
     {"texture", GL_TEXTURE_BIT,

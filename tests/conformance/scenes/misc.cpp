@@ -247,6 +247,9 @@ GLPT_SCENE(misc_evaluators, 64, 64) {
   glBegin(GL_LINE_STRIP);
   for (int i = 0; i <= 24; ++i) glEvalCoord1f(static_cast<float>(i) / 24);
   glEnd();
+  // Mesa leaves a stale current normal after GL_AUTO_NORMAL evaluations (see evaluators.cpp);
+  // a defined one keeps the state dumps comparable.
+  glNormal3f(0, 0, 1);
 }
 
 // Defect: a HUD drawn with a second projection over a 3-D view in one frame: lit spheres in
