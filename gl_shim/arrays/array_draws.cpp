@@ -270,7 +270,7 @@ void record_array_draw(Context& ctx, GLenum mode, const ArrayVertices& v,
     d.per_vertex = uint8_t((v.has(ArrayKind::kColor) ? rec::kPerVertexColor : 0) |
                            (v.has(ArrayKind::kSecondaryColor) ? rec::kPerVertexSecondaryColor : 0));
     if (ctx.render_mode.mode != GL_RENDER)
-      return render_mode_primitives(ctx, ctx.recorder.record().states[state], d,
+      return render_mode_array_draw(ctx, ctx.recorder.record().states[state], d,
                                     v.has(ArrayKind::kEdgeFlag));
     if (source == ArrayDrawSource::kDisplayList)
       ctx.recorder.add_primitive(state, d);

@@ -97,7 +97,7 @@ void glBegin(Context& ctx, GLenum mode) {
   if (ctx.render_mode.mode == GL_FEEDBACK) a.texture_units |= 1;  // feedback reports unit 0's
   a.material_at_begin = ctx.lighting.material;
   a.per_vertex_material = false;
-  a.edge_flag_given = false;
+  a.first_edge_flag_vertex.reset();
   a.dropped_vertices = 0;
   reset(a.vertices, mode);
   // Replayed by glCallList: Mesa compiled it into an indexed draw. GL_COMPILE_AND_EXECUTE
@@ -114,7 +114,7 @@ void glEnd(Context& ctx) {
   if (d.position.empty()) return;
   d.primitives.push_back({0, static_cast<uint32_t>(d.position.size())});
   if (ctx.render_mode.mode != GL_RENDER)
-    return render_mode_assembled_primitive(ctx, a.state, d, a.edge_flag_given);
+    return render_mode_assembled_primitive(ctx, a);
   ctx.recorder.add_primitive(a.state, d);
   note_frame_content(ctx);
 }

@@ -26,7 +26,7 @@
 //   of its first triangle;
 // - GL_LINE_RESET_TOKEN only ever starts the edges of an unfilled polygon (lines themselves are
 //   never reset);
-// - with per-vertex edge flags (glEdgeFlag inside glBegin/glEnd, an edge flag array) every
+// - with per-vertex edge flags (see ImmediateLayout in render_modes.hpp; an edge flag array) every
 //   edge flag reads as false, so unfilled polygons report nothing but edges along user clip
 //   planes; with a false current edge flag, unfilled faces are culled (st/mesa's
 //   edgeflag_culls_prims).
@@ -57,7 +57,7 @@ constexpr int kMaxClippedVertices = 2 * (kViewPlanes + 8) + 1;  // draw_pipe_cli
 // A vertex as the draw module carries it through its stages.
 struct DrawVertex {
   glm::vec4 clip{0.0f};
-  glm::vec4 window{0.0f};  // x, y (y-inverted window space), z, 1/w
+  glm::vec4 window{0.0f};             // x, y (y-inverted window space), z, 1/w
   glm::vec4 front{0.0f}, back{0.0f};  // COL0, BCOL0
   glm::vec4 tex{0.0f};                // TEX0
   uint32_t clipmask = 0;
@@ -73,7 +73,7 @@ float dot4(const glm::vec4& a, const glm::vec4& b) {
 }
 
 // The view volume planes as draw_context.c sets them (bit i of a clip mask is plane i).
-constexpr float kViewVolume[kViewPlanes][4] = {{-1, 0, 0, 1}, {1, 0, 0, 1},  {0, -1, 0, 1},
+constexpr float kViewVolume[kViewPlanes][4] = {{-1, 0, 0, 1}, {1, 0, 0, 1}, {0, -1, 0, 1},
                                                {0, 1, 0, 1},  {0, 0, 1, 1}, {0, 0, -1, 1}};
 
 // Where reported primitives go.
@@ -146,10 +146,13 @@ struct PipelineSettings {
   bool front_ccw = true;  // in Mesa's y-inverted window space
   uint32_t fill_front = GL_FILL, fill_back = GL_FILL;
   uint8_t cull = 0;  // kFace* bits
+  // Faces also culled in a draw without per-vertex edge flags whose current edge flag is false
+  // (st/mesa's edgeflag_culls_prims: every edge of an unfilled face is hidden).
+  uint8_t cull_without_edges = 0;
   bool two_side = false;
   bool offset_fill = false, offset_line = false, offset_point = false;
   float offset_factor = 0.0f;
-  bool per_vertex_edge_flags = false;  // read as false (Mesa's defect)
+  bool edge_flags_matter = false;  // some face is unfilled
   bool unfilled_stage = false, offset_stage = false, cull_stage = false;
   // The viewport in Mesa's y-inverted window space.
   glm::vec3 scale{1.0f}, translate{0.0f};
@@ -157,7 +160,7 @@ struct PipelineSettings {
   std::array<glm::vec4, rec::kMaxClipPlanes> clip_planes{};  // clip space
 };
 
-PipelineSettings pipeline_settings(Context& ctx, bool per_vertex_edge_flags) {
+PipelineSettings pipeline_settings(Context& ctx) {
   const rec::PrimitiveState& p = ctx.raster.primitive;
   PipelineSettings s;
   s.flat = p.shade_model == GL_FLAT;
@@ -180,12 +183,10 @@ PipelineSettings pipeline_settings(Context& ctx, bool per_vertex_edge_flags) {
   }
   // Edge flags matter only for unfilled polygons; a false current edge flag hides every edge,
   // and st/mesa then culls the unfilled faces outright.
-  const bool edge_flags_matter =
-      p.polygon_mode_front != GL_FILL || p.polygon_mode_back != GL_FILL;
-  s.per_vertex_edge_flags = edge_flags_matter && per_vertex_edge_flags;
-  if (edge_flags_matter && !s.per_vertex_edge_flags && !ctx.current.edge_flag) {
-    if (s.fill_front != GL_FILL) s.cull |= kFaceFront;
-    if (s.fill_back != GL_FILL) s.cull |= kFaceBack;
+  s.edge_flags_matter = p.polygon_mode_front != GL_FILL || p.polygon_mode_back != GL_FILL;
+  if (s.edge_flags_matter) {
+    if (s.fill_front != GL_FILL) s.cull_without_edges |= kFaceFront;
+    if (s.fill_back != GL_FILL) s.cull_without_edges |= kFaceBack;
   }
   s.two_side = ctx.lighting.enabled && ctx.lighting.two_side;
   s.offset_fill = p.offset_fill;
@@ -194,7 +195,8 @@ PipelineSettings pipeline_settings(Context& ctx, bool per_vertex_edge_flags) {
   s.offset_factor = p.offset_factor;
   s.unfilled_stage = s.fill_front != GL_FILL || s.fill_back != GL_FILL;
   s.offset_stage = s.offset_fill || s.offset_line || s.offset_point;
-  s.cull_stage = s.unfilled_stage || s.offset_stage || s.two_side || s.cull != 0;
+  s.cull_stage =
+      s.unfilled_stage || s.offset_stage || s.two_side || (s.cull | s.cull_without_edges) != 0;
   glm::vec3 scale, translate;
   viewport_transform(ctx, scale, translate);
   const float height = ctx.render_mode.drawable_height;
@@ -224,15 +226,15 @@ float normal_scale(Context& ctx, bool eye) {
   MesaMatrix& modelview = ctx.matrices.modelview.top_matrix();
   if (modelview.length_preserving()) return 1.0f;
   const glm::mat4& inverse = modelview.inverse();
-  float f = inverse[0][2] * inverse[0][2] + inverse[1][2] * inverse[1][2] +
-            inverse[2][2] * inverse[2][2];
+  float f =
+      inverse[0][2] * inverse[0][2] + inverse[1][2] * inverse[1][2] + inverse[2][2] * inverse[2][2];
   if (f < 1e-12f) f = 1.0f;
   return eye ? 1.0f / std::sqrt(f) : std::sqrt(f);
 }
 
 // GL_COLOR_MATERIAL: the tracked components of `material` follow the vertex colour.
 rec::Material with_color_material(rec::Material m, const rec::LightingState& l, int side,
-                                   const glm::vec4& color) {
+                                  const glm::vec4& color) {
   if (!l.color_material) return m;
   if ((side == 0 && l.color_material_face == GL_BACK) ||
       (side == 1 && l.color_material_face == GL_FRONT))
@@ -277,7 +279,8 @@ class VertexShader {
     v.clip = m[0] * object.x + m[1] * object.y + m[2] * object.z + m[3] * object.w;
     v.clipmask = clip_mask(v.clip);
     const float oow = 1.0f / v.clip.w;
-    for (int k = 0; k < 3; ++k) v.window[k] = std::fma(v.clip[k] * oow, s_.scale[k], s_.translate[k]);
+    for (int k = 0; k < 3; ++k)
+      v.window[k] = std::fma(v.clip[k] * oow, s_.scale[k], s_.translate[k]);
     v.window.w = oow;
     if (!outputs_.colors && !outputs_.tex_coord) return v;
 
@@ -363,8 +366,16 @@ class VertexShader {
 
 class DrawPipeline {
  public:
-  DrawPipeline(const PipelineSettings& settings, DrawModuleMemory& memory, Sink& sink)
-      : s_(settings), memory_(memory), sink_(sink) {}
+  // `per_vertex_edge_flags`: the draw has them (they read as false: Mesa's defect);
+  // `current_edge_flag`: the one that applies otherwise.
+  DrawPipeline(const PipelineSettings& settings, DrawModuleMemory& memory, Sink& sink,
+               bool per_vertex_edge_flags, bool current_edge_flag)
+      : s_(settings),
+        memory_(memory),
+        sink_(sink),
+        per_vertex_edge_flags_(s_.edge_flags_matter && per_vertex_edge_flags),
+        cull_(s_.cull | (per_vertex_edge_flags_ || current_edge_flag ? 0 : s_.cull_without_edges)) {
+  }
 
   void point(const DrawVertex& v) {
     if (v.clipmask == 0) sink_.point(v);
@@ -380,11 +391,14 @@ class DrawPipeline {
 
   void triangle(const DrawVertex& a, const DrawVertex& b, const DrawVertex& c, uint8_t edges,
                 bool reset) {
+    // The program's edge flags are in the decomposition's edges; per-vertex ones read as false.
+    Triangle t{a, b, c};
+    for (DrawVertex& v : t) v.edge_flag = !per_vertex_edge_flags_;
     const uint32_t any = a.clipmask | b.clipmask | c.clipmask;
     if (any == 0)
-      after_clip_triangle({a, b, c}, edges, reset);
+      after_clip_triangle(t, edges, reset);
     else if ((a.clipmask & b.clipmask & c.clipmask) == 0)
-      clip_triangle({a, b, c}, edges, any);
+      clip_triangle(t, edges, any);
   }
 
  private:
@@ -555,8 +569,8 @@ class DrawPipeline {
       if (det != 0.0f) {
         const bool ccw = det < 0.0f;
         const uint8_t face = ccw == s_.front_ccw ? kFaceFront : kFaceBack;
-        if (face & s_.cull) return;
-      } else if (s_.cull & kFaceBack) {
+        if (face & cull_) return;
+      } else if (cull_ & kFaceBack) {
         return;  // zero area counts as back-facing
       }
     }
@@ -571,11 +585,8 @@ class DrawPipeline {
     }
     if (!s_.unfilled_stage) return sink_.triangle(t[0], t[1], t[2]);
     const bool cw = det >= 0.0f;
-    const uint32_t mode =
-        cw == s_.front_ccw ? s_.fill_back : s_.fill_front;  // unfilled->mode[cw]
-    auto shown = [&](int k, uint8_t bit) {
-      return (edges & bit) && t[k].edge_flag;
-    };
+    const uint32_t mode = cw == s_.front_ccw ? s_.fill_back : s_.fill_front;  // unfilled->mode[cw]
+    auto shown = [&](int k, uint8_t bit) { return (edges & bit) && t[k].edge_flag; };
     if (mode == GL_LINE) {
       if (reset) sink_.reset_stipple();
       if (shown(2, kEdge2)) sink_.line(t[2], t[0]);
@@ -616,30 +627,35 @@ class DrawPipeline {
   const PipelineSettings& s_;
   DrawModuleMemory& memory_;
   Sink& sink_;
+  const bool per_vertex_edge_flags_;
+  const uint8_t cull_;
   std::optional<float> offset_scale_;
 };
 
-}  // namespace
+// Where a draw's per-vertex edge flags begin: none, all of it, or (a glEdgeFlag first given
+// inside glBegin/glEnd after some vertices) the primitives that use a vertex from that one on.
+// Mesa draws the primitives before it on their own, as a draw with the edge flag of before.
+struct EdgeFlagSplit {
+  static constexpr uint32_t kNone = UINT32_MAX;
+  uint32_t per_vertex_from = kNone;
+  bool flag_before = true;
+};
 
-void render_mode_primitives(Context& ctx, const rec::StateSnapshot& state,
-                            const rec::VertexData& vertices, bool per_vertex_edge_flags) {
+void report_primitives(Context& ctx, const rec::StateSnapshot& state,
+                       const rec::VertexData& vertices, const EdgeFlagSplit& split) {
   RenderModeState& r = ctx.render_mode;
   if (r.mode == GL_RENDER || vertices.position.empty()) return;
-  const PipelineSettings settings = pipeline_settings(ctx, per_vertex_edge_flags);
+  const PipelineSettings settings = pipeline_settings(ctx);
   VertexOutputs outputs;
   if (r.mode == GL_FEEDBACK) {
     const GLenum type = r.feedback.type;
-    outputs.colors = type == GL_3D_COLOR || type == GL_3D_COLOR_TEXTURE ||
-                     type == GL_4D_COLOR_TEXTURE;
+    outputs.colors =
+        type == GL_3D_COLOR || type == GL_3D_COLOR_TEXTURE || type == GL_4D_COLOR_TEXTURE;
     outputs.tex_coord = type == GL_3D_COLOR_TEXTURE || type == GL_4D_COLOR_TEXTURE;
   }
   const VertexShader shader(ctx, state, settings, outputs);
   std::vector<DrawVertex> shaded(vertices.position.size());
-  for (uint32_t i = 0; i < shaded.size(); ++i) {
-    shaded[i] = shader.shade(vertices, i);
-    // The program's edge flags are in the decomposition's edges; per-vertex ones read as false.
-    shaded[i].edge_flag = !settings.per_vertex_edge_flags;
-  }
+  for (uint32_t i = 0; i < shaded.size(); ++i) shaded[i] = shader.shade(vertices, i);
 
   // The draw module decomposes every primitive itself (its pipeline path).
   rec::AssemblyState assembly;
@@ -650,38 +666,64 @@ void render_mode_primitives(Context& ctx, const rec::StateSnapshot& state,
   FeedbackSink feedback(r.feedback, r.draw_module, r.drawable_height);
   SelectionSink selection(r.selection);
   Sink& sink = r.mode == GL_FEEDBACK ? static_cast<Sink&>(feedback) : selection;
-  DrawPipeline pipeline(settings, r.draw_module, sink);
+  // Edge flags only change what unfilled triangles report.
+  const bool split_draw =
+      split.per_vertex_from != 0 && split.per_vertex_from != EdgeFlagSplit::kNone;
+  DrawPipeline before(settings, r.draw_module, sink, false,
+                      split_draw ? split.flag_before : ctx.current.edge_flag);
+  DrawPipeline pipeline(settings, r.draw_module, sink,
+                        split.per_vertex_from != EdgeFlagSplit::kNone, ctx.current.edge_flag);
   for (uint32_t v : primitives.points) pipeline.point(shaded[v]);
   for (const rec::DecomposedLine& l : primitives.lines)
     pipeline.line(shaded[l.v[0]], shaded[l.v[1]]);
-  for (const rec::DecomposedTriangle& t : primitives.triangles)
-    pipeline.triangle(shaded[t.v[0]], shaded[t.v[1]], shaded[t.v[2]], t.boundary_edges,
-                      t.reset_stipple);
+  for (const rec::DecomposedTriangle& t : primitives.triangles) {
+    const uint32_t last = std::max({t.v[0], t.v[1], t.v[2]});
+    DrawPipeline& p = split_draw && last < split.per_vertex_from ? before : pipeline;
+    p.triangle(shaded[t.v[0]], shaded[t.v[1]], shaded[t.v[2]], t.boundary_edges, t.reset_stipple);
+  }
 }
 
-void render_mode_assembled_primitive(Context& ctx, rec::StateId state,
-                                     const rec::VertexData& vertices, bool edge_flag_given) {
-  RenderModeState& r = ctx.render_mode;
-  bool per_vertex = edge_flag_given;  // a display list's primitive has a layout of its own
-  if (vertices.source == rec::PrimitiveSource::kImmediate) {
-    // A state change since the layout was last seen flushed it.
-    if (r.immediate_edge_flags_state && *r.immediate_edge_flags_state != state)
-      r.immediate_edge_flags = false;
-    per_vertex = r.immediate_edge_flags;
-    if (per_vertex) r.immediate_edge_flags_state = state;
+}  // namespace
+
+void render_mode_array_draw(Context& ctx, const rec::StateSnapshot& state,
+                            const rec::VertexData& vertices, bool edge_flag_array) {
+  render_mode_flush_vertices(ctx);
+  EdgeFlagSplit split;
+  if (edge_flag_array) split.per_vertex_from = 0;
+  report_primitives(ctx, state, vertices, split);
+}
+
+void render_mode_assembled_primitive(Context& ctx, const VertexAssembly& assembly) {
+  ImmediateLayout& layout = ctx.render_mode.immediate;
+  const rec::VertexData& vertices = assembly.vertices;
+  const rec::StateSnapshot& state = ctx.recorder.record().states[assembly.state];
+  EdgeFlagSplit split;
+  if (vertices.source != rec::PrimitiveSource::kImmediate) {
+    // Replayed from a display list: its own layout, whose edge flags are per vertex throughout
+    // when the list gave any inside glBegin/glEnd.
+    render_mode_flush_vertices(ctx);
+    if (assembly.first_edge_flag_vertex) split.per_vertex_from = 0;
+    return report_primitives(ctx, state, vertices, split);
   }
-  render_mode_primitives(ctx, ctx.recorder.record().states[state], vertices, per_vertex);
+  if (layout.vertices_stored && layout.stored_state != assembly.state)
+    render_mode_flush_vertices(ctx);  // a state change flushed them
+  if (layout.edge_flag) {
+    split.per_vertex_from = 0;
+  } else if (assembly.first_edge_flag_vertex) {
+    split.per_vertex_from = *assembly.first_edge_flag_vertex;
+    split.flag_before = assembly.edge_flag_before_first;
+  }
+  report_primitives(ctx, state, vertices, split);
+  if (assembly.first_edge_flag_vertex) layout.edge_flag = true;
+  layout.vertices_stored = true;
+  layout.stored_state = assembly.state;
 }
 
 void render_mode_edge_flag(Context& ctx) {
-  RenderModeState& r = ctx.render_mode;
-  if (ctx.assembly.inside && ctx.assembly.vertices.source == rec::PrimitiveSource::kDisplayList)
-    return;
-  r.immediate_edge_flags = true;
-  if (ctx.assembly.inside)
-    r.immediate_edge_flags_state = ctx.assembly.state;
-  else
-    r.immediate_edge_flags_state.reset();
+  // Inside glBegin/glEnd the assembly noted it; a display list's replay is not immediate mode.
+  if (ctx.assembly.inside || ctx.lists.call_depth > 0) return;
+  ImmediateLayout& layout = ctx.render_mode.immediate;
+  if (layout.vertices_stored) layout.edge_flag = true;
 }
 
 }  // namespace glpt

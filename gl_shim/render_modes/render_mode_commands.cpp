@@ -88,9 +88,17 @@ void feedback_vertex(FeedbackState& f, const glm::vec4& window, const glm::vec4&
   for (int i = 0; i < 4; ++i) feedback_value(f, tex_coord[i]);
 }
 
+void render_mode_flush_vertices(Context& ctx) {
+  ImmediateLayout& layout = ctx.render_mode.immediate;
+  if (!layout.vertices_stored) return;  // (Mesa's flush leaves an unused layout as it is)
+  layout.edge_flag = false;
+  layout.vertices_stored = false;
+}
+
 void render_mode_pixel_rectangle(Context& ctx, GLenum token) {
+  render_mode_flush_vertices(ctx);
   if (ctx.render_mode.mode != GL_FEEDBACK) return;  // selection: nothing (GL 1.5 5.2)
-  ctx.flushed_tex_coord = ctx.current.tex_coord;  // Mesa's FLUSH_CURRENT
+  ctx.flushed_tex_coord = ctx.current.tex_coord;    // Mesa's FLUSH_CURRENT
   const rec::RasterPosition& rp = ctx.raster_position;
   FeedbackState& f = ctx.render_mode.feedback;
   feedback_value(f, static_cast<float>(token));
@@ -100,6 +108,7 @@ void render_mode_pixel_rectangle(Context& ctx, GLenum token) {
 }
 
 void render_mode_raster_position(Context& ctx) {
+  render_mode_flush_vertices(ctx);
   if (selecting(ctx)) selection_hit(ctx.render_mode.selection, ctx.raster_position.window.z);
 }
 
@@ -169,8 +178,7 @@ GLint glRenderMode(Context& ctx, GLenum mode) {
     if (ctx.target != nullptr && ctx.target->query_size(&width, &height))
       r.drawable_height = static_cast<float>(height);
   }
-  r.immediate_edge_flags = false;  // Mesa flushes its vertices: the vertex layout starts anew
-  r.immediate_edge_flags_state.reset();
+  r.immediate = ImmediateLayout{};  // Mesa flushes its vertices: the vertex layout starts anew
   r.mode = mode;
   return result;
 }
@@ -206,6 +214,7 @@ void glFeedbackBuffer(Context& ctx, GLsizei size, GLenum type, GLfloat* buffer) 
 
 void glPassThrough(Context& ctx, GLfloat token) {
   if (ctx.render_mode.mode != GL_FEEDBACK) return;
+  render_mode_flush_vertices(ctx);
   FeedbackState& f = ctx.render_mode.feedback;
   feedback_value(f, static_cast<float>(GL_PASS_THROUGH_TOKEN));
   feedback_value(f, token);
@@ -213,6 +222,7 @@ void glPassThrough(Context& ctx, GLfloat token) {
 
 void glInitNames(Context& ctx) {
   if (!selecting(ctx)) return;
+  render_mode_flush_vertices(ctx);
   SelectionState& s = ctx.render_mode.selection;
   write_hit_record(s);
   reset_name_stack(s);
@@ -220,6 +230,7 @@ void glInitNames(Context& ctx) {
 
 void glLoadName(Context& ctx, GLuint name) {
   if (!selecting(ctx)) return;
+  render_mode_flush_vertices(ctx);
   SelectionState& s = ctx.render_mode.selection;
   if (s.depth == 0) return record_error(ctx, GL_INVALID_OPERATION);
   write_hit_record(s);
@@ -228,6 +239,7 @@ void glLoadName(Context& ctx, GLuint name) {
 
 void glPushName(Context& ctx, GLuint name) {
   if (!selecting(ctx)) return;
+  render_mode_flush_vertices(ctx);
   SelectionState& s = ctx.render_mode.selection;
   if (s.depth >= kMaxNameStackDepth) return record_error(ctx, GL_STACK_OVERFLOW);
   write_hit_record(s);
@@ -236,6 +248,7 @@ void glPushName(Context& ctx, GLuint name) {
 
 void glPopName(Context& ctx) {
   if (!selecting(ctx)) return;
+  render_mode_flush_vertices(ctx);
   SelectionState& s = ctx.render_mode.selection;
   if (s.depth == 0) return record_error(ctx, GL_STACK_UNDERFLOW);
   write_hit_record(s);

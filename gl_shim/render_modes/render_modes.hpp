@@ -12,7 +12,6 @@
 
 #include <array>
 #include <cstdint>
-#include <optional>
 #include <glm/glm.hpp>
 
 #include "gl_shim/gl_types.h"
@@ -21,6 +20,7 @@
 namespace glpt {
 
 class Context;
+struct VertexAssembly;
 
 inline constexpr uint32_t kMaxNameStackDepth = 64;  // Mesa's MAX_NAME_STACK_DEPTH
 
@@ -62,6 +62,20 @@ struct DrawModuleMemory {
   std::array<Colors, kClipTemporaries> clip_temporaries{};
 };
 
+// Mesa's immediate-mode vertex layout, as far as edge flags go (measured with OSMesa). Immediate
+// primitives are stored until a flush (a state change, an array draw, glCallList, a raster
+// position or pixel rectangle, a name stack command in selection mode, glPassThrough in feedback
+// mode, glRenderMode), which also empties the layout. An edge flag joins the layout when
+// glEdgeFlag comes inside glBegin/glEnd before a vertex, or outside while primitives are stored;
+// the primitives drawn while it is in the layout have per-vertex edge flags. glpt sees a state
+// change as a different state snapshot at the next primitive (a change undone before it goes
+// unseen).
+struct ImmediateLayout {
+  bool edge_flag = false;
+  bool vertices_stored = false;
+  rec::StateId stored_state = 0;  // the snapshot of the last stored primitive
+};
+
 struct RenderModeState {
   GLenum mode = GL_RENDER;
   SelectionState selection;
@@ -70,29 +84,22 @@ struct RenderModeState {
   // The drawable's height when selection or feedback began (Mesa's window-system buffers are
   // y-inverted; feedback y is computed through that inversion, which decides its last bit).
   float drawable_height = 0.0f;
-  // Mesa's immediate-mode vertex layout holds an edge flag from any glEdgeFlag (inside or outside
-  // glBegin/glEnd) until a state change flushes it: the primitives drawn meanwhile have
-  // per-vertex edge flags. The state it was last seen under (unknown after a glEdgeFlag outside
-  // glBegin/glEnd: then the next primitive's).
-  bool immediate_edge_flags = false;
-  std::optional<rec::StateId> immediate_edge_flags_state;
+  ImmediateLayout immediate;
 };
 
-// A batch of primitives drawn while the render mode is GL_SELECT or GL_FEEDBACK (glEnd, array
-// draws): reported instead of recorded. `state`: the snapshot it was assembled with (the live
-// state is the same but for materials and current values changed inside glBegin/glEnd).
-// `per_vertex_edge_flags`: the program gave edge flags per vertex (glEdgeFlag inside
-// glBegin/glEnd, an enabled edge flag array).
-void render_mode_primitives(Context& ctx, const rec::StateSnapshot& state,
-                            const rec::VertexData& vertices, bool per_vertex_edge_flags);
+// An array draw while the render mode is GL_SELECT or GL_FEEDBACK: reported instead of recorded.
+// `state`: the snapshot it was assembled with. `edge_flag_array`: edge flags come per vertex.
+void render_mode_array_draw(Context& ctx, const rec::StateSnapshot& state,
+                            const rec::VertexData& vertices, bool edge_flag_array);
 
-// glEnd outside GL_RENDER: the primitive assembled since glBegin with `state`. `edge_flag_given`:
-// glEdgeFlag was called inside it.
-void render_mode_assembled_primitive(Context& ctx, rec::StateId state,
-                                     const rec::VertexData& vertices, bool edge_flag_given);
+// glEnd outside GL_RENDER: the primitive assembled since glBegin, reported instead of recorded.
+void render_mode_assembled_primitive(Context& ctx, const VertexAssembly& assembly);
 
-// Every glEdgeFlag (Mesa's immediate-mode vertex layout then holds an edge flag).
+// Every glEdgeFlag, after the assembly noted it (the immediate-mode layout may take it in).
 void render_mode_edge_flag(Context& ctx);
+
+// Commands after which Mesa's immediate-mode vertex layout starts anew (see ImmediateLayout).
+void render_mode_flush_vertices(Context& ctx);
 
 // glBitmap, glDrawPixels, glCopyPixels with a valid raster position outside GL_RENDER: in
 // feedback mode the token and the raster position (GL 1.5 5.3); nothing in selection mode.
