@@ -711,6 +711,8 @@ void render_mode_assembled_primitive(Context& ctx, const VertexAssembly& assembl
     split.per_vertex_from = 0;
   } else if (assembly.first_edge_flag_vertex) {
     split.per_vertex_from = *assembly.first_edge_flag_vertex;
+    // Mesa draws an even number of a strip's triangles before the split, to keep their facing.
+    if (vertices.mode == GL_TRIANGLE_STRIP) split.per_vertex_from &= ~1u;
     split.flag_before = assembly.edge_flag_before_first;
   }
   report_primitives(ctx, state, vertices, split);
