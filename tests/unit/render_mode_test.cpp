@@ -76,8 +76,7 @@ TEST_P(MesaRenderModeTest, ReportsWhatMesaReports) {
     std::string got, mesa;
     for (int i = 0; i < log.value_count; ++i)
       got += " " + describe(log.values[i], log.is_float[i], false);
-    for (int i = 0; i < want.value_count; ++i)
-      mesa += " " + describe(want.values[i], true, false);
+    for (int i = 0; i < want.value_count; ++i) mesa += " " + describe(want.values[i], true, false);
     FAIL() << log.value_count << " values:" << got << "\nMesa's " << want.value_count
            << " values:" << mesa;
   }
@@ -85,9 +84,76 @@ TEST_P(MesaRenderModeTest, ReportsWhatMesaReports) {
   for (int i = 0; i < log.value_count && mismatches < 20; ++i) {
     if (log.values[i] == want.values[i]) continue;
     ++mismatches;
-    ADD_FAILURE() << "value " << i << ": " << describe(log.values[i], log.is_float[i])
-                  << ", Mesa " << describe(want.values[i], log.is_float[i]);
+    ADD_FAILURE() << "value " << i << ": " << describe(log.values[i], log.is_float[i]) << ", Mesa "
+                  << describe(want.values[i], log.is_float[i]);
   }
+}
+
+// What selection and feedback draw goes nowhere near the frame record (GL 1.5 5.2, 5.3: no
+// fragments are produced); back in GL_RENDER the same commands are recorded again.
+void draw_everything() {
+  static const float positions[] = {1, 1, 5, 1, 5, 5};
+  static const GLubyte bitmap[8] = {0xff, 0x81, 0x81, 0x81, 0x81, 0x81, 0x81, 0xff};
+  static const GLubyte pixels[4 * 4 * 4] = {};
+  static const float control[] = {1, 1, 0, 5, 5, 0};
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glBegin(GL_TRIANGLES);
+  glVertex2f(1, 1);
+  glVertex2f(5, 1);
+  glVertex2f(5, 5);
+  glEnd();
+  glRectf(2, 2, 8, 8);
+  glVertexPointer(2, GL_FLOAT, 0, positions);
+  glEnableClientState(GL_VERTEX_ARRAY);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glDisableClientState(GL_VERTEX_ARRAY);
+  glCallList(1);
+  glRasterPos2f(3, 3);
+  glBitmap(8, 8, 0, 0, 1, 1, bitmap);
+  glDrawPixels(4, 4, GL_RGBA, GL_UNSIGNED_BYTE, pixels);
+  glCopyPixels(0, 0, 4, 4, GL_COLOR);
+  glMap1f(GL_MAP1_VERTEX_3, 0, 1, 3, 2, control);
+  glEnable(GL_MAP1_VERTEX_3);
+  glMapGrid1f(4, 0, 1);
+  glEvalMesh1(GL_LINE, 0, 4);
+  glDisable(GL_MAP1_VERTEX_3);
+}
+
+TEST_F(RenderModeTest, SelectionAndFeedbackRecordNothing) {
+  glMatrixMode(GL_PROJECTION);
+  glOrtho(0, kRmWidth, 0, kRmHeight, -1, 1);
+  glMatrixMode(GL_MODELVIEW);
+  glNewList(1, GL_COMPILE);
+  glBegin(GL_POINTS);
+  glVertex2f(4, 4);
+  glEnd();
+  glEndList();
+  static GLfloat feedback[4096];
+  static GLuint selection[64];
+  glFeedbackBuffer(4096, GL_2D, feedback);
+  glSelectBuffer(64, selection);
+  auto& commands = ctx_.recorder.record().commands;
+  commands.clear();
+  glRenderMode(GL_FEEDBACK);
+  draw_everything();
+  const GLint values = glRenderMode(GL_SELECT);
+  glInitNames();
+  glPushName(1);
+  draw_everything();
+  const GLint hits = glRenderMode(GL_RENDER);
+  EXPECT_EQ(glGetError(), GLenum{GL_NO_ERROR});
+  EXPECT_TRUE(commands.empty()) << commands.size() << " commands recorded";
+  // Everything was reported instead: polygons, lines, points and the three pixel tokens.
+  EXPECT_GT(values, 60);
+  EXPECT_EQ(hits, 1);
+  int pixel_tokens = 0;
+  for (GLint i = 0; i < values; ++i)
+    if (feedback[i] == float(GL_BITMAP_TOKEN) || feedback[i] == float(GL_DRAW_PIXEL_TOKEN) ||
+        feedback[i] == float(GL_COPY_PIXEL_TOKEN))
+      ++pixel_tokens;
+  EXPECT_EQ(pixel_tokens, 3);
+  draw_everything();
+  EXPECT_GE(commands.size(), 8u);
 }
 
 INSTANTIATE_TEST_SUITE_P(Sequences, MesaRenderModeTest,
