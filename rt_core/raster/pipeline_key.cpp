@@ -429,7 +429,8 @@ DrawSetup make_draw_setup(const rec::StateSnapshot& state, const DrawContext& co
   if (ops.color_write[0]) mask |= VK_COLOR_COMPONENT_R_BIT;
   if (ops.color_write[1]) mask |= VK_COLOR_COMPONENT_G_BIT;
   if (ops.color_write[2]) mask |= VK_COLOR_COMPONENT_B_BIT;
-  if (ops.color_write[3]) mask |= VK_COLOR_COMPONENT_A_BIT;
+  // A drawable without alpha keeps alpha 1 (never written), so DST_ALPHA reads 1 everywhere.
+  if (ops.color_write[3] && context.drawable_has_alpha) mask |= VK_COLOR_COMPONENT_A_BIT;
   key.color_write_mask = context.targets == ColorTargets::kNone ? 0 : mask;
   key.attachments = context.targets == ColorTargets::kFrontAndBack ? 2 : 1;
 
