@@ -42,6 +42,7 @@
 #include "gl/gl_enums.h"
 #include "gl_shim/context.hpp"
 #include "gl_shim/render_modes/render_modes.hpp"
+#include "gl_shim/state/lighting.hpp"
 #include "gl_shim/state/mesa_matrix.hpp"
 #include "gl_shim/state/vertex_shading.hpp"
 #include "rt_core/record/decompose.hpp"
@@ -230,33 +231,6 @@ float normal_scale(Context& ctx, bool eye) {
       inverse[0][2] * inverse[0][2] + inverse[1][2] * inverse[1][2] + inverse[2][2] * inverse[2][2];
   if (f < 1e-12f) f = 1.0f;
   return eye ? 1.0f / std::sqrt(f) : std::sqrt(f);
-}
-
-// GL_COLOR_MATERIAL: the tracked components of `material` follow the vertex colour.
-rec::Material with_color_material(rec::Material m, const rec::LightingState& l, int side,
-                                  const glm::vec4& color) {
-  if (!l.color_material) return m;
-  if ((side == 0 && l.color_material_face == GL_BACK) ||
-      (side == 1 && l.color_material_face == GL_FRONT))
-    return m;
-  switch (l.color_material_mode) {
-    case GL_EMISSION:
-      m.emission = color;
-      break;
-    case GL_AMBIENT:
-      m.ambient = color;
-      break;
-    case GL_DIFFUSE:
-      m.diffuse = color;
-      break;
-    case GL_SPECULAR:
-      m.specular = color;
-      break;
-    default:  // GL_AMBIENT_AND_DIFFUSE
-      m.ambient = m.diffuse = color;
-      break;
-  }
-  return m;
 }
 
 class VertexShader {

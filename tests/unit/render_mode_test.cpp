@@ -6,7 +6,6 @@
 #include <cstring>
 #include <string>
 
-#include "gl_shim/frame/headless_target.hpp"
 #include "gl_test_context.hpp"
 
 namespace {
@@ -30,17 +29,9 @@ const Expected kExpected[] = {
 static_assert(std::size(kExpected) == std::size(kRenderModeSequences));
 
 // A context on a drawable of the probe's size (feedback y goes through the drawable height).
-class RenderModeTest : public GlTest {
+class RenderModeTest : public HeadlessGlTest {
  protected:
-  void SetUp() override {
-    GlTest::SetUp();
-    glpt::make_current_headless(ctx_, target_);
-  }
-  void TearDown() override {
-    ctx_.target = nullptr;
-    GlTest::TearDown();
-  }
-  glpt::HeadlessTarget target_{kRmWidth, kRmHeight};
+  RenderModeTest() : HeadlessGlTest(kRmWidth, kRmHeight) {}
 };
 
 class MesaRenderModeTest : public RenderModeTest, public ::testing::WithParamInterface<size_t> {};
