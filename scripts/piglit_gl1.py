@@ -45,7 +45,7 @@ def list_tests(pattern):
 
 # Why a test skipped, from its output: the requirement it names.
 SKIP_REASON = re.compile(r"(Test requires \S+|requires either .*|Requested a OpenGL [0-9.]+|"
-                         r"GLSL not supported|Function \"\w+\" not supported)")
+                         r"GLSL not supported|Function \"\w+\" not supported|\S.* is required for .*)")
 BEYOND_GL15 = re.compile(r"OpenGL [2-9]|GLSL|requires (GL_\w+)|Function")
 
 

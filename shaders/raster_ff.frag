@@ -12,6 +12,7 @@
 // GLPT_GBUFFER 1: path-traced mode's G-buffer pass (after raster_gbuffer.geom): the same coverage,
 // stipple, texturing and alpha test, but the outputs are the G-buffer (gbuffer_layout.h).
 #extension GL_GOOGLE_include_directive : require
+#extension GL_KHR_shader_subgroup_quad : require
 
 #include "raster_types.h"
 #ifndef GLPT_GBUFFER
@@ -111,23 +112,370 @@ uint unit_alpha_operands(uint u) {
                                                                : kAlphaOperands3;
 }
 
-// GL_CLAMP (GL 1.5 3.8.7) has no Vulkan address mode: coordinates are clamped to [0, 1] here and
-// the sampler uses CLAMP_TO_BORDER, so linear filtering at the edge blends with the border as GL
-// specifies.
-vec3 clamp_coords(uint config, vec3 c) {
-  if ((config & 0x200u) != 0u) c.x = clamp(c.x, 0.0, 1.0);
-  if ((config & 0x400u) != 0u) c.y = clamp(c.y, 0.0, 1.0);
-  if ((config & 0x800u) != 0u) c.z = clamp(c.z, 0.0, 1.0);
+// ---- texture lookups as llvmpipe's sampler (gallivm) does them --------------------------------
+// The sampler objects reproduce most of GL (rt_core/raster/sampler_setup.hpp); what has no Vulkan
+// equivalent is done here with gallivm's arithmetic (lp_bld_sample.c, lp_bld_sample_soa.c):
+// GL_CLAMP with different minification and magnification filters, and depth comparison.
+
+// The derivatives gallivm takes from a 2x2 quad: ddx = v[1] - v[0], ddy = v[2] - v[0], pixels
+// numbered from the top left of Mesa's memory. Mesa renders window-system buffers upside down,
+// so with an even drawable height its quad holds the same four pixels as Vulkan's, numbered
+// from GL's upper row: its v[0], v[1], v[2] are Vulkan's quad pixels 2, 3 and 0. (With an odd
+// height Mesa's quads straddle two of Vulkan's; the nearest match is Vulkan's own numbering.)
+void quad_derivatives(vec3 c, out vec3 ddx, out vec3 ddy) {
+  vec3 q0 = subgroupQuadBroadcast(c, 0u), q1 = subgroupQuadBroadcast(c, 1u);
+  vec3 q2 = subgroupQuadBroadcast(c, 2u), q3 = subgroupQuadBroadcast(c, 3u);
+  if ((S.drawable.y & 1u) == 0u) {
+    ddx = q3 - q2;
+    ddy = q0 - q2;
+  } else {
+    ddx = q1 - q0;
+    ddy = q2 - q0;
+  }
+}
+
+// lp_build_extract_exponent / lp_build_extract_mantissa / lp_build_fast_log2.
+int exponent_of(float x, int bias) { return int((floatBitsToUint(x) >> 23u) & 0xFFu) - 127 + bias; }
+float mantissa_of(float x) {
+  return uintBitsToFloat((floatBitsToUint(x) & 0x7FFFFFu) | 0x3F800000u);
+}
+float fast_log2(float x) {
+  precise float l = float(exponent_of(x, -1)) + mantissa_of(x);
+  return l;
+}
+
+struct Lod {
+  bool minified;  // lod > 0: the minification filter applies
+  int level0, level1;
+  float fpart;    // weight of level1 (GL_*_MIPMAP_LINEAR)
+};
+
+// gallivm's rho from the quad derivatives (lp_build_rho with llvmpipe's defaults: exact, not
+// approximated): squared for 2 and 3 coordinates. `dims`: 1, 2 or 3 coordinates.
+float quad_rho(uint u, uint dims, vec3 ddx, vec3 ddy) {
+  vec3 size = S.tex_size[u].xyz;
+  precise float rho;
+  if (dims > 1u) {
+    precise vec3 sx = ddx * size, sy = ddy * size;
+    precise float rx = sx.x * sx.x + sx.y * sx.y;
+    precise float ry = sy.x * sy.x + sy.y * sy.y;
+    if (dims > 2u) {
+      rx = rx + sx.z * sx.z;
+      ry = ry + sy.z * sy.z;
+    }
+    rho = max(rx, ry);  // rho squared
+  } else {
+    rho = max(abs(ddx.x), abs(ddy.x)) * size.x;
+  }
+  return rho;
+}
+
+// Whether gallivm takes the shortcut without post-log2 adjustments (no bias, no lod clamps, no
+// linear mip filter): then lod > 0 is rho > 1 and the nearest level comes from the exponent bits.
+bool lod_shortcut(uint flags) {
+  return (flags & (GLPT_TEX_LOD_BIAS | GLPT_TEX_APPLY_MIN_LOD | GLPT_TEX_APPLY_MAX_LOD |
+                   GLPT_TEX_MIP_LINEAR)) == 0u;
+}
+// The shortcut's integer lod: iround(log2(rho)) from the exponent of rho (squared) or rho * sqrt 2.
+int shortcut_level(uint dims, float rho) {
+  precise float scaled = rho * 1.41421356;
+  return dims > 1u ? exponent_of(rho, 1) >> 1 : exponent_of(scaled, 0);
+}
+// The lod before bias and clamps: lp_build_fast_log2 of rho squared, halved.
+float unadjusted_lod(uint dims, float rho) {
+  precise float squared = dims > 1u ? rho : rho * rho;
+  precise float l = fast_log2(squared) * 0.5;
+  return l;
+}
+
+// lp_build_lod_selector with llvmpipe's defaults (exact rho, no brilinear), then
+// lp_build_nearest_mip_level / lp_build_linear_mip_levels.
+Lod select_lod(uint u, uint dims, vec3 ddx, vec3 ddy) {
+  uint flags = S.tex_mode[u].y;
+  int last = max(int(S.tex_size[u].w) - 1, 0);
+  Lod r = Lod(false, 0, 0, 0.0);
+  float lod;
+  if ((flags & GLPT_TEX_MIN_MAX_LOD_EQUAL) != 0u) {
+    lod = S.tex_lod[u].y;
+  } else {
+    float rho = quad_rho(u, dims, ddx, ddy);
+    if (lod_shortcut(flags)) {
+      r.minified = rho > 1.0;
+      int ipart = shortcut_level(dims, rho);
+      r.level0 = r.level1 = (flags & GLPT_TEX_MIP_NEAREST) != 0u ? clamp(ipart, 0, last) : 0;
+      return r;
+    }
+    precise float l = unadjusted_lod(dims, rho);
+    if ((flags & GLPT_TEX_LOD_BIAS) != 0u) l = l + S.tex_lod[u].x;
+    if ((flags & GLPT_TEX_APPLY_MAX_LOD) != 0u) l = min(l, S.tex_lod[u].z);
+    if ((flags & GLPT_TEX_APPLY_MIN_LOD) != 0u) l = max(l, S.tex_lod[u].y);
+    lod = l;
+  }
+  r.minified = lod > 0.0;
+  if ((flags & GLPT_TEX_MIP_LINEAR) != 0u) {
+    float whole = floor(lod);
+    precise float fpart = lod - whole;
+    int level0 = int(whole);
+    r.level0 = level0 < 0 ? 0 : min(level0, last);
+    r.level1 = level0 < 0 ? 0 : min(level0 + 1, last);
+    r.fpart = level0 < 0 || level0 >= last ? 0.0 : fpart;
+  } else if ((flags & GLPT_TEX_MIP_NEAREST) != 0u) {
+    r.level0 = r.level1 = clamp(int(roundEven(lod)), 0, last);
+  }
+  return r;
+}
+
+// Whether the lod decides anything for unit u (a mip filter, or different minification and
+// magnification filters).
+bool lod_matters(uint u) {
+  uint flags = S.tex_mode[u].y;
+  bool min_linear = (flags & GLPT_TEX_MIN_LINEAR) != 0u;
+  bool mag_linear = (flags & GLPT_TEX_MAG_LINEAR) != 0u;
+  return (flags & (GLPT_TEX_MIP_NEAREST | GLPT_TEX_MIP_LINEAR)) != 0u || min_linear != mag_linear;
+}
+
+// The explicit lod for textureLod that makes lavapipe's sampler choose what llvmpipe's implicit
+// lod does from Mesa's quad derivatives (quad_derivatives): lavapipe's own implicit lod would
+// take ddx from the other row of the quad. Both are gallivm, which adds the sampler's bias to an
+// explicit lod and clamps it to the sampler's lods exactly as it does an implicit one, so the
+// value passed is the lod before those adjustments. In gallivm's shortcut (no adjustments) the
+// level is an integer and lod > 0 is rho > 1: an integer lod, or a tiny positive one for a
+// minified level 0, gives the same level and filter choice.
+float mesa_explicit_lod(uint u, uint dims, vec3 c) {
+  uint flags = S.tex_mode[u].y;
+  if ((flags & GLPT_TEX_MIN_MAX_LOD_EQUAL) != 0u) return 0.0;  // gallivm takes the sampler's
+  vec3 ddx, ddy;
+  quad_derivatives(c, ddx, ddy);
+  float rho = quad_rho(u, dims, ddx, ddy);
+  if (lod_shortcut(flags)) {
+    int ipart = shortcut_level(dims, rho);
+    return ipart != 0 ? float(ipart) : rho > 1.0 ? 1.0 / 1024.0 : 0.0;
+  }
+  return unadjusted_lod(dims, rho);
+}
+
+// Whether a quad's lookup filters linearly (the minification filter when minified).
+bool lookup_is_linear(uint u, uint dims, vec3 c) {
+  vec3 ddx, ddy;
+  quad_derivatives(c, ddx, ddy);
+  uint flags = S.tex_mode[u].y;
+  return select_lod(u, dims, ddx, ddy).minified ? (flags & GLPT_TEX_MIN_LINEAR) != 0u
+                                                 : (flags & GLPT_TEX_MAG_LINEAR) != 0u;
+}
+
+// GL_CLAMP (GL 1.5 3.8.7) has no Vulkan address mode. gallivm filters it linearly as
+// CLAMP_TO_BORDER of the coordinate clamped to [0, 1] (the sampler is CLAMP_TO_BORDER) and picks
+// nearest texels as CLAMP_TO_EDGE: a coordinate clamped just below 1 stays on the last texel.
+vec3 clamp_coords(uint u, uint config, vec3 c) {
+  float upper = 1.0;
+  if ((config & GLPT_UNIT_CLAMP_PER_FILTER) != 0u) {
+    uint dims = (config & 7u) == 1u ? 1u : (config & 7u) == 3u ? 3u : 2u;
+    if (!lookup_is_linear(u, dims, c)) upper = uintBitsToFloat(0x3F7FFFFFu);
+  }
+  if ((config & GLPT_UNIT_CLAMP_S) != 0u) c.x = clamp(c.x, 0.0, upper);
+  if ((config & (GLPT_UNIT_CLAMP_S << 1u)) != 0u) c.y = clamp(c.y, 0.0, upper);
+  if ((config & (GLPT_UNIT_CLAMP_S << 2u)) != 0u) c.z = clamp(c.z, 0.0, upper);
   return c;
 }
 
-// The texture colour of unit u: a projective lookup of (t, r) / q, as Mesa's fixed-function
+// ---- depth comparison (GL_ARB_shadow) as gallivm's SoA sampler does it
+
+float depth_texel(uint u, uint target, ivec2 p, int level) {
+  if (target == 1u) {
+    if (u == 0u) return texelFetch(u_tex1d_0, p.x, level).r;
+    if (u == 1u) return texelFetch(u_tex1d_1, p.x, level).r;
+    if (u == 2u) return texelFetch(u_tex1d_2, p.x, level).r;
+    return texelFetch(u_tex1d_3, p.x, level).r;
+  }
+  if (u == 0u) return texelFetch(u_tex2d_0, p, level).r;
+  if (u == 1u) return texelFetch(u_tex2d_1, p, level).r;
+  if (u == 2u) return texelFetch(u_tex2d_2, p, level).r;
+  return texelFetch(u_tex2d_3, p, level).r;
+}
+
+// lp_build_coord_mirror(coord, posOnly = true).
+float mirror_coord(float c) {
+  precise float half_c = c * 0.5;
+  precise float f = half_c - roundEven(half_c);
+  precise float m = f + f;
+  return max(abs(m), 0.0);
+}
+
+// lp_build_sample_wrap_nearest: the texel index of `c` on an axis of `n` texels.
+int wrap_nearest(uint wrap, float c, int n) {
+  float size = float(n);
+  if (wrap == GLPT_WRAP_REPEAT) {
+    if ((n & (n - 1)) == 0) {
+      precise float scaled = c * size;
+      return int(floor(scaled)) & (n - 1);
+    }
+    precise float f = min(c - floor(c), uintBitsToFloat(0x3F7FFFFFu));  // lp_build_fract_safe
+    precise float scaled = f * size;
+    return int(scaled);
+  }
+  if (wrap == GLPT_WRAP_CLAMP_TO_BORDER) {
+    precise float scaled = c * size;
+    return int(floor(scaled));
+  }
+  if (wrap == GLPT_WRAP_MIRRORED_REPEAT) {
+    precise float scaled = mirror_coord(c) * size;
+    return min(int(scaled), n - 1);
+  }
+  precise float scaled = c * size;  // GL_CLAMP, GL_CLAMP_TO_EDGE
+  return clamp(int(scaled), 0, n - 1);
+}
+
+// lp_build_sample_wrap_linear: the two texel indices of `c` on an axis of `n` texels and the
+// weight of the second.
+void wrap_linear(uint wrap, float c, int n, out int x0, out int x1, out float weight) {
+  float size = float(n);
+  precise float v;
+  if (wrap == GLPT_WRAP_REPEAT && (n & (n - 1)) != 0) {
+    // lp_build_coord_repeat_npot_linear
+    precise float f = c - floor(c);
+    precise float scaled = f * size;
+    v = scaled - 0.5;
+    float whole = floor(v);
+    weight = v - whole;
+    x0 = v < 0.0 ? n - 1 : int(whole);
+    x1 = x0 != n - 1 ? x0 + 1 : 0;
+    return;
+  }
+  if (wrap == GLPT_WRAP_MIRRORED_REPEAT) {
+    precise float scaled = mirror_coord(c) * size;
+    v = scaled - 0.5;
+  } else {
+    precise float scaled = c * size;
+    if (wrap == GLPT_WRAP_CLAMP) scaled = clamp(scaled, 0.0, size);
+    if (wrap == GLPT_WRAP_CLAMP_TO_EDGE) scaled = min(scaled, size);
+    v = scaled - 0.5;
+    if (wrap == GLPT_WRAP_CLAMP_TO_EDGE) v = max(v, 0.0);
+  }
+  float whole = floor(v);
+  weight = v - whole;
+  x0 = int(whole);
+  x1 = x0 + 1;
+  if (wrap == GLPT_WRAP_REPEAT) {
+    x0 &= n - 1;
+    x1 &= n - 1;
+  } else if (wrap == GLPT_WRAP_CLAMP_TO_EDGE) {
+    x1 = min(x1, n - 1);
+  } else if (wrap == GLPT_WRAP_MIRRORED_REPEAT) {
+    x0 = max(x0, 0);
+    x1 = min(x1, n - 1);
+  }
+}
+
+// lp_build_sample_comparefunc: ref FUNC texel, ordered except GL_NOTEQUAL.
+bool depth_test_passes(uint func, float ref, float texel) {
+  if (func == 1u) return ref < texel;
+  if (func == 2u) return ref == texel;
+  if (func == 3u) return ref <= texel;
+  if (func == 4u) return ref > texel;
+  if (func == 5u) return !(ref == texel);
+  if (func == 6u) return ref >= texel;
+  return func == 7u;  // GL_NEVER + 7 = GL_ALWAYS
+}
+
+// One comparison against texel (x, y) of `level`, or against the border outside the level
+// where the wrap mode uses the border (lp_build_sample_texel_soa).
+float compare_texel(uint u, uint target, ivec2 p, ivec2 size, int level, float ref) {
+  uint wraps = S.tex_mode[u].x;
+  uint flags = S.tex_mode[u].y;
+  bool filters_linear = (flags & (GLPT_TEX_MIN_LINEAR | GLPT_TEX_MAG_LINEAR)) != 0u;
+  bool border = false;
+  for (uint i = 0u; i < (target == 1u ? 1u : 2u); ++i) {
+    uint wrap = (wraps >> (4u * i)) & 15u;
+    bool uses_border =
+        wrap == GLPT_WRAP_CLAMP_TO_BORDER || (wrap == GLPT_WRAP_CLAMP && filters_linear);
+    if (uses_border && (p[i] < 0 || p[i] >= size[i])) border = true;
+  }
+  float texel = border ? S.tex_border[u].r
+                       : depth_texel(u, target, clamp(p, ivec2(0), size - 1), level);
+  return depth_test_passes(S.tex_mode[u].z, ref, texel) ? 1.0 : 0.0;
+}
+
+// One level's filtered comparison (lp_build_sample_image_nearest / _linear with compare).
+float compare_level(uint u, uint target, vec2 c, int level, bool linear, float ref) {
+  uint wraps = S.tex_mode[u].x;
+  ivec2 size = max(ivec2(S.tex_size[u].xy) >> level, ivec2(1));
+  if (target == 1u) size.y = 1;
+  if (!linear) {
+    ivec2 p = ivec2(wrap_nearest(wraps & 15u, c.x, size.x), 0);
+    if (target != 1u) p.y = wrap_nearest((wraps >> 4u) & 15u, c.y, size.y);
+    return compare_texel(u, target, p, size, level, ref);
+  }
+  int x0, x1, y0 = 0, y1 = 0;
+  float ws, wt = 0.0;
+  wrap_linear(wraps & 15u, c.x, size.x, x0, x1, ws);
+  if (target != 1u) wrap_linear((wraps >> 4u) & 15u, c.y, size.y, y0, y1, wt);
+  float m00 = compare_texel(u, target, ivec2(x0, y0), size, level, ref);
+  float m01 = compare_texel(u, target, ivec2(x1, y0), size, level, ref);
+  // lp_build_masklerp: the weights of the texels that pass, summed.
+  precise float inv_ws = 1.0 - ws;
+  precise float v0 = (m01 != 0.0 ? ws : 0.0) + (m00 != 0.0 ? inv_ws : 0.0);
+  if (target == 1u) return v0;
+  float m10 = compare_texel(u, target, ivec2(x0, y1), size, level, ref);
+  float m11 = compare_texel(u, target, ivec2(x1, y1), size, level, ref);
+  precise float v1 = (m11 != 0.0 ? ws : 0.0) + (m10 != 0.0 ? inv_ws : 0.0);
+  return fma(wt, v1 - v0, v0);  // lp_build_lerp: lp_build_mad (llvm.fmuladd)
+}
+
+// The comparison result of unit u at the projected coordinates c. Mesa's fixed-function
+// program takes the reference from the coordinate after the texture's own (ff_fragment_shader.c
+// load_texture): t / q for a 1D texture, r / q for a 2D one.
+float compare_unit(uint u, uint target, vec3 c) {
+  uint flags = S.tex_mode[u].y;
+  // gallivm clamps the reference to [0, 1] for normalized depth formats (all of Mesa's
+  // GL_DEPTH_COMPONENT* formats).
+  float ref = clamp(target == 1u ? c.y : c.z, 0.0, 1.0);
+  vec3 ddx, ddy;
+  quad_derivatives(c, ddx, ddy);
+  uint dims = target == 1u ? 1u : 2u;
+  Lod lod = select_lod(u, dims, ddx, ddy);
+  bool min_linear = (flags & GLPT_TEX_MIN_LINEAR) != 0u;
+  bool mag_linear = (flags & GLPT_TEX_MAG_LINEAR) != 0u;
+  bool mipmapped = (flags & (GLPT_TEX_MIP_NEAREST | GLPT_TEX_MIP_LINEAR)) != 0u;
+  if (min_linear != mag_linear && !lod.minified)
+    return compare_level(u, target, c.xy, 0, mag_linear, ref);
+  float result = compare_level(u, target, c.xy, lod.level0, min_linear, ref);
+  if (mipmapped && (flags & GLPT_TEX_MIP_LINEAR) != 0u && lod.fpart > 0.0) {
+    float second = compare_level(u, target, c.xy, lod.level1, min_linear, ref);
+    result = fma(lod.fpart, second - result, result);
+  }
+  return result;
+}
+
+// The texture colour of unit u: a projective lookup of (s, t, r) / q, as Mesa's fixed-function
 // fragment program does.
 vec4 sample_unit(uint u) {
   uint config = unit_config(u);
   uint target = config & 7u;
   vec4 tc = v_texcoord[u];
-  vec3 c = clamp_coords(config, tc.xyz / tc.w);
+  vec3 projected = tc.xyz / tc.w;
+  if ((config & GLPT_UNIT_COMPARE) != 0u && (target == 1u || target == 2u))
+    return vec4(compare_unit(u, target, projected));
+  vec3 c = clamp_coords(u, config, projected);
+  if (target != 4u && lod_matters(u)) {
+    // The lod from the unclamped coordinates, as gallivm computes it before wrapping.
+    float lod = mesa_explicit_lod(u, target, projected);
+    if (target == 1u) {
+      if (u == 0u) return textureLod(u_tex1d_0, c.x, lod);
+      if (u == 1u) return textureLod(u_tex1d_1, c.x, lod);
+      if (u == 2u) return textureLod(u_tex1d_2, c.x, lod);
+      return textureLod(u_tex1d_3, c.x, lod);
+    }
+    if (target == 2u) {
+      if (u == 0u) return textureLod(u_tex2d_0, c.xy, lod);
+      if (u == 1u) return textureLod(u_tex2d_1, c.xy, lod);
+      if (u == 2u) return textureLod(u_tex2d_2, c.xy, lod);
+      return textureLod(u_tex2d_3, c.xy, lod);
+    }
+    if (u == 0u) return textureLod(u_tex3d_0, c, lod);
+    if (u == 1u) return textureLod(u_tex3d_1, c, lod);
+    if (u == 2u) return textureLod(u_tex3d_2, c, lod);
+    return textureLod(u_tex3d_3, c, lod);
+  }
   if (target == 1u) {
     if (u == 0u) return texture(u_tex1d_0, c.x);
     if (u == 1u) return texture(u_tex1d_1, c.x);
@@ -151,6 +499,21 @@ vec4 sample_unit(uint u) {
   if (u == 1u) return texture(u_texcube_1, tc.xyz);
   if (u == 2u) return texture(u_texcube_2, tc.xyz);
   return texture(u_texcube_3, tc.xyz);
+}
+
+// A depth texture's value as GL_DEPTH_TEXTURE_MODE presents it (GL 1.4 3.8.4; the base format
+// code of the unit is the mode's): (d, d, d, 1), (d, d, d, d) or (0, 0, 0, d).
+vec4 depth_texture_color(uint config, float d) {
+  uint format = (config >> 6u) & 7u;
+  if (format == 2u) return vec4(0.0, 0.0, 0.0, d);
+  if (format == 5u) return vec4(d);
+  return vec4(d, d, d, 1.0);
+}
+
+vec4 texture_color(uint u) {
+  uint config = unit_config(u);
+  vec4 t = sample_unit(u);
+  return (config & GLPT_UNIT_DEPTH) != 0u ? depth_texture_color(config, t.r) : t;
 }
 
 vec4 combine_source(uint source, vec4 texel, vec4 primary, vec4 previous, vec4 constant,
@@ -412,7 +775,7 @@ void main() {
   // Texture units in order; every unit's texel first (crossbar sources may name any unit).
   vec4 texels[GLPT_RASTER_MAX_UNITS];
   for (uint u = 0u; u < GLPT_RASTER_MAX_UNITS; ++u)
-    texels[u] = (unit_config(u) & 7u) != 0u ? sample_unit(u) : vec4(1.0);
+    texels[u] = (unit_config(u) & 7u) != 0u ? texture_color(u) : vec4(1.0);
   vec4 color = primary;
   for (uint u = 0u; u < GLPT_RASTER_MAX_UNITS; ++u) {
     if ((unit_config(u) & 7u) == 0u) continue;

@@ -98,7 +98,12 @@ using mat4 = glm::mat4;
 // per unit (10..13): bits 0-2 target (0 off, 1 1D, 2 2D, 3 3D, 4 cube), bits 3-5 env mode
 // (0 modulate, 1 decal, 2 blend, 3 replace, 4 add, 5 combine), bits 6-8 base format (0 RGBA,
 // 1 RGB, 2 ALPHA, 3 LUMINANCE, 4 LUMINANCE_ALPHA, 5 INTENSITY), bits 9-11: GL_CLAMP on s, t, r
+// clamped in the shader, and the GLPT_UNIT_* bits below (rt_core/raster/sampler_setup.hpp)
 #define GLPT_SC_UNIT0 10
+#define GLPT_UNIT_CLAMP_S 0x200u
+#define GLPT_UNIT_CLAMP_PER_FILTER 0x1000u  // GL_CLAMP: nearest or linear decided per quad
+#define GLPT_UNIT_COMPARE 0x2000u           // depth comparison done by the shader
+#define GLPT_UNIT_DEPTH 0x4000u  // a depth texture: depth in .r, expanded by GL_DEPTH_TEXTURE_MODE
 // per unit (14..17): combine rgb function (bits 0-3), alpha function (4-7), rgb sources (8-16,
 // 3 bits each), alpha sources (17-25), rgb operands (26-31, 2 bits each)
 #define GLPT_SC_COMBINE0 14
@@ -182,7 +187,31 @@ struct RasterState {
   vec4 pixel_diagonal;  // a * x + b * y + c >= 0 in the quad's first triangle (window coordinates)
   vec4 pixel_scale;     // colour copies: pixel transfer scale and bias (GL 1.5 3.6.5)
   vec4 pixel_bias;
+  // Texture units: what the fragment shader's own lookups (depth comparison, GL_CLAMP per
+  // filter) need; rt_core/raster/sampler_setup.hpp
+  vec4 tex_size[GLPT_RASTER_MAX_UNITS];    // base level width, height, depth; w: level count
+  vec4 tex_lod[GLPT_RASTER_MAX_UNITS];     // x: sampler lod bias, y: min lod, z: max lod
+  vec4 tex_border[GLPT_RASTER_MAX_UNITS];  // border colour (texel layout, clamped)
+  uvec4 tex_mode[GLPT_RASTER_MAX_UNITS];   // x: wrap s, t, r (GLPT_WRAP_*, 4 bits each),
+                                           // y: GLPT_TEX_* flags, z: compare function (0-7)
+  uvec4 drawable;  // x: the drawable's height (Mesa's 2x2 pixel quads count rows from its top)
 };
+
+// RasterState::tex_mode
+#define GLPT_WRAP_REPEAT 0u
+#define GLPT_WRAP_CLAMP 1u
+#define GLPT_WRAP_CLAMP_TO_EDGE 2u
+#define GLPT_WRAP_CLAMP_TO_BORDER 3u
+#define GLPT_WRAP_MIRRORED_REPEAT 4u
+#define GLPT_TEX_MIN_LINEAR 1u
+#define GLPT_TEX_MAG_LINEAR 2u
+#define GLPT_TEX_MIP_NEAREST 4u
+#define GLPT_TEX_MIP_LINEAR 8u
+// gallivm's static sampler state (lp_sampler_static_sampler_state): which lod adjustments apply
+#define GLPT_TEX_LOD_BIAS 16u
+#define GLPT_TEX_APPLY_MIN_LOD 32u
+#define GLPT_TEX_APPLY_MAX_LOD 64u
+#define GLPT_TEX_MIN_MAX_LOD_EQUAL 128u
 
 struct RasterPushConstants {
   uvec4 indices;  // x: state index, y: first edge-mask word of an unfilled draw

@@ -1,5 +1,6 @@
 #include "gl_shim/glx/fbconfigs.hpp"
 
+#include <algorithm>
 #include <cstdint>
 
 #include "gl/glx_enums.h"
@@ -7,7 +8,7 @@
 namespace glpt::glx {
 
 GLXFBConfig encode(const FBConfig& c) {
-  return reinterpret_cast<GLXFBConfig>((static_cast<uintptr_t>(c.visual) << 1) |
+  return reinterpret_cast<GLXFBConfig>((static_cast<uintptr_t>(c.visual) << 2) | (c.alpha ? 2 : 0) |
                                        (c.double_buffered ? 1 : 0));
 }
 
@@ -15,12 +16,13 @@ bool decode(Display* dpy, GLXFBConfig handle, FBConfig* out) {
   if (handle == nullptr || dpy == nullptr) return false;
   const auto bits = reinterpret_cast<uintptr_t>(handle);
   XVisualInfo templ{};
-  templ.visualid = static_cast<VisualID>(bits >> 1);
+  templ.visualid = static_cast<VisualID>(bits >> 2);
   int n = 0;
   XVisualInfo* vi = XGetVisualInfo(dpy, VisualIDMask, &templ, &n);
   if (vi == nullptr || n == 0) return false;
-  const bool ok = vi->c_class == TrueColor && (vi->depth == 24 || vi->depth == 32);
-  if (ok) *out = FBConfig{vi->visualid, vi->screen, vi->depth, (bits & 1) != 0};
+  const bool alpha = (bits & 2) != 0;
+  const bool ok = vi->c_class == TrueColor && (vi->depth == 24 || (vi->depth == 32 && alpha));
+  if (ok) *out = FBConfig{vi->visualid, vi->screen, vi->depth, (bits & 1) != 0, alpha};
   XFree(vi);
   return ok;
 }
@@ -35,9 +37,10 @@ std::vector<FBConfig> configs_of_screen(Display* dpy, int screen) {
   if (vi == nullptr) return out;
   // Double-buffered configs first: that is what GL programs want.
   for (bool db : {true, false})
-    for (int i = 0; i < n; ++i)
-      if (vi[i].depth == 24 || vi[i].depth == 32)
-        out.push_back(FBConfig{vi[i].visualid, screen, vi[i].depth, db});
+    for (bool alpha : {true, false})
+      for (int i = 0; i < n; ++i)
+        if (vi[i].depth == 24 || (vi[i].depth == 32 && alpha))
+          out.push_back(FBConfig{vi[i].visualid, screen, vi[i].depth, db, alpha});
   XFree(vi);
   return out;
 }
@@ -49,7 +52,7 @@ bool config_attribute(const FBConfig& c, int attribute, int* value) {
       v = 1;
       break;
     case GLX_BUFFER_SIZE:
-      v = 32;
+      v = c.alpha ? 32 : 24;
       break;
     case GLX_LEVEL:
       v = 0;
@@ -69,8 +72,10 @@ bool config_attribute(const FBConfig& c, int attribute, int* value) {
     case GLX_RED_SIZE:
     case GLX_GREEN_SIZE:
     case GLX_BLUE_SIZE:
-    case GLX_ALPHA_SIZE:
       v = 8;
+      break;
+    case GLX_ALPHA_SIZE:
+      v = c.alpha ? 8 : 0;
       break;
     case GLX_DEPTH_SIZE:
       v = 24;
@@ -104,7 +109,7 @@ bool config_attribute(const FBConfig& c, int attribute, int* value) {
       v = static_cast<int>(c.visual);
       break;
     case GLX_FBCONFIG_ID:
-      v = static_cast<int>((c.visual << 1) | (c.double_buffered ? 1 : 0));
+      v = static_cast<int>(reinterpret_cast<uintptr_t>(encode(c)));
       break;
     case GLX_DRAWABLE_TYPE:
       v = GLX_WINDOW_BIT;
@@ -184,6 +189,14 @@ bool value_matches(int attribute, int wanted, int have) {
 }
 
 }  // namespace
+
+void sort_for_choose(std::vector<FBConfig>& configs) {
+  std::stable_sort(configs.begin(), configs.end(), [](const FBConfig& a, const FBConfig& b) {
+    if (a.alpha != b.alpha) return !a.alpha;
+    if (a.double_buffered != b.double_buffered) return !a.double_buffered;
+    return a.visual < b.visual;
+  });
+}
 
 bool config_matches(const FBConfig& c, const int* list) {
   if (list == nullptr) return true;

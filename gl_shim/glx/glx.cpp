@@ -61,7 +61,10 @@ bool make_current(Display* dpy, GLXDrawable draw, GLXDrawable read, GLXContext c
     std::string error;
     glpt::glx::FBConfig c;
     glpt::rec::DrawableConfig config;
-    if (glpt::glx::decode(dpy, ctx->config, &c)) config.double_buffered = c.double_buffered;
+    if (glpt::glx::decode(dpy, ctx->config, &c)) {
+      config.double_buffered = c.double_buffered;
+      config.has_alpha = c.alpha;
+    }
     ctx->target = glpt::X11WindowTarget::create(DisplayString(dpy), static_cast<uint32_t>(draw),
                                                 config, &error);
     if (!ctx->target) {
@@ -134,9 +137,12 @@ GLPT_EXPORT GLXFBConfig* glXChooseFBConfig(Display* dpy, int screen, const int* 
                                            int* nelements) {
   if (nelements) *nelements = 0;
   if (dpy == nullptr || nelements == nullptr) return nullptr;
-  std::vector<GLXFBConfig> matching;
+  std::vector<glpt::glx::FBConfig> configs;
   for (const auto& c : glpt::glx::configs_of_screen(dpy, screen))
-    if (glpt::glx::config_matches(c, attrib_list)) matching.push_back(glpt::glx::encode(c));
+    if (glpt::glx::config_matches(c, attrib_list)) configs.push_back(c);
+  glpt::glx::sort_for_choose(configs);
+  std::vector<GLXFBConfig> matching;
+  for (const auto& c : configs) matching.push_back(glpt::glx::encode(c));
   if (matching.empty()) return nullptr;
   auto* out = static_cast<GLXFBConfig*>(std::malloc(sizeof(GLXFBConfig) * matching.size()));
   if (out == nullptr) return nullptr;

@@ -110,7 +110,9 @@ void glBitmap(Context& ctx, GLsizei width, GLsizei height, GLfloat xorig, GLfloa
   rec::RasterPosition& rp = ctx.raster_position;
   if (!rp.valid) return;  // nothing drawn, and the raster position does not move (Mesa)
   validate_state(ctx);
-  if (width > 0 && height > 0 && bitmap != nullptr) {
+  if (ctx.render_mode.mode != GL_RENDER) {
+    render_mode_pixel_rectangle(ctx, GL_BITMAP_TOKEN);  // and the raster position still moves
+  } else if (width > 0 && height > 0 && bitmap != nullptr) {
     if (size_t(width) * size_t(height) > kMaxGroups) return record_error(ctx, GL_OUT_OF_MEMORY);
     rec::Bitmap b;
     b.raster = with_mesa_tex_coords(rp, ctx.flushed_tex_coord, true);
@@ -141,6 +143,10 @@ void glDrawPixels(Context& ctx, GLsizei width, GLsizei height, GLenum format, GL
   if ((kind == PixelClass::kStencilIndex && drawable.stencil_bits == 0) ||
       (kind == PixelClass::kDepth && drawable.depth_bits == 0))
     return record_error(ctx, GL_INVALID_OPERATION);
+  if (ctx.render_mode.mode != GL_RENDER) {
+    if (ctx.raster_position.valid) render_mode_pixel_rectangle(ctx, GL_DRAW_PIXEL_TOKEN);
+    return;
+  }
   if (!ctx.raster_position.valid || width == 0 || height == 0 || pixels == nullptr) return;
   // Images larger than the largest texture are cut to it; rows keep their stride (Mesa's
   // clamp_size).
@@ -185,6 +191,10 @@ void glCopyPixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height,
   if ((type == GL_DEPTH && drawable.depth_bits == 0) ||
       (type == GL_STENCIL && drawable.stencil_bits == 0))
     return record_error(ctx, GL_INVALID_OPERATION);
+  if (ctx.render_mode.mode != GL_RENDER) {
+    if (ctx.raster_position.valid) render_mode_pixel_rectangle(ctx, GL_COPY_PIXEL_TOKEN);
+    return;
+  }
   if (!ctx.raster_position.valid || width == 0 || height == 0) return;
   rec::CopyPixels c;
   c.raster = with_mesa_tex_coords(rounded_raster_position(ctx), ctx.flushed_tex_coord, false);
@@ -202,6 +212,7 @@ void glAccum(Context& ctx, GLenum op, GLfloat value) {
   if (op != GL_ACCUM && op != GL_LOAD && op != GL_RETURN && op != GL_MULT && op != GL_ADD)
     return record_error(ctx, GL_INVALID_ENUM);
   if (ctx.drawable.accum_bits == 0) return record_error(ctx, GL_INVALID_OPERATION);
+  if (ctx.render_mode.mode != GL_RENDER) return;  // selection and feedback touch no buffer
   rec::Accum a;
   a.op = op;
   a.value = value;

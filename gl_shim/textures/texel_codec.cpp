@@ -180,13 +180,26 @@ bool encode_byte_texels(const InternalFormatInfo& info, const UnpackSource& src,
 }
 
 void encode_depth_texels(const InternalFormatInfo& info, const float* depth, size_t count,
-                         uint8_t* texels) {
-  const double max = double(max_of(info.depth));
+                         uint8_t* texels, DepthRounding rounding) {
+  const uint32_t max = max_of(info.depth);
   for (size_t i = 0; i < count; ++i) {
-    const double d = std::clamp(double(depth[i]), 0.0, 1.0);
-    const float stored = float(std::nearbyint(d * max) / max);
-    std::memcpy(texels + i * 4, &stored, 4);
+    const float d = std::isnan(depth[i]) ? 0.0f : std::clamp(depth[i], 0.0f, 1.0f);
+    uint32_t z;
+    if (rounding == DepthRounding::kNearest) {
+      z = uint32_t(std::nearbyint(double(d) * double(max)));
+    } else if (max <= 0xFFFFFFu) {
+      z = uint32_t(d * float(max));  // _mesa_unpack_depth_span: float product, truncated
+    } else {
+      const double product = double(d) * double(max);  // double: no overflow
+      z = product >= double(max) ? max : uint32_t(product);
+    }
+    encode_depth_unorm_texel(info, z, texels + i * 4);
   }
+}
+
+void encode_depth_unorm_texel(const InternalFormatInfo& info, uint32_t z, uint8_t* texel) {
+  const float stored = float(double(z) / double(max_of(info.depth)));
+  std::memcpy(texel, &stored, 4);
 }
 
 glm::vec4 decode_color_texel(const InternalFormatInfo& info, const uint8_t* texel,

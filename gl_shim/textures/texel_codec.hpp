@@ -34,9 +34,15 @@ void encode_color_texels(const InternalFormatInfo& info, const glm::vec4* rgba, 
 // bytes are the texels. Returns false (nothing written) when the case does not apply.
 bool encode_byte_texels(const InternalFormatInfo& info, const UnpackSource& src, uint8_t* texels);
 
-// Stores depth values in [0, 1] (kDepth32f), rounded to the format's depth bits.
+// Stores depth values in [0, 1] (kDepth32f) quantized to the format's depth bits z (as the float
+// z / (2^bits - 1), what glGetTexImage returns). kTruncate: as Mesa's _mesa_unpack_depth_span
+// converts client data (z = the truncated product of d and 2^bits - 1, in float for up to 24
+// bits); kNearest: the nearest z (copies from the depth buffer, which Mesa blits exactly).
+enum class DepthRounding : uint8_t { kTruncate, kNearest };
 void encode_depth_texels(const InternalFormatInfo& info, const float* depth, size_t count,
-                         uint8_t* texels);
+                         uint8_t* texels, DepthRounding rounding = DepthRounding::kNearest);
+// Stores the depth value z of the format's bits (an integer Mesa keeps without conversion).
+void encode_depth_unorm_texel(const InternalFormatInfo& info, uint32_t z, uint8_t* texel);
 
 // One texel as glGetTexImage sees it: the base format's components placed as GL 1.5 table 6.1 /
 // Mesa do: L -> (L,0,0,1), I -> (I,0,0,1), LA -> (L,0,0,A), A -> (0,0,0,A), RGB -> (R,G,B,1),

@@ -69,6 +69,31 @@ PixelStoreModes without_border(PixelStoreModes m, int dims, GLsizei w, GLsizei h
   return m;
 }
 
+// Depth texels from client data as Mesa stores them: unsigned integers of the texture's own
+// width are copied (texstore's memcpy), and _mesa_unpack_depth_span's integer shortcuts
+// (32 -> 16 bits: >> 16; 16 -> 32 bits: replicated) apply without depth scale and bias; anything
+// else goes through floats and truncates.
+void encode_client_depth(const Context& ctx, const InternalFormatInfo& info,
+                         const UnpackSource& src, size_t n, uint8_t* texels) {
+  const GLenum type = src.shape.type;
+  const bool plain =
+      ctx.pixel_transfer.depth_scale == 1.0f && ctx.pixel_transfer.depth_bias == 0.0f;
+  const bool ushort = type == GL_UNSIGNED_SHORT, uint = type == GL_UNSIGNED_INT;
+  if (plain && ((ushort && (info.depth == 16 || info.depth == 32)) ||
+                (uint && (info.depth == 16 || info.depth == 32)))) {
+    const std::vector<uint32_t> values = unpack_indices_raw(src);
+    for (size_t i = 0; i < n && i < values.size(); ++i) {
+      uint32_t z = values[i];
+      if (uint && info.depth == 16) z >>= 16;
+      if (ushort && info.depth == 32) z |= z << 16;
+      encode_depth_unorm_texel(info, z, texels + i * 4);
+    }
+    return;
+  }
+  const std::vector<float> depth = unpack_depth(src, ctx.pixel_transfer);
+  encode_depth_texels(info, depth.data(), n, texels, DepthRounding::kTruncate);
+}
+
 // Texels of `info` from a client image (unpack, pixel transfer, base format conversion,
 // quantization). Null data leaves them zero (GL: undefined).
 std::vector<uint8_t> texels_from_client(const Context& ctx, const InternalFormatInfo& info,
@@ -79,8 +104,7 @@ std::vector<uint8_t> texels_from_client(const Context& ctx, const InternalFormat
   if (pixels == nullptr || n == 0) return texels;
   const UnpackSource src{modes, shape, three_d, pixels};
   if (info.base_format == GL_DEPTH_COMPONENT) {
-    const std::vector<float> depth = unpack_depth(src, ctx.pixel_transfer);
-    encode_depth_texels(info, depth.data(), n, texels.data());
+    encode_client_depth(ctx, info, src, n, texels.data());
   } else {
     // Mesa converts from the client's own components unless pixel transfer ran (then from RGBA
     // floats) or they are colour indices (then from the RGBA bytes it looks them up as).

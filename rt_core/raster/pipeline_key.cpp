@@ -4,6 +4,7 @@
 
 #include "common/content_hash.hpp"
 #include "raster_types.h"
+#include "rt_core/raster/sampler_setup.hpp"
 
 namespace glpt::rt {
 namespace {
@@ -346,9 +347,12 @@ DrawSetup make_draw_setup(const rec::StateSnapshot& state, const DrawContext& co
     const rec::TexEnv& env = unit.env;
     uint32_t config = target_code(unit.target) | (env_code(env.mode) << 3) |
                       (base_format_code(tex.base_format, tex.sampler.depth_texture_mode) << 6);
-    if (tex.sampler.wrap_s == GL_CLAMP) config |= 0x200u;
-    if (tex.sampler.wrap_t == GL_CLAMP) config |= 0x400u;
-    if (tex.sampler.wrap_r == GL_CLAMP) config |= 0x800u;
+    // What the shader does beyond a plain lookup (sampler_setup.hpp).
+    const ShaderSampling sampling = make_sampler_setup(tex, env.lod_bias).shader;
+    config |= sampling.clamp_coords * GLPT_UNIT_CLAMP_S;
+    if (sampling.clamp_per_filter) config |= GLPT_UNIT_CLAMP_PER_FILTER;
+    if (sampling.compare) config |= GLPT_UNIT_COMPARE;
+    if (tex.texel_format == rec::TexelFormat::kDepth32f) config |= GLPT_UNIT_DEPTH;
     sc[GLPT_SC_UNIT0 + u] = config;
     if (env.mode == GL_COMBINE) {
       uint32_t combine =
@@ -363,7 +367,6 @@ DrawSetup make_draw_setup(const rec::StateSnapshot& state, const DrawContext& co
       sc[GLPT_SC_COMBINE0 + u] = combine;
       sc[GLPT_SC_COMBINE_ALPHA_OPERANDS0 + u] = alpha_operands;
     }
-    if (tex.sampler.compare_mode != GL_NONE) setup.approximated = true;  // shadow compare
   }
   if (needs_eye) vs |= GLPT_VS_NEEDS_EYE;
   sc[GLPT_SC_VS_FLAGS] = vs;
@@ -430,7 +433,8 @@ DrawSetup make_draw_setup(const rec::StateSnapshot& state, const DrawContext& co
   if (ops.color_write[0]) mask |= VK_COLOR_COMPONENT_R_BIT;
   if (ops.color_write[1]) mask |= VK_COLOR_COMPONENT_G_BIT;
   if (ops.color_write[2]) mask |= VK_COLOR_COMPONENT_B_BIT;
-  if (ops.color_write[3]) mask |= VK_COLOR_COMPONENT_A_BIT;
+  // A drawable without alpha keeps alpha 1 (never written), so DST_ALPHA reads 1 everywhere.
+  if (ops.color_write[3] && context.drawable_has_alpha) mask |= VK_COLOR_COMPONENT_A_BIT;
   key.color_write_mask = context.targets == ColorTargets::kNone ? 0 : mask;
   key.attachments = context.targets == ColorTargets::kFrontAndBack ? 2 : 1;
 

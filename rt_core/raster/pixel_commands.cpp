@@ -541,7 +541,8 @@ void RasterRenderer::execute_accum(const rec::FrameRecord& record, const rec::Ac
       return;
   }
   const ColorTargets targets = resolve_draw_buffer(ops.draw_buffer, drawable_.double_buffered);
-  const std::array<bool, 4> mask = ops.color_write;
+  std::array<bool, 4> mask = ops.color_write;
+  mask[3] = mask[3] && drawable_.has_alpha;  // a drawable without alpha keeps alpha 1
   for (const GpuImage* image : {&front_, &back_}) {
     const bool front = image == &front_;
     if (!(targets == ColorTargets::kFrontAndBack || (front && targets == ColorTargets::kFront) ||

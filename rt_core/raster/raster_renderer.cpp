@@ -63,9 +63,10 @@ void RasterRenderer::ensure_buffers(const rec::DrawableConfig& drawable) {
   accum_.resize(drawable.accum_bits > 0 ? drawable.width : 0,
                 drawable.accum_bits > 0 ? drawable.height : 0);
   // GL leaves a new drawable's contents undefined; glpt starts from transparent black, depth 1
-  // and stencil 0, like a freshly cleared Mesa drawable.
+  // and stencil 0, like a freshly cleared Mesa drawable. A drawable without alpha holds alpha 1
+  // from the start and never writes it (GL 1.5 4.1.8: its alpha reads as 1).
   device_->submit_and_wait([&](VkCommandBuffer cmd) {
-    const VkClearColorValue black{};
+    const VkClearColorValue black{{0.0f, 0.0f, 0.0f, drawable.has_alpha ? 0.0f : 1.0f}};
     const VkImageSubresourceRange color_range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
     for (const GpuImage* image : {&front_, &back_}) {
       image->initial_barrier(cmd);
@@ -107,7 +108,10 @@ void RasterRenderer::execute(const rec::FrameRecord& record, const rec::Drawable
     if (std::holds_alternative<rec::Clear>(record.commands[i])) ++quad_clears;
   const size_t pixel_states = begin_pixel_commands(record, *commands);
   std::vector<gpu::RasterState> states(state_count + quad_clears + pixel_states + 1);
-  for (size_t i = 0; i < state_count; ++i) pack_state_uniforms(record.states[i], states[i]);
+  for (size_t i = 0; i < state_count; ++i) {
+    pack_state_uniforms(record.states[i], states[i]);
+    states[i].drawable = glm::uvec4(drawable.width, drawable.height, 0, 0);
+  }
 
   std::vector<const rec::TextureObjectSnapshot*> textures;
   for (const rec::StateSnapshot& s : record.states)
@@ -503,8 +507,9 @@ void RasterRenderer::record_clear(Recording& r, const rec::Clear& clear, uint32_
   const VkRect2D rect = scissor_of(ops, drawable_);
   if (rect.extent.width == 0 || rect.extent.height == 0) return;
   const ColorTargets targets = resolve_draw_buffer(ops.draw_buffer, drawable_.double_buffered);
-  const bool all_channels =
-      ops.color_write[0] && ops.color_write[1] && ops.color_write[2] && ops.color_write[3];
+  // Without alpha, clearing alpha to 1 leaves it as it is: the plain clear serves.
+  const bool all_channels = ops.color_write[0] && ops.color_write[1] && ops.color_write[2] &&
+                            (ops.color_write[3] || !drawable_.has_alpha);
   const bool color =
       (clear.mask & GL_COLOR_BUFFER_BIT) && targets != ColorTargets::kNone &&
       (ops.color_write[0] || ops.color_write[1] || ops.color_write[2] || ops.color_write[3]);
@@ -529,7 +534,7 @@ void RasterRenderer::record_clear(Recording& r, const rec::Clear& clear, uint32_
         a.aspectMask = VK_IMAGE_ASPECT_COLOR_BIT;
         a.colorAttachment = c;
         const glm::vec4 v = glm::clamp(clear.color, 0.0f, 1.0f);
-        a.clearValue.color = {{v.r, v.g, v.b, v.a}};
+        a.clearValue.color = {{v.r, v.g, v.b, drawable_.has_alpha ? v.a : 1.0f}};
       }
     }
     if (depth || stencil) {
@@ -553,7 +558,8 @@ void RasterRenderer::record_clear(Recording& r, const rec::Clear& clear, uint32_
   uint8_t mask = 0;
   if (color) {
     for (int c = 0; c < 4; ++c)
-      if (ops.color_write[c]) mask |= static_cast<uint8_t>(1u << c);
+      if (ops.color_write[c] && (c < 3 || drawable_.has_alpha))
+        mask |= static_cast<uint8_t>(1u << c);
   }
   key.color_write_mask = mask;
   key.attachments = r.targets == ColorTargets::kFrontAndBack ? 2 : 1;

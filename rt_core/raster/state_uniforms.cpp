@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstring>
 
+#include "rt_core/raster/sampler_setup.hpp"
+
 namespace glpt::rt {
 namespace {
 
@@ -73,6 +75,7 @@ void pack_state_uniforms(const rec::StateSnapshot& state, gpu::RasterState& out)
     }
     out.env_color[u] = unit.env.color;
     out.env_scale[u] = glm::vec4(unit.env.rgb_scale, unit.env.alpha_scale, 0, 0);
+    pack_texture_unit(unit, u, out);
   }
 
   const rec::RasterState& r = *state.raster;

@@ -1,6 +1,7 @@
 #include "rt_core/raster/texture_cache.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <utility>
 #include <vector>
@@ -27,46 +28,17 @@ VkFormat format_of(rec::TexelFormat format) {
   }
 }
 
-// A depth texture samples as (d, d, d, 1) for GL_LUMINANCE, (d, d, d, d) for GL_INTENSITY and
-// (0, 0, 0, d) for GL_ALPHA (GL 1.4 3.8.4, DEPTH_TEXTURE_MODE).
-VkComponentMapping swizzle_of(const rec::TextureObjectSnapshot& t) {
-  if (t.texel_format != rec::TexelFormat::kDepth32f) return {};
-  const VkComponentSwizzle r = VK_COMPONENT_SWIZZLE_R, one = VK_COMPONENT_SWIZZLE_ONE,
-                           zero = VK_COMPONENT_SWIZZLE_ZERO;
-  switch (t.sampler.depth_texture_mode) {
-    case GL_INTENSITY:
-      return {r, r, r, r};
-    case GL_ALPHA:
-      return {zero, zero, zero, r};
-    default:
-      return {r, r, r, one};
-  }
-}
-
-VkSamplerAddressMode address_mode(uint32_t wrap) {
-  switch (wrap) {
-    case GL_CLAMP_TO_EDGE:
-      return VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-    case GL_MIRRORED_REPEAT:
-      return VK_SAMPLER_ADDRESS_MODE_MIRRORED_REPEAT;
-    // GL_CLAMP: the shader clamps coordinates to [0, 1] and the border blends in at the edge.
-    case GL_CLAMP:
-    case GL_CLAMP_TO_BORDER:
-      return VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER;
-    default:
-      return VK_SAMPLER_ADDRESS_MODE_REPEAT;
-  }
-}
-
-bool is_mipmap_filter(uint32_t filter) { return filter != GL_NEAREST && filter != GL_LINEAR; }
-
 }  // namespace
 
-size_t TextureCache::SamplerKeyHash::operator()(const SamplerKey& key) const {
+size_t TextureCache::SamplerKeyHash::operator()(const SamplerSetup& key) const {
+  // Field by field: the struct has padding.
   ContentHash h;
-  h.add_bytes(&key.state, sizeof key.state);
-  h.add_bytes(&key.lod_bias, sizeof key.lod_bias);
-  h.add_bytes(&key.levels, sizeof key.levels);
+  const uint32_t enums[] = {key.mag_filter, key.min_filter, key.mipmap_mode,
+                            key.address[0], key.address[1], key.address[2]};
+  h.add_bytes(enums, sizeof enums);
+  const float values[] = {key.min_lod,  key.max_lod,  key.lod_bias, key.border.r,
+                          key.border.g, key.border.b, key.border.a};
+  h.add_bytes(values, sizeof values);
   return static_cast<size_t>(h.value());
 }
 
@@ -94,6 +66,31 @@ TextureCache::TextureCache(VulkanDevice& device) : device_(device) {
 }
 
 namespace {
+
+// Depth texels as gallivm samples them (lp_build_unsigned_norm_to_float) from the unorm value z
+// Mesa stores: float(z) times the float nearest 1 / (2^n - 1) for its 16- and 24-bit formats;
+// the top 23 bits of a 32-bit z as a mantissa, scaled by 2^23 / (2^23 - 1). The record holds
+// z / (2^n - 1) (the value glGetTexImage returns), from which z is exact for up to 24 bits.
+void depth_samples(const rec::TextureImage& image, std::vector<float>& out) {
+  const uint32_t bits = image.internal_format == GL_DEPTH_COMPONENT16   ? 16
+                        : image.internal_format == GL_DEPTH_COMPONENT32 ? 32
+                                                                        : 24;
+  const double max = bits == 32 ? 4294967295.0 : double((1u << bits) - 1);
+  out.resize(image.texels.size() / 4);
+  for (size_t i = 0; i < out.size(); ++i) {
+    float stored;
+    std::memcpy(&stored, image.texels.data() + i * 4, 4);
+    const uint32_t z = static_cast<uint32_t>(std::min(std::nearbyint(double(stored) * max), max));
+    if (bits <= 24) {
+      out[i] = static_cast<float>(z) * static_cast<float>(1.0 / max);
+    } else {
+      const uint32_t mantissa_bits = (z >> 9) | 0x3F800000u;
+      float m;
+      std::memcpy(&m, &mantissa_bits, 4);
+      out[i] = (m - 1.0f) * static_cast<float>(8388608.0 / 8388607.0);
+    }
+  }
+}
 
 int32_t base_level_of(const rec::TextureObjectSnapshot& t) {
   return std::clamp(t.sampler.base_level, 0, std::max(t.last_level, 0));
@@ -134,7 +131,6 @@ void TextureCache::prepare(const std::vector<const rec::TextureObjectSnapshot*>&
     info.extent = {base.width, base.height, base.depth};
     info.mip_levels = static_cast<uint32_t>(std::max(t->last_level - base_level + 1, 1));
     info.layers = cube ? 6 : 1;
-    info.swizzle = swizzle_of(*t);
     Entry& entry = entries_[t->content_version];
     entry.image = GpuImage::create(device_, info);
     entry.last_used = frame;
@@ -162,7 +158,12 @@ void TextureCache::prepare(const std::vector<const rec::TextureObjectSnapshot*>&
         for (uint32_t l = 0; l < levels && base_level + l < face.size(); ++l) {
           const rec::TextureImage* img = face[base_level + l].get();
           if (img == nullptr || img->texels.empty()) continue;
-          staging_.write(img->texels.data(), img->texels.size(), offset);
+          if (u.texture->texel_format == rec::TexelFormat::kDepth32f) {
+            depth_samples(*img, depth_scratch_);
+            staging_.write(depth_scratch_.data(), depth_scratch_.size() * 4, offset);
+          } else {
+            staging_.write(img->texels.data(), img->texels.size(), offset);
+          }
           VkBufferImageCopy copy{};
           copy.bufferOffset = offset;
           copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, l, static_cast<uint32_t>(f), 1};
@@ -184,37 +185,24 @@ VkImageView TextureCache::view(const rec::TextureObjectSnapshot& texture) const 
 }
 
 VkSampler TextureCache::sampler(const rec::TextureObjectSnapshot& texture, float unit_lod_bias) {
-  SamplerKey key{texture.sampler, unit_lod_bias + texture.sampler.lod_bias,
-                 std::max(texture.last_level - base_level_of(texture) + 1, 1)};
+  SamplerSetup key = make_sampler_setup(texture, unit_lod_bias);
+  key.shader = {};  // the shader's part does not make a different sampler
   auto it = samplers_.find(key);
   if (it != samplers_.end()) return it->second.get();
-  const rec::SamplerState& s = texture.sampler;
   auto border = make_info<VkSamplerCustomBorderColorCreateInfoEXT>(
       VK_STRUCTURE_TYPE_SAMPLER_CUSTOM_BORDER_COLOR_CREATE_INFO_EXT);
-  std::memcpy(border.customBorderColor.float32, &s.border_color, sizeof(float) * 4);
+  std::memcpy(border.customBorderColor.float32, &key.border, sizeof(float) * 4);
   border.format = VK_FORMAT_UNDEFINED;
   auto info = make_info<VkSamplerCreateInfo>(VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO, &border);
-  info.magFilter = s.mag_filter == GL_NEAREST ? VK_FILTER_NEAREST : VK_FILTER_LINEAR;
-  const bool min_linear = s.min_filter == GL_LINEAR || s.min_filter == GL_LINEAR_MIPMAP_NEAREST ||
-                          s.min_filter == GL_LINEAR_MIPMAP_LINEAR;
-  info.minFilter = min_linear ? VK_FILTER_LINEAR : VK_FILTER_NEAREST;
-  info.mipmapMode =
-      s.min_filter == GL_NEAREST_MIPMAP_LINEAR || s.min_filter == GL_LINEAR_MIPMAP_LINEAR
-          ? VK_SAMPLER_MIPMAP_MODE_LINEAR
-          : VK_SAMPLER_MIPMAP_MODE_NEAREST;
-  info.addressModeU = address_mode(s.wrap_s);
-  info.addressModeV = address_mode(s.wrap_t);
-  info.addressModeW = address_mode(s.wrap_r);
+  info.magFilter = key.mag_filter;
+  info.minFilter = key.min_filter;
+  info.mipmapMode = key.mipmap_mode;
+  info.addressModeU = key.address[0];
+  info.addressModeV = key.address[1];
+  info.addressModeW = key.address[2];
   info.mipLodBias = key.lod_bias;
-  // Without a mipmap filter GL samples the base level only (the view starts at level 0, which
-  // holds the base level).
-  if (is_mipmap_filter(s.min_filter)) {
-    info.minLod = std::max(s.min_lod, 0.0f);
-    info.maxLod = std::min(s.max_lod, static_cast<float>(key.levels - 1));
-  } else {
-    info.minLod = 0.0f;
-    info.maxLod = 0.0f;
-  }
+  info.minLod = key.min_lod;
+  info.maxLod = key.max_lod;
   info.borderColor = VK_BORDER_COLOR_FLOAT_CUSTOM_EXT;
   VkSampler sampler = VK_NULL_HANDLE;
   GLPT_VK_CHECK(vkCreateSampler(device_.handle(), &info, nullptr, &sampler));

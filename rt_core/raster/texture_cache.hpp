@@ -10,6 +10,7 @@
 #include <memory>
 #include <unordered_map>
 
+#include "rt_core/raster/sampler_setup.hpp"
 #include "rt_core/record/texture.hpp"
 #include "rt_core/vk/gpu_buffer.hpp"
 #include "rt_core/vk/gpu_image.hpp"
@@ -26,6 +27,8 @@ class TextureCache {
   void prepare(const std::vector<const rec::TextureObjectSnapshot*>& textures, uint64_t frame);
   // The image view of a prepared texture (null if it could not be made, e.g. zero size).
   VkImageView view(const rec::TextureObjectSnapshot& texture) const;
+  // The sampler of `texture` on a unit with GL_TEXTURE_LOD_BIAS `unit_lod_bias`
+  // (make_sampler_setup).
   VkSampler sampler(const rec::TextureObjectSnapshot& texture, float unit_lod_bias);
   // 1x1 white textures of each kind (1D, 2D, 3D, cube) for bindings nothing samples.
   VkImageView dummy_view(uint32_t kind) const { return dummies_[kind].view(); }
@@ -44,22 +47,17 @@ class TextureCache {
     uint64_t last_used = 0;
     size_t bytes = 0;  // of its texels
   };
-  struct SamplerKey {
-    rec::SamplerState state;
-    float lod_bias;
-    int32_t levels;
-    bool operator==(const SamplerKey&) const = default;
-  };
   struct SamplerKeyHash {
-    size_t operator()(const SamplerKey& key) const;
+    size_t operator()(const SamplerSetup& key) const;
   };
 
   VulkanDevice& device_;
   std::unordered_map<uint64_t, Entry> entries_;
-  std::unordered_map<SamplerKey, vk::Sampler, SamplerKeyHash> samplers_;
+  std::unordered_map<SamplerSetup, vk::Sampler, SamplerKeyHash> samplers_;
   GpuImage dummies_[4];
   vk::Sampler dummy_sampler_;
   GpuBuffer staging_;
+  std::vector<float> depth_scratch_;  // depth texels converted for upload
 };
 
 }  // namespace glpt::rt

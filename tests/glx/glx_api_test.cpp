@@ -111,7 +111,7 @@ TEST_F(Glx, ProcAddressesAreGlptsOwnEntryPoints) {
   EXPECT_EQ(get("glVertex3f"), reinterpret_cast<__GLXextFuncPtr>(&glVertex3f));
   EXPECT_EQ(glXGetProcAddress(reinterpret_cast<const GLubyte*>("glCallList")),
             reinterpret_cast<__GLXextFuncPtr>(&glCallList));
-  EXPECT_EQ(get("glPassThrough"), nullptr);  // exported, not implemented
+  EXPECT_EQ(get("glPolygonOffsetEXT"), nullptr);  // exported, not implemented
   EXPECT_EQ(get("glXNoSuchThing"), nullptr);
   EXPECT_EQ(get("glNoSuchThing"), nullptr);
 }
@@ -202,6 +202,62 @@ TEST_F(Glx, NewContextAttribsAndMakeContextCurrent) {
   glXDestroyContext(dpy_, a);
   glXDestroyWindow(dpy_, glx_win);
   XFree(configs);
+}
+
+// GLX 1.4 3.3.3 and Mesa's glXChooseFBConfig: with no alpha requested, configs without alpha come
+// first (Mesa 25 answers alpha 0 for this list); asking for alpha excludes them. A drawable
+// without alpha reads alpha 1 and blends with destination alpha 1 (GL 1.5 4.1.8, 4.3.2).
+TEST_F(Glx, ConfigsWithoutAlphaComeFirstAndReadAlphaOne) {
+  const int rgb[] = {GLX_RENDER_TYPE, GLX_RGBA_BIT, GLX_RED_SIZE, 1, GLX_DOUBLEBUFFER, True, None};
+  int n = 0;
+  GLXFBConfig* configs = glXChooseFBConfig(dpy_, 0, rgb, &n);
+  ASSERT_GT(n, 0);
+  int alpha = -1, buffer = 0;
+  EXPECT_EQ(glXGetFBConfigAttrib(dpy_, configs[0], GLX_ALPHA_SIZE, &alpha), 0);
+  EXPECT_EQ(alpha, 0);
+  EXPECT_EQ(glXGetFBConfigAttrib(dpy_, configs[0], GLX_BUFFER_SIZE, &buffer), 0);
+  EXPECT_EQ(buffer, 24);
+  const int rgba[] = {GLX_RENDER_TYPE, GLX_RGBA_BIT, GLX_ALPHA_SIZE, 1, None};
+  int n_alpha = 0;
+  GLXFBConfig* with_alpha = glXChooseFBConfig(dpy_, 0, rgba, &n_alpha);
+  ASSERT_GT(n_alpha, 0);
+  for (int i = 0; i < n_alpha; ++i) {
+    EXPECT_EQ(glXGetFBConfigAttrib(dpy_, with_alpha[i], GLX_ALPHA_SIZE, &alpha), 0);
+    EXPECT_EQ(alpha, 8);
+  }
+  XFree(with_alpha);
+
+  XVisualInfo* vi = glXGetVisualFromFBConfig(dpy_, configs[0]);
+  ASSERT_NE(vi, nullptr);
+  Window win = make_window(vi, 16, 16);
+  XFree(vi);
+  GLXContext ctx = glXCreateNewContext(dpy_, configs[0], GLX_RGBA_TYPE, nullptr, True);
+  XFree(configs);
+  ASSERT_NE(ctx, nullptr);
+  ASSERT_TRUE(glXMakeCurrent(dpy_, win, ctx));
+  GLint alpha_bits = -1;
+  glGetIntegerv(GL_ALPHA_BITS, &alpha_bits);
+  EXPECT_EQ(alpha_bits, 0);
+  glClearColor(0.2f, 0.4f, 0.6f, 0.25f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  unsigned char cleared[4] = {};
+  glReadPixels(2, 2, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, cleared);
+  EXPECT_EQ(cleared[3], 255);
+  // Destination alpha is 1: GL_DST_ALPHA keeps the source, GL_ONE_MINUS_DST_ALPHA drops the
+  // destination, so the quad's colour replaces the clear colour exactly.
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_DST_ALPHA, GL_ONE_MINUS_DST_ALPHA);
+  glColor4f(1.0f, 0.0f, 0.0f, 0.5f);
+  glRectf(-1, -1, 1, 1);
+  unsigned char blended[4] = {};
+  glReadPixels(2, 2, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, blended);
+  EXPECT_EQ(blended[0], 255);
+  EXPECT_EQ(blended[1], 0);
+  EXPECT_EQ(blended[2], 0);
+  EXPECT_EQ(blended[3], 255);
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  glXMakeCurrent(dpy_, None, nullptr);
+  glXDestroyContext(dpy_, ctx);
 }
 
 }  // namespace

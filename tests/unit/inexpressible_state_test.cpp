@@ -1,4 +1,4 @@
-// A state raster mode cannot express exactly (polygon/point/line smoothing, shadow comparison) is
+// A state raster mode cannot express exactly (polygon/point/line smoothing) is
 // counted in the frame's statistics (GLPT_STATS prints it as inexpressible=N) and drawn as near
 // GL as the pipelines can: no error, no crash, the primitive still covers its pixels.
 #include "gl_shim/frame/headless_target.hpp"
@@ -65,6 +65,17 @@ TEST_F(InexpressibleStateTest, EachApproximatedDrawCounts) {
   glVertex2f(1, 0.5f);
   glEnd();
   EXPECT_EQ(draw_triangle_and_count(), 3u);
+}
+
+// Depth comparison (GL_ARB_shadow) is done exactly by the fragment shader: not counted.
+TEST_F(InexpressibleStateTest, ShadowComparisonIsNotCounted) {
+  const GLfloat depth[4] = {0.25f, 0.75f, 0.25f, 0.75f};
+  glEnable(GL_TEXTURE_2D);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_R_TO_TEXTURE);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, 2, 2, 0, GL_DEPTH_COMPONENT, GL_FLOAT, depth);
+  EXPECT_EQ(draw_triangle_and_count(), 0u);
+  EXPECT_EQ(glGetError(), GLenum{GL_NO_ERROR});
 }
 
 }  // namespace

@@ -9,6 +9,8 @@
 
 namespace {
 
+constexpr GLenum kTextureStencilSize = 0x88F1;  // GL 3.0
+
 class TexImageTest : public GlTest {
  protected:
   void SetUp() override {
@@ -463,7 +465,9 @@ TEST_F(TexImageTest, DepthTexturesQuantizeToTheirBits) {
   glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT16, 2, 1, 0, GL_DEPTH_COMPONENT, GL_FLOAT, d);
   GLfloat back[2] = {};
   glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_FLOAT, back);
-  EXPECT_FLOAT_EQ(back[0], std::nearbyint(double(0.3f) * 65535.0) / 65535.0);
+  // Mesa's _mesa_unpack_depth_span truncates: 0.3f * 65535.0f = 19660.5 -> 19660 (OSMesa:
+  // 0.299992383).
+  EXPECT_FLOAT_EQ(back[0], 19660.0f / 65535.0f);
   EXPECT_FLOAT_EQ(back[1], 1.0f);  // clamped
   GLuint ui[2] = {};
   glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, ui);
@@ -471,6 +475,72 @@ TEST_F(TexImageTest, DepthTexturesQuantizeToTheirBits) {
   GLubyte c[8];
   glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, c);
   EXPECT_EQ(glGetError(), GLenum{GL_INVALID_OPERATION});
+}
+
+// GL_TEXTURE_STENCIL_SIZE (GL 3.0, EXT_packed_depth_stencil) is answered as Mesa does in a
+// compatibility context: 0 for every format glpt has, with or without an image, no error.
+TEST_F(TexImageTest, StencilSizeIsZero) {
+  EXPECT_EQ(level_parameter(kTextureStencilSize), 0);
+  const GLubyte t[16] = {};
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 2, 2, 0, GL_RGBA, GL_UNSIGNED_BYTE, t);
+  EXPECT_EQ(level_parameter(kTextureStencilSize), 0);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT16, 2, 2, 0, GL_DEPTH_COMPONENT,
+               GL_UNSIGNED_BYTE, t);
+  EXPECT_EQ(level_parameter(kTextureStencilSize), 0);
+  EXPECT_EQ(level_parameter(kTextureStencilSize, 0, GL_PROXY_TEXTURE_2D), 0);
+  EXPECT_EQ(glGetError(), GLenum{GL_NO_ERROR});
+}
+
+// Integer depth data as Mesa stores it (values read back as floats from OSMesa): the texture's own
+// integer width is copied, 32-bit to 16-bit shifts right by 16, 16-bit to 32-bit replicates, and
+// everything else goes through floats, truncated.
+TEST_F(TexImageTest, IntegerDepthDataIsStoredAsMesaDoes) {
+  const GLushort us[4] = {0x1234, 0x8000, 0xffff, 0x0001};
+  const GLuint ui[4] = {0x12345678u, 0x80000000u, 0xffffffffu, 0x0001ffffu};
+  const GLubyte ub[4] = {0x12, 0x80, 0xff, 0x01};
+  struct Case {
+    GLenum format, type;
+    const void* data;
+    float expected[4];
+  };
+  const Case cases[] = {
+      {GL_DEPTH_COMPONENT16,
+       GL_UNSIGNED_SHORT,
+       us,
+       {0.0711070448f, 0.500007629f, 1.0f, 1.52590219e-05f}},
+      {GL_DEPTH_COMPONENT16,
+       GL_UNSIGNED_INT,
+       ui,
+       {0.0711070448f, 0.500007629f, 1.0f, 1.52590219e-05f}},
+      {GL_DEPTH_COMPONENT16,
+       GL_UNSIGNED_BYTE,
+       ub,
+       {0.0705882385f, 0.501960754f, 1.0f, 0.00392156839f}},
+      {GL_DEPTH_COMPONENT24,
+       GL_UNSIGNED_SHORT,
+       us,
+       {0.0711070374f, 0.500007629f, 1.0f, 1.52587909e-05f}},
+      {GL_DEPTH_COMPONENT24,
+       GL_UNSIGNED_INT,
+       ui,
+       {0.0711110905f, 0.49999997f, 1.0f, 3.04579753e-05f}},
+      {GL_DEPTH_COMPONENT24,
+       GL_UNSIGNED_BYTE,
+       ub,
+       {0.0705882385f, 0.501960814f, 1.0f, 0.00392156886f}},
+      {GL_DEPTH_COMPONENT32,
+       GL_UNSIGNED_SHORT,
+       us,
+       {0.0711070448f, 0.500007629f, 1.0f, 1.52590219e-05f}},
+      {GL_DEPTH_COMPONENT32, GL_UNSIGNED_INT, ui, {0.0711111128f, 0.5f, 1.0f, 3.05173453e-05f}},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(testing::Message() << std::hex << c.format << " " << c.type);
+    glTexImage2D(GL_TEXTURE_2D, 0, GLint(c.format), 4, 1, 0, GL_DEPTH_COMPONENT, c.type, c.data);
+    GLfloat back[4] = {};
+    glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_FLOAT, back);
+    for (int i = 0; i < 4; ++i) EXPECT_FLOAT_EQ(back[i], c.expected[i]) << i;
+  }
 }
 
 // ---- GL_GENERATE_MIPMAP -------------------------------------------------------------------
