@@ -135,8 +135,7 @@ void glEnd(Context& ctx) {
   rec::VertexData& d = a.vertices;
   if (d.position.empty()) return;
   d.primitives.push_back({0, static_cast<uint32_t>(d.position.size())});
-  if (ctx.render_mode.mode != GL_RENDER)
-    return render_mode_assembled_primitive(ctx, a);
+  if (ctx.render_mode.mode != GL_RENDER) return render_mode_assembled_primitive(ctx, a);
   ctx.recorder.add_primitive(a.state, d);
   note_frame_content(ctx);
 }

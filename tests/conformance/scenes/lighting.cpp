@@ -153,8 +153,7 @@ GLPT_SCENE(lighting_spot_directional, 64, 64) {
   glLightfv(GL_LIGHT1, GL_SPOT_DIRECTION, outside);
   glLightf(GL_LIGHT1, GL_SPOT_CUTOFF, 10);
   glEnable(GL_LIGHT1);
-  glTranslatef(0, 0, -3);
-  grid(-2, -2, 2, 2, 8);
+  sphere_at(0, 0, -5, 1.5f);  // not a plane: a directional light would light it uniformly
 }
 
 // A positional light 1 unit in front of a plane, with one attenuation term.
