@@ -78,6 +78,10 @@ namespace {
 // A frame that is never swapped or read (a single-buffered program that never flushes) is
 // executed once its record holds this many bytes of vertices.
 constexpr size_t kMaxRecordVertexBytes = size_t{256} << 20;
+// Likewise once its draws sample this many bytes of distinct texture contents: a program that
+// replaces its texture at every draw would otherwise hold them all until the swap (Mesa draws at
+// once and frees each texture with its object).
+constexpr size_t kMaxRecordTextureBytes = size_t{256} << 20;
 
 bool ensure_output(Context& ctx) {
   if (ctx.target == nullptr || ctx.renderer_unavailable) return false;
@@ -129,7 +133,9 @@ bool execute_record(Context& ctx) {
 }
 
 void note_frame_content(Context& ctx) {
-  if (ctx.recorder.vertex_bytes() > kMaxRecordVertexBytes) execute_record(ctx);
+  if (ctx.recorder.vertex_bytes() > kMaxRecordVertexBytes ||
+      ctx.snapshots.texture_bytes() > kMaxRecordTextureBytes)
+    execute_record(ctx);
 }
 
 void end_frame(Context& ctx, bool swap) {

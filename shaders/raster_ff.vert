@@ -33,6 +33,10 @@ layout(std430, set = 0, binding = GLPT_RASTER_BINDING_STATES) readonly buffer St
   RasterState states[];
 };
 layout(push_constant) uniform Push { RasterPushConstants push; };
+// The vertex buffer as vec4s: per-vertex materials (push.materials).
+layout(std430, set = 0, binding = GLPT_RASTER_BINDING_EDGES) readonly buffer VertexWords {
+  vec4 vertex_words[];
+};
 // The draw's state, read field by field where used (never copied whole).
 #define S states[push.indices.x]
 
@@ -80,9 +84,24 @@ struct Lit {
   vec3 secondary;  // specular when GL_SEPARATE_SPECULAR_COLOR
 };
 
+// The material of this vertex: its own when glMaterial was called between glBegin and glEnd
+// (as Mesa's fixed-function program reads per-vertex material attributes), else the state's.
+RasterMaterial material_of(uint face) {
+  if (push.materials.z == 0u) return S.material[face];
+  uint at = push.materials.x + uint(gl_VertexIndex) * push.materials.y +
+            face * uint(GLPT_RASTER_MATERIAL_VEC4S);
+  RasterMaterial m;
+  m.ambient = vertex_words[at];
+  m.diffuse = vertex_words[at + 1u];
+  m.specular = vertex_words[at + 2u];
+  m.emission = vertex_words[at + 3u];
+  m.shininess = vertex_words[at + 4u];
+  return m;
+}
+
 // GL 1.5 2.14.1 for one face: `n` faces the viewer side being lit.
 Lit light_face(uint face, vec3 n, vec3 eye, vec4 color) {
-  RasterMaterial m = S.material[face];
+  RasterMaterial m = material_of(face);
   const uint cm_mode = kColorMaterial & 7u;
   const bool tracked = (kColorMaterial & (face == 0u ? 8u : 16u)) != 0u;
   vec4 ambient = m.ambient, diffuse = m.diffuse, specular = m.specular, emission = m.emission;
@@ -106,14 +125,16 @@ Lit light_face(uint face, vec3 n, vec3 eye, vec4 color) {
       float d = length(offset);
       vp = offset / d;
       attenuation = 1.0 / (l.attenuation.x + l.attenuation.y * d + l.attenuation.z * d * d);
-      if (l.spot.w > -1.5) {
-        float spot_cos = dot(-vp, l.spot.xyz);
-        attenuation *= spot_cos >= l.spot.w ? power_gl(spot_cos, l.attenuation.w) : 0.0;
-      }
       half_vector = normalize(vp + to_viewer);
     } else {
       vp = l.position.xyz;
       half_vector = has(GLPT_VS_LOCAL_VIEWER) ? normalize(vp + to_viewer) : l.half_vector.xyz;
+    }
+    // GL 1.5 2.14.1 (and Mesa) apply the spotlight to directional lights too, with the light's
+    // direction as VP. Mesa's test is strict: cos(cutoff) < spot cosine.
+    if (l.spot.w > -1.5) {
+      float spot_cos = dot(-vp, l.spot.xyz);
+      attenuation *= spot_cos > l.spot.w ? power_gl(spot_cos, l.attenuation.w) : 0.0;
     }
     float n_dot_vp = dot(n, vp);
     vec3 term = ambient.rgb * l.ambient.rgb;

@@ -32,6 +32,8 @@ using mat4 = glm::mat4;
 // uint[]: per triangle of an unfilled draw, its boundary-edge mask (8 bits per triangle, four
 // per uint), starting at RasterPushConstants.indices.y
 #define GLPT_RASTER_BINDING_EDGES (GLPT_RASTER_BINDING_TEXTURES + 4 * GLPT_RASTER_MAX_UNITS)
+// The same buffer holds the per-vertex materials of draws that have them (RasterPushConstants).
+#define GLPT_RASTER_MATERIAL_VEC4S 5  // vec4s of one RasterMaterial
 
 // ---- pixel rectangles (glBitmap, glDrawPixels, glCopyPixels: rt_core/raster/pixel_commands.cpp)
 // Their images, as 32-bit words, for raster_ff.frag built with GLPT_PIXELS (1: fragments keep
@@ -213,12 +215,17 @@ struct RasterState {
 
 struct RasterPushConstants {
   uvec4 indices;  // x: state index, y: first edge-mask word of an unfilled draw
+  // Per-vertex materials (glMaterial between glBegin and glEnd), in the vertex buffer (bound as
+  // GLPT_RASTER_BINDING_EDGES): x: first vec4, y: vec4s per vertex (10: the front then the back
+  // RasterMaterial; 0: one pair for the whole draw), z: 1 when the draw has them (else the
+  // state's material applies).
+  uvec4 materials;
 };
 
 #ifdef __cplusplus
 static_assert(sizeof(RasterLight) == 112);
 static_assert(sizeof(RasterMaterial) == 80);
-static_assert(sizeof(RasterPushConstants) == 16);
+static_assert(sizeof(RasterPushConstants) == 32);
 }  // namespace glpt::rt::gpu
 #endif
 

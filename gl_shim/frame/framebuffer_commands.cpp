@@ -145,16 +145,24 @@ bool valid_color_buffer(GLenum buf) {
       return false;
   }
 }
+
+// glpt's drawables are never stereo: the right buffers do not exist (GL 1.5 4.2.1 and 4.3.2:
+// naming only buffers that do not exist is GL_INVALID_OPERATION, as in Mesa).
+bool right_buffer_only(GLenum buf) {
+  return buf == GL_RIGHT || buf == GL_FRONT_RIGHT || buf == GL_BACK_RIGHT;
+}
 }  // namespace
 
 void glDrawBuffer(Context& ctx, GLenum buf) {
   if (!valid_color_buffer(buf)) return record_error(ctx, GL_INVALID_ENUM);
+  if (right_buffer_only(buf)) return record_error(ctx, GL_INVALID_OPERATION);
   ctx.raster.ops.draw_buffer = buf;
 }
 
 void glReadBuffer(Context& ctx, GLenum buf) {
   if (!valid_color_buffer(buf) || buf == GL_NONE || buf == GL_FRONT_AND_BACK)
     return record_error(ctx, GL_INVALID_ENUM);
+  if (right_buffer_only(buf)) return record_error(ctx, GL_INVALID_OPERATION);
   ctx.raster.ops.read_buffer = buf;
 }
 

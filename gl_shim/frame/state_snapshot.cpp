@@ -34,12 +34,27 @@ bool refresh(std::shared_ptr<const T>& block, const T& value) {
 
 }  // namespace
 
+void StateSnapshotter::count_textures(const rec::TexturingState& texturing) {
+  for (const rec::TextureUnitState& unit : texturing.units) {
+    if (unit.target == 0 || !unit.texture) continue;
+    if (!texture_versions_.insert(unit.texture->content_version).second) continue;
+    for (const auto& face : unit.texture->faces)
+      for (const auto& level : face)
+        if (level) texture_bytes_ += level->texels.size();
+  }
+}
+
 rec::StateId StateSnapshotter::capture(Context& ctx, rec::FrameRecord& record) {
   build_transform(ctx, transform_scratch_);
   snapshot_texturing(ctx, texturing_scratch_);
   bool changed = refresh(transform_, transform_scratch_);
   changed |= refresh(lighting_, ctx.lighting);
-  changed |= refresh(texturing_, texturing_scratch_);
+  // The first snapshot of a record counts its textures even when the block is the previous
+  // record's.
+  if (refresh(texturing_, texturing_scratch_) || !last_id_) {
+    changed = true;
+    count_textures(*texturing_);
+  }
   changed |= refresh(raster_, ctx.raster);
   changed |= refresh(pixel_transfer_, ctx.pixel_transfer);
   if (!changed && last_id_) return *last_id_;

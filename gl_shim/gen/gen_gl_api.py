@@ -235,6 +235,29 @@ HAND_REPLAYED = {
 }
 HAND_COMPILED_HEADERS = ["gl_shim/arrays/array_lists.hpp", "gl_shim/evaluators/evaluator_lists.hpp"]
 
+# Scalar parameter commands that Mesa's display lists compile as their vector form with the
+# value followed by zeros (dlist.c save_TexParameterf & co.): compiled, they are that vector
+# command, so e.g. a compiled glTexParameterf(GL_TEXTURE_BORDER_COLOR, v) sets the colour
+# (v, 0, 0, 0) without the GL_INVALID_ENUM the scalar form raises when executed at once.
+# Core name -> (vector command, element type of its array, array length).
+COMPILED_AS_VECTOR = {
+    "glFogf": ("glFogfv", "GLfloat", 4),
+    "glFogi": ("glFogiv", "GLint", 4),
+    "glLightf": ("glLightfv", "GLfloat", 4),
+    "glLighti": ("glLightiv", "GLint", 4),
+    "glLightModelf": ("glLightModelfv", "GLfloat", 4),
+    "glLightModeli": ("glLightModeliv", "GLint", 4),
+    "glTexEnvf": ("glTexEnvfv", "GLfloat", 4),
+    "glTexEnvi": ("glTexEnvfv", "GLfloat", 4),
+    "glTexGenf": ("glTexGenfv", "GLfloat", 4),
+    "glTexGend": ("glTexGenfv", "GLfloat", 4),
+    "glTexGeni": ("glTexGeniv", "GLint", 4),
+    "glTexParameterf": ("glTexParameterfv", "GLfloat", 4),
+    "glTexParameteri": ("glTexParameterfv", "GLfloat", 4),
+    "glPointParameterf": ("glPointParameterfv", "GLfloat", 3),
+    "glPointParameteri": ("glPointParameterfv", "GLfloat", 3),
+}
+
 GL_SCALAR_TYPES = {
     "GLenum", "GLboolean", "GLbitfield", "GLbyte", "GLshort", "GLint", "GLubyte", "GLushort",
     "GLuint", "GLsizei", "GLfloat", "GLclampf", "GLdouble", "GLclampd", "GLintptr",
@@ -589,6 +612,15 @@ def emit_entry_points(path, names, commands, gl_root):
         w(f"GLPT_EXPORT {cmd.ret} {n}({params}) {{\n")
         w("  glpt::Context* ctx = glpt::current_context();\n")
         w(f"  if (ctx == nullptr) return{ret_default};\n")
+        as_vector = COMPILED_AS_VECTOR.get(core_name(n))
+        if as_vector is not None and compiled(n):
+            vector, elem, length = as_vector
+            scalar = cmd.params[-1].name
+            zeros = ", ".join(["0"] * (length - 1))
+            w("  if (ctx->list_being_compiled() != nullptr) {\n")
+            w(f"    const {elem} values[{length}] = {{static_cast<{elem}>({scalar}), {zeros}}};\n")
+            w(f"    return ::{vector}({', '.join([p.name for p in cmd.params[:-1]] + ['values'])});\n")
+            w("  }\n")
         if compiled(n):
             plan = plans[n]
             if plan is None:

@@ -19,9 +19,13 @@ void attribute_color(Context& ctx, glm::vec4 color);
 void attribute_tex_coord(Context& ctx, glm::vec4 coord);
 void attribute_multi_tex_coord(Context& ctx, GLenum texture_unit, glm::vec4 coord);
 
-// glMaterial between glBegin and glEnd (allowed by GL 1.5 2.6.3): from then on every vertex of the
+// glMaterial between glBegin and glEnd (allowed by GL 1.5 2.6.3), called once it set the fields
+// `fields` (material_field_bit) of ctx.lighting.material: from then on every vertex of the
 // primitive records its own material. Does nothing outside glBegin/glEnd.
-void material_changed_inside_begin_end(Context& ctx);
+void material_set_inside_begin_end(Context& ctx, uint32_t fields);
+// The bit of one material field: `side` 0 front, 1 back; `field` 0 ambient, 1 diffuse,
+// 2 specular, 3 emission, 4 shininess.
+constexpr uint32_t material_field_bit(int side, int field) { return 1u << (side * 5 + field); }
 
 // extra_attributes.cpp
 void attribute_secondary_color(Context& ctx, glm::vec3 color);  // alpha stays 1 (as in Mesa)

@@ -19,6 +19,8 @@ struct VertexAssembly {
   // vertices before the first call get the material at glBegin.
   bool per_vertex_material = false;
   std::array<rec::Material, 2> material_at_begin{};
+  // The material fields glMaterial set inside this primitive (material_field_bit).
+  uint16_t material_fields_set = 0;
   // The first glEdgeFlag inside this primitive: how many vertices preceded it, and the current
   // edge flag before it (selection and feedback draw the vertices before it on their own, as
   // Mesa's immediate mode does when a new attribute appears inside glBegin/glEnd).

@@ -73,12 +73,33 @@ void attribute_multi_tex_coord(Context& ctx, GLenum unit, glm::vec4 t) {
   ctx.current.tex_coord[unit - GL_TEXTURE0] = t;
 }
 
-void material_changed_inside_begin_end(Context& ctx) {
+void material_set_inside_begin_end(Context& ctx, uint32_t fields) {
   VertexAssembly& a = ctx.assembly;
-  if (!a.inside || a.per_vertex_material) return;
-  // From now on every vertex carries its material; the ones before get the material at glBegin.
-  a.per_vertex_material = true;
-  a.vertices.material.assign(a.vertices.position.size(), a.material_at_begin);
+  if (!a.inside) return;
+  if (!a.per_vertex_material) {
+    // From now on every vertex carries its material; the ones before get the material at
+    // glBegin.
+    a.per_vertex_material = true;
+    a.vertices.material.assign(a.vertices.position.size(), a.material_at_begin);
+  }
+  // Mesa's display lists store a material field as a vertex attribute from its first glMaterial
+  // in the list on, and copy that first value into the vertices compiled before it (vbo_save's
+  // "dangling attribute" fix-up); immediate mode does not. glpt does the same within the
+  // primitive being replayed.
+  const uint32_t first_set = fields & ~a.material_fields_set;
+  a.material_fields_set |= fields;
+  if (a.vertices.source != rec::PrimitiveSource::kDisplayList || first_set == 0) return;
+  for (auto& vertex : a.vertices.material) {
+    for (int side = 0; side < 2; ++side) {
+      const rec::Material& now = ctx.lighting.material[side];
+      rec::Material& m = vertex[side];
+      if (first_set & material_field_bit(side, 0)) m.ambient = now.ambient;
+      if (first_set & material_field_bit(side, 1)) m.diffuse = now.diffuse;
+      if (first_set & material_field_bit(side, 2)) m.specular = now.specular;
+      if (first_set & material_field_bit(side, 3)) m.emission = now.emission;
+      if (first_set & material_field_bit(side, 4)) m.shininess = now.shininess;
+    }
+  }
 }
 
 namespace impl {
@@ -97,6 +118,7 @@ void glBegin(Context& ctx, GLenum mode) {
   if (ctx.render_mode.mode == GL_FEEDBACK) a.texture_units |= 1;  // feedback reports unit 0's
   a.material_at_begin = ctx.lighting.material;
   a.per_vertex_material = false;
+  a.material_fields_set = 0;
   a.first_edge_flag_vertex.reset();
   a.dropped_vertices = 0;
   reset(a.vertices, mode);
@@ -113,8 +135,7 @@ void glEnd(Context& ctx) {
   rec::VertexData& d = a.vertices;
   if (d.position.empty()) return;
   d.primitives.push_back({0, static_cast<uint32_t>(d.position.size())});
-  if (ctx.render_mode.mode != GL_RENDER)
-    return render_mode_assembled_primitive(ctx, a);
+  if (ctx.render_mode.mode != GL_RENDER) return render_mode_assembled_primitive(ctx, a);
   ctx.recorder.add_primitive(a.state, d);
   note_frame_content(ctx);
 }

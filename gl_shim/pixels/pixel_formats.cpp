@@ -210,16 +210,35 @@ ColorSourceLayout color_source_layout(GLenum format, GLenum type) {
   return l;
 }
 
+namespace {
+
+// Formats of later GL versions (ARB_texture_rg, EXT_texture_integer) that glpt does not
+// implement but Mesa knows: Mesa checks a packed type against them before it looks at the
+// format, so a mismatch is GL_INVALID_OPERATION there (piglit draw-pixels expects it for GL_RG).
+bool later_format_known_to_mesa(GLenum format) {
+  constexpr GLenum kRg = 0x8227, kRgInteger = 0x8228;
+  constexpr GLenum kFirstInteger = 0x8D94;  // GL_RED_INTEGER .. GL_BGRA_INTEGER
+  constexpr GLenum kLastInteger = 0x8D9B;
+  constexpr GLenum kLuminanceInteger = 0x8D9C, kLuminanceAlphaInteger = 0x8D9D;
+  return format == kRg || format == kRgInteger ||
+         (format >= kFirstInteger && format <= kLastInteger) || format == kLuminanceInteger ||
+         format == kLuminanceAlphaInteger;
+}
+
+}  // namespace
+
 GLenum check_format_and_type(GLenum format, GLenum type) {
-  if (pixel_class(format) == PixelClass::kInvalid) return GL_INVALID_ENUM;
+  const bool known = pixel_class(format) != PixelClass::kInvalid;
+  if (!known && !later_format_known_to_mesa(format)) return GL_INVALID_ENUM;
   if (type == GL_BITMAP) {
     return format == GL_COLOR_INDEX || format == GL_STENCIL_INDEX ? GL_NO_ERROR : GL_INVALID_ENUM;
   }
-  if (type_bytes(type) == 0) return GL_INVALID_ENUM;
+  // Mesa's order (_mesa_error_check_format_and_type): the packed type's format first.
   const PackedLayout packed = packed_layout(type);
   if (packed.components == 3 && format != GL_RGB) return GL_INVALID_OPERATION;
   if (packed.components == 4 && format != GL_RGBA && format != GL_BGRA && format != GL_ABGR_EXT)
     return GL_INVALID_OPERATION;
+  if (!known || type_bytes(type) == 0) return GL_INVALID_ENUM;
   return GL_NO_ERROR;
 }
 

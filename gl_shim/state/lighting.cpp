@@ -48,18 +48,14 @@ rec::Light* light_of(Context& ctx, GLenum light) {
   return &ctx.lighting.lights[light - GL_LIGHT0];
 }
 
+// The scalar forms (glLightf, glLighti, glLightModelf, ...) pass (param, 0, 0, 0) to the vector
+// form for every pname, vector ones included, without an error: what Mesa does (GL 1.5 only
+// defines them for single-valued parameters, and programs rely on Mesa's leniency).
 template <typename T>
-void set_light(Context& ctx, GLenum light, GLenum pname, const T* p, bool scalar_call) {
+void set_light(Context& ctx, GLenum light, GLenum pname, const T* p) {
   if (p == nullptr) return record_error(ctx, GL_INVALID_VALUE);
   rec::Light* l = light_of(ctx, light);
   if (!l) return;
-  const bool scalar_pname = pname == GL_SPOT_EXPONENT || pname == GL_SPOT_CUTOFF ||
-                            pname == GL_CONSTANT_ATTENUATION || pname == GL_LINEAR_ATTENUATION ||
-                            pname == GL_QUADRATIC_ATTENUATION;
-  if (scalar_call && !scalar_pname) {
-    record_error(ctx, GL_INVALID_ENUM);
-    return;
-  }
   switch (pname) {
     case GL_AMBIENT:
       l->ambient = color4(p);
@@ -111,12 +107,11 @@ void set_light(Context& ctx, GLenum light, GLenum pname, const T* p, bool scalar
 }
 
 template <typename T>
-void set_light_model(Context& ctx, GLenum pname, const T* p, bool scalar_call) {
+void set_light_model(Context& ctx, GLenum pname, const T* p) {
   if (p == nullptr) return record_error(ctx, GL_INVALID_VALUE);
   rec::LightingState& s = ctx.lighting;
   switch (pname) {
     case GL_LIGHT_MODEL_AMBIENT:
-      if (scalar_call) return record_error(ctx, GL_INVALID_ENUM);
       s.model_ambient = color4(p);
       break;
     case GL_LIGHT_MODEL_TWO_SIDE:
@@ -137,28 +132,44 @@ void set_light_model(Context& ctx, GLenum pname, const T* p, bool scalar_call) {
   }
 }
 
+// Whether GL_COLOR_MATERIAL currently tracks `component` (GL_AMBIENT, GL_DIFFUSE, GL_SPECULAR or
+// GL_EMISSION) of face `side` (0 front, 1 back).
+bool tracked_by_color_material(const rec::LightingState& l, int side, GLenum component) {
+  if (!l.color_material) return false;
+  if (l.color_material_face == (side == 0 ? GL_BACK : GL_FRONT)) return false;
+  return l.color_material_mode == component ||
+         (l.color_material_mode == GL_AMBIENT_AND_DIFFUSE &&
+          (component == GL_AMBIENT || component == GL_DIFFUSE));
+}
+
 template <typename T>
-void set_material(Context& ctx, GLenum face, GLenum pname, const T* p, bool scalar_call) {
+void set_material(Context& ctx, GLenum face, GLenum pname, const T* p) {
   if (p == nullptr) return record_error(ctx, GL_INVALID_VALUE);
   if (face != GL_FRONT && face != GL_BACK && face != GL_FRONT_AND_BACK)
     return record_error(ctx, GL_INVALID_ENUM);
-  if (scalar_call && pname != GL_SHININESS) return record_error(ctx, GL_INVALID_ENUM);
   auto apply = [&](rec::Material& m) -> bool {
+    const int side = &m == &ctx.lighting.material[0] ? 0 : 1;
+    // While GL_COLOR_MATERIAL tracks a component, glMaterial leaves it alone (Mesa's
+    // _mesa_Materialfv skips the tracked bits): the current colour keeps its place.
+    const auto set_color = [&](glm::vec4& field, GLenum component) {
+      if (!tracked_by_color_material(ctx.lighting, side, component)) field = color4(p);
+    };
     switch (pname) {
       case GL_AMBIENT:
-        m.ambient = color4(p);
+        set_color(m.ambient, GL_AMBIENT);
         return true;
       case GL_DIFFUSE:
-        m.diffuse = color4(p);
+        set_color(m.diffuse, GL_DIFFUSE);
         return true;
       case GL_SPECULAR:
-        m.specular = color4(p);
+        set_color(m.specular, GL_SPECULAR);
         return true;
       case GL_EMISSION:
-        m.emission = color4(p);
+        set_color(m.emission, GL_EMISSION);
         return true;
       case GL_AMBIENT_AND_DIFFUSE:
-        m.ambient = m.diffuse = color4(p);
+        set_color(m.ambient, GL_AMBIENT);
+        set_color(m.diffuse, GL_DIFFUSE);
         return true;
       case GL_SHININESS: {
         const float v = plain_component(p[0]);
@@ -171,7 +182,7 @@ void set_material(Context& ctx, GLenum face, GLenum pname, const T* p, bool scal
       }
       case GL_COLOR_INDEXES: {
         // Only read back: glpt renders RGBA (colour-index lighting is never used).
-        float* indexes = ctx.color_index.material_indexes[&m == &ctx.lighting.material[0] ? 0 : 1];
+        float* indexes = ctx.color_index.material_indexes[side];
         for (int i = 0; i < 3; ++i) indexes[i] = plain_component(p[i]);
         return true;
       }
@@ -180,10 +191,24 @@ void set_material(Context& ctx, GLenum face, GLenum pname, const T* p, bool scal
         return false;
     }
   };
-  material_changed_inside_begin_end(ctx);
   bool ok = true;
   if (face != GL_BACK) ok = apply(ctx.lighting.material[0]);
-  if (ok && face != GL_FRONT) apply(ctx.lighting.material[1]);
+  if (ok && face != GL_FRONT) ok = apply(ctx.lighting.material[1]);
+  if (!ok) return;
+  // The fields set, for the front face (material_field_bit's numbering); GL_COLOR_INDEXES is not
+  // drawn.
+  const uint32_t front_fields = pname == GL_AMBIENT_AND_DIFFUSE ? 0b00011u
+                                : pname == GL_AMBIENT           ? 0b00001u
+                                : pname == GL_DIFFUSE           ? 0b00010u
+                                : pname == GL_SPECULAR          ? 0b00100u
+                                : pname == GL_EMISSION          ? 0b01000u
+                                : pname == GL_SHININESS         ? 0b10000u
+                                                                : 0u;
+  static_assert(material_field_bit(1, 0) == 1u << 5);
+  uint32_t fields = 0;
+  if (face != GL_BACK) fields |= front_fields;
+  if (face != GL_FRONT) fields |= front_fields << 5;
+  material_set_inside_begin_end(ctx, fields);
 }
 
 // An RGBA colour as glGet*fv (unchanged) or glGet*iv (GL 1.5 6.1.2: linearly mapped, 1.0 to the
@@ -313,40 +338,48 @@ void apply_color_material(Context& ctx) {
 namespace impl {
 
 void glLightf(Context& ctx, GLenum light, GLenum pname, GLfloat param) {
-  set_light(ctx, light, pname, &param, true);
+  const GLfloat p[4] = {param, 0.0f, 0.0f, 0.0f};
+  set_light(ctx, light, pname, p);
 }
 void glLighti(Context& ctx, GLenum light, GLenum pname, GLint param) {
-  set_light(ctx, light, pname, &param, true);
+  const GLint p[4] = {param, 0, 0, 0};
+  set_light(ctx, light, pname, p);
 }
 void glLightfv(Context& ctx, GLenum light, GLenum pname, const GLfloat* params) {
-  set_light(ctx, light, pname, params, false);
+  set_light(ctx, light, pname, params);
 }
 void glLightiv(Context& ctx, GLenum light, GLenum pname, const GLint* params) {
-  set_light(ctx, light, pname, params, false);
+  set_light(ctx, light, pname, params);
 }
 void glLightModelf(Context& ctx, GLenum pname, GLfloat param) {
-  set_light_model(ctx, pname, &param, true);
+  const GLfloat p[4] = {param, 0.0f, 0.0f, 0.0f};
+  set_light_model(ctx, pname, p);
 }
 void glLightModeli(Context& ctx, GLenum pname, GLint param) {
-  set_light_model(ctx, pname, &param, true);
+  const GLint p[4] = {param, 0, 0, 0};
+  set_light_model(ctx, pname, p);
 }
 void glLightModelfv(Context& ctx, GLenum pname, const GLfloat* params) {
-  set_light_model(ctx, pname, params, false);
+  set_light_model(ctx, pname, params);
 }
 void glLightModeliv(Context& ctx, GLenum pname, const GLint* params) {
-  set_light_model(ctx, pname, params, false);
+  set_light_model(ctx, pname, params);
 }
+// Mesa's glMaterialf and glMateriali hand the value, converted to float, to glMaterialfv as its
+// first component; the other three are whatever its stack holds (glpt: zero).
 void glMaterialf(Context& ctx, GLenum face, GLenum pname, GLfloat param) {
-  set_material(ctx, face, pname, &param, true);
+  const GLfloat p[4] = {param, 0.0f, 0.0f, 0.0f};
+  set_material(ctx, face, pname, p);
 }
 void glMateriali(Context& ctx, GLenum face, GLenum pname, GLint param) {
-  set_material(ctx, face, pname, &param, true);
+  const GLfloat p[4] = {static_cast<GLfloat>(param), 0.0f, 0.0f, 0.0f};
+  set_material(ctx, face, pname, p);
 }
 void glMaterialfv(Context& ctx, GLenum face, GLenum pname, const GLfloat* params) {
-  set_material(ctx, face, pname, params, false);
+  set_material(ctx, face, pname, params);
 }
 void glMaterialiv(Context& ctx, GLenum face, GLenum pname, const GLint* params) {
-  set_material(ctx, face, pname, params, false);
+  set_material(ctx, face, pname, params);
 }
 void glGetLightfv(Context& ctx, GLenum light, GLenum pname, GLfloat* params) {
   if (params) get_light(ctx, light, pname, params);

@@ -233,12 +233,13 @@ ColorTargets resolve_draw_buffer(uint32_t draw_buffer, bool double_buffered) {
       return ColorTargets::kNone;
     case GL_FRONT:
     case GL_FRONT_LEFT:
-    case GL_LEFT:
       return ColorTargets::kFront;
     case GL_BACK:
     case GL_BACK_LEFT:
       // A single-buffered drawable has one buffer; Mesa draws GL_BACK into it too.
       return double_buffered ? ColorTargets::kBack : ColorTargets::kFront;
+    // GL 1.5 4.2.1: GL_LEFT names the front left and back left buffers.
+    case GL_LEFT:
     case GL_FRONT_AND_BACK:
       return double_buffered ? ColorTargets::kFrontAndBack : ColorTargets::kFront;
     default:  // right buffers: glpt's drawables are not stereo

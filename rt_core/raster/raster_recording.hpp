@@ -59,6 +59,8 @@ struct RasterRenderer::DrawGeometry {
   uint32_t index_count = 0;
   VkDeviceSize edge_offset = 0;  // unfilled draws: per-triangle boundary-edge masks
   RasterTopology topology = RasterTopology::kTriangles;
+  // Per-vertex materials (RasterPushConstants::materials): all zero when the draw has none.
+  glm::uvec4 materials{0u};
 };
 
 // How one pixel rectangle (glBitmap, glDrawPixels, glCopyPixels) is drawn; prepared with the

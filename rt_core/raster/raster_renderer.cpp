@@ -143,6 +143,7 @@ void RasterRenderer::execute(const rec::FrameRecord& record, const rec::Drawable
   r.clear_geometry.index_count = 3;
   std::vector<uint32_t> indices;
   std::vector<uint8_t> edge_masks;
+  std::vector<gpu::RasterMaterial> materials;
   size_t next_clear_state = state_count;
   for (size_t i : *commands) {
     const rec::Command& command = record.commands[i];
@@ -176,6 +177,15 @@ void RasterRenderer::execute(const rec::FrameRecord& record, const rec::Drawable
     attribute(GLPT_RASTER_ATTR_FOG, v.fog_coord, 64);
     for (int u = 0; u < rec::kMaxTextureUnits; ++u)
       attribute(GLPT_RASTER_ATTR_TEXCOORD0 + u, v.tex_coord[u], 48);
+    // Materials given between glBegin and glEnd: front and back per vertex (or one pair).
+    if (v.material.size() == 1 || (!v.material.empty() && v.material.size() == v.vertex_count())) {
+      materials.clear();
+      for (const auto& pair : v.material)
+        materials.insert(materials.end(), {pack_material(pair[0]), pack_material(pair[1])});
+      const uint32_t per_vertex = v.material.size() == 1 ? 0u : 2u * GLPT_RASTER_MATERIAL_VEC4S;
+      g.materials = glm::uvec4(arena.add(materials.data(), materials.size()) / sizeof(glm::vec4),
+                               per_vertex, 1u, 0u);
+    }
 
     // Indices in GL's assembly order. Primitives with a non-finite vertex are dropped (GL
     // accepts such vertices; what they draw is undefined, and glpt draws nothing).
@@ -568,7 +578,7 @@ void RasterRenderer::record_clear(Recording& r, const rec::Clear& clear, uint32_
   const VkViewport viewport{
       0.0f, 0.0f, static_cast<float>(drawable_.width), static_cast<float>(drawable_.height), z, z};
   set_dynamic_state(r, d, viewport, rect);
-  const gpu::RasterPushConstants push{glm::uvec4(state_index, 0, 0, 0)};
+  const gpu::RasterPushConstants push{glm::uvec4(state_index, 0, 0, 0), glm::uvec4(0u)};
   vkCmdPushConstants(r.cmd, pipelines_.layout(), pipelines_.push_constant_stages(), 0, sizeof push,
                      &push);
   const DrawGeometry& g = r.clear_geometry;
@@ -646,7 +656,7 @@ void RasterRenderer::record_draw_pass(Recording& r, const rec::Draw& draw, const
   glm::uvec2 jitter(0u);
   if (to_gbuffer) std::memcpy(&jitter, &r.gbuffer->jitter, sizeof jitter);
   const gpu::RasterPushConstants push{
-      glm::uvec4(draw.state, static_cast<uint32_t>(g.edge_offset / 4), jitter)};
+      glm::uvec4(draw.state, static_cast<uint32_t>(g.edge_offset / 4), jitter), g.materials};
   vkCmdPushConstants(r.cmd, pipelines_.layout(), pipelines_.push_constant_stages(), 0, sizeof push,
                      &push);
   std::array<VkBuffer, GLPT_RASTER_ATTR_COUNT> buffers;

@@ -1,5 +1,6 @@
 #include "rt_core/raster/state_uniforms.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -11,10 +12,6 @@ namespace {
 glm::vec3 normalize_or_zero(glm::vec3 v) {
   const float len = std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
   return len > 0.0f ? v / len : v;
-}
-
-gpu::RasterMaterial pack(const rec::Material& m) {
-  return {m.ambient, m.diffuse, m.specular, m.emission, glm::vec4(m.shininess, 0, 0, 0)};
 }
 
 gpu::RasterLight pack(const rec::Light& l) {
@@ -31,15 +28,21 @@ gpu::RasterLight pack(const rec::Light& l) {
     out.position = glm::vec4(vp, 0.0f);
     out.half_vector = glm::vec4(normalize_or_zero(vp + glm::vec3(0, 0, 1)), 0.0f);
   }
+  // Mesa's cosine of the cutoff: cosf of the angle converted in double, clamped to >= 0.
   const bool spot = l.spot_cutoff != 180.0f;
-  out.spot = glm::vec4(normalize_or_zero(l.spot_direction),
-                       spot ? std::cos(l.spot_cutoff * static_cast<float>(M_PI / 180.0)) : -2.0f);
+  const float cos_cutoff =
+      std::max(std::cos(static_cast<float>(l.spot_cutoff * M_PI / 180.0)), 0.0f);
+  out.spot = glm::vec4(normalize_or_zero(l.spot_direction), spot ? cos_cutoff : -2.0f);
   out.attenuation = glm::vec4(l.constant_attenuation, l.linear_attenuation, l.quadratic_attenuation,
                               l.spot_exponent);
   return out;
 }
 
 }  // namespace
+
+gpu::RasterMaterial pack_material(const rec::Material& m) {
+  return {m.ambient, m.diffuse, m.specular, m.emission, glm::vec4(m.shininess, 0, 0, 0)};
+}
 
 void pack_state_uniforms(const rec::StateSnapshot& state, gpu::RasterState& out) {
   std::memset(&out, 0, sizeof out);
@@ -59,8 +62,8 @@ void pack_state_uniforms(const rec::StateSnapshot& state, gpu::RasterState& out)
   const rec::LightingState& l = *state.lighting;
   out.light_model_ambient = l.model_ambient;
   for (int i = 0; i < rec::kMaxLights; ++i) out.lights[i] = pack(l.lights[i]);
-  out.material[0] = pack(l.material[0]);
-  out.material[1] = pack(l.material[1]);
+  out.material[0] = pack_material(l.material[0]);
+  out.material[1] = pack_material(l.material[1]);
 
   const rec::TexturingState& tex = *state.texturing;
   for (int u = 0; u < rec::kMaxTextureUnits; ++u) {

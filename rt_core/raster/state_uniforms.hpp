@@ -10,5 +10,7 @@
 namespace glpt::rt {
 
 void pack_state_uniforms(const rec::StateSnapshot& state, gpu::RasterState& out);
+// One material as the shaders read it (also per vertex: RasterPushConstants::materials).
+gpu::RasterMaterial pack_material(const rec::Material& m);
 
 }  // namespace glpt::rt

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <utility>
+#include <vector>
 
 #include "common/content_hash.hpp"
 #include "rt_core/vk/vk_error.hpp"
@@ -133,9 +135,13 @@ void TextureCache::prepare(const std::vector<const rec::TextureObjectSnapshot*>&
     entry.image = GpuImage::create(device_, info);
     entry.last_used = frame;
     uploads.push_back({t, &entry.image});
+    entry.bytes = 0;
     for (const auto& face : t->faces)
       for (const auto& level : face)
-        if (level) staging_bytes += (level->texels.size() + 15) & ~size_t{15};
+        if (level) {
+          entry.bytes += level->texels.size();
+          staging_bytes += (level->texels.size() + 15) & ~size_t{15};
+        }
   }
   if (uploads.empty()) return;
   ensure_capacity(device_, staging_, staging_bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
@@ -207,6 +213,24 @@ void TextureCache::evict_unused(uint64_t frame) {
   std::erase_if(entries_, [&](const auto& kv) {
     return frame > kv.second.last_used + kEvictAfterUnusedFrames;
   });
+  size_t bytes = image_bytes();
+  if (bytes <= kMemoryBudgetBytes) return;
+  std::vector<std::pair<uint64_t, uint64_t>> by_age;  // (last used, content version)
+  for (const auto& [version, entry] : entries_)
+    if (entry.last_used < frame) by_age.emplace_back(entry.last_used, version);
+  std::sort(by_age.begin(), by_age.end());
+  for (const auto& [last_used, version] : by_age) {
+    if (bytes <= kMemoryBudgetBytes) break;
+    auto it = entries_.find(version);
+    bytes -= it->second.bytes;
+    entries_.erase(it);
+  }
+}
+
+size_t TextureCache::image_bytes() const {
+  size_t bytes = 0;
+  for (const auto& kv : entries_) bytes += kv.second.bytes;
+  return bytes;
 }
 
 }  // namespace glpt::rt

@@ -1,10 +1,11 @@
 // GPU images of the record's textures, one per TextureObjectSnapshot::content_version (a texture
 // whose content did not change is uploaded once), and samplers per GL sampler state. Entries not
-// used for a while are dropped.
+// used for a while are dropped, and the least recently used ones beyond a memory budget.
 #pragma once
 
 #include <vulkan/vulkan.h>
 
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <unordered_map>
@@ -32,12 +33,19 @@ class TextureCache {
   // 1x1 white textures of each kind (1D, 2D, 3D, cube) for bindings nothing samples.
   VkImageView dummy_view(uint32_t kind) const { return dummies_[kind].view(); }
   VkSampler dummy_sampler() const { return dummy_sampler_.get(); }
+  // Drops the images unused for many frames, then, while the images hold more than
+  // kMemoryBudgetBytes, the least recently used ones that `frame` did not use (a program that
+  // makes a new texture at every frame or draw would otherwise fill the device's memory).
   void evict_unused(uint64_t frame);
+  // Bytes of the texels of the cached images.
+  size_t image_bytes() const;
+  static constexpr size_t kMemoryBudgetBytes = size_t{512} << 20;
 
  private:
   struct Entry {
     GpuImage image;
     uint64_t last_used = 0;
+    size_t bytes = 0;  // of its texels
   };
   struct SamplerKeyHash {
     size_t operator()(const SamplerSetup& key) const;

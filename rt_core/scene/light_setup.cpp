@@ -25,8 +25,9 @@ gpu::GpuLight pack_light(const Light& light, size_t index) {
   packed.ambient = light.ambient;
   packed.diffuse = light.diffuse;
   packed.specular = light.specular;
-  // GL: cutoff 180 is "no spot"; Mesa ignores spot parameters of directional lights.
-  const bool spot = light.spot_cutoff < 180.0f && light.position.w != 0.0f;
+  // GL: cutoff 180 is "no spot". GL 1.5 2.14.1 and Mesa apply a spot cutoff to directional
+  // lights too (the light's direction is VP), as piglit's infinite-spot-light checks.
+  const bool spot = light.spot_cutoff < 180.0f;
   const float cutoff = glm::radians(std::clamp(light.spot_cutoff, 0.0f, 90.0f));
   packed.spot = glm::vec4(normalize_or(light.spot_direction, glm::vec3(0, 0, -1)),
                           spot ? std::cos(cutoff) : -2.0f);

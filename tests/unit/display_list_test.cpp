@@ -142,3 +142,101 @@ TEST_F(GlTest, LightPositionIsStoredInEyeSpaceAtCallTime) {
 }
 
 }  // namespace
+
+namespace {
+
+std::vector<GLfloat> material(GLenum face, GLenum pname) {
+  GLfloat v[4] = {-9, -9, -9, -9};
+  glGetMaterialfv(face, pname, v);
+  return {v[0], v[1], v[2], v[3]};
+}
+
+std::vector<GLfloat> border_colour() {
+  GLfloat v[4] = {-9, -9, -9, -9};
+  glGetTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, v);
+  return {v[0], v[1], v[2], v[3]};
+}
+
+// Mesa's scalar parameter commands pass (param, 0, 0, 0) to their vector form for any pname
+// (piglit gl-1.0-beginend-coverage calls glMaterialf(GL_AMBIENT), glLightModelf(GL_AMBIENT)).
+TEST_F(GlTest, ScalarFormsOfVectorParametersTakeTheValueAndZeros) {
+  glMaterialf(GL_FRONT, GL_AMBIENT, 0.5f);
+  EXPECT_EQ(glGetError(), GLenum{GL_NO_ERROR});
+  EXPECT_EQ(material(GL_FRONT, GL_AMBIENT), (std::vector<GLfloat>{0.5f, 0, 0, 0}));
+  glMateriali(GL_BACK, GL_EMISSION, 1);  // converted as a float, not as a colour integer
+  EXPECT_EQ(material(GL_BACK, GL_EMISSION), (std::vector<GLfloat>{1, 0, 0, 0}));
+  glLightModelf(GL_LIGHT_MODEL_AMBIENT, 0.25f);
+  EXPECT_EQ(glGetError(), GLenum{GL_NO_ERROR});
+  GLfloat v[4] = {};
+  glGetFloatv(GL_LIGHT_MODEL_AMBIENT, v);
+  EXPECT_EQ(std::vector<GLfloat>(v, v + 4), (std::vector<GLfloat>{0.25f, 0, 0, 0}));
+  glLightf(GL_LIGHT1, GL_DIFFUSE, 0.75f);
+  EXPECT_EQ(glGetError(), GLenum{GL_NO_ERROR});
+  glGetLightfv(GL_LIGHT1, GL_DIFFUSE, v);
+  EXPECT_EQ(std::vector<GLfloat>(v, v + 4), (std::vector<GLfloat>{0.75f, 0, 0, 0}));
+  glMaterialf(GL_FRONT, GL_SHININESS, 200.0f);  // still validated
+  EXPECT_EQ(glGetError(), GLenum{GL_INVALID_VALUE});
+  glMaterialf(GL_FRONT, GL_POSITION, 1.0f);
+  EXPECT_EQ(glGetError(), GLenum{GL_INVALID_ENUM});
+}
+
+// Executed at once, glTexParameterf(GL_TEXTURE_BORDER_COLOR) is an error in Mesa; compiled, Mesa
+// records it as glTexParameterfv with (param, 0, 0, 0) (piglit gl-1.0-beginend-coverage).
+TEST_F(GlTest, CompiledScalarParametersAreTheirVectorForm) {
+  GLuint texture = 0;
+  glGenTextures(1, &texture);
+  glBindTexture(GL_TEXTURE_2D, texture);
+  glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, 0.5f);
+  EXPECT_EQ(glGetError(), GLenum{GL_INVALID_ENUM});
+  EXPECT_EQ(border_colour(), (std::vector<GLfloat>{0, 0, 0, 0}));
+
+  const GLuint list = glGenLists(1);
+  glNewList(list, GL_COMPILE_AND_EXECUTE);
+  glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, 0.5f);
+  glEndList();
+  EXPECT_EQ(glGetError(), GLenum{GL_NO_ERROR});
+  EXPECT_EQ(border_colour(), (std::vector<GLfloat>{0.5f, 0, 0, 0}));
+
+  // glTexParameteri compiles as glTexParameterfv of the value as a float (not a colour integer).
+  glNewList(list, GL_COMPILE);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, 1);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glEndList();
+  EXPECT_EQ(border_colour(), (std::vector<GLfloat>{0.5f, 0, 0, 0}));  // not executed
+  glCallList(list);
+  EXPECT_EQ(glGetError(), GLenum{GL_NO_ERROR});
+  EXPECT_EQ(border_colour(), (std::vector<GLfloat>{1, 0, 0, 0}));
+  GLint filter = 0;
+  glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, &filter);
+  EXPECT_EQ(filter, GL_LINEAR);
+  glDeleteLists(list, 1);
+  glDeleteTextures(1, &texture);
+}
+
+// While GL_COLOR_MATERIAL tracks a material colour, glMaterial leaves that colour alone (Mesa's
+// _mesa_Materialfv), executed at once or from a display list (piglit dlist-color-material).
+TEST_F(GlTest, MaterialOfATrackedColourIsIgnored) {
+  const GLfloat red[4] = {1, 0, 0, 1}, blue[4] = {0, 0, 1, 1};
+  glColorMaterial(GL_FRONT, GL_DIFFUSE);
+  glEnable(GL_COLOR_MATERIAL);
+  glColor4f(0, 1, 0, 1);
+  glMaterialfv(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE, red);
+  EXPECT_EQ(material(GL_FRONT, GL_DIFFUSE), (std::vector<GLfloat>{0, 1, 0, 1}));
+  EXPECT_EQ(material(GL_FRONT, GL_AMBIENT), (std::vector<GLfloat>{1, 0, 0, 1}));  // untracked
+  EXPECT_EQ(material(GL_BACK, GL_DIFFUSE), (std::vector<GLfloat>{1, 0, 0, 1}));   // untracked
+
+  const GLuint list = glGenLists(1);
+  glNewList(list, GL_COMPILE);
+  glMaterialfv(GL_FRONT, GL_DIFFUSE, blue);
+  glEndList();
+  glCallList(list);
+  EXPECT_EQ(material(GL_FRONT, GL_DIFFUSE), (std::vector<GLfloat>{0, 1, 0, 1}));
+  // Not tracked any more: glMaterial applies again.
+  glDisable(GL_COLOR_MATERIAL);
+  glCallList(list);
+  EXPECT_EQ(material(GL_FRONT, GL_DIFFUSE), (std::vector<GLfloat>{0, 0, 1, 1}));
+  glDeleteLists(list, 1);
+  EXPECT_EQ(glGetError(), GLenum{GL_NO_ERROR});
+}
+
+}  // namespace

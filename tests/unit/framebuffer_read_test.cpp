@@ -1,7 +1,9 @@
 // glReadPixels, glCopyTexImage and glCopyTexSubImage read the drawable through read_framebuffer:
 // a headless target cleared to a known colour (the renderer reproduces the clear colour exactly).
+#include <algorithm>
 #include <cstdlib>
 #include <string>
+#include <vector>
 
 #include "gl_shim/frame/headless_target.hpp"
 #include "gl_test_context.hpp"
@@ -138,6 +140,76 @@ TEST_F(FramebufferReadTest, CopyTexImageErrorsMatchMesa) {
   EXPECT_EQ(glGetError(), GLenum{GL_INVALID_VALUE});
   glCopyTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_Y, 0, GL_RGBA, 0, 0, 4, 2, 0);
   EXPECT_EQ(glGetError(), GLenum{GL_INVALID_VALUE});
+}
+
+// GL 1.5 4.2.1: GL_LEFT names the front left and the back left buffer (piglit
+// gl-1.0-drawbuffer-modes); a non-stereo drawable has no right buffers.
+TEST_F(FramebufferReadTest, DrawBufferLeftWritesFrontAndBack) {
+  glDrawBuffer(GL_LEFT);
+  glClearColor(0.0f, 0.0f, 1.0f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glColor3f(0.0f, 1.0f, 0.0f);
+  glRectf(-1.0f, -1.0f, 0.0f, 0.0f);  // the lower left quarter: pixels (0..3, 0..3)
+  ASSERT_EQ(glGetError(), GLenum{GL_NO_ERROR});
+  for (GLenum buffer : {GL_FRONT, GL_BACK}) {
+    glReadBuffer(buffer);
+    GLubyte rgba[4] = {};
+    glReadPixels(1, 1, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+    EXPECT_EQ(std::vector<int>(rgba, rgba + 4), (std::vector<int>{0, 255, 0, 255})) << buffer;
+    glReadPixels(6, 6, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+    EXPECT_EQ(std::vector<int>(rgba, rgba + 4), (std::vector<int>{0, 0, 255, 255})) << buffer;
+  }
+  for (GLenum right : {GL_RIGHT, GL_FRONT_RIGHT, GL_BACK_RIGHT}) {
+    glDrawBuffer(right);
+    EXPECT_EQ(glGetError(), GLenum{GL_INVALID_OPERATION});
+    glReadBuffer(right);
+    EXPECT_EQ(glGetError(), GLenum{GL_INVALID_OPERATION});
+  }
+  GLint draw_buffer = 0;
+  glGetIntegerv(GL_DRAW_BUFFER, &draw_buffer);
+  EXPECT_EQ(draw_buffer, GL_LEFT);
+}
+
+}  // namespace
+
+namespace {
+
+// piglit streaming-texture-leak: a new 1024x1024 texture at every draw, deleted after it. The
+// record must not hold every texture until the frame ends: once its draws sample more than
+// 256 MiB of distinct textures it is executed (as when it holds too many vertices).
+TEST_F(FramebufferReadTest, DrawsOfReplacedTexturesAreExecutedBeforeTheyFillMemory) {
+  constexpr int kSide = 1024;                                      // 4 MiB of texels each
+  std::vector<GLuint> texels(size_t{kSide} * kSide, 0xff00ff00u);  // ABGR: opaque green
+  glEnable(GL_TEXTURE_2D);
+  constexpr int kDraws = 70;  // 280 MiB in all
+  size_t most_commands = 0;
+  for (int i = 0; i < kDraws; ++i) {
+    GLuint texture = 0;
+    glGenTextures(1, &texture);
+    glBindTexture(GL_TEXTURE_2D, texture);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, kSide, kSide, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                 texels.data());
+    glBegin(GL_QUADS);
+    glTexCoord2f(0, 0);
+    glVertex2f(-1, -1);
+    glTexCoord2f(1, 0);
+    glVertex2f(1, -1);
+    glTexCoord2f(1, 1);
+    glVertex2f(1, 1);
+    glTexCoord2f(0, 1);
+    glVertex2f(-1, 1);
+    glEnd();
+    glDeleteTextures(1, &texture);
+    most_commands = std::max(most_commands, ctx_.recorder.record().commands.size());
+  }
+  ASSERT_EQ(glGetError(), GLenum{GL_NO_ERROR});
+  // The clear and at most 64 draws (256 MiB) before the record ran.
+  EXPECT_LE(most_commands, 66u);
+  EXPECT_LT(ctx_.recorder.record().commands.size(), size_t{kDraws});
+  GLubyte rgba[4] = {};
+  glReadPixels(4, 4, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+  EXPECT_EQ(std::vector<int>(rgba, rgba + 4), (std::vector<int>{0, 255, 0, 255}));
 }
 
 }  // namespace

@@ -48,6 +48,14 @@ TEST(PixelFormats, FormatTypeErrorsFollowGlAndMesa) {
             GLenum{GL_INVALID_OPERATION});
   EXPECT_EQ(check_format_and_type(GL_DEPTH_COMPONENT, GL_UNSIGNED_INT_8_8_8_8),
             GLenum{GL_INVALID_OPERATION});
+  // Formats of later GL versions (GL_RG 0x8227, GL_RGBA_INTEGER 0x8D99): glpt does not take
+  // them, but a packed type that does not fit is GL_INVALID_OPERATION first, as in OSMesa
+  // (piglit draw-pixels); a format no GL knows stays GL_INVALID_ENUM.
+  EXPECT_EQ(check_format_and_type(0x8227, GL_UNSIGNED_BYTE_3_3_2), GLenum{GL_INVALID_OPERATION});
+  EXPECT_EQ(check_format_and_type(0x8D99, GL_UNSIGNED_SHORT_4_4_4_4), GLenum{GL_INVALID_OPERATION});
+  EXPECT_EQ(check_format_and_type(0x8227, GL_UNSIGNED_BYTE), GLenum{GL_INVALID_ENUM});
+  EXPECT_EQ(check_format_and_type(0x1234, GL_UNSIGNED_BYTE_3_3_2), GLenum{GL_INVALID_ENUM});
+  EXPECT_EQ(check_format_and_type(0x8227, GL_BITMAP), GLenum{GL_INVALID_ENUM});
 }
 
 TEST(PixelLayout, RowsArePaddedToTheAlignment) {

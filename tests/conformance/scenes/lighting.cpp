@@ -131,6 +131,31 @@ void spot_scene(float cutoff, float exponent) {
 GLPT_SCENE(lighting_spot_cutoff, 64, 64) { spot_scene(25, 0); }
 GLPT_SCENE(lighting_spot_exponent, 64, 64) { spot_scene(60, 12); }
 
+// Spot parameters of directional lights (piglit infinite-spot-light): GL 1.5 2.14.1 and Mesa
+// weigh a directional light by its spot factor too, with the light's direction as VP. Light 0
+// is inside its cone (spot cosine 0.8, exponent 2: factor 0.64); light 1, red, is outside its
+// cone, so neither its ambient nor its diffuse term shows.
+GLPT_SCENE(lighting_spot_directional, 64, 64) {
+  clear(0, 0, 0);
+  perspective(50.0, 1.0, 0.5, 20.0);
+  glEnable(GL_LIGHTING);
+  light4(GL_LIGHT0, GL_POSITION, 0, 0, 1, 0);
+  light4(GL_LIGHT0, GL_AMBIENT, 0.2f, 0.2f, 0.2f, 1);
+  const float inside[3] = {0.6f, 0, -0.8f};
+  glLightfv(GL_LIGHT0, GL_SPOT_DIRECTION, inside);
+  glLightf(GL_LIGHT0, GL_SPOT_CUTOFF, 60);
+  glLightf(GL_LIGHT0, GL_SPOT_EXPONENT, 2);
+  glEnable(GL_LIGHT0);
+  light4(GL_LIGHT1, GL_POSITION, 1, 1, 1, 0);
+  light4(GL_LIGHT1, GL_AMBIENT, 0.6f, 0, 0, 1);
+  light4(GL_LIGHT1, GL_DIFFUSE, 1, 0, 0, 1);
+  const float outside[3] = {0, 0, 1};
+  glLightfv(GL_LIGHT1, GL_SPOT_DIRECTION, outside);
+  glLightf(GL_LIGHT1, GL_SPOT_CUTOFF, 10);
+  glEnable(GL_LIGHT1);
+  sphere_at(0, 0, -5, 1.5f);  // not a plane: a directional light would light it uniformly
+}
+
 // A positional light 1 unit in front of a plane, with one attenuation term.
 void attenuation_scene(float constant, float linear, float quadratic) {
   clear(0, 0, 0);
@@ -436,3 +461,82 @@ GLPT_SCENE(lighting_flipped_ortho, 64, 64) {
 }
 
 }  // namespace
+
+// glMaterial between glBegin and glEnd (piglit gl-1.0-dlist-materials): every vertex is lit with
+// the material in effect at it, as Mesa's fixed-function program reads per-vertex material
+// attributes. One triangle strip per material parameter (rows: ambient, diffuse, specular,
+// emission), red at its third vertex and green at its fifth; the left column in immediate mode,
+// the right one replayed from a display list. `shade_model` GL_FLAT: each triangle takes the
+// material of its provoking (last) vertex; GL_SMOOTH: colours blend between vertices, and the
+// display list's first two vertices take the red given after them (Mesa's display lists copy a
+// material's first value in the list into the vertices before it).
+void materials_between_begin_end(GLenum shade_model) {
+  clear(0, 0, 0);
+  glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
+  glOrtho(0, 128, 0, 64, -1, 1);
+  glMatrixMode(GL_MODELVIEW);
+  glLoadIdentity();
+  glEnable(GL_LIGHTING);
+  glEnable(GL_LIGHT0);  // directional along +z: n . L = 1, and n . H = 1 for any shininess
+  light4(GL_LIGHT0, GL_AMBIENT, 1, 1, 1, 1);
+  light4(GL_LIGHT0, GL_SPECULAR, 1, 1, 1, 1);
+  glShadeModel(shade_model);
+  const GLenum params[4] = {GL_AMBIENT, GL_DIFFUSE, GL_SPECULAR, GL_EMISSION};
+  const float red[4] = {1, 0, 0, 1}, green[4] = {0, 1, 0, 1}, black[4] = {0, 0, 0, 1};
+  const GLuint list = glGenLists(1);
+  for (int column = 0; column < 2; ++column) {
+    for (int row = 0; row < 4; ++row) {
+      for (GLenum p : params) glMaterialfv(GL_FRONT_AND_BACK, p, black);
+      if (column == 1) glNewList(list, GL_COMPILE);
+      const float x = 4.0f + 64.0f * column, y = 2.0f + 16.0f * row;
+      glBegin(GL_TRIANGLE_STRIP);
+      glNormal3f(0, 0, 1);
+      glVertex2f(x, y);
+      glVertex2f(x, y + 12);
+      glMaterialfv(GL_FRONT_AND_BACK, params[row], red);
+      glVertex2f(x + 28, y);
+      glVertex2f(x + 28, y + 12);
+      glMaterialfv(GL_FRONT_AND_BACK, params[row], green);
+      glVertex2f(x + 56, y);
+      glVertex2f(x + 56, y + 12);
+      glEnd();
+      if (column == 1) {
+        glEndList();
+        glCallList(list);
+      }
+    }
+  }
+  glDeleteLists(list, 1);
+}
+
+GLPT_SCENE(lighting_materials_between_begin_end_flat, 128, 64) {
+  materials_between_begin_end(GL_FLAT);
+}
+GLPT_SCENE(lighting_materials_between_begin_end_smooth, 128, 64) {
+  materials_between_begin_end(GL_SMOOTH);
+}
+
+// glMaterial of a colour GL_COLOR_MATERIAL tracks is ignored (piglit dlist-color-material):
+// the current colour stays the material, whether glMaterial runs at once or from a display list
+// (left: diffuse tracked, right: ambient tracked; both set to red by glMaterial after glColor
+// green). Untracked components still change: the emission set with them shows as blue.
+GLPT_SCENE(lighting_material_of_tracked_colour_ignored, 128, 64) {
+  begin_lit_view(128, 64, true);
+  const float red[4] = {1, 0, 0, 1}, blue[4] = {0, 0, 0.4f, 1};
+  glEnable(GL_COLOR_MATERIAL);
+  glColorMaterial(GL_FRONT_AND_BACK, GL_DIFFUSE);
+  glColor3f(0, 1, 0);
+  glMaterialfv(GL_FRONT_AND_BACK, GL_DIFFUSE, red);
+  glMaterialfv(GL_FRONT_AND_BACK, GL_EMISSION, blue);
+  sphere_at(-1.3f, 0, -5, 1);
+  glColorMaterial(GL_FRONT_AND_BACK, GL_AMBIENT);
+  light_model4(GL_LIGHT_MODEL_AMBIENT, 0.8f, 0.8f, 0.8f);
+  const GLuint list = glGenLists(1);
+  glNewList(list, GL_COMPILE);
+  glMaterialfv(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE, red);
+  glEndList();
+  glCallList(list);
+  glDeleteLists(list, 1);
+  sphere_at(1.3f, 0, -5, 1);
+}
