@@ -78,6 +78,7 @@ GL_ENUM_ONLY_EXTENSIONS = [
     "GL_EXT_texture_lod_bias", "GL_ARB_texture_border_clamp", "GL_ARB_texture_mirrored_repeat",
     "GL_NV_texgen_reflection", "GL_EXT_stencil_wrap", "GL_ARB_depth_texture",
     "GL_ARB_texture_rectangle", "GL_EXT_texture_env_dot3", "GL_ARB_texture_env_dot3",
+    "GL_EXT_packed_depth_stencil",
 ]
 
 # What glGetString(GL_EXTENSIONS) advertises: the extensions GL 1.1-1.5 made core (programs of
