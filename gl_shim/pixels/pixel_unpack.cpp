@@ -182,10 +182,10 @@ std::vector<uint32_t> unpack_indices_raw(const UnpackSource& src) {
 
 std::vector<float> unpack_depth_raw(const UnpackSource& src) {
   const GLenum type = src.shape.type;
-  return unpack_single_elements<float>(
-      src, [type](uint32_t bits, int32_t, const ClientImageLayout&) {
-        return normalized_element(bits, type);
-      });
+  return unpack_single_elements<float>(src,
+                                       [type](uint32_t bits, int32_t, const ClientImageLayout&) {
+                                         return normalized_element(bits, type);
+                                       });
 }
 
 std::vector<uint32_t> unpack_depth_stencil_words(const UnpackSource& src) {

@@ -57,10 +57,10 @@ void glReadPixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height,
   const PixelClass kind_of_format = pixel_class(format);
   // glpt's contexts are RGBA: colour indices cannot be read (GL 1.5 4.3.2), nor can depth or
   // stencil values of a drawable without those buffers.
-  const bool depth = kind_of_format == PixelClass::kDepth ||
-                     kind_of_format == PixelClass::kDepthStencil;
-  const bool stencil = kind_of_format == PixelClass::kStencilIndex ||
-                       kind_of_format == PixelClass::kDepthStencil;
+  const bool depth =
+      kind_of_format == PixelClass::kDepth || kind_of_format == PixelClass::kDepthStencil;
+  const bool stencil =
+      kind_of_format == PixelClass::kStencilIndex || kind_of_format == PixelClass::kDepthStencil;
   if (kind_of_format == PixelClass::kColorIndex || (depth && ctx.drawable.depth_bits == 0) ||
       (stencil && ctx.drawable.stencil_bits == 0))
     return record_error(ctx, GL_INVALID_OPERATION);
@@ -72,7 +72,8 @@ void glReadPixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height,
   if (shape.groups() == 0 || pixels == nullptr) return;
   if (kind_of_format == PixelClass::kDepthStencil) {
     return or_out_of_memory(ctx, [&] {
-      read_depth_stencil(ctx, x, y, PackTarget{ctx.framebuffer.pack, shape, false, pixels, nullptr});
+      read_depth_stencil(ctx, x, y,
+                         PackTarget{ctx.framebuffer.pack, shape, false, pixels, nullptr});
     });
   }
 

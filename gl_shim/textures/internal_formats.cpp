@@ -27,7 +27,8 @@ constexpr InternalFormatInfo RGBA(uint8_t r, uint8_t g, uint8_t b, uint8_t a) {
   return {GL_RGBA, r, g, b, a, 0, 0, 0, 0};
 }
 constexpr InternalFormatInfo D(uint8_t d) { return {GL_DEPTH_COMPONENT, 0, 0, 0, 0, 0, 0, d, 0}; }
-// EXT_packed_depth_stencil: Mesa stores both GL_DEPTH_STENCIL_EXT and GL_DEPTH24_STENCIL8_EXT as Z24S8.
+// EXT_packed_depth_stencil: Mesa stores both GL_DEPTH_STENCIL_EXT and GL_DEPTH24_STENCIL8_EXT as
+// Z24S8.
 constexpr InternalFormatInfo DS() { return {GL_DEPTH_STENCIL_EXT, 0, 0, 0, 0, 0, 0, 24, 0, 8}; }
 // A generic compressed format stored uncompressed, reported as `base`.
 constexpr InternalFormatInfo reported_as(InternalFormatInfo info, GLint base) {

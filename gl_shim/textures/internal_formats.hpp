@@ -24,7 +24,9 @@ struct InternalFormatInfo {
 
   // GL_DEPTH_COMPONENT or GL_DEPTH_STENCIL_EXT: texels are depth values (the stencil indices of
   // depth-stencil images are kept beside them, rec::TextureImage::stencil).
-  bool is_depth() const { return base_format == GL_DEPTH_COMPONENT || base_format == GL_DEPTH_STENCIL_EXT; }
+  bool is_depth() const {
+    return base_format == GL_DEPTH_COMPONENT || base_format == GL_DEPTH_STENCIL_EXT;
+  }
   rec::TexelFormat texel_format() const;
   // Bits of the stored RGBA channels (luminance and intensity replicated into R, G, B (and A)).
   // 0 for channels the base format fills with a constant.

@@ -193,8 +193,8 @@ ImageContents texels_from_framebuffer(Context& ctx, const InternalFormatInfo& in
   }
   FramebufferPixels stencil;
   if (info.stencil != 0 &&
-      read_framebuffer(ctx, rec::PixelKind::kStencil, ctx.raster.ops.read_buffer, x, y,
-                       uint32_t(w), uint32_t(h), stencil) &&
+      read_framebuffer(ctx, rec::PixelKind::kStencil, ctx.raster.ops.read_buffer, x, y, uint32_t(w),
+                       uint32_t(h), stencil) &&
       stencil.stencil.size() == n) {
     for (size_t i = 0; i < n; ++i) contents.stencil[i] = uint8_t(stencil.stencil[i]);
   }
