@@ -23,6 +23,7 @@
 #include "gl_shim/pixels/bitmap_cache.hpp"
 #include "gl_shim/pixels/raster_position.hpp"
 #include "gl_shim/queries/query_objects.hpp"
+#include "gl_shim/render_modes/render_modes.hpp"
 #include "gl_shim/state/attrib_stack.hpp"
 #include "gl_shim/state/color_index_state.hpp"
 #include "gl_shim/state/current_attributes.hpp"
@@ -79,8 +80,9 @@ class Context {
   EvaluatorState evaluators;  // maps and grids (GL 1.5 5.1); their enables are in `enables`
   // Buffer objects of the share group (the constructor shares them with share_list).
   std::shared_ptr<BufferStore> buffers = std::make_shared<BufferStore>();
-  AttribStacks attrib_stacks;  // glPushAttrib / glPushClientAttrib
-  QueryState queries;          // occlusion queries: this context's own, never shared
+  AttribStacks attrib_stacks;   // glPushAttrib / glPushClientAttrib
+  RenderModeState render_mode;  // GL_RENDER, GL_SELECT, GL_FEEDBACK (GL 1.5 5.2, 5.3)
+  QueryState queries;           // occlusion queries: this context's own, never shared
 
   // --- the frame --------------------------------------------------------------------------------
   // The frame being recorded (commands since the record was last executed) and the snapshots of

@@ -239,7 +239,8 @@ void record_array_draw(Context& ctx, GLenum mode, const ArrayVertices& v,
                        ArrayDrawSource source) {
   if (v.position.empty() || ranges.empty()) return;
   const rec::StateId state = ctx.snapshots.capture(ctx, ctx.recorder.record());
-  const uint8_t units = sampled_texture_units(ctx.recorder.record().states[state]);
+  uint8_t units = sampled_texture_units(ctx.recorder.record().states[state]);
+  if (ctx.render_mode.mode == GL_FEEDBACK) units |= 1;  // feedback reports unit 0's coordinates
   const CurrentAttributes& c = ctx.current;
   // Batched draws (display lists) need every attribute per vertex (FrameRecorder::add_primitive).
   const bool per_vertex = source == ArrayDrawSource::kDisplayList;
@@ -268,6 +269,9 @@ void record_array_draw(Context& ctx, GLenum mode, const ArrayVertices& v,
                                                       : rec::PrimitiveSource::kDisplayList;
     d.per_vertex = uint8_t((v.has(ArrayKind::kColor) ? rec::kPerVertexColor : 0) |
                            (v.has(ArrayKind::kSecondaryColor) ? rec::kPerVertexSecondaryColor : 0));
+    if (ctx.render_mode.mode != GL_RENDER)
+      return render_mode_array_draw(ctx, ctx.recorder.record().states[state], d,
+                                    v.has(ArrayKind::kEdgeFlag));
     if (source == ArrayDrawSource::kDisplayList)
       ctx.recorder.add_primitive(state, d);
     else

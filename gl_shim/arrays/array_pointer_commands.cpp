@@ -278,9 +278,11 @@ void glGetPointerv(Context& ctx, GLenum pname, void** params) {
     case GL_TEXTURE_COORD_ARRAY_POINTER:
       value = a.tex_coord(ctx.textures.client_active).pointer;
       break;
-    // Feedback and selection are not implemented: their buffers are never set.
     case GL_FEEDBACK_BUFFER_POINTER:
+      value = ctx.render_mode.feedback.buffer;
+      break;
     case GL_SELECTION_BUFFER_POINTER:
+      value = ctx.render_mode.selection.buffer;
       break;
     default:
       return record_error(ctx, GL_INVALID_ENUM);

@@ -1,8 +1,8 @@
 // glNewList, glEndList, glCallList(s), glGenLists, glDeleteLists, glIsList, glListBase
 // (GL 1.5 spec 5.4). Recording itself is generated (gl_entry_points.cpp).
+#include "gl/gl_enums.h"
 #include "gl_shim/context.hpp"
 #include "gl_shim/dispatch.hpp"
-#include "gl/gl_enums.h"
 #include "gl_shim/gl_impl_decls.hpp"
 
 namespace glpt {
@@ -101,12 +101,16 @@ void glEndList(Context& ctx) {
   ctx.lists.compiling_mode = 0;
 }
 
-void glCallList(Context& ctx, GLuint list) { call_list(ctx, list); }
+void glCallList(Context& ctx, GLuint list) {
+  render_mode_flush_vertices(ctx);  // (Mesa flushes its immediate-mode vertices)
+  call_list(ctx, list);
+}
 
 void glCallLists(Context& ctx, GLsizei n, GLenum type, const void* lists) {
   if (n < 0) return record_error(ctx, GL_INVALID_VALUE);
   if (list_name_size(type) == 0) return record_error(ctx, GL_INVALID_ENUM);
   if (lists == nullptr) return;
+  render_mode_flush_vertices(ctx);
   for (GLsizei i = 0; i < n; ++i)
     call_list(ctx, ctx.lists.list_base + list_name_at(lists, type, i));
 }

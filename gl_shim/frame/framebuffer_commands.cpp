@@ -79,7 +79,7 @@ void glClear(Context& ctx, GLbitfield mask) {
   constexpr GLbitfield kValid =
       GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_ACCUM_BUFFER_BIT;
   if (mask & ~kValid) return record_error(ctx, GL_INVALID_VALUE);
-  if (mask == 0) return;
+  if (mask == 0 || ctx.render_mode.mode != GL_RENDER) return;  // (Mesa clears only in GL_RENDER)
   const FramebufferState& fb = ctx.framebuffer;
   rec::Clear clear;
   clear.state = ctx.snapshots.capture(ctx, ctx.recorder.record());

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 
 #include "gl_shim/gl_types.h"
 #include "rt_core/record/frame_record.hpp"
@@ -18,6 +19,11 @@ struct VertexAssembly {
   // vertices before the first call get the material at glBegin.
   bool per_vertex_material = false;
   std::array<rec::Material, 2> material_at_begin{};
+  // The first glEdgeFlag inside this primitive: how many vertices preceded it, and the current
+  // edge flag before it (selection and feedback draw the vertices before it on their own, as
+  // Mesa's immediate mode does when a new attribute appears inside glBegin/glEnd).
+  std::optional<uint32_t> first_edge_flag_vertex;
+  bool edge_flag_before_first = true;
   rec::VertexData vertices;       // one value per vertex for every recorded attribute
   uint64_t dropped_vertices = 0;  // beyond the per-primitive limit
 };

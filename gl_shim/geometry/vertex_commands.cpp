@@ -94,8 +94,10 @@ void glBegin(Context& ctx, GLenum mode) {
   a.texture_units = 0;
   for (int u = 0; u < rec::kMaxTextureUnits; ++u)
     if (texturing.units[u].target != 0) a.texture_units |= static_cast<uint8_t>(1u << u);
+  if (ctx.render_mode.mode == GL_FEEDBACK) a.texture_units |= 1;  // feedback reports unit 0's
   a.material_at_begin = ctx.lighting.material;
   a.per_vertex_material = false;
+  a.first_edge_flag_vertex.reset();
   a.dropped_vertices = 0;
   reset(a.vertices, mode);
   // Replayed by glCallList: Mesa compiled it into an indexed draw. GL_COMPILE_AND_EXECUTE
@@ -111,6 +113,8 @@ void glEnd(Context& ctx) {
   rec::VertexData& d = a.vertices;
   if (d.position.empty()) return;
   d.primitives.push_back({0, static_cast<uint32_t>(d.position.size())});
+  if (ctx.render_mode.mode != GL_RENDER)
+    return render_mode_assembled_primitive(ctx, a);
   ctx.recorder.add_primitive(a.state, d);
   note_frame_content(ctx);
 }

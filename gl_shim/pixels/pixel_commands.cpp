@@ -150,7 +150,9 @@ void glBitmap(Context& ctx, GLsizei width, GLsizei height, GLfloat xorig, GLfloa
   rec::RasterPosition& rp = ctx.raster_position;
   if (!rp.valid) return;  // nothing drawn, and the raster position does not move (Mesa)
   validate_state(ctx);
-  if (width > 0 && height > 0 && bitmap != nullptr) {
+  if (ctx.render_mode.mode != GL_RENDER) {
+    render_mode_pixel_rectangle(ctx, GL_BITMAP_TOKEN);  // and the raster position still moves
+  } else if (width > 0 && height > 0 && bitmap != nullptr) {
     if (size_t(width) * size_t(height) > kMaxGroups) return record_error(ctx, GL_OUT_OF_MEMORY);
     rec::Bitmap b;
     b.raster = with_mesa_tex_coords(rp, ctx.flushed_tex_coord, true);
@@ -179,6 +181,10 @@ void glDrawPixels(Context& ctx, GLsizei width, GLsizei height, GLenum format, GL
   // Colour indices are drawn through the I_TO_R/G/B/A maps (RGBA mode); their sizes are never 0
   // in GL 1.5, so Mesa's "color index pixels into RGB buffer" error cannot happen.
   if (!drawable_has(drawable, kind)) return record_error(ctx, GL_INVALID_OPERATION);
+  if (ctx.render_mode.mode != GL_RENDER) {
+    if (ctx.raster_position.valid) render_mode_pixel_rectangle(ctx, GL_DRAW_PIXEL_TOKEN);
+    return;
+  }
   if (!ctx.raster_position.valid || width == 0 || height == 0 || pixels == nullptr) return;
   // Images larger than the largest texture are cut to it; rows keep their stride (Mesa's
   // clamp_size).
@@ -238,6 +244,10 @@ void glCopyPixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height,
                           : type == GL_DEPTH_STENCIL_EXT ? PixelClass::kDepthStencil
                                                          : PixelClass::kColor;
   if (!drawable_has(ctx.drawable, kind)) return record_error(ctx, GL_INVALID_OPERATION);
+  if (ctx.render_mode.mode != GL_RENDER) {
+    if (ctx.raster_position.valid) render_mode_pixel_rectangle(ctx, GL_COPY_PIXEL_TOKEN);
+    return;
+  }
   if (!ctx.raster_position.valid || width == 0 || height == 0) return;
   rec::CopyPixels c;
   c.raster = with_mesa_tex_coords(rounded_raster_position(ctx), ctx.flushed_tex_coord, false);
@@ -261,6 +271,7 @@ void glAccum(Context& ctx, GLenum op, GLfloat value) {
   if (op != GL_ACCUM && op != GL_LOAD && op != GL_RETURN && op != GL_MULT && op != GL_ADD)
     return record_error(ctx, GL_INVALID_ENUM);
   if (ctx.drawable.accum_bits == 0) return record_error(ctx, GL_INVALID_OPERATION);
+  if (ctx.render_mode.mode != GL_RENDER) return;  // selection and feedback touch no buffer
   rec::Accum a;
   a.op = op;
   a.value = value;

@@ -278,33 +278,36 @@ void get_material(Context& ctx, GLenum face, GLenum pname, T* out) {
 
 }  // namespace
 
+rec::Material with_color_material(rec::Material m, const rec::LightingState& l, int side,
+                                  const glm::vec4& color) {
+  if (!l.color_material) return m;
+  const bool tracked =
+      side == 0 ? l.color_material_face != GL_BACK : l.color_material_face != GL_FRONT;
+  if (!tracked) return m;
+  switch (l.color_material_mode) {
+    case GL_EMISSION:
+      m.emission = color;
+      break;
+    case GL_AMBIENT:
+      m.ambient = color;
+      break;
+    case GL_DIFFUSE:
+      m.diffuse = color;
+      break;
+    case GL_SPECULAR:
+      m.specular = color;
+      break;
+    default:  // GL_AMBIENT_AND_DIFFUSE
+      m.ambient = m.diffuse = color;
+      break;
+  }
+  return m;
+}
+
 void apply_color_material(Context& ctx) {
   rec::LightingState& l = ctx.lighting;
-  if (!l.color_material) return;
-  const glm::vec4 c = ctx.current.color;
-  for (int side = 0; side < 2; ++side) {
-    const bool tracked =
-        side == 0 ? l.color_material_face != GL_BACK : l.color_material_face != GL_FRONT;
-    if (!tracked) continue;
-    rec::Material& m = l.material[side];
-    switch (l.color_material_mode) {
-      case GL_EMISSION:
-        m.emission = c;
-        break;
-      case GL_AMBIENT:
-        m.ambient = c;
-        break;
-      case GL_DIFFUSE:
-        m.diffuse = c;
-        break;
-      case GL_SPECULAR:
-        m.specular = c;
-        break;
-      default:  // GL_AMBIENT_AND_DIFFUSE
-        m.ambient = m.diffuse = c;
-        break;
-    }
-  }
+  for (int side = 0; side < 2; ++side)
+    l.material[side] = with_color_material(l.material[side], l, side, ctx.current.color);
 }
 
 namespace impl {

@@ -78,9 +78,6 @@ bool lookup(const Context& ctx, GLenum pname, Value* out) {
     case GL_MAX_CLIENT_ATTRIB_STACK_DEPTH:
       *out = ints({double(kMaxClientAttribStackDepth)});
       return true;
-    case GL_MAX_NAME_STACK_DEPTH:
-      *out = ints({64});
-      return true;
     case GL_MAX_EVAL_ORDER:
       *out = ints({30});
       return true;
@@ -266,6 +263,7 @@ bool lookup(const Context& ctx, GLenum pname, Value* out) {
   if (lookup_fixed_function_state(ctx, pname, out)) return true;
   if (lookup_array_state(ctx, pname, out)) return true;
   if (lookup_texture_and_pixel_state(ctx, pname, out)) return true;
+  if (lookup_render_mode_state(ctx, pname, out)) return true;
   if (lookup_evaluator_state(ctx, pname, out)) return true;
   if (auto on = capability_enabled(const_cast<Context&>(ctx), pname)) {
     *out = boolean(*on);

@@ -80,6 +80,10 @@ bool lookup_array_state(const Context& ctx, GLenum pname, query::Value* out);
 // zoom (gl_shim/textures/texture_queries.cpp). False if `pname` is none of those.
 bool lookup_texture_and_pixel_state(const Context& ctx, GLenum pname, query::Value* out);
 
+// Render mode, name stack, selection and feedback buffers (GL 1.5 table 6.31;
+// gl_shim/render_modes/render_mode_commands.cpp). False if `pname` is none of those.
+bool lookup_render_mode_state(const Context& ctx, GLenum pname, query::Value* out);
+
 // The evaluator grids of GL 1.5 table 6.25 (gl_shim/evaluators/evaluator_commands.cpp). False if
 // `pname` is none of those.
 bool lookup_evaluator_state(const Context& ctx, GLenum pname, query::Value* out);

@@ -78,12 +78,12 @@ void emit_batch(uint32_t mode, uint32_t n, const Element& element, AssemblyPath 
   // Structural edges of the GL primitive AND the edge flag of the vertex each edge starts at.
   // Mesa applies the flags to every polygon mode, strips and fans included (GL 1.5 2.6.2 says
   // they are ignored there; Mesa's draw module keeps each vertex's flag whatever the mode).
-  auto triangle = [&](uint32_t a, uint32_t b, uint32_t c, uint8_t structural) {
+  auto triangle = [&](uint32_t a, uint32_t b, uint32_t c, uint8_t structural, bool reset = true) {
     uint8_t edges = structural;
     if ((edges & kEdge0) && !edge_flag(a)) edges &= ~kEdge0;
     if ((edges & kEdge1) && !edge_flag(b)) edges &= ~kEdge1;
     if ((edges & kEdge2) && !edge_flag(c)) edges &= ~kEdge2;
-    out.triangles.push_back({{a, b, c}, edges});
+    out.triangles.push_back({{a, b, c}, edges, reset});
   };
   switch (mode) {
     case GL_POINTS:
@@ -123,10 +123,10 @@ void emit_batch(uint32_t mode, uint32_t n, const Element& element, AssemblyPath 
         const uint32_t a = element(i), b = element(i + 1), c = element(i + 2), d = element(i + 3);
         if (diagonal_02) {
           triangle(a, b, c, kEdge0 | kEdge1);
-          triangle(a, c, d, kEdge1 | kEdge2);
+          triangle(a, c, d, kEdge1 | kEdge2, false);
         } else {
           triangle(a, b, d, kEdge0 | kEdge2);
-          triangle(b, c, d, kEdge0 | kEdge1);
+          triangle(b, c, d, kEdge0 | kEdge1, false);
         }
       }
       break;
@@ -138,9 +138,9 @@ void emit_batch(uint32_t mode, uint32_t n, const Element& element, AssemblyPath 
         const uint32_t a = element(i), b = element(i + 1), c = element(i + 2), d = element(i + 3);
         if (path == AssemblyPath::kPipeline) {
           triangle(c, a, d, kEdge0 | kEdge2);
-          triangle(a, b, d, kEdge0 | kEdge1);
+          triangle(a, b, d, kEdge0 | kEdge1, false);
         } else {
-          triangle(a, b, d, kEdge0 | kEdge1);
+          triangle(a, b, d, kEdge0 | kEdge1, false);
           triangle(c, a, d, kEdge0 | kEdge2);
         }
       }
@@ -150,7 +150,7 @@ void emit_batch(uint32_t mode, uint32_t n, const Element& element, AssemblyPath 
         uint8_t structural = kEdge0;
         if (i == 0) structural |= kEdge2;
         if (i + 3 == n) structural |= kEdge1;
-        triangle(element(i + 1), element(i + 2), element(0), structural);
+        triangle(element(i + 1), element(i + 2), element(0), structural, i == 0);
       }
       break;
     default:

@@ -59,6 +59,10 @@ struct DecomposedTriangle {
   // GL 1.5 2.6.2 applies edge flags to independent triangles, quads and polygons only; Mesa's
   // draw module keeps every vertex's flag, so they apply to strips and fans too (measured).
   uint8_t boundary_edges;
+  // The draw module flags the triangle DRAW_PIPE_RESET_STIPPLE: every triangle of independent
+  // triangles, strips and fans, the first of each quad, the first of a polygon. (Its unfilled
+  // stage restarts the line stipple there; GL_FEEDBACK reports a GL_LINE_RESET_TOKEN.)
+  bool reset_stipple = false;
 };
 
 struct DecomposedLine {

@@ -7,15 +7,31 @@
 #include <cstdlib>
 #include <string>
 
-#include "gl_shim/context.hpp"
-#include "gl_shim/gl_entry_decls.h"
 #include "gl/gl_enums.h"
+#include "gl_shim/context.hpp"
+#include "gl_shim/frame/headless_target.hpp"
+#include "gl_shim/gl_entry_decls.h"
 
 class GlTest : public ::testing::Test {
  protected:
   void SetUp() override { glpt::set_current_context(&ctx_); }
   void TearDown() override { glpt::set_current_context(nullptr); }
   glpt::Context ctx_{nullptr};
+};
+
+// GlTest on a headless drawable of the given size (frames can end; the drawable size shows).
+class HeadlessGlTest : public GlTest {
+ protected:
+  HeadlessGlTest(uint32_t width, uint32_t height) : target_(width, height) {}
+  void SetUp() override {
+    GlTest::SetUp();
+    glpt::make_current_headless(ctx_, target_);
+  }
+  void TearDown() override {
+    ctx_.target = nullptr;
+    GlTest::TearDown();
+  }
+  glpt::HeadlessTarget target_;
 };
 
 namespace glpt_test {

@@ -196,16 +196,9 @@ TEST_F(QueryObjectTest, ResultsSaturateToTheTypeAsked) {
 
 // ---- what the frame record gets (a drawable, raster mode) ---------------------------------
 
-class QueryRecordTest : public GlTest {
+class QueryRecordTest : public HeadlessGlTest {
  protected:
-  void SetUp() override {
-    GlTest::SetUp();
-    glpt::make_current_headless(ctx_, target_);
-  }
-  void TearDown() override {
-    ctx_.target = nullptr;
-    GlTest::TearDown();
-  }
+  QueryRecordTest() : HeadlessGlTest(8, 8) {}
   template <typename T>
   std::vector<size_t> positions() const {
     std::vector<size_t> at;
@@ -222,7 +215,6 @@ class QueryRecordTest : public GlTest {
     glEnd();
   }
   glpt_test::RasterMode raster_mode_;
-  glpt::HeadlessTarget target_{8, 8};
 };
 
 TEST_F(QueryRecordTest, BeginAndEndAreRecordedInOrderAndEndBatches) {
