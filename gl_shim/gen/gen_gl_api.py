@@ -78,6 +78,7 @@ GL_ENUM_ONLY_EXTENSIONS = [
     "GL_EXT_texture_lod_bias", "GL_ARB_texture_border_clamp", "GL_ARB_texture_mirrored_repeat",
     "GL_NV_texgen_reflection", "GL_EXT_stencil_wrap", "GL_ARB_depth_texture",
     "GL_ARB_texture_rectangle", "GL_EXT_texture_env_dot3", "GL_ARB_texture_env_dot3",
+    "GL_EXT_packed_depth_stencil",
 ]
 
 # What glGetString(GL_EXTENSIONS) advertises: the extensions GL 1.1-1.5 made core (programs of
@@ -96,7 +97,8 @@ ADVERTISED_GL_EXTENSIONS = [
     "GL_EXT_bgra", "GL_EXT_blend_color", "GL_EXT_blend_func_separate", "GL_EXT_blend_logic_op",
     "GL_EXT_blend_minmax", "GL_EXT_blend_subtract", "GL_EXT_compiled_vertex_array",
     "GL_EXT_copy_texture", "GL_EXT_draw_range_elements", "GL_EXT_fog_coord",
-    "GL_EXT_multi_draw_arrays", "GL_EXT_packed_pixels", "GL_EXT_point_parameters",
+    "GL_EXT_multi_draw_arrays", "GL_EXT_packed_depth_stencil", "GL_EXT_packed_pixels",
+    "GL_EXT_point_parameters",
     "GL_EXT_rescale_normal", "GL_EXT_secondary_color", "GL_EXT_separate_specular_color",
     "GL_EXT_shadow_funcs", "GL_EXT_stencil_wrap", "GL_EXT_subtexture", "GL_EXT_texture",
     "GL_EXT_texture3D", "GL_EXT_texture_env_add", "GL_EXT_texture_env_combine",

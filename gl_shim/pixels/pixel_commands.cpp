@@ -100,6 +100,46 @@ std::vector<glm::vec4> mesa_transfer_colors(const std::vector<glm::vec4>& image,
   return out;
 }
 
+// GL_DEPTH_STENCIL pixel rectangles (EXT_packed_depth_stencil) as Mesa's state tracker draws
+// them (st_cb_drawpixels.c, draw_textured_quad with write_depth and write_stencil): the depth
+// test always passes and writes depth under the depth write mask, the stencil index replaces the
+// stencil buffer's under the stencil write mask, and nothing else of the fragment pipeline
+// applies but the scissor (no colour is written). glpt records that as a stencil rectangle (which
+// only writes stencil) and a depth rectangle whose state is the live one with the depth test
+// forced to GL_ALWAYS and colour, alpha test, stencil test and blending off; the two write
+// different buffers, so their order does not matter. (Under an occlusion query the fragments are
+// counted twice, where Mesa counts its one quad once.)
+template <typename Command>
+void record_depth_stencil(Context& ctx, Command stencil, Command depth) {
+  record(ctx, std::move(stencil));
+  const rec::FragmentOpsState live = ctx.raster.ops;
+  struct Restore {
+    Context& ctx;
+    const rec::FragmentOpsState& ops;
+    ~Restore() { ctx.raster.ops = ops; }
+  } restore{ctx, live};
+  rec::FragmentOpsState& ops = ctx.raster.ops;
+  ops.depth_test = true;
+  ops.depth_func = GL_ALWAYS;
+  ops.stencil_test = ops.alpha_test = ops.blend = ops.color_logic_op = false;
+  ops.color_write = {false, false, false, false};
+  record(ctx, std::move(depth));
+}
+
+// A drawable has what a pixel rectangle of `kind` writes or reads.
+bool drawable_has(const rec::DrawableConfig& drawable, PixelClass kind) {
+  switch (kind) {
+    case PixelClass::kStencilIndex:
+      return drawable.stencil_bits != 0;
+    case PixelClass::kDepth:
+      return drawable.depth_bits != 0;
+    case PixelClass::kDepthStencil:
+      return drawable.depth_bits != 0 && drawable.stencil_bits != 0;
+    default:
+      return true;
+  }
+}
+
 }  // namespace
 
 namespace impl {
@@ -140,9 +180,7 @@ void glDrawPixels(Context& ctx, GLsizei width, GLsizei height, GLenum format, GL
   const rec::DrawableConfig& drawable = ctx.drawable;
   // Colour indices are drawn through the I_TO_R/G/B/A maps (RGBA mode); their sizes are never 0
   // in GL 1.5, so Mesa's "color index pixels into RGB buffer" error cannot happen.
-  if ((kind == PixelClass::kStencilIndex && drawable.stencil_bits == 0) ||
-      (kind == PixelClass::kDepth && drawable.depth_bits == 0))
-    return record_error(ctx, GL_INVALID_OPERATION);
+  if (!drawable_has(drawable, kind)) return record_error(ctx, GL_INVALID_OPERATION);
   if (ctx.render_mode.mode != GL_RENDER) {
     if (ctx.raster_position.valid) render_mode_pixel_rectangle(ctx, GL_DRAW_PIXEL_TOKEN);
     return;
@@ -161,6 +199,21 @@ void glDrawPixels(Context& ctx, GLsizei width, GLsizei height, GLenum format, GL
   d.height = static_cast<uint32_t>(shape.height);
   const UnpackSource source{modes, shape, false, pixels};
   or_out_of_memory(ctx, [&] {
+    d.raster = with_mesa_tex_coords(rounded_raster_position(ctx), ctx.current.tex_coord, false);
+    if (kind == PixelClass::kDepthStencil) {
+      // Mesa stores the image as a Z24S8 texture as it is (measured: no depth scale or bias, no
+      // stencil shift, offset or map) and its shader samples depth as float(z) * (1.0f /
+      // 0xFFFFFF) (gallivm), which the depth buffer stores as z again.
+      rec::DrawPixels stencil = d;
+      stencil.kind = rec::PixelKind::kStencil;
+      stencil.stencil = unpack_indices_raw(source);
+      d.kind = rec::PixelKind::kDepth;
+      const std::vector<uint32_t> words = unpack_depth_stencil_words(source);
+      d.depth.resize(words.size());
+      for (size_t i = 0; i < words.size(); ++i)
+        d.depth[i] = float(words[i] >> 8) * (1.0f / float(0xFFFFFF));
+      return record_depth_stencil(ctx, std::move(stencil), std::move(d));
+    }
     if (kind == PixelClass::kDepth) {
       d.kind = rec::PixelKind::kDepth;
       d.depth = unpack_depth(source, ctx.pixel_transfer);
@@ -177,20 +230,20 @@ void glDrawPixels(Context& ctx, GLsizei width, GLsizei height, GLenum format, GL
       d.color = mesa_transfer_colors(unpack_color_raw(source), shape.width, shape.height,
                                      ctx.pixel_transfer);
     }
-    d.raster = with_mesa_tex_coords(rounded_raster_position(ctx), ctx.current.tex_coord, false);
     record(ctx, std::move(d));
   });
 }
 
 void glCopyPixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height, GLenum type) {
   if (width < 0 || height < 0) return record_error(ctx, GL_INVALID_VALUE);
-  if (type != GL_COLOR && type != GL_DEPTH && type != GL_STENCIL)
+  if (type != GL_COLOR && type != GL_DEPTH && type != GL_STENCIL && type != GL_DEPTH_STENCIL_EXT)
     return record_error(ctx, GL_INVALID_ENUM);
   validate_state(ctx);
-  const rec::DrawableConfig& drawable = ctx.drawable;
-  if ((type == GL_DEPTH && drawable.depth_bits == 0) ||
-      (type == GL_STENCIL && drawable.stencil_bits == 0))
-    return record_error(ctx, GL_INVALID_OPERATION);
+  const PixelClass kind = type == GL_DEPTH               ? PixelClass::kDepth
+                          : type == GL_STENCIL           ? PixelClass::kStencilIndex
+                          : type == GL_DEPTH_STENCIL_EXT ? PixelClass::kDepthStencil
+                                                         : PixelClass::kColor;
+  if (!drawable_has(ctx.drawable, kind)) return record_error(ctx, GL_INVALID_OPERATION);
   if (ctx.render_mode.mode != GL_RENDER) {
     if (ctx.raster_position.valid) render_mode_pixel_rectangle(ctx, GL_COPY_PIXEL_TOKEN);
     return;
@@ -205,6 +258,12 @@ void glCopyPixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height,
   c.y = y;
   c.width = static_cast<uint32_t>(std::min(width, kMaxImageSide));
   c.height = static_cast<uint32_t>(std::min(height, kMaxImageSide));
+  if (type == GL_DEPTH_STENCIL_EXT) {  // Mesa copies both through one depth-stencil quad
+    rec::CopyPixels stencil = c;
+    stencil.kind = rec::PixelKind::kStencil;
+    c.kind = rec::PixelKind::kDepth;
+    return record_depth_stencil(ctx, stencil, c);
+  }
   record(ctx, c);
 }
 

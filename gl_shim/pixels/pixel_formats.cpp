@@ -12,6 +12,8 @@ PixelClass pixel_class(GLenum format) {
       return PixelClass::kStencilIndex;
     case GL_DEPTH_COMPONENT:
       return PixelClass::kDepth;
+    case GL_DEPTH_STENCIL_EXT:
+      return PixelClass::kDepthStencil;
     case GL_RED:
     case GL_GREEN:
     case GL_BLUE:
@@ -34,6 +36,7 @@ int format_components(GLenum format) {
     case GL_COLOR_INDEX:
     case GL_STENCIL_INDEX:
     case GL_DEPTH_COMPONENT:
+    case GL_DEPTH_STENCIL_EXT:  // one packed GL_UNSIGNED_INT_24_8_EXT word
     case GL_RED:
     case GL_GREEN:
     case GL_BLUE:
@@ -136,6 +139,7 @@ int type_bytes(GLenum type) {
     case GL_UNSIGNED_INT_8_8_8_8_REV:
     case GL_UNSIGNED_INT_10_10_10_2:
     case GL_UNSIGNED_INT_2_10_10_10_REV:
+    case GL_UNSIGNED_INT_24_8_EXT:
       return 4;
     default:
       return 0;
@@ -230,6 +234,9 @@ bool later_format_known_to_mesa(GLenum format) {
 GLenum check_format_and_type(GLenum format, GLenum type) {
   const bool known = pixel_class(format) != PixelClass::kInvalid;
   if (!known && !later_format_known_to_mesa(format)) return GL_INVALID_ENUM;
+  if (format == GL_DEPTH_STENCIL_EXT)
+    return type == GL_UNSIGNED_INT_24_8_EXT ? GL_NO_ERROR : GL_INVALID_ENUM;
+  if (type == GL_UNSIGNED_INT_24_8_EXT) return GL_INVALID_OPERATION;
   if (type == GL_BITMAP) {
     return format == GL_COLOR_INDEX || format == GL_STENCIL_INDEX ? GL_NO_ERROR : GL_INVALID_ENUM;
   }

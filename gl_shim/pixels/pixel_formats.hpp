@@ -10,7 +10,16 @@
 namespace glpt {
 
 // What the groups of a format are (GL 1.5 table 3.8, "target buffer").
-enum class PixelClass : uint8_t { kInvalid, kColor, kColorIndex, kStencilIndex, kDepth };
+// kDepthStencil: GL_DEPTH_STENCIL_EXT (EXT_packed_depth_stencil), whose only type is
+// GL_UNSIGNED_INT_24_8_EXT: 24 bits of depth above 8 bits of stencil index in one 32-bit word.
+enum class PixelClass : uint8_t {
+  kInvalid,
+  kColor,
+  kColorIndex,
+  kStencilIndex,
+  kDepth,
+  kDepthStencil
+};
 
 PixelClass pixel_class(GLenum format);
 
@@ -61,6 +70,10 @@ ColorSourceLayout color_source_layout(GLenum format, GLenum type);
 // GL_NO_ERROR, or the error GL (and Mesa) report for this format/type pair: an unknown format or
 // type, or GL_BITMAP with a format other than COLOR_INDEX / STENCIL_INDEX, is GL_INVALID_ENUM; a
 // packed type whose component count does not match the format's is GL_INVALID_OPERATION.
+// EXT_packed_depth_stencil as Mesa checks it (_mesa_error_check_format_and_type):
+// GL_DEPTH_STENCIL_EXT with any type but GL_UNSIGNED_INT_24_8_EXT is GL_INVALID_ENUM,
+// GL_UNSIGNED_INT_24_8_EXT with another known format GL_INVALID_OPERATION (measured with OSMesa: an
+// unknown format is GL_INVALID_ENUM first).
 GLenum check_format_and_type(GLenum format, GLenum type);
 
 }  // namespace glpt

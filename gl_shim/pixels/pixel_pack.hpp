@@ -39,6 +39,7 @@ void pack_depth(const PackTarget& dst, const std::vector<float>& depth);
 
 // STENCIL_INDEX / COLOR_INDEX: integer values masked to the type's bits (signed types keep the
 // bits below the sign, as Mesa does), floats as they are, GL_BITMAP as the low bit.
+// DEPTH_STENCIL / GL_UNSIGNED_INT_24_8_EXT: the packed words as they are.
 void pack_indices(const PackTarget& dst, const std::vector<uint32_t>& values);
 
 // A bitmap of width * height bytes (non-zero = set) packed as GL_COLOR_INDEX / GL_BITMAP.

@@ -55,6 +55,8 @@ float normalized_element(uint32_t bits, GLenum type) {
       std::memcpy(&f, &bits, 4);
       return f;
     }
+    case GL_UNSIGNED_INT_24_8_EXT:  // the depth bits, as _mesa_unpack_depth_span converts them
+      return float(bits >> 8) * (1.0f / float(0xFFFFFF));
     default:
       return 0.0f;
   }
@@ -73,6 +75,8 @@ uint32_t index_element(uint32_t bits, GLenum type) {
       if (!std::isfinite(f) || std::fabs(f) >= 9.0e18f) return 0;
       return uint32_t(uint64_t(int64_t(f)));
     }
+    case GL_UNSIGNED_INT_24_8_EXT:  // the stencil bits
+      return bits & 0xFFu;
     default:  // unsigned types and GL_INT: the bits themselves
       return bits;
   }
@@ -147,35 +151,46 @@ std::vector<glm::uvec4> unpack_color_integers(const UnpackSource& src) {
   });
 }
 
-std::vector<uint32_t> unpack_indices_raw(const UnpackSource& src) {
+namespace {
+
+// One value per group of a single-element format: convert(element bits, x), the bits loaded with
+// GL_UNPACK_SWAP_BYTES applied (bitmaps: the byte holding the group).
+template <typename Value, typename Convert>
+std::vector<Value> unpack_single_elements(const UnpackSource& src, Convert&& convert) {
   const ClientImageLayout layout(src.modes, src.shape, src.three_d);
-  std::vector<uint32_t> out(src.shape.groups(), 0u);
+  std::vector<Value> out(src.shape.groups(), Value{});
   if (src.data == nullptr || out.empty()) return out;
   const auto* base = static_cast<const uint8_t*>(src.data);
-  const GLenum type = src.shape.type;
-  const int element_bytes = type_bytes(type);
+  const int element_bytes = src.shape.type == GL_BITMAP ? 1 : type_bytes(src.shape.type);
   const bool swap = layout.swap_bytes();
   for_each_group(layout, src.shape, [&](size_t i, size_t offset, int32_t x) {
-    const uint8_t* p = base + offset;
-    out[i] = type == GL_BITMAP ? ((*p & layout.bit_mask(x)) != 0 ? 1u : 0u)
-                               : index_element(load_bits(p, element_bytes, swap), type);
+    out[i] = convert(load_bits(base + offset, element_bytes, swap), x, layout);
   });
   return out;
 }
 
-std::vector<float> unpack_depth_raw(const UnpackSource& src) {
-  const ClientImageLayout layout(src.modes, src.shape, src.three_d);
-  std::vector<float> out(src.shape.groups(), 0.0f);
-  if (src.data == nullptr || out.empty()) return out;
-  const auto* base = static_cast<const uint8_t*>(src.data);
+}  // namespace
+
+std::vector<uint32_t> unpack_indices_raw(const UnpackSource& src) {
   const GLenum type = src.shape.type;
-  const int element_bytes = type_bytes(type);
-  const bool swap = layout.swap_bytes();
-  for_each_group(layout, src.shape, [&](size_t i, size_t offset, int32_t) {
-    const uint8_t* p = base + offset;
-    out[i] = normalized_element(load_bits(p, element_bytes, swap), type);
-  });
-  return out;
+  return unpack_single_elements<uint32_t>(
+      src, [type](uint32_t bits, int32_t x, const ClientImageLayout& layout) {
+        if (type == GL_BITMAP) return (bits & layout.bit_mask(x)) != 0 ? 1u : 0u;
+        return index_element(bits, type);
+      });
+}
+
+std::vector<float> unpack_depth_raw(const UnpackSource& src) {
+  const GLenum type = src.shape.type;
+  return unpack_single_elements<float>(src,
+                                       [type](uint32_t bits, int32_t, const ClientImageLayout&) {
+                                         return normalized_element(bits, type);
+                                       });
+}
+
+std::vector<uint32_t> unpack_depth_stencil_words(const UnpackSource& src) {
+  return unpack_single_elements<uint32_t>(
+      src, [](uint32_t bits, int32_t, const ClientImageLayout&) { return bits; });
 }
 
 std::vector<glm::vec4> unpack_color(const UnpackSource& src,

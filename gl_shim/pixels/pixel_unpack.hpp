@@ -43,8 +43,11 @@ std::vector<glm::uvec4> unpack_color_integers(const UnpackSource& src);
 // taken modulo 2^32, as Mesa extracts them; GL_BITMAP groups are 0 or 1.
 std::vector<uint32_t> unpack_indices_raw(const UnpackSource& src);
 
-// DEPTH_COMPONENT: floats, integer types normalized as for colours.
+// DEPTH_COMPONENT: floats, integer types normalized as for colours. DEPTH_STENCIL
+// (GL_UNSIGNED_INT_24_8_EXT): the depth bits d as the float d * (1.0f / 0xFFFFFF) (Mesa), while
+// unpack_indices_raw gives its stencil bits; unpack_depth_stencil_words gives the words themselves.
 std::vector<float> unpack_depth_raw(const UnpackSource& src);
+std::vector<uint32_t> unpack_depth_stencil_words(const UnpackSource& src);
 
 // ---- through pixel transfer ----------------------------------------------------------------
 

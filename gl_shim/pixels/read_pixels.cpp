@@ -1,4 +1,6 @@
 // glReadPixels (GL 1.5 4.3.2): the framebuffer through read_framebuffer, pixel transfer and pack.
+#include <cmath>
+
 #include "gl/gl_enums.h"
 #include "gl_shim/context.hpp"
 #include "gl_shim/dispatch.hpp"
@@ -9,7 +11,43 @@
 #include "gl_shim/pixels/pixel_transfer.hpp"
 #include "gl_shim/state/out_of_memory.hpp"
 
-namespace glpt::impl {
+namespace glpt {
+namespace {
+
+// GL_DEPTH_STENCIL / GL_UNSIGNED_INT_24_8 (EXT_packed_depth_stencil) as Mesa's
+// read_depth_stencil_pixels: without depth scale/bias, stencil transfer or byte swapping it copies
+// the Z24S8 words; otherwise depth goes through floats (z = the truncated float product of the
+// transferred depth and 0xFFFFFF) and stencil through shift, offset and map.
+void read_depth_stencil(Context& ctx, GLint x, GLint y, const PackTarget& dst) {
+  const uint32_t w = uint32_t(dst.shape.width), h = uint32_t(dst.shape.height);
+  FramebufferPixels depth, stencil;
+  const GLenum buffer = ctx.raster.ops.read_buffer;
+  if (!read_framebuffer(ctx, rec::PixelKind::kDepth, buffer, x, y, w, h, depth) ||
+      !read_framebuffer(ctx, rec::PixelKind::kStencil, buffer, x, y, w, h, stencil))
+    return;
+  const size_t n = dst.shape.groups();
+  if (depth.depth.size() != n || stencil.stencil.size() != n) return;
+  const rec::PixelTransferState& t = ctx.pixel_transfer;
+  const bool exact = t.depth_scale == 1.0f && t.depth_bias == 0.0f && t.index_shift == 0 &&
+                     t.index_offset == 0 && !t.map_stencil && !dst.modes.swap_bytes;
+  if (!exact) {
+    transfer_depth(t, depth.depth);
+    transfer_stencil(t, stencil.stencil);
+  }
+  std::vector<uint32_t> words(n);
+  for (size_t i = 0; i < n; ++i) {
+    const uint32_t z = exact ? uint32_t(std::nearbyint(double(depth.depth[i]) * 16777215.0))
+                             : uint32_t(depth.depth[i] * float(0xFFFFFF));
+    words[i] = z << 8 | (stencil.stencil[i] & 0xFFu);
+  }
+  const PackTarget target{dst.modes, dst.shape, false, dst.data,
+                          depth.inside.size() == n ? depth.inside.data() : nullptr};
+  pack_indices(target, words);
+}
+
+}  // namespace
+
+namespace impl {
 
 void glReadPixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height, GLenum format,
                   GLenum type, void* pixels) {
@@ -19,9 +57,12 @@ void glReadPixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height,
   const PixelClass kind_of_format = pixel_class(format);
   // glpt's contexts are RGBA: colour indices cannot be read (GL 1.5 4.3.2), nor can depth or
   // stencil values of a drawable without those buffers.
-  if (kind_of_format == PixelClass::kColorIndex ||
-      (kind_of_format == PixelClass::kDepth && ctx.drawable.depth_bits == 0) ||
-      (kind_of_format == PixelClass::kStencilIndex && ctx.drawable.stencil_bits == 0))
+  const bool depth =
+      kind_of_format == PixelClass::kDepth || kind_of_format == PixelClass::kDepthStencil;
+  const bool stencil =
+      kind_of_format == PixelClass::kStencilIndex || kind_of_format == PixelClass::kDepthStencil;
+  if (kind_of_format == PixelClass::kColorIndex || (depth && ctx.drawable.depth_bits == 0) ||
+      (stencil && ctx.drawable.stencil_bits == 0))
     return record_error(ctx, GL_INVALID_OPERATION);
   const ImageShape shape{width, height, 1, format, type};
   if (shape.groups() > kMaxPixelGroups) return record_error(ctx, GL_OUT_OF_MEMORY);
@@ -29,6 +70,12 @@ void glReadPixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height,
   if (!layout.valid()) return record_error(ctx, GL_INVALID_VALUE);
   // Without a pixel pack buffer (GL 2.1) a null pointer has nowhere to go: nothing is read.
   if (shape.groups() == 0 || pixels == nullptr) return;
+  if (kind_of_format == PixelClass::kDepthStencil) {
+    return or_out_of_memory(ctx, [&] {
+      read_depth_stencil(ctx, x, y,
+                         PackTarget{ctx.framebuffer.pack, shape, false, pixels, nullptr});
+    });
+  }
 
   const rec::PixelKind kind = kind_of_format == PixelClass::kDepth ? rec::PixelKind::kDepth
                               : kind_of_format == PixelClass::kStencilIndex
@@ -58,4 +105,5 @@ void glReadPixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height,
   });
 }
 
-}  // namespace glpt::impl
+}  // namespace impl
+}  // namespace glpt

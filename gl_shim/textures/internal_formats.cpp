@@ -27,6 +27,9 @@ constexpr InternalFormatInfo RGBA(uint8_t r, uint8_t g, uint8_t b, uint8_t a) {
   return {GL_RGBA, r, g, b, a, 0, 0, 0, 0};
 }
 constexpr InternalFormatInfo D(uint8_t d) { return {GL_DEPTH_COMPONENT, 0, 0, 0, 0, 0, 0, d, 0}; }
+// EXT_packed_depth_stencil: Mesa stores both GL_DEPTH_STENCIL_EXT and GL_DEPTH24_STENCIL8_EXT as
+// Z24S8.
+constexpr InternalFormatInfo DS() { return {GL_DEPTH_STENCIL_EXT, 0, 0, 0, 0, 0, 0, 24, 0, 8}; }
 // A generic compressed format stored uncompressed, reported as `base`.
 constexpr InternalFormatInfo reported_as(InternalFormatInfo info, GLint base) {
   info.reported = base;
@@ -87,6 +90,8 @@ constexpr Entry kEntries[] = {
     {GL_DEPTH_COMPONENT16, D(16)},
     {GL_DEPTH_COMPONENT24, D(24)},
     {GL_DEPTH_COMPONENT32, D(32)},
+    {GL_DEPTH_STENCIL_EXT, DS()},
+    {GL_DEPTH24_STENCIL8_EXT, DS()},
     {GL_COMPRESSED_ALPHA, reported_as(A(8), GL_ALPHA)},
     {GL_COMPRESSED_LUMINANCE, reported_as(L(8), GL_LUMINANCE)},
     {GL_COMPRESSED_LUMINANCE_ALPHA, reported_as(LA(8, 8), GL_LUMINANCE_ALPHA)},
@@ -165,7 +170,7 @@ const InternalFormatInfo* internal_format_info(GLint internal_format) {
 }
 
 rec::TexelFormat InternalFormatInfo::texel_format() const {
-  if (base_format == GL_DEPTH_COMPONENT) return rec::TexelFormat::kDepth32f;
+  if (is_depth()) return rec::TexelFormat::kDepth32f;
   const uint8_t widest = std::max({red, green, blue, alpha, luminance, intensity});
   return widest > 8 ? rec::TexelFormat::kRgba16 : rec::TexelFormat::kRgba8;
 }
@@ -181,6 +186,7 @@ uint8_t InternalFormatInfo::channel_bits(int channel) const {
     case GL_ALPHA:
       return channel == 3 ? alpha : 0;
     case GL_DEPTH_COMPONENT:
+    case GL_DEPTH_STENCIL_EXT:
       return channel == 0 ? depth : 0;
     default: {
       const uint8_t bits[4] = {red, green, blue, alpha};

@@ -11,7 +11,8 @@
 namespace glpt {
 
 struct InternalFormatInfo {
-  // GL_ALPHA, GL_LUMINANCE, GL_LUMINANCE_ALPHA, GL_INTENSITY, GL_RGB, GL_RGBA, GL_DEPTH_COMPONENT.
+  // GL_ALPHA, GL_LUMINANCE, GL_LUMINANCE_ALPHA, GL_INTENSITY, GL_RGB, GL_RGBA, GL_DEPTH_COMPONENT,
+  // GL_DEPTH_STENCIL_EXT (EXT_packed_depth_stencil).
   GLenum base_format = 0;
   // Bits per component as Mesa chooses them (0: the base format has no such component).
   uint8_t red = 0, green = 0, blue = 0, alpha = 0, luminance = 0, intensity = 0, depth = 0;
@@ -19,7 +20,13 @@ struct InternalFormatInfo {
   // compressed formats, which glpt (like Mesa for GL_COMPRESSED_ALPHA/INTENSITY) stores
   // uncompressed and reports as their base format.
   GLint reported = 0;
+  uint8_t stencil = 0;  // GL_DEPTH_STENCIL_EXT: the stencil index's bits
 
+  // GL_DEPTH_COMPONENT or GL_DEPTH_STENCIL_EXT: texels are depth values (the stencil indices of
+  // depth-stencil images are kept beside them, rec::TextureImage::stencil).
+  bool is_depth() const {
+    return base_format == GL_DEPTH_COMPONENT || base_format == GL_DEPTH_STENCIL_EXT;
+  }
   rec::TexelFormat texel_format() const;
   // Bits of the stored RGBA channels (luminance and intensity replicated into R, G, B (and A)).
   // 0 for channels the base format fills with a constant.

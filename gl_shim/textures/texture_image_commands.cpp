@@ -5,6 +5,7 @@
 // ARB_texture_non_power_of_two, and programs rely on it). Borders are validated and reported, but
 // the stored texels exclude them, as in Mesa's gallium drivers.
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 
 #include "gl/gl_enums.h"
@@ -25,11 +26,25 @@
 namespace glpt {
 namespace {
 
-// GL 1.5 3.8.1: depth internal formats take DEPTH_COMPONENT data and colour ones colour (or
-// colour index) data; STENCIL_INDEX never names texels.
+// Whether a client format carries depth values (DEPTH_COMPONENT, or DEPTH_STENCIL's depth).
+bool depth_data(GLenum format) {
+  const PixelClass c = pixel_class(format);
+  return c == PixelClass::kDepth || c == PixelClass::kDepthStencil;
+}
+
+// GL 1.5 3.8.1 with EXT_packed_depth_stencil (Mesa's texture_formats_agree): depth and
+// depth-stencil internal formats take DEPTH_COMPONENT or DEPTH_STENCIL data, colour ones colour
+// (or colour index) data; STENCIL_INDEX never names texels.
 bool formats_agree(const InternalFormatInfo& info, GLenum format) {
   if (format == GL_STENCIL_INDEX) return false;
-  return (info.base_format == GL_DEPTH_COMPONENT) == (format == GL_DEPTH_COMPONENT);
+  return info.is_depth() == depth_data(format);
+}
+
+// Mesa's _mesa_image_transfer_state: whether Mesa's texture stores run pixel transfer on the
+// stencil indices they unpack (RGBA scale/bias, index shift/offset or colour maps set).
+bool stencil_transfer_applies(const rec::PixelTransferState& t) {
+  return t.scale != glm::vec4(1.0f) || t.bias != glm::vec4(0.0f) || t.index_shift != 0 ||
+         t.index_offset != 0 || t.map_color;
 }
 
 // Whether GL (with Mesa's non-power-of-two sizes) supports an image of this size at `level`.
@@ -73,11 +88,19 @@ PixelStoreModes without_border(PixelStoreModes m, int dims, GLsizei w, GLsizei h
 // width are copied (texstore's memcpy), and _mesa_unpack_depth_span's integer shortcuts
 // (32 -> 16 bits: >> 16; 16 -> 32 bits: replicated) apply without depth scale and bias; anything
 // else goes through floats and truncates.
+// GL_UNSIGNED_INT_24_8 data keeps its 24 depth bits in a 24-bit format (Mesa's shortcut) and
+// goes through floats into the others.
 void encode_client_depth(const Context& ctx, const InternalFormatInfo& info,
                          const UnpackSource& src, size_t n, uint8_t* texels) {
   const GLenum type = src.shape.type;
   const bool plain =
       ctx.pixel_transfer.depth_scale == 1.0f && ctx.pixel_transfer.depth_bias == 0.0f;
+  if (plain && type == GL_UNSIGNED_INT_24_8_EXT && info.depth == 24) {
+    const std::vector<uint32_t> words = unpack_depth_stencil_words(src);
+    for (size_t i = 0; i < n && i < words.size(); ++i)
+      encode_depth_unorm_texel(info, words[i] >> 8, texels + i * 4);
+    return;
+  }
   const bool ushort = type == GL_UNSIGNED_SHORT, uint = type == GL_UNSIGNED_INT;
   if (plain && ((ushort && (info.depth == 16 || info.depth == 32)) ||
                 (uint && (info.depth == 16 || info.depth == 32)))) {
@@ -94,23 +117,44 @@ void encode_client_depth(const Context& ctx, const InternalFormatInfo& info,
   encode_depth_texels(info, depth.data(), n, texels, DepthRounding::kTruncate);
 }
 
-// Texels of `info` from a client image (unpack, pixel transfer, base format conversion,
+// The stencil indices of a depth-stencil image from GL_DEPTH_STENCIL data (Mesa's
+// _mesa_texstore_z24_s8: the low 8 bits, through stencil pixel transfer when Mesa runs any).
+// Other data leaves them zero (GL: undefined).
+std::vector<uint8_t> stencil_from_client(const Context& ctx, const UnpackSource& src, size_t n) {
+  std::vector<uint8_t> stencil(n, 0);
+  if (src.shape.format != GL_DEPTH_STENCIL_EXT) return stencil;
+  std::vector<uint32_t> indices = unpack_indices_raw(src);
+  if (stencil_transfer_applies(ctx.pixel_transfer)) transfer_stencil(ctx.pixel_transfer, indices);
+  for (size_t i = 0; i < n && i < indices.size(); ++i) stencil[i] = uint8_t(indices[i]);
+  return stencil;
+}
+
+// An image's contents: texels, and the stencil indices of depth-stencil formats.
+struct ImageContents {
+  std::vector<uint8_t> texels, stencil;
+};
+
+// Contents of `info` from a client image (unpack, pixel transfer, base format conversion,
 // quantization). Null data leaves them zero (GL: undefined).
-std::vector<uint8_t> texels_from_client(const Context& ctx, const InternalFormatInfo& info,
-                                        const PixelStoreModes& modes, const ImageShape& shape,
-                                        bool three_d, const void* pixels) {
+ImageContents texels_from_client(const Context& ctx, const InternalFormatInfo& info,
+                                 const PixelStoreModes& modes, const ImageShape& shape,
+                                 bool three_d, const void* pixels) {
   const size_t n = shape.groups();
-  std::vector<uint8_t> texels(n * rec::texel_bytes(info.texel_format()), 0);
-  if (pixels == nullptr || n == 0) return texels;
+  ImageContents contents;
+  contents.texels.assign(n * rec::texel_bytes(info.texel_format()), 0);
+  if (info.stencil != 0) contents.stencil.assign(n, 0);
+  if (pixels == nullptr || n == 0) return contents;
   const UnpackSource src{modes, shape, three_d, pixels};
-  if (info.base_format == GL_DEPTH_COMPONENT) {
+  std::vector<uint8_t>& texels = contents.texels;
+  if (info.is_depth()) {
     encode_client_depth(ctx, info, src, n, texels.data());
+    if (info.stencil != 0) contents.stencil = stencil_from_client(ctx, src, n);
   } else {
     // Mesa converts from the client's own components unless pixel transfer ran (then from RGBA
     // floats) or they are colour indices (then from the RGBA bytes it looks them up as).
     const rec::PixelTransferState& t = ctx.pixel_transfer;
     const bool transfer = t.map_color || t.scale != glm::vec4(1.0f) || t.bias != glm::vec4(0.0f);
-    if (!transfer && encode_byte_texels(info, src, texels.data())) return texels;
+    if (!transfer && encode_byte_texels(info, src, texels.data())) return contents;
     const std::vector<glm::vec4> rgba = unpack_color(src, ctx.pixel_transfer);
     if (shape.format == GL_COLOR_INDEX || transfer) {
       encode_color_texels(info, rgba.data(), n, texels.data(),
@@ -122,29 +166,39 @@ std::vector<uint8_t> texels_from_client(const Context& ctx, const InternalFormat
                           color_source_layout(shape.format, shape.type), integers.data());
     }
   }
-  return texels;
+  return contents;
 }
 
-// Texels of `info` from a rectangle of the read buffer (depth buffer for depth formats), through
-// pixel transfer (GL 1.5 3.8.2: as glCopyPixels up to the final conversion).
-std::vector<uint8_t> texels_from_framebuffer(Context& ctx, const InternalFormatInfo& info, GLint x,
-                                             GLint y, GLsizei w, GLsizei h) {
+// Contents of `info` from a rectangle of the read buffer (depth buffer for depth formats, and the
+// stencil buffer for depth-stencil ones, which Mesa blits unchanged), through pixel transfer
+// (GL 1.5 3.8.2: as glCopyPixels up to the final conversion).
+ImageContents texels_from_framebuffer(Context& ctx, const InternalFormatInfo& info, GLint x,
+                                      GLint y, GLsizei w, GLsizei h) {
   const size_t n = size_t(std::max(w, 0)) * size_t(std::max(h, 0));
-  std::vector<uint8_t> texels(n * rec::texel_bytes(info.texel_format()), 0);
-  if (n == 0) return texels;
-  const bool depth = info.base_format == GL_DEPTH_COMPONENT;
+  ImageContents contents;
+  contents.texels.assign(n * rec::texel_bytes(info.texel_format()), 0);
+  if (info.stencil != 0) contents.stencil.assign(n, 0);
+  if (n == 0) return contents;
+  const bool depth = info.is_depth();
   FramebufferPixels fb;
   if (!read_framebuffer(ctx, depth ? rec::PixelKind::kDepth : rec::PixelKind::kColor,
                         ctx.raster.ops.read_buffer, x, y, uint32_t(w), uint32_t(h), fb))
-    return texels;  // nothing to read from: undefined contents
+    return contents;  // nothing to read from: undefined contents
   if (depth && fb.depth.size() == n) {
     transfer_depth(ctx.pixel_transfer, fb.depth);
-    encode_depth_texels(info, fb.depth.data(), n, texels.data());
+    encode_depth_texels(info, fb.depth.data(), n, contents.texels.data());
   } else if (!depth && fb.color.size() == n) {
     transfer_rgba(ctx.pixel_transfer, fb.color);
-    encode_color_texels(info, fb.color.data(), n, texels.data());
+    encode_color_texels(info, fb.color.data(), n, contents.texels.data());
   }
-  return texels;
+  FramebufferPixels stencil;
+  if (info.stencil != 0 &&
+      read_framebuffer(ctx, rec::PixelKind::kStencil, ctx.raster.ops.read_buffer, x, y, uint32_t(w),
+                       uint32_t(h), stencil) &&
+      stencil.stencil.size() == n) {
+    for (size_t i = 0; i < n; ++i) contents.stencil[i] = uint8_t(stencil.stencil[i]);
+  }
+  return contents;
 }
 
 // GL 1.5 3.8.2: a sub-image must lie inside the image, border included.
@@ -159,13 +213,12 @@ bool region_fits(const rec::TextureImage& img, int dims, GLint xoff, GLint yoff,
   return dims < 3 || fits(zoff, d, img.depth);
 }
 
-// Writes a w x h x d block of texels at (xoff, yoff, zoff) (interior coordinates); the parts that
-// fall on the (unstored) border are dropped.
-void write_region(TextureObject& object, const ImageTarget& t, GLint level, GLint xoff, GLint yoff,
-                  GLint zoff, GLsizei w, GLsizei h, GLsizei d, const std::vector<uint8_t>& texels,
-                  uint32_t texel) {
-  rec::TextureImage* img = object.image_for_update(t.face, level);
-  if (img == nullptr) return;
+// Copies a w x h x d block of elements of `bytes` bytes into `dst`, an array laid out as the
+// image's texels, at (xoff, yoff, zoff) (interior coordinates); the parts that fall on the
+// (unstored) border are dropped.
+void write_block(const rec::TextureImage* img, std::vector<uint8_t>& dst, GLint xoff, GLint yoff,
+                 GLint zoff, GLsizei w, GLsizei h, GLsizei d, const std::vector<uint8_t>& src_block,
+                 uint32_t texel) {
   const int64_t x0 = std::max<int64_t>(xoff, 0);
   const int64_t x1 = std::min<int64_t>(int64_t(xoff) + w, img->width);
   if (x1 <= x0) return;
@@ -175,10 +228,23 @@ void write_region(TextureObject& object, const ImageTarget& t, GLint level, GLin
     for (int64_t j = 0; j < h; ++j) {
       const int64_t y = int64_t(yoff) + j;
       if (y < 0 || y >= img->height) continue;
-      const uint8_t* src = texels.data() + ((k * h + j) * w + (x0 - xoff)) * texel;
-      uint8_t* dst = img->texels.data() + ((z * img->height + y) * img->width + x0) * texel;
-      std::memcpy(dst, src, size_t(x1 - x0) * texel);
+      const uint8_t* from = src_block.data() + ((k * h + j) * w + (x0 - xoff)) * texel;
+      uint8_t* to = dst.data() + ((z * img->height + y) * img->width + x0) * texel;
+      std::memcpy(to, from, size_t(x1 - x0) * texel);
     }
+  }
+}
+
+// Writes a w x h x d block of contents at (xoff, yoff, zoff) (interior coordinates).
+void write_region(TextureObject& object, const ImageTarget& t, GLint level, GLint xoff, GLint yoff,
+                  GLint zoff, GLsizei w, GLsizei h, GLsizei d, const ImageContents& contents,
+                  uint32_t texel) {
+  rec::TextureImage* img = object.image_for_update(t.face, level);
+  if (img == nullptr) return;
+  write_block(img, img->texels, xoff, yoff, zoff, w, h, d, contents.texels, texel);
+  if (!contents.stencil.empty()) {
+    img->stencil.resize(img->texels.size() / texel, 0);
+    write_block(img, img->stencil, xoff, yoff, zoff, w, h, d, contents.stencil, 1);
   }
 }
 
@@ -202,6 +268,8 @@ void tex_image(Context& ctx, int dims, GLenum target, GLint level, GLint interna
   const GLint sized = sized_format_for(internal_format, format, type);
   const InternalFormatInfo* info = stored_format_info(uint32_t(internal_format), uint32_t(sized));
   if (!formats_agree(*info, format)) return record_error(ctx, GL_INVALID_OPERATION);
+  // Mesa's _mesa_legal_texture_base_format_for_target: no three-dimensional depth textures.
+  if (info->is_depth() && t->slot == kSlot3D) return record_error(ctx, GL_INVALID_OPERATION);
   const bool legal = legal_dimensions(*t, level, w, h, d, border);
   TextureObject& object = target_object(ctx, *t);
   if (t->proxy) {
@@ -223,9 +291,11 @@ void tex_image(Context& ctx, int dims, GLenum target, GLint level, GLint interna
     img->sized_format = sized != internal_format ? uint32_t(sized) : 0u;
     const ImageShape inner{GLsizei(img->width), GLsizei(img->height), GLsizei(img->depth), format,
                            type};
-    img->texels =
+    ImageContents contents =
         texels_from_client(ctx, *info, without_border(ctx.framebuffer.unpack, dims, w, h, border),
                            inner, dims == 3, pixels);
+    img->texels = std::move(contents.texels);
+    img->stencil = std::move(contents.stencil);
     object.set_image(t->face, level, std::move(img));
     image_changed(object, *t, level);
   });
@@ -266,12 +336,19 @@ void tex_sub_image(Context& ctx, int dims, GLenum target, GLint level, GLint xof
     return record_error(ctx, GL_INVALID_VALUE);
   TextureObject& object = target_object(ctx, *t);
   or_out_of_memory(ctx, [&] {
-    const std::vector<uint8_t> texels =
+    const ImageContents contents =
         texels_from_client(ctx, *info, ctx.framebuffer.unpack, shape, dims == 3, pixels);
-    write_region(object, *t, level, xoff, yoff, zoff, w, h, d, texels,
+    write_region(object, *t, level, xoff, yoff, zoff, w, h, d, contents,
                  rec::texel_bytes(info->texel_format()));
     image_changed(object, *t, level);
   });
+}
+
+// Mesa's copytexture_error_check: depth formats need a depth buffer to copy from, depth-stencil
+// ones a stencil buffer too.
+bool framebuffer_has_source(const Context& ctx, const InternalFormatInfo& info) {
+  if (!info.is_depth()) return true;
+  return ctx.drawable.depth_bits != 0 && (info.stencil == 0 || ctx.drawable.stencil_bits != 0);
 }
 
 void copy_tex_image(Context& ctx, int dims, GLenum target, GLint level, GLenum internal_format,
@@ -286,14 +363,17 @@ void copy_tex_image(Context& ctx, int dims, GLenum target, GLint level, GLenum i
   const InternalFormatInfo* info = internal_format_info(GLint(internal_format));
   if (info == nullptr || internal_format <= 4) return record_error(ctx, GL_INVALID_ENUM);
   if (!legal_dimensions(*t, level, w, h, 1, border)) return record_error(ctx, GL_INVALID_VALUE);
-  if (info->base_format == GL_DEPTH_COMPONENT && ctx.drawable.depth_bits == 0)
-    return record_error(ctx, GL_INVALID_OPERATION);  // nothing to copy depth from
+  if (!framebuffer_has_source(ctx, *info))
+    return record_error(ctx, GL_INVALID_OPERATION);  // nothing to copy depth (stencil) from
   TextureObject& object = target_object(ctx, *t);
   or_out_of_memory(ctx, [&] {
     std::shared_ptr<rec::TextureImage> img = new_image(*t, GLint(internal_format), w, h, 1, border);
     // The border texels are read from the framebuffer's edge of the rectangle and dropped.
-    img->texels = texels_from_framebuffer(ctx, *info, x + border, dims >= 2 ? y + border : y,
-                                          GLsizei(img->width), GLsizei(img->height));
+    ImageContents contents =
+        texels_from_framebuffer(ctx, *info, x + border, dims >= 2 ? y + border : y,
+                                GLsizei(img->width), GLsizei(img->height));
+    img->texels = std::move(contents.texels);
+    img->stencil = std::move(contents.stencil);
     object.set_image(t->face, level, std::move(img));
     image_changed(object, *t, level);
   });
@@ -310,22 +390,37 @@ void copy_tex_sub_image(Context& ctx, int dims, GLenum target, GLint level, GLin
     return record_error(ctx, GL_INVALID_VALUE);
   const InternalFormatInfo* info = stored_format_info(img->internal_format, img->sized_format);
   if (info == nullptr) return;
-  if (info->base_format == GL_DEPTH_COMPONENT && ctx.drawable.depth_bits == 0)
-    return record_error(ctx, GL_INVALID_OPERATION);
+  if (!framebuffer_has_source(ctx, *info)) return record_error(ctx, GL_INVALID_OPERATION);
   if (w == 0 || h == 0) return;
   TextureObject& object = target_object(ctx, *t);
   or_out_of_memory(ctx, [&] {
-    const std::vector<uint8_t> texels = texels_from_framebuffer(ctx, *info, x, y, w, h);
-    write_region(object, *t, level, xoff, yoff, zoff, w, h, 1, texels,
+    const ImageContents contents = texels_from_framebuffer(ctx, *info, x, y, w, h);
+    write_region(object, *t, level, xoff, yoff, zoff, w, h, 1, contents,
                  rec::texel_bytes(info->texel_format()));
     image_changed(object, *t, level);
   });
 }
 
-// GL 1.5 6.1.4 (+ ARB_depth_texture, EXT_abgr): the formats glGetTexImage writes.
+// GL 1.5 6.1.4 (+ ARB_depth_texture, EXT_abgr, EXT_packed_depth_stencil): the formats
+// glGetTexImage writes. STENCIL_INDEX reads a depth-stencil texture's stencil indices, as Mesa
+// allows (it exposes ARB_texture_stencil8).
 bool get_tex_image_format(GLenum format) {
   const PixelClass c = pixel_class(format);
-  return c == PixelClass::kColor || c == PixelClass::kDepth;
+  return c == PixelClass::kColor || c == PixelClass::kDepth || c == PixelClass::kDepthStencil ||
+         c == PixelClass::kStencilIndex;
+}
+
+// Mesa's teximage_error_check: whether glGetTexImage may read an image of `info` as `format`.
+bool get_tex_image_formats_agree(const InternalFormatInfo& info, GLenum format) {
+  switch (pixel_class(format)) {
+    case PixelClass::kDepth:
+      return info.is_depth();
+    case PixelClass::kDepthStencil:
+    case PixelClass::kStencilIndex:
+      return info.base_format == GL_DEPTH_STENCIL_EXT;
+    default:
+      return !info.is_depth();
+  }
 }
 
 void get_tex_image(Context& ctx, GLenum target, GLint level, GLenum format, GLenum type,
@@ -341,8 +436,7 @@ void get_tex_image(Context& ctx, GLenum target, GLint level, GLenum format, GLen
   if (img == nullptr) return;  // nothing defined, nothing written (not an error)
   const InternalFormatInfo* info = stored_format_info(img->internal_format, img->sized_format);
   if (info == nullptr) return;
-  if ((info->base_format == GL_DEPTH_COMPONENT) != (format == GL_DEPTH_COMPONENT))
-    return record_error(ctx, GL_INVALID_OPERATION);
+  if (!get_tex_image_formats_agree(*info, format)) return record_error(ctx, GL_INVALID_OPERATION);
   // The image as GL reports it, border included; the stripped border texels repeat the edge.
   const int32_t b = int32_t(img->border);
   const ImageShape shape{int32_t(img->width) + 2 * b,
@@ -364,8 +458,25 @@ void get_tex_image(Context& ctx, GLenum target, GLint level, GLenum format, GLen
       return img->texels.data() + i * texel;
     };
     const PackTarget dst{ctx.framebuffer.pack, shape, t->dims == 3, pixels, nullptr};
-    // No pixel transfer: Mesa's glGetTexImage applies none.
-    if (format == GL_DEPTH_COMPONENT) {
+    const auto stencil_at = [&](int32_t x, int32_t y, int32_t z) -> uint32_t {
+      const size_t i = size_t(source(x, y, z) - img->texels.data()) / texel;
+      return i < img->stencil.size() ? img->stencil[i] : 0u;
+    };
+    // No pixel transfer: Mesa's glGetTexImage applies none (measured: not even to stencil).
+    if (format == GL_DEPTH_STENCIL_EXT || format == GL_STENCIL_INDEX) {
+      // Depth as the 24-bit value Mesa stores, above the stencil index (Mesa copies Z24S8).
+      std::vector<uint32_t> values;
+      values.reserve(shape.groups());
+      for (int32_t z = 0; z < shape.depth; ++z)
+        for (int32_t y = 0; y < shape.height; ++y)
+          for (int32_t x = 0; x < shape.width; ++x) {
+            const uint32_t z24 =
+                uint32_t(std::nearbyint(double(decode_depth_texel(source(x, y, z))) * 0xFFFFFF));
+            values.push_back(format == GL_STENCIL_INDEX ? stencil_at(x, y, z)
+                                                        : z24 << 8 | stencil_at(x, y, z));
+          }
+      pack_indices(dst, values);
+    } else if (format == GL_DEPTH_COMPONENT) {
       std::vector<float> depth;
       depth.reserve(shape.groups());
       for (int32_t z = 0; z < shape.depth; ++z)

@@ -149,7 +149,8 @@ std::shared_ptr<const rec::TextureObjectSnapshot> TextureObject::snapshot() {
   if (const rec::TextureImage* base = image(0, std::max(sampler_.base_level, 0))) {
     if (const InternalFormatInfo* info =
             stored_format_info(base->internal_format, base->sized_format)) {
-      s->base_format = info->base_format;
+      // Depth-stencil textures sample as depth textures (EXT_packed_depth_stencil).
+      s->base_format = info->is_depth() ? GLenum(GL_DEPTH_COMPONENT) : info->base_format;
       s->texel_format = info->texel_format();
     }
   }

@@ -16,9 +16,6 @@
 namespace glpt {
 namespace {
 
-// GL 3.0's GL_TEXTURE_STENCIL_SIZE (not in GL 1.5's headers).
-constexpr GLenum kTextureStencilSize = 0x88F1;
-
 bool valid_min_filter(GLenum f) {
   switch (f) {
     case GL_NEAREST:
@@ -270,10 +267,8 @@ bool tex_level_parameter_value(Context& ctx, GLenum target, GLint level, GLenum 
     case GL_TEXTURE_DEPTH_SIZE:
       out = info ? info->depth : 0;
       return true;
-    case kTextureStencilSize:
-      // GL 3.0 / EXT_packed_depth_stencil; Mesa answers it in every context. glpt has no
-      // depth-stencil texture formats.
-      out = 0;
+    case GL_TEXTURE_STENCIL_SIZE_EXT:  // EXT_packed_depth_stencil
+      out = info ? info->stencil : 0;
       return true;
     case GL_TEXTURE_COMPRESSED:
       out = 0;  // glpt stores every format uncompressed

@@ -49,7 +49,11 @@ struct TextureImage {
   // with the precision of the data they were given (GL_RGBA from GL_UNSIGNED_SHORT data is
   // GL_RGBA16, GL_RGB from GL_UNSIGNED_SHORT_5_6_5 data is 5-6-5). 0: internal_format itself.
   uint32_t sized_format = 0;
-  std::vector<uint8_t> texels;   // width * height * depth * texel_bytes, rows bottom to top
+  std::vector<uint8_t> texels;  // width * height * depth * texel_bytes, rows bottom to top
+  // GL_DEPTH_STENCIL images (EXT_packed_depth_stencil): one stencil index per texel, in the order
+  // of `texels`, which hold the depth values. Only glGetTexImage reads them (sampling a
+  // depth-stencil texture samples its depth); empty for every other format.
+  std::vector<uint8_t> stencil;
 };
 
 struct SamplerState {
