@@ -84,8 +84,15 @@ bool config_attribute(const Config& c, EGLint attribute, EGLint* value) {
       v = c.id;
       break;
     case EGL_CONFORMANT:
+      v = EGL_OPENGL_BIT;
+      break;
     case EGL_RENDERABLE_TYPE:
-      v = EGL_OPENGL_BIT;  // OpenGL 1.5 only: no OpenGL ES, no OpenVG
+      // Contexts are OpenGL 1.5 only (eglBindAPI refuses OpenGL ES). The OpenGL ES 1.x bit is
+      // still set because eglChooseConfig's default asks for it: programs that omit
+      // EGL_RENDERABLE_TYPE, or that name EGL_OPENGL_ES_BIT and then bind EGL_OPENGL_API (the
+      // xscreensaver 6.06 GL hacks Debian ships do), find configs as they do on Mesa, whose
+      // configs support every API.
+      v = EGL_OPENGL_BIT | EGL_OPENGL_ES_BIT;
       break;
     case EGL_MAX_PBUFFER_WIDTH:
     case EGL_MAX_PBUFFER_HEIGHT:
@@ -149,8 +156,6 @@ constexpr AttributeRule kRules[] = {
     {EGL_NATIVE_RENDERABLE, EGL_DONT_CARE, Criterion::kExact},
     {EGL_NATIVE_VISUAL_ID, 0, Criterion::kIgnored},
     {EGL_NATIVE_VISUAL_TYPE, EGL_DONT_CARE, Criterion::kExact},
-    // The default asks for OpenGL ES, which glpt does not offer: desktop GL programs name
-    // EGL_OPENGL_BIT (as EGL 1.5 requires; Mesa's configs happen to support every API).
     {EGL_RENDERABLE_TYPE, EGL_OPENGL_ES_BIT, Criterion::kMask},
     {EGL_SAMPLE_BUFFERS, 0, Criterion::kAtLeast},
     {EGL_SAMPLES, 0, Criterion::kAtLeast},

@@ -1,6 +1,7 @@
 // EGL configs (EGL 1.5 section 3.4) over glpt's framebuffer configuration model
 // (gl_shim/glx/fbconfigs.hpp): every TrueColor visual of depth 24 or 32 with and without 8 alpha
-// bits (depth-32 visuals always with alpha), 24-bit depth, 8-bit stencil, OpenGL only. EGL has no
+// bits (depth-32 visuals always with alpha), 24-bit depth, 8-bit stencil, OpenGL contexts only
+// (EGL_RENDERABLE_TYPE also names OpenGL ES 1.x, see config_attribute). EGL has no
 // double-buffered attribute on configs: a window surface chooses its render buffer itself, so
 // each visual appears once per alpha choice. A surfaceless display (EGL_MESA_platform_surfaceless)
 // has the same two buffer layouts without a visual, for pbuffers only.

@@ -164,7 +164,7 @@ TEST_F(Egl, ConfigsDescribeGlptsBuffers) {
     EXPECT_EQ(attrib(c, EGL_RED_SIZE), 8);
     EXPECT_EQ(attrib(c, EGL_DEPTH_SIZE), 24);
     EXPECT_EQ(attrib(c, EGL_STENCIL_SIZE), 8);
-    EXPECT_EQ(attrib(c, EGL_RENDERABLE_TYPE), EGL_OPENGL_BIT);
+    EXPECT_EQ(attrib(c, EGL_RENDERABLE_TYPE), EGL_OPENGL_BIT | EGL_OPENGL_ES_BIT);
     EXPECT_EQ(attrib(c, EGL_CONFORMANT), EGL_OPENGL_BIT);
     EXPECT_EQ(attrib(c, EGL_SURFACE_TYPE), EGL_WINDOW_BIT | EGL_PBUFFER_BIT);
     EXPECT_EQ(attrib(c, EGL_COLOR_BUFFER_TYPE), EGL_RGB_BUFFER);
@@ -219,10 +219,35 @@ TEST_F(Egl, ChooseConfigMatchesAndSortsAsTheSpecifies) {
   // Alpha of size 0 asked for counts no alpha bits: sorting puts no-alpha first again.
   const EGLint alpha0[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_ALPHA_SIZE, 0, EGL_NONE};
   EXPECT_EQ(attrib(choose(alpha0), EGL_ALPHA_SIZE), 0);
-  // The default EGL_RENDERABLE_TYPE is EGL_OPENGL_ES_BIT, which no config offers.
-  const EGLint es_default[] = {EGL_RED_SIZE, 8, EGL_NONE};
+  // The default EGL_RENDERABLE_TYPE is EGL_OPENGL_ES_BIT, which glpt's configs name (though
+  // only OpenGL contexts can be made), as Mesa's do: the same configs match without it.
+  const EGLint es_default[] = {EGL_RED_SIZE, 1, EGL_NONE};
   ASSERT_TRUE(eglChooseConfig(egl_, es_default, nullptr, 0, &n));
+  EXPECT_EQ(n, static_cast<EGLint>(sorted.size()));
+  const EGLint es2[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_ES2_BIT, EGL_NONE};
+  ASSERT_TRUE(eglChooseConfig(egl_, es2, nullptr, 0, &n));
   EXPECT_EQ(n, 0);
+  // xscreensaver 6.06's request (Debian's GL hacks): EGL_OPENGL_ES_BIT, stencil, alpha.
+  const EGLint xscreensaver[] = {EGL_SURFACE_TYPE,
+                                 EGL_WINDOW_BIT,
+                                 EGL_COLOR_BUFFER_TYPE,
+                                 EGL_RGB_BUFFER,
+                                 EGL_RED_SIZE,
+                                 8,
+                                 EGL_GREEN_SIZE,
+                                 8,
+                                 EGL_BLUE_SIZE,
+                                 8,
+                                 EGL_ALPHA_SIZE,
+                                 8,
+                                 EGL_DEPTH_SIZE,
+                                 8,
+                                 EGL_STENCIL_SIZE,
+                                 1,
+                                 EGL_RENDERABLE_TYPE,
+                                 EGL_OPENGL_ES_BIT,
+                                 EGL_NONE};
+  EXPECT_EQ(attrib(choose(xscreensaver), EGL_ALPHA_SIZE), 8);
   const EGLint too_deep[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_DEPTH_SIZE, 32, EGL_NONE};
   ASSERT_TRUE(eglChooseConfig(egl_, too_deep, nullptr, 0, &n));
   EXPECT_EQ(n, 0);
