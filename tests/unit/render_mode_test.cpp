@@ -84,7 +84,9 @@ TEST_P(MesaRenderModeTest, ReportsWhatMesaReports) {
 // fragments are produced); back in GL_RENDER the same commands are recorded again.
 void draw_everything() {
   static const float positions[] = {1, 1, 5, 1, 5, 5};
-  static const GLubyte bitmap[8] = {0xff, 0x81, 0x81, 0x81, 0x81, 0x81, 0x81, 0xff};
+  // 8 rows of one byte, each padded to GL_UNPACK_ALIGNMENT's default 4.
+  static const GLubyte bitmap[8 * 4] = {0xff, 0, 0, 0, 0x81, 0, 0, 0, 0x81, 0, 0, 0, 0x81, 0, 0, 0,
+                                        0x81, 0, 0, 0, 0x81, 0, 0, 0, 0x81, 0, 0, 0, 0xff, 0, 0, 0};
   static const GLubyte pixels[4 * 4 * 4] = {};
   static const float control[] = {1, 1, 0, 5, 5, 0};
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
