@@ -281,6 +281,15 @@ EGLSurface create_window_surface(EGLDisplay dpy, EGLConfig config, uint32_t wind
   return d->surfaces.back().get();
 }
 
+// What an unsupported feature answers: the display's error if it is invalid or uninitialized,
+// else `error`.
+template <typename T>
+T unsupported(EGLDisplay dpy, EGLint error, T none) {
+  std::lock_guard lock(objects_mutex());
+  if (initialized_display(dpy) == nullptr) return none;
+  return fail(error, none);
+}
+
 // The GL 1.x commands that end a frame on a single-buffered surface.
 void flush_current() { glFlush(); }
 
@@ -623,9 +632,7 @@ GLPT_EXPORT EGLSurface eglCreatePbufferFromClientBuffer(EGLDisplay dpy, EGLenum 
   (void)buffer;
   (void)config;
   (void)attrib_list;
-  std::lock_guard lock(objects_mutex());
-  if (initialized_display(dpy) == nullptr) return EGL_NO_SURFACE;
-  return fail(EGL_BAD_PARAMETER, EGL_NO_SURFACE);  // no client buffer type is supported
+  return unsupported(dpy, EGL_BAD_PARAMETER, EGL_NO_SURFACE);  // no client buffer type is known
 }
 
 GLPT_EXPORT EGLBoolean eglDestroySurface(EGLDisplay dpy, EGLSurface surface) {
@@ -907,38 +914,38 @@ GLPT_EXPORT EGLBoolean eglReleaseThread(void) {
   return succeed();
 }
 
-// Sync objects and images (EGL 1.5 3.8, 3.9) are not supported: no type or target is valid.
+// Sync objects and images (EGL 1.5 3.8, 3.9) are not supported: no type, target or handle is
+// valid (EGL_BAD_PARAMETER once the display is).
 GLPT_EXPORT EGLSync eglCreateSync(EGLDisplay dpy, EGLenum type, const EGLAttrib* attrib_list) {
   (void)type;
   (void)attrib_list;
-  std::lock_guard lock(objects_mutex());
-  if (initialized_display(dpy) == nullptr) return EGL_NO_SYNC;
-  return fail(EGL_BAD_PARAMETER, EGL_NO_SYNC);
+  return unsupported(dpy, EGL_BAD_PARAMETER, EGL_NO_SYNC);
 }
 
 GLPT_EXPORT EGLBoolean eglDestroySync(EGLDisplay dpy, EGLSync sync) {
   (void)sync;
-  std::lock_guard lock(objects_mutex());
-  if (initialized_display(dpy) == nullptr) return EGL_FALSE;
-  return fail(EGL_BAD_PARAMETER, EGL_FALSE);
+  return unsupported(dpy, EGL_BAD_PARAMETER, EGLBoolean{EGL_FALSE});
 }
 
 GLPT_EXPORT EGLint eglClientWaitSync(EGLDisplay dpy, EGLSync sync, EGLint flags, EGLTime timeout) {
+  (void)sync;
   (void)flags;
   (void)timeout;
-  return eglDestroySync(dpy, sync);
+  return unsupported(dpy, EGL_BAD_PARAMETER, EGLint{EGL_FALSE});
 }
 
 GLPT_EXPORT EGLBoolean eglGetSyncAttrib(EGLDisplay dpy, EGLSync sync, EGLint attribute,
                                         EGLAttrib* value) {
+  (void)sync;
   (void)attribute;
   (void)value;
-  return eglDestroySync(dpy, sync);
+  return unsupported(dpy, EGL_BAD_PARAMETER, EGLBoolean{EGL_FALSE});
 }
 
 GLPT_EXPORT EGLBoolean eglWaitSync(EGLDisplay dpy, EGLSync sync, EGLint flags) {
+  (void)sync;
   (void)flags;
-  return eglDestroySync(dpy, sync);
+  return unsupported(dpy, EGL_BAD_PARAMETER, EGLBoolean{EGL_FALSE});
 }
 
 GLPT_EXPORT EGLImage eglCreateImage(EGLDisplay dpy, EGLContext ctx, EGLenum target,
@@ -947,14 +954,12 @@ GLPT_EXPORT EGLImage eglCreateImage(EGLDisplay dpy, EGLContext ctx, EGLenum targ
   (void)target;
   (void)buffer;
   (void)attrib_list;
-  std::lock_guard lock(objects_mutex());
-  if (initialized_display(dpy) == nullptr) return EGL_NO_IMAGE;
-  return fail(EGL_BAD_PARAMETER, EGL_NO_IMAGE);
+  return unsupported(dpy, EGL_BAD_PARAMETER, EGL_NO_IMAGE);
 }
 
 GLPT_EXPORT EGLBoolean eglDestroyImage(EGLDisplay dpy, EGLImage image) {
   (void)image;
-  return eglDestroySync(dpy, nullptr);
+  return unsupported(dpy, EGL_BAD_PARAMETER, EGLBoolean{EGL_FALSE});
 }
 
 GLPT_EXPORT __eglMustCastToProperFunctionPointerType eglGetProcAddress(const char* procname);

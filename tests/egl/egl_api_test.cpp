@@ -608,6 +608,26 @@ TEST_F(Egl, SurfacelessPlatformOffersPbuffers) {
   EXPECT_TRUE(eglTerminate(sl));  // frees the surface and the context
 }
 
+// Sync objects, images, pixmap and client-buffer surfaces are not offered: each reports the error
+// EGL names for an unsupported type, target or config, after the display's own errors.
+TEST_F(Egl, UnsupportedObjectsReportErrors) {
+  EXPECT_EQ(eglCreateSync(egl_, EGL_SYNC_FENCE, nullptr), EGL_NO_SYNC);
+  EXPECT_EQ(eglGetError(), EGL_BAD_PARAMETER);
+  EXPECT_FALSE(eglDestroySync(egl_, nullptr));
+  EXPECT_EQ(eglGetError(), EGL_BAD_PARAMETER);
+  EXPECT_EQ(eglCreateImage(egl_, EGL_NO_CONTEXT, EGL_GL_TEXTURE_2D, nullptr, nullptr),
+            EGL_NO_IMAGE);
+  EXPECT_EQ(eglGetError(), EGL_BAD_PARAMETER);
+  EXPECT_EQ(eglCreateSync(EGL_NO_DISPLAY, EGL_SYNC_FENCE, nullptr), EGL_NO_SYNC);
+  EXPECT_EQ(eglGetError(), EGL_BAD_DISPLAY);
+  EGLConfig config = choose(kWindowConfig);
+  EXPECT_EQ(eglCreatePixmapSurface(egl_, config, 1, nullptr), EGL_NO_SURFACE);
+  EXPECT_EQ(eglGetError(), EGL_BAD_MATCH);
+  EXPECT_EQ(eglCreatePbufferFromClientBuffer(egl_, 0x1234, nullptr, config, nullptr),
+            EGL_NO_SURFACE);
+  EXPECT_EQ(eglGetError(), EGL_BAD_PARAMETER);
+}
+
 // EGL_KHR_get_all_proc_addresses: the same entry points as the exported ones, GL and EGL.
 TEST_F(Egl, ProcAddressesAreGlptsOwnEntryPoints) {
   using Proc = __eglMustCastToProperFunctionPointerType;
