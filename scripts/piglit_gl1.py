@@ -46,6 +46,19 @@ def list_tests(pattern):
 # Why a test skipped, from its output: the requirement it names.
 SKIP_REASON = re.compile(r"(Test requires \S+|requires either .*|Requested a OpenGL [0-9.]+|"
                          r"GLSL not supported|Function \"\w+\" not supported|\S.* is required for .*)")
+# Why glpt does not pass a test Mesa passes, where that is understood (measured; shown in the
+# note column when the test does not pass). Remove a line when its test passes.
+KNOWN_DIFFERENCES = {
+    "spec@!opengl 1.1@linestipple":
+        "Line loop: 7 pixels of a line going down exactly through pixel centres; llvmpipe "
+        "draws GL windows with y flipped and breaks such ties by its bottom-edge rule, lavapipe "
+        "un-flipped starts the line one pixel lower, shifting the stipple (tests/conformance "
+        "scene lines_stipple_piglit)",
+    "spec@!opengl 1.1@max-texture-size":
+        "uses GL_TEXTURE_RECTANGLE without checking for ARB_texture_rectangle and loops on "
+        "uninitialised sizes when it is missing",
+}
+
 BEYOND_GL15 = re.compile(r"OpenGL [2-9]|GLSL|requires (GL_\w+)|Function")
 
 
@@ -158,6 +171,7 @@ def main():
         mark = ""
         if m == "pass" and g != "pass":
             mark = " ➚" if name in beyond else " ⚠"
+            note = note or KNOWN_DIFFERENCES.get(name, "")
         lines.append(f"| {name.replace('|', '/')} | {m} | {g}{mark} | {note} |")
     with open(args.out, "w") as f:
         f.write("\n".join(lines) + "\n")

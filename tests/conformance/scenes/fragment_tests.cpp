@@ -306,7 +306,16 @@ GLPT_SCENE(depth_range_reversed, 64, 64) {
 }
 
 // glClearDepth(0.5): only the parts of a sloped quad nearer than depth 0.5 are drawn.
-GLPT_SCENE(depth_clear_value, 64, 64) {
+// Measured 98.6% (one column): at x = 35 the quad's window z is exactly the cleared 0.5. Mesa's
+// fragments there are 0x800000 in the 24-bit buffer, equal to the clear value, so GL_LESS fails;
+// lavapipe interpolates z in un-flipped window y (llvmpipe under GL in flipped y) and lands 1-2
+// units lower, so they pass. Ignoring the clear depth would show the parts behind 0.5 too.
+GLPT_SCENE_TOLERANCE(depth_clear_value, 64, 64,
+                     glpt::conformance::relaxed(0.98, 2,
+                                                "a column of fragments exactly at the cleared "
+                                                "depth: z rounding ties differ between "
+                                                "llvmpipe's flipped and lavapipe's un-flipped "
+                                                "window y")) {
   glClearColor(0.1f, 0.1f, 0.1f, 1);
   glClearDepth(0.5);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
