@@ -29,20 +29,6 @@ void rectangle_texture(GLenum filter, GLenum wrap) {
   glEnable(kRect);
 }
 
-// A quad of x0..x1, y0..y1 with texture coordinates s0..s1, t0..t1.
-void textured_quad(float x0, float y0, float x1, float y1, float s0, float t0, float s1, float t1) {
-  glBegin(GL_QUADS);
-  glTexCoord2f(s0, t0);
-  glVertex2f(x0, y0);
-  glTexCoord2f(s1, t0);
-  glVertex2f(x1, y0);
-  glTexCoord2f(s1, t1);
-  glVertex2f(x1, y1);
-  glTexCoord2f(s0, t1);
-  glVertex2f(x0, y1);
-  glEnd();
-}
-
 // Each filter with each wrap mode: rows GL_CLAMP_TO_EDGE (the initial mode), GL_CLAMP,
 // GL_CLAMP_TO_BORDER (magenta border); columns nearest, linear. Coordinates run from one texel
 // before the image to one beyond it, over sizes that are not multiples of the texture's, so
