@@ -446,6 +446,28 @@ float compare_unit(uint u, uint target, vec3 c) {
   return result;
 }
 
+// ---- rectangle textures (ARB_texture_rectangle)
+
+// The next float above x.
+float next_float_up(float x) {
+  uint bits = floatBitsToUint(x);
+  return x > 0.0 ? uintBitsToFloat(bits + 1u) : x < 0.0 ? uintBitsToFloat(bits - 1u)
+                                                     : uintBitsToFloat(1u);
+}
+
+// A texel coordinate s on an axis of `size` texels as a normalized one. llvmpipe samples
+// rectangle textures with unnormalized coordinates, and gallivm's first step with normalized
+// ones is c * size: where that product is exactly s, every later step (wrap, filter weights) is
+// the same. s / size is such a c, or one float next to one.
+float normalized_rect_coord(float s, float size) {
+  precise float c = s / size;
+  precise float back = c * size;
+  if (back == s || isnan(back) || isinf(back)) return c;
+  precise float other = back < s ? next_float_up(c) : -next_float_up(-c);
+  precise float other_back = other * size;
+  return other_back == s ? other : c;
+}
+
 // The texture colour of unit u: a projective lookup of (s, t, r) / q, as Mesa's fixed-function
 // fragment program does.
 vec4 sample_unit(uint u) {
@@ -453,6 +475,10 @@ vec4 sample_unit(uint u) {
   uint target = config & 7u;
   vec4 tc = v_texcoord[u];
   vec3 projected = tc.xyz / tc.w;
+  if ((config & GLPT_UNIT_RECT) != 0u) {
+    projected.x = normalized_rect_coord(projected.x, S.tex_size[u].x);
+    projected.y = normalized_rect_coord(projected.y, S.tex_size[u].y);
+  }
   if ((config & GLPT_UNIT_COMPARE) != 0u && (target == 1u || target == 2u))
     return vec4(compare_unit(u, target, projected));
   vec3 c = clamp_coords(u, config, projected);

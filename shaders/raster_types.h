@@ -104,6 +104,9 @@ using mat4 = glm::mat4;
 #define GLPT_UNIT_CLAMP_PER_FILTER 0x1000u  // GL_CLAMP: nearest or linear decided per quad
 #define GLPT_UNIT_COMPARE 0x2000u           // depth comparison done by the shader
 #define GLPT_UNIT_DEPTH 0x4000u  // a depth texture: depth in .r, expanded by GL_DEPTH_TEXTURE_MODE
+// A rectangle texture (ARB_texture_rectangle) on the 2D binding: s, t are in texels and the
+// shader normalizes them
+#define GLPT_UNIT_RECT 0x8000u
 // per unit (14..17): combine rgb function (bits 0-3), alpha function (4-7), rgb sources (8-16,
 // 3 bits each), alpha sources (17-25), rgb operands (26-31, 2 bits each)
 #define GLPT_SC_COMBINE0 14

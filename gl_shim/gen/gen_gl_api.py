@@ -93,6 +93,7 @@ ADVERTISED_GL_EXTENSIONS = [
     "GL_ARB_shadow", "GL_ARB_texture_border_clamp", "GL_ARB_texture_compression",
     "GL_ARB_texture_cube_map", "GL_ARB_texture_env_add", "GL_ARB_texture_env_combine",
     "GL_ARB_texture_env_crossbar", "GL_ARB_texture_env_dot3", "GL_ARB_texture_mirrored_repeat",
+    "GL_ARB_texture_rectangle",
     "GL_ARB_transpose_matrix", "GL_ARB_vertex_buffer_object", "GL_ARB_window_pos",
     "GL_EXT_bgra", "GL_EXT_blend_color", "GL_EXT_blend_func_separate", "GL_EXT_blend_logic_op",
     "GL_EXT_blend_minmax", "GL_EXT_blend_subtract", "GL_EXT_compiled_vertex_array",
@@ -103,9 +104,14 @@ ADVERTISED_GL_EXTENSIONS = [
     "GL_EXT_shadow_funcs", "GL_EXT_stencil_wrap", "GL_EXT_subtexture", "GL_EXT_texture",
     "GL_EXT_texture3D", "GL_EXT_texture_env_add", "GL_EXT_texture_env_combine",
     "GL_EXT_texture_env_dot3", "GL_EXT_texture_lod_bias", "GL_EXT_texture_object",
+    "GL_EXT_texture_rectangle",
     "GL_EXT_vertex_array", "GL_NV_blend_square", "GL_NV_texgen_reflection",
+    "GL_NV_texture_rectangle",
     "GL_SGIS_generate_mipmap", "GL_SGIS_texture_edge_clamp", "GL_SGIS_texture_lod",
 ]
+
+# Advertised extensions that gl.xml does not list; they add enums only (Mesa advertises them).
+UNREGISTERED_ADVERTISED_EXTENSIONS = {"GL_EXT_texture_rectangle"}
 
 GLX_FEATURES = ["GLX_VERSION_1_0", "GLX_VERSION_1_1", "GLX_VERSION_1_2", "GLX_VERSION_1_3",
                 "GLX_VERSION_1_4"]
@@ -681,6 +687,8 @@ def emit_entry_points(path, names, commands, gl_root):
     registry = {e.get("name"): e for e in gl_root.iter("extension")}
     promised = []
     for ext in ADVERTISED_GL_EXTENSIONS:
+        if ext in UNREGISTERED_ADVERTISED_EXTENSIONS:
+            continue  # no commands to promise
         if ext not in registry:
             sys.exit(f"gen_gl_api: advertised extension {ext} is not in gl.xml")
         for req in registry[ext].findall("require"):

@@ -86,7 +86,8 @@ uint32_t pixel_map_values_to_record(GLsizei mapsize) {
 
 bool is_proxy_texture_target(GLenum target) {
   return target == GL_PROXY_TEXTURE_1D || target == GL_PROXY_TEXTURE_2D ||
-         target == GL_PROXY_TEXTURE_3D || target == GL_PROXY_TEXTURE_CUBE_MAP;
+         target == GL_PROXY_TEXTURE_3D || target == GL_PROXY_TEXTURE_CUBE_MAP ||
+         target == GL_PROXY_TEXTURE_RECTANGLE_ARB;
 }
 
 }  // namespace glpt

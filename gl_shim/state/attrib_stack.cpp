@@ -101,9 +101,15 @@ constexpr GLenum kEnableCaps[] = {
     GL_POST_COLOR_MATRIX_COLOR_TABLE,
 };
 // Per texture unit: the targets and coordinate generation (tables 6.15, 6.17).
-constexpr GLenum kUnitEnableCaps[] = {GL_TEXTURE_1D,       GL_TEXTURE_2D,    GL_TEXTURE_3D,
-                                      GL_TEXTURE_CUBE_MAP, GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T,
-                                      GL_TEXTURE_GEN_R,    GL_TEXTURE_GEN_Q};
+constexpr GLenum kUnitEnableCaps[] = {GL_TEXTURE_1D,
+                                      GL_TEXTURE_2D,
+                                      GL_TEXTURE_3D,
+                                      GL_TEXTURE_CUBE_MAP,
+                                      GL_TEXTURE_RECTANGLE_ARB,
+                                      GL_TEXTURE_GEN_S,
+                                      GL_TEXTURE_GEN_T,
+                                      GL_TEXTURE_GEN_R,
+                                      GL_TEXTURE_GEN_Q};
 constexpr size_t kCapCount = std::size(kEnableCaps);
 constexpr size_t kUnitCapCount = std::size(kUnitEnableCaps);
 

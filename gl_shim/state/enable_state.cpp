@@ -48,7 +48,6 @@ constexpr Cap kCapList[] = {
     {GL_SAMPLE_ALPHA_TO_COVERAGE, false},
     {GL_SAMPLE_ALPHA_TO_ONE, false},
     {GL_SAMPLE_COVERAGE, false},
-    {GL_TEXTURE_RECTANGLE_ARB, false},
 };
 constexpr auto kCaps = [] {
   std::array<Cap, std::size(kCapList)> caps{};
@@ -140,6 +139,8 @@ BitField flag_bit(Context& ctx, GLenum cap) {
       return {&unit.enabled_targets, kTarget3D};
     case GL_TEXTURE_CUBE_MAP:
       return {&unit.enabled_targets, kTargetCubeMap};
+    case GL_TEXTURE_RECTANGLE_ARB:
+      return {&unit.enabled_targets, kTargetRect};
     case GL_TEXTURE_GEN_S:
       return {&unit.texgen_mask, 1};
     case GL_TEXTURE_GEN_T:

@@ -47,10 +47,19 @@ bool stencil_transfer_applies(const rec::PixelTransferState& t) {
          t.index_offset != 0 || t.map_color;
 }
 
+// GL 1.5 3.8.1: a border of 0 or 1 texels; rectangle textures have none (ARB_texture_rectangle,
+// GL_INVALID_VALUE in Mesa, proxies included).
+bool legal_border(const ImageTarget& t, GLint border) {
+  return border >= 0 && border <= (t.slot == kSlotRect ? 0 : 1);
+}
+
 // Whether GL (with Mesa's non-power-of-two sizes) supports an image of this size at `level`.
 bool legal_dimensions(const ImageTarget& t, GLint level, GLsizei w, GLsizei h, GLsizei d,
                       GLint border) {
-  const int64_t max = int64_t(t.slot == kSlot3D ? kMax3DTextureSize : kMaxTextureSize) >> level;
+  const int64_t max = int64_t(t.slot == kSlot3D     ? kMax3DTextureSize
+                              : t.slot == kSlotRect ? kMaxRectangleTextureSize
+                                                    : kMaxTextureSize) >>
+                      level;
   const auto fits = [&](GLsizei s) { return s >= 2 * border && s <= max + 2 * border; };
   if (!fits(w)) return false;
   if (t.dims >= 2 && !fits(h)) return false;
@@ -250,7 +259,9 @@ void write_region(TextureObject& object, const ImageTarget& t, GLint level, GLin
 
 // After any change to an image: GL_GENERATE_MIPMAP recomputes the levels above a changed base.
 void image_changed(TextureObject& object, const ImageTarget& t, GLint level) {
-  if (!t.proxy && object.generate_mipmap && level == object.sampler().base_level)
+  // Rectangle textures have no levels to generate (Mesa skips them too).
+  if (!t.proxy && t.slot != kSlotRect && object.generate_mipmap &&
+      level == object.sampler().base_level)
     generate_mipmaps(object, t.face);
 }
 
@@ -260,7 +271,7 @@ void tex_image(Context& ctx, int dims, GLenum target, GLint level, GLint interna
   const std::optional<ImageTarget> t = image_target(target, dims, ProxyTargets::kAccepted);
   if (!t) return record_error(ctx, GL_INVALID_ENUM);
   if (level < 0 || level >= max_texture_levels(t->slot)) return record_error(ctx, GL_INVALID_VALUE);
-  if (border < 0 || border > 1 || w < 0 || h < 0 || d < 0)
+  if (!legal_border(*t, border) || w < 0 || h < 0 || d < 0)
     return record_error(ctx, GL_INVALID_VALUE);
   if (internal_format_info(internal_format) == nullptr) return record_error(ctx, GL_INVALID_VALUE);
   if (const GLenum e = check_format_and_type(format, type); e != GL_NO_ERROR)
@@ -356,7 +367,7 @@ void copy_tex_image(Context& ctx, int dims, GLenum target, GLint level, GLenum i
   flush_bitmap_cache(ctx);  // as Mesa's texture uploads and reads
   const std::optional<ImageTarget> t = image_target(target, dims, ProxyTargets::kRejected);
   if (!t) return record_error(ctx, GL_INVALID_ENUM);
-  if (level < 0 || level >= max_texture_levels(t->slot) || border < 0 || border > 1 || w < 0 ||
+  if (level < 0 || level >= max_texture_levels(t->slot) || !legal_border(*t, border) || w < 0 ||
       h < 0)
     return record_error(ctx, GL_INVALID_VALUE);
   // GL 1.5 3.8.2: not 1..4. Mesa reports a bad internal format here as GL_INVALID_ENUM.

@@ -18,6 +18,8 @@ int texture_slot(GLenum target) {
       return kSlot3D;
     case GL_TEXTURE_CUBE_MAP:
       return kSlotCube;
+    case GL_TEXTURE_RECTANGLE_ARB:
+      return kSlotRect;
     default:
       return -1;
   }
@@ -25,12 +27,14 @@ int texture_slot(GLenum target) {
 
 GLenum slot_target(int slot) {
   constexpr GLenum kTargets[kSlotCount] = {GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_3D,
-                                           GL_TEXTURE_CUBE_MAP};
+                                           GL_TEXTURE_CUBE_MAP, GL_TEXTURE_RECTANGLE_ARB};
   return kTargets[slot];
 }
 
 int max_texture_levels(int slot) {
-  return slot == kSlot3D ? kMax3DTextureLevels : kMaxTextureLevels;
+  // Rectangle textures have level 0 only (ARB_texture_rectangle: other levels are
+  // GL_INVALID_VALUE).
+  return slot == kSlot3D ? kMax3DTextureLevels : slot == kSlotRect ? 1 : kMaxTextureLevels;
 }
 
 uint64_t next_texture_content_version() {
@@ -38,6 +42,16 @@ uint64_t next_texture_content_version() {
   // be unique across share groups because rt_core's texture caches live with the (one) device.
   static std::atomic<uint64_t> next{1};
   return next.fetch_add(1, std::memory_order_relaxed);
+}
+
+void TextureObject::set_target(GLenum target) {
+  target_ = target;
+  if (target == GL_TEXTURE_RECTANGLE_ARB) {
+    // ARB_texture_rectangle's initial state (Mesa's _mesa_initialize_texture_object): no
+    // repeating wrap modes and no mipmaps on rectangle textures.
+    sampler_.wrap_s = sampler_.wrap_t = sampler_.wrap_r = GL_CLAMP_TO_EDGE;
+    sampler_.min_filter = GL_LINEAR;
+  }
 }
 
 rec::SamplerState& TextureObject::edit_sampler() {

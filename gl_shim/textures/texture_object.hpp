@@ -19,31 +19,46 @@
 
 namespace glpt {
 
-// Binding points of a texture unit, in increasing priority (GL 1.5 3.8.15).
-enum TextureSlot : int { kSlot1D = 0, kSlot2D = 1, kSlot3D = 2, kSlotCube = 3, kSlotCount = 4 };
+// Binding points of a texture unit. Their priority when several are enabled (GL 1.5 3.8.15,
+// ARB_texture_rectangle) is kSlotsByPriority's order, not this one: the rectangle slot came last.
+enum TextureSlot : int {
+  kSlot1D = 0,
+  kSlot2D = 1,
+  kSlot3D = 2,
+  kSlotCube = 3,
+  kSlotRect = 4,  // GL_TEXTURE_RECTANGLE_ARB
+  kSlotCount = 5
+};
+// Highest priority first: cube map, 3D, rectangle, 2D, 1D (ARB_texture_rectangle; Mesa's
+// gl_texture_index order).
+inline constexpr TextureSlot kSlotsByPriority[kSlotCount] = {kSlotCube, kSlot3D, kSlotRect, kSlot2D,
+                                                             kSlot1D};
 
-// GL_TEXTURE_1D/2D/3D/CUBE_MAP -> slot, -1 for anything else.
+// GL_TEXTURE_1D/2D/3D/CUBE_MAP/RECTANGLE_ARB -> slot, -1 for anything else.
 int texture_slot(GLenum target);
 GLenum slot_target(int slot);
 
 // Implementation limits (glpt keeps texels in host memory; Mesa's llvmpipe allows 16384).
-inline constexpr int kMaxTextureSize = 4096;        // GL_MAX_TEXTURE_SIZE, _CUBE_MAP_TEXTURE_SIZE
-inline constexpr int kMax3DTextureSize = 256;       // GL_MAX_3D_TEXTURE_SIZE
-inline constexpr int kMaxTextureLevels = 13;        // log2(4096) + 1
-inline constexpr int kMax3DTextureLevels = 9;       // log2(256) + 1
-inline constexpr float kMaxTextureLodBias = 16.0f;  // GL_MAX_TEXTURE_LOD_BIAS (Mesa)
+inline constexpr int kMaxTextureSize = 4096;   // GL_MAX_TEXTURE_SIZE, _CUBE_MAP_TEXTURE_SIZE
+inline constexpr int kMax3DTextureSize = 256;  // GL_MAX_3D_TEXTURE_SIZE
+inline constexpr int kMaxTextureLevels = 13;   // log2(4096) + 1
+inline constexpr int kMax3DTextureLevels = 9;  // log2(256) + 1
+// GL_MAX_RECTANGLE_TEXTURE_SIZE_ARB: the 2D limit, as in Mesa (llvmpipe: 16384 for both).
+inline constexpr int kMaxRectangleTextureSize = kMaxTextureSize;
+inline constexpr float kMaxTextureLodBias = 16.0f;     // GL_MAX_TEXTURE_LOD_BIAS (Mesa)
 inline constexpr float kMaxTextureAnisotropy = 16.0f;  // GL_MAX_TEXTURE_MAX_ANISOTROPY_EXT
 
 int max_texture_levels(int slot);
 
 class TextureObject {
  public:
-  TextureObject(GLuint name, GLenum target) : name_(name), target_(target) {}
+  TextureObject(GLuint name, GLenum target) : name_(name) { set_target(target); }
 
   GLuint name() const { return name_; }
   // The target of its first binding; 0 while the name was only generated.
   GLenum target() const { return target_; }
-  void set_target(GLenum target) { target_ = target; }
+  // Also sets the target's initial parameters (rectangle textures: CLAMP_TO_EDGE, LINEAR).
+  void set_target(GLenum target);
   int faces() const { return target_ == GL_TEXTURE_CUBE_MAP ? 6 : 1; }
 
   // --- parameters (glTexParameter): change through edit_sampler() so the snapshot is renewed.

@@ -16,28 +16,32 @@
 namespace glpt {
 namespace {
 
-bool valid_min_filter(GLenum f) {
+// ARB_texture_rectangle: rectangle textures take no mipmap filter and no repeating wrap mode
+// (GL_INVALID_ENUM, as in Mesa).
+bool valid_min_filter(GLenum f, bool rectangle) {
   switch (f) {
     case GL_NEAREST:
     case GL_LINEAR:
+      return true;
     case GL_NEAREST_MIPMAP_NEAREST:
     case GL_LINEAR_MIPMAP_NEAREST:
     case GL_NEAREST_MIPMAP_LINEAR:
     case GL_LINEAR_MIPMAP_LINEAR:
-      return true;
+      return !rectangle;
     default:
       return false;
   }
 }
 
-bool valid_wrap(GLenum w) {
+bool valid_wrap(GLenum w, bool rectangle) {
   switch (w) {
     case GL_CLAMP:
     case GL_CLAMP_TO_EDGE:
-    case GL_REPEAT:
     case GL_CLAMP_TO_BORDER:  // GL 1.3
-    case GL_MIRRORED_REPEAT:  // GL 1.4
       return true;
+    case GL_REPEAT:
+    case GL_MIRRORED_REPEAT:  // GL 1.4
+      return !rectangle;
     default:
       return false;
   }
@@ -69,23 +73,27 @@ void tex_parameter(Context& ctx, GLenum target, GLenum pname, const ParamValues&
   const auto set_float = [&](float rec::SamplerState::*field, float v) {
     if (s.*field != v) object->edit_sampler().*field = v;
   };
-  const auto set_level = [&](int32_t rec::SamplerState::*field) {
+  const bool rectangle = target == GL_TEXTURE_RECTANGLE_ARB;
+  // Rectangle textures have level 0 only: Mesa answers another base level (negative ones too)
+  // with GL_INVALID_OPERATION and another maximum level with GL_INVALID_VALUE (measured).
+  const auto set_level = [&](int32_t rec::SamplerState::*field, GLenum rectangle_error) {
     const GLint v = p.as_int_rounded(0);
+    if (rectangle && v != 0) return record_error(ctx, rectangle_error);
     if (v < 0) return record_error(ctx, GL_INVALID_VALUE);
     if (s.*field != v) object->edit_sampler().*field = v;
   };
   const GLenum e = GLenum(p.as_int_rounded(0));
   switch (pname) {
     case GL_TEXTURE_MIN_FILTER:
-      return set_enum(&rec::SamplerState::min_filter, valid_min_filter(e));
+      return set_enum(&rec::SamplerState::min_filter, valid_min_filter(e, rectangle));
     case GL_TEXTURE_MAG_FILTER:
       return set_enum(&rec::SamplerState::mag_filter, e == GL_NEAREST || e == GL_LINEAR);
     case GL_TEXTURE_WRAP_S:
-      return set_enum(&rec::SamplerState::wrap_s, valid_wrap(e));
+      return set_enum(&rec::SamplerState::wrap_s, valid_wrap(e, rectangle));
     case GL_TEXTURE_WRAP_T:
-      return set_enum(&rec::SamplerState::wrap_t, valid_wrap(e));
+      return set_enum(&rec::SamplerState::wrap_t, valid_wrap(e, rectangle));
     case GL_TEXTURE_WRAP_R:
-      return set_enum(&rec::SamplerState::wrap_r, valid_wrap(e));
+      return set_enum(&rec::SamplerState::wrap_r, valid_wrap(e, rectangle));
     case GL_TEXTURE_BORDER_COLOR: {
       if (!vector) return record_error(ctx, GL_INVALID_ENUM);
       glm::vec4 c;
@@ -104,9 +112,9 @@ void tex_parameter(Context& ctx, GLenum target, GLenum pname, const ParamValues&
     case GL_TEXTURE_LOD_BIAS:
       return set_float(&rec::SamplerState::lod_bias, p.as_float(0));
     case GL_TEXTURE_BASE_LEVEL:
-      return set_level(&rec::SamplerState::base_level);
+      return set_level(&rec::SamplerState::base_level, GL_INVALID_OPERATION);
     case GL_TEXTURE_MAX_LEVEL:
-      return set_level(&rec::SamplerState::max_level);
+      return set_level(&rec::SamplerState::max_level, GL_INVALID_VALUE);
     case GL_TEXTURE_MAX_ANISOTROPY_EXT: {
       const float a = p.as_float(0);
       if (!(a >= 1.0f)) return record_error(ctx, GL_INVALID_VALUE);

@@ -17,11 +17,13 @@ bool lookup_texture_and_pixel_state(const Context& ctx, GLenum pname, query::Val
   const rec::PixelTransferState& t = ctx.pixel_transfer;
   const auto real = [&](float v) { *out = floats(&v, 1); };
   // Texture bindings of the active unit.
-  if (const int slot = texture_slot(pname == GL_TEXTURE_BINDING_1D         ? GL_TEXTURE_1D
-                                    : pname == GL_TEXTURE_BINDING_2D       ? GL_TEXTURE_2D
-                                    : pname == GL_TEXTURE_BINDING_3D       ? GL_TEXTURE_3D
-                                    : pname == GL_TEXTURE_BINDING_CUBE_MAP ? GL_TEXTURE_CUBE_MAP
-                                                                           : 0);
+  if (const int slot =
+          texture_slot(pname == GL_TEXTURE_BINDING_1D              ? GL_TEXTURE_1D
+                       : pname == GL_TEXTURE_BINDING_2D            ? GL_TEXTURE_2D
+                       : pname == GL_TEXTURE_BINDING_3D            ? GL_TEXTURE_3D
+                       : pname == GL_TEXTURE_BINDING_CUBE_MAP      ? GL_TEXTURE_CUBE_MAP
+                       : pname == GL_TEXTURE_BINDING_RECTANGLE_ARB ? GL_TEXTURE_RECTANGLE_ARB
+                                                                   : 0);
       slot >= 0) {
     *out = ints({double(tex.bound(tex.active_unit(), slot).name())});
     return true;
@@ -43,6 +45,9 @@ bool lookup_texture_and_pixel_state(const Context& ctx, GLenum pname, query::Val
     case GL_MAX_TEXTURE_SIZE:
     case GL_MAX_CUBE_MAP_TEXTURE_SIZE:
       *out = ints({kMaxTextureSize});
+      return true;
+    case GL_MAX_RECTANGLE_TEXTURE_SIZE_ARB:
+      *out = ints({kMaxRectangleTextureSize});
       return true;
     case GL_MAX_3D_TEXTURE_SIZE:
       *out = ints({kMax3DTextureSize});

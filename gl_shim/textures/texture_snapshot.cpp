@@ -10,7 +10,7 @@ void snapshot_texturing(const Context& ctx, rec::TexturingState& out) {
     rec::TextureUnitState& s = out.units[u];
     s.target = 0;
     s.texture.reset();
-    for (int slot = kSlotCube; slot >= kSlot1D && unit.enabled_targets != 0; --slot) {
+    for (const TextureSlot slot : kSlotsByPriority) {
       if ((unit.enabled_targets & (1u << slot)) == 0) continue;
       TextureObject& object = ctx.textures.bound(unit, slot);
       if (!object.complete()) continue;  // Mesa falls back to the next enabled target

@@ -23,6 +23,10 @@ std::optional<ImageTarget> image_target(GLenum target, int dims, ProxyTargets pr
     case GL_PROXY_TEXTURE_CUBE_MAP:
       t = {kSlotCube, 0, true, 2};
       break;
+    case GL_TEXTURE_RECTANGLE_ARB:
+    case GL_PROXY_TEXTURE_RECTANGLE_ARB:
+      t = {kSlotRect, 0, target == GL_PROXY_TEXTURE_RECTANGLE_ARB, 2};
+      break;
     default:
       if (target < GL_TEXTURE_CUBE_MAP_POSITIVE_X || target > GL_TEXTURE_CUBE_MAP_NEGATIVE_Z)
         return std::nullopt;

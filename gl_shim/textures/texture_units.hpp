@@ -13,19 +13,21 @@
 namespace glpt {
 
 struct TextureUnit {
-  // Bits: GL_TEXTURE_1D, _2D, _3D, _CUBE_MAP enabled (kTarget* below).
+  // Bits: GL_TEXTURE_1D, _2D, _3D, _CUBE_MAP, _RECTANGLE_ARB enabled (kTarget* below).
   uint8_t enabled_targets = 0;
   uint8_t texgen_mask = 0;  // bits 0..3: GL_TEXTURE_GEN_S, T, R, Q
   std::array<rec::TexGen, 4> texgen = rec::TextureUnitState::default_texgen();
   rec::TexEnv env;
-  // What GL_TEXTURE_1D, _2D, _3D, _CUBE_MAP (TextureSlot order) are bound to; null: texture 0.
+  // What GL_TEXTURE_1D, _2D, _3D, _CUBE_MAP, _RECTANGLE_ARB (TextureSlot order) are bound to;
+  // null: texture 0.
   std::array<std::shared_ptr<TextureObject>, kSlotCount> bound{};
 };
 
-inline constexpr uint8_t kTarget1D = 1, kTarget2D = 2, kTarget3D = 4, kTargetCubeMap = 8;
+inline constexpr uint8_t kTarget1D = 1, kTarget2D = 2, kTarget3D = 4, kTargetCubeMap = 8,
+                         kTargetRect = 16;
 // enabled_targets bit i is TextureSlot i.
 static_assert(kTarget1D == 1 << kSlot1D && kTarget2D == 1 << kSlot2D && kTarget3D == 1 << kSlot3D &&
-              kTargetCubeMap == 1 << kSlotCube);
+              kTargetCubeMap == 1 << kSlotCube && kTargetRect == 1 << kSlotRect);
 
 struct TextureUnits {
   std::array<TextureUnit, rec::kMaxTextureUnits> units{};
@@ -33,7 +35,7 @@ struct TextureUnits {
   uint32_t client_active = 0;  // glClientActiveTexture - GL_TEXTURE0
   // Texture objects of the share group (Context's constructor shares it with share_list).
   std::shared_ptr<TextureStore> store = std::make_shared<TextureStore>();
-  // GL_PROXY_TEXTURE_1D/2D/3D/CUBE_MAP: per context, images without texels.
+  // GL_PROXY_TEXTURE_1D/2D/3D/CUBE_MAP/RECTANGLE_ARB: per context, images without texels.
   std::array<std::shared_ptr<TextureObject>, kSlotCount> proxies = make_proxies();
 
   TextureUnit& active_unit() { return units[active]; }

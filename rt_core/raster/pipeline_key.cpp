@@ -31,6 +31,7 @@ uint32_t target_code(uint32_t target) {
     case GL_TEXTURE_1D:
       return 1;
     case GL_TEXTURE_2D:
+    case GL_TEXTURE_RECTANGLE_ARB:  // sampled as 2D with normalized coordinates (GLPT_UNIT_RECT)
       return 2;
     case GL_TEXTURE_3D:
       return 3;
@@ -353,6 +354,7 @@ DrawSetup make_draw_setup(const rec::StateSnapshot& state, const DrawContext& co
     if (sampling.clamp_per_filter) config |= GLPT_UNIT_CLAMP_PER_FILTER;
     if (sampling.compare) config |= GLPT_UNIT_COMPARE;
     if (tex.texel_format == rec::TexelFormat::kDepth32f) config |= GLPT_UNIT_DEPTH;
+    if (unit.target == GL_TEXTURE_RECTANGLE_ARB) config |= GLPT_UNIT_RECT;
     sc[GLPT_SC_UNIT0 + u] = config;
     if (env.mode == GL_COMBINE) {
       uint32_t combine =

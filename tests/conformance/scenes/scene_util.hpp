@@ -44,6 +44,8 @@ void grid(float x0, float y0, float x1, float y1, int n);
 void cube(float h);
 // A single quad with texture coordinates 0..1 (counter-clockwise from the bottom-left).
 void quad(float x0, float y0, float x1, float y1, float z = 0.0f);
+// A quad of x0..x1, y0..y1 (z = 0) with texture coordinates s0..s1, t0..t1.
+void textured_quad(float x0, float y0, float x1, float y1, float s0, float t0, float s1, float t1);
 // A triangle at z = 0 with a red, a green and a blue corner, smooth-shaded between them.
 void rgb_triangle(float x0, float y0, float x1, float y1, float x2, float y2);
 // A quad at z = 0 with its own RGBA colour at each corner: bottom-left, bottom-right, top-right,

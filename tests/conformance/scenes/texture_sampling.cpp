@@ -22,20 +22,6 @@ std::vector<uint8_t> distinct_texels() {
   return texels;
 }
 
-// A quad of x0..x1, y0..y1 with texture coordinates s0..s1, t0..t1.
-void textured_quad(float x0, float y0, float x1, float y1, float s0, float t0, float s1, float t1) {
-  glBegin(GL_QUADS);
-  glTexCoord2f(s0, t0);
-  glVertex2f(x0, y0);
-  glTexCoord2f(s1, t0);
-  glVertex2f(x1, y0);
-  glTexCoord2f(s1, t1);
-  glVertex2f(x1, y1);
-  glTexCoord2f(s0, t1);
-  glVertex2f(x0, y1);
-  glEnd();
-}
-
 // A floor receding from the viewer with texture coordinates (s, t, r) = (s0..s1, t0..t1, 0.3).
 void receding_floor(float s0, float t0, float s1, float t1) {
   perspective(60.0, 1.0, 0.3, 30.0);
