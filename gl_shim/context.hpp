@@ -38,6 +38,10 @@
 
 namespace glpt {
 
+// The window-system API whose context wraps a Context (GLX and EGL contexts may both be current
+// on different threads of one program).
+enum class WindowSystem { kNone, kGlx, kEgl };
+
 class Context {
  public:
   // `shared` (may be null): a context whose display lists, texture and buffer objects this one
@@ -98,6 +102,7 @@ class Context {
   std::unique_ptr<FrameOutput> output;    // created when the first record is executed
   bool renderer_unavailable = false;      // creation failed: reported once, never retried
   void* window_system_context = nullptr;  // the GLX/EGL context wrapping this one
+  WindowSystem window_system = WindowSystem::kNone;  // which API window_system_context is of
 
   // --- accounting -------------------------------------------------------------------------------
   std::vector<uint64_t> unimplemented_calls;  // per CommandId

@@ -17,6 +17,7 @@
 struct __GLXcontextRec {
   explicit __GLXcontextRec(const __GLXcontextRec* share) : gl(share ? &share->gl : nullptr) {
     gl.window_system_context = this;
+    gl.window_system = glpt::WindowSystem::kGlx;
   }
   glpt::Context gl;
   Display* display = nullptr;  // of the last make-current
@@ -31,7 +32,7 @@ namespace {
 
 GLXContext current_glx() {
   glpt::Context* gl = glpt::current_context();
-  if (gl == nullptr) return nullptr;
+  if (gl == nullptr || gl->window_system != glpt::WindowSystem::kGlx) return nullptr;
   return static_cast<GLXContext>(gl->window_system_context);
 }
 
