@@ -44,22 +44,9 @@ if [ -n "$libgl" ] && [ ! -f "$libgl" ]; then
   exit 2
 fi
 
-tmp=$(mktemp -d "${TMPDIR:-/tmp}/glpt-glxgears.XXXXXX")
-out=$tmp/frames
-mkdir "$out"
-pid=""
-keep_tmp=1
-# shellcheck disable=SC2317  # called from the EXIT trap
-cleanup() {
-  if [ -n "$pid" ] && kill -0 "$pid" 2>/dev/null; then
-    kill "$pid" 2>/dev/null || true
-    wait "$pid" 2>/dev/null || true
-  fi
-  if [ "$keep_tmp" = 0 ]; then rm -rf "$tmp"; fi
-}
-trap cleanup EXIT
-
-count_frames() { find "$out" -maxdepth 1 -name 'frame_*.png' | wc -l; }
+# shellcheck source-path=SCRIPTDIR source=frames_lib.sh
+source "$here/frames_lib.sh"
+e2e_frames_setup glpt-glxgears
 
 preload=()
 if [ -n "$libgl" ]; then preload=(LD_PRELOAD="$libgl${LD_PRELOAD:+:$LD_PRELOAD}"); fi
@@ -87,21 +74,10 @@ report_and_exit() {
 }
 
 # 1. Wait for the frames.
-while :; do
-  n=$(count_frames)
-  [ "$n" -ge "$want_frames" ] && break
-  if ! kill -0 "$pid" 2>/dev/null; then
-    wait "$pid" && rc=0 || rc=$?
-    pid=""
-    fail "glxgears exited (status $rc) after writing only $n of $want_frames frames"
-    report_and_exit
-  fi
-  if [ $(($(date +%s) - start)) -ge "$wait_s" ]; then
-    fail "only $n of $want_frames frames after ${wait_s}s"
-    report_and_exit
-  fi
-  sleep 0.2
-done
+if ! wait_for_frames "$want_frames" "$wait_s" glxgears; then
+  fail "$wait_error"
+  report_and_exit
+fi
 echo "glxgears_test: $(count_frames) frames after $(($(date +%s) - start))s; sending Escape"
 
 # 2. Escape, then glxgears must exit by itself with status 0.

@@ -36,22 +36,9 @@ want_frames=10
 want_size=300x200
 [ -f "$libgl" ] || { echo "xscreensaver_gears_test: LIBGL not found: $libgl" >&2; exit 2; }
 
-tmp=$(mktemp -d "${TMPDIR:-/tmp}/glpt-xss-gears.XXXXXX")
-out=$tmp/frames
-mkdir "$out"
-pid=""
-keep_tmp=1
-# shellcheck disable=SC2317  # called from the EXIT trap
-cleanup() {
-  if [ -n "$pid" ] && kill -0 "$pid" 2>/dev/null; then
-    kill "$pid" 2>/dev/null || true
-    wait "$pid" 2>/dev/null || true
-  fi
-  if [ "$keep_tmp" = 0 ]; then rm -rf "$tmp"; fi
-}
-trap cleanup EXIT
-
-count_frames() { find "$out" -maxdepth 1 -name 'frame_*.png' | wc -l; }
+# shellcheck source-path=SCRIPTDIR source=frames_lib.sh
+source "$here/frames_lib.sh"
+e2e_frames_setup glpt-xss-gears
 failures=()
 fail() { failures+=("$1"); echo "xscreensaver_gears_test: FAIL: $1" >&2; }
 
@@ -60,20 +47,7 @@ env LD_PRELOAD="$libgl${LD_PRELOAD:+:$LD_PRELOAD}" GLPT_MODE=raster GLPT_OUTPUT=
   "$gears" -geometry "$want_size" >"$tmp/gears.stdout" 2>"$tmp/gears.stderr" &
 pid=$!
 
-start=$(date +%s)
-while [ "$(count_frames)" -lt "$want_frames" ]; do
-  if ! kill -0 "$pid" 2>/dev/null; then
-    wait "$pid" && rc=0 || rc=$?
-    pid=""
-    fail "gears exited (status $rc) after $(count_frames) of $want_frames frames"
-    break
-  fi
-  if [ $(($(date +%s) - start)) -ge "$wait_s" ]; then
-    fail "only $(count_frames) of $want_frames frames after ${wait_s}s"
-    break
-  fi
-  sleep 0.2
-done
+wait_for_frames "$want_frames" "$wait_s" gears || fail "$wait_error"
 if [ -n "$pid" ]; then
   kill "$pid" 2>/dev/null || true
   wait "$pid" 2>/dev/null || true
