@@ -13,6 +13,7 @@
 #define EGL_EGLEXT_PROTOTYPES 1
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
+#include "../common/x11_gl_test_util.hpp"
 // clang-format on
 
 #include <dlfcn.h>
@@ -69,13 +70,8 @@ class Egl : public ::testing::Test {
     XVisualInfo* vi = XGetVisualInfo(dpy_, VisualIDMask, &templ, &n);
     EXPECT_NE(vi, nullptr);
     if (vi == nullptr) return 0;
-    XSetWindowAttributes attr{};
-    attr.colormap = XCreateColormap(dpy_, RootWindow(dpy_, vi->screen), vi->visual, AllocNone);
-    window_ = XCreateWindow(dpy_, RootWindow(dpy_, vi->screen), 0, 0, w, h, 0, vi->depth,
-                            InputOutput, vi->visual, CWColormap, &attr);
+    window_ = glpt_test::create_mapped_window(dpy_, *vi, w, h);
     XFree(vi);
-    XMapWindow(dpy_, window_);
-    XSync(dpy_, False);
     return window_;
   }
   Display* dpy_ = nullptr;
@@ -83,26 +79,7 @@ class Egl : public ::testing::Test {
   Window window_ = 0;
 };
 
-// An unlit red quad over the left half on a blue background; returns the pixels at (x0, y) and
-// (x1, y) read back with glReadPixels.
-void draw_half_red(int x0, int x1, int y, unsigned char left[4], unsigned char right[4]) {
-  glClearColor(0, 0, 1, 1);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  glMatrixMode(GL_PROJECTION);
-  glLoadIdentity();
-  glOrtho(0, 1, 0, 1, -1, 1);
-  glMatrixMode(GL_MODELVIEW);
-  glLoadIdentity();
-  glColor3f(1, 0, 0);
-  glBegin(GL_QUADS);
-  glVertex2f(0, 0);
-  glVertex2f(0.5f, 0);
-  glVertex2f(0.5f, 1);
-  glVertex2f(0, 1);
-  glEnd();
-  glReadPixels(x0, y, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, left);
-  glReadPixels(x1, y, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, right);
-}
+using glpt_test::draw_half_red;
 
 // EGL 1.5 3.2, 3.3: displays, initialization, strings.
 TEST_F(Egl, DisplaysInitializeAndDescribeThemselves) {

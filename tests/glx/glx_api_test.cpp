@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <GL/gl.h>
 #include <GL/glx.h>
+#include "../common/x11_gl_test_util.hpp"
 // clang-format on
 
 #include <cstdlib>
@@ -29,12 +30,7 @@ class Glx : public ::testing::Test {
     XCloseDisplay(dpy_);
   }
   Window make_window(XVisualInfo* vi, int w, int h) {
-    XSetWindowAttributes attr{};
-    attr.colormap = XCreateColormap(dpy_, RootWindow(dpy_, vi->screen), vi->visual, AllocNone);
-    window_ = XCreateWindow(dpy_, RootWindow(dpy_, vi->screen), 0, 0, w, h, 0, vi->depth,
-                            InputOutput, vi->visual, CWColormap, &attr);
-    XMapWindow(dpy_, window_);
-    XSync(dpy_, False);
+    window_ = glpt_test::create_mapped_window(dpy_, *vi, w, h);
     return window_;
   }
   Display* dpy_ = nullptr;
@@ -138,24 +134,8 @@ TEST_F(Glx, ContextLifecycleAndAFrameReachesReadPixels) {
   glXQueryDrawable(dpy_, win, GLX_WIDTH, &width);
   EXPECT_EQ(width, 64u);
 
-  // An unlit red quad over the left half, on a blue background.
-  glClearColor(0, 0, 1, 1);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  glMatrixMode(GL_PROJECTION);
-  glLoadIdentity();
-  glOrtho(0, 1, 0, 1, -1, 1);
-  glMatrixMode(GL_MODELVIEW);
-  glLoadIdentity();
-  glColor3f(1, 0, 0);
-  glBegin(GL_QUADS);
-  glVertex2f(0, 0);
-  glVertex2f(0.5f, 0);
-  glVertex2f(0.5f, 1);
-  glVertex2f(0, 1);
-  glEnd();
   unsigned char left[4] = {}, right[4] = {};
-  glReadPixels(10, 24, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, left);
-  glReadPixels(50, 24, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, right);
+  glpt_test::draw_half_red(10, 50, 24, left, right);
   EXPECT_EQ(left[0], 255);
   EXPECT_EQ(left[2], 0);
   EXPECT_EQ(right[0], 0);
