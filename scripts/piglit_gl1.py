@@ -59,9 +59,6 @@ KNOWN_DIFFERENCES = {
         "Vulkan pipeline, and lavapipe compiles the whole pipeline where llvmpipe recompiles "
         "only a fragment variant; blend state as dynamic state (EXT_extended_dynamic_state3) "
         "would remove the compiles",
-    "spec@!opengl 1.1@max-texture-size":
-        "uses GL_TEXTURE_RECTANGLE without checking for ARB_texture_rectangle and loops on "
-        "uninitialised sizes when it is missing",
 }
 
 BEYOND_GL15 = re.compile(r"OpenGL [2-9]|GLSL|requires (GL_\w+)|Function")
