@@ -1,0 +1,34 @@
+// Reads apitrace traces (format version 5 and later; Snappy and Brotli containers): a stream
+// of calls in the order apitrace's own parser yields them. Never trusts the file: every length
+// is checked against the bytes that remain, and a trace cut at any byte ends cleanly with the
+// calls read so far.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <string>
+
+#include "replay/trace/trace_model.hpp"
+
+namespace glpt::trace {
+
+class TraceReader {
+ public:
+  virtual ~TraceReader() = default;
+
+  // Opens `path`; on failure returns nullptr and says why in `error` (one line, for users).
+  static std::unique_ptr<TraceReader> open(const std::string& path, std::string& error);
+  // The same over bytes already in memory (the fuzzer and tests use it).
+  static std::unique_ptr<TraceReader> open_memory(std::string bytes, std::string& error);
+
+  enum class Status { Call, End, Error };
+  // The next call. End: the trace ended (a truncated last call is dropped, not an error).
+  // Error: corrupt input; `error` says what and where; the reader stays at End afterwards.
+  virtual Status next(Call& call, std::string& error) = 0;
+
+  virtual uint32_t version() const = 0;                                  // format version
+  virtual const std::map<std::string, std::string>& properties() const = 0;  // version >= 6
+};
+
+}  // namespace glpt::trace
