@@ -139,6 +139,11 @@ void note_frame_content(Context& ctx) {
 }
 
 void end_frame(Context& ctx, bool swap) {
+  if (!ctx.render_frame_ends) {
+    ctx.recorder.seal();
+    start_new_record(ctx);
+    return;
+  }
   if (!ensure_output(ctx)) return;
   ctx.recorder.seal();
   std::vector<rt::QuerySamples> samples;

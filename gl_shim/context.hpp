@@ -103,6 +103,9 @@ class Context {
   bool renderer_unavailable = false;      // creation failed: reported once, never retried
   void* window_system_context = nullptr;  // the GLX/EGL context wrapping this one
   WindowSystem window_system = WindowSystem::kNone;  // which API window_system_context is of
+  // false: end_frame drops the frame's record instead of rendering it (glpt-replay's shards
+  // replay every frame's state but render only their own frames).
+  bool render_frame_ends = true;
 
   // --- accounting -------------------------------------------------------------------------------
   std::vector<uint64_t> unimplemented_calls;  // per CommandId
@@ -127,7 +130,8 @@ bool execute_record(Context& ctx);
 void note_frame_content(Context& ctx);
 
 // The end of a frame (swap, or glFlush/glFinish on a single-buffered drawable): executes the
-// record, then presents and writes PNG/stats (FrameOutput::end_frame).
+// record, then presents and writes PNG/stats (FrameOutput::end_frame). With
+// ctx.render_frame_ends false, drops the record instead (nothing is executed or presented).
 void end_frame(Context& ctx, bool swap);
 
 }  // namespace glpt

@@ -42,6 +42,9 @@ class Renderer::Impl {
   RenderMode mode() const { return settings_.mode; }
   const std::string& device_name() const { return device_->name(); }
   RasterRenderer& raster() { return raster_; }
+  void start_independent_frame(uint64_t frame_index) {
+    if (tracer_) tracer_->start_independent_frame(frame_index);
+  }
 
   // Throws on failure (Renderer::execute turns that into false + message).
   bool execute(const rec::FrameRecord& record, const rec::DrawableConfig& drawable,
@@ -166,6 +169,10 @@ bool Renderer::swap_buffers(std::string* error) {
     impl_->raster().swap_buffers();
     return true;
   });
+}
+
+void Renderer::start_independent_frame(uint64_t frame_index) {
+  impl_->start_independent_frame(frame_index);
 }
 
 }  // namespace glpt::rt

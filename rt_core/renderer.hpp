@@ -78,6 +78,10 @@ class Renderer {
   // contents, and the back buffer keeps them (Mesa's software swap does the same).
   bool swap_buffers(std::string* error);
 
+  // The next frame depends on no earlier one (glpt-replay's shards): path-traced accumulation
+  // restarts and its random sequence is seeded by `frame_index`. Raster mode has no such state.
+  void start_independent_frame(uint64_t frame_index);
+
  private:
   class Impl;
   explicit Renderer(std::unique_ptr<Impl> impl);

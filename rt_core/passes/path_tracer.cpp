@@ -114,6 +114,12 @@ void PathTracer::forget_previous_frame() noexcept {
   tlas_valid_ = false;
 }
 
+void PathTracer::start_independent_frame(uint64_t frame_index) noexcept {
+  forget_previous_frame();
+  seeded_by_frame_index_ = true;
+  seed_frame_index_ = frame_index;
+}
+
 glm::vec2 PathTracer::begin_frame(FrameSignature signature) {
   ++frame_number_;
   same_scene_ = signature == previous_signature_;
@@ -213,7 +219,9 @@ void PathTracer::trace(const TraceScene& scene, const TraceTargets& targets, Fra
   gpu::FrameUniforms uniforms{};
   // The seed changes every frame so accumulated frames (and restarted ones) see new samples.
   uniforms.image = glm::uvec4(scene.width, scene.height, scene.default_targets,
-                              static_cast<uint32_t>(frame_number_ * 0x9E3779B9u));
+                              static_cast<uint32_t>(
+                                  (seeded_by_frame_index_ ? seed_frame_index_ : frame_number_) *
+                                  0x9E3779B9u));
   uniforms.sampling = glm::uvec4(accumulated_samples_, frame_samples_, settings_.bounces,
                                  accumulated_samples_ + frame_samples_);
   float ao_radius = kAoRadiusSceneFraction * scene_.scene_bounds.diagonal();

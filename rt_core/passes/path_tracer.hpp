@@ -50,6 +50,11 @@ class PathTracer {
   void trace(const TraceScene& scene, const TraceTargets& targets, FrameStats& stats);
   // After a failure, or a frame that traced nothing: the next frame starts a new accumulation.
   void forget_previous_frame() noexcept;
+  // A frame that must not depend on the frames rendered before it (glpt-replay's shards render
+  // every nth frame and must give the same pixels as a whole replay): accumulation restarts and
+  // the random sequence of this and the following records is seeded by `frame_index` instead of
+  // the tracer's own count of frames.
+  void start_independent_frame(uint64_t frame_index) noexcept;
 
  private:
   PathTracer(const RenderSettings& settings, std::shared_ptr<VulkanDevice> device);
@@ -87,6 +92,8 @@ class PathTracer {
   uint32_t accumulated_samples_ = 0;  // before this frame
   uint32_t frame_samples_ = 0;        // this frame
   uint64_t frame_number_ = 0;
+  bool seeded_by_frame_index_ = false;  // start_independent_frame was called
+  uint64_t seed_frame_index_ = 0;
   SceneSetup scene_;  // kept to reuse its vectors' capacity
 };
 

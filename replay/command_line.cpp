@@ -1,0 +1,154 @@
+#include "replay/command_line.hpp"
+
+#include <charconv>
+#include <cstring>
+#include <string_view>
+
+#include "rt_core/render_settings.hpp"
+
+namespace glpt::replay {
+
+const char* const kUsage =
+    "usage: glpt-replay [options] TRACE\n"
+    "Replays an apitrace trace (apitrace trace --api gl|egl) headless, in this process, and\n"
+    "writes its frames as PNG. No X server is needed.\n"
+    "\n"
+    "  --out DIR            write the chosen frames as DIR/frame_NNNNNN.png (NNNNNN: the frame\n"
+    "                       index from 0; the same names for every backend)\n"
+    "  --frames LIST        frames to write, e.g. 10,20-30 (default: all)\n"
+    "  --every N            only frames whose index is a multiple of N\n"
+    "  --shard I/N          render only the chosen frames f with f % N == I, replaying the\n"
+    "                       state of all; N shards write exactly the frames of one replay\n"
+    "  --backend glpt|mesa  glpt (default) or real Mesa through OSMesa (the reference images)\n"
+    "  --mode path|raster   glpt's rendering mode (GLPT_MODE; default path)\n"
+    "  --spp N              samples per pixel per frame (GLPT_SPP)\n"
+    "  --bounces N          diffuse bounces (GLPT_BOUNCES)\n"
+    "  --max-spp N          at most N samples per pixel (GLPT_MAX_SPP)\n"
+    "  --light-size-deg D   angular radius of GL lights (GLPT_LIGHT_SIZE_DEG)\n"
+    "  --device SUBSTR      Vulkan device by name (GLPT_VK_DEVICE)\n"
+    "  --validation         Khronos validation layer (GLPT_VALIDATION=1)\n"
+    "  --quiet              no per-frame lines or progress\n"
+    "  --help               this text\n"
+    "\n"
+    "Every written frame is rendered from the same start (no accumulation across frames, its\n"
+    "random numbers seeded by its index), so it does not depend on which frames were rendered\n"
+    "before it. The per-frame lines go to stdout; progress and the closing summary (calls glpt\n"
+    "does not implement, calls the replayer does not know) to stderr.\n"
+    "\n"
+    "exit status: 0 ok, 1 replay failed (no renderer, cannot write PNG), 2 bad usage,\n"
+    "3 bad trace (cannot be read, or corrupt: the frames before the damage are written)\n";
+
+namespace {
+
+struct Flag {
+  const char* name;
+  const char* variable;  // GLPT_* it sets; nullptr for the replayer's own options
+  bool takes_value;
+};
+
+constexpr Flag kFlags[] = {
+    {"--out", nullptr, true},
+    {"--frames", nullptr, true},
+    {"--every", nullptr, true},
+    {"--shard", nullptr, true},
+    {"--backend", nullptr, true},
+    {"--quiet", nullptr, false},
+    {"--help", nullptr, false},
+    {"--mode", "GLPT_MODE", true},
+    {"--spp", "GLPT_SPP", true},
+    {"--bounces", "GLPT_BOUNCES", true},
+    {"--max-spp", "GLPT_MAX_SPP", true},
+    {"--light-size-deg", "GLPT_LIGHT_SIZE_DEG", true},
+    {"--device", "GLPT_VK_DEVICE", true},
+    {"--validation", "GLPT_VALIDATION", false},
+};
+
+}  // namespace
+
+bool parse_command_line(int argc, const char* const* argv, Options* options, std::string* error) {
+  for (int i = 1; i < argc; ++i) {
+    std::string_view arg = argv[i];
+    std::string value;
+    const size_t equals = arg.find('=');
+    const bool inline_value = arg.rfind("--", 0) == 0 && equals != std::string_view::npos;
+    if (inline_value) {
+      value = std::string(arg.substr(equals + 1));
+      arg = arg.substr(0, equals);
+    }
+    if (arg.rfind("--", 0) != 0 || arg == "--") {
+      if (arg == "--" && i + 1 < argc) arg = argv[++i];
+      if (!options->trace.empty()) {
+        *error =
+            "more than one trace given (\"" + options->trace + "\", \"" + std::string(arg) + "\")";
+        return false;
+      }
+      options->trace = std::string(arg);
+      continue;
+    }
+    const Flag* flag = nullptr;
+    for (const Flag& f : kFlags)
+      if (arg == f.name) flag = &f;
+    if (flag == nullptr) {
+      *error = "unknown option " + std::string(arg);
+      return false;
+    }
+    if (flag->takes_value && !inline_value) {
+      if (i + 1 >= argc) {
+        *error = std::string(flag->name) + " needs a value";
+        return false;
+      }
+      value = argv[++i];
+    } else if (!flag->takes_value && inline_value) {
+      *error = std::string(flag->name) + " takes no value";
+      return false;
+    }
+    if (flag->variable != nullptr) {
+      options->environment.emplace_back(flag->variable, flag->takes_value ? value : "1");
+    } else if (arg == "--out") {
+      options->out_dir = value;
+    } else if (arg == "--frames") {
+      if (!options->frames.parse_frames(value, error)) return false;
+    } else if (arg == "--every") {
+      uint64_t every = 0;
+      const auto [end, ec] = std::from_chars(value.data(), value.data() + value.size(), every);
+      if (ec != std::errc() || end != value.data() + value.size() || every == 0) {
+        *error = "--every: want a whole number >= 1, got \"" + value + "\"";
+        return false;
+      }
+      options->frames.set_every(every);
+    } else if (arg == "--shard") {
+      if (!options->frames.parse_shard(value, error)) return false;
+    } else if (arg == "--backend") {
+      if (value != "glpt" && value != "mesa") {
+        *error = "--backend: want glpt or mesa, got \"" + value + "\"";
+        return false;
+      }
+      options->backend = value;
+    } else if (arg == "--quiet") {
+      options->quiet = true;
+    } else if (arg == "--help") {
+      options->help = true;
+    }
+  }
+  if (options->help) return true;
+  // The quality flags are checked as the renderer will read them.
+  std::string warning;
+  rt::parse_render_settings(
+      [&](const char* name) -> const char* {
+        for (const auto& [variable, value] : options->environment)
+          if (variable == name) return value.c_str();
+        return nullptr;
+      },
+      &warning);
+  if (!warning.empty()) {
+    *error = "bad quality flag: " + warning.substr(warning.find(": ") + 2);
+    return false;
+  }
+  if (options->trace.empty()) {
+    *error = "no trace given";
+    return false;
+  }
+  return true;
+}
+
+}  // namespace glpt::replay

@@ -1,0 +1,38 @@
+// Which frames glpt-replay renders and writes: --frames, --every and --shard.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace glpt::replay {
+
+class FrameSelection {
+ public:
+  // "10,20-30": frame indices and inclusive ranges, from 0. False + message if malformed.
+  bool parse_frames(const std::string& text, std::string* error);
+  // "I/N" with 0 <= I < N.
+  bool parse_shard(const std::string& text, std::string* error);
+  void set_every(uint64_t every) { every_ = every; }
+
+  // Chosen by --frames and --every (all frames by default).
+  bool chosen(uint64_t frame) const;
+  // Rendered by this shard: a chosen frame f with f % N == I. The other frames replay their
+  // state only.
+  bool rendered(uint64_t frame) const {
+    return chosen(frame) && frame % shard_count_ == shard_index_;
+  }
+  // No frame after this one is chosen (the replay can stop); UINT64_MAX without --frames.
+  uint64_t last_chosen() const;
+
+  uint32_t shard_index() const { return shard_index_; }
+  uint32_t shard_count() const { return shard_count_; }
+
+ private:
+  std::vector<std::pair<uint64_t, uint64_t>> ranges_;  // inclusive; empty: all frames
+  uint64_t every_ = 1;
+  uint32_t shard_index_ = 0, shard_count_ = 1;
+};
+
+}  // namespace glpt::replay
