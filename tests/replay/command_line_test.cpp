@@ -1,0 +1,88 @@
+// glpt-replay's command line and frame selection.
+#include "replay/command_line.hpp"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "replay/frame_selection.hpp"
+
+namespace {
+
+using glpt::replay::FrameSelection;
+using glpt::replay::Options;
+
+bool parse(std::vector<const char*> args, Options* options, std::string* error) {
+  args.insert(args.begin(), "glpt-replay");
+  return glpt::replay::parse_command_line(static_cast<int>(args.size()), args.data(), options,
+                                          error);
+}
+
+TEST(FrameSelection, FramesAndRanges) {
+  FrameSelection s;
+  std::string error;
+  ASSERT_TRUE(s.parse_frames("3,10-12", &error)) << error;
+  std::vector<uint64_t> chosen;
+  for (uint64_t f = 0; f < 20; ++f)
+    if (s.chosen(f)) chosen.push_back(f);
+  EXPECT_EQ(chosen, (std::vector<uint64_t>{3, 10, 11, 12}));
+  EXPECT_EQ(s.last_chosen(), 12u);
+  for (const char* bad : {"", "1,", "a", "5-3", "-2", "1-", "1.5"})
+    EXPECT_FALSE(s.parse_frames(bad, &error)) << bad;
+}
+
+TEST(FrameSelection, ShardsSplitTheChosenFramesByIndex) {
+  FrameSelection s;
+  std::string error;
+  s.set_every(2);
+  ASSERT_TRUE(s.parse_shard("1/3", &error)) << error;
+  std::vector<uint64_t> rendered;
+  for (uint64_t f = 0; f < 20; ++f)
+    if (s.rendered(f)) rendered.push_back(f);
+  // Chosen: the even frames; of those, f % 3 == 1.
+  EXPECT_EQ(rendered, (std::vector<uint64_t>{4, 10, 16}));
+  EXPECT_EQ(s.last_chosen(), UINT64_MAX);
+  for (const char* bad : {"3/3", "1", "1/0", "/2", "a/b", "-1/2"})
+    EXPECT_FALSE(s.parse_shard(bad, &error)) << bad;
+}
+
+TEST(CommandLine, QualityFlagsBecomeTheRenderersVariables) {
+  Options o;
+  std::string error;
+  ASSERT_TRUE(
+      parse({"--mode", "raster", "--spp=4", "--out", "d", "x.trace", "--validation"}, &o, &error))
+      << error;
+  EXPECT_EQ(o.trace, "x.trace");
+  EXPECT_EQ(o.out_dir, "d");
+  using Env = std::vector<std::pair<std::string, std::string>>;
+  EXPECT_EQ(o.environment,
+            (Env{{"GLPT_MODE", "raster"}, {"GLPT_SPP", "4"}, {"GLPT_VALIDATION", "1"}}));
+}
+
+TEST(CommandLine, BadUsageIsRejected) {
+  const std::vector<std::vector<const char*>> bad = {
+      {},                             // no trace
+      {"a.trace", "b.trace"},         // two traces
+      {"--spp", "0", "a.trace"},      // out of range
+      {"--mode", "fast", "a.trace"},  // no such mode
+      {"--backend", "d3d", "a.trace"},
+      {"--every", "0", "a.trace"},
+      {"--frames", "x", "a.trace"},
+      {"--shard", "2/2", "a.trace"},
+      {"--bogus", "a.trace"},
+      {"a.trace", "--out"},  // missing value
+      {"--quiet=1", "a.trace"},
+  };
+  for (const auto& args : bad) {
+    Options o;
+    std::string error;
+    EXPECT_FALSE(parse(args, &o, &error)) << (args.empty() ? "(none)" : args[0]);
+    EXPECT_FALSE(error.empty());
+  }
+  Options o;
+  std::string error;
+  EXPECT_TRUE(parse({"--help"}, &o, &error));
+  EXPECT_TRUE(o.help);
+}
+
+}  // namespace
