@@ -4,7 +4,6 @@
 #include "replay/trace/trace_container.hpp"
 
 #include <brotli/decode.h>
-#include <snappy-sinksource.h>
 #include <snappy.h>
 #include <sys/stat.h>
 #include <zlib.h>
@@ -53,22 +52,54 @@ class MemoryInput final : public ByteInput {
   std::string bytes_;
 };
 
-// A snappy::Sink over a buffer of fixed capacity that drops what does not fit, for the
-// "as much as possible" decoding of a cut chunk (snappy's own array sink does not check bounds).
-class BoundedSink final : public snappy::Sink {
- public:
-  explicit BoundedSink(std::vector<char>& out) : out_(out) {}
-  void Append(const char* bytes, size_t n) override {
-    size_t fit = std::min(n, out_.size() - used_);
-    if (bytes != out_.data() + used_) std::memmove(out_.data() + used_, bytes, fit);
-    used_ += fit;
+// Decodes the Snappy elements (Snappy's format_description.txt) of a chunk the input ends
+// inside, as far as they are complete; a literal is kept up to the cut. Written out rather than
+// snappy::UncompressAsMuchAsPossible, which needs an output buffer of the chunk's declared size
+// (up to 64 MiB, however few bytes the file holds); this one writes at most `out.size()` bytes,
+// sized by what the bytes present can produce. Returns the bytes decoded, or SIZE_MAX if an
+// element is invalid (a copy from before the start).
+size_t decode_cut_snappy(const uint8_t* in, size_t n, std::vector<char>& out) {
+  size_t pos = 0, produced = 0;
+  for (unsigned shift = 0; pos < n && shift < 35; shift += 7) {  // the length preamble
+    if (!(in[pos++] & 0x80)) break;
   }
-  size_t used() const { return used_; }
-
- private:
-  std::vector<char>& out_;
-  size_t used_ = 0;
-};
+  while (pos < n) {
+    const uint8_t tag = in[pos];
+    size_t length = 0, offset = 0;
+    if ((tag & 3) == 0) {  // literal
+      size_t extra = (tag >> 2) >= 60 ? (tag >> 2) - 59 : 0;
+      if (pos + 1 + extra > n) break;
+      length = (tag >> 2) + 1;
+      if (extra) {
+        length = 0;
+        for (size_t i = 0; i < extra; ++i) length |= size_t(in[pos + 1 + i]) << (8 * i);
+        length += 1;
+      }
+      pos += 1 + extra;
+      size_t take = std::min({length, n - pos, out.size() - produced});
+      std::memcpy(out.data() + produced, in + pos, take);
+      produced += take;
+      pos += take;
+      if (take < length) break;  // the cut (or the buffer's end) is inside this literal
+      continue;
+    }
+    const size_t tag_bytes = (tag & 3) == 1 ? 2 : (tag & 3) == 2 ? 3 : 5;
+    if (pos + tag_bytes > n) break;
+    if ((tag & 3) == 1) {
+      length = 4 + ((tag >> 2) & 7);
+      offset = (size_t(tag >> 5) << 8) | in[pos + 1];
+    } else {
+      length = 1 + (tag >> 2);
+      for (size_t i = 1; i < tag_bytes; ++i) offset |= size_t(in[pos + i]) << (8 * (i - 1));
+    }
+    pos += tag_bytes;
+    if (offset == 0 || offset > produced || length > out.size() - produced) return SIZE_MAX;
+    for (size_t i = 0; i < length; ++i, ++produced) {  // may overlap itself: byte by byte
+      out[produced] = out[produced - offset];
+    }
+  }
+  return produced;
+}
 
 // apitrace's Snappy container: 'a' 't', then chunks of (uint32 LE compressed length, raw
 // Snappy data). A zero length ends the stream, as in apitrace.
@@ -119,11 +150,15 @@ class SnappyDecompressor final : public Decompressor {
         ended_ = true;
         // What `available` bytes can produce is bounded by the same ratio.
         uncompressed_.resize(std::min<uint64_t>(uncompressed, kMaxSnappyRatio * available));
-        snappy::ByteArraySource source(compressed_.data(), available);
-        BoundedSink sink(uncompressed_);
-        snappy::UncompressAsMuchAsPossible(&source, &sink);
-        if (sink.used() == 0) break;
-        block = std::string_view(uncompressed_.data(), sink.used());
+        size_t produced = decode_cut_snappy(reinterpret_cast<const uint8_t*>(compressed_.data()),
+                                            available, uncompressed_);
+        if (produced == SIZE_MAX) {
+          error = "corrupt Snappy chunk at file offset " + std::to_string(chunk_offset) +
+                  " (the file also ends inside it)";
+          return Result::Error;
+        }
+        if (produced == 0) break;
+        block = std::string_view(uncompressed_.data(), produced);
         return Result::Block;
       }
       uncompressed_.resize(uncompressed);
@@ -292,10 +327,14 @@ std::unique_ptr<Decompressor> make_decompressor(std::unique_ptr<ByteInput> input
     error = "empty file";
     return nullptr;
   }
-  if (got >= 2 && magic[0] == 'a' && magic[1] == 't') {
+  if (got < 2) {
+    error = "too short to be a trace (1 byte)";
+    return nullptr;
+  }
+  if (magic[0] == 'a' && magic[1] == 't') {
     return std::make_unique<SnappyDecompressor>(std::move(input));
   }
-  if (got >= 2 && magic[0] == 0x1f && magic[1] == 0x8b) {
+  if (magic[0] == 0x1f && magic[1] == 0x8b) {
     return std::make_unique<GzipDecompressor>(std::move(input));
   }
   if (got == 4 && magic[0] == 0x28 && magic[1] == 0xb5 && magic[2] == 0x2f && magic[3] == 0xfd) {

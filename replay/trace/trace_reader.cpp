@@ -235,7 +235,7 @@ class ApitraceReader final : public TraceReader {
       if (version_ < kMinVersion) {
         error = "trace format version " + std::to_string(version_) +
                 " is too old (glpt reads version " + std::to_string(kMinVersion) +
-                " and later, apitrace 7.0 and later; re-record it)";
+                " and later; re-record it with a newer apitrace)";
         return false;
       }
       if (version_ > kMaxVersion) {

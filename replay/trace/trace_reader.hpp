@@ -27,15 +27,15 @@ class TraceReader {
   // Error: corrupt input; `error` says what and where; the reader stays at End afterwards.
   virtual Status next(Call& call, std::string& error) = 0;
 
-  virtual uint32_t version() const = 0;                                      // format version
+  virtual uint32_t version() const = 0;                                  // format version
   virtual const std::map<std::string, std::string>& properties() const = 0;  // version >= 6
 
-  // Format versions read: 5 (apitrace 7.0, backtraces) and 6 (apitrace 8.0 onwards).
+  // Format versions read: 5 (call backtraces) and 6 (properties, fake-call flag; apitrace today).
   static constexpr uint32_t kMinVersion = 5;
   static constexpr uint32_t kMaxVersion = 6;
   // Bounds that a valid trace never reaches; input beyond them is reported as an Error.
   static constexpr unsigned kMaxValueDepth = 64;           // arrays/structs/reprs nested
-  static constexpr uint64_t kMaxValuesPerCall = 1u << 22;  // values (all nesting levels)
+  static constexpr uint64_t kMaxValuesPerCall = 1u << 20;  // values (all nesting levels)
   static constexpr size_t kMaxPendingCalls = 4096;         // entered and not yet left
 };
 
