@@ -78,6 +78,18 @@ struct Call {
   std::vector<Value> args;  // by position; missing arguments are Null
   Value ret;                // Null when the call returns nothing or had no LEAVE event
   bool complete = false;    // both ENTER and LEAVE events were read
+  uint32_t flags = 0;       // per-call flags recorded in the trace: kCallFlagFake
+  bool has_ret = false;     // a return value was recorded (`ret` may still be a Null pointer)
 };
+
+// Flag bits, with apitrace's values (its trace_model.hpp, CALL_FLAG_*).
+// Call::flags: the tracer emitted this call itself to record state the application had set up
+// before tracing began or in a way the tracer cannot see; it is replayed like any other call.
+inline constexpr uint32_t kCallFlagFake = 1u << 0;
+// FunctionSig::flags, set by the reader from the function's name for the GL-family calls that
+// present a frame (glXSwapBuffers, eglSwapBuffers*, wglSwap*Buffers, CGLFlushDrawable,
+// glFrameTerminatorGREMEDY): the call swaps the render target and/or ends a frame.
+inline constexpr uint32_t kCallFlagSwapRenderTarget = 1u << 4;
+inline constexpr uint32_t kCallFlagEndFrame = 1u << 5;
 
 }  // namespace glpt::trace

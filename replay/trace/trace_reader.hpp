@@ -29,6 +29,14 @@ class TraceReader {
 
   virtual uint32_t version() const = 0;                                  // format version
   virtual const std::map<std::string, std::string>& properties() const = 0;  // version >= 6
+
+  // Format versions read: 5 (call backtraces) and 6 (properties, fake-call flag; apitrace today).
+  static constexpr uint32_t kMinVersion = 5;
+  static constexpr uint32_t kMaxVersion = 6;
+  // Bounds that a valid trace never reaches; input beyond them is reported as an Error.
+  static constexpr unsigned kMaxValueDepth = 64;           // arrays/structs/reprs nested
+  static constexpr uint64_t kMaxValuesPerCall = 1u << 20;  // values (all nesting levels)
+  static constexpr size_t kMaxPendingCalls = 4096;         // entered and not yet left
 };
 
 }  // namespace glpt::trace
