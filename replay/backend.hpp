@@ -40,12 +40,17 @@ class Backend {
   // glViewport, the sizes of windows not being in GL traces).
   virtual bool current_size(uint32_t* width, uint32_t* height) = 0;
   virtual void resize_current(uint32_t width, uint32_t height) = 0;
+  // The current context starts frame `frame_index` (after make-current and after each frame
+  // end): what varies per frame (path tracing's random numbers) is seeded by the index and
+  // nothing carries over from earlier frames, so a frame's pixels do not depend on which frames
+  // were rendered before it. Everything the frame renders, reads within it included, follows.
+  virtual void begin_frame(uint64_t /*frame_index*/) {}
   // The end of the current context's frame: a swap (`swap`) or the glFlush/glFinish call
   // `flush` of a single-buffered surface (called through the backend). `render` false: a frame
   // no one looks at (another shard's), which the backend may skip rendering; otherwise the
-  // frame's image lands in `image`. `frame_index` seeds what varies per frame (path tracing).
-  virtual bool end_frame(bool swap, GlProc flush, bool render, uint64_t frame_index,
-                         FrameImage* image, std::string* error) = 0;
+  // frame's image lands in `image`.
+  virtual bool end_frame(bool swap, GlProc flush, bool render, FrameImage* image,
+                         std::string* error) = 0;
   // Calls this backend counted as not implemented, by command name, summed over contexts.
   virtual std::vector<std::pair<std::string, uint64_t>> unimplemented_calls() const = 0;
   // What the last rendered frame cost (milliseconds of rendering), 0 if unknown.

@@ -82,7 +82,12 @@ class GlptBackend final : public Backend {
       if (target.get() == ctx->target) target->resize(width, height);
   }
 
-  bool end_frame(bool swap, GlProc flush, bool render, uint64_t frame_index, FrameImage* image,
+  void begin_frame(uint64_t frame_index) override {
+    Context* ctx = current_context();
+    if (ctx != nullptr && ctx->output) ctx->output->renderer().start_independent_frame(frame_index);
+  }
+
+  bool end_frame(bool swap, GlProc flush, bool render, FrameImage* image,
                  std::string* /*error*/) override {
     Context* ctx = current_context();
     if (ctx == nullptr || ctx->target == nullptr) return true;
@@ -90,7 +95,6 @@ class GlptBackend final : public Backend {
     for (auto& [id, surface] : surfaces_)
       if (surface.get() == ctx->target) target = surface.get();
     const uint64_t presented = target ? target->presented_frames() : 0;
-    if (render && ctx->output) ctx->output->renderer().start_independent_frame(frame_index);
     ctx->render_frame_ends = render;
     if (swap)
       glpt::end_frame(*ctx, /*swap=*/true);

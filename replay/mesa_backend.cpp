@@ -120,8 +120,8 @@ class MesaBackend final : public Backend {
     bind();
   }
 
-  bool end_frame(bool /*swap*/, GlProc flush, bool render, uint64_t /*frame_index*/,
-                 FrameImage* image, std::string* /*error*/) override {
+  bool end_frame(bool /*swap*/, GlProc flush, bool render, FrameImage* image,
+                 std::string* /*error*/) override {
     if (current_ == nullptr || current_surface_ == nullptr) return true;
     if (flush != nullptr) flush();
     if (!render || image == nullptr) return true;

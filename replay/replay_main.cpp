@@ -66,7 +66,7 @@ int run(const Options& options) {
   std::string error;
   std::unique_ptr<trace::TraceReader> reader = trace::TraceReader::open(options.trace, error);
   if (!reader) {
-    std::fprintf(stderr, "glpt-replay: %s: %s\n", options.trace.c_str(), error.c_str());
+    std::fprintf(stderr, "glpt-replay: %s\n", error.c_str());  // the reader names the file
     return kExitBadTrace;
   }
   if (!options.out_dir.empty()) {
@@ -119,7 +119,7 @@ int run(const Options& options) {
     const trace::TraceReader::Status s = reader->next(call, error);
     if (s == trace::TraceReader::Status::End) break;
     if (s == trace::TraceReader::Status::Error) {
-      std::fprintf(stderr, "glpt-replay: %s: %s\n", options.trace.c_str(), error.c_str());
+      std::fprintf(stderr, "glpt-replay: %s\n", error.c_str());  // the reader names the file
       status = kExitBadTrace;
       break;
     }

@@ -127,8 +127,9 @@ bool Replayer::end_frame(bool swap, GlProc flush, std::string* error) {
   if (contexts_.find(current_context_) == contexts_.end()) return true;
   const bool render = want_frame_(frame);
   FrameImage image;
-  if (!backend_.end_frame(swap, flush, render, frame, render ? &image : nullptr, error))
-    return false;
+  const bool ended = backend_.end_frame(swap, flush, render, render ? &image : nullptr, error);
+  backend_.begin_frame(counts_.frames);
+  if (!ended) return false;
   if (!render) return true;
   ++counts_.frames_rendered;
   if (image.rgba.empty()) return true;  // nothing presented (no drawable, renderer failed)

@@ -129,8 +129,11 @@ bool Replayer::make_current(uint64_t surface, uint64_t context, std::string* err
   if (inserted) s->second.double_buffered = context_double_buffered_[context];
   current_context_ = context;
   current_surface_ = surface;
-  return backend_.make_current(it->second.handle, surface, s->second.width, s->second.height,
-                               s->second.double_buffered, error);
+  if (!backend_.make_current(it->second.handle, surface, s->second.width, s->second.height,
+                             s->second.double_buffered, error))
+    return false;
+  backend_.begin_frame(counts_.frames);
+  return true;
 }
 
 }  // namespace glpt::replay

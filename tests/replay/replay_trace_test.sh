@@ -1,0 +1,98 @@
+#!/usr/bin/env bash
+# glpt-replay on a real trace (tests/replay/data/gearsdet.trace: tests/programs/gearsdet
+# --size 96x80 --frames 3, recorded with `apitrace trace --api gl`). The commands behind the
+# ctest tests in CMakeLists.txt; no X server is used (DISPLAY is unset).
+#   replay_trace_test.sh mesa-vs-raster REPLAY IMGCOMPARE TRACE OUT FRAMES
+#       Real Mesa (--backend mesa) and glpt's raster mode replay TRACE: both write FRAMES frames
+#       with the same names, and raster mode's are within the conformance tolerance of Mesa's.
+#   replay_trace_test.sh shards REPLAY TRACE OUT N
+#       Path mode: N shards (--shard i/N) write byte-identical PNGs to those of one replay.
+#   replay_trace_test.sh damaged REPLAY TRACE OUT
+#       Damaged traces end with the bad-trace exit code (3) and a message, never a crash; a
+#       trace cut short replays what it holds (exit 0).
+set -euo pipefail
+unset DISPLAY WAYLAND_DISPLAY
+export GLPT_QUIET=1
+
+mode=$1
+shift
+
+case "$mode" in
+  mesa-vs-raster)
+    replay=$1 imgcompare=$2 trace=$3 out=$4 frames=$5
+    rm -rf "$out"
+    "$replay" --quiet --backend mesa --out "$out/mesa" "$trace"
+    "$replay" --quiet --mode raster --out "$out/raster" "$trace"
+    count=$(find "$out/mesa" -name 'frame_*.png' | wc -l)
+    [[ $count -eq $frames ]] || { echo "mesa wrote $count frames, expected $frames"; exit 1; }
+    for reference in "$out"/mesa/frame_*.png; do
+      "$imgcompare" within "$reference" "$out/raster/$(basename "$reference")"
+    done
+    ;;
+  shards)
+    replay=$1 trace=$2 out=$3 n=$4
+    rm -rf "$out"
+    "$replay" --quiet --mode path --out "$out/whole" "$trace"
+    for ((i = 0; i < n; i++)); do
+      "$replay" --quiet --mode path --shard "$i/$n" --out "$out/shards" "$trace"
+    done
+    whole=$(cd "$out/whole" && ls)
+    shards=$(cd "$out/shards" && ls)
+    [[ -n $whole && $whole == "$shards" ]] || {
+      echo "different frames: whole [$whole] shards [$shards]"
+      exit 1
+    }
+    for f in $whole; do cmp "$out/whole/$f" "$out/shards/$f"; done
+    echo "identical: $(echo $whole)"
+    ;;
+  damaged)
+    replay=$1 trace=$2 out=$3
+    rm -rf "$out"
+    mkdir -p "$out"
+    # Exit status of REPLAY on FILE must be WANT; a crash (>= 128) never passes.
+    expect() {
+      local want=$1 file=$2 status=0
+      "$replay" --quiet --mode raster --out "$out/frames" "$file" >"$out/log" 2>&1 || status=$?
+      if [[ $status -ne $want ]]; then
+        echo "$(basename "$file"): exit $status, expected $want"
+        cat "$out/log"
+        exit 1
+      fi
+      if [[ $want -eq 3 ]] && ! grep -q "glpt-replay: " "$out/log"; then
+        echo "$(basename "$file"): no message"
+        exit 1
+      fi
+    }
+    size=$(stat -c %s "$trace")
+    : >"$out/empty.trace"
+    expect 3 "$out/empty.trace"
+    head -c 4096 /dev/zero >"$out/zeros.trace"
+    expect 3 "$out/zeros.trace"
+    # Bytes flipped all through the compressed stream.
+    python3 - "$trace" "$out/flipped.trace" <<'PY'
+import sys
+data = bytearray(open(sys.argv[1], "rb").read())
+for i in range(64, len(data), 499):
+    data[i] ^= 0x5A
+open(sys.argv[2], "wb").write(data)
+PY
+    expect 3 "$out/flipped.trace"
+    for cut in 1 2 17 $((size / 3)) $((size / 2)) $((size - 1)); do
+      head -c "$cut" "$trace" >"$out/cut.trace"
+      status=0
+      "$replay" --quiet --mode raster --out "$out/frames" "$out/cut.trace" >"$out/log" 2>&1 ||
+        status=$?
+      # A cut inside the header is not a trace (3); a cut later ends the replay early (0).
+      if [[ $status -ne 0 && $status -ne 3 ]]; then
+        echo "cut at $cut bytes: exit $status"
+        cat "$out/log"
+        exit 1
+      fi
+    done
+    echo "damaged traces rejected cleanly"
+    ;;
+  *)
+    echo "unknown mode $mode" >&2
+    exit 2
+    ;;
+esac
