@@ -4,6 +4,7 @@
 #include <cstring>
 
 #include "gl/gl_enums.h"
+#include "replay/image_sizes.hpp"
 
 namespace glpt::replay {
 
@@ -84,6 +85,54 @@ const void* CallContext::pointer(size_t i, PointerRole role) {
   if (role == PointerRole::kIndices) binding = GL_ELEMENT_ARRAY_BUFFER_BINDING;
   if (binding == 0 || gl_.get_integer(binding) == 0) return nullptr;
   return reinterpret_cast<const void*>(static_cast<uintptr_t>(v.as_uint()));
+}
+
+namespace {
+
+// Padding beyond this is not done: such a call is replayed without its data (NULL).
+constexpr uint64_t kMaxPaddedBytes = uint64_t{1} << 30;
+
+}  // namespace
+
+const void* CallContext::padded(const trace::Value& v, uint64_t needed) {
+  const void* data = v.data();
+  if (data == nullptr) {
+    if (v.kind != trace::ValueKind::Array) return nullptr;  // NULL (or an unusable pointer)
+    padded_.clear();
+    for (const trace::Value& e : v.elements) padded_.push_back(static_cast<char>(e.as_uint()));
+    data = padded_.data();
+    if (padded_.size() >= needed) return data;
+  } else if (v.size() >= needed) {
+    return data;
+  }
+  if (needed > kMaxPaddedBytes) return nullptr;
+  if (data != padded_.data()) padded_.assign(static_cast<const char*>(data), v.size());
+  padded_.resize(needed, '\0');
+  return padded_.data();
+}
+
+const void* CallContext::image(size_t i, int64_t width, int64_t height, int64_t depth,
+                               GLenum format, GLenum type, bool three_d) {
+  const trace::Value& v = arg(i);
+  if (v.kind == trace::ValueKind::Null) return nullptr;
+  UnpackModes modes;
+  modes.row_length = gl_.get_integer(GL_UNPACK_ROW_LENGTH);
+  modes.skip_rows = gl_.get_integer(GL_UNPACK_SKIP_ROWS);
+  modes.skip_pixels = gl_.get_integer(GL_UNPACK_SKIP_PIXELS);
+  modes.alignment = gl_.get_integer(GL_UNPACK_ALIGNMENT);
+  if (three_d) {
+    modes.image_height = gl_.get_integer(GL_UNPACK_IMAGE_HEIGHT);
+    modes.skip_images = gl_.get_integer(GL_UNPACK_SKIP_IMAGES);
+  }
+  // An unknown format or type (GL reports the error and reads nothing) or an absurd size: the
+  // command gets no data.
+  const std::optional<uint64_t> needed =
+      image_bytes(width, height, depth, format, type, three_d, modes);
+  return needed ? padded(v, *needed) : nullptr;
+}
+
+const void* CallContext::sized_data(size_t i, int64_t size) {
+  return padded(arg(i), size > 0 ? static_cast<uint64_t>(size) : 0);
 }
 
 template <typename T>

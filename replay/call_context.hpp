@@ -4,6 +4,7 @@
 // (gen/gen_replay_dispatch.py) and the hand-written calls (special_calls.cpp) use it.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <map>
@@ -107,22 +108,32 @@ class CallContext {
   GLuint name(NameKind kind, size_t i) const { return state_.names->map(kind, arg(i).as_uint()); }
   // A `const void *` argument as this run must pass it (see PointerRole).
   const void* pointer(size_t i, PointerRole role);
+  // An image in client memory of the given shape, as the current unpack modes lay it out
+  // (image_sizes.hpp): the recorded bytes, padded with zeros if the trace holds fewer than GL
+  // will read; nullptr for NULL and for images too large to be real.
+  const void* image(size_t i, int64_t width, int64_t height, int64_t depth, GLenum format,
+                    GLenum type, bool three_d);
+  // Data whose size is another argument (glBufferData, glCompressedTexImage*), padded likewise.
+  const void* sized_data(size_t i, int64_t size);
 
  private:
   const trace::Call& call_;
   GlProc proc_;
   ReplayContextState& state_;
   const GlFunctions& gl_;
+  std::string padded_;  // a short blob padded to the size GL reads (lives for the call)
+
+  const void* padded(const trace::Value& v, uint64_t needed);
 };
 
 // A `const T *` argument: the recorded array (each element converted), blob or string (bytes;
 // strings NUL-terminated) in a temporary array; nullptr for NULL. Padded with zeros to at least
-// kMinElements, so a command that reads a fixed count (glLoadMatrixf: 16) never reads past a
-// shorter recorded array.
+// 256 bytes, so a command that reads a fixed count (glLoadMatrixf: 16 values, glMap2f's control
+// points of small orders) never reads past a shorter recorded array.
 template <typename T>
 class TypedArray {
  public:
-  static constexpr size_t kMinElements = 16;
+  static constexpr size_t kMinElements = std::max<size_t>(16, 256 / sizeof(T));
   TypedArray(const CallContext& c, size_t i);
   const T* get() const { return null_ ? nullptr : values_.data(); }
   size_t size() const { return values_.size(); }

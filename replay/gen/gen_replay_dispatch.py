@@ -89,12 +89,36 @@ def scalar_expr(ptype, index, name_kind):
     return f"c.uint<{ptype}>({index})"
 
 
+def image_expr(cmd, text):
+    """A C++ expression for one of a CLIENT_IMAGES entry's fields (a parameter or a constant)."""
+    for i, p in enumerate(cmd.params):
+        if p.name == text:
+            return f"c.sint<int64_t>({i})"
+    return text
+
+
 def emit_command(cmd, classes):
     """C++ body of one generated replay function, or None if it needs a hand-written one."""
     lines, args, types = [], [], []
+    image = api.CLIENT_IMAGES.get(api.core_name(cmd.name))
+    param_index = {p.name: i for i, p in enumerate(cmd.params)}
     for i, p in enumerate(cmd.params):
         name_kind = classes.get((cmd.name, p.name))
         types.append(p.ctype)
+        if image is not None and p.name == image.data:
+            # Client images: never read past the recorded bytes (a short blob is padded to the
+            # size the unpack modes give the image).
+            shape = ", ".join(image_expr(cmd, f) for f in (image.width, image.height, image.depth,
+                                                         image.format, image.type))
+            three_d = "true" if image.three_d else "false"
+            lines.append(f"  const void* a{i} = c.image({i}, {shape}, {three_d});")
+            args.append(f"static_cast<{p.ctype}>(a{i})")
+            continue
+        if p.is_pointer and p.ptype is None and p.length in param_index:
+            # Data with its size in another parameter (glBufferData, glCompressedTexImage*).
+            lines.append(f"  const void* a{i} = c.sized_data({i}, c.sint<int64_t>({param_index[p.length]}));")
+            args.append(f"a{i}")
+            continue
         if not p.is_pointer:
             if p.ptype not in api.GL_SCALAR_TYPES:
                 return None
@@ -158,7 +182,7 @@ def main():
         table.append((n, f"generated::{n}"))
 
     out = [HEADER,
-           '#include "replay/call_context.hpp"\n#include "replay/special_calls.hpp"\n\n',
+           '#include "gl/gl_enums.h"\n#include "replay/call_context.hpp"\n#include "replay/special_calls.hpp"\n\n',
            "namespace glpt::replay {\nnamespace generated {\nnamespace {\n\n"]
     out.append("\n\n".join(functions))
     out.append("\n\n}  // namespace\n}  // namespace generated\n\n")

@@ -5,7 +5,9 @@
 
 #include <vector>
 
+#include "gl/gl_enums.h"
 #include "replay/frame_selection.hpp"
+#include "replay/image_sizes.hpp"
 
 namespace {
 
@@ -83,6 +85,44 @@ TEST(CommandLine, BadUsageIsRejected) {
   std::string error;
   EXPECT_TRUE(parse({"--help"}, &o, &error));
   EXPECT_TRUE(o.help);
+}
+
+}  // namespace
+
+namespace {
+
+using glpt::replay::image_bytes;
+using glpt::replay::UnpackModes;
+
+// GL 1.5 3.6.4: rows of width * components * size bytes, each rounded up to the alignment.
+TEST(ImageSizes, RowsFollowTheUnpackModes) {
+  UnpackModes modes;                                                                 // alignment 4
+  EXPECT_EQ(image_bytes(3, 2, 1, GL_RGB, GL_UNSIGNED_BYTE, false, modes), 2u * 12);  // 9 -> 12
+  modes.alignment = 1;
+  EXPECT_EQ(image_bytes(3, 2, 1, GL_RGB, GL_UNSIGNED_BYTE, false, modes), 2u * 9);
+  modes.row_length = 10;
+  modes.skip_rows = 1;
+  EXPECT_EQ(image_bytes(3, 2, 1, GL_RGBA, GL_FLOAT, false, modes), 3u * 160);
+  EXPECT_EQ(image_bytes(3, 2, 1, GL_RGBA, GL_UNSIGNED_INT_8_8_8_8, false, modes), 3u * 40);
+  // Bitmaps: bits, rows of whole bytes rounded up to the alignment.
+  UnpackModes bitmap;
+  EXPECT_EQ(image_bytes(32, 32, 1, GL_COLOR_INDEX, GL_BITMAP, false, bitmap), 128u);
+  EXPECT_EQ(image_bytes(9, 3, 1, GL_COLOR_INDEX, GL_BITMAP, false, bitmap), 12u);
+  // 3-D: image height and skipped images.
+  UnpackModes volume;
+  volume.alignment = 1;
+  volume.image_height = 4;
+  volume.skip_images = 1;
+  EXPECT_EQ(image_bytes(2, 3, 2, GL_LUMINANCE, GL_UNSIGNED_BYTE, true, volume), 2u * 4 * 3);
+}
+
+TEST(ImageSizes, NonsenseHasNoSize) {
+  const UnpackModes modes;
+  EXPECT_FALSE(image_bytes(4, 4, 1, 0x1234, GL_UNSIGNED_BYTE, false, modes));
+  EXPECT_FALSE(image_bytes(4, 4, 1, GL_RGBA, 0x1234, false, modes));
+  EXPECT_FALSE(image_bytes(-1, 4, 1, GL_RGBA, GL_UNSIGNED_BYTE, false, modes));
+  EXPECT_FALSE(image_bytes(1 << 30, 1 << 30, 1, GL_RGBA, GL_FLOAT, false, modes));
+  EXPECT_EQ(image_bytes(0, 4, 1, GL_RGBA, GL_UNSIGNED_BYTE, false, modes), 0u);
 }
 
 }  // namespace

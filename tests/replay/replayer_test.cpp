@@ -220,6 +220,23 @@ TEST_P(ReplayBackends, GlFlushEndsAFrameOfASingleBufferedWindow) {
   EXPECT_EQ(pixel(s.frames[0], kWidth / 2, kHeight - 2), kBlue);
 }
 
+// A trace whose image blob is shorter than the image GL reads: the rest reads as zeros.
+TEST_P(ReplayBackends, ShortImageBlobsArePaddedWithZeros) {
+  Session s(GetParam());
+  open_window(s);
+  clear_blue(s);
+  const uint8_t red[4] = {255, 0, 0, 255};
+  s.replay(b.call("glWindowPos2i", {sint(0), sint(0)}));
+  s.replay(b.call("glDrawPixels", {sint(3), sint(1), enumv(GL_RGBA), enumv(GL_UNSIGNED_BYTE),
+                                   blob(red, sizeof red)}));
+  swap(s);
+  ASSERT_EQ(s.frames.count(0), 1u);
+  EXPECT_EQ(pixel(s.frames[0], 0, 0), kRed);
+  EXPECT_EQ(pixel(s.frames[0], 1, 0), (std::array<uint8_t, 4>{0, 0, 0, 255}));
+  EXPECT_EQ(pixel(s.frames[0], 2, 0), (std::array<uint8_t, 4>{0, 0, 0, 255}));
+  EXPECT_EQ(pixel(s.frames[0], 3, 0), kBlue);
+}
+
 INSTANTIATE_TEST_SUITE_P(, ReplayBackends, ::testing::Values("glpt", "mesa"),
                          [](const auto& info) { return info.param; });
 
