@@ -115,7 +115,7 @@ const void* CallContext::image(size_t i, int64_t width, int64_t height, int64_t 
                                GLenum format, GLenum type, bool three_d) {
   const trace::Value& v = arg(i);
   if (v.kind == trace::ValueKind::Null) return nullptr;
-  UnpackModes modes;
+  PixelStoreModes modes;
   modes.row_length = gl_.get_integer(GL_UNPACK_ROW_LENGTH);
   modes.skip_rows = gl_.get_integer(GL_UNPACK_SKIP_ROWS);
   modes.skip_pixels = gl_.get_integer(GL_UNPACK_SKIP_PIXELS);

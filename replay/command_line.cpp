@@ -27,6 +27,9 @@ const char* const kUsage =
     "  --light-size-deg D   angular radius of GL lights (GLPT_LIGHT_SIZE_DEG)\n"
     "  --device SUBSTR      Vulkan device by name (GLPT_VK_DEVICE)\n"
     "  --validation         Khronos validation layer (GLPT_VALIDATION=1)\n"
+    "  --window             show the frames in a window (keys: space pause/resume, n or Right\n"
+    "                       step one frame, q or Esc quit); needs a display\n"
+    "  --paused             with --window: start paused (waiting at the first frame)\n"
     "  --quiet              no per-frame lines or progress\n"
     "  --help               this text\n"
     "\n"
@@ -53,6 +56,8 @@ constexpr Flag kFlags[] = {
     {"--shard", nullptr, true},
     {"--backend", nullptr, true},
     {"--quiet", nullptr, false},
+    {"--window", nullptr, false},
+    {"--paused", nullptr, false},
     {"--help", nullptr, false},
     {"--mode", "GLPT_MODE", true},
     {"--spp", "GLPT_SPP", true},
@@ -126,6 +131,10 @@ bool parse_command_line(int argc, const char* const* argv, Options* options, std
       options->backend = value;
     } else if (arg == "--quiet") {
       options->quiet = true;
+    } else if (arg == "--window") {
+      options->window = true;
+    } else if (arg == "--paused") {
+      options->paused = true;
     } else if (arg == "--help") {
       options->help = true;
     }

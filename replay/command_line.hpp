@@ -23,6 +23,8 @@ struct Options {
   FrameSelection frames;
   std::string backend = "glpt";
   bool quiet = false;
+  bool window = false;  // --window: show the frames in a window
+  bool paused = false;  // --paused: the window starts paused
   bool help = false;
   // GLPT_* variables the quality flags set for the glpt backend (--mode -> GLPT_MODE, ...).
   std::vector<std::pair<std::string, std::string>> environment;

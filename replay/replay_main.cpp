@@ -13,6 +13,9 @@
 #include "replay/command_line.hpp"
 #include "replay/replayer.hpp"
 #include "replay/trace/trace_reader.hpp"
+#if GLPT_REPLAY_WINDOW
+#include "replay/window_view.hpp"
+#endif
 
 namespace glpt::replay {
 namespace {
@@ -54,6 +57,21 @@ void print_summary(const ReplayCounts& counts, const Backend& backend, double se
                  counts.memcpy_outside_mappings);
 }
 
+#if GLPT_REPLAY_WINDOW
+std::unique_ptr<WindowView> open_window(std::string* error) { return WindowView::create(error); }
+#else
+// Built without GLFW (Debian: libglfw3-dev).
+class WindowView {
+ public:
+  bool show(const FrameImage&, uint64_t, std::string*) { return true; }
+  void pause() {}
+};
+std::unique_ptr<WindowView> open_window(std::string* error) {
+  *error = "--window: this build has no GLFW (install libglfw3-dev and rebuild)";
+  return nullptr;
+}
+#endif
+
 int run(const Options& options) {
   // The quality flags reach glpt's renderer as its environment variables. Replay never
   // accumulates across frames (each written frame starts afresh; see --help), and writes the
@@ -78,6 +96,12 @@ int run(const Options& options) {
       return kExitReplayFailed;
     }
   }
+  std::unique_ptr<WindowView> view;
+  if (options.window && !(view = open_window(&error))) {
+    std::fprintf(stderr, "glpt-replay: %s\n", error.c_str());
+    return kExitReplayFailed;
+  }
+  if (view && options.paused) view->pause();
   std::unique_ptr<Backend> backend =
       options.backend == "mesa" ? create_mesa_backend(&error) : create_glpt_backend(&error);
   if (!backend) {
@@ -88,6 +112,7 @@ int run(const Options& options) {
   const Stopwatch total;
   Stopwatch since_frame, since_progress;
   bool progress_shown = false;
+  bool user_quit = false;  // --window: q, Esc or closing the window
   const bool tty = isatty(STDERR_FILENO) != 0;
   auto frame_done = [&](uint64_t frame, const FrameImage& image, std::string* err) {
     const double frame_ms = since_frame.elapsed_ms();
@@ -99,6 +124,10 @@ int run(const Options& options) {
       path = options.out_dir + name;
       if (!write_png_rgba8(path, image.width, image.height, image.rgba.data(), true, err))
         return false;
+    }
+    if (view && !view->show(image, frame, err)) {
+      user_quit = err->empty();
+      return false;
     }
     if (!options.quiet) {
       if (progress_shown && tty) std::fprintf(stderr, "\r\033[K");
@@ -124,6 +153,7 @@ int run(const Options& options) {
       break;
     }
     if (!replayer.replay(call, &error)) {
+      if (user_quit) break;
       std::fprintf(stderr, "glpt-replay: %s\n", error.c_str());
       status = kExitReplayFailed;
       break;

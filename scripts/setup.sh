@@ -45,7 +45,8 @@ $SUDO apt-get update -q
 # Build tools and libraries.
 build_pkgs=(cmake ninja-build g++ pkg-config python3 clang-format
             khronos-api libvulkan-dev glslang-tools libglm-dev
-            libx11-dev libxcb1-dev libxcb-shm0-dev libpng-dev zlib1g-dev libgtest-dev)
+            libx11-dev libxcb1-dev libxcb-shm0-dev libpng-dev zlib1g-dev libgtest-dev
+            libglfw3-dev)
 # Running and testing: Xvfb, real programs (glxgears, xscreensaver's GL hacks, piglit's GL 1.x
 # tests), apitrace, Vulkan tools and validation layers.
 run_pkgs=(xvfb xauth mesa-utils x11-utils libgl-dev libegl-dev vulkan-tools vulkan-validationlayers

@@ -92,28 +92,31 @@ TEST(CommandLine, BadUsageIsRejected) {
 namespace {
 
 using glpt::replay::image_bytes;
-using glpt::replay::UnpackModes;
+using UnpackModes = glpt::PixelStoreModes;
 
 // GL 1.5 3.6.4: rows of width * components * size bytes, each rounded up to the alignment.
 TEST(ImageSizes, RowsFollowTheUnpackModes) {
-  UnpackModes modes;                                                                 // alignment 4
-  EXPECT_EQ(image_bytes(3, 2, 1, GL_RGB, GL_UNSIGNED_BYTE, false, modes), 2u * 12);  // 9 -> 12
+  UnpackModes modes;  // alignment 4
+  // Rows of 9 bytes start every 12; the last row ends after its 9 bytes.
+  EXPECT_EQ(image_bytes(3, 2, 1, GL_RGB, GL_UNSIGNED_BYTE, false, modes), 12u + 9);
   modes.alignment = 1;
   EXPECT_EQ(image_bytes(3, 2, 1, GL_RGB, GL_UNSIGNED_BYTE, false, modes), 2u * 9);
   modes.row_length = 10;
   modes.skip_rows = 1;
-  EXPECT_EQ(image_bytes(3, 2, 1, GL_RGBA, GL_FLOAT, false, modes), 3u * 160);
-  EXPECT_EQ(image_bytes(3, 2, 1, GL_RGBA, GL_UNSIGNED_INT_8_8_8_8, false, modes), 3u * 40);
+  // One skipped row, then two rows of 10 groups of which the last is read up to its 3rd group.
+  EXPECT_EQ(image_bytes(3, 2, 1, GL_RGBA, GL_FLOAT, false, modes), 2u * 160 + 3 * 16);
+  EXPECT_EQ(image_bytes(3, 2, 1, GL_RGBA, GL_UNSIGNED_INT_8_8_8_8, false, modes), 2u * 40 + 12);
   // Bitmaps: bits, rows of whole bytes rounded up to the alignment.
   UnpackModes bitmap;
   EXPECT_EQ(image_bytes(32, 32, 1, GL_COLOR_INDEX, GL_BITMAP, false, bitmap), 128u);
-  EXPECT_EQ(image_bytes(9, 3, 1, GL_COLOR_INDEX, GL_BITMAP, false, bitmap), 12u);
+  EXPECT_EQ(image_bytes(9, 3, 1, GL_COLOR_INDEX, GL_BITMAP, false, bitmap), 4u + 4 + 2);
   // 3-D: image height and skipped images.
   UnpackModes volume;
   volume.alignment = 1;
   volume.image_height = 4;
   volume.skip_images = 1;
-  EXPECT_EQ(image_bytes(2, 3, 2, GL_LUMINANCE, GL_UNSIGNED_BYTE, true, volume), 2u * 4 * 3);
+  // Image 0 skipped, images of 4 rows of 2 bytes; the last image ends after its 3rd row.
+  EXPECT_EQ(image_bytes(2, 3, 2, GL_LUMINANCE, GL_UNSIGNED_BYTE, true, volume), 2u * 8 + 6);
 }
 
 TEST(ImageSizes, NonsenseHasNoSize) {

@@ -10,8 +10,12 @@
 #   replay_trace_test.sh damaged REPLAY TRACE OUT
 #       Damaged traces end with the bad-trace exit code (3) and a message, never a crash; a
 #       trace cut short replays what it holds (exit 0).
+#   replay_trace_test.sh window REPLAY TRACE OUT X_SEND_KEY WITH_XVFB
+#       --window without a display fails cleanly (1); under a private Xvfb, --window --paused
+#       waits at frame 0, n steps to frame 1, q quits before frame 2.
+#   (window-run: the part of `window` that runs under with_xvfb.sh)
 set -euo pipefail
-unset DISPLAY WAYLAND_DISPLAY
+[[ ${1:-} == window-run ]] || unset DISPLAY WAYLAND_DISPLAY
 export GLPT_QUIET=1
 
 mode=$1
@@ -90,6 +94,48 @@ PY
       fi
     done
     echo "damaged traces rejected cleanly"
+    ;;
+  window)
+    replay=$1 trace=$2 out=$3 send_key=$4 with_xvfb=$5
+    rm -rf "$out"
+    mkdir -p "$(dirname "$out")"
+    status=0
+    "$replay" --quiet --window "$trace" >"$out.log" 2>&1 || status=$?
+    if [[ $status -ne 1 ]] || ! grep -q -- "--window" "$out.log"; then
+      echo "--window without a display: exit $status"
+      cat "$out.log"
+      exit 1
+    fi
+    "$with_xvfb" "$0" window-run "$replay" "$trace" "$out" "$send_key"
+    ;;
+  window-run)
+    replay=$1 trace=$2 out=$3 send_key=$4
+    "$replay" --window --paused --mode raster --out "$out" "$trace" >"$out.log" 2>&1 &
+    pid=$!
+    # Waits up to 20 s for FILE to appear.
+    wait_for() {
+      for _ in $(seq 1 200); do
+        [[ -e $1 ]] && return 0
+        sleep 0.1
+      done
+      echo "timed out waiting for $1"
+      cat "$out.log"
+      kill "$pid" 2>/dev/null || true
+      exit 1
+    }
+    wait_for "$out/frame_000000.png"
+    sleep 0.5
+    [[ ! -e $out/frame_000001.png ]] || { echo "not paused at frame 0"; exit 1; }
+    "$send_key" glpt-replay n
+    wait_for "$out/frame_000001.png"
+    sleep 0.5
+    [[ ! -e $out/frame_000002.png ]] || { echo "did not stop after one step"; exit 1; }
+    "$send_key" glpt-replay q
+    status=0
+    wait "$pid" || status=$?
+    [[ $status -eq 0 ]] || { echo "exit $status after q"; cat "$out.log"; exit 1; }
+    [[ ! -e $out/frame_000002.png ]] || { echo "frame 2 written after q"; exit 1; }
+    echo "paused, stepped and quit"
     ;;
   *)
     echo "unknown mode $mode" >&2
