@@ -50,6 +50,7 @@ bool Replayer::replay(const trace::Call& call, std::string* error) {
     return true;
   }
   const std::string& name = call.sig->name;
+  if (call.thread != thread_ && !switch_thread(call.thread, error)) return false;
   bool ok = true;
   if (replay_window_system(call, name, &ok, error)) return ok;
   if (name == "memcpy") {
@@ -120,6 +121,21 @@ void Replayer::grow_surface(int64_t width, int64_t height) {
   if (scissor_ != nullptr)
     reinterpret_cast<void (*)(GLint, GLint, GLsizei, GLsizei)>(scissor_)(
         0, 0, static_cast<GLsizei>(s.width), static_cast<GLsizei>(s.height));
+}
+
+bool Replayer::switch_thread(uint32_t thread, std::string* error) {
+  thread_bindings_[thread_] = {current_context_, current_surface_};
+  const auto [context, surface] = thread_bindings_[thread];
+  thread_ = thread;
+  current_context_ = current_surface_ = 0;
+  const auto c = contexts_.find(context);
+  const auto s = surfaces_.find(surface);
+  if (context == 0 || c == contexts_.end() || s == surfaces_.end())
+    return backend_.make_current(nullptr, 0, 0, 0, false, error);
+  current_context_ = context;
+  current_surface_ = surface;
+  return backend_.make_current(c->second.handle, surface, s->second.width, s->second.height,
+                               s->second.double_buffered, error);
 }
 
 bool Replayer::end_frame(bool swap, GlProc flush, std::string* error) {

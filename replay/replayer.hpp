@@ -68,6 +68,9 @@ class Replayer {
   bool create_context(const trace::Call& call, size_t share_arg, std::string* error);
   bool make_current(uint64_t surface, uint64_t context, std::string* error);
   bool end_frame(bool swap, GlProc flush, std::string* error);
+  // The calls of another recording thread follow: make its context current (all threads'
+  // calls replay on this one, in trace order).
+  bool switch_thread(uint32_t thread, std::string* error);
 
   bool replay_gl(const trace::Call& call, const std::string& name, std::string* error);
   void grow_surface(int64_t width, int64_t height);
@@ -78,9 +81,12 @@ class Replayer {
   GlFunctions gl_;
   ReplayCounts counts_;
   std::unordered_map<const trace::FunctionSig*, const DispatchEntry*> entries_;
-  std::map<uint64_t, RecordedContext> contexts_;  // by the recorded context pointer
-  std::map<uint64_t, Surface> surfaces_;          // by the recorded drawable / surface
-  uint64_t current_context_ = 0, current_surface_ = 0;
+  std::map<uint64_t, RecordedContext> contexts_;        // by the recorded context pointer
+  std::map<uint64_t, Surface> surfaces_;                // by the recorded drawable / surface
+  uint64_t current_context_ = 0, current_surface_ = 0;  // of the recording thread `thread_`
+  // GL's current context is per thread: what each other recording thread had current.
+  uint32_t thread_ = 0;
+  std::map<uint32_t, std::pair<uint64_t, uint64_t>> thread_bindings_;  // context, surface
   bool next_double_buffered_ = true;  // what the last glXChooseVisual/FBConfig asked for
   std::map<uint64_t, bool> context_double_buffered_;  // the visual each context was made for
   GlProc flush_ = nullptr, finish_ = nullptr, scissor_ = nullptr;

@@ -237,6 +237,31 @@ TEST_P(ReplayBackends, ShortImageBlobsArePaddedWithZeros) {
   EXPECT_EQ(pixel(s.frames[0], 3, 0), kBlue);
 }
 
+// Two recording threads, each with its context current: every call goes to its own thread's
+// context, however the trace interleaves them.
+TEST_P(ReplayBackends, EachRecordingThreadKeepsItsCurrentContext) {
+  Session s(GetParam());
+  open_window(s);  // thread 0
+  auto on_thread = [](trace::Call call, uint32_t thread) {
+    call.thread = thread;
+    return call;
+  };
+  s.replay(
+      on_thread(b.call("glXCreateContext",
+                       {pointer(kDisplay), pointer(kVisual), pointer(0), sint(1)}, pointer(0x2000)),
+                1));
+  s.replay(on_thread(
+      b.call("glXMakeCurrent", {pointer(kDisplay), uintv(0x400002), pointer(0x2000)}, sint(1)), 1));
+  s.replay(on_thread(b.call("glClearColor", {real(0), real(1), real(0), real(1)}), 1));
+  clear_blue(s);  // thread 0 again: its own context's clear colour
+  float color[4] = {};
+  s.gl<void (*)(GLenum, float*)>("glGetFloatv")(GL_COLOR_CLEAR_VALUE, color);
+  EXPECT_EQ(color[2], 1.0f) << "thread 0's context is current";
+  s.replay(on_thread(b.call("glFinish", {}), 1));
+  s.gl<void (*)(GLenum, float*)>("glGetFloatv")(GL_COLOR_CLEAR_VALUE, color);
+  EXPECT_EQ(color[1], 1.0f) << "thread 1's context is current";
+}
+
 INSTANTIATE_TEST_SUITE_P(, ReplayBackends, ::testing::Values("glpt", "mesa"),
                          [](const auto& info) { return info.param; });
 
