@@ -11,7 +11,7 @@ SUDO=""
 export DEBIAN_FRONTEND=noninteractive
 
 stamp=/var/lib/glpt-setup.stamp
-want_version=6  # bump when the package list below changes
+want_version=7  # bump when the package list below changes
 if [ -f "$stamp" ] && [ "$(cat "$stamp")" = "$want_version" ] && [ "${GLPT_SETUP_FORCE:-0}" != 1 ]; then
   echo "setup: packages already installed (rm $stamp or GLPT_SETUP_FORCE=1 to re-run)"
   exit 0
@@ -46,7 +46,8 @@ $SUDO apt-get update -q
 build_pkgs=(cmake ninja-build g++ pkg-config python3 clang-format
             khronos-api libvulkan-dev glslang-tools libglm-dev
             libx11-dev libxcb1-dev libxcb-shm0-dev libpng-dev zlib1g-dev libgtest-dev
-            libglfw3-dev)
+            libsnappy-dev libbrotli-dev  # apitrace's trace containers (replay/trace)
+            libglfw3-dev)                # glpt-replay --window
 # Running and testing: Xvfb, real programs (glxgears, xscreensaver's GL hacks, piglit's GL 1.x
 # tests), apitrace, Vulkan tools and validation layers.
 run_pkgs=(xvfb xauth mesa-utils x11-utils libgl-dev libegl-dev vulkan-tools vulkan-validationlayers

@@ -77,7 +77,7 @@ size_t decode_cut_snappy(const uint8_t* in, size_t n, std::vector<char>& out) {
       }
       pos += 1 + extra;
       size_t take = std::min({length, n - pos, out.size() - produced});
-      std::memcpy(out.data() + produced, in + pos, take);
+      if (take) std::memcpy(out.data() + produced, in + pos, take);
       produced += take;
       pos += take;
       if (take < length) break;  // the cut (or the buffer's end) is inside this literal

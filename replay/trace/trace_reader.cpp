@@ -251,9 +251,9 @@ class ApitraceReader final : public TraceReader {
           return false;
         }
         for (;;) {
-          std::string name = string();
+          std::string name = name_string();
           if (name.empty()) break;
-          properties_[name] = string();
+          properties_[name] = name_string();
         }
       }
       in_header_ = false;
@@ -290,11 +290,13 @@ class ApitraceReader final : public TraceReader {
       error = describe(corrupt);
       finished_ = true;
       pending_.clear();
+      pending_cost_ = 0;
       return Status::Error;
     }
     // The stream ended: calls that entered and never left come out as they are.
     if (!pending_.empty()) {
-      call = std::move(pending_.front());
+      call = std::move(pending_.front().call);
+      pending_cost_ -= pending_.front().cost;
       pending_.pop_front();
       call.complete = false;
       return Status::Call;
@@ -324,10 +326,35 @@ class ApitraceReader final : public TraceReader {
     return uint32_t(v);
   }
 
-  std::string string() {
+  // Signatures, properties and frames are kept for the reader's life: bounded all together.
+  void charge_metadata(uint64_t bytes) {
+    if (bytes > kMaxMetadataBytes - metadata_bytes_) {
+      throw Corrupt{
+          "signatures and properties above " + std::to_string(kMaxMetadataBytes >> 20) + " MiB",
+          in_.offset()};
+    }
+    metadata_bytes_ += bytes;
+  }
+  static constexpr uint64_t kMetadataEntryCost = 32;
+
+  // A name in a signature or a property.
+  std::string name_string() {
+    uint64_t length = in_.varint();
+    charge_metadata(length + kMetadataEntryCost);
     std::string s;
-    in_.append(in_.varint(), s);
+    in_.append(length, s);
     return s;
+  }
+
+  // A String or Blob value's bytes, bounded per call.
+  void value_bytes(uint64_t length, std::string& out) {
+    if (length > kMaxBytesPerCall - bytes_in_event_) {
+      throw Corrupt{"more than " + std::to_string(kMaxBytesPerCall >> 20) +
+                        " MiB of strings and blobs in one call",
+                    in_.offset()};
+    }
+    bytes_in_event_ += length;
+    in_.append(length, out);
   }
 
   void parse_enter() {
@@ -347,8 +374,18 @@ class ApitraceReader final : public TraceReader {
     call.sig = sig;
     call.args.resize(sig->arg_names.size());
     values_in_event_ = 0;
+    bytes_in_event_ = 0;
     parse_details(call, false);
-    pending_.push_back(std::move(call));
+    // What a call waiting for its LEAVE holds, bounded over all of them (each event is bounded by
+    // itself, but up to kMaxPendingCalls of them can wait).
+    uint64_t cost = bytes_in_event_ + values_in_event_ * sizeof(Value);
+    if (cost > kMaxPendingCallBytes - pending_cost_) {
+      throw Corrupt{"calls entered without leaving hold more than " +
+                        std::to_string(kMaxPendingCallBytes >> 20) + " MiB",
+                    in_.offset()};
+    }
+    pending_cost_ += cost;
+    pending_.push_back({std::move(call), cost});
   }
 
   bool parse_leave(Call& out) {
@@ -356,15 +393,17 @@ class ApitraceReader final : public TraceReader {
     context_no_ = int64_t(no);
     context_sig_ = nullptr;
     values_in_event_ = 0;
+    bytes_in_event_ = 0;
     auto it = pending_.begin();
-    while (it != pending_.end() && it->no != no) ++it;
+    while (it != pending_.end() && it->call.no != no) ++it;
     if (it == pending_.end()) {
       // apitrace skips the details of a LEAVE with no ENTER and yields nothing.
       Call stray;
       parse_details(stray, true);
       return false;
     }
-    Call call = std::move(*it);
+    Call call = std::move(it->call);
+    pending_cost_ -= it->cost;
     pending_.erase(it);
     context_sig_ = call.sig;
     parse_details(call, false);  // the stream ending here drops the call, as in apitrace
@@ -417,6 +456,7 @@ class ApitraceReader final : public TraceReader {
     for (uint64_t i = 0; i < frames; ++i) {  // each frame consumes input, so this ends
       uint64_t id = in_.varint();
       if (known_frames_.count(id)) continue;
+      charge_metadata(kMetadataEntryCost);
       for (;;) {
         uint8_t detail = in_.byte();
         if (detail == 0) break;
@@ -437,11 +477,12 @@ class ApitraceReader final : public TraceReader {
   const FunctionSig* function_sig() {
     uint64_t id = in_.varint();
     if (const FunctionSig* known = functions_.find(id)) return known;
+    charge_metadata(kMetadataEntryCost);
     auto sig = std::make_unique<FunctionSig>();
     sig->id = sig_id(id);
-    sig->name = string();
+    sig->name = name_string();
     uint64_t count = in_.varint();
-    for (uint64_t i = 0; i < count; ++i) sig->arg_names.push_back(string());
+    for (uint64_t i = 0; i < count; ++i) sig->arg_names.push_back(name_string());
     sig->flags = frame_flags_for(sig->name);
     return functions_.add(id, std::move(sig));
   }
@@ -449,11 +490,12 @@ class ApitraceReader final : public TraceReader {
   const EnumSig* enum_sig() {
     uint64_t id = in_.varint();
     if (const EnumSig* known = enums_.find(id)) return known;
+    charge_metadata(kMetadataEntryCost);
     auto sig = std::make_unique<EnumSig>();
     sig->id = sig_id(id);
     uint64_t count = in_.varint();
     for (uint64_t i = 0; i < count; ++i) {
-      std::string name = string();
+      std::string name = name_string();
       sig->values.emplace_back(std::move(name), signed_integer());
     }
     return enums_.add(id, std::move(sig));
@@ -462,11 +504,12 @@ class ApitraceReader final : public TraceReader {
   const BitmaskSig* bitmask_sig() {
     uint64_t id = in_.varint();
     if (const BitmaskSig* known = bitmasks_.find(id)) return known;
+    charge_metadata(kMetadataEntryCost);
     auto sig = std::make_unique<BitmaskSig>();
     sig->id = sig_id(id);
     uint64_t count = in_.varint();
     for (uint64_t i = 0; i < count; ++i) {
-      std::string name = string();
+      std::string name = name_string();
       sig->flags.emplace_back(std::move(name), in_.varint());
     }
     return bitmasks_.add(id, std::move(sig));
@@ -475,11 +518,12 @@ class ApitraceReader final : public TraceReader {
   const StructSig* struct_sig() {
     uint64_t id = in_.varint();
     if (const StructSig* known = structs_.find(id)) return known;
+    charge_metadata(kMetadataEntryCost);
     auto sig = std::make_unique<StructSig>();
     sig->id = sig_id(id);
-    sig->name = string();
+    sig->name = name_string();
     uint64_t count = in_.varint();
-    for (uint64_t i = 0; i < count; ++i) sig->member_names.push_back(string());
+    for (uint64_t i = 0; i < count; ++i) sig->member_names.push_back(name_string());
     return structs_.add(id, std::move(sig));
   }
 
@@ -528,7 +572,7 @@ class ApitraceReader final : public TraceReader {
       case kTypeString:
       case kTypeBlob:
         value.kind = type == kTypeString ? ValueKind::String : ValueKind::Blob;
-        in_.append(in_.varint(), value.bytes);
+        value_bytes(in_.varint(), value.bytes);
         break;
       case kTypeEnum:
         value.kind = ValueKind::Enum;
@@ -543,6 +587,9 @@ class ApitraceReader final : public TraceReader {
       case kTypeArray: {
         value.kind = ValueKind::Array;
         uint64_t count = in_.varint();
+        if (count > kMaxValuesPerCall - values_in_event_) {
+          throw Corrupt{"array of " + std::to_string(count) + " elements", at};
+        }
         // Grows as elements parse (each takes at least a byte), never by the declared count.
         value.elements.reserve(size_t(std::min<uint64_t>(count, 64)));
         for (uint64_t i = 0; i < count; ++i) parse_value(value.elements.emplace_back(), depth + 1);
@@ -569,6 +616,10 @@ class ApitraceReader final : public TraceReader {
       case kTypeWString: {
         value.kind = ValueKind::WString;
         uint64_t count = in_.varint();
+        if (count > (kMaxBytesPerCall - bytes_in_event_) / 4) {  // up to 4 UTF-8 bytes each
+          throw Corrupt{"wide string of " + std::to_string(count) + " characters", at};
+        }
+        bytes_in_event_ += 4 * count;
         for (uint64_t i = 0; i < count; ++i) append_utf8(in_.varint(), value.bytes);
         break;
       }
@@ -586,9 +637,16 @@ class ApitraceReader final : public TraceReader {
   SigTable<BitmaskSig> bitmasks_;
   SigTable<StructSig> structs_;
   std::unordered_set<uint64_t> known_frames_;
-  std::deque<Call> pending_;  // entered, not yet left, in the order they entered
+  struct Pending {
+    Call call;
+    uint64_t cost;  // bytes it holds, roughly
+  };
+  std::deque<Pending> pending_;  // entered, not yet left, in the order they entered
+  uint64_t pending_cost_ = 0;
   uint32_t next_call_no_ = 0;
   uint64_t values_in_event_ = 0;
+  uint64_t bytes_in_event_ = 0;
+  uint64_t metadata_bytes_ = 0;
   bool stream_ended_ = false;  // no more events: only pending calls remain to hand out
   bool finished_ = false;      // End (or Error) returned
   bool in_header_ = true;

@@ -34,9 +34,14 @@ class TraceReader {
   static constexpr uint32_t kMinVersion = 5;
   static constexpr uint32_t kMaxVersion = 6;
   // Bounds that a valid trace never reaches; input beyond them is reported as an Error.
-  static constexpr unsigned kMaxValueDepth = 64;           // arrays/structs/reprs nested
-  static constexpr uint64_t kMaxValuesPerCall = 1u << 20;  // values (all nesting levels)
-  static constexpr size_t kMaxPendingCalls = 4096;         // entered and not yet left
+  static constexpr unsigned kMaxValueDepth = 64;                  // arrays/structs/reprs nested
+  static constexpr uint64_t kMaxValuesPerCall = 1u << 20;         // values, all nesting levels
+  static constexpr uint64_t kMaxBytesPerCall = 512u << 20;        // string/blob bytes, one event
+  static constexpr size_t kMaxPendingCalls = 4096;                // entered and not yet left
+  static constexpr uint64_t kMaxPendingCallBytes = 1024u << 20;   // what those hold together
+  static constexpr uint64_t kMaxMetadataBytes = 64u << 20;        // signatures, properties and
+                                                                  // backtrace frames: names + 32
+                                                                  // bytes a piece
 };
 
 }  // namespace glpt::trace

@@ -346,16 +346,16 @@ TEST(BadInput, NestingIsBounded) {
 }
 
 TEST(BadInput, HostileCountsAllocateNothingUnjustified) {
-  // Each declares far more than follows: the reader must reach the end of the input (the call
-  // is dropped as cut) without trying to allocate what was declared.
-  const uint64_t huge = uint64_t(1) << 62;
+  // Each declares more than follows but no more than a trace could hold: the reader must reach
+  // the end of the input (the call is dropped as cut) without allocating what was declared.
+  const uint64_t plausible = uint64_t(256) << 20;
   std::vector<StreamWriter> cases(6, one_call_prefix());
-  cases[0].arg(0).byte(7).uint(huge).raw("abc");                        // string
-  cases[1].arg(0).byte(8).uint(huge).raw("abc");                        // blob
-  cases[2].arg(0).byte(11).uint(huge).byte(0).byte(0);                  // array
-  cases[3].arg(0).byte(15).uint(huge).uint(65);                         // wide string
-  cases[4].arg(0).byte(12).uint(0).string("S").uint(huge).string("m");  // struct signature
-  cases[5].byte(4).uint(huge).uint(0).byte(0);                          // backtrace frames
+  cases[0].arg(0).byte(7).uint(plausible).raw("abc");                                // string
+  cases[1].arg(0).byte(8).uint(plausible).raw("abc");                                // blob
+  cases[2].arg(0).byte(11).uint(1000000).byte(0).byte(0);                            // array
+  cases[3].arg(0).byte(15).uint(1000000).uint(65);                                   // wide string
+  cases[4].arg(0).byte(12).uint(0).string("S").uint(uint64_t(1) << 62).string("m");  // struct sig
+  cases[5].byte(4).uint(uint64_t(1) << 62).uint(0).byte(0);  // backtrace frames
   for (size_t i = 0; i < cases.size(); ++i) {
     std::string error;
     size_t calls = 99;
@@ -363,9 +363,28 @@ TEST(BadInput, HostileCountsAllocateNothingUnjustified) {
         << i << ": " << error;
     EXPECT_EQ(calls, 0u) << i;  // call 0's LEAVE was cut: dropped, as apitrace does
   }
-  // An array count that does fit but crosses the per-call value limit.
+}
+
+TEST(BadInput, CountsBeyondTheLimitsAreErrors) {
+  const uint64_t huge = uint64_t(1) << 62;
+  const std::pair<StreamWriter, std::string> cases[] = {
+      {one_call_prefix().arg(0).byte(7).uint(huge), "MiB of strings and blobs in one call"},
+      {one_call_prefix().arg(0).byte(8).uint(TraceReader::kMaxBytesPerCall + 1),
+       "MiB of strings and blobs in one call"},
+      {one_call_prefix().arg(0).byte(11).uint(huge), "array of 4611686018427387904 elements"},
+      {one_call_prefix().arg(0).byte(15).uint(huge), "wide string of"},
+      {one_call_prefix().arg(0).byte(9).uint(1).uint(1).uint(TraceReader::kMaxMetadataBytes),
+       "signatures and properties above 64 MiB"},
+  };
+  for (const auto& [stream, message] : cases) {
+    std::string error;
+    EXPECT_EQ(read_all(snappy_container(stream.bytes()), error), Status::Error) << message;
+    EXPECT_NE(error.find(message), std::string::npos) << error;
+    EXPECT_NE(error.find("in call 0 (glFoo)"), std::string::npos) << error;
+  }
+  // An array count that fits but whose elements cross the per-call value limit.
   StreamWriter many = one_call_prefix();
-  many.arg(0).byte(11).uint(TraceReader::kMaxValuesPerCall + 1);
+  many.arg(0).byte(11).uint(TraceReader::kMaxValuesPerCall - 1).byte(11).uint(2);
   many.raw(std::string(TraceReader::kMaxValuesPerCall + 1, '\0')).end();
   std::string error;
   EXPECT_EQ(read_all(snappy_container(many.bytes()), error), Status::Error);
