@@ -237,6 +237,33 @@ TEST_P(ReplayBackends, ShortImageBlobsArePaddedWithZeros) {
   EXPECT_EQ(pixel(s.frames[0], 3, 0), kBlue);
 }
 
+// EGL: a pbuffer has its recorded size (a glViewport does not grow it); eglSwapBuffers ends the
+// frame.
+TEST_P(ReplayBackends, EglPbufferHasItsRecordedSize) {
+  Session s(GetParam());
+  constexpr int64_t kEglWidth = 0x3057, kEglHeight = 0x3056, kEglNone = 0x3038;
+  s.replay(b.call("eglGetDisplay", {pointer(0)}, pointer(kDisplay)));
+  s.replay(b.call("eglCreatePbufferSurface",
+                  {pointer(kDisplay), pointer(7), ints({kEglWidth, 40, kEglHeight, 24, kEglNone})},
+                  pointer(0x3000)));
+  s.replay(b.call("eglCreateContext", {pointer(kDisplay), pointer(7), pointer(0), ints({kEglNone})},
+                  pointer(0x4000)));
+  s.replay(b.call("eglMakeCurrent",
+                  {pointer(kDisplay), pointer(0x3000), pointer(0x3000), pointer(0x4000)},
+                  uintv(1)));
+  s.replay(b.call("glViewport", {sint(0), sint(0), sint(400), sint(300)}));
+  s.replay(b.call("glViewport", {sint(0), sint(0), sint(40), sint(24)}));
+  clear_blue(s);
+  s.replay(b.call("glRectf", {real(-0.5), real(-0.5), real(0.5), real(0.5)}));
+  s.replay(b.call("eglSwapBuffers", {pointer(kDisplay), pointer(0x3000)}, uintv(1)));
+  ASSERT_EQ(s.frames.count(0), 1u);
+  const FrameImage& image = s.frames[0];
+  EXPECT_EQ(image.width, 40u);
+  EXPECT_EQ(image.height, 24u);
+  EXPECT_EQ(pixel(image, 20, 12), kRed);
+  EXPECT_EQ(pixel(image, 1, 1), kBlue);
+}
+
 // Two recording threads, each with its context current: every call goes to its own thread's
 // context, however the trace interleaves them.
 TEST_P(ReplayBackends, EachRecordingThreadKeepsItsCurrentContext) {
