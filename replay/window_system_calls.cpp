@@ -91,7 +91,9 @@ bool Replayer::replay_window_system(const trace::Call& call, const std::string& 
   } else if (name == "eglCreateWindowSurface" || name == "eglCreatePlatformWindowSurface") {
     surfaces_[call.ret.as_uint()].double_buffered =
         attribute(arg(call, 3), kEglRenderBuffer, 0, kEglNone) != kEglSingleBuffer;
-  } else if (name == "glXSwapBuffers" || name == "eglSwapBuffers") {
+  } else if ((call.sig->flags & trace::kCallFlagSwapRenderTarget) != 0) {
+    // glXSwapBuffers, glXSwapBuffersMscOML, eglSwapBuffers, eglSwapBuffersWithDamage*: the
+    // reader flags them as apitrace does.
     const auto it = surfaces_.find(current_surface_);
     const bool swap = it == surfaces_.end() || it->second.double_buffered;
     *ok = end_frame(swap, swap ? nullptr : flush_, error);

@@ -87,6 +87,9 @@ class CallBuilder {
     trace::FunctionSig& s = sigs_.emplace_back();
     s.id = static_cast<uint32_t>(sigs_.size() - 1);
     s.name = name;
+    // As the reader flags them (trace_model.hpp): the swaps end frames.
+    if (name.find("SwapBuffers") != std::string::npos)
+      s.flags = trace::kCallFlagSwapRenderTarget | trace::kCallFlagEndFrame;
     return s;
   }
   std::deque<trace::FunctionSig> sigs_;
