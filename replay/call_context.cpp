@@ -136,8 +136,9 @@ const void* CallContext::sized_data(size_t i, int64_t size) {
 }
 
 template <typename T>
-TypedArray<T>::TypedArray(const CallContext& c, size_t i) {
+TypedArray<T>::TypedArray(const CallContext& c, size_t i, int64_t count) {
   const trace::Value& v = c.arg(i);
+  if (count > kMaxBytes / static_cast<int64_t>(sizeof(T))) return;  // NULL: nothing is read
   switch (v.kind) {
     case trace::ValueKind::Null:
       return;
@@ -171,7 +172,9 @@ TypedArray<T>::TypedArray(const CallContext& c, size_t i) {
       break;
   }
   null_ = false;
-  if (values_.size() < kMinElements) values_.resize(kMinElements, T{});
+  values_.resize(
+      std::max({values_.size(), kMinElements, static_cast<size_t>(std::max<int64_t>(count, 0))}),
+      T{});
 }
 
 template class TypedArray<GLbyte>;
@@ -186,8 +189,8 @@ template class TypedArray<GLchar>;
 template class TypedArray<GLint64>;
 template class TypedArray<GLuint64>;
 
-NameArray::NameArray(const CallContext& c, size_t i, NameKind kind) {
-  const TypedArray<GLuint> recorded(c, i);
+NameArray::NameArray(const CallContext& c, size_t i, NameKind kind, int64_t count) {
+  const TypedArray<GLuint> recorded(c, i, count);
   if (recorded.get() == nullptr) return;
   null_ = false;
   names_.assign(recorded.get(), recorded.get() + recorded.size());

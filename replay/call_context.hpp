@@ -128,13 +128,15 @@ class CallContext {
 
 // A `const T *` argument: the recorded array (each element converted), blob or string (bytes;
 // strings NUL-terminated) in a temporary array; nullptr for NULL. Padded with zeros to at least
-// 256 bytes, so a command that reads a fixed count (glLoadMatrixf: 16 values, glMap2f's control
-// points of small orders) never reads past a shorter recorded array.
+// 256 bytes and to `count`, the elements GL reads as the call's other arguments say (the
+// registry's len: glDeleteTextures' n, glMap2f's orders and strides), so GL never reads past a
+// shorter recorded array. A count beyond kMaxBytes gives nullptr (GL reports NULL data).
 template <typename T>
 class TypedArray {
  public:
   static constexpr size_t kMinElements = std::max<size_t>(16, 256 / sizeof(T));
-  TypedArray(const CallContext& c, size_t i);
+  static constexpr int64_t kMaxBytes = int64_t{256} << 20;
+  TypedArray(const CallContext& c, size_t i, int64_t count = 0);
   const T* get() const { return null_ ? nullptr : values_.data(); }
   size_t size() const { return values_.size(); }
 
@@ -146,7 +148,7 @@ class TypedArray {
 // A `const GLuint *` array of object names, each mapped (glDeleteTextures, glPrioritizeTextures).
 class NameArray {
  public:
-  NameArray(const CallContext& c, size_t i, NameKind kind);
+  NameArray(const CallContext& c, size_t i, NameKind kind, int64_t count = 0);
   const GLuint* get() const { return null_ ? nullptr : names_.data(); }
 
  private:

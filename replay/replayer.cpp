@@ -110,12 +110,15 @@ bool Replayer::replay_gl(const trace::Call& call, const std::string& name, std::
 void Replayer::grow_surface(int64_t width, int64_t height) {
   const auto it = surfaces_.find(current_surface_);
   if (it == surfaces_.end() || it->second.fixed_size || width <= 0 || height <= 0) return;
-  constexpr int64_t kMaxSize = 16384;
+  // Larger than any screen, and small enough that a hostile trace cannot ask for buffers of
+  // gigabytes: sides up to 8192, at most 2^25 pixels.
+  constexpr int64_t kMaxSize = 8192, kMaxPixels = int64_t{1} << 25;
   Surface& s = it->second;
   const bool first = !s.grown;
   if (!first && width <= s.width && height <= s.height) return;
   s.width = static_cast<uint32_t>(std::clamp<int64_t>(width, first ? 1 : s.width, kMaxSize));
   s.height = static_cast<uint32_t>(std::clamp<int64_t>(height, first ? 1 : s.height, kMaxSize));
+  while (int64_t{s.width} * s.height > kMaxPixels) s.height /= 2;
   s.grown = true;
   backend_.resize_current(s.width, s.height);
   if (scissor_ != nullptr)

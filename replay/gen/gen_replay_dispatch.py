@@ -25,6 +25,7 @@ Writes replay_dispatch.cpp: the functions and a table sorted by name.
 
 import argparse
 import os
+import re
 import sys
 import xml.etree.ElementTree as ET
 
@@ -58,6 +59,14 @@ ARRAY_POINTER_COMMANDS = {
 FLOAT_TYPES = {"GLfloat", "GLclampf", "GLdouble", "GLclampd"}
 SIGNED_TYPES = {"GLbyte", "GLshort", "GLint", "GLsizei", "GLintptr", "GLsizeiptr", "GLintptrARB",
                 "GLsizeiptrARB", "GLint64", "GLfixed"}
+
+# Element counts the registry gives as COMPSIZE(...) that GL reads beyond 256 bytes: evaluator
+# control points (an upper bound of (order - 1) * stride + components).
+EVALUATOR_COUNTS = {
+    "glMap1f": "stride * order + 4", "glMap1d": "stride * order + 4",
+    "glMap2f": "ustride * uorder + vstride * vorder + 4",
+    "glMap2d": "ustride * uorder + vstride * vorder + 4",
+}
 
 NAME_KINDS = {"texture": "kTexture", "buffer": "kBuffer", "query": "kQuery",
               "display list": "kList"}
@@ -97,6 +106,28 @@ def image_expr(cmd, text):
     return text
 
 
+def with_params(cmd, expr):
+    """`expr` (C++ over the command's parameter names) with each name read from the call."""
+    for i, p in enumerate(cmd.params):
+        expr = re.sub(rf"\b{p.name}\b", f"c.sint<int64_t>({i})", expr)
+    return expr
+
+
+def element_count(cmd, p):
+    """A C++ expression for the elements GL reads through pointer `p`, or None (then the
+    conversion's fixed minimum applies)."""
+    custom = api.CUSTOM_ARRAY_COUNTS.get((api.core_name(cmd.name), p.name))
+    if custom:
+        return with_params(cmd, custom[1])
+    if cmd.name in EVALUATOR_COUNTS and p.name == "points":
+        return with_params(cmd, EVALUATOR_COUNTS[cmd.name])
+    names = {q.name for q in cmd.params}
+    if p.length is not None and re.fullmatch(r"\w+(\*\d+)?", p.length) and \
+            p.length.split("*")[0] in names:
+        return with_params(cmd, p.length.replace("*", " * "))
+    return None
+
+
 def emit_command(cmd, classes):
     """C++ body of one generated replay function, or None if it needs a hand-written one."""
     lines, args, types = [], [], []
@@ -114,9 +145,10 @@ def emit_command(cmd, classes):
             lines.append(f"  const void* a{i} = c.image({i}, {shape}, {three_d});")
             args.append(f"static_cast<{p.ctype}>(a{i})")
             continue
-        if p.is_pointer and p.ptype is None and p.length in param_index:
-            # Data with its size in another parameter (glBufferData, glCompressedTexImage*).
-            lines.append(f"  const void* a{i} = c.sized_data({i}, c.sint<int64_t>({param_index[p.length]}));")
+        if p.is_pointer and p.ptype is None and element_count(cmd, p) is not None:
+            # Data with its size in another parameter (glBufferData, glCompressedTexImage*,
+            # glCallLists).
+            lines.append(f"  const void* a{i} = c.sized_data({i}, {element_count(cmd, p)});")
             args.append(f"a{i}")
             continue
         if not p.is_pointer:
@@ -136,10 +168,11 @@ def emit_command(cmd, classes):
             lines.append(f"  const void* a{i} = c.pointer({i}, {role});")
             args.append(f"a{i}")
         elif p.ptype in api.GL_SCALAR_TYPES:
+            count = element_count(cmd, p) or "0"
             if name_kind:
-                lines.append(f"  const NameArray a{i}(c, {i}, NameKind::{name_kind});")
+                lines.append(f"  const NameArray a{i}(c, {i}, NameKind::{name_kind}, {count});")
             else:
-                lines.append(f"  const TypedArray<{p.ptype}> a{i}(c, {i});")
+                lines.append(f"  const TypedArray<{p.ptype}> a{i}(c, {i}, {count});")
             args.append(f"a{i}.get()")
         else:
             return None
@@ -182,7 +215,9 @@ def main():
         table.append((n, f"generated::{n}"))
 
     out = [HEADER,
-           '#include "gl/gl_enums.h"\n#include "replay/call_context.hpp"\n#include "replay/special_calls.hpp"\n\n',
+           '#include "gl/gl_enums.h"\n#include "gl_shim/dispatch.hpp"\n'
+           '#include "gl_shim/pixels/list_images.hpp"\n#include "replay/call_context.hpp"\n'
+           '#include "replay/special_calls.hpp"\n\n',
            "namespace glpt::replay {\nnamespace generated {\nnamespace {\n\n"]
     out.append("\n\n".join(functions))
     out.append("\n\n}  // namespace\n}  // namespace generated\n\n")
