@@ -16,12 +16,13 @@ import os
 import re
 import shutil
 import signal
-import struct
 import subprocess
 import sys
 import tempfile
 import time
 import zlib
+
+import glpt_images
 
 HACK_DIR = "/usr/libexec/xscreensaver"
 # Programs in HACK_DIR that are not screen hacks: listed, not run, not counted.
@@ -32,58 +33,11 @@ NOT_HACKS = {
 
 
 def png_is_flat(path):
-    """True when the 8-bit RGB/RGBA PNG at `path` holds a single colour (or cannot be read)."""
+    """True when the PNG at `path` holds a single colour or cannot be read."""
     try:
-        data = open(path, "rb").read()
-    except OSError:
+        return glpt_images.is_flat(glpt_images.read_png(path)[2])
+    except (OSError, ValueError, zlib.error):
         return True
-    if data[:8] != b"\x89PNG\r\n\x1a\n":
-        return True
-    pos, idat, width, height, channels = 8, b"", 0, 0, 0
-    while pos + 8 <= len(data):
-        length, kind = struct.unpack(">I4s", data[pos:pos + 8])
-        body = data[pos + 8:pos + 8 + length]
-        if kind == b"IHDR":
-            width, height, depth, colour = struct.unpack(">IIBB", body[:10])
-            if depth != 8 or colour not in (2, 6):
-                return True
-            channels = 3 if colour == 2 else 4
-        elif kind == b"IDAT":
-            idat += body
-        pos += 12 + length
-    try:
-        raw = zlib.decompress(idat)
-    except zlib.error:
-        return True
-    stride = width * channels
-    previous = bytearray(stride)
-    first = None
-    for y in range(height):
-        line = raw[y * (stride + 1):(y + 1) * (stride + 1)]
-        if len(line) != stride + 1:
-            return True
-        kind, row = line[0], bytearray(line[1:])
-        for i in range(stride):
-            a = row[i - channels] if i >= channels else 0
-            b = previous[i]
-            c = previous[i - channels] if i >= channels else 0
-            if kind == 1:
-                row[i] = (row[i] + a) & 255
-            elif kind == 2:
-                row[i] = (row[i] + b) & 255
-            elif kind == 3:
-                row[i] = (row[i] + (a + b) // 2) & 255
-            elif kind == 4:
-                p = a + b - c
-                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
-                row[i] = (row[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
-        pixels = {bytes(row[i:i + 3]) for i in range(0, stride, channels)}
-        if first is None:
-            first = next(iter(pixels))
-        if len(pixels) > 1 or first not in pixels:
-            return False
-        previous = row
-    return True
 
 
 def start_xvfb(size):
