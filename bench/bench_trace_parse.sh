@@ -2,7 +2,7 @@
 # bench_trace_parse.sh [TRACE] [--seconds S] [--repeat N]
 #
 # How fast glpt's apitrace reader (replay/trace) parses a trace: calls/s and MB/s (of the file as
-# stored), best of N runs of build/tests/trace/glpt_trace_bench, and, as a rough reference, the
+# stored), best of N runs of build/bench/glpt_trace_bench, and, as a rough reference, the
 # time `apitrace dump` takes over the same file (apitrace parses and also formats every call as
 # text, so it is an upper bound on apitrace's own parse time, not a like-for-like figure).
 #
@@ -35,7 +35,7 @@ while [ $# -gt 0 ]; do
 done
 
 cmake --build "$build" --target glpt_trace_bench >/dev/null
-bench=$build/tests/trace/glpt_trace_bench
+bench=$build/bench/glpt_trace_bench
 
 tmp=$(mktemp -d)
 xvfb_pid=""

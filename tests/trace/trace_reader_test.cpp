@@ -65,20 +65,21 @@ Summary summarize(TraceReader& reader) {
 
 // --- Against apitrace dump -----------------------------------------------------------------
 
-TEST(ApitraceDump, GearsSnappyMatchesApitrace) {
+// Opens the trace by path (as `glpt replay` will) and compares with apitrace's dump of it.
+void expect_file_matches_apitrace(const std::string& trace, const std::string& dump) {
   std::string error;
-  auto reader = TraceReader::open(data_path("gears.trace"), error);
+  auto reader = TraceReader::open(data_path(trace), error);
   ASSERT_TRUE(reader) << error;
-  EXPECT_EQ(dump_trace(*reader, error), read_file("gears.dump.txt"));
+  EXPECT_EQ(dump_trace(*reader, error), read_file(dump));
   EXPECT_EQ(error, "");
 }
 
+TEST(ApitraceDump, GearsSnappyMatchesApitrace) {
+  expect_file_matches_apitrace("gears.trace", "gears.dump.txt");
+}
+
 TEST(ApitraceDump, GearsBrotliMatchesApitrace) {
-  std::string error;
-  auto reader = TraceReader::open(data_path("gears.brotli.trace"), error);
-  ASSERT_TRUE(reader) << error;
-  EXPECT_EQ(dump_trace(*reader, error), read_file("gears.dump.txt"));
-  EXPECT_EQ(error, "");
+  expect_file_matches_apitrace("gears.brotli.trace", "gears.dump.txt");
 }
 
 TEST(ApitraceDump, GearsGzipMatchesApitrace) {
@@ -99,11 +100,7 @@ TEST(ApitraceDump, GearsInSmallSnappyChunksMatchesApitrace) {
 }
 
 TEST(ApitraceDump, EglinfoMatchesApitrace) {
-  std::string error;
-  auto reader = TraceReader::open(data_path("eglinfo.trace"), error);
-  ASSERT_TRUE(reader) << error;
-  EXPECT_EQ(dump_trace(*reader, error), read_file("eglinfo.dump.txt"));
-  EXPECT_EQ(error, "");
+  expect_file_matches_apitrace("eglinfo.trace", "eglinfo.dump.txt");
 }
 
 TEST(ApitraceDump, CutTraceMatchesApitrace) {
