@@ -13,6 +13,10 @@ void record_error(Context& ctx, GLenum error) {
   if (ctx.error == GL_NO_ERROR) ctx.error = error;
 }
 
+void exception_at_entry_point() noexcept {
+  if (Context* ctx = current_context()) record_error(*ctx, GL_OUT_OF_MEMORY);
+}
+
 void unimplemented(Context& ctx, CommandId id) {
   const auto i = static_cast<size_t>(id);
   ++ctx.unimplemented_calls[i];

@@ -12,6 +12,9 @@ class Context;
 
 // Sets the GL error flag if it is clear (GL keeps the first error until glGetError).
 void record_error(Context& ctx, GLenum error);
+// An exception reached an exported entry point (allocation failure): GL_OUT_OF_MEMORY on the
+// current context, as GL 1.5 2.5 allows for any command, instead of unwinding into the program.
+void exception_at_entry_point() noexcept;
 
 // A command without an implementation: GL_INVALID_OPERATION the first time, and counted always.
 void unimplemented(Context& ctx, CommandId id);

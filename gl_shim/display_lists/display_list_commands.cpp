@@ -126,7 +126,11 @@ GLuint glGenLists(Context& ctx, GLsizei range) {
   GLuint start = 1;
   for (const auto& [name, entry] : lists)
     if (name >= start) start = name + 1;
-  if (static_cast<uint64_t>(start) + static_cast<uint64_t>(range) > 0xffffffffull) {
+  // Each reserved name is a map entry (~64 bytes): a range beyond 2^20 names in one call is
+  // refused as GL_OUT_OF_MEMORY rather than exhausting the machine (no program needs more).
+  constexpr GLsizei kMaxRange = GLsizei{1} << 20;
+  if (range > kMaxRange ||
+      static_cast<uint64_t>(start) + static_cast<uint64_t>(range) > 0xffffffffull) {
     record_error(ctx, GL_OUT_OF_MEMORY);
     return 0;
   }

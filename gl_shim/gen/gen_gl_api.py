@@ -623,7 +623,7 @@ def emit_entry_points(path, names, commands, gl_root):
         params = ", ".join(p.decl() for p in cmd.params) or "void"
         args = ", ".join(["*ctx"] + [p.name for p in cmd.params])
         ret_default = "" if cmd.returns_void else " {}"
-        w(f"GLPT_EXPORT {cmd.ret} {n}({params}) {{\n")
+        w(f"static inline {cmd.ret} entry_{n}({params}) {{\n")
         w("  glpt::Context* ctx = glpt::current_context();\n")
         w(f"  if (ctx == nullptr) return{ret_default};\n")
         as_vector = COMPILED_AS_VECTOR.get(core_name(n))
@@ -677,6 +677,11 @@ def emit_entry_points(path, names, commands, gl_root):
             w(f"  glpt::exec_{n}({args});\n}}\n\n")
         else:
             w(f"  return glpt::exec_{n}({args});\n}}\n\n")
+        # No C++ exception leaves an entry point: allocation failure is GL_OUT_OF_MEMORY.
+        call = ", ".join(p.name for p in cmd.params)
+        w(f"GLPT_EXPORT {cmd.ret} {n}({params}) {{\n  try {{\n    return entry_{n}({call});\n"
+          f"  }} catch (...) {{\n    glpt::exception_at_entry_point();\n    return{ret_default};\n"
+          "  }\n}\n\n")
     w("}  // extern \"C\"\n\n")
 
     # Name table for glXGetProcAddress: sorted, with whether an implementation exists.

@@ -64,9 +64,6 @@ TEST(ReplayRandomCalls, NeverCrash) {
     const std::string name = entry.name;
     // The surface grows with glViewport (to 2^25 pixels): not what this test is about.
     if (name == "glViewport") continue;
-    // Front-end problems found by this test, reported rather than worked around here:
-    // glGenLists(INT32_MAX) throws std::bad_alloc out of glpt::impl::glGenLists.
-    if (name == "glGenLists") continue;
     std::vector<trace::Value> args;
     const size_t n = rng() % 12;
     for (size_t a = 0; a < n; ++a) args.push_back(random_value(rng));

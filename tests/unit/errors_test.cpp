@@ -106,3 +106,16 @@ TEST_F(GlTest, NoCurrentContextIsHarmless) {
 }
 
 }  // namespace
+
+namespace {
+
+// An impossible reservation is GL_OUT_OF_MEMORY (GL 1.5 2.5), not an exception or an exhausted
+// machine; the context keeps working.
+TEST_F(GlTest, HugeGenListsIsOutOfMemory) {
+  EXPECT_EQ(glGenLists(0x7fffffff), 0u);
+  EXPECT_EQ(glGetError(), GLenum{GL_OUT_OF_MEMORY});
+  EXPECT_NE(glGenLists(2), 0u);
+  EXPECT_EQ(glGetError(), GLenum{GL_NO_ERROR});
+}
+
+}  // namespace
