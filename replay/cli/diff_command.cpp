@@ -27,9 +27,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Defaults, explained in docs/image-diff.md. A pixel with FLIP above 0.05 shows a difference
-// an observer can spot when flipping between the images (one 8-bit step of a flat grey is about
-// 0.03 before filtering); a mean over 0.05 means the difference is visible across the image.
+// Defaults, explained in docs/image-diff.md. A pixel's FLIP is above 0.05 for a difference
+// larger than two 8-bit steps of a flat mid grey (128 against 130 gives 0.048); a mean over 0.05
+// is a difference visible across the image (+-6 levels of noise on a gradient gives 0.042).
 constexpr double kDefaultPixelTolerance = 0.05;
 constexpr double kDefaultThreshold = 0.05;
 

@@ -338,8 +338,10 @@ bool compute_flip(const Rgb8View& reference, const Rgb8View& test, double ppd, F
 
 double fraction_over(const FlipResult& result, double tolerance) {
   if (result.error.empty()) return 0.0;
+  // Compared in float, the map's precision: a value stored as 0.05f is not "over 0.05".
+  const float limit = static_cast<float>(tolerance);
   const auto over = std::count_if(result.error.begin(), result.error.end(),
-                                  [tolerance](float e) { return e > tolerance; });
+                                  [limit](float e) { return e > limit; });
   return static_cast<double>(over) / static_cast<double>(result.error.size());
 }
 
