@@ -44,12 +44,12 @@ struct DiffOptions {
 };
 
 struct Pair {
-  std::string a, b;        // empty when the name is only on the other side
-  std::string heatmap;     // where to write this pair's heat map; empty: nowhere
+  std::string a, b;     // empty when the name is only on the other side
+  std::string heatmap;  // where to write this pair's heat map; empty: nowhere
 };
 
 bool is_directory(const std::string& path) {
-  struct stat st{};
+  struct stat st {};
   return stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode);
 }
 
@@ -58,7 +58,8 @@ std::string file_name(const std::string& path) { return fs::path(path).filename(
 bool has_png_extension(const std::string& name) {
   if (name.size() < 4) return false;
   std::string ext = name.substr(name.size() - 4);
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
   return ext == ".png";
 }
 
@@ -86,11 +87,21 @@ std::string json_string(const std::string& s) {
   std::string r = "\"";
   for (unsigned char c : s) {
     switch (c) {
-      case '"': r += "\\\""; break;
-      case '\\': r += "\\\\"; break;
-      case '\n': r += "\\n"; break;
-      case '\t': r += "\\t"; break;
-      case '\r': r += "\\r"; break;
+      case '"':
+        r += "\\\"";
+        break;
+      case '\\':
+        r += "\\\\";
+        break;
+      case '\n':
+        r += "\\n";
+        break;
+      case '\t':
+        r += "\\t";
+        break;
+      case '\r':
+        r += "\\r";
+        break;
       default:
         if (c < 0x20) {
           char buf[8];
@@ -285,8 +296,8 @@ void report_json(const Pair& pair, const Comparison& c, const DiffOptions& o, st
       << ",\"flip_mean\":" << number(c.flip_mean) << ",\"flip_max\":" << number(c.flip_max)
       << ",\"psnr\":" << (std::isinf(c.psnr) ? "null" : number(c.psnr))
       << ",\"pixel_tolerance\":" << number(o.pixel_tolerance)
-      << ",\"fraction_over_tolerance\":" << number(c.fraction_over)
-      << ",\"ppd\":" << number(o.ppd) << ",\"threshold\":" << number(o.threshold)
+      << ",\"fraction_over_tolerance\":" << number(c.fraction_over) << ",\"ppd\":" << number(o.ppd)
+      << ",\"threshold\":" << number(o.threshold)
       << ",\"over_threshold\":" << (c.outcome == Outcome::kOverThreshold ? "true" : "false");
   if (!pair.heatmap.empty()) out << ",\"heatmap\":" << json_string(pair.heatmap);
   out << "}\n";
@@ -372,10 +383,18 @@ int diff_main(std::span<const std::string> args, std::ostream& out, std::ostream
       report_text(pair, c, o, out, err);
     }
     switch (c.outcome) {
-      case Outcome::kWithinThreshold: ++compared; break;
-      case Outcome::kOverThreshold: ++compared, ++over; break;
-      case Outcome::kUnmatched: ++unmatched; break;
-      case Outcome::kError: ++errors; break;
+      case Outcome::kWithinThreshold:
+        ++compared;
+        break;
+      case Outcome::kOverThreshold:
+        ++compared, ++over;
+        break;
+      case Outcome::kUnmatched:
+        ++unmatched;
+        break;
+      case Outcome::kError:
+        ++errors;
+        break;
     }
   }
   if (pairs->size() > 1 && !o.json) {

@@ -62,22 +62,32 @@ bool is_choice(const std::string& s, std::string_view choices) {
 
 bool valid(const QualityFlag& f, const std::string& value) {
   switch (f.value) {
-    case FlagValue::kCount: return is_count(value);
-    case FlagValue::kNumber: return is_number(value);
-    case FlagValue::kText: return !value.empty();
-    case FlagValue::kChoice: return is_choice(value, f.metavar);
-    case FlagValue::kNone: return true;
+    case FlagValue::kCount:
+      return is_count(value);
+    case FlagValue::kNumber:
+      return is_number(value);
+    case FlagValue::kText:
+      return !value.empty();
+    case FlagValue::kChoice:
+      return is_choice(value, f.metavar);
+    case FlagValue::kNone:
+      return true;
   }
   return false;
 }
 
 const char* expected(FlagValue v) {
   switch (v) {
-    case FlagValue::kCount: return "a whole number";
-    case FlagValue::kNumber: return "a non-negative number";
-    case FlagValue::kText: return "a non-empty value";
-    case FlagValue::kChoice: return "one of";
-    case FlagValue::kNone: return "no value";
+    case FlagValue::kCount:
+      return "a whole number";
+    case FlagValue::kNumber:
+      return "a non-negative number";
+    case FlagValue::kText:
+      return "a non-empty value";
+    case FlagValue::kChoice:
+      return "one of";
+    case FlagValue::kNone:
+      return "no value";
   }
   return "";
 }

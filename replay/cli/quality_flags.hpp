@@ -12,18 +12,18 @@
 namespace glpt::cli {
 
 enum class FlagValue {
-  kNone,     // a switch: sets the variable to `fixed_value`
-  kCount,    // a non-negative integer
-  kNumber,   // a finite non-negative real number
-  kText,     // any non-empty text (a directory, a device name)
-  kChoice,   // one of the words in `metavar`, separated by '|'
+  kNone,    // a switch: sets the variable to `fixed_value`
+  kCount,   // a non-negative integer
+  kNumber,  // a finite non-negative real number
+  kText,    // any non-empty text (a directory, a device name)
+  kChoice,  // one of the words in `metavar`, separated by '|'
 };
 
 struct QualityFlag {
-  std::string_view flag;         // "--spp"
-  std::string_view variable;     // "GLPT_SPP"
+  std::string_view flag;      // "--spp"
+  std::string_view variable;  // "GLPT_SPP"
   FlagValue value;
-  std::string_view metavar;      // "N", "DIR", "path|raster"; the value for switches
+  std::string_view metavar;  // "N", "DIR", "path|raster"; the value for switches
   std::string_view help;
 };
 

@@ -15,15 +15,15 @@ struct SumOfGaussians {
   double a1, b1, a2, b2;
 };
 constexpr std::array<SumOfGaussians, 3> kChannelCsf = {{
-    {1.0, 0.0047, 0.0, 1e-5},    // achromatic (Yy)
-    {1.0, 0.0053, 0.0, 1e-5},    // red-green (Cx)
+    {1.0, 0.0047, 0.0, 1e-5},   // achromatic (Yy)
+    {1.0, 0.0053, 0.0, 1e-5},   // red-green (Cx)
     {34.1, 0.04, 13.5, 0.025},  // blue-yellow (Cz)
 }};
-constexpr double kColorExponent = 0.7;   // q_c: compresses the HyAB distance
-constexpr double kColorCutoff = 0.4;     // p_c: fraction of the largest error ...
-constexpr double kColorCutoffMap = 0.95; // p_t: ... that is mapped to this value
-constexpr double kFeatureWidth = 0.082;  // w: edge/point feature width in degrees
-constexpr double kFeatureExponent = 0.5; // q_f
+constexpr double kColorExponent = 0.7;    // q_c: compresses the HyAB distance
+constexpr double kColorCutoff = 0.4;      // p_c: fraction of the largest error ...
+constexpr double kColorCutoffMap = 0.95;  // p_t: ... that is mapped to this value
+constexpr double kFeatureWidth = 0.082;   // w: edge/point feature width in degrees
+constexpr double kFeatureExponent = 0.5;  // q_f
 
 // sRGB (IEC 61966-2-1) primaries with the D65 white: linear RGB to CIE XYZ and back.
 constexpr double kRgbToXyz[3][3] = {{0.4123908, 0.3575843, 0.1804808},
@@ -91,7 +91,9 @@ double hyab(const Vec3& p, const Vec3& q) {
   return std::abs(double{p[0]} - q[0]) + std::sqrt(da * da + db * db);
 }
 
-Vec3 linear_rgb_to_hunt_lab(const Vec3& rgb) { return hunt_adjust(xyz_to_lab(multiply(kRgbToXyz, rgb))); }
+Vec3 linear_rgb_to_hunt_lab(const Vec3& rgb) {
+  return hunt_adjust(xyz_to_lab(multiply(kRgbToXyz, rgb)));
+}
 
 // The largest colour error FLIP expects: between pure green and pure blue, compressed by q_c.
 double max_color_error() {
@@ -190,7 +192,7 @@ FeatureFilters feature_filters(double ppd) {
     const double gi = std::exp(-double(i) * i / (2.0 * sigma * sigma));
     g.push_back(gi);
     g_sum += gi;
-    dg.push_back(-i * gi);                                   // d/dx, up to a positive factor
+    dg.push_back(-i * gi);                                        // d/dx, up to a positive factor
     ddg.push_back((double(i) * i / (sigma * sigma) - 1.0) * gi);  // d2/dx2, likewise
   }
   FeatureFilters f;
@@ -242,8 +244,8 @@ std::vector<Vec3> perceived_colors(const Opponent& o, double ppd) {
   }
   std::vector<Vec3> lab(static_cast<size_t>(w) * h);
   for (size_t i = 0; i < lab.size(); ++i) {
-    Vec3 rgb = multiply(kXyzToRgb,
-                        ycxcz_to_xyz({filtered[0].v[i], filtered[1].v[i], filtered[2].v[i]}));
+    Vec3 rgb =
+        multiply(kXyzToRgb, ycxcz_to_xyz({filtered[0].v[i], filtered[1].v[i], filtered[2].v[i]}));
     for (float& c : rgb) c = std::clamp(c, 0.0f, 1.0f);
     lab[i] = linear_rgb_to_hunt_lab(rgb);
   }
@@ -293,8 +295,8 @@ bool compute_flip(const Rgb8View& reference, const Rgb8View& test, double ppd, F
   }
   if (reference.width != test.width || reference.height != test.height) {
     return fail(error, "sizes differ: " + std::to_string(reference.width) + "x" +
-                           std::to_string(reference.height) + " and " +
-                           std::to_string(test.width) + "x" + std::to_string(test.height));
+                           std::to_string(reference.height) + " and " + std::to_string(test.width) +
+                           "x" + std::to_string(test.height));
   }
   if (!(ppd > 0.0) || !std::isfinite(ppd)) return fail(error, "pixels per degree must be > 0");
 
@@ -319,9 +321,9 @@ bool compute_flip(const Rgb8View& reference, const Rgb8View& test, double ppd, F
     // Compressed colour distance, remapped so that errors up to p_c * c_max fill [0, p_t] and
     // the rest (p_t, 1]: small differences get most of the range.
     const double d = std::pow(hyab(ref_lab[i], tst_lab[i]), kColorExponent);
-    const double color = d < cutoff ? d * kColorCutoffMap / cutoff
-                                    : kColorCutoffMap + (d - cutoff) / (c_max - cutoff) *
-                                                            (1.0 - kColorCutoffMap);
+    const double color =
+        d < cutoff ? d * kColorCutoffMap / cutoff
+                   : kColorCutoffMap + (d - cutoff) / (c_max - cutoff) * (1.0 - kColorCutoffMap);
     const double edge = std::abs(double{ref_features.edge[i]} - tst_features.edge[i]);
     const double point = std::abs(double{ref_features.point[i]} - tst_features.point[i]);
     const double feature = std::pow(std::max(edge, point) / std::numbers::sqrt2, kFeatureExponent);

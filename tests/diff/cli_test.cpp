@@ -80,9 +80,9 @@ TEST_F(Cli, RunHelpListsEveryQualityFlag) {
 }
 
 TEST(QualityFlags, ParsesEveryForm) {
-  const std::vector<std::string> args = {"--spp",   "4",          "--mode=raster",    "--stats",
-                                         "--light-size-deg", "0.5", "--output", "/tmp/x",
-                                         "--no-accumulate",  "prog"};
+  const std::vector<std::string> args = {
+      "--spp", "4",        "--mode=raster", "--stats",         "--light-size-deg",
+      "0.5",   "--output", "/tmp/x",        "--no-accumulate", "prog"};
   EnvSettings env;
   std::string error;
   size_t i = 0;
@@ -168,7 +168,8 @@ TEST_F(Cli, RunFindsTheLibraryNextToGlpt) {
 
   // And the executable uses it: a copy of glpt in the fake build tree preloads that file.
   fs::copy_file(kGlpt, dir_ + "/build/replay/glpt");
-  const Result r = shell("LD_PRELOAD= " + dir_ + "/build/replay/glpt run -- sh -c 'echo \"[$LD_PRELOAD]\"'");
+  const Result r =
+      shell("LD_PRELOAD= " + dir_ + "/build/replay/glpt run -- sh -c 'echo \"[$LD_PRELOAD]\"'");
   EXPECT_EQ(r.status, 0) << r.out;
   EXPECT_NE(r.out.find("[" + dir_ + "/build/replay/../gl_shim/libGL.so.1]"), std::string::npos)
       << r.out;
@@ -190,8 +191,7 @@ TEST_F(Cli, RecordRunsApitrace) {
             std::string::npos)
       << r.out;
   const Result defaults = shell("PATH=" + bin + ":/usr/bin:/bin " + kGlpt + " record prog");
-  EXPECT_NE(defaults.out.find("apitrace trace --api gl prog"), std::string::npos)
-      << defaults.out;
+  EXPECT_NE(defaults.out.find("apitrace trace --api gl prog"), std::string::npos) << defaults.out;
   EXPECT_EQ(shell("PATH=" + bin + " " + kGlpt + " record --api glx prog").status, 2);
   EXPECT_EQ(shell("PATH=" + bin + " " + kGlpt + " record -o").status, 2);
 }

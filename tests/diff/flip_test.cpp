@@ -1,4 +1,6 @@
 // LDR-FLIP, PSNR and the heat map on images whose answers are known by hand.
+#include "flip.hpp"
+
 #include <gtest/gtest.h>
 
 #include <array>
@@ -7,7 +9,6 @@
 #include <numbers>
 #include <vector>
 
-#include "flip.hpp"
 #include "heatmap.hpp"
 #include "psnr.hpp"
 
@@ -96,9 +97,8 @@ TEST(Flip, RejectsBadInput) {
   EXPECT_NE(error.find("8x4"), std::string::npos) << error;
   EXPECT_FALSE(compute_flip(view(8, 8, a), view(8, 8, a), 0.0, &r, &error));
   EXPECT_FALSE(compute_flip(view(8, 8, a), view(8, 8, a), -3.0, &r, &error));
-  EXPECT_FALSE(
-      compute_flip(view(8, 8, a), view(8, 8, a), std::numeric_limits<double>::quiet_NaN(), &r,
-                   &error));
+  EXPECT_FALSE(compute_flip(view(8, 8, a), view(8, 8, a), std::numeric_limits<double>::quiet_NaN(),
+                            &r, &error));
   EXPECT_FALSE(compute_flip(view(0, 0, a), view(0, 0, a), 67.0, &r, &error));
   EXPECT_FALSE(compute_flip(view(8, 8, a, 2), view(8, 8, a, 2), 67.0, &r, &error));
   EXPECT_FALSE(compute_flip({8, 8, 3, nullptr}, view(8, 8, a), 67.0, &r, &error));
