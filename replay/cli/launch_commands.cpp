@@ -14,9 +14,12 @@ namespace {
 // Splits "[OPTIONS] [--] PROGRAM ARGS": options are consumed by `option` (which returns false
 // for an argument it does not know); the program starts after "--" or at the first argument
 // that does not start with '-'.
+// "-h"/"--help" before the program prints `help` instead.
+enum class Split { kProgram, kHelpShown, kError };
+
 template <typename Option>
-bool split_program(std::span<const std::string> args, const char* who, Option option,
-                   std::vector<std::string>* program) {
+Split split_program(std::span<const std::string> args, const char* who, std::string (*help)(),
+                    Option option, std::vector<std::string>* program) {
   size_t i = 0;
   while (i < args.size()) {
     const std::string& a = args[i];
@@ -25,22 +28,29 @@ bool split_program(std::span<const std::string> args, const char* who, Option op
       break;
     }
     if (a.empty() || a[0] != '-') break;
+    if (is_help_flag(a)) {
+      std::fputs(help().c_str(), stdout);
+      return Split::kHelpShown;
+    }
     const size_t before = i;
     std::string error;
     if (!option(&i, &error)) {
       std::fprintf(stderr, "glpt %s: %s (see glpt %s --help)\n", who,
                    error.empty() ? ("unknown option " + a).c_str() : error.c_str(), who);
-      return false;
+      return Split::kError;
     }
     if (i == before) ++i;
   }
   program->assign(args.begin() + static_cast<std::ptrdiff_t>(i), args.end());
   if (program->empty()) {
     std::fprintf(stderr, "glpt %s: no program given (see glpt %s --help)\n", who, who);
-    return false;
+    return Split::kError;
   }
-  return true;
+  return Split::kProgram;
 }
+
+// The exit status for a command line that gave no program to run.
+int status_without_program(Split split) { return split == Split::kHelpShown ? 0 : kExitUsage; }
 
 // The value of option args[*i] ("-o FILE", "--output=FILE"); advances *i past it.
 bool option_value(std::span<const std::string> args, size_t* i, std::string* value,
@@ -103,14 +113,13 @@ int run_main(std::span<const std::string> args) {
   std::vector<std::string> program;
   auto option = [&](size_t* i, std::string* error) {
     const std::string& a = args[*i];
-    if (is_help_flag(a)) {
-      std::fputs(run_help().c_str(), stdout);
-      std::exit(0);
-    }
     if (option_is(a, "--lib")) return option_value(args, i, &lib, error);
     return parse_quality_flag(args, i, &env, error) == FlagParse::kParsed;
   };
-  if (!split_program(args, "run", option, &program)) return kExitUsage;
+  if (const Split split = split_program(args, "run", run_help, option, &program);
+      split != Split::kProgram) {
+    return status_without_program(split);
+  }
   if (lib.empty()) {
     lib = find_glpt_library(executable_dir());
     if (lib.empty()) {
@@ -150,10 +159,6 @@ int record_main(std::span<const std::string> args) {
   std::vector<std::string> program;
   auto option = [&](size_t* i, std::string* error) {
     const std::string& a = args[*i];
-    if (is_help_flag(a)) {
-      std::fputs(record_help().c_str(), stdout);
-      std::exit(0);
-    }
     if (option_is(a, "--api")) {
       if (!option_value(args, i, &api, error)) return false;
       if (api != "gl" && api != "egl") {
@@ -165,7 +170,10 @@ int record_main(std::span<const std::string> args) {
     if (a == "-o" || option_is(a, "--output")) return option_value(args, i, &output, error);
     return false;
   };
-  if (!split_program(args, "record", option, &program)) return kExitUsage;
+  if (const Split split = split_program(args, "record", record_help, option, &program);
+      split != Split::kProgram) {
+    return status_without_program(split);
+  }
   const std::string apitrace = find_program("apitrace");
   if (apitrace.empty()) {
     std::fprintf(stderr,

@@ -11,6 +11,7 @@
 
 #include "commands.hpp"
 #include "quality_flags.hpp"
+#include "temp_dir.hpp"
 
 namespace glpt::cli {
 namespace {
@@ -39,17 +40,12 @@ const std::string kGlpt = GLPT_CLI_EXE;
 
 class Cli : public ::testing::Test {
  protected:
-  void SetUp() override {
-    std::string tmpl = ::testing::TempDir() + "glpt_cli_XXXXXX";
-    ASSERT_NE(mkdtemp(tmpl.data()), nullptr);
-    dir_ = tmpl;
-  }
-  void TearDown() override { fs::remove_all(dir_); }
   void script(const std::string& path, const std::string& body) {
     std::ofstream(path) << "#!/bin/sh\n" << body << "\n";
     fs::permissions(path, fs::perms::owner_all);
   }
-  std::string dir_;
+  glpt::testing::ScopedTempDir temp_{"glpt_cli"};
+  const std::string dir_ = temp_.path();
 };
 
 TEST_F(Cli, HelpForEveryCommand) {

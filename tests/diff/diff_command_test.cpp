@@ -11,6 +11,7 @@
 
 #include "commands.hpp"
 #include "image_io.hpp"
+#include "temp_dir.hpp"
 
 namespace glpt::cli {
 namespace {
@@ -37,13 +38,6 @@ std::vector<std::string> lines(const std::string& text) {
 
 class DiffCommand : public ::testing::Test {
  protected:
-  void SetUp() override {
-    std::string tmpl = ::testing::TempDir() + "glpt_diff_XXXXXX";
-    ASSERT_NE(mkdtemp(tmpl.data()), nullptr);
-    dir_ = tmpl;
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
   // Writes a w x h PNG filled with grey level `v`, with one pixel set to `spot`.
   std::string png(const std::string& relative, uint32_t w, uint32_t h, uint8_t v,
                   uint8_t spot = 0) {
@@ -59,7 +53,8 @@ class DiffCommand : public ::testing::Test {
   static std::string data(const std::string& name) {
     return std::string(GLPT_DIFF_TEST_DATA) + "/" + name;
   }
-  std::string dir_;
+  glpt::testing::ScopedTempDir temp_{"glpt_diff"};
+  const std::string dir_ = temp_.path();
 };
 
 TEST_F(DiffCommand, IdenticalImagesPassWithNullPsnr) {
