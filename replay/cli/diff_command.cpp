@@ -149,10 +149,11 @@ std::optional<std::string> parse(std::span<const std::string> args, DiffOptions*
       value = args[++i];
       return true;
     };
-    auto take_number = [&](double* out, double min_exclusive) -> std::optional<std::string> {
+    // A number >= 0 (> 0 when `positive`).
+    auto take_number = [&](double* out, bool positive) -> std::optional<std::string> {
       if (!take_value()) return a + " needs a number";
-      if (!parse_number(value, out) || !(*out > min_exclusive)) {
-        return a + ": \"" + value + "\" is not a number above " + number(min_exclusive);
+      if (!parse_number(value, out) || *out < 0.0 || (positive && *out == 0.0)) {
+        return a + ": \"" + value + "\" is not a number " + (positive ? "above 0" : ">= 0");
       }
       return std::nullopt;
     };
@@ -161,11 +162,11 @@ std::optional<std::string> parse(std::span<const std::string> args, DiffOptions*
       *help = true;
       return std::nullopt;
     } else if (a == "--ppd") {
-      problem = take_number(&o->ppd, 0.0);
+      problem = take_number(&o->ppd, true);
     } else if (a == "--pixel-tolerance") {
-      problem = take_number(&o->pixel_tolerance, -1.0);
+      problem = take_number(&o->pixel_tolerance, false);
     } else if (a == "--threshold") {
-      problem = take_number(&o->threshold, -1.0);
+      problem = take_number(&o->threshold, false);
     } else if (a == "--heatmap") {
       if (!take_value() || value.empty()) problem = "--heatmap needs a file or directory";
       o->heatmap = value;

@@ -130,6 +130,9 @@ TEST_F(DiffCommand, BadCommandLinesExitTwo) {
   EXPECT_EQ(diff({a, a, a}).status, 2);
   EXPECT_EQ(diff({"--ppd", "0", a, a}).status, 2);
   EXPECT_EQ(diff({"--ppd", "x", a, a}).status, 2);
+  EXPECT_EQ(diff({"--pixel-tolerance", "-0.1", a, a}).status, 2);
+  EXPECT_EQ(diff({"--threshold=-1", a, a}).status, 2);
+  EXPECT_EQ(diff({"--threshold=0", a, a}).status, 0);
   EXPECT_EQ(diff({"--threshold", a, a}).status, 2);  // "a.png" is not a number
   EXPECT_EQ(diff({"--frobnicate", a, a}).status, 2);
   EXPECT_EQ(diff({a, a, "--ppd"}).status, 2);
