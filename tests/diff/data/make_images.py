@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
 """Writes the synthetic image pairs of tests/diff/data (8-bit RGB PNGs), Python stdlib only.
+(gears_a/b.png are not made here: they are frames rendered by glpt, see flip_reference_test.cpp.)
 
 Each pair NAME_a.png / NAME_b.png exercises one part of FLIP: smooth colour with noise, sharp
 edges moved by a pixel, saturated colour changes, a rendered-looking scene with and without
