@@ -13,6 +13,7 @@
 // test was written (docs/image-diff.md); the test allows the 1% the issue asks for.
 #include <gtest/gtest.h>
 
+#include <ostream>
 #include <string>
 
 #include "flip.hpp"
@@ -37,6 +38,10 @@ constexpr ReferenceCase kCases[] = {
     {"dots", 0, 0.151637},      // isolated bright points, some added
     {"gears", 0, 0.020569},     // glxgears rendered by glpt: raster mode against path-traced
 };
+
+void PrintTo(const ReferenceCase& c, std::ostream* os) {
+  *os << c.name << " at " << (c.ppd > 0 ? c.ppd : default_pixels_per_degree()) << " ppd";
+}
 
 class FlipVsNvlabs : public ::testing::TestWithParam<ReferenceCase> {};
 
