@@ -6,8 +6,8 @@ calls to unimplemented GL commands, how the run ended, and whether it drew.
   scripts/xscreensaver_table.py [--libgl PATH] [--seconds S] [--size WxH] [--out docs/xscreensaver.md]
                                 [--filter REGEX] [--mode raster|path]
 
-A hack "draws" when glpt ended at least one frame with a draw in it and the last PNG it wrote
-(GLPT_OUTPUT, every 10th frame) is not one flat colour. "crash": the hack died of a signal other
+A hack "draws" when glpt ended at least one frame with a draw in it and one of the last five PNGs
+it wrote (GLPT_OUTPUT, every 10th frame) is not one flat colour. "crash": the hack died of a signal other
 than the SIGTERM that ends every run, or glpt/EGL/GLX reported a fatal error. Counts come from
 GLPT_STATS=1 lines ("glpt: frame=..." and the running "glpt: totals ..." line).
 """
@@ -90,7 +90,8 @@ def run_hack(path, display, libgl, seconds, size, mode, work):
     if fatal and not ended.startswith("crash"):
         ended = f"crash ({fatal.group(1)})"
     pngs = sorted(f for f in os.listdir(out) if f.endswith(".png"))
-    draws = drawn > 0 and bool(pngs) and not png_is_flat(os.path.join(out, pngs[-1]))
+    # Animations fade and move off-screen, so any of the last few PNGs may show the drawing.
+    draws = drawn > 0 and any(not png_is_flat(os.path.join(out, p)) for p in pngs[-5:])
     last_line = ""
     if not draws:
         lines = [l for l in text.splitlines() if l.strip() and not l.startswith("glpt: frame=")
@@ -145,8 +146,8 @@ def main():
                 f"--mode {args.mode}` ({time.strftime('%Y-%m-%d')}, "
                 f"{time.time() - started:.0f} s in all).\n\n")
         f.write(f"**{drawing} of {len(rows)} hacks draw ({share:.1f} %); {crashes} crash.** "
-                "A hack draws when glpt ended a frame with draws in it and its last PNG is not "
-                "one flat colour. Frames: frames glpt ended (slow machine: 2 cores, lavapipe). "
+                "A hack draws when glpt ended a frame with draws in it and one of its last five "
+                "PNGs (every 10th frame) is not one flat colour. Frames: frames glpt ended (slow machine: 2 cores, lavapipe). "
                 "GL errors: every GL error glpt recorded (GL keeps only the first until read). "
                 "Unimplemented: calls to GL commands glpt does not implement. End: `ran` = ran "
                 "until stopped with SIGTERM.\n\n")
