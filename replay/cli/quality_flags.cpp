@@ -1,0 +1,154 @@
+#include "quality_flags.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+
+namespace glpt::cli {
+namespace {
+
+// The ranges in the help texts are rt_core's (rt_core/render_settings.cpp): it validates the
+// values and warns about and ignores those outside them.
+constexpr std::array kFlags = {
+    QualityFlag{"--mode", "GLPT_MODE", FlagValue::kChoice, "path|raster",
+                "path tracing (default) or GL fixed function on Vulkan raster pipelines"},
+    QualityFlag{"--spp", "GLPT_SPP", FlagValue::kCount, "N",
+                "samples per pixel per frame, 1..1024 (default 1)"},
+    QualityFlag{"--bounces", "GLPT_BOUNCES", FlagValue::kCount, "N",
+                "diffuse bounces after the primary hit, 0..16 (default 1; 0 = direct light)"},
+    QualityFlag{"--no-accumulate", "GLPT_ACCUMULATE", FlagValue::kNone, "0",
+                "do not average frames while nothing changes"},
+    QualityFlag{"--max-spp", "GLPT_MAX_SPP", FlagValue::kCount, "N",
+                "stop accumulating at N samples per pixel"},
+    QualityFlag{"--light-size-deg", "GLPT_LIGHT_SIZE_DEG", FlagValue::kNumber, "D",
+                "angular radius of GL lights for soft shadows, 0..45 (default 1)"},
+    QualityFlag{"--output", "GLPT_OUTPUT", FlagValue::kText, "DIR",
+                "also write every frame as DIR/frame_NNNNNN.png"},
+    QualityFlag{"--output-every", "GLPT_OUTPUT_EVERY", FlagValue::kCount, "N",
+                "with --output: only every Nth frame"},
+    QualityFlag{"--stats", "GLPT_STATS", FlagValue::kNone, "1",
+                "one line per frame on stderr: timings, draws, rays, BLAS builds"},
+    QualityFlag{"--validation", "GLPT_VALIDATION", FlagValue::kNone, "1",
+                "enable the Khronos Vulkan validation layer"},
+    QualityFlag{"--vk-device", "GLPT_VK_DEVICE", FlagValue::kText, "SUBSTR",
+                "pick the Vulkan device whose name contains SUBSTR"},
+    QualityFlag{"--quiet", "GLPT_QUIET", FlagValue::kNone, "1",
+                "no message for unimplemented GL commands"},
+};
+
+bool is_count(const std::string& s) {
+  return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
+
+bool is_number(const std::string& s) {
+  if (s.empty() || s[0] == '-' || s[0] == '+') return false;
+  errno = 0;
+  char* end = nullptr;
+  const double v = std::strtod(s.c_str(), &end);
+  return errno == 0 && *end == '\0' && std::isfinite(v);
+}
+
+bool is_choice(const std::string& s, std::string_view choices) {
+  size_t start = 0;
+  while (start <= choices.size()) {
+    const size_t bar = std::min(choices.find('|', start), choices.size());
+    if (choices.substr(start, bar - start) == s) return true;
+    start = bar + 1;
+  }
+  return false;
+}
+
+bool valid(const QualityFlag& f, const std::string& value) {
+  switch (f.value) {
+    case FlagValue::kCount:
+      return is_count(value);
+    case FlagValue::kNumber:
+      return is_number(value);
+    case FlagValue::kText:
+      return !value.empty();
+    case FlagValue::kChoice:
+      return is_choice(value, f.metavar);
+    case FlagValue::kNone:
+      return true;
+  }
+  return false;
+}
+
+const char* expected(FlagValue v) {
+  switch (v) {
+    case FlagValue::kCount:
+      return "a whole number";
+    case FlagValue::kNumber:
+      return "a non-negative number";
+    case FlagValue::kText:
+      return "a non-empty value";
+    case FlagValue::kChoice:
+      return "one of";
+    case FlagValue::kNone:
+      return "no value";
+  }
+  return "";
+}
+
+}  // namespace
+
+std::span<const QualityFlag> quality_flags() { return kFlags; }
+
+FlagParse parse_quality_flag(std::span<const std::string> args, size_t* i, EnvSettings* env,
+                             std::string* error) {
+  const std::string& arg = args[*i];
+  const size_t eq = arg.find('=');
+  const std::string_view name = std::string_view(arg).substr(0, eq);
+  const auto it = std::find_if(kFlags.begin(), kFlags.end(),
+                               [&](const QualityFlag& f) { return f.flag == name; });
+  if (it == kFlags.end()) return FlagParse::kNotAQualityFlag;
+  const QualityFlag& f = *it;
+  if (f.value == FlagValue::kNone) {
+    if (eq != std::string::npos) {
+      *error = std::string(f.flag) + " takes no value";
+      return FlagParse::kError;
+    }
+    env->emplace_back(f.variable, f.metavar);
+    *i += 1;
+    return FlagParse::kParsed;
+  }
+  std::string value;
+  size_t consumed = 1;
+  if (eq != std::string::npos) {
+    value = arg.substr(eq + 1);
+  } else if (*i + 1 < args.size()) {
+    value = args[*i + 1];
+    consumed = 2;
+  } else {
+    *error = std::string(f.flag) + " needs a value (" + std::string(f.metavar) + ")";
+    return FlagParse::kError;
+  }
+  if (!valid(f, value)) {
+    *error = std::string(f.flag) + ": \"" + value + "\" is not " + expected(f.value) +
+             (f.value == FlagValue::kChoice ? " " + std::string(f.metavar) : "");
+    return FlagParse::kError;
+  }
+  env->emplace_back(f.variable, value);
+  *i += consumed;
+  return FlagParse::kParsed;
+}
+
+std::string quality_flags_help(std::string_view indent) {
+  auto usage = [](const QualityFlag& f) {
+    return f.value == FlagValue::kNone ? std::string(f.flag)
+                                       : std::string(f.flag) + " " + std::string(f.metavar);
+  };
+  size_t width = 0;
+  for (const QualityFlag& f : kFlags) width = std::max(width, usage(f).size());
+  std::string text;
+  for (const QualityFlag& f : kFlags) {
+    const std::string u = usage(f);
+    text += std::string(indent) + u + std::string(width + 2 - u.size(), ' ') + std::string(f.help) +
+            " [" + std::string(f.variable) + "]\n";
+  }
+  return text;
+}
+
+}  // namespace glpt::cli
