@@ -1,0 +1,203 @@
+/* glx_oracle: prints what a libGL's GLX says about the X server it runs on, for comparing glpt
+ * with Mesa on the same server (glx_oracle_test.sh runs it once plain, once with glpt preloaded).
+ *
+ *   glx_oracle configs  every visual and FBConfig with every attribute, and the results of a set
+ *                       of glXChooseVisual / glXChooseFBConfig lists
+ *   glx_oracle xfont    a string drawn with glXUseXFont("fixed") in a single-buffered window,
+ *                       read back with XGetImage, as rows of '#' and '.'
+ *
+ * Only configs glpt can render are listed (8-bit RGB, 0/8 alpha, single-sampled): glpt leaves
+ * the others out, so lists are filtered the same way on both sides. */
+#include <GL/gl.h>
+#include <GL/glx.h>
+#include <X11/Xlib.h>
+#include <X11/Xutil.h>
+#include <stdio.h>
+#include <string.h>
+
+static const struct {
+  const char* name;
+  int attrib;
+} kAttribs[] = {
+    {"use_gl", GLX_USE_GL},         {"buffer", GLX_BUFFER_SIZE},    {"level", GLX_LEVEL},
+    {"rgba", GLX_RGBA},             {"db", GLX_DOUBLEBUFFER},       {"stereo", GLX_STEREO},
+    {"aux", GLX_AUX_BUFFERS},       {"r", GLX_RED_SIZE},            {"g", GLX_GREEN_SIZE},
+    {"b", GLX_BLUE_SIZE},           {"a", GLX_ALPHA_SIZE},          {"depth", GLX_DEPTH_SIZE},
+    {"stencil", GLX_STENCIL_SIZE},  {"ar", GLX_ACCUM_RED_SIZE},     {"ag", GLX_ACCUM_GREEN_SIZE},
+    {"ab", GLX_ACCUM_BLUE_SIZE},    {"aa", GLX_ACCUM_ALPHA_SIZE},   {"caveat", GLX_CONFIG_CAVEAT},
+    {"vtype", GLX_X_VISUAL_TYPE},   {"ttype", GLX_TRANSPARENT_TYPE},
+    {"tindex", GLX_TRANSPARENT_INDEX_VALUE},                        {"tred", GLX_TRANSPARENT_RED_VALUE},
+    {"tgreen", GLX_TRANSPARENT_GREEN_VALUE},                        {"tblue", GLX_TRANSPARENT_BLUE_VALUE},
+    {"talpha", GLX_TRANSPARENT_ALPHA_VALUE},                        {"visual", GLX_VISUAL_ID},
+    {"id", GLX_FBCONFIG_ID},        {"dtype", GLX_DRAWABLE_TYPE},   {"rtype", GLX_RENDER_TYPE},
+    {"xrend", GLX_X_RENDERABLE},    {"screen", GLX_SCREEN},         {"pbw", GLX_MAX_PBUFFER_WIDTH},
+    {"pbh", GLX_MAX_PBUFFER_HEIGHT},                                {"pbp", GLX_MAX_PBUFFER_PIXELS},
+    {"sbuf", GLX_SAMPLE_BUFFERS},   {"samples", GLX_SAMPLES},       {"srgb", 0x20B2},
+};
+#define N_ATTRIBS (sizeof(kAttribs) / sizeof(kAttribs[0]))
+
+static int renderable(int r, int g, int b, int a, int samples) {
+  return r == 8 && g == 8 && b == 8 && (a == 0 || a == 8) && samples == 0;
+}
+
+static int fb(Display* dpy, GLXFBConfig c, int attrib) {
+  int v = -12345;
+  if (glXGetFBConfigAttrib(dpy, c, attrib, &v) != Success) return -12345;
+  return v;
+}
+
+static int fb_renderable(Display* dpy, GLXFBConfig c) {
+  return renderable(fb(dpy, c, GLX_RED_SIZE), fb(dpy, c, GLX_GREEN_SIZE), fb(dpy, c, GLX_BLUE_SIZE),
+                    fb(dpy, c, GLX_ALPHA_SIZE), fb(dpy, c, GLX_SAMPLE_BUFFERS));
+}
+
+static int cfg(Display* dpy, XVisualInfo* vi, int attrib) {
+  int v = -12345;
+  int rc = glXGetConfig(dpy, vi, attrib, &v);
+  return rc == Success ? v : -1000 - rc;
+}
+
+static void configs(Display* dpy) {
+  int n = 0;
+  XVisualInfo templ;
+  memset(&templ, 0, sizeof templ);
+  XVisualInfo* vis = XGetVisualInfo(dpy, VisualNoMask, &templ, &n);
+  for (int i = 0; i < n; ++i) {
+    XVisualInfo* vi = &vis[i];
+    if (cfg(dpy, vi, GLX_USE_GL) != 1) {
+      printf("visual 0x%lx: no GL\n", vi->visualid);
+      continue;
+    }
+    if (!renderable(cfg(dpy, vi, GLX_RED_SIZE), cfg(dpy, vi, GLX_GREEN_SIZE),
+                    cfg(dpy, vi, GLX_BLUE_SIZE), cfg(dpy, vi, GLX_ALPHA_SIZE),
+                    cfg(dpy, vi, GLX_SAMPLE_BUFFERS)))
+      continue;
+    printf("visual 0x%lx:", vi->visualid);
+    /* GLX_FBCONFIG_ID onwards are FBConfig attributes; glXGetConfig's answers stop at samples */
+    for (size_t k = 0; k < N_ATTRIBS; ++k)
+      if (kAttribs[k].attrib != GLX_FBCONFIG_ID && kAttribs[k].attrib != GLX_SCREEN &&
+          kAttribs[k].attrib != GLX_DRAWABLE_TYPE && kAttribs[k].attrib != GLX_RENDER_TYPE &&
+          kAttribs[k].attrib != GLX_X_RENDERABLE && kAttribs[k].attrib != GLX_MAX_PBUFFER_WIDTH &&
+          kAttribs[k].attrib != GLX_MAX_PBUFFER_HEIGHT &&
+          kAttribs[k].attrib != GLX_MAX_PBUFFER_PIXELS)
+        printf(" %s=%d", kAttribs[k].name, cfg(dpy, vi, kAttribs[k].attrib));
+    printf("\n");
+  }
+  XFree(vis);
+
+  GLXFBConfig* all = glXGetFBConfigs(dpy, 0, &n);
+  for (int i = 0; i < n; ++i) {
+    if (!fb_renderable(dpy, all[i])) continue;
+    printf("fbconfig:");
+    for (size_t k = 0; k < N_ATTRIBS; ++k)
+      if (kAttribs[k].attrib != GLX_SCREEN && kAttribs[k].attrib != GLX_USE_GL)
+        printf(" %s=%d", kAttribs[k].name, fb(dpy, all[i], kAttribs[k].attrib));
+    printf("\n");
+  }
+  XFree(all);
+
+  static int v_lists[][16] = {
+      {GLX_RGBA, None},
+      {GLX_RGBA, GLX_DOUBLEBUFFER, None},
+      {GLX_RGBA, GLX_DOUBLEBUFFER, GLX_DEPTH_SIZE, 1, None},
+      {GLX_RGBA, GLX_RED_SIZE, 1, GLX_GREEN_SIZE, 1, GLX_BLUE_SIZE, 1, GLX_DEPTH_SIZE, 16, None},
+      {GLX_RGBA, GLX_ALPHA_SIZE, 1, GLX_DOUBLEBUFFER, None},
+      {GLX_RGBA, GLX_STENCIL_SIZE, 1, None},
+      {GLX_RGBA, GLX_DEPTH_SIZE, 24, GLX_STENCIL_SIZE, 8, GLX_DOUBLEBUFFER, None},
+      {GLX_RGBA, GLX_ACCUM_RED_SIZE, 1, None},
+      {GLX_RGBA, GLX_DEPTH_SIZE, 32, None},
+      {GLX_RGBA, GLX_BUFFER_SIZE, 24, None},
+      {GLX_USE_GL, GLX_RGBA, GLX_DOUBLEBUFFER, None},
+      {GLX_RGBA, GLX_LEVEL, 1, None},
+      {GLX_RGBA, GLX_STEREO, None},
+      {GLX_DOUBLEBUFFER, None},
+      {None},
+  };
+  for (size_t l = 0; l < sizeof(v_lists) / sizeof(v_lists[0]); ++l) {
+    XVisualInfo* vi = glXChooseVisual(dpy, 0, v_lists[l]);
+    printf("choose visual %zu: ", l);
+    if (vi)
+      printf("0x%lx\n", vi->visualid);
+    else
+      printf("none\n");
+    XFree(vi);
+  }
+  static int f_lists[][20] = {
+      {None},
+      {GLX_DOUBLEBUFFER, True, None},
+      {GLX_DOUBLEBUFFER, False, None},
+      {GLX_RED_SIZE, 1, GLX_GREEN_SIZE, 1, GLX_BLUE_SIZE, 1, GLX_DEPTH_SIZE, 1, None},
+      {GLX_ALPHA_SIZE, 1, GLX_DEPTH_SIZE, 24, GLX_STENCIL_SIZE, 8, None},
+      {GLX_DRAWABLE_TYPE, GLX_PBUFFER_BIT, None},
+      {GLX_DRAWABLE_TYPE, GLX_PIXMAP_BIT, GLX_DEPTH_SIZE, 16, None},
+      {GLX_DRAWABLE_TYPE, GLX_WINDOW_BIT | GLX_PIXMAP_BIT, GLX_DOUBLEBUFFER, False, None},
+      {GLX_X_VISUAL_TYPE, GLX_DIRECT_COLOR, None},
+      {GLX_X_RENDERABLE, True, GLX_RENDER_TYPE, GLX_RGBA_BIT, GLX_BUFFER_SIZE, 32, None},
+      {GLX_CONFIG_CAVEAT, GLX_NONE, GLX_STENCIL_SIZE, 1, None},
+      {GLX_ACCUM_RED_SIZE, 1, None},
+      {GLX_RGBA, True, None},
+      {GLX_RENDER_TYPE, GLX_COLOR_INDEX_BIT, None},
+      {GLX_DRAWABLE_TYPE, GLX_DONT_CARE, GLX_DEPTH_SIZE, 0, None},
+      {0x7777, 1, GLX_DOUBLEBUFFER, True, None}, /* an unknown attribute is skipped */
+  };
+  for (size_t l = 0; l < sizeof(f_lists) / sizeof(f_lists[0]); ++l) {
+    GLXFBConfig* chosen = glXChooseFBConfig(dpy, 0, f_lists[l], &n);
+    printf("choose fbconfig %zu:", l);
+    for (int i = 0; i < n; ++i)
+      if (fb_renderable(dpy, chosen[i])) printf(" %d", fb(dpy, chosen[i], GLX_FBCONFIG_ID));
+    printf("\n");
+    XFree(chosen);
+  }
+}
+
+static int xfont(Display* dpy) {
+  int attribs[] = {GLX_RGBA, GLX_RED_SIZE, 1, None};
+  XVisualInfo* vi = glXChooseVisual(dpy, 0, attribs);
+  if (!vi) return 1;
+  XSetWindowAttributes attr;
+  memset(&attr, 0, sizeof attr);
+  attr.colormap = XCreateColormap(dpy, RootWindow(dpy, 0), vi->visual, AllocNone);
+  Window win = XCreateWindow(dpy, RootWindow(dpy, 0), 0, 0, 120, 24, 0, vi->depth, InputOutput,
+                             vi->visual, CWColormap, &attr);
+  XMapWindow(dpy, win);
+  GLXContext ctx = glXCreateContext(dpy, vi, NULL, True);
+  glXMakeCurrent(dpy, win, ctx);
+  Font font = XLoadFont(dpy, "fixed");
+  GLuint base = glGenLists(128);
+  glXUseXFont(font, 0, 128, base);
+  glViewport(0, 0, 120, 24);
+  glClearColor(0, 0, 0, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
+  glOrtho(0, 120, 0, 24, -1, 1);
+  glColor3f(1, 1, 1);
+  glRasterPos2i(3, 7);
+  glListBase(base);
+  const char* text = "glpt Ag_|";
+  glCallLists((GLsizei)strlen(text), GL_UNSIGNED_BYTE, text);
+  glFlush();
+  XSync(dpy, False);
+  XImage* image = XGetImage(dpy, win, 0, 0, 120, 24, AllPlanes, ZPixmap);
+  for (int y = 0; y < 24; ++y) {
+    for (int x = 0; x < 120; ++x) putchar((XGetPixel(image, x, y) & 0xFF00) ? '#' : '.');
+    putchar('\n');
+  }
+  XDestroyImage(image);
+  glXMakeCurrent(dpy, None, NULL);
+  glXDestroyContext(dpy, ctx);
+  XFree(vi);
+  return 0;
+}
+
+int main(int argc, char** argv) {
+  Display* dpy = XOpenDisplay(NULL);
+  if (!dpy) return 2;
+  int rc = 0;
+  if (argc > 1 && strcmp(argv[1], "xfont") == 0)
+    rc = xfont(dpy);
+  else
+    configs(dpy);
+  XCloseDisplay(dpy);
+  return rc;
+}
