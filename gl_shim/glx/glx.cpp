@@ -230,7 +230,7 @@ GLXFBConfig* config_list(const std::vector<const Config*>& configs, int* nelemen
 
 // A new XID for a GLX drawable, from the program's connection's ID range as Mesa's are.
 XID new_glx_drawable(Display* dpy, DisplayState* state, GlxDrawable drawable) {
-  const XID id = XAllocID(dpy);
+  const XID id = glpt::glx::allocate_xid(dpy);
   std::lock_guard lock(state->mutex);
   state->drawables[id] = std::move(drawable);
   return id;
@@ -432,13 +432,13 @@ GLPT_EXPORT GLXContext glXCreateContextAttribsARB(Display* dpy, GLXFBConfig conf
                        (major == 2 && minor >= 0 && minor <= 1) ||
                        (major == 3 && minor >= 0 && minor <= 3) ||
                        (major == 4 && minor >= 0 && minor <= 6);
-  if (!defined || ((flags & GLX_CONTEXT_FORWARD_COMPATIBLE_BIT_ARB) && major < 3) ||
-      (render_type != GLX_RGBA_TYPE && render_type != GLX_COLOR_INDEX_TYPE)) {
-    glpt::glx::send_x_error(dpy, defined && render_type == GLX_RGBA_TYPE ? BadMatch : BadValue, 0,
-                            kMinor);
+  if (render_type != GLX_RGBA_TYPE && render_type != GLX_COLOR_INDEX_TYPE) {
+    glpt::glx::send_x_error(dpy, BadValue, static_cast<XID>(render_type), kMinor);
     return nullptr;
   }
-  if (render_type == GLX_COLOR_INDEX_TYPE) {
+  // Colour index needs a colour-index config, which glpt has none of: BadMatch too.
+  if (!defined || ((flags & GLX_CONTEXT_FORWARD_COMPATIBLE_BIT_ARB) && major < 3) ||
+      render_type == GLX_COLOR_INDEX_TYPE) {
     glpt::glx::send_x_error(dpy, BadMatch, 0, kMinor);
     return nullptr;
   }
@@ -480,7 +480,9 @@ GLPT_EXPORT Bool glXMakeCurrentReadSGI(Display* dpy, GLXDrawable draw, GLXDrawab
 
 GLPT_EXPORT void glXSwapBuffers(Display* dpy, GLXDrawable drawable) {
   if (dpy == nullptr) return;
-  XFlush(dpy);  // the program's X requests before the frame, as with Mesa's swap on `dpy`
+  // The program's X requests (a resize, its own drawing) are done before glpt's connection asks
+  // for the window's size and draws: Mesa's swap makes its requests on `dpy`, after them.
+  XSync(dpy, False);
   if (drawable == None) {
     glpt::glx::send_glx_error(dpy, glpt::glx::kGlxBadDrawable, drawable,
                               glpt::glx::kXGlxSwapBuffers);
@@ -754,6 +756,7 @@ GLPT_EXPORT void glXQueryDrawable(Display* dpy, GLXDrawable draw, int attribute,
     glpt::glx::send_glx_error(dpy, glpt::glx::kGlxBadDrawable, draw, kMinor);
     return;
   }
+  XSync(dpy, False);  // Mesa asks on `dpy`, after the program's own requests
   GlxDrawable info;
   const bool glx_drawable = find_glx_drawable(state, draw, &info);
   GLXContext ctx = current_glx();

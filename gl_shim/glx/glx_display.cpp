@@ -129,6 +129,16 @@ void send_error(Display* dpy, int code, XID resource, int minor) {
 
 }  // namespace
 
+XID allocate_xid(Display* dpy) {
+  // Xlib hands out the next ID only once the private sync handler ran (xcb_io.c): allocate under
+  // the display lock and run it, as a request of Mesa's own would.
+  LockDisplay(dpy);
+  const XID id = XAllocID(dpy);
+  UnlockDisplay(dpy);
+  SyncHandle();
+  return id;
+}
+
 void send_glx_error(Display* dpy, int glx_error, XID resource, int minor) {
   DisplayState* state = DisplayState::of(dpy);
   // Without the server's GLX extension there is no GLX error code to name.

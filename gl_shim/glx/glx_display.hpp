@@ -58,6 +58,9 @@ class DisplayState {
   std::vector<std::unique_ptr<ScreenConfigs>> screens_;  // loaded on first use
 };
 
+// A new XID from the program's connection's range, for a GLX drawable (as Mesa's are).
+XID allocate_xid(Display* dpy);
+
 // Reports a GLX error (`glx_error`: GLXBadContext = 0 ... GLXBadWindow = 12, offset by the
 // extension's error base) or a core X error (`core_error`: BadValue, BadMatch, ...) through the
 // program's Xlib error handler, as Mesa's __glXSendError does. `minor`: the GLX request code.
