@@ -39,8 +39,15 @@ struct __GLXcontextRec {
   int screen = 0;
   GLXDrawable drawable = None;
   GLXDrawable readable = None;
-  // The X windows and pixmaps this context drew to, each with glpt's own connection to it.
-  std::map<XID, std::unique_ptr<glpt::X11WindowTarget>> windows;
+  // The X windows and pixmaps this context drew to lately, each with glpt's own connection to
+  // it, and when each was last made current (a program that makes new windows now and then does
+  // not pile up connections).
+  struct WindowEntry {
+    std::unique_ptr<glpt::X11WindowTarget> target;
+    uint64_t last_use = 0;
+  };
+  std::map<XID, WindowEntry> windows;
+  uint64_t uses = 0;
   std::shared_ptr<glpt::HeadlessTarget> pbuffer;  // the current pbuffer, kept while bound
   bool bound = false;                             // current on `bound_thread`
   std::thread::id bound_thread;
@@ -119,7 +126,10 @@ bool find_glx_drawable(DisplayState* state, XID id, GlxDrawable* out) {
 glpt::WindowTarget* window_target(Display* dpy, GLXContext ctx, XID x, const Config* config,
                                   bool pixmap, int minor) {
   auto it = ctx->windows.find(x);
-  if (it != ctx->windows.end()) return it->second.get();
+  if (it != ctx->windows.end()) {
+    it->second.last_use = ++ctx->uses;
+    return it->second.target.get();
+  }
   // glpt's connection is about to ask the server about a window the program may have created
   // just now: its requests must have reached the server first (as Mesa's own requests on `dpy`
   // follow them), so a program needs no XSync of its own.
@@ -133,7 +143,19 @@ glpt::WindowTarget* window_target(Display* dpy, GLXContext ctx, XID x, const Con
     glpt::glx::send_glx_error(dpy, glpt::glx::kGlxBadDrawable, x, minor);
     return nullptr;
   }
-  return (ctx->windows[x] = std::move(target)).get();
+  // Keep the few most recently used (the current one is never the oldest: it was just used).
+  constexpr size_t kMaxCachedWindows = 4;
+  if (ctx->windows.size() >= kMaxCachedWindows) {
+    auto oldest = ctx->windows.begin();
+    for (auto e = ctx->windows.begin(); e != ctx->windows.end(); ++e)
+      if (e->second.last_use < oldest->second.last_use) oldest = e;
+    if (ctx->gl.target == oldest->second.target.get()) ctx->gl.target = nullptr;
+    ctx->windows.erase(oldest);
+  }
+  auto& entry = ctx->windows[x];
+  entry.target = std::move(target);
+  entry.last_use = ++ctx->uses;
+  return entry.target.get();
 }
 
 bool make_current(Display* dpy, GLXDrawable draw, GLXDrawable read, GLXContext ctx, int minor) {
