@@ -395,9 +395,9 @@ GLPT_EXPORT GLXContext glXCreateNewContext(Display* dpy, GLXFBConfig config, int
   const Config* c = fbconfig(dpy, config, glpt::glx::kXGlxCreateNewContext);
   if (c == nullptr) return nullptr;
   if (render_type != GLX_RGBA_TYPE) {
-    // Colour-index contexts need a colour-index config, which glpt has none of.
-    glpt::glx::send_x_error(dpy, render_type == GLX_COLOR_INDEX_TYPE ? BadMatch : BadValue,
-                            static_cast<XID>(render_type), glpt::glx::kXGlxCreateNewContext);
+    // Colour index included (glpt's configs are RGBA only): BadValue, as Mesa reports it.
+    glpt::glx::send_x_error(dpy, BadValue, static_cast<XID>(render_type),
+                            glpt::glx::kXGlxCreateNewContext);
     return nullptr;
   }
   return create_context(dpy, c, share_list, glpt::glx::kXGlxCreateNewContext);
@@ -434,34 +434,33 @@ GLPT_EXPORT GLXContext glXCreateContextAttribsARB(Display* dpy, GLXFBConfig conf
         break;
       default:
         // GLX_ARB_create_context: an attribute it does not define is BadValue.
-        glpt::glx::send_x_error(dpy, BadValue, static_cast<XID>(attrib_list[i]), kMinor);
+        glpt::glx::send_x_error(dpy, BadValue, static_cast<XID>(attrib_list[i]), 0);
         return nullptr;
     }
   }
-  // GLX_ARB_create_context(_profile): unknown flag or profile bits, or not exactly one profile,
-  // are BadValue (the profile only counts from GL 3.2 on).
+  // The errors below are Mesa's choices, reported as Mesa does (minor code 0: found on the client
+  // side). GLX_ARB_create_context: unknown flag bits are BadValue; a version GL never defined or
+  // forward-compatibility before 3.0 is BadMatch. GLX_ARB_create_context_profile: no profile bit,
+  // an unknown one or both (from GL 3.2 on, where profiles count) is GLXBadProfileARB. Colour
+  // index (no such configs) and unknown render types are BadValue.
   const bool profiled = major > 3 || (major == 3 && minor >= 2);
   const int profile_bits =
       GLX_CONTEXT_CORE_PROFILE_BIT_ARB | GLX_CONTEXT_COMPATIBILITY_PROFILE_BIT_ARB;
-  if ((flags & ~kAllFlags) != 0 ||
-      (profiled && (profile == 0 || (profile & ~profile_bits) != 0 ||
-                    profile == profile_bits))) {
-    glpt::glx::send_x_error(dpy, BadValue, 0, kMinor);
+  if ((flags & ~kAllFlags) != 0 || render_type != GLX_RGBA_TYPE) {
+    glpt::glx::send_x_error(dpy, BadValue, 0, 0);
     return nullptr;
   }
-  // A version GL never defined, or forward-compatibility before 3.0: BadMatch.
   const bool defined = (major == 1 && minor >= 0 && minor <= 5) ||
                        (major == 2 && minor >= 0 && minor <= 1) ||
                        (major == 3 && minor >= 0 && minor <= 3) ||
                        (major == 4 && minor >= 0 && minor <= 6);
-  if (render_type != GLX_RGBA_TYPE && render_type != GLX_COLOR_INDEX_TYPE) {
-    glpt::glx::send_x_error(dpy, BadValue, static_cast<XID>(render_type), kMinor);
+  if (!defined || ((flags & GLX_CONTEXT_FORWARD_COMPATIBLE_BIT_ARB) && major < 3)) {
+    glpt::glx::send_x_error(dpy, BadMatch, 0, 0);
     return nullptr;
   }
-  // Colour index needs a colour-index config, which glpt has none of: BadMatch too.
-  if (!defined || ((flags & GLX_CONTEXT_FORWARD_COMPATIBLE_BIT_ARB) && major < 3) ||
-      render_type == GLX_COLOR_INDEX_TYPE) {
-    glpt::glx::send_x_error(dpy, BadMatch, 0, kMinor);
+  if (profiled &&
+      (profile == 0 || (profile & ~profile_bits) != 0 || profile == profile_bits)) {
+    glpt::glx::send_glx_error(dpy, glpt::glx::kGlxBadProfileArb, 0, 0);
     return nullptr;
   }
   // glpt is an OpenGL 1.5 implementation: later versions are configs it cannot serve.

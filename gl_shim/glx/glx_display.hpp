@@ -75,6 +75,7 @@ inline constexpr int kGlxBadCurrentWindow = 5;
 inline constexpr int kGlxBadFBConfig = 9;
 inline constexpr int kGlxBadPbuffer = 10;
 inline constexpr int kGlxBadWindow = 12;
+inline constexpr int kGlxBadProfileArb = 13;
 
 // GLX request codes (glxproto.h), the minor code errors name.
 inline constexpr int kXGlxCreateContext = 3;

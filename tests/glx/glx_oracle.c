@@ -5,6 +5,7 @@
  *                       of glXChooseVisual / glXChooseFBConfig lists
  *   glx_oracle xfont    a string drawn with glXUseXFont("fixed") in a single-buffered window,
  *                       read back with XGetImage, as rows of '#' and '.'
+ *   glx_oracle errors   the X errors (GLX's own as GLX+n) and return values of bad GLX calls
  *
  * Only configs glpt can render are listed (8-bit RGB, 0/8 alpha, single-sampled): glpt leaves
  * the others out, so lists are filtered the same way on both sides. */
@@ -190,12 +191,100 @@ static int xfont(Display* dpy) {
   return 0;
 }
 
+static int g_error_base;
+static int x_error(Display* dpy, XErrorEvent* e) {
+  (void)dpy;
+  if (e->error_code >= g_error_base && e->error_code < g_error_base + 14)
+    printf("  error GLX+%d minor %d\n", e->error_code - g_error_base, e->minor_code);
+  else
+    printf("  error %d minor %d\n", e->error_code, e->minor_code);
+  return 0;
+}
+
+typedef GLXContext (*CreateAttribs)(Display*, GLXFBConfig, GLXContext, Bool, const int*);
+
+static int errors(Display* dpy) {
+  int event_base;
+  glXQueryExtension(dpy, &g_error_base, &event_base);
+  XSetErrorHandler(x_error);
+  int attribs[] = {GLX_RGBA, GLX_DOUBLEBUFFER, None};
+  XVisualInfo* vi = glXChooseVisual(dpy, 0, attribs);
+  XSetWindowAttributes attr;
+  memset(&attr, 0, sizeof attr);
+  attr.colormap = XCreateColormap(dpy, RootWindow(dpy, 0), vi->visual, AllocNone);
+  Window win = XCreateWindow(dpy, RootWindow(dpy, 0), 0, 0, 16, 16, 0, vi->depth, InputOutput,
+                             vi->visual, CWColormap, &attr);
+  XMapWindow(dpy, win);
+  GLXContext ctx = glXCreateContext(dpy, vi, NULL, True);
+  const int any[] = {GLX_DOUBLEBUFFER, True, None};
+  int n = 0;
+  GLXFBConfig* configs = glXChooseFBConfig(dpy, 0, any, &n);
+  CreateAttribs create = (CreateAttribs)glXGetProcAddressARB(
+      (const GLubyte*)"glXCreateContextAttribsARB");
+#define STEP(name, call)              \
+  do {                                \
+    printf("%s:\n", name);           \
+    long result = (long)(call) != 0;  \
+    XSync(dpy, False);                \
+    printf("  returned %s\n", result ? "non-zero" : "zero"); \
+  } while (0)
+  /* Not compared: a window that does not exist, where Mesa reports BadDrawable twice and then
+   * GLXBadContext, glpt GLXBadDrawable as GLX 1.4 3.3.7 names it (glx_drawables_test). */
+  STEP("make current draw None", glXMakeContextCurrent(dpy, None, win, ctx));
+  STEP("make current window without context", glXMakeCurrent(dpy, win, NULL));
+  STEP("new context colour index", glXCreateNewContext(dpy, configs[0], GLX_COLOR_INDEX_TYPE,
+                                                       NULL, True));
+  STEP("new context NULL config", glXCreateNewContext(dpy, NULL, GLX_RGBA_TYPE, NULL, True));
+  static const int unknown[] = {0x7777, 1, None};
+  static const int gl17[] = {GLX_CONTEXT_MAJOR_VERSION_ARB, 1, GLX_CONTEXT_MINOR_VERSION_ARB, 7,
+                             None};
+  static const int bad_flags[] = {GLX_CONTEXT_FLAGS_ARB, 0x100, None};
+  static const int no_profile[] = {GLX_CONTEXT_MAJOR_VERSION_ARB, 3, GLX_CONTEXT_MINOR_VERSION_ARB,
+                                   2, GLX_CONTEXT_PROFILE_MASK_ARB, 0, None};
+  static const int fwd1[] = {GLX_CONTEXT_MAJOR_VERSION_ARB, 1, GLX_CONTEXT_FLAGS_ARB,
+                             GLX_CONTEXT_FORWARD_COMPATIBLE_BIT_ARB, None};
+  static const int ci[] = {GLX_RENDER_TYPE, GLX_COLOR_INDEX_TYPE, None};
+  static const int gl15[] = {GLX_CONTEXT_MAJOR_VERSION_ARB, 1, GLX_CONTEXT_MINOR_VERSION_ARB, 5,
+                             None};
+  STEP("attribs unknown attribute", create(dpy, configs[0], NULL, True, unknown));
+  STEP("attribs version 1.7", create(dpy, configs[0], NULL, True, gl17));
+  STEP("attribs unknown flag", create(dpy, configs[0], NULL, True, bad_flags));
+  STEP("attribs no profile 3.2", create(dpy, configs[0], NULL, True, no_profile));
+  STEP("attribs forward-compatible 1.0", create(dpy, configs[0], NULL, True, fwd1));
+  STEP("attribs colour index", create(dpy, configs[0], NULL, True, ci));
+  STEP("attribs NULL config", create(dpy, NULL, NULL, True, gl15));
+  STEP("attribs 1.5", create(dpy, configs[0], NULL, True, gl15));
+  unsigned int value = 0;
+  printf("query drawable None:\n");
+  glXQueryDrawable(dpy, None, GLX_WIDTH, &value);
+  XSync(dpy, False);
+  printf("destroy no such GLX window:\n");
+  glXDestroyWindow(dpy, 0x7FFFFF1);
+  XSync(dpy, False);
+  printf("destroy no such pbuffer:\n");
+  glXDestroyPbuffer(dpy, 0x7FFFFF2);
+  XSync(dpy, False);
+  printf("destroy no such GLX pixmap:\n");
+  glXDestroyGLXPixmap(dpy, 0x7FFFFF3);
+  XSync(dpy, False);
+  int v = 0;
+  printf("get config attribute 0x7777: %d\n", glXGetConfig(dpy, vi, 0x7777, &v));
+  printf("get fbconfig attribute 0x7777: %d\n", glXGetFBConfigAttrib(dpy, configs[0], 0x7777, &v));
+  printf("swap interval SGI without context: %d\n",
+         ((int (*)(int))glXGetProcAddressARB((const GLubyte*)"glXSwapIntervalSGI"))(1));
+  XFree(configs);
+  XFree(vi);
+  return 0;
+}
+
 int main(int argc, char** argv) {
   Display* dpy = XOpenDisplay(NULL);
   if (!dpy) return 2;
   int rc = 0;
   if (argc > 1 && strcmp(argv[1], "xfont") == 0)
     rc = xfont(dpy);
+  else if (argc > 1 && strcmp(argv[1], "errors") == 0)
+    rc = errors(dpy);
   else
     configs(dpy);
   XCloseDisplay(dpy);
