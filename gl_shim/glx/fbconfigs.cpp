@@ -1,6 +1,5 @@
 #include "gl_shim/glx/fbconfigs.hpp"
 
-
 namespace glpt::glx {
 
 std::vector<FBConfig> configs_of_screen(Display* dpy, int screen) {

@@ -295,8 +295,8 @@ bool drawable_size(Display* dpy, GLXDrawable draw, uint32_t* w, uint32_t* h) {
   }
   // glpt's own connection: a drawable that does not exist is GLXBadDrawable, not an X error.
   std::string error;
-  auto probe = glpt::X11WindowTarget::create(DisplayString(dpy), static_cast<uint32_t>(draw), {},
-                                             &error);
+  auto probe =
+      glpt::X11WindowTarget::create(DisplayString(dpy), static_cast<uint32_t>(draw), {}, &error);
   return probe && probe->query_size(w, h);
 }
 
@@ -382,8 +382,7 @@ GLPT_EXPORT GLXContext glXCreateContext(Display* dpy, XVisualInfo* vis, GLXConte
   if (state == nullptr) return nullptr;
   const Config* config = vis ? state->visual_config(vis->screen, vis->visualid) : nullptr;
   if (config == nullptr) {
-    glpt::glx::send_x_error(dpy, BadValue, vis ? vis->visualid : 0,
-                            glpt::glx::kXGlxCreateContext);
+    glpt::glx::send_x_error(dpy, BadValue, vis ? vis->visualid : 0, glpt::glx::kXGlxCreateContext);
     return nullptr;
   }
   return create_context(dpy, config, share_list, glpt::glx::kXGlxCreateContext);
@@ -450,16 +449,14 @@ GLPT_EXPORT GLXContext glXCreateContextAttribsARB(Display* dpy, GLXFBConfig conf
     glpt::glx::send_x_error(dpy, BadValue, 0, 0);
     return nullptr;
   }
-  const bool defined = (major == 1 && minor >= 0 && minor <= 5) ||
-                       (major == 2 && minor >= 0 && minor <= 1) ||
-                       (major == 3 && minor >= 0 && minor <= 3) ||
-                       (major == 4 && minor >= 0 && minor <= 6);
+  const bool defined =
+      (major == 1 && minor >= 0 && minor <= 5) || (major == 2 && minor >= 0 && minor <= 1) ||
+      (major == 3 && minor >= 0 && minor <= 3) || (major == 4 && minor >= 0 && minor <= 6);
   if (!defined || ((flags & GLX_CONTEXT_FORWARD_COMPATIBLE_BIT_ARB) && major < 3)) {
     glpt::glx::send_x_error(dpy, BadMatch, 0, 0);
     return nullptr;
   }
-  if (profiled &&
-      (profile == 0 || (profile & ~profile_bits) != 0 || profile == profile_bits)) {
+  if (profiled && (profile == 0 || (profile & ~profile_bits) != 0 || profile == profile_bits)) {
     glpt::glx::send_glx_error(dpy, glpt::glx::kGlxBadProfileArb, 0, 0);
     return nullptr;
   }
@@ -474,8 +471,8 @@ GLPT_EXPORT GLXContext glXCreateContextAttribsARB(Display* dpy, GLXFBConfig conf
 GLPT_EXPORT void glXDestroyContext(Display* dpy, GLXContext ctx) {
   if (ctx == nullptr) return;
   if (!is_live(ctx)) {
-    if (dpy) glpt::glx::send_glx_error(dpy, glpt::glx::kGlxBadContext, 0,
-                                       glpt::glx::kXGlxDestroyContext);
+    if (dpy)
+      glpt::glx::send_glx_error(dpy, glpt::glx::kGlxBadContext, 0, glpt::glx::kXGlxDestroyContext);
     return;
   }
   if (ctx->bound) {
@@ -708,8 +705,7 @@ GLPT_EXPORT GLXPbuffer glXCreatePbuffer(Display* dpy, GLXFBConfig config, const 
       case GLX_PBUFFER_HEIGHT:
         height = value;
         break;
-      case GLX_PRESERVED_CONTENTS:
-        d.preserved_contents = value != 0;
+      case GLX_PRESERVED_CONTENTS:  // contents are always preserved
         break;
       case GLX_LARGEST_PBUFFER:
         d.largest_pbuffer = value != 0;
@@ -781,7 +777,7 @@ GLPT_EXPORT void glXQueryDrawable(Display* dpy, GLXDrawable draw, int attribute,
   GlxDrawable info;
   const bool glx_drawable = find_glx_drawable(state, draw, &info);
   GLXContext ctx = current_glx();
-  const Config* config = glx_drawable ? info.config
+  const Config* config = glx_drawable                     ? info.config
                          : (ctx && ctx->drawable == draw) ? ctx->config
                                                           : nullptr;
   switch (attribute) {
@@ -796,7 +792,9 @@ GLPT_EXPORT void glXQueryDrawable(Display* dpy, GLXDrawable draw, int attribute,
       return;
     }
     case GLX_PRESERVED_CONTENTS:
-      *value = glx_drawable && info.kind == DrawableKind::kPbuffer ? info.preserved_contents : 0;
+      // A pbuffer's contents are always kept (its buffers are the context's own), so it says
+      // True whatever was asked, as Mesa on Xvfb does.
+      *value = glx_drawable && info.kind == DrawableKind::kPbuffer ? 1 : 0;
       return;
     case GLX_LARGEST_PBUFFER:
       *value = glx_drawable && info.kind == DrawableKind::kPbuffer ? info.largest_pbuffer : 0;

@@ -15,14 +15,14 @@ namespace glpt::glx {
 namespace {
 
 // Tokens of GLX extensions the registry header leaves out (glxext.h values).
-constexpr int kVisualCaveatExt = 0x20;                // GLX_VISUAL_CAVEAT_EXT
-constexpr int kOptimalPbufferWidthSgix = 0x8019;      // GLX_OPTIMAL_PBUFFER_WIDTH_SGIX
-constexpr int kOptimalPbufferHeightSgix = 0x801A;     // GLX_OPTIMAL_PBUFFER_HEIGHT_SGIX
-constexpr int kVisualSelectGroupSgix = 0x8028;        // GLX_VISUAL_SELECT_GROUP_SGIX
-constexpr int kFloatComponentsNv = 0x20B0;            // GLX_FLOAT_COMPONENTS_NV
-constexpr uint8_t kGetVisualConfigs = 14;             // X_GLXGetVisualConfigs
-constexpr uint8_t kGetFBConfigs = 21;                 // X_GLXGetFBConfigs
-constexpr int kFixedVisualProps = 18;                 // __GLX_MIN_CONFIG_PROPS
+constexpr int kVisualCaveatExt = 0x20;             // GLX_VISUAL_CAVEAT_EXT
+constexpr int kOptimalPbufferWidthSgix = 0x8019;   // GLX_OPTIMAL_PBUFFER_WIDTH_SGIX
+constexpr int kOptimalPbufferHeightSgix = 0x801A;  // GLX_OPTIMAL_PBUFFER_HEIGHT_SGIX
+constexpr int kVisualSelectGroupSgix = 0x8028;     // GLX_VISUAL_SELECT_GROUP_SGIX
+constexpr int kFloatComponentsNv = 0x20B0;         // GLX_FLOAT_COMPONENTS_NV
+constexpr uint8_t kGetVisualConfigs = 14;          // X_GLXGetVisualConfigs
+constexpr uint8_t kGetFBConfigs = 21;              // X_GLXGetFBConfigs
+constexpr int kFixedVisualProps = 18;              // __GLX_MIN_CONFIG_PROPS
 
 int glx_visual_type(int x_class) {
   static constexpr int kTypes[] = {GLX_STATIC_GRAY,  GLX_GRAY_SCALE, GLX_STATIC_COLOR,
@@ -36,50 +36,137 @@ void apply_tag(Config& c, int tag, int value) {
     case GLX_RGBA:
       c.render_type = value ? GLX_RGBA_BIT : GLX_COLOR_INDEX_BIT;
       break;
-    case GLX_BUFFER_SIZE: c.buffer_size = value; break;
-    case GLX_LEVEL: c.level = value; break;
-    case GLX_DOUBLEBUFFER: c.double_buffer = value; break;
-    case GLX_STEREO: c.stereo = value; break;
-    case GLX_AUX_BUFFERS: c.aux_buffers = value; break;
-    case GLX_RED_SIZE: c.red = value; break;
-    case GLX_GREEN_SIZE: c.green = value; break;
-    case GLX_BLUE_SIZE: c.blue = value; break;
-    case GLX_ALPHA_SIZE: c.alpha = value; break;
-    case GLX_DEPTH_SIZE: c.depth = value; break;
-    case GLX_STENCIL_SIZE: c.stencil = value; break;
-    case GLX_ACCUM_RED_SIZE: c.accum_red = value; break;
-    case GLX_ACCUM_GREEN_SIZE: c.accum_green = value; break;
-    case GLX_ACCUM_BLUE_SIZE: c.accum_blue = value; break;
-    case GLX_ACCUM_ALPHA_SIZE: c.accum_alpha = value; break;
-    case kVisualCaveatExt: c.caveat = value; break;  // == GLX_CONFIG_CAVEAT
-    case GLX_X_VISUAL_TYPE: c.visual_type = value; break;
-    case GLX_TRANSPARENT_TYPE: c.transparent_type = value; break;
-    case GLX_TRANSPARENT_INDEX_VALUE: c.transparent_index = value; break;
-    case GLX_TRANSPARENT_RED_VALUE: c.transparent_red = value; break;
-    case GLX_TRANSPARENT_GREEN_VALUE: c.transparent_green = value; break;
-    case GLX_TRANSPARENT_BLUE_VALUE: c.transparent_blue = value; break;
-    case GLX_TRANSPARENT_ALPHA_VALUE: c.transparent_alpha = value; break;
-    case GLX_VISUAL_ID: c.visual_id = value; break;
-    case GLX_DRAWABLE_TYPE: c.drawable_type = value; break;
-    case GLX_RENDER_TYPE: c.render_type = value; break;
-    case GLX_X_RENDERABLE: c.x_renderable = value; break;
-    case GLX_FBCONFIG_ID: c.fbconfig_id = value; break;
-    case GLX_MAX_PBUFFER_WIDTH: c.max_pbuffer_width = value; break;
-    case GLX_MAX_PBUFFER_HEIGHT: c.max_pbuffer_height = value; break;
-    case GLX_MAX_PBUFFER_PIXELS: c.max_pbuffer_pixels = value; break;
-    case kOptimalPbufferWidthSgix: c.optimal_pbuffer_width = value; break;
-    case kOptimalPbufferHeightSgix: c.optimal_pbuffer_height = value; break;
-    case kVisualSelectGroupSgix: c.visual_select_group = value; break;
-    case GLX_SAMPLE_BUFFERS: c.sample_buffers = value; break;
-    case GLX_SAMPLES: c.samples = value; break;
-    case GLX_BIND_TO_TEXTURE_RGB_EXT: c.bind_to_texture_rgb = value; break;
-    case GLX_BIND_TO_TEXTURE_RGBA_EXT: c.bind_to_texture_rgba = value; break;
-    case GLX_BIND_TO_MIPMAP_TEXTURE_EXT: c.bind_to_mipmap_texture = value; break;
-    case GLX_BIND_TO_TEXTURE_TARGETS_EXT: c.bind_to_texture_targets = value; break;
-    case GLX_Y_INVERTED_EXT: c.y_inverted = value; break;
-    case GLX_FRAMEBUFFER_SRGB_CAPABLE_ARB: c.srgb_capable = value; break;
-    case kFloatComponentsNv: c.float_components = value; break;
-    default: break;  // unknown tags are skipped with their value, as Mesa does
+    case GLX_BUFFER_SIZE:
+      c.buffer_size = value;
+      break;
+    case GLX_LEVEL:
+      c.level = value;
+      break;
+    case GLX_DOUBLEBUFFER:
+      c.double_buffer = value;
+      break;
+    case GLX_STEREO:
+      c.stereo = value;
+      break;
+    case GLX_AUX_BUFFERS:
+      c.aux_buffers = value;
+      break;
+    case GLX_RED_SIZE:
+      c.red = value;
+      break;
+    case GLX_GREEN_SIZE:
+      c.green = value;
+      break;
+    case GLX_BLUE_SIZE:
+      c.blue = value;
+      break;
+    case GLX_ALPHA_SIZE:
+      c.alpha = value;
+      break;
+    case GLX_DEPTH_SIZE:
+      c.depth = value;
+      break;
+    case GLX_STENCIL_SIZE:
+      c.stencil = value;
+      break;
+    case GLX_ACCUM_RED_SIZE:
+      c.accum_red = value;
+      break;
+    case GLX_ACCUM_GREEN_SIZE:
+      c.accum_green = value;
+      break;
+    case GLX_ACCUM_BLUE_SIZE:
+      c.accum_blue = value;
+      break;
+    case GLX_ACCUM_ALPHA_SIZE:
+      c.accum_alpha = value;
+      break;
+    case kVisualCaveatExt:
+      c.caveat = value;
+      break;  // == GLX_CONFIG_CAVEAT
+    case GLX_X_VISUAL_TYPE:
+      c.visual_type = value;
+      break;
+    case GLX_TRANSPARENT_TYPE:
+      c.transparent_type = value;
+      break;
+    case GLX_TRANSPARENT_INDEX_VALUE:
+      c.transparent_index = value;
+      break;
+    case GLX_TRANSPARENT_RED_VALUE:
+      c.transparent_red = value;
+      break;
+    case GLX_TRANSPARENT_GREEN_VALUE:
+      c.transparent_green = value;
+      break;
+    case GLX_TRANSPARENT_BLUE_VALUE:
+      c.transparent_blue = value;
+      break;
+    case GLX_TRANSPARENT_ALPHA_VALUE:
+      c.transparent_alpha = value;
+      break;
+    case GLX_VISUAL_ID:
+      c.visual_id = value;
+      break;
+    case GLX_DRAWABLE_TYPE:
+      c.drawable_type = value;
+      break;
+    case GLX_RENDER_TYPE:
+      c.render_type = value;
+      break;
+    case GLX_X_RENDERABLE:
+      c.x_renderable = value;
+      break;
+    case GLX_FBCONFIG_ID:
+      c.fbconfig_id = value;
+      break;
+    case GLX_MAX_PBUFFER_WIDTH:
+      c.max_pbuffer_width = value;
+      break;
+    case GLX_MAX_PBUFFER_HEIGHT:
+      c.max_pbuffer_height = value;
+      break;
+    case GLX_MAX_PBUFFER_PIXELS:
+      c.max_pbuffer_pixels = value;
+      break;
+    case kOptimalPbufferWidthSgix:
+      c.optimal_pbuffer_width = value;
+      break;
+    case kOptimalPbufferHeightSgix:
+      c.optimal_pbuffer_height = value;
+      break;
+    case kVisualSelectGroupSgix:
+      c.visual_select_group = value;
+      break;
+    case GLX_SAMPLE_BUFFERS:
+      c.sample_buffers = value;
+      break;
+    case GLX_SAMPLES:
+      c.samples = value;
+      break;
+    case GLX_BIND_TO_TEXTURE_RGB_EXT:
+      c.bind_to_texture_rgb = value;
+      break;
+    case GLX_BIND_TO_TEXTURE_RGBA_EXT:
+      c.bind_to_texture_rgba = value;
+      break;
+    case GLX_BIND_TO_MIPMAP_TEXTURE_EXT:
+      c.bind_to_mipmap_texture = value;
+      break;
+    case GLX_BIND_TO_TEXTURE_TARGETS_EXT:
+      c.bind_to_texture_targets = value;
+      break;
+    case GLX_Y_INVERTED_EXT:
+      c.y_inverted = value;
+      break;
+    case GLX_FRAMEBUFFER_SRGB_CAPABLE_ARB:
+      c.srgb_capable = value;
+      break;
+    case kFloatComponentsNv:
+      c.float_components = value;
+      break;
+    default:
+      break;  // unknown tags are skipped with their value, as Mesa does
   }
 }
 
@@ -87,9 +174,9 @@ void apply_tag(Config& c, int tag, int value) {
 // stencil only with a 24-bit depth buffer (packed depth/stencil). That is also the set Mesa's
 // llvmpipe keeps of Xvfb's configs (it has no stencil-only or 16/8 buffers).
 bool renderable(const Config& c) {
-  return (c.stencil == 0 || c.depth == 24) && (c.render_type & GLX_RGBA_BIT) != 0 && c.red == 8 && c.green == 8 && c.blue == 8 &&
-         (c.alpha == 0 || c.alpha == 8) && c.sample_buffers == 0 && c.float_components == 0 &&
-         c.srgb_capable == 0 && c.level == 0 && c.stereo == 0;
+  return (c.stencil == 0 || c.depth == 24) && (c.render_type & GLX_RGBA_BIT) != 0 && c.red == 8 &&
+         c.green == 8 && c.blue == 8 && (c.alpha == 0 || c.alpha == 8) && c.sample_buffers == 0 &&
+         c.float_components == 0 && c.srgb_capable == 0 && c.level == 0 && c.stereo == 0;
 }
 
 // One GLX request with a 4-byte screen argument; the reply (caller frees) or nullptr.
@@ -202,52 +289,139 @@ ScreenConfigs synthesized_configs(Display* dpy, int screen) {
 bool config_attribute(const Config& c, int attribute, int* value) {
   int v = 0;
   switch (attribute) {
-    case GLX_USE_GL: v = 1; break;
-    case GLX_BUFFER_SIZE: v = c.buffer_size; break;
-    case GLX_RGBA: v = (c.render_type & GLX_COLOR_INDEX_BIT) == 0; break;
-    case GLX_RED_SIZE: v = c.red; break;
-    case GLX_GREEN_SIZE: v = c.green; break;
-    case GLX_BLUE_SIZE: v = c.blue; break;
-    case GLX_ALPHA_SIZE: v = c.alpha; break;
-    case GLX_DOUBLEBUFFER: v = c.double_buffer; break;
-    case GLX_STEREO: v = c.stereo; break;
-    case GLX_AUX_BUFFERS: v = c.aux_buffers; break;
-    case GLX_DEPTH_SIZE: v = c.depth; break;
-    case GLX_STENCIL_SIZE: v = c.stencil; break;
-    case GLX_ACCUM_RED_SIZE: v = c.accum_red; break;
-    case GLX_ACCUM_GREEN_SIZE: v = c.accum_green; break;
-    case GLX_ACCUM_BLUE_SIZE: v = c.accum_blue; break;
-    case GLX_ACCUM_ALPHA_SIZE: v = c.accum_alpha; break;
-    case GLX_LEVEL: v = c.level; break;
-    case GLX_TRANSPARENT_TYPE: v = c.transparent_type; break;
-    case GLX_TRANSPARENT_RED_VALUE: v = c.transparent_red; break;
-    case GLX_TRANSPARENT_GREEN_VALUE: v = c.transparent_green; break;
-    case GLX_TRANSPARENT_BLUE_VALUE: v = c.transparent_blue; break;
-    case GLX_TRANSPARENT_ALPHA_VALUE: v = c.transparent_alpha; break;
-    case GLX_TRANSPARENT_INDEX_VALUE: v = c.transparent_index; break;
-    case GLX_X_VISUAL_TYPE: v = c.visual_type; break;
-    case GLX_CONFIG_CAVEAT: v = c.caveat; break;
-    case GLX_VISUAL_ID: v = c.visual_id; break;
-    case GLX_DRAWABLE_TYPE: v = c.drawable_type; break;
-    case GLX_RENDER_TYPE: v = c.render_type; break;
-    case GLX_X_RENDERABLE: v = c.x_renderable; break;
-    case GLX_FBCONFIG_ID: v = c.fbconfig_id; break;
+    case GLX_USE_GL:
+      v = 1;
+      break;
+    case GLX_BUFFER_SIZE:
+      v = c.buffer_size;
+      break;
+    case GLX_RGBA:
+      v = (c.render_type & GLX_COLOR_INDEX_BIT) == 0;
+      break;
+    case GLX_RED_SIZE:
+      v = c.red;
+      break;
+    case GLX_GREEN_SIZE:
+      v = c.green;
+      break;
+    case GLX_BLUE_SIZE:
+      v = c.blue;
+      break;
+    case GLX_ALPHA_SIZE:
+      v = c.alpha;
+      break;
+    case GLX_DOUBLEBUFFER:
+      v = c.double_buffer;
+      break;
+    case GLX_STEREO:
+      v = c.stereo;
+      break;
+    case GLX_AUX_BUFFERS:
+      v = c.aux_buffers;
+      break;
+    case GLX_DEPTH_SIZE:
+      v = c.depth;
+      break;
+    case GLX_STENCIL_SIZE:
+      v = c.stencil;
+      break;
+    case GLX_ACCUM_RED_SIZE:
+      v = c.accum_red;
+      break;
+    case GLX_ACCUM_GREEN_SIZE:
+      v = c.accum_green;
+      break;
+    case GLX_ACCUM_BLUE_SIZE:
+      v = c.accum_blue;
+      break;
+    case GLX_ACCUM_ALPHA_SIZE:
+      v = c.accum_alpha;
+      break;
+    case GLX_LEVEL:
+      v = c.level;
+      break;
+    case GLX_TRANSPARENT_TYPE:
+      v = c.transparent_type;
+      break;
+    case GLX_TRANSPARENT_RED_VALUE:
+      v = c.transparent_red;
+      break;
+    case GLX_TRANSPARENT_GREEN_VALUE:
+      v = c.transparent_green;
+      break;
+    case GLX_TRANSPARENT_BLUE_VALUE:
+      v = c.transparent_blue;
+      break;
+    case GLX_TRANSPARENT_ALPHA_VALUE:
+      v = c.transparent_alpha;
+      break;
+    case GLX_TRANSPARENT_INDEX_VALUE:
+      v = c.transparent_index;
+      break;
+    case GLX_X_VISUAL_TYPE:
+      v = c.visual_type;
+      break;
+    case GLX_CONFIG_CAVEAT:
+      v = c.caveat;
+      break;
+    case GLX_VISUAL_ID:
+      v = c.visual_id;
+      break;
+    case GLX_DRAWABLE_TYPE:
+      v = c.drawable_type;
+      break;
+    case GLX_RENDER_TYPE:
+      v = c.render_type;
+      break;
+    case GLX_X_RENDERABLE:
+      v = c.x_renderable;
+      break;
+    case GLX_FBCONFIG_ID:
+      v = c.fbconfig_id;
+      break;
     // Mesa answers its own pbuffer limit, whatever the server said (glxconfig.c).
     case GLX_MAX_PBUFFER_WIDTH:
-    case GLX_MAX_PBUFFER_HEIGHT: v = 4096; break;
-    case GLX_MAX_PBUFFER_PIXELS: v = c.max_pbuffer_pixels; break;
-    case kOptimalPbufferWidthSgix: v = c.optimal_pbuffer_width; break;
-    case kOptimalPbufferHeightSgix: v = c.optimal_pbuffer_height; break;
-    case GLX_SAMPLE_BUFFERS: v = c.sample_buffers; break;
-    case GLX_SAMPLES: v = c.samples; break;
-    case GLX_BIND_TO_TEXTURE_RGB_EXT: v = c.bind_to_texture_rgb; break;
-    case GLX_BIND_TO_TEXTURE_RGBA_EXT: v = c.bind_to_texture_rgba; break;
-    case GLX_BIND_TO_MIPMAP_TEXTURE_EXT: v = c.bind_to_mipmap_texture == 1; break;
-    case GLX_BIND_TO_TEXTURE_TARGETS_EXT: v = c.bind_to_texture_targets; break;
-    case GLX_Y_INVERTED_EXT: v = c.y_inverted; break;
-    case GLX_FRAMEBUFFER_SRGB_CAPABLE_ARB: v = c.srgb_capable; break;
-    case kFloatComponentsNv: v = c.float_components; break;
-    default: return false;  // GLX_VISUAL_SELECT_GROUP_SGIX is not for programs either
+    case GLX_MAX_PBUFFER_HEIGHT:
+      v = 4096;
+      break;
+    case GLX_MAX_PBUFFER_PIXELS:
+      v = c.max_pbuffer_pixels;
+      break;
+    case kOptimalPbufferWidthSgix:
+      v = c.optimal_pbuffer_width;
+      break;
+    case kOptimalPbufferHeightSgix:
+      v = c.optimal_pbuffer_height;
+      break;
+    case GLX_SAMPLE_BUFFERS:
+      v = c.sample_buffers;
+      break;
+    case GLX_SAMPLES:
+      v = c.samples;
+      break;
+    case GLX_BIND_TO_TEXTURE_RGB_EXT:
+      v = c.bind_to_texture_rgb;
+      break;
+    case GLX_BIND_TO_TEXTURE_RGBA_EXT:
+      v = c.bind_to_texture_rgba;
+      break;
+    case GLX_BIND_TO_MIPMAP_TEXTURE_EXT:
+      v = c.bind_to_mipmap_texture == 1;
+      break;
+    case GLX_BIND_TO_TEXTURE_TARGETS_EXT:
+      v = c.bind_to_texture_targets;
+      break;
+    case GLX_Y_INVERTED_EXT:
+      v = c.y_inverted;
+      break;
+    case GLX_FRAMEBUFFER_SRGB_CAPABLE_ARB:
+      v = c.srgb_capable;
+      break;
+    case kFloatComponentsNv:
+      v = c.float_components;
+      break;
+    default:
+      return false;  // GLX_VISUAL_SELECT_GROUP_SGIX is not for programs either
   }
   *value = v;
   return true;
@@ -364,14 +538,12 @@ int compare(const Config& a, const Config& b) {
   if (a.samples != b.samples) return a.samples - b.samples;
   if (int d = larger_or_zero(a.depth, b.depth)) return d;
   if (a.stencil != b.stencil) return a.stencil - b.stencil;
-  for (int d : {larger_or_zero(a.accum_red, b.accum_red),
-                larger_or_zero(a.accum_green, b.accum_green),
-                larger_or_zero(a.accum_blue, b.accum_blue),
-                larger_or_zero(a.accum_alpha, b.accum_alpha)})
+  for (int d :
+       {larger_or_zero(a.accum_red, b.accum_red), larger_or_zero(a.accum_green, b.accum_green),
+        larger_or_zero(a.accum_blue, b.accum_blue), larger_or_zero(a.accum_alpha, b.accum_alpha)})
     if (d != 0) return d;
   if (a.visual_type != b.visual_type) return a.visual_type - b.visual_type;
-  if (a.max_pbuffer_width != b.max_pbuffer_width)
-    return b.max_pbuffer_width - a.max_pbuffer_width;
+  if (a.max_pbuffer_width != b.max_pbuffer_width) return b.max_pbuffer_width - a.max_pbuffer_width;
   if (a.max_pbuffer_height != b.max_pbuffer_height)
     return b.max_pbuffer_height - a.max_pbuffer_height;
   return b.max_pbuffer_pixels - a.max_pbuffer_pixels;

@@ -53,7 +53,8 @@ DisplayState* DisplayState::of(Display* dpy) {
     if (!inserted) return it->second.get();  // another thread was first
   }
   // Dropped with the Display (an extension record of glpt's own carries the hook).
-  if (XExtCodes* codes = XAddExtension(dpy)) XESetCloseDisplay(dpy, codes->extension, on_close_display);
+  if (XExtCodes* codes = XAddExtension(dpy))
+    XESetCloseDisplay(dpy, codes->extension, on_close_display);
   return raw;
 }
 

@@ -20,11 +20,10 @@ enum class DrawableKind { kWindow, kPixmap, kPbuffer };
 struct GlxDrawable {
   DrawableKind kind = DrawableKind::kWindow;
   const Config* config = nullptr;
-  XID x_drawable = 0;                        // the X window or pixmap (none for a pbuffer)
-  std::shared_ptr<HeadlessTarget> pbuffer;   // a pbuffer's surface
-  bool preserved_contents = true;            // GLX_PRESERVED_CONTENTS of a pbuffer
+  XID x_drawable = 0;                       // the X window or pixmap (none for a pbuffer)
+  std::shared_ptr<HeadlessTarget> pbuffer;  // a pbuffer's surface
   bool largest_pbuffer = false;
-  unsigned long event_mask = 0;              // glXSelectEvent
+  unsigned long event_mask = 0;  // glXSelectEvent
 };
 
 class DisplayState {

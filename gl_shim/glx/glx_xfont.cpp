@@ -36,8 +36,8 @@ const XCharStruct* glyph_metrics(const XFontStruct* fs, unsigned c) {
     index = c - fs->min_char_or_byte2;
   } else {
     const unsigned byte1 = c >> 8, byte2 = c & 0xFF;
-    if (byte2 < fs->min_char_or_byte2 || byte2 > fs->max_char_or_byte2 ||
-        byte1 < fs->min_byte1 || byte1 > fs->max_byte1)
+    if (byte2 < fs->min_char_or_byte2 || byte2 > fs->max_char_or_byte2 || byte1 < fs->min_byte1 ||
+        byte1 > fs->max_byte1)
       return nullptr;
     index = (byte1 - fs->min_byte1) * columns + (byte2 - fs->min_char_or_byte2);
   }
@@ -80,7 +80,7 @@ extern "C" GLPT_EXPORT void glXUseXFont(Font font, int first, int count, int lis
   if (fs == nullptr) return glpt::record_error(*gl, GL_INVALID_VALUE);  // as Mesa
 
   // The lists are made with the default unpacking, byte-aligned; the program's is restored.
-  const GLenum kUnpack[] = {GL_UNPACK_SWAP_BYTES, GL_UNPACK_LSB_FIRST, GL_UNPACK_ROW_LENGTH,
+  const GLenum kUnpack[] = {GL_UNPACK_SWAP_BYTES, GL_UNPACK_LSB_FIRST,   GL_UNPACK_ROW_LENGTH,
                             GL_UNPACK_SKIP_ROWS,  GL_UNPACK_SKIP_PIXELS, GL_UNPACK_ALIGNMENT};
   GLint saved[6];
   for (int i = 0; i < 6; ++i) glGetIntegerv(kUnpack[i], &saved[i]);

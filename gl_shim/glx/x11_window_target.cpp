@@ -144,9 +144,8 @@ bool X11WindowTarget::prepare() {
   for (auto s = xcb_setup_roots_iterator(setup); s.rem; xcb_screen_next(&s))
     for (auto d = xcb_screen_allowed_depths_iterator(s.data); d.rem; xcb_depth_next(&d))
       for (auto v = xcb_depth_visuals_iterator(d.data); v.rem; xcb_visualtype_next(&v))
-        if (v.data->visual_id == visual ||
-            (visual == 0 && d.data->depth == pixmap_depth &&
-             v.data->_class == XCB_VISUAL_CLASS_TRUE_COLOR)) {
+        if (v.data->visual_id == visual || (visual == 0 && d.data->depth == pixmap_depth &&
+                                            v.data->_class == XCB_VISUAL_CLASS_TRUE_COLOR)) {
           visual = v.data->visual_id;
           red_shift_ = std::countr_zero(v.data->red_mask);
           green_shift_ = std::countr_zero(v.data->green_mask);

@@ -104,8 +104,8 @@ class GlxDrawables : public ::testing::Test {
 };
 
 // GLX error codes (glxproto.h).
-constexpr int kBadContext = 0, kBadDrawable = 2, kBadPixmap = 3, kBadFBConfig = 9,
-              kBadPbuffer = 10, kBadWindow = 12;
+constexpr int kBadContext = 0, kBadDrawable = 2, kBadPixmap = 3, kBadFBConfig = 9, kBadPbuffer = 10,
+              kBadWindow = 12;
 
 void draw_red_left_half_on_blue() {
   unsigned char left[4], right[4];

@@ -6,6 +6,8 @@
  *   glx_oracle xfont    a string drawn with glXUseXFont("fixed") in a single-buffered window,
  *                       read back with XGetImage, as rows of '#' and '.'
  *   glx_oracle errors   the X errors (GLX's own as GLX+n) and return values of bad GLX calls
+ *   glx_oracle queries  glXQueryDrawable / glXQueryContext / GL state of GLX windows, pbuffers and
+ *                       pixmaps, single- and double-buffered
  *
  * Only configs glpt can render are listed (8-bit RGB, 0/8 alpha, single-sampled): glpt leaves
  * the others out, so lists are filtered the same way on both sides. */
@@ -20,20 +22,43 @@ static const struct {
   const char* name;
   int attrib;
 } kAttribs[] = {
-    {"use_gl", GLX_USE_GL},         {"buffer", GLX_BUFFER_SIZE},    {"level", GLX_LEVEL},
-    {"rgba", GLX_RGBA},             {"db", GLX_DOUBLEBUFFER},       {"stereo", GLX_STEREO},
-    {"aux", GLX_AUX_BUFFERS},       {"r", GLX_RED_SIZE},            {"g", GLX_GREEN_SIZE},
-    {"b", GLX_BLUE_SIZE},           {"a", GLX_ALPHA_SIZE},          {"depth", GLX_DEPTH_SIZE},
-    {"stencil", GLX_STENCIL_SIZE},  {"ar", GLX_ACCUM_RED_SIZE},     {"ag", GLX_ACCUM_GREEN_SIZE},
-    {"ab", GLX_ACCUM_BLUE_SIZE},    {"aa", GLX_ACCUM_ALPHA_SIZE},   {"caveat", GLX_CONFIG_CAVEAT},
-    {"vtype", GLX_X_VISUAL_TYPE},   {"ttype", GLX_TRANSPARENT_TYPE},
-    {"tindex", GLX_TRANSPARENT_INDEX_VALUE},                        {"tred", GLX_TRANSPARENT_RED_VALUE},
-    {"tgreen", GLX_TRANSPARENT_GREEN_VALUE},                        {"tblue", GLX_TRANSPARENT_BLUE_VALUE},
-    {"talpha", GLX_TRANSPARENT_ALPHA_VALUE},                        {"visual", GLX_VISUAL_ID},
-    {"id", GLX_FBCONFIG_ID},        {"dtype", GLX_DRAWABLE_TYPE},   {"rtype", GLX_RENDER_TYPE},
-    {"xrend", GLX_X_RENDERABLE},    {"screen", GLX_SCREEN},         {"pbw", GLX_MAX_PBUFFER_WIDTH},
-    {"pbh", GLX_MAX_PBUFFER_HEIGHT},                                {"pbp", GLX_MAX_PBUFFER_PIXELS},
-    {"sbuf", GLX_SAMPLE_BUFFERS},   {"samples", GLX_SAMPLES},       {"srgb", 0x20B2},
+    {"use_gl", GLX_USE_GL},
+    {"buffer", GLX_BUFFER_SIZE},
+    {"level", GLX_LEVEL},
+    {"rgba", GLX_RGBA},
+    {"db", GLX_DOUBLEBUFFER},
+    {"stereo", GLX_STEREO},
+    {"aux", GLX_AUX_BUFFERS},
+    {"r", GLX_RED_SIZE},
+    {"g", GLX_GREEN_SIZE},
+    {"b", GLX_BLUE_SIZE},
+    {"a", GLX_ALPHA_SIZE},
+    {"depth", GLX_DEPTH_SIZE},
+    {"stencil", GLX_STENCIL_SIZE},
+    {"ar", GLX_ACCUM_RED_SIZE},
+    {"ag", GLX_ACCUM_GREEN_SIZE},
+    {"ab", GLX_ACCUM_BLUE_SIZE},
+    {"aa", GLX_ACCUM_ALPHA_SIZE},
+    {"caveat", GLX_CONFIG_CAVEAT},
+    {"vtype", GLX_X_VISUAL_TYPE},
+    {"ttype", GLX_TRANSPARENT_TYPE},
+    {"tindex", GLX_TRANSPARENT_INDEX_VALUE},
+    {"tred", GLX_TRANSPARENT_RED_VALUE},
+    {"tgreen", GLX_TRANSPARENT_GREEN_VALUE},
+    {"tblue", GLX_TRANSPARENT_BLUE_VALUE},
+    {"talpha", GLX_TRANSPARENT_ALPHA_VALUE},
+    {"visual", GLX_VISUAL_ID},
+    {"id", GLX_FBCONFIG_ID},
+    {"dtype", GLX_DRAWABLE_TYPE},
+    {"rtype", GLX_RENDER_TYPE},
+    {"xrend", GLX_X_RENDERABLE},
+    {"screen", GLX_SCREEN},
+    {"pbw", GLX_MAX_PBUFFER_WIDTH},
+    {"pbh", GLX_MAX_PBUFFER_HEIGHT},
+    {"pbp", GLX_MAX_PBUFFER_PIXELS},
+    {"sbuf", GLX_SAMPLE_BUFFERS},
+    {"samples", GLX_SAMPLES},
+    {"srgb", 0x20B2},
 };
 #define N_ATTRIBS (sizeof(kAttribs) / sizeof(kAttribs[0]))
 
@@ -219,28 +244,33 @@ static int errors(Display* dpy) {
   const int any[] = {GLX_DOUBLEBUFFER, True, None};
   int n = 0;
   GLXFBConfig* configs = glXChooseFBConfig(dpy, 0, any, &n);
-  CreateAttribs create = (CreateAttribs)glXGetProcAddressARB(
-      (const GLubyte*)"glXCreateContextAttribsARB");
-#define STEP(name, call)              \
-  do {                                \
-    printf("%s:\n", name);           \
-    long result = (long)(call) != 0;  \
-    XSync(dpy, False);                \
+  CreateAttribs create =
+      (CreateAttribs)glXGetProcAddressARB((const GLubyte*)"glXCreateContextAttribsARB");
+#define STEP(name, call)                                     \
+  do {                                                       \
+    printf("%s:\n", name);                                   \
+    long result = (long)(call) != 0;                         \
+    XSync(dpy, False);                                       \
     printf("  returned %s\n", result ? "non-zero" : "zero"); \
   } while (0)
   /* Not compared: a window that does not exist, where Mesa reports BadDrawable twice and then
    * GLXBadContext, glpt GLXBadDrawable as GLX 1.4 3.3.7 names it (glx_drawables_test). */
   STEP("make current draw None", glXMakeContextCurrent(dpy, None, win, ctx));
   STEP("make current window without context", glXMakeCurrent(dpy, win, NULL));
-  STEP("new context colour index", glXCreateNewContext(dpy, configs[0], GLX_COLOR_INDEX_TYPE,
-                                                       NULL, True));
+  STEP("new context colour index",
+       glXCreateNewContext(dpy, configs[0], GLX_COLOR_INDEX_TYPE, NULL, True));
   STEP("new context NULL config", glXCreateNewContext(dpy, NULL, GLX_RGBA_TYPE, NULL, True));
   static const int unknown[] = {0x7777, 1, None};
   static const int gl17[] = {GLX_CONTEXT_MAJOR_VERSION_ARB, 1, GLX_CONTEXT_MINOR_VERSION_ARB, 7,
                              None};
   static const int bad_flags[] = {GLX_CONTEXT_FLAGS_ARB, 0x100, None};
-  static const int no_profile[] = {GLX_CONTEXT_MAJOR_VERSION_ARB, 3, GLX_CONTEXT_MINOR_VERSION_ARB,
-                                   2, GLX_CONTEXT_PROFILE_MASK_ARB, 0, None};
+  static const int no_profile[] = {GLX_CONTEXT_MAJOR_VERSION_ARB,
+                                   3,
+                                   GLX_CONTEXT_MINOR_VERSION_ARB,
+                                   2,
+                                   GLX_CONTEXT_PROFILE_MASK_ARB,
+                                   0,
+                                   None};
   static const int fwd1[] = {GLX_CONTEXT_MAJOR_VERSION_ARB, 1, GLX_CONTEXT_FLAGS_ARB,
                              GLX_CONTEXT_FORWARD_COMPATIBLE_BIT_ARB, None};
   static const int ci[] = {GLX_RENDER_TYPE, GLX_COLOR_INDEX_TYPE, None};
@@ -277,6 +307,112 @@ static int errors(Display* dpy) {
   return 0;
 }
 
+static void print_drawable(Display* dpy, const char* name, GLXDrawable d) {
+  static const struct {
+    const char* name;
+    int attrib;
+  } kQueries[] = {{"width", GLX_WIDTH},
+                  {"height", GLX_HEIGHT},
+                  {"preserved", GLX_PRESERVED_CONTENTS},
+                  {"largest", GLX_LARGEST_PBUFFER},
+                  {"event_mask", GLX_EVENT_MASK}};
+  printf("%s:", name);
+  for (size_t i = 0; i < sizeof(kQueries) / sizeof(kQueries[0]); ++i) {
+    unsigned int v = 12345;
+    glXQueryDrawable(dpy, d, kQueries[i].attrib, &v);
+    printf(" %s=%u", kQueries[i].name, v);
+  }
+  printf("\n");
+}
+
+static void print_gl_state(const char* name) {
+  GLint draw = 0, read = 0, depth = 0, stencil = 0, alpha = 0, accum = 0, viewport[4] = {0};
+  GLboolean db = 0;
+  glGetIntegerv(GL_DRAW_BUFFER, &draw);
+  glGetIntegerv(GL_READ_BUFFER, &read);
+  glGetIntegerv(GL_DEPTH_BITS, &depth);
+  glGetIntegerv(GL_STENCIL_BITS, &stencil);
+  glGetIntegerv(GL_ALPHA_BITS, &alpha);
+  glGetIntegerv(GL_ACCUM_RED_BITS, &accum);
+  glGetIntegerv(GL_VIEWPORT, viewport);
+  glGetBooleanv(GL_DOUBLEBUFFER, &db);
+  printf("%s gl: draw=0x%x read=0x%x db=%d depth=%d stencil=%d alpha=%d accum=%d viewport=%dx%d\n",
+         name, draw, read, db, depth, stencil, alpha, accum, viewport[2], viewport[3]);
+}
+
+static int queries(Display* dpy) {
+  int event_base;
+  glXQueryExtension(dpy, &g_error_base, &event_base);
+  XSetErrorHandler(x_error);
+  static const int kLists[][12] = {
+      {GLX_DOUBLEBUFFER, True, GLX_DEPTH_SIZE, 24, GLX_STENCIL_SIZE, 8, None},
+      {GLX_DOUBLEBUFFER, False, GLX_ALPHA_SIZE, 8, None},
+      {GLX_DOUBLEBUFFER, False, GLX_DEPTH_SIZE, 16, None},
+      {GLX_DOUBLEBUFFER, True, GLX_DEPTH_SIZE, 0, None},
+  };
+  for (size_t l = 0; l < sizeof(kLists) / sizeof(kLists[0]); ++l) {
+    int n = 0;
+    GLXFBConfig* configs = glXChooseFBConfig(dpy, 0, kLists[l], &n);
+    if (n == 0) continue;
+    GLXFBConfig c = configs[0];
+    XFree(configs);
+    int id = 0;
+    glXGetFBConfigAttrib(dpy, c, GLX_FBCONFIG_ID, &id);
+    printf("config list %zu: fbconfig %d\n", l, id);
+    XVisualInfo* vi = glXGetVisualFromFBConfig(dpy, c);
+    XSetWindowAttributes attr;
+    memset(&attr, 0, sizeof attr);
+    attr.colormap = XCreateColormap(dpy, RootWindow(dpy, 0), vi->visual, AllocNone);
+    Window win = XCreateWindow(dpy, RootWindow(dpy, 0), 0, 0, 33, 17, 0, vi->depth, InputOutput,
+                               vi->visual, CWColormap, &attr);
+    XMapWindow(dpy, win);
+    GLXWindow glx_win = glXCreateWindow(dpy, c, win, NULL);
+    glXSelectEvent(dpy, glx_win, GLX_PBUFFER_CLOBBER_MASK);
+    print_drawable(dpy, "  glx window", glx_win);
+    const int size[] = {
+        GLX_PBUFFER_WIDTH, 21, GLX_PBUFFER_HEIGHT, 9, GLX_PRESERVED_CONTENTS, False, None};
+    GLXPbuffer pbuffer = glXCreatePbuffer(dpy, c, size);
+    print_drawable(dpy, "  pbuffer", pbuffer);
+    GLXContext ctx = glXCreateNewContext(dpy, c, GLX_RGBA_TYPE, NULL, True);
+    int value = 0;
+    glXQueryContext(dpy, ctx, GLX_FBCONFIG_ID, &value);
+    printf("  context fbconfig %d", value);
+    glXQueryContext(dpy, ctx, GLX_RENDER_TYPE, &value);
+    printf(" render type 0x%x", value);
+    glXQueryContext(dpy, ctx, GLX_SCREEN, &value);
+    printf(" screen %d\n", value);
+    glXMakeContextCurrent(dpy, glx_win, glx_win, ctx);
+    print_gl_state("  glx window");
+    printf("  current drawable is the GLX window: %d\n", glXGetCurrentDrawable() == glx_win);
+    glXMakeContextCurrent(dpy, None, None, NULL);
+    GLXContext ctx2 = glXCreateNewContext(dpy, c, GLX_RGBA_TYPE, NULL, True);
+    glXMakeContextCurrent(dpy, pbuffer, pbuffer, ctx2);
+    print_gl_state("  pbuffer");
+    glXMakeContextCurrent(dpy, None, None, NULL);
+    XSync(dpy, False);
+    glXDestroyContext(dpy, ctx);
+    glXDestroyContext(dpy, ctx2);
+    glXDestroyPbuffer(dpy, pbuffer);
+    glXDestroyWindow(dpy, glx_win);
+    XDestroyWindow(dpy, win);
+    XFree(vi);
+  }
+  int attribs[] = {GLX_RGBA, GLX_RED_SIZE, 1, None};
+  XVisualInfo* vi = glXChooseVisual(dpy, 0, attribs);
+  Pixmap pixmap = XCreatePixmap(dpy, RootWindow(dpy, 0), 13, 11, vi->depth);
+  GLXPixmap glx_pixmap = glXCreateGLXPixmap(dpy, vi, pixmap);
+  GLXContext ctx = glXCreateContext(dpy, vi, NULL, True);
+  glXMakeCurrent(dpy, glx_pixmap, ctx);
+  print_gl_state("glx pixmap");
+  glXMakeCurrent(dpy, None, NULL);
+  XSync(dpy, False);
+  glXDestroyContext(dpy, ctx);
+  glXDestroyGLXPixmap(dpy, glx_pixmap);
+  XFreePixmap(dpy, pixmap);
+  XFree(vi);
+  return 0;
+}
+
 int main(int argc, char** argv) {
   Display* dpy = XOpenDisplay(NULL);
   if (!dpy) return 2;
@@ -285,6 +421,8 @@ int main(int argc, char** argv) {
     rc = xfont(dpy);
   else if (argc > 1 && strcmp(argv[1], "errors") == 0)
     rc = errors(dpy);
+  else if (argc > 1 && strcmp(argv[1], "queries") == 0)
+    rc = queries(dpy);
   else
     configs(dpy);
   XCloseDisplay(dpy);

@@ -3,7 +3,8 @@
 # X server twice, plain and with glpt's LIBGL preloaded, and requires identical output: the same
 # visuals and FBConfigs with the same attributes, the same glXChooseVisual/glXChooseFBConfig
 # results, the same pixels of a glXUseXFont string in a single-buffered window, and the same X
-# errors and return values for bad GLX calls.
+# errors and return values for bad GLX calls, and the same drawable/context queries and GL
+# buffer state for GLX windows, pbuffers and pixmaps of several configs.
 # Run under tests/e2e/with_xvfb.sh.
 set -euo pipefail
 libgl=$1
@@ -11,7 +12,7 @@ oracle=$2
 out=$(mktemp -d "${TMPDIR:-/tmp}/glx-oracle.XXXXXX")
 trap 'rm -rf "$out"' EXIT
 status=0
-for mode in configs xfont errors; do
+for mode in configs xfont errors queries; do
   "$oracle" "$mode" >"$out/mesa_$mode.txt"
   LD_PRELOAD=$libgl GLPT_MODE=raster "$oracle" "$mode" >"$out/glpt_$mode.txt"
   if ! diff -u "$out/mesa_$mode.txt" "$out/glpt_$mode.txt"; then
