@@ -75,14 +75,6 @@ bool is_live(GLXContext ctx) {
   std::lock_guard lock(contexts_mutex());
   return ctx != nullptr && live_contexts().count(ctx) != 0;
 }
-void destroy(GLXContext ctx) {
-  {
-    std::lock_guard lock(contexts_mutex());
-    live_contexts().erase(ctx);
-  }
-  delete ctx;
-}
-
 GLXContext current_glx() {
   glpt::Context* gl = glpt::current_context();
   if (gl == nullptr || gl->window_system != glpt::WindowSystem::kGlx) return nullptr;
@@ -93,9 +85,15 @@ void release_current() {
   GLXContext old = current_glx();
   glpt::set_current_context(nullptr);
   if (old == nullptr) return;
-  old->bound = false;
+  bool destroy_now = false;
+  {
+    std::lock_guard lock(contexts_mutex());
+    old->bound = false;
+    destroy_now = old->destroy_when_released;
+    if (destroy_now) live_contexts().erase(old);
+  }
   old->pbuffer.reset();
-  if (old->destroy_when_released) destroy(old);
+  if (destroy_now) delete old;
 }
 
 GLXContext create_context(Display* dpy, const Config* config, GLXContext share, int minor) {
@@ -179,16 +177,35 @@ bool make_current(Display* dpy, GLXDrawable draw, GLXDrawable read, GLXContext c
     glpt::glx::send_x_error(dpy, BadMatch, None, minor);
     return false;
   }
-  if (ctx->bound && ctx->bound_thread != std::this_thread::get_id()) {
-    glpt::glx::send_x_error(dpy, BadAccess, 0, minor);  // current on another thread
+  // Claimed for this thread before its targets are touched: a context current on another
+  // thread is BadAccess (GLX 1.4 3.3.7).
+  bool was_bound = false, busy = false;
+  {
+    std::lock_guard lock(contexts_mutex());
+    busy = ctx->bound && ctx->bound_thread != std::this_thread::get_id();
+    if (!busy) {
+      was_bound = ctx->bound;
+      ctx->bound = true;
+      ctx->bound_thread = std::this_thread::get_id();
+    }
+  }
+  if (busy) {
+    glpt::glx::send_x_error(dpy, BadAccess, 0, minor);
     return false;
   }
+  const auto fail = [&] {
+    if (!was_bound) {
+      std::lock_guard lock(contexts_mutex());
+      ctx->bound = false;
+    }
+    return false;
+  };
   // The read drawable must be a drawable too; glpt reads from the draw drawable's buffers.
   GlxDrawable read_info;
   if (read != draw && !find_glx_drawable(state, read, &read_info)) {
     uint32_t w = 0, h = 0;
     glpt::WindowTarget* t = window_target(dpy, ctx, read, ctx->config, false, minor);
-    if (t == nullptr || !t->query_size(&w, &h)) return false;
+    if (t == nullptr || !t->query_size(&w, &h)) return fail();
   }
   GlxDrawable info;
   glpt::WindowTarget* target = nullptr;
@@ -204,15 +221,13 @@ bool make_current(Display* dpy, GLXDrawable draw, GLXDrawable read, GLXContext c
   } else {
     target = window_target(dpy, ctx, draw, ctx->config, false, minor);
   }
-  if (target == nullptr) return false;
+  if (target == nullptr) return fail();
   GLXContext old = current_glx();
   if (old != ctx) release_current();
   ctx->display = dpy;
   ctx->drawable = draw;
   ctx->readable = read;
   ctx->pbuffer = std::move(pbuffer);
-  ctx->bound = true;
-  ctx->bound_thread = std::this_thread::get_id();
   glpt::bind_target_and_make_current(ctx->gl, target);
   return true;
 }
@@ -470,16 +485,20 @@ GLPT_EXPORT GLXContext glXCreateContextAttribsARB(Display* dpy, GLXFBConfig conf
 
 GLPT_EXPORT void glXDestroyContext(Display* dpy, GLXContext ctx) {
   if (ctx == nullptr) return;
-  if (!is_live(ctx)) {
-    if (dpy)
-      glpt::glx::send_glx_error(dpy, glpt::glx::kGlxBadContext, 0, glpt::glx::kXGlxDestroyContext);
-    return;
+  bool live = false, destroy_now = false;
+  {
+    std::lock_guard lock(contexts_mutex());
+    live = live_contexts().count(ctx) != 0;
+    if (live && ctx->bound) {
+      ctx->destroy_when_released = true;  // GLX 1.4 3.3.7: once no thread has it current
+    } else if (live) {
+      live_contexts().erase(ctx);
+      destroy_now = true;
+    }
   }
-  if (ctx->bound) {
-    ctx->destroy_when_released = true;
-    return;
-  }
-  destroy(ctx);
+  if (!live && dpy != nullptr)
+    glpt::glx::send_glx_error(dpy, glpt::glx::kGlxBadContext, 0, glpt::glx::kXGlxDestroyContext);
+  if (destroy_now) delete ctx;
 }
 
 GLPT_EXPORT Bool glXMakeCurrent(Display* dpy, GLXDrawable drawable, GLXContext ctx) {
@@ -840,7 +859,12 @@ GLPT_EXPORT void glXCopyContext(Display* dpy, GLXContext src, GLXContext dst, un
     glpt::glx::send_glx_error(dpy, glpt::glx::kGlxBadContext, 0, kMinor);
     return;
   }
-  if (dst->bound) {
+  bool dst_bound = false;
+  {
+    std::lock_guard lock(contexts_mutex());
+    dst_bound = dst->bound;
+  }
+  if (dst_bound) {
     glpt::glx::send_x_error(dpy, BadAccess, 0, kMinor);  // the destination may not be current
     return;
   }

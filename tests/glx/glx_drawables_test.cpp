@@ -12,6 +12,7 @@
 // clang-format on
 
 #include <cstdint>
+#include <thread>
 #include <vector>
 
 #ifndef GLX_CONTEXT_MAJOR_VERSION_ARB
@@ -417,6 +418,38 @@ TEST_F(GlxDrawables, CreateContextAttribsErrorsAreTheExtensionsOnes) {
   g_errors.clear();
   EXPECT_EQ(glXCreateContextAttribsARB(dpy_, nullptr, nullptr, True, gl15), nullptr);
   EXPECT_TRUE(saw_error(glx_error(kBadFBConfig)));
+}
+
+// GLX 1.4 3.3.7: a context current on another thread is BadAccess; one destroyed while current
+// lives until released (its thread keeps drawing with it).
+TEST_F(GlxDrawables, ContextsAreCurrentOnOneThreadAtATime) {
+  XVisualInfo* vi = visual({GLX_RGBA, GLX_DOUBLEBUFFER});
+  ASSERT_NE(vi, nullptr);
+  const Window win = unsynced_window(*vi, 8, 8);
+  GLXContext ctx = glXCreateContext(dpy_, vi, nullptr, True);
+  XFree(vi);
+  ASSERT_TRUE(glXMakeCurrent(dpy_, win, ctx));
+  XSync(dpy_, False);
+  bool other_thread_made_it_current = true;
+  std::thread other([&] {
+    Display* own = XOpenDisplay(nullptr);  // Xlib connections are per thread here
+    other_thread_made_it_current = glXMakeCurrent(own, win, ctx);
+    XSync(own, False);
+    XCloseDisplay(own);
+  });
+  other.join();
+  EXPECT_FALSE(other_thread_made_it_current);
+  EXPECT_TRUE(saw_error(BadAccess));
+  glXDestroyContext(dpy_, ctx);  // current here: deferred
+  glClearColor(0, 0, 1, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glXSwapBuffers(dpy_, win);
+  EXPECT_EQ(x_pixel(win, 4, 4), 0x0000FFu);
+  EXPECT_EQ(glXGetCurrentContext(), ctx);
+  ASSERT_TRUE(glXMakeCurrent(dpy_, None, nullptr));  // released: now it is gone
+  g_errors.clear();
+  glXDestroyContext(dpy_, ctx);
+  EXPECT_TRUE(saw_error(glx_error(kBadContext)));
 }
 
 TEST_F(GlxDrawables, BadInputGetsTheErrorGlxNamesNeverACrash) {
