@@ -122,7 +122,7 @@ bool find_glx_drawable(DisplayState* state, XID id, GlxDrawable* out) {
 // The target drawing to X window or pixmap `x` for `ctx`, created on first use. nullptr (and
 // GLXBadDrawable) when `x` is not a drawable of the display.
 glpt::WindowTarget* window_target(Display* dpy, GLXContext ctx, XID x, const Config* config,
-                                  bool pixmap, int minor) {
+                                  int minor) {
   auto it = ctx->windows.find(x);
   if (it != ctx->windows.end()) {
     it->second.last_use = ++ctx->uses;
@@ -134,7 +134,7 @@ glpt::WindowTarget* window_target(Display* dpy, GLXContext ctx, XID x, const Con
   XSync(dpy, False);
   std::string error;
   auto target = glpt::X11WindowTarget::create(DisplayString(dpy), static_cast<uint32_t>(x),
-                                              glpt::glx::drawable_config(*config, pixmap), &error);
+                                              glpt::glx::drawable_config(*config), &error);
   uint32_t w = 0, h = 0;
   if (!target || !target->query_size(&w, &h)) {
     if (!error.empty()) std::fprintf(stderr, "glpt: %s\n", error.c_str());
@@ -204,7 +204,7 @@ bool make_current(Display* dpy, GLXDrawable draw, GLXDrawable read, GLXContext c
   GlxDrawable read_info;
   if (read != draw && !find_glx_drawable(state, read, &read_info)) {
     uint32_t w = 0, h = 0;
-    glpt::WindowTarget* t = window_target(dpy, ctx, read, ctx->config, false, minor);
+    glpt::WindowTarget* t = window_target(dpy, ctx, read, ctx->config, minor);
     if (t == nullptr || !t->query_size(&w, &h)) return fail();
   }
   GlxDrawable info;
@@ -215,11 +215,10 @@ bool make_current(Display* dpy, GLXDrawable draw, GLXDrawable read, GLXContext c
       pbuffer = info.pbuffer;
       target = pbuffer.get();
     } else {
-      target = window_target(dpy, ctx, info.x_drawable, info.config,
-                             info.kind == DrawableKind::kPixmap, minor);
+      target = window_target(dpy, ctx, info.x_drawable, info.config, minor);
     }
   } else {
-    target = window_target(dpy, ctx, draw, ctx->config, false, minor);
+    target = window_target(dpy, ctx, draw, ctx->config, minor);
   }
   if (target == nullptr) return fail();
   GLXContext old = current_glx();
@@ -232,7 +231,7 @@ bool make_current(Display* dpy, GLXDrawable draw, GLXDrawable read, GLXContext c
   return true;
 }
 
-// Whether `drawable` is double-buffered for the current context (a pixmap never is).
+// Whether the current context's drawable has a back buffer to swap.
 bool current_target_double_buffered(GLXContext ctx) {
   return ctx->gl.target != nullptr && ctx->gl.target->config().double_buffered;
 }
@@ -748,9 +747,8 @@ GLPT_EXPORT GLXPbuffer glXCreatePbuffer(Display* dpy, GLXFBConfig config, const 
     width = std::min(width, max_size);
     height = std::min(height, max_size);
   }
-  d.pbuffer = std::make_shared<glpt::HeadlessTarget>(static_cast<uint32_t>(width),
-                                                     static_cast<uint32_t>(height),
-                                                     glpt::glx::drawable_config(*c, false));
+  d.pbuffer = std::make_shared<glpt::HeadlessTarget>(
+      static_cast<uint32_t>(width), static_cast<uint32_t>(height), glpt::glx::drawable_config(*c));
   return new_glx_drawable(dpy, DisplayState::of(dpy), d);
 }
 

@@ -549,9 +549,9 @@ int compare(const Config& a, const Config& b) {
   return b.max_pbuffer_pixels - a.max_pbuffer_pixels;
 }
 
-rec::DrawableConfig drawable_config(const Config& c, bool pixmap) {
+rec::DrawableConfig drawable_config(const Config& c) {
   rec::DrawableConfig d;
-  d.double_buffered = c.double_buffer != 0 && !pixmap;
+  d.double_buffered = c.double_buffer != 0;
   d.has_alpha = c.alpha > 0;
   d.depth_bits = static_cast<uint32_t>(c.depth);
   d.stencil_bits = static_cast<uint32_t>(c.stencil);

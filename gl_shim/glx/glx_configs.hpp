@@ -73,7 +73,9 @@ bool compatible(const Config& wanted, const Config& c);
 // < 0 when `a` sorts before `b` (GLX 1.4 3.3.3's order as Mesa's fbconfig_compare).
 int compare(const Config& a, const Config& b);
 
-// The buffers a drawable of config `c` has (`pixmap`: always single-buffered).
-rec::DrawableConfig drawable_config(const Config& c, bool pixmap);
+// The buffers a drawable of config `c` has. A pixmap of a double-buffered config has a back buffer
+// too (Mesa's choice): drawn to by default, shown only after glDrawBuffer(GL_FRONT) drawing, as
+// glXSwapBuffers does nothing to a pixmap.
+rec::DrawableConfig drawable_config(const Config& c);
 
 }  // namespace glpt::glx

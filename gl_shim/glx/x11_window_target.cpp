@@ -23,11 +23,6 @@ std::unique_ptr<X11WindowTarget> X11WindowTarget::create(const std::string& disp
     *error = "cannot open X display '" + display_name + "' for presenting";
     return nullptr;
   }
-  // Only windows have a back buffer: GetWindowAttributes fails on a pixmap.
-  xcb_generic_error_t* err = nullptr;
-  free(xcb_get_window_attributes_reply(c, xcb_get_window_attributes(c, window), &err));
-  if (err != nullptr) config.double_buffered = false;
-  free(err);
   return std::unique_ptr<X11WindowTarget>(new X11WindowTarget(c, window, config));
 }
 

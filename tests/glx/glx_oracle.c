@@ -315,7 +315,8 @@ static void print_drawable(Display* dpy, const char* name, GLXDrawable d) {
                   {"height", GLX_HEIGHT},
                   {"preserved", GLX_PRESERVED_CONTENTS},
                   {"largest", GLX_LARGEST_PBUFFER},
-                  {"event_mask", GLX_EVENT_MASK}};
+                  {"event_mask", GLX_EVENT_MASK},
+                  {"fbconfig", GLX_FBCONFIG_ID}};
   printf("%s:", name);
   for (size_t i = 0; i < sizeof(kQueries) / sizeof(kQueries[0]); ++i) {
     unsigned int v = 12345;
@@ -373,6 +374,26 @@ static int queries(Display* dpy) {
         GLX_PBUFFER_WIDTH, 21, GLX_PBUFFER_HEIGHT, 9, GLX_PRESERVED_CONTENTS, False, None};
     GLXPbuffer pbuffer = glXCreatePbuffer(dpy, c, size);
     print_drawable(dpy, "  pbuffer", pbuffer);
+    int drawable_type = 0;
+    glXGetFBConfigAttrib(dpy, c, GLX_DRAWABLE_TYPE, &drawable_type);
+    if (drawable_type & GLX_PIXMAP_BIT) {
+      Pixmap pixmap = XCreatePixmap(dpy, RootWindow(dpy, 0), 7, 5, vi->depth);
+      GLXPixmap glx_pixmap = glXCreatePixmap(dpy, c, pixmap, NULL);
+      print_drawable(dpy, "  glx pixmap", glx_pixmap);
+      GLXContext pctx = glXCreateNewContext(dpy, c, GLX_RGBA_TYPE, NULL, True);
+      glXMakeContextCurrent(dpy, glx_pixmap, glx_pixmap, pctx);
+      print_gl_state("  glx pixmap");
+      glClearColor(1, 0, 1, 1);
+      glClear(GL_COLOR_BUFFER_BIT);
+      glFlush();
+      XImage* image = XGetImage(dpy, pixmap, 0, 0, 1, 1, AllPlanes, ZPixmap);
+      printf("  glx pixmap pixel 0x%06lx\n", XGetPixel(image, 0, 0) & 0xFFFFFF);
+      XDestroyImage(image);
+      glXMakeContextCurrent(dpy, None, None, NULL);
+      glXDestroyContext(dpy, pctx);
+      glXDestroyPixmap(dpy, glx_pixmap);
+      XFreePixmap(dpy, pixmap);
+    }
     GLXContext ctx = glXCreateNewContext(dpy, c, GLX_RGBA_TYPE, NULL, True);
     int value = 0;
     glXQueryContext(dpy, ctx, GLX_FBCONFIG_ID, &value);
