@@ -275,15 +275,26 @@ XID new_glx_drawable(Display* dpy, DisplayState* state, GlxDrawable drawable) {
 bool destroy_glx_drawable(Display* dpy, XID id, DrawableKind kind, int error, int minor) {
   DisplayState* state = DisplayState::of(dpy);
   if (state == nullptr) return false;
+  XID x_drawable = None;
+  bool found = false;
   {
     std::lock_guard lock(state->mutex);
     auto it = state->drawables.find(id);
     if (it != state->drawables.end() && it->second.kind == kind) {
+      x_drawable = it->second.x_drawable;
       state->drawables.erase(it);  // a current pbuffer lives on in its context until released
       state->swap_intervals.erase(id);
-      return true;
+      found = true;
     }
   }
+  // A GLX window dies with its X window (server-side in Mesa's GLX): destroying it afterwards
+  // is GLXBadWindow, as there.
+  uint32_t w = 0, h = 0;
+  if (found && kind == DrawableKind::kWindow) {
+    XSync(dpy, False);  // the program's XDestroyWindow first
+    found = state->geometry(x_drawable, &w, &h);
+  }
+  if (found) return true;
   glpt::glx::send_glx_error(dpy, error, id, minor);
   return false;
 }
@@ -299,19 +310,14 @@ struct GlxProc {
 };
 const GlxProc* glx_proc_table(size_t* count);
 
-// The size of an X drawable through the target of the current context, or of a pbuffer.
-bool drawable_size(Display* dpy, GLXDrawable draw, uint32_t* w, uint32_t* h) {
-  DisplayState* state = DisplayState::of(dpy);
+// The size of an X drawable (asked over glpt's own connection) or of a pbuffer.
+bool drawable_size(DisplayState* state, GLXDrawable draw, uint32_t* w, uint32_t* h) {
   GlxDrawable info;
   if (find_glx_drawable(state, draw, &info)) {
     if (info.kind == DrawableKind::kPbuffer) return info.pbuffer->query_size(w, h);
     draw = info.x_drawable;
   }
-  // glpt's own connection: a drawable that does not exist is GLXBadDrawable, not an X error.
-  std::string error;
-  auto probe =
-      glpt::X11WindowTarget::create(DisplayString(dpy), static_cast<uint32_t>(draw), {}, &error);
-  return probe && probe->query_size(w, h);
+  return state->geometry(draw, w, h);
 }
 
 }  // namespace
@@ -454,9 +460,8 @@ GLPT_EXPORT GLXContext glXCreateContextAttribsARB(Display* dpy, GLXFBConfig conf
   // The errors below are Mesa's choices, reported as Mesa does (minor code 0: found on the client
   // side). GLX_ARB_create_context: unknown flag bits are BadValue; a version GL never defined or
   // forward-compatibility before 3.0 is BadMatch. GLX_ARB_create_context_profile: no profile bit,
-  // an unknown one or both (from GL 3.2 on, where profiles count) is GLXBadProfileARB. Colour
+  // an unknown one or both is GLXBadProfileARB, whatever the version (as Mesa checks it). Colour
   // index (no such configs) and unknown render types are BadValue.
-  const bool profiled = major > 3 || (major == 3 && minor >= 2);
   const int profile_bits =
       GLX_CONTEXT_CORE_PROFILE_BIT_ARB | GLX_CONTEXT_COMPATIBILITY_PROFILE_BIT_ARB;
   if ((flags & ~kAllFlags) != 0 || render_type != GLX_RGBA_TYPE) {
@@ -470,7 +475,7 @@ GLPT_EXPORT GLXContext glXCreateContextAttribsARB(Display* dpy, GLXFBConfig conf
     glpt::glx::send_x_error(dpy, BadMatch, 0, 0);
     return nullptr;
   }
-  if (profiled && (profile == 0 || (profile & ~profile_bits) != 0 || profile == profile_bits)) {
+  if (profile == 0 || (profile & ~profile_bits) != 0 || profile == profile_bits) {
     glpt::glx::send_glx_error(dpy, glpt::glx::kGlxBadProfileArb, 0, 0);
     return nullptr;
   }
@@ -801,7 +806,7 @@ GLPT_EXPORT void glXQueryDrawable(Display* dpy, GLXDrawable draw, int attribute,
     case GLX_WIDTH:
     case GLX_HEIGHT: {
       uint32_t w = 0, h = 0;
-      if (!drawable_size(dpy, draw, &w, &h)) {
+      if (!drawable_size(state, draw, &w, &h)) {
         glpt::glx::send_glx_error(dpy, glpt::glx::kGlxBadDrawable, draw, kMinor);
         return;
       }
@@ -817,6 +822,10 @@ GLPT_EXPORT void glXQueryDrawable(Display* dpy, GLXDrawable draw, int attribute,
       *value = glx_drawable && info.kind == DrawableKind::kPbuffer ? info.largest_pbuffer : 0;
       return;
     case GLX_FBCONFIG_ID:
+      // A plain X window answers the FBConfig of its visual (a context made from a visual has
+      // the visual's config, which has no FBConfig id), as Mesa does.
+      if (config != nullptr && !glx_drawable && config->fbconfig_id == glpt::glx::kDontCare)
+        config = state->fbconfig_for_visual(config->screen, config->visual_id);
       *value = config ? static_cast<unsigned>(config->fbconfig_id) : 0;
       return;
     case GLX_EVENT_MASK:

@@ -77,18 +77,37 @@ const ScreenConfigs* DisplayState::screen(int n) {
   bool from_server = false;
   if (has_glx_) {
     // The queries go over a connection of glpt's own: the program's Display stays untouched.
-    if (connection_ == nullptr) {
-      auto* c = xcb_connect(DisplayString(dpy_), nullptr);
-      if (xcb_connection_has_error(c) == 0)
-        connection_ = c;
-      else
-        xcb_disconnect(c);
-    }
-    if (connection_ != nullptr) from_server = query_server_configs(connection_, n, configs.get());
+    if (void* c = connection()) from_server = query_server_configs(c, n, configs.get());
   }
   if (!from_server) *configs = synthesized_configs(dpy_, n);
   screens_[n] = std::move(configs);
   return screens_[n].get();
+}
+
+void* DisplayState::connection() {
+  if (connection_ == nullptr) {
+    auto* c = xcb_connect(DisplayString(dpy_), nullptr);
+    if (xcb_connection_has_error(c) == 0)
+      connection_ = c;
+    else
+      xcb_disconnect(c);
+  }
+  return connection_;
+}
+
+bool DisplayState::geometry(XID drawable, uint32_t* width, uint32_t* height) {
+  std::lock_guard lock(mutex);
+  auto* c = static_cast<xcb_connection_t*>(connection());
+  if (c == nullptr) return false;
+  xcb_generic_error_t* error = nullptr;
+  xcb_get_geometry_reply_t* g =
+      xcb_get_geometry_reply(c, xcb_get_geometry(c, static_cast<xcb_drawable_t>(drawable)), &error);
+  free(error);
+  if (g == nullptr) return false;
+  *width = g->width;
+  *height = g->height;
+  free(g);
+  return true;
 }
 
 const Config* DisplayState::validate(GLXFBConfig handle) {
@@ -108,6 +127,14 @@ const Config* DisplayState::visual_config(int n, VisualID visual) {
   if (configs == nullptr) return nullptr;
   for (const Config& c : configs->visuals)
     if (c.visual_id == static_cast<int>(visual)) return &c;
+  return nullptr;
+}
+
+const Config* DisplayState::fbconfig_for_visual(int n, int visual_id) {
+  const ScreenConfigs* configs = screen(n);
+  if (configs == nullptr || visual_id == 0) return nullptr;
+  for (const Config& c : configs->fbconfigs)
+    if (c.visual_id == visual_id) return &c;
   return nullptr;
 }
 

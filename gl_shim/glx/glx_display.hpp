@@ -36,6 +36,11 @@ class DisplayState {
   const Config* validate(GLXFBConfig handle);
   // The visual config of an X visual on `screen` (glXGetConfig, glXCreateContext).
   const Config* visual_config(int screen, VisualID visual);
+  // The size of an X window or pixmap, asked over glpt's own connection (a drawable that does
+  // not exist is false, not an X error for the program).
+  bool geometry(XID drawable, uint32_t* width, uint32_t* height);
+  // The first FBConfig of an X visual (in the server's order).
+  const Config* fbconfig_for_visual(int screen, int visual_id);
 
   // The GLX extension's major opcode and first error (0 when the server has none).
   int glx_opcode() const { return glx_opcode_; }
@@ -51,7 +56,8 @@ class DisplayState {
 
  private:
   Display* dpy_;
-  void* connection_ = nullptr;  // glpt's own xcb connection for GLX queries
+  void* connection_ = nullptr;  // glpt's own xcb connection for GLX queries (under `mutex`)
+  void* connection();           // opened on first use
   bool has_glx_ = false;
   int glx_opcode_ = 0, glx_error_base_ = 0, glx_event_base_ = 0;
   std::vector<std::unique_ptr<ScreenConfigs>> screens_;  // loaded on first use
