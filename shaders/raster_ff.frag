@@ -809,7 +809,17 @@ void main() {
                                 texels);
   }
 
-  if ((kFlags & GLPT_FS_COLOR_SUM) != 0u) color.rgb = min(color.rgb + secondary.rgb, 1.0);
+  // Colour sum (GL 1.5 3.9). The spec clamps the sum to [0, 1]; Mesa's fixed-function fragment
+  // program adds the secondary colour unclamped and fogs that (ff_fragment_shader.c), which
+  // shows where the sum exceeds 1 under fog. Raster mode matches Mesa; the G-buffer keeps the
+  // clamped sum, as an albedo above 1 would create light.
+  if ((kFlags & GLPT_FS_COLOR_SUM) != 0u) {
+#if GLPT_GBUFFER
+    color.rgb = min(color.rgb + secondary.rgb, 1.0);
+#else
+    color.rgb += secondary.rgb;
+#endif
+  }
 
   uint fog_mode = (kAlphaFog >> 12u) & 3u;
   if (fog_mode != 0u) {

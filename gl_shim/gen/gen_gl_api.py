@@ -81,6 +81,12 @@ GL_ENUM_ONLY_EXTENSIONS = [
     "GL_EXT_packed_depth_stencil",
 ]
 
+# Single enums of later versions that glpt answers because state dumpers ask every context for
+# them (apitrace's glretrace -D sizes its per-texture-unit loop with these GL 2.0 limits).
+GL_TOOL_QUERY_ENUMS = [
+    "GL_MAX_TEXTURE_COORDS", "GL_MAX_TEXTURE_IMAGE_UNITS", "GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS",
+]
+
 # What glGetString(GL_EXTENSIONS) advertises: the extensions GL 1.1-1.5 made core (programs of
 # the time test for them rather than for the version) and GL 1.x-era ones glpt implements
 # besides. Every command an advertised extension adds must be implemented (checked by
@@ -807,6 +813,7 @@ def main():
     gl = ET.parse(args.gl_xml).getroot()
     commands = parse_commands(gl)
     names, enum_names = collect(gl, "gl", GL_FEATURES, GL_EXTENSIONS, GL_ENUM_ONLY_EXTENSIONS)
+    enum_names += [e for e in GL_TOOL_QUERY_ENUMS if e not in enum_names]
     # Aliased core commands must exist for their aliases to use them.
     for n in list(names):
         a = alias_of(commands[n])

@@ -53,6 +53,12 @@ bool lookup_texture_and_pixel_state(const Context& ctx, GLenum pname, query::Val
       *out = ints({kMax3DTextureSize});
       return true;
     case GL_MAX_TEXTURE_UNITS:
+    // GL 2.0's per-unit limits are not GL 1.5 state, but state dumpers (apitrace's glretrace
+    // -D, which sizes its per-unit loop with them) ask them of every context, and Mesa answers
+    // them in a 1.x context too. Without shaders, every unit has coordinates and an image.
+    case GL_MAX_TEXTURE_COORDS:
+    case GL_MAX_TEXTURE_IMAGE_UNITS:
+    case GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS:
       *out = ints({double(rec::kMaxTextureUnits)});
       return true;
     case GL_MAX_TEXTURE_LOD_BIAS:

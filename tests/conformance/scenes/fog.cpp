@@ -100,4 +100,32 @@ GLPT_SCENE(fog_after_texture, 128, 64) {
   }
 }
 
+// Defect: the colour sum was clamped to 1 before fog. Mesa fogs the unclamped sum of a bright
+// texture and a strong specular highlight (GL 1.5 3.9 clamps it; Mesa's fixed-function fragment
+// program does not), so highlights on saturated texels stay brighter through the fog.
+GLPT_SCENE(fog_unclamped_color_sum, 128, 64) {
+  clear(0.3f, 0.35f, 0.4f);
+  perspective(40.0, 2.0, 1.0, 40.0);
+  glEnable(GL_DEPTH_TEST);
+  glEnable(GL_FOG);
+  glFogi(GL_FOG_MODE, GL_EXP2);
+  glFogf(GL_FOG_DENSITY, 0.2f);
+  fog_colour(0.3f, 0.35f, 0.4f);
+  glEnable(GL_LIGHTING);
+  light4(GL_LIGHT0, GL_POSITION, -1, 1, 2, 0);
+  glEnable(GL_LIGHT0);
+  glLightModeli(GL_LIGHT_MODEL_COLOR_CONTROL, GL_SEPARATE_SPECULAR_COLOR);
+  material4(GL_FRONT, GL_SPECULAR, 1, 1, 1);
+  glMaterialf(GL_FRONT, GL_SHININESS, 8);
+  glEnable(GL_TEXTURE_2D);
+  texture_2d(GL_RGB, 8, 8, checker(8, 8, 2, Rgba8{255, 40, 20, 255}, Rgba8{250, 250, 250, 255}));
+  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+  for (int i = 0; i < 3; ++i) {
+    glPushMatrix();
+    glTranslatef(-2.0f + 2.0f * i, 0, -4.0f - 1.5f * i);
+    sphere(0.9f, 24, 12);
+    glPopMatrix();
+  }
+}
+
 }  // namespace
