@@ -272,6 +272,27 @@ XID new_glx_drawable(Display* dpy, DisplayState* state, GlxDrawable drawable) {
   return id;
 }
 
+// glXCreateWindow / glXCreatePixmap: a GLX drawable over X drawable `x` for `config`, which must
+// support `kind` (`type_bit`); an absent `x` is `missing_error`.
+XID create_glx_drawable(Display* dpy, GLXFBConfig config, XID x, DrawableKind kind, int type_bit,
+                        int missing_error, int minor) {
+  const Config* c = fbconfig(dpy, config, minor);
+  if (c == nullptr) return None;
+  if (x == None) {
+    glpt::glx::send_x_error(dpy, missing_error, x, minor);
+    return None;
+  }
+  if ((c->drawable_type & type_bit) == 0) {
+    glpt::glx::send_x_error(dpy, BadMatch, x, minor);
+    return None;
+  }
+  GlxDrawable d;
+  d.kind = kind;
+  d.config = c;
+  d.x_drawable = x;
+  return new_glx_drawable(dpy, DisplayState::of(dpy), d);
+}
+
 bool destroy_glx_drawable(Display* dpy, XID id, DrawableKind kind, int error, int minor) {
   DisplayState* state = DisplayState::of(dpy);
   if (state == nullptr) return false;
@@ -635,21 +656,8 @@ GLPT_EXPORT int glXQueryContext(Display* dpy, GLXContext ctx, int attribute, int
 GLPT_EXPORT GLXWindow glXCreateWindow(Display* dpy, GLXFBConfig config, Window win,
                                       const int* attrib_list) {
   (void)attrib_list;  // GLX 1.4 defines no attributes for windows
-  const Config* c = fbconfig(dpy, config, glpt::glx::kXGlxCreateWindow);
-  if (c == nullptr) return None;
-  if (win == None) {
-    glpt::glx::send_x_error(dpy, BadWindow, win, glpt::glx::kXGlxCreateWindow);
-    return None;
-  }
-  if ((c->drawable_type & GLX_WINDOW_BIT) == 0) {
-    glpt::glx::send_x_error(dpy, BadMatch, win, glpt::glx::kXGlxCreateWindow);
-    return None;
-  }
-  GlxDrawable d;
-  d.kind = DrawableKind::kWindow;
-  d.config = c;
-  d.x_drawable = win;
-  return new_glx_drawable(dpy, DisplayState::of(dpy), d);
+  return create_glx_drawable(dpy, config, win, DrawableKind::kWindow, GLX_WINDOW_BIT, BadWindow,
+                             glpt::glx::kXGlxCreateWindow);
 }
 
 GLPT_EXPORT void glXDestroyWindow(Display* dpy, GLXWindow win) {
@@ -659,22 +667,9 @@ GLPT_EXPORT void glXDestroyWindow(Display* dpy, GLXWindow win) {
 
 GLPT_EXPORT GLXPixmap glXCreatePixmap(Display* dpy, GLXFBConfig config, Pixmap pixmap,
                                       const int* attrib_list) {
-  (void)attrib_list;
-  const Config* c = fbconfig(dpy, config, glpt::glx::kXGlxCreatePixmap);
-  if (c == nullptr) return None;
-  if (pixmap == None) {
-    glpt::glx::send_x_error(dpy, BadPixmap, pixmap, glpt::glx::kXGlxCreatePixmap);
-    return None;
-  }
-  if ((c->drawable_type & GLX_PIXMAP_BIT) == 0) {
-    glpt::glx::send_x_error(dpy, BadMatch, pixmap, glpt::glx::kXGlxCreatePixmap);
-    return None;
-  }
-  GlxDrawable d;
-  d.kind = DrawableKind::kPixmap;
-  d.config = c;
-  d.x_drawable = pixmap;
-  return new_glx_drawable(dpy, DisplayState::of(dpy), d);
+  (void)attrib_list;  // GLX 1.4 defines no attributes for pixmaps
+  return create_glx_drawable(dpy, config, pixmap, DrawableKind::kPixmap, GLX_PIXMAP_BIT, BadPixmap,
+                             glpt::glx::kXGlxCreatePixmap);
 }
 
 GLPT_EXPORT void glXDestroyPixmap(Display* dpy, GLXPixmap pixmap) {

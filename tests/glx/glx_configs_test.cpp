@@ -2,9 +2,11 @@
 // table 3.4's match criteria and 3.3.3's order as Mesa's glxcmds.c implements them, and the
 // buffers a config gives a drawable. Expected values come from the spec's tables and Mesa's code
 // (the end-to-end comparison with Mesa is glx.mesa_oracle).
-#include "gl_shim/glx/glx_configs.hpp"
-
+// gtest before the X headers: Xlib's macros (None, Bool, Status) break gtest's templates.
+// clang-format off
 #include <gtest/gtest.h>
+#include "gl_shim/glx/glx_configs.hpp"
+// clang-format on
 
 #include <algorithm>
 #include <vector>

@@ -76,6 +76,15 @@ class GlxDrawables : public ::testing::Test {
     windows_.push_back(win);
     return win;
   }
+  // A double-buffered window (not synced) with a context of its visual.
+  bool double_buffered_window(int w, int h, Window* win, GLXContext* ctx) {
+    XVisualInfo* vi = visual({GLX_RGBA, GLX_DOUBLEBUFFER});
+    if (vi == nullptr) return false;
+    *win = unsynced_window(*vi, w, h);
+    *ctx = context(vi);
+    XFree(vi);
+    return *ctx != nullptr;
+  }
   GLXContext context(XVisualInfo* vi, GLXContext share = nullptr) {
     GLXContext c = glXCreateContext(dpy_, vi, share, True);
     if (c) contexts_.push_back(c);
@@ -149,11 +158,9 @@ TEST_F(GlxDrawables, SingleBufferedGlFlushShowsTheImageWithoutXSync) {
 }
 
 TEST_F(GlxDrawables, DoubleBufferedDrawsToTheBackAndSwapShowsIt) {
-  XVisualInfo* vi = visual({GLX_RGBA, GLX_DOUBLEBUFFER});
-  ASSERT_NE(vi, nullptr);
-  const Window win = unsynced_window(*vi, 32, 32);
-  GLXContext ctx = context(vi);
-  XFree(vi);
+  Window win = 0;
+  GLXContext ctx = nullptr;
+  ASSERT_TRUE(double_buffered_window(32, 32, &win, &ctx));
   ASSERT_TRUE(glXMakeCurrent(dpy_, win, ctx));
   GLboolean doublebuffer = GL_FALSE;
   glGetBooleanv(GL_DOUBLEBUFFER, &doublebuffer);
@@ -206,11 +213,9 @@ TEST_F(GlxDrawables, ADrawableWithoutDepthPassesTheDepthTest) {
 }
 
 TEST_F(GlxDrawables, AResizedWindowHasItsNewSizeNextFrame) {
-  XVisualInfo* vi = visual({GLX_RGBA, GLX_DOUBLEBUFFER});
-  ASSERT_NE(vi, nullptr);
-  const Window win = unsynced_window(*vi, 32, 32);
-  GLXContext ctx = context(vi);
-  XFree(vi);
+  Window win = 0;
+  GLXContext ctx = nullptr;
+  ASSERT_TRUE(double_buffered_window(32, 32, &win, &ctx));
   ASSERT_TRUE(glXMakeCurrent(dpy_, win, ctx));
   glClearColor(1, 0, 0, 1);
   glClear(GL_COLOR_BUFFER_BIT);
@@ -291,11 +296,9 @@ TEST_F(GlxDrawables, PbufferIsAHeadlessDrawable) {
 }
 
 TEST_F(GlxDrawables, SwapIntervalsAreRememberedPerDrawable) {
-  XVisualInfo* vi = visual({GLX_RGBA, GLX_DOUBLEBUFFER});
-  ASSERT_NE(vi, nullptr);
-  const Window win = unsynced_window(*vi, 8, 8);
-  GLXContext ctx = context(vi);
-  XFree(vi);
+  Window win = 0;
+  GLXContext ctx = nullptr;
+  ASSERT_TRUE(double_buffered_window(8, 8, &win, &ctx));
   EXPECT_EQ(glXSwapIntervalSGI(1), GLX_BAD_CONTEXT);  // no current context
   ASSERT_TRUE(glXMakeCurrent(dpy_, win, ctx));
   unsigned int interval = 0;

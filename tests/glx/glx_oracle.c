@@ -62,6 +62,17 @@ static const struct {
 };
 #define N_ATTRIBS (sizeof(kAttribs) / sizeof(kAttribs[0]))
 
+/* A mapped window of `vi`, not synced (GLX must flush the program's Display itself). */
+static Window create_window(Display* dpy, XVisualInfo* vi, int w, int h) {
+  XSetWindowAttributes attr;
+  memset(&attr, 0, sizeof attr);
+  attr.colormap = XCreateColormap(dpy, RootWindow(dpy, 0), vi->visual, AllocNone);
+  Window win = XCreateWindow(dpy, RootWindow(dpy, 0), 0, 0, w, h, 0, vi->depth, InputOutput,
+                             vi->visual, CWColormap, &attr);
+  XMapWindow(dpy, win);
+  return win;
+}
+
 static int renderable(int r, int g, int b, int a, int samples) {
   return r == 8 && g == 8 && b == 8 && (a == 0 || a == 8) && samples == 0;
 }
@@ -180,12 +191,7 @@ static int xfont(Display* dpy) {
   int attribs[] = {GLX_RGBA, GLX_RED_SIZE, 1, None};
   XVisualInfo* vi = glXChooseVisual(dpy, 0, attribs);
   if (!vi) return 1;
-  XSetWindowAttributes attr;
-  memset(&attr, 0, sizeof attr);
-  attr.colormap = XCreateColormap(dpy, RootWindow(dpy, 0), vi->visual, AllocNone);
-  Window win = XCreateWindow(dpy, RootWindow(dpy, 0), 0, 0, 120, 24, 0, vi->depth, InputOutput,
-                             vi->visual, CWColormap, &attr);
-  XMapWindow(dpy, win);
+  Window win = create_window(dpy, vi, 120, 24);
   GLXContext ctx = glXCreateContext(dpy, vi, NULL, True);
   glXMakeCurrent(dpy, win, ctx);
   Font font = XLoadFont(dpy, "fixed");
@@ -234,12 +240,7 @@ static int errors(Display* dpy) {
   XSetErrorHandler(x_error);
   int attribs[] = {GLX_RGBA, GLX_DOUBLEBUFFER, None};
   XVisualInfo* vi = glXChooseVisual(dpy, 0, attribs);
-  XSetWindowAttributes attr;
-  memset(&attr, 0, sizeof attr);
-  attr.colormap = XCreateColormap(dpy, RootWindow(dpy, 0), vi->visual, AllocNone);
-  Window win = XCreateWindow(dpy, RootWindow(dpy, 0), 0, 0, 16, 16, 0, vi->depth, InputOutput,
-                             vi->visual, CWColormap, &attr);
-  XMapWindow(dpy, win);
+  Window win = create_window(dpy, vi, 16, 16);
   GLXContext ctx = glXCreateContext(dpy, vi, NULL, True);
   const int any[] = {GLX_DOUBLEBUFFER, True, None};
   int n = 0;
@@ -361,12 +362,7 @@ static int queries(Display* dpy) {
     glXGetFBConfigAttrib(dpy, c, GLX_FBCONFIG_ID, &id);
     printf("config list %zu: fbconfig %d\n", l, id);
     XVisualInfo* vi = glXGetVisualFromFBConfig(dpy, c);
-    XSetWindowAttributes attr;
-    memset(&attr, 0, sizeof attr);
-    attr.colormap = XCreateColormap(dpy, RootWindow(dpy, 0), vi->visual, AllocNone);
-    Window win = XCreateWindow(dpy, RootWindow(dpy, 0), 0, 0, 33, 17, 0, vi->depth, InputOutput,
-                               vi->visual, CWColormap, &attr);
-    XMapWindow(dpy, win);
+    Window win = create_window(dpy, vi, 33, 17);
     GLXWindow glx_win = glXCreateWindow(dpy, c, win, NULL);
     glXSelectEvent(dpy, glx_win, GLX_PBUFFER_CLOBBER_MASK);
     print_drawable(dpy, "  glx window", glx_win);
