@@ -1,5 +1,6 @@
 #include "gl_shim/glx/glx_display.hpp"
 
+#include <unistd.h>
 #include <xcb/xcb.h>
 
 #include <algorithm>
@@ -58,7 +59,7 @@ DisplayState* DisplayState::of(Display* dpy) {
   return raw;
 }
 
-DisplayState::DisplayState(Display* dpy) : dpy_(dpy) {
+DisplayState::DisplayState(Display* dpy) : dpy_(dpy), owner_pid_(getpid()) {
   has_glx_ = XQueryExtension(dpy, "GLX", &glx_opcode_, &glx_event_base_, &glx_error_base_);
   if (!has_glx_) glx_opcode_ = glx_event_base_ = glx_error_base_ = 0;
   const int screens = ScreenCount(dpy);
@@ -66,7 +67,10 @@ DisplayState::DisplayState(Display* dpy) : dpy_(dpy) {
 }
 
 DisplayState::~DisplayState() {
-  if (connection_ != nullptr) xcb_disconnect(static_cast<xcb_connection_t*>(connection_));
+  // A forked child exiting without exec runs the registry's static destructor on the parent's
+  // connection: it leaves the connection alone (see X11WindowTarget's destructor).
+  if (connection_ != nullptr && getpid() == owner_pid_)
+    xcb_disconnect(static_cast<xcb_connection_t*>(connection_));
 }
 
 const ScreenConfigs* DisplayState::screen(int n) {
