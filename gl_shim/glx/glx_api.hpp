@@ -49,6 +49,19 @@ GLPT_EXPORT void glXQueryDrawable(Display* dpy, GLXDrawable draw, int attribute,
                                   unsigned int* value);
 GLPT_EXPORT void glXWaitGL(void);
 GLPT_EXPORT void glXWaitX(void);
+GLPT_EXPORT Bool glXMakeCurrentReadSGI(Display* dpy, GLXDrawable draw, GLXDrawable read,
+                                       GLXContext ctx);
+GLPT_EXPORT GLXDrawable glXGetCurrentReadDrawableSGI(void);
+GLPT_EXPORT GLXPbuffer glXCreatePbuffer(Display* dpy, GLXFBConfig config, const int* attrib_list);
+GLPT_EXPORT void glXDestroyPbuffer(Display* dpy, GLXPbuffer pbuf);
+GLPT_EXPORT void glXSelectEvent(Display* dpy, GLXDrawable draw, unsigned long event_mask);
+GLPT_EXPORT void glXGetSelectedEvent(Display* dpy, GLXDrawable draw, unsigned long* event_mask);
+GLPT_EXPORT void glXCopyContext(Display* dpy, GLXContext src, GLXContext dst, unsigned long mask);
+GLPT_EXPORT void glXUseXFont(Font font, int first, int count, int list_base);
+GLPT_EXPORT void glXSwapIntervalEXT(Display* dpy, GLXDrawable drawable, int interval);
+GLPT_EXPORT int glXSwapIntervalMESA(unsigned int interval);
+GLPT_EXPORT int glXGetSwapIntervalMESA(void);
+GLPT_EXPORT int glXSwapIntervalSGI(int interval);
 GLPT_EXPORT __GLXextFuncPtr glXGetProcAddressARB(const GLubyte* name);
 GLPT_EXPORT __GLXextFuncPtr glXGetProcAddress(const GLubyte* name);
 

@@ -24,11 +24,6 @@ std::unique_ptr<X11WindowTarget> X11WindowTarget::create(const std::string& disp
     *error = "cannot open X display '" + display_name + "' for presenting";
     return nullptr;
   }
-  // Only windows have a back buffer: GetWindowAttributes fails on a pixmap.
-  xcb_generic_error_t* err = nullptr;
-  free(xcb_get_window_attributes_reply(c, xcb_get_window_attributes(c, window), &err));
-  if (err != nullptr) config.double_buffered = false;
-  free(err);
   return std::unique_ptr<X11WindowTarget>(new X11WindowTarget(c, window, config));
 }
 
@@ -132,15 +127,27 @@ bool X11WindowTarget::prepare() {
   xcb_get_window_attributes_reply_t* attrs = xcb_get_window_attributes_reply(
       connection_, xcb_get_window_attributes(connection_, window_), &err);
   free(err);
-  if (attrs == nullptr) return false;
-  const xcb_visualid_t visual = attrs->visual;
-  free(attrs);
+  // A pixmap has no visual: its pixels are laid out as the TrueColor visuals of its depth.
+  xcb_visualid_t visual = 0;
+  uint8_t pixmap_depth = 0;
+  if (attrs != nullptr) {
+    visual = attrs->visual;
+    free(attrs);
+  } else {
+    xcb_get_geometry_reply_t* g =
+        xcb_get_geometry_reply(connection_, xcb_get_geometry(connection_, window_), nullptr);
+    if (g == nullptr) return false;
+    pixmap_depth = g->depth;
+    free(g);
+  }
   const xcb_setup_t* setup = xcb_get_setup(connection_);
   lsb_first_ = setup->image_byte_order == XCB_IMAGE_ORDER_LSB_FIRST;
   for (auto s = xcb_setup_roots_iterator(setup); s.rem; xcb_screen_next(&s))
     for (auto d = xcb_screen_allowed_depths_iterator(s.data); d.rem; xcb_depth_next(&d))
       for (auto v = xcb_depth_visuals_iterator(d.data); v.rem; xcb_visualtype_next(&v))
-        if (v.data->visual_id == visual) {
+        if (v.data->visual_id == visual || (visual == 0 && d.data->depth == pixmap_depth &&
+                                            v.data->_class == XCB_VISUAL_CLASS_TRUE_COLOR)) {
+          visual = v.data->visual_id;
           red_shift_ = std::countr_zero(v.data->red_mask);
           green_shift_ = std::countr_zero(v.data->green_mask);
           blue_shift_ = std::countr_zero(v.data->blue_mask);

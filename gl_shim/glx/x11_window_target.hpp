@@ -18,9 +18,9 @@ namespace glpt {
 
 class X11WindowTarget final : public WindowTarget {
  public:
-  // nullptr (and a message) if the display cannot be opened. `drawable` is a window or a pixmap
-  // (GLX pixmaps are the X pixmap itself); `config` says what buffers the GLX config has, and a
-  // pixmap is always single-buffered.
+  // nullptr (and a message) if the display cannot be opened. `drawable` is a window or a pixmap;
+  // `config` says what buffers its GLX config has (a pixmap of a double-buffered config has a
+  // back buffer that is never swapped, as in Mesa).
   static std::unique_ptr<X11WindowTarget> create(const std::string& display_name, uint32_t drawable,
                                                  rec::DrawableConfig config, std::string* error);
   ~X11WindowTarget() override;

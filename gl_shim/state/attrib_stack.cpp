@@ -507,3 +507,18 @@ void glPopClientAttrib(Context& ctx) {
 
 }  // namespace impl
 }  // namespace glpt
+
+namespace glpt {
+
+bool copy_attrib_groups(Context& src, Context& dst, GLbitfield mask) {
+  auto& from = src.attrib_stacks.server;
+  auto& to = dst.attrib_stacks.server;
+  if (from.size() >= kMaxAttribStackDepth || to.size() >= kMaxAttribStackDepth) return false;
+  impl::glPushAttrib(src, mask);
+  to.push_back(std::move(from.back()));
+  from.pop_back();
+  impl::glPopAttrib(dst);
+  return true;
+}
+
+}  // namespace glpt

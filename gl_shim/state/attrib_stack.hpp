@@ -31,4 +31,8 @@ struct AttribStacks {
   std::vector<std::unique_ptr<ClientAttribFrame>> client;
 };
 
+// glXCopyContext: the attribute groups of `mask` go from `src` to `dst` as a glPushAttrib(mask) on
+// `src` popped on `dst` would carry them. False (nothing copied) when either stack is full.
+bool copy_attrib_groups(Context& src, Context& dst, GLbitfield mask);
+
 }  // namespace glpt
