@@ -76,12 +76,9 @@ layout(std430, set = 0, binding = GLPT_RASTER_BINDING_PIXELS) readonly buffer Pi
 #else
 #define INTERPOLATION
 #endif
-layout(location = 0) INTERPOLATION in vec4 v_front_color;
-layout(location = 1) INTERPOLATION in vec4 v_back_color;
-layout(location = 2) INTERPOLATION in vec4 v_front_secondary;
-layout(location = 3) INTERPOLATION in vec4 v_back_secondary;
-layout(location = 4) in vec4 v_texcoord[GLPT_RASTER_MAX_UNITS];
-layout(location = 8) in float v_fog;
+#define GLPT_VARYING_OUT in
+#define GLPT_COLOR_VARYING_OUT INTERPOLATION in
+#include "raster_varyings.h"
 
 #if GLPT_GBUFFER
 layout(constant_id = GLPT_SC_VS_FLAGS) const uint kVsFlags = 0u;

@@ -50,12 +50,9 @@ layout(location = GLPT_RASTER_ATTR_TEXCOORD0 + 1) in vec4 a_texcoord1;
 layout(location = GLPT_RASTER_ATTR_TEXCOORD0 + 2) in vec4 a_texcoord2;
 layout(location = GLPT_RASTER_ATTR_TEXCOORD0 + 3) in vec4 a_texcoord3;
 
-layout(location = 0) out vec4 v_front_color;
-layout(location = 1) out vec4 v_back_color;
-layout(location = 2) out vec4 v_front_secondary;
-layout(location = 3) out vec4 v_back_secondary;
-layout(location = 4) out vec4 v_texcoord[GLPT_RASTER_MAX_UNITS];
-layout(location = 8) out float v_fog;
+#define GLPT_VARYING_OUT out
+#define GLPT_COLOR_VARYING_OUT out
+#include "raster_varyings.h"
 #if GLPT_GBUFFER
 layout(location = GLPT_GBUFFER_VARYING_EYE) out vec4 v_eye;
 layout(location = GLPT_GBUFFER_VARYING_NORMAL) out vec3 v_normal;

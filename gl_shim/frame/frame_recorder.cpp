@@ -17,10 +17,14 @@ bool all_equal(const std::vector<T>& values) {
   return true;
 }
 
+// Storage is released only where one value remains: shrinking every per-vertex array would copy
+// megabytes of a large draw into fresh pages each frame, to save less than half of them.
 template <typename T>
 void compact(std::vector<T>& values) {
-  if (values.size() > 1 && all_equal(values)) values.resize(1);
-  values.shrink_to_fit();
+  if (values.size() > 1 && all_equal(values)) {
+    values.resize(1);
+    values.shrink_to_fit();
+  }
 }
 
 template <typename T>
