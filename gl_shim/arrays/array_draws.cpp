@@ -77,12 +77,12 @@ uint8_t sampled_texture_units(const rec::StateSnapshot& state) {
   return units;
 }
 
-// The attribute as recorded: the array's values, or the current value (once, or per vertex when
-// `per_vertex` is asked for).
+// The attribute as recorded: the array's values (moved: a large draw's arrays are not copied
+// again), or the current value (once, or per vertex when `per_vertex` is asked for).
 template <typename T>
-std::vector<T> attribute(bool from_array, const std::vector<T>& values, const T& current,
-                         size_t count, bool per_vertex) {
-  if (from_array) return values;
+std::vector<T> attribute(bool from_array, std::vector<T>& values, const T& current, size_t count,
+                         bool per_vertex) {
+  if (from_array) return std::move(values);
   return std::vector<T>(per_vertex ? count : 1, current);
 }
 
@@ -133,7 +133,7 @@ void draw_elements(Context& ctx, GLenum mode, const std::vector<GLsizei>& counts
   compact_indices(elements, vertices);
   ArrayVertices values;
   read_array_vertices(ctx, vertices, ArrayConversion::kVertexFetch, values, kDrawnArrays);
-  record_array_draw(ctx, mode, values, std::move(elements), std::move(ranges),
+  record_array_draw(ctx, mode, std::move(values), std::move(elements), std::move(ranges),
                     ArrayDrawSource::kElements);
 }
 
@@ -234,7 +234,7 @@ void array_element(Context& ctx, const ArrayVertices& v, uint32_t i) {
 // The one place array draws enter the frame record. It also says how the draw was specified
 // (rec::VertexData::source: Mesa assembles glDrawArrays, glDrawElements and compiled draws
 // differently) and which colours came per vertex from arrays (per_vertex).
-void record_array_draw(Context& ctx, GLenum mode, const ArrayVertices& v,
+void record_array_draw(Context& ctx, GLenum mode, ArrayVertices&& v,
                        std::vector<uint32_t> indices, std::vector<rec::PrimitiveRange> ranges,
                        ArrayDrawSource source) {
   if (v.position.empty() || ranges.empty()) return;
@@ -248,7 +248,7 @@ void record_array_draw(Context& ctx, GLenum mode, const ArrayVertices& v,
   try {
     rec::VertexData d;
     d.mode = mode;
-    d.position = v.position;
+    d.position = std::move(v.position);
     d.normal = attribute(v.has(ArrayKind::kNormal), v.normal, c.normal, n, per_vertex);
     d.color = attribute(v.has(ArrayKind::kColor), v.color, c.color, n, per_vertex);
     d.secondary_color = attribute(v.has(ArrayKind::kSecondaryColor), v.secondary_color,
@@ -294,7 +294,7 @@ void glDrawArrays(Context& ctx, GLenum mode, GLint first, GLsizei count) {
     if (!vertex_array_enabled(ctx)) return;
     ArrayVertices values;
     read_array_vertices(ctx, vertices, ArrayConversion::kVertexFetch, values, kDrawnArrays);
-    record_array_draw(ctx, mode, values, {}, {{0, uint32_t(count)}}, ArrayDrawSource::kArrays);
+    record_array_draw(ctx, mode, std::move(values), {}, {{0, uint32_t(count)}}, ArrayDrawSource::kArrays);
   });
 }
 
@@ -325,7 +325,7 @@ void glMultiDrawArrays(Context& ctx, GLenum mode, const GLint* first, const GLsi
     if (vertices.empty() || !vertex_array_enabled(ctx)) return;
     ArrayVertices values;
     read_array_vertices(ctx, vertices, ArrayConversion::kVertexFetch, values, kDrawnArrays);
-    record_array_draw(ctx, mode, values, {}, std::move(ranges), ArrayDrawSource::kArrays);
+    record_array_draw(ctx, mode, std::move(values), {}, std::move(ranges), ArrayDrawSource::kArrays);
   });
 }
 

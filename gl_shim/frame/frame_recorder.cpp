@@ -83,7 +83,13 @@ void FrameRecorder::add_primitive(rec::StateId state, rec::VertexData& p) {
     seal();
   vertex_bytes_ += p.position.size() * bytes_per_vertex(p);
   if (!open_) {
-    open_ = std::make_unique<rec::VertexData>(std::move(p));
+    if (spare_.empty()) {
+      open_ = std::make_shared<rec::VertexData>(std::move(p));
+    } else {
+      open_ = std::move(spare_.back());
+      spare_.pop_back();
+      *open_ = p;  // copied into the spare's storage; `p` keeps its own for the next primitive
+    }
     open_state_ = state;
     return;
   }
@@ -125,6 +131,15 @@ void FrameRecorder::seal() {
 
 void FrameRecorder::clear() {
   ++events_;
+  constexpr size_t kMaxSpares = 4;
+  for (rec::Command& command : record_.commands) {
+    auto* draw = std::get_if<rec::Draw>(&command);
+    if (spare_.size() == kMaxSpares) break;
+    // Only this record holds it (consumers that keep draws, as the path tracer's scene, share
+    // them): the batches were created mutable, so taking const away is sound.
+    if (draw && draw->vertices && draw->vertices.use_count() == 1)
+      spare_.push_back(std::const_pointer_cast<rec::VertexData>(std::move(draw->vertices)));
+  }
   record_.clear();
   open_.reset();
   vertex_bytes_ = 0;
