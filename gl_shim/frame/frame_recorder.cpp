@@ -88,7 +88,9 @@ void FrameRecorder::add_primitive(rec::StateId state, rec::VertexData& p) {
     } else {
       open_ = std::move(spare_.back());
       spare_.pop_back();
-      *open_ = p;  // copied into the spare's storage; `p` keeps its own for the next primitive
+      // Exchanged, not copied: `p` (the caller's scratch, cleared before reuse) takes the spare's
+      // storage for its next primitive.
+      std::swap(*open_, p);
     }
     open_state_ = state;
     return;

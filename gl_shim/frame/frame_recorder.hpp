@@ -19,7 +19,8 @@ namespace glpt {
 class FrameRecorder {
  public:
   // Appends one primitive: `primitive` holds one value per vertex for every attribute it records
-  // and exactly one PrimitiveRange. Its arrays may be moved from.
+  // and exactly one PrimitiveRange. It is left unspecified (moved from, or holding other
+  // storage): the caller clears it before reuse.
   void add_primitive(rec::StateId state, rec::VertexData& primitive);
   // Appends one complete draw (an array draw: any number of primitives, indices allowed; an
   // attribute may hold one value for all vertices). It is never batched with others.
