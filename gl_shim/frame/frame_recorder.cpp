@@ -117,6 +117,23 @@ void FrameRecorder::add_draw(rec::StateId state, rec::VertexData&& draw) {
   record_.commands.push_back(rec::Draw{state, std::move(data)});
 }
 
+rec::VertexData FrameRecorder::take_storage() {
+  if (spare_.empty()) return {};
+  rec::VertexData storage = std::move(*spare_.back());
+  spare_.pop_back();
+  storage.position.clear();
+  storage.normal.clear();
+  storage.color.clear();
+  storage.secondary_color.clear();
+  storage.fog_coord.clear();
+  for (auto& t : storage.tex_coord) t.clear();
+  storage.edge_flag.clear();
+  storage.material.clear();
+  storage.indices.clear();
+  storage.primitives.clear();
+  return storage;
+}
+
 void FrameRecorder::add(rec::Command command) {
   ++events_;
   seal();

@@ -25,6 +25,8 @@ class FrameRecorder {
   // Appends one complete draw (an array draw: any number of primitives, indices allowed; an
   // attribute may hold one value for all vertices). It is never batched with others.
   void add_draw(rec::StateId state, rec::VertexData&& draw);
+  // Storage for a new draw: the cleared arrays of a spare batch (their capacity kept), or none.
+  rec::VertexData take_storage();
   // Any other command ends the open batch.
   void add(rec::Command command);
   // Completes the open batch; the record is then ready for a consumer.
