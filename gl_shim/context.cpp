@@ -144,6 +144,14 @@ void end_frame(Context& ctx, bool swap) {
   std::vector<rt::QuerySamples> samples;
   ctx.output->end_frame(ctx.recorder.record(), current_drawable(ctx),
                         ctx.recording_since.elapsed_ms(), ctx.target, swap, &samples);
+  // Running totals, so a program killed mid-run (as screensavers are) still leaves them.
+  if (ctx.output->stats_enabled()) {
+    uint64_t unimplemented = 0;
+    for (uint64_t n : ctx.unimplemented_calls) unimplemented += n;
+    std::fprintf(stderr, "glpt: totals gl_errors=%llu unimplemented_calls=%llu\n",
+                 static_cast<unsigned long long>(ctx.errors_recorded),
+                 static_cast<unsigned long long>(unimplemented));
+  }
   start_new_record(ctx);
   count_query_samples(ctx.queries, samples);
 }

@@ -108,6 +108,7 @@ class Context {
   std::vector<uint64_t> unimplemented_calls;  // per CommandId
   std::vector<bool> unimplemented_reported;
   uint64_t not_compilable_calls = 0;
+  uint64_t errors_recorded = 0;  // every GL error raised, also those after the first is pending
 };
 
 Context* current_context();

@@ -3,12 +3,13 @@
 #include <cstdio>
 #include <cstring>
 
-#include "gl_shim/context.hpp"
 #include "gl/gl_enums.h"
+#include "gl_shim/context.hpp"
 
 namespace glpt {
 
 void record_error(Context& ctx, GLenum error) {
+  ++ctx.errors_recorded;
   if (ctx.error == GL_NO_ERROR) ctx.error = error;
 }
 

@@ -9,6 +9,7 @@
 #define EGL_EGLEXT_PROTOTYPES 1
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cstdint>
@@ -89,9 +90,26 @@ std::mutex& objects_mutex() {
   return m;
 }
 
+// Every display, destroyed at exit. A forked child that exits without exec'ing (xscreensaver's
+// image-loading hacks do when xscreensaver-getimage is missing) runs this destructor too, with
+// the parent's X connections, shared-memory segments and Vulkan device, whose threads exist only
+// in the parent: tearing them down there would break the parent or wait forever, so the child
+// leaves them to the kernel.
+class DisplayRegistry {
+ public:
+  ~DisplayRegistry() {
+    if (getpid() == owner_) return;
+    for (auto& d : all) static_cast<void>(d.release());
+  }
+  std::vector<std::unique_ptr<EglDisplay>> all;
+
+ private:
+  pid_t owner_ = getpid();
+};
+
 std::vector<std::unique_ptr<EglDisplay>>& displays() {
-  static std::vector<std::unique_ptr<EglDisplay>> all;
-  return all;
+  static DisplayRegistry registry;
+  return registry.all;
 }
 
 thread_local EGLint t_error = EGL_SUCCESS;

@@ -61,6 +61,7 @@ class FrameOutput {
   rt::Renderer& renderer() { return *renderer_; }
   // What the last completed frame cost (what GLPT_STATS printed for it).
   const rt::FrameStats& last_frame_stats() const { return last_frame_stats_; }
+  bool stats_enabled() const { return settings_.stats; }
   const rec::DrawableConfig& drawable() const { return drawable_; }
 
  private:

@@ -17,6 +17,8 @@
 // clang-format on
 
 #include <dlfcn.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstring>
 #include <thread>
@@ -480,6 +482,41 @@ TEST_F(Egl, WindowSurfaceFrameReachesReadPixels) {
   surface = eglCreateWindowSurface(egl_, config, win, nullptr);
   EXPECT_NE(surface, EGL_NO_SURFACE);
   EXPECT_TRUE(eglDestroySurface(egl_, surface));
+}
+
+// A forked child that exits without exec'ing runs the static destructors that tear glpt's EGL
+// displays down (xscreensaver's image-loading hacks do this when xscreensaver-getimage is
+// missing); the parent's presenting connection to the X server must survive it.
+TEST_F(Egl, ForkedChildExitingLeavesTheParentPresenting) {
+  EGLConfig config = choose(kWindowConfig);
+  Window win = make_window(config, 64, 48);
+  ASSERT_NE(win, 0u);
+  EGLSurface surface = eglCreateWindowSurface(egl_, config, win, nullptr);
+  ASSERT_NE(surface, EGL_NO_SURFACE);
+  EGLContext ctx = eglCreateContext(egl_, config, EGL_NO_CONTEXT, nullptr);
+  ASSERT_NE(ctx, EGL_NO_CONTEXT);
+  ASSERT_TRUE(eglMakeCurrent(egl_, surface, surface, ctx));
+  unsigned char left[4] = {}, right[4] = {};
+  draw_half_red(10, 50, 24, left, right);
+  ASSERT_TRUE(eglSwapBuffers(egl_, surface));  // the window target is connected and presenting
+
+  const pid_t child = fork();
+  if (child == 0) std::exit(0);  // static destructors run here, with the parent's sockets
+  int status = -1;
+  ASSERT_EQ(waitpid(child, &status, 0), child);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << status;
+
+  glClearColor(0, 1, 0, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  EXPECT_TRUE(eglSwapBuffers(egl_, surface));
+  XImage* image = XGetImage(dpy_, win, 0, 0, 64, 48, AllPlanes, ZPixmap);
+  ASSERT_NE(image, nullptr);
+  const unsigned long pixel = XGetPixel(image, 10, 24);
+  XDestroyImage(image);
+  EXPECT_EQ(pixel & 0xffffff, 0x00ff00u);
+  EXPECT_TRUE(eglMakeCurrent(egl_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT));
+  EXPECT_TRUE(eglDestroySurface(egl_, surface));
+  EXPECT_TRUE(eglDestroyContext(egl_, ctx));
 }
 
 // EGL 1.5 3.5.2: pbuffers render off-screen; glReadPixels reads them.
