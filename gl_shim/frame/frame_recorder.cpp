@@ -42,6 +42,19 @@ size_t bytes_per_vertex(const rec::VertexData& d) {
 
 }  // namespace
 
+void clear_vertex_arrays(rec::VertexData& d) {
+  d.position.clear();
+  d.normal.clear();
+  d.color.clear();
+  d.secondary_color.clear();
+  d.fog_coord.clear();
+  for (auto& t : d.tex_coord) t.clear();
+  d.edge_flag.clear();
+  d.material.clear();
+  d.indices.clear();
+  d.primitives.clear();
+}
+
 void finish_vertex_data(rec::VertexData& d) {
   compact(d.normal);
   compact(d.color);
@@ -121,16 +134,7 @@ rec::VertexData FrameRecorder::take_storage() {
   if (spare_.empty()) return {};
   rec::VertexData storage = std::move(*spare_.back());
   spare_.pop_back();
-  storage.position.clear();
-  storage.normal.clear();
-  storage.color.clear();
-  storage.secondary_color.clear();
-  storage.fog_coord.clear();
-  for (auto& t : storage.tex_coord) t.clear();
-  storage.edge_flag.clear();
-  storage.material.clear();
-  storage.indices.clear();
-  storage.primitives.clear();
+  clear_vertex_arrays(storage);
   return storage;
 }
 

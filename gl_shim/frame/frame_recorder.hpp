@@ -54,6 +54,9 @@ class FrameRecorder {
   uint64_t events_ = 0;
 };
 
+// Empties every array of `data` (attributes, indices, primitives), keeping their storage.
+void clear_vertex_arrays(rec::VertexData& data);
+
 // Shrinks attributes whose values are all equal to one value and computes geometry_key and
 // attribute_key (exposed for tests).
 void finish_vertex_data(rec::VertexData& data);
