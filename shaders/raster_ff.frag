@@ -5,7 +5,8 @@
 // function in the pipeline. Specialization constants (raster_types.h) select each unit's target,
 // environment and texture base format, so a pipeline contains only what its state uses.
 //
-// Built twice: GLPT_FLAT 1 takes the colours of the provoking vertex (GL_FLAT). Built twice more
+// Built twice: GLPT_FLAT 1 takes the colours of the provoking vertex (GL_FLAT); both also in
+// variants declaring fewer varyings (GLPT_VARYINGS, raster_varyings.h). Built twice more
 // for pixel rectangles: GLPT_PIXELS 1 takes the fragment colour (or, for bitmaps and stencil
 // images, whether there is a fragment) from the image in the pixels buffer; GLPT_PIXELS 2 also
 // its depth (depth images), which needs gl_FragDepth and so a shader of its own.

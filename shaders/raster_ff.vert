@@ -8,7 +8,8 @@
 // transformed as c0*x + c1*y + c2*z + c3*w with the modelview-projection product computed on the
 // CPU (Mesa's order), colours are clamped per vertex.
 //
-// Built twice: GLPT_CLIP 1 declares gl_ClipDistance (user clip planes, exact line clipping).
+// Built twice: GLPT_CLIP 1 declares gl_ClipDistance (user clip planes, exact line clipping). Each
+// also in variants declaring fewer varyings (GLPT_VARYINGS, raster_varyings.h).
 // GLPT_GBUFFER 1 (path-traced mode's G-buffer pass) also outputs the eye-space position, normal
 // and current colour (gbuffer_layout.h) and offsets the position by the frame's sub-pixel jitter.
 #extension GL_GOOGLE_include_directive : require
