@@ -5,7 +5,8 @@
 // function in the pipeline. Specialization constants (raster_types.h) select each unit's target,
 // environment and texture base format, so a pipeline contains only what its state uses.
 //
-// Built twice: GLPT_FLAT 1 takes the colours of the provoking vertex (GL_FLAT). Built twice more
+// Built twice: GLPT_FLAT 1 takes the colours of the provoking vertex (GL_FLAT); both also in
+// variants declaring fewer varyings (GLPT_VARYINGS, raster_varyings.h). Built twice more
 // for pixel rectangles: GLPT_PIXELS 1 takes the fragment colour (or, for bitmaps and stencil
 // images, whether there is a fragment) from the image in the pixels buffer; GLPT_PIXELS 2 also
 // its depth (depth images), which needs gl_FragDepth and so a shader of its own.
@@ -76,12 +77,9 @@ layout(std430, set = 0, binding = GLPT_RASTER_BINDING_PIXELS) readonly buffer Pi
 #else
 #define INTERPOLATION
 #endif
-layout(location = 0) INTERPOLATION in vec4 v_front_color;
-layout(location = 1) INTERPOLATION in vec4 v_back_color;
-layout(location = 2) INTERPOLATION in vec4 v_front_secondary;
-layout(location = 3) INTERPOLATION in vec4 v_back_secondary;
-layout(location = 4) in vec4 v_texcoord[GLPT_RASTER_MAX_UNITS];
-layout(location = 8) in float v_fog;
+#define GLPT_VARYING_OUT in
+#define GLPT_COLOR_VARYING_OUT INTERPOLATION in
+#include "raster_varyings.h"
 
 #if GLPT_GBUFFER
 layout(constant_id = GLPT_SC_VS_FLAGS) const uint kVsFlags = 0u;

@@ -8,7 +8,8 @@
 // transformed as c0*x + c1*y + c2*z + c3*w with the modelview-projection product computed on the
 // CPU (Mesa's order), colours are clamped per vertex.
 //
-// Built twice: GLPT_CLIP 1 declares gl_ClipDistance (user clip planes, exact line clipping).
+// Built twice: GLPT_CLIP 1 declares gl_ClipDistance (user clip planes, exact line clipping). Each
+// also in variants declaring fewer varyings (GLPT_VARYINGS, raster_varyings.h).
 // GLPT_GBUFFER 1 (path-traced mode's G-buffer pass) also outputs the eye-space position, normal
 // and current colour (gbuffer_layout.h) and offsets the position by the frame's sub-pixel jitter.
 #extension GL_GOOGLE_include_directive : require
@@ -50,12 +51,9 @@ layout(location = GLPT_RASTER_ATTR_TEXCOORD0 + 1) in vec4 a_texcoord1;
 layout(location = GLPT_RASTER_ATTR_TEXCOORD0 + 2) in vec4 a_texcoord2;
 layout(location = GLPT_RASTER_ATTR_TEXCOORD0 + 3) in vec4 a_texcoord3;
 
-layout(location = 0) out vec4 v_front_color;
-layout(location = 1) out vec4 v_back_color;
-layout(location = 2) out vec4 v_front_secondary;
-layout(location = 3) out vec4 v_back_secondary;
-layout(location = 4) out vec4 v_texcoord[GLPT_RASTER_MAX_UNITS];
-layout(location = 8) out float v_fog;
+#define GLPT_VARYING_OUT out
+#define GLPT_COLOR_VARYING_OUT out
+#include "raster_varyings.h"
 #if GLPT_GBUFFER
 layout(location = GLPT_GBUFFER_VARYING_EYE) out vec4 v_eye;
 layout(location = GLPT_GBUFFER_VARYING_NORMAL) out vec3 v_normal;

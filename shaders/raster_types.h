@@ -63,6 +63,15 @@ using mat4 = glm::mat4;
 #define GLPT_RASTER_ATTR_TEXCOORD0 6  // vec4 x GLPT_RASTER_MAX_UNITS
 #define GLPT_RASTER_ATTR_COUNT (GLPT_RASTER_ATTR_TEXCOORD0 + GLPT_RASTER_MAX_UNITS)
 
+// Varyings of raster_ff.vert and raster_ff.frag beyond the front colour (raster_varyings.h): a
+// shader variant built with GLPT_VARYINGS declares only those of its bits as interface variables
+// (plain integers: the GLSL preprocessor evaluates them).
+#define GLPT_VARYING_BACK 1       // back colours (two-sided lighting)
+#define GLPT_VARYING_SECONDARY 2  // secondary colours (colour sum)
+#define GLPT_VARYING_FOG 4        // fog coordinate
+#define GLPT_VARYING_TEXCOORDS 8  // the texture coordinates of every unit
+#define GLPT_VARYINGS_ALL 15
+
 // ---- specialization constants (constant_id) ----------------------------------------------------
 // Vertex stage
 #define GLPT_SC_VS_FLAGS 0

@@ -49,6 +49,20 @@ void append_values(const ArrayReader& reader, const std::vector<uint32_t>& verti
 
 bool executing_while_compiling(const Context& ctx) { return ctx.lists.compiling(); }
 
+// Gives `values` the storage of a draw of the last frame (FrameRecorder::take_storage), so a
+// program drawing the same large arrays every frame does not allocate them anew each time.
+void use_recorder_storage(Context& ctx, ArrayVertices& values) {
+  rec::VertexData storage = ctx.recorder.take_storage();
+  values.position.swap(storage.position);
+  values.color.swap(storage.color);
+  values.secondary_color.swap(storage.secondary_color);
+  values.normal.swap(storage.normal);
+  values.fog_coord.swap(storage.fog_coord);
+  for (int u = 0; u < rec::kMaxTextureUnits; ++u)
+    values.tex_coord[size_t(u)].swap(storage.tex_coord[size_t(u)]);
+  values.edge_flag.swap(storage.edge_flag);
+}
+
 // Vertex numbers of `indices`, made compact: `vertices` lists the distinct vertices to read and
 // `indices` is rewritten to refer to positions in it. A dense range is kept as a range.
 void compact_indices(std::vector<uint32_t>& indices, std::vector<uint32_t>& vertices) {
@@ -77,12 +91,12 @@ uint8_t sampled_texture_units(const rec::StateSnapshot& state) {
   return units;
 }
 
-// The attribute as recorded: the array's values, or the current value (once, or per vertex when
-// `per_vertex` is asked for).
+// The attribute as recorded: the array's values (moved: a large draw's arrays are not copied
+// again), or the current value (once, or per vertex when `per_vertex` is asked for).
 template <typename T>
-std::vector<T> attribute(bool from_array, const std::vector<T>& values, const T& current,
-                         size_t count, bool per_vertex) {
-  if (from_array) return values;
+std::vector<T> attribute(bool from_array, std::vector<T>& values, const T& current, size_t count,
+                         bool per_vertex) {
+  if (from_array) return std::move(values);
   return std::vector<T>(per_vertex ? count : 1, current);
 }
 
@@ -132,8 +146,9 @@ void draw_elements(Context& ctx, GLenum mode, const std::vector<GLsizei>& counts
   std::vector<uint32_t> vertices;
   compact_indices(elements, vertices);
   ArrayVertices values;
+  use_recorder_storage(ctx, values);
   read_array_vertices(ctx, vertices, ArrayConversion::kVertexFetch, values, kDrawnArrays);
-  record_array_draw(ctx, mode, values, std::move(elements), std::move(ranges),
+  record_array_draw(ctx, mode, std::move(values), std::move(elements), std::move(ranges),
                     ArrayDrawSource::kElements);
 }
 
@@ -179,7 +194,16 @@ bool read_indices(const Context& ctx, GLsizei count, GLenum type, const void* in
 
 void read_array_vertices(const Context& ctx, const std::vector<uint32_t>& vertices,
                          ArrayConversion conversion, ArrayVertices& out, uint32_t kinds) {
-  out = ArrayVertices{};
+  // Cleared, not replaced: `out` may hold reused storage (use_recorder_storage).
+  out.mask = 0;
+  out.position.clear();
+  out.color.clear();
+  out.secondary_color.clear();
+  out.normal.clear();
+  out.fog_coord.clear();
+  out.index.clear();
+  for (auto& t : out.tex_coord) t.clear();
+  out.edge_flag.clear();
   const VertexArrays& a = ctx.arrays;
   for (int k = 0; k < kArrayKinds; ++k) {
     const ClientArray& array = a.arrays[size_t(k)];
@@ -234,9 +258,8 @@ void array_element(Context& ctx, const ArrayVertices& v, uint32_t i) {
 // The one place array draws enter the frame record. It also says how the draw was specified
 // (rec::VertexData::source: Mesa assembles glDrawArrays, glDrawElements and compiled draws
 // differently) and which colours came per vertex from arrays (per_vertex).
-void record_array_draw(Context& ctx, GLenum mode, const ArrayVertices& v,
-                       std::vector<uint32_t> indices, std::vector<rec::PrimitiveRange> ranges,
-                       ArrayDrawSource source) {
+void record_array_draw(Context& ctx, GLenum mode, ArrayVertices&& v, std::vector<uint32_t> indices,
+                       std::vector<rec::PrimitiveRange> ranges, ArrayDrawSource source) {
   if (v.position.empty() || ranges.empty()) return;
   const rec::StateId state = ctx.snapshots.capture(ctx, ctx.recorder.record());
   uint8_t units = sampled_texture_units(ctx.recorder.record().states[state]);
@@ -248,7 +271,7 @@ void record_array_draw(Context& ctx, GLenum mode, const ArrayVertices& v,
   try {
     rec::VertexData d;
     d.mode = mode;
-    d.position = v.position;
+    d.position = std::move(v.position);
     d.normal = attribute(v.has(ArrayKind::kNormal), v.normal, c.normal, n, per_vertex);
     d.color = attribute(v.has(ArrayKind::kColor), v.color, c.color, n, per_vertex);
     d.secondary_color = attribute(v.has(ArrayKind::kSecondaryColor), v.secondary_color,
@@ -293,8 +316,10 @@ void glDrawArrays(Context& ctx, GLenum mode, GLint first, GLsizei count) {
     if (executing_while_compiling(ctx)) return draw_as_immediate(ctx, mode, vertices);
     if (!vertex_array_enabled(ctx)) return;
     ArrayVertices values;
+    use_recorder_storage(ctx, values);
     read_array_vertices(ctx, vertices, ArrayConversion::kVertexFetch, values, kDrawnArrays);
-    record_array_draw(ctx, mode, values, {}, {{0, uint32_t(count)}}, ArrayDrawSource::kArrays);
+    record_array_draw(ctx, mode, std::move(values), {}, {{0, uint32_t(count)}},
+                      ArrayDrawSource::kArrays);
   });
 }
 
@@ -325,7 +350,8 @@ void glMultiDrawArrays(Context& ctx, GLenum mode, const GLint* first, const GLsi
     if (vertices.empty() || !vertex_array_enabled(ctx)) return;
     ArrayVertices values;
     read_array_vertices(ctx, vertices, ArrayConversion::kVertexFetch, values, kDrawnArrays);
-    record_array_draw(ctx, mode, values, {}, std::move(ranges), ArrayDrawSource::kArrays);
+    record_array_draw(ctx, mode, std::move(values), {}, std::move(ranges),
+                      ArrayDrawSource::kArrays);
   });
 }
 

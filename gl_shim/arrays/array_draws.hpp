@@ -51,7 +51,7 @@ void array_element(Context& ctx, const ArrayVertices& values, uint32_t which);
 // (batched like a replayed glBegin/glEnd, as Mesa compiles array draws) rather than a live
 // glDrawArrays/glDrawElements (one draw each).
 enum class ArrayDrawSource : uint8_t { kArrays, kElements, kDisplayList };
-void record_array_draw(Context& ctx, GLenum mode, const ArrayVertices& vertices,
+void record_array_draw(Context& ctx, GLenum mode, ArrayVertices&& vertices,
                        std::vector<uint32_t> indices, std::vector<rec::PrimitiveRange> ranges,
                        ArrayDrawSource source);
 

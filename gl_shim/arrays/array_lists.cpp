@@ -211,7 +211,8 @@ void replay_array_primitive(Context& ctx, const ListStream::Reader& r) {
     if (rec.error != GL_NO_ERROR) return record_error(ctx, rec.error);
     if (ctx.inside_begin_end()) return record_error(ctx, GL_INVALID_OPERATION);
     ctx.matrices.validate_for_draw(ctx.transform.clip_plane_mask);
-    record_array_draw(ctx, rec.mode, v, {}, {{0, rec.count}}, ArrayDrawSource::kDisplayList);
+    record_array_draw(ctx, rec.mode, std::move(v), {}, {{0, rec.count}},
+                      ArrayDrawSource::kDisplayList);
   });
 }
 

@@ -17,10 +17,14 @@ bool all_equal(const std::vector<T>& values) {
   return true;
 }
 
+// Storage is released only where one value remains: shrinking every per-vertex array would copy
+// megabytes of a large draw into fresh pages each frame, to save less than half of them.
 template <typename T>
 void compact(std::vector<T>& values) {
-  if (values.size() > 1 && all_equal(values)) values.resize(1);
-  values.shrink_to_fit();
+  if (values.size() > 1 && all_equal(values)) {
+    values.resize(1);
+    values.shrink_to_fit();
+  }
 }
 
 template <typename T>
@@ -37,6 +41,19 @@ size_t bytes_per_vertex(const rec::VertexData& d) {
 }
 
 }  // namespace
+
+void clear_vertex_arrays(rec::VertexData& d) {
+  d.position.clear();
+  d.normal.clear();
+  d.color.clear();
+  d.secondary_color.clear();
+  d.fog_coord.clear();
+  for (auto& t : d.tex_coord) t.clear();
+  d.edge_flag.clear();
+  d.material.clear();
+  d.indices.clear();
+  d.primitives.clear();
+}
 
 void finish_vertex_data(rec::VertexData& d) {
   compact(d.normal);
@@ -79,7 +96,15 @@ void FrameRecorder::add_primitive(rec::StateId state, rec::VertexData& p) {
     seal();
   vertex_bytes_ += p.position.size() * bytes_per_vertex(p);
   if (!open_) {
-    open_ = std::make_unique<rec::VertexData>(std::move(p));
+    if (spare_.empty()) {
+      open_ = std::make_shared<rec::VertexData>(std::move(p));
+    } else {
+      open_ = std::move(spare_.back());
+      spare_.pop_back();
+      // Exchanged, not copied: `p` (the caller's scratch, cleared before reuse) takes the spare's
+      // storage for its next primitive.
+      std::swap(*open_, p);
+    }
     open_state_ = state;
     return;
   }
@@ -105,6 +130,14 @@ void FrameRecorder::add_draw(rec::StateId state, rec::VertexData&& draw) {
   record_.commands.push_back(rec::Draw{state, std::move(data)});
 }
 
+rec::VertexData FrameRecorder::take_storage() {
+  if (spare_.empty()) return {};
+  rec::VertexData storage = std::move(*spare_.back());
+  spare_.pop_back();
+  clear_vertex_arrays(storage);
+  return storage;
+}
+
 void FrameRecorder::add(rec::Command command) {
   ++events_;
   seal();
@@ -121,6 +154,15 @@ void FrameRecorder::seal() {
 
 void FrameRecorder::clear() {
   ++events_;
+  constexpr size_t kMaxSpares = 4;
+  for (rec::Command& command : record_.commands) {
+    auto* draw = std::get_if<rec::Draw>(&command);
+    if (spare_.size() == kMaxSpares) break;
+    // Only this record holds it (consumers that keep draws, as the path tracer's scene, share
+    // them): the batches were created mutable, so taking const away is sound.
+    if (draw && draw->vertices && draw->vertices.use_count() == 1)
+      spare_.push_back(std::const_pointer_cast<rec::VertexData>(std::move(draw->vertices)));
+  }
   record_.clear();
   open_.reset();
   vertex_bytes_ = 0;

@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <vector>
 
 #include "rt_core/record/frame_record.hpp"
 
@@ -18,11 +19,14 @@ namespace glpt {
 class FrameRecorder {
  public:
   // Appends one primitive: `primitive` holds one value per vertex for every attribute it records
-  // and exactly one PrimitiveRange. Its arrays are moved from.
+  // and exactly one PrimitiveRange. It is left unspecified (moved from, or holding other
+  // storage): the caller clears it before reuse.
   void add_primitive(rec::StateId state, rec::VertexData& primitive);
   // Appends one complete draw (an array draw: any number of primitives, indices allowed; an
   // attribute may hold one value for all vertices). It is never batched with others.
   void add_draw(rec::StateId state, rec::VertexData&& draw);
+  // Storage for a new draw: the cleared arrays of a spare batch (their capacity kept), or none.
+  rec::VertexData take_storage();
   // Any other command ends the open batch.
   void add(rec::Command command);
   // Completes the open batch; the record is then ready for a consumer.
@@ -40,11 +44,18 @@ class FrameRecorder {
 
  private:
   rec::FrameRecord record_;
-  std::unique_ptr<rec::VertexData> open_;
+  std::shared_ptr<rec::VertexData> open_;
+  // Draws of cleared records that nothing else held: a new batch reuses their arrays' storage, so
+  // a program drawing megabytes of vertices per frame does not allocate (and page-fault in) them
+  // again every frame.
+  std::vector<std::shared_ptr<rec::VertexData>> spare_;
   rec::StateId open_state_ = 0;
   size_t vertex_bytes_ = 0;
   uint64_t events_ = 0;
 };
+
+// Empties every array of `data` (attributes, indices, primitives), keeping their storage.
+void clear_vertex_arrays(rec::VertexData& data);
 
 // Shrinks attributes whose values are all equal to one value and computes geometry_key and
 // attribute_key (exposed for tests).

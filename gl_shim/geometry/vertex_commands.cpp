@@ -22,16 +22,7 @@ bool is_primitive_mode(GLenum mode) { return mode <= GL_POLYGON; }
 
 void reset(rec::VertexData& d, GLenum mode) {
   d.mode = mode;
-  d.position.clear();
-  d.normal.clear();
-  d.color.clear();
-  d.secondary_color.clear();
-  d.fog_coord.clear();
-  for (auto& t : d.tex_coord) t.clear();
-  d.edge_flag.clear();
-  d.material.clear();
-  d.indices.clear();
-  d.primitives.clear();
+  clear_vertex_arrays(d);
   d.per_vertex = 0;
 }
 

@@ -228,6 +228,18 @@ size_t PipelineKeyHash::operator()(const PipelineKey& key) const {
   return static_cast<size_t>(h.value());
 }
 
+uint32_t varyings_read(const PipelineKey& key) {
+  if (key.gbuffer || key.pixels || key.unfilled) return GLPT_VARYINGS_ALL;
+  const uint32_t fs = key.constants[GLPT_SC_FS_FLAGS];
+  uint32_t varyings = 0;
+  if (fs & GLPT_FS_TWO_SIDE) varyings |= GLPT_VARYING_BACK;
+  if (fs & GLPT_FS_COLOR_SUM) varyings |= GLPT_VARYING_SECONDARY;
+  if ((key.constants[GLPT_SC_FS_ALPHA_FOG] >> 12) & 3u) varyings |= GLPT_VARYING_FOG;
+  for (int u = 0; u < GLPT_RASTER_MAX_UNITS; ++u)
+    if (key.constants[GLPT_SC_UNIT0 + u] & 7u) varyings |= GLPT_VARYING_TEXCOORDS;
+  return varyings;
+}
+
 ColorTargets resolve_draw_buffer(uint32_t draw_buffer, bool double_buffered) {
   switch (draw_buffer) {
     case GL_NONE:

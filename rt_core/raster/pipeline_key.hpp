@@ -92,6 +92,11 @@ struct DrawSetup {
 
 DrawSetup make_draw_setup(const rec::StateSnapshot& state, const DrawContext& context);
 
+// The varyings (GLPT_VARYING_* bits of raster_types.h) the pipeline's fragment stage reads beyond
+// the front colour: its shaders must declare them (raster_varyings.h). The G-buffer pass, pixel
+// rectangles and unfilled polygons (geometry shaders) take them all.
+uint32_t varyings_read(const PipelineKey& key);
+
 // The GL draw buffer of a state resolved against the drawable.
 ColorTargets resolve_draw_buffer(uint32_t draw_buffer, bool double_buffered);
 

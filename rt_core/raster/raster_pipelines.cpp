@@ -10,11 +10,27 @@
 #include <vector>
 
 #include "raster_ff_clip_vert_spv.h"
+#include "raster_ff_clip_vert_v0_spv.h"
+#include "raster_ff_clip_vert_v12_spv.h"
+#include "raster_ff_clip_vert_v4_spv.h"
+#include "raster_ff_clip_vert_v8_spv.h"
 #include "raster_ff_flat_frag_spv.h"
+#include "raster_ff_flat_frag_v0_spv.h"
+#include "raster_ff_flat_frag_v12_spv.h"
+#include "raster_ff_flat_frag_v4_spv.h"
+#include "raster_ff_flat_frag_v8_spv.h"
 #include "raster_ff_pixels_depth_frag_spv.h"
 #include "raster_ff_pixels_frag_spv.h"
 #include "raster_ff_smooth_frag_spv.h"
+#include "raster_ff_smooth_frag_v0_spv.h"
+#include "raster_ff_smooth_frag_v12_spv.h"
+#include "raster_ff_smooth_frag_v4_spv.h"
+#include "raster_ff_smooth_frag_v8_spv.h"
 #include "raster_ff_vert_spv.h"
+#include "raster_ff_vert_v0_spv.h"
+#include "raster_ff_vert_v12_spv.h"
+#include "raster_ff_vert_v4_spv.h"
+#include "raster_ff_vert_v8_spv.h"
 #include "raster_gbuffer_clip_geom_spv.h"
 #include "raster_gbuffer_clip_vert_spv.h"
 #include "raster_gbuffer_flat_frag_spv.h"
@@ -99,10 +115,22 @@ RasterPipelines::RasterPipelines(const VulkanDevice& device) : device_(device) {
   GLPT_VK_CHECK(vkCreatePipelineLayout(dev, &layout_info, nullptr, &layout));
   layout_ = vk::PipelineLayout(layout, {dev});
 
-  vertex_ = make_module(dev, raster_ff_vert_spv);
-  vertex_clip_ = make_module(dev, raster_ff_clip_vert_spv);
-  fragment_smooth_ = make_module(dev, raster_ff_smooth_frag_spv);
-  fragment_flat_ = make_module(dev, raster_ff_flat_frag_spv);
+  auto add_set = [&](uint32_t varyings, std::span<const uint32_t> vertex,
+                     std::span<const uint32_t> vertex_clip, std::span<const uint32_t> smooth,
+                     std::span<const uint32_t> flat) {
+    shader_sets_.push_back({varyings, make_module(dev, vertex), make_module(dev, vertex_clip),
+                            make_module(dev, smooth), make_module(dev, flat)});
+  };
+  add_set(0, raster_ff_vert_v0_spv, raster_ff_clip_vert_v0_spv, raster_ff_smooth_frag_v0_spv,
+          raster_ff_flat_frag_v0_spv);
+  add_set(GLPT_VARYING_FOG, raster_ff_vert_v4_spv, raster_ff_clip_vert_v4_spv,
+          raster_ff_smooth_frag_v4_spv, raster_ff_flat_frag_v4_spv);
+  add_set(GLPT_VARYING_TEXCOORDS, raster_ff_vert_v8_spv, raster_ff_clip_vert_v8_spv,
+          raster_ff_smooth_frag_v8_spv, raster_ff_flat_frag_v8_spv);
+  add_set(GLPT_VARYING_TEXCOORDS | GLPT_VARYING_FOG, raster_ff_vert_v12_spv,
+          raster_ff_clip_vert_v12_spv, raster_ff_smooth_frag_v12_spv, raster_ff_flat_frag_v12_spv);
+  add_set(GLPT_VARYINGS_ALL, raster_ff_vert_spv, raster_ff_clip_vert_spv, raster_ff_smooth_frag_spv,
+          raster_ff_flat_frag_spv);
   fragment_pixels_ = make_module(dev, raster_ff_pixels_frag_spv);
   fragment_pixels_depth_ = make_module(dev, raster_ff_pixels_depth_frag_spv);
   if (device.has_geometry_shader()) {
@@ -170,19 +198,27 @@ VkPipeline RasterPipelines::create(const PipelineKey& key) {
     entries[i] = {i, static_cast<uint32_t>(i * sizeof(uint32_t)), sizeof(uint32_t)};
   VkSpecializationInfo specialization{PipelineKey::kConstants, entries.data(), sizeof key.constants,
                                       key.constants};
+  const uint32_t varyings = varyings_read(key);
+  const ShaderSet* shaders = &shader_sets_.back();
+  for (const ShaderSet& set : shader_sets_) {
+    if ((set.varyings & varyings) == varyings) {
+      shaders = &set;
+      break;
+    }
+  }
   std::array<VkPipelineShaderStageCreateInfo, 3> stages{};
   stages[0] = make_info<VkPipelineShaderStageCreateInfo>(
       VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO);
   stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
-  stages[0].module = key.clip_variant ? vertex_clip_.get() : vertex_.get();
+  stages[0].module = key.clip_variant ? shaders->vertex_clip.get() : shaders->vertex.get();
   stages[0].pName = "main";
   stages[0].pSpecializationInfo = &specialization;
   stages[1] = stages[0];
   stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
   stages[1].module = key.pixels == 2 ? fragment_pixels_depth_.get()
                      : key.pixels    ? fragment_pixels_.get()
-                     : key.flat      ? fragment_flat_.get()
-                                     : fragment_smooth_.get();
+                     : key.flat      ? shaders->fragment_flat.get()
+                                     : shaders->fragment_smooth.get();
   uint32_t stage_count = 2;
   if (key.unfilled != 0 && unfilled_lines_) {
     stages[2] = stages[0];

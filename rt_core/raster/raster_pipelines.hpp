@@ -8,6 +8,7 @@
 
 #include <string>
 #include <unordered_map>
+#include <vector>
 
 #include "rt_core/raster/pipeline_key.hpp"
 #include "rt_core/vk/vk_device.hpp"
@@ -41,7 +42,13 @@ class RasterPipelines {
   const VulkanDevice& device_;
   vk::DescriptorSetLayout set_layout_;
   vk::PipelineLayout layout_;
-  vk::ShaderModule vertex_, vertex_clip_, fragment_smooth_, fragment_flat_;
+  // The vertex and fragment shaders in variants by the varyings they declare (raster_varyings.h),
+  // cheapest first: a pipeline takes the first that declares what it reads.
+  struct ShaderSet {
+    uint32_t varyings = 0;  // GLPT_VARYING_* bits
+    vk::ShaderModule vertex, vertex_clip, fragment_smooth, fragment_flat;
+  };
+  std::vector<ShaderSet> shader_sets_;
   vk::ShaderModule fragment_pixels_, fragment_pixels_depth_;
   vk::ShaderModule unfilled_lines_, unfilled_points_;  // null without geometry shaders
   // Path-traced mode's G-buffer pass (null without geometry shaders).

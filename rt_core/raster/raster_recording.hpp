@@ -26,8 +26,10 @@ class Arena {
   template <typename T>
   VkDeviceSize add(const T* data, size_t count) {
     const size_t offset = (bytes_.size() + 15) & ~size_t{15};
-    bytes_.resize(offset + count * sizeof(T));
-    if (count > 0) std::memcpy(bytes_.data() + offset, data, count * sizeof(T));
+    bytes_.resize(offset);
+    // Appended, not resized and then copied over: zero-filling megabytes first costs as much.
+    const auto* bytes = reinterpret_cast<const uint8_t*>(data);
+    if (count > 0) bytes_.insert(bytes_.end(), bytes, bytes + count * sizeof(T));
     return offset;
   }
   size_t size() const { return bytes_.size(); }

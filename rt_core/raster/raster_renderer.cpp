@@ -126,8 +126,7 @@ void RasterRenderer::execute(const rec::FrameRecord& record, const rec::Drawable
   r.geometry.resize(record.commands.size());
   r.clear_state.assign(record.commands.size(), 0);
   r.pixels.resize(record.commands.size());
-  std::vector<uint8_t> upload;
-  Arena arena(upload);
+  Arena arena(upload_);
   // Attributes a draw lacks read one default value (stride 0): GL's initial current values.
   const glm::vec4 defaults[] = {glm::vec4(0, 0, 0, 1), glm::vec4(0, 0, 1, 0), glm::vec4(1.0f),
                                 glm::vec4(0, 0, 0, 1), glm::vec4(0.0f)};
@@ -141,8 +140,8 @@ void RasterRenderer::execute(const rec::FrameRecord& record, const rec::Drawable
   r.clear_geometry.strides[GLPT_RASTER_ATTR_POSITION] = sizeof(glm::vec4);
   r.clear_geometry.index_offset = arena.add(clear_indices, 3);
   r.clear_geometry.index_count = 3;
-  std::vector<uint32_t> indices;
-  std::vector<uint8_t> edge_masks;
+  std::vector<uint32_t>& indices = indices_;
+  std::vector<uint8_t>& edge_masks = edge_masks_;
   std::vector<gpu::RasterMaterial> materials;
   size_t next_clear_state = state_count;
   for (size_t i : *commands) {
@@ -253,7 +252,7 @@ void RasterRenderer::execute(const rec::FrameRecord& record, const rec::Drawable
   ensure_capacity(*device_, vertices_, arena.size(),
                   VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_INDEX_BUFFER_BIT |
                       VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-  vertices_.write(upload.data(), arena.size());
+  vertices_.write(upload_.data(), arena.size());
   upload_pixels();
   stats.upload_ms += timer.elapsed_ms();
 

@@ -113,7 +113,12 @@ class RasterRenderer {
   GpuBuffer present_;  // the window's host memory (FrameEnd::present_to), imported
   uint64_t present_generation_ = 0;
   uint64_t frame_ = 0;
-  rec::Decomposed decomposed_;         // scratch
+  rec::Decomposed decomposed_;  // scratch
+  // Scratch of execute(), kept across frames: a large frame's megabytes of vertices are not
+  // allocated (and page-faulted in) again every frame.
+  std::vector<uint8_t> upload_;
+  std::vector<uint32_t> indices_;
+  std::vector<uint8_t> edge_masks_;
   GpuBuffer pixels_;                   // images of this record's pixel rectangles (32-bit words)
   std::vector<uint32_t> pixel_words_;  // scratch: what goes to pixels_
   AccumulationBuffer accum_;

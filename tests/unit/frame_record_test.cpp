@@ -282,3 +282,64 @@ TEST_F(RecordTest, DrawsRecordWhichColoursWereGivenPerVertex) {
 }
 
 }  // namespace
+
+// A program drawing the same large batch every frame reuses storage once a record was executed
+// and cleared (no allocation, and no page faults, per frame), with this frame's vertices in it.
+// glBegin/glEnd's scratch and the record exchange two sets of arrays: frame 3 records into the
+// storage of frame 1.
+TEST_F(RecordTest, AClearedRecordsBatchStorageIsReusedWithNewVertices) {
+  triangle(0.25f);
+  const float* first_storage = nullptr;
+  {
+    const auto d = draws();
+    ASSERT_EQ(d.size(), 1u);
+    first_storage = &d[0]->vertices->position[0].x;
+  }
+  ctx_.recorder.clear();
+  triangle(0.75f);
+  EXPECT_EQ(draws().size(), 1u);
+  ctx_.recorder.clear();
+  triangle(0.5f);
+  const auto d = draws();
+  ASSERT_EQ(d.size(), 1u);
+  const glpt::rec::VertexData& v = *d[0]->vertices;
+  EXPECT_EQ(&v.position[0].x, first_storage);
+  ASSERT_EQ(v.vertex_count(), 3u);
+  EXPECT_EQ(v.position[0], glm::vec4(0, 0, 0.5f, 1));
+  EXPECT_EQ(v.position[1], glm::vec4(2, 0, 0.5f, 2));
+  EXPECT_EQ(v.position[2], glm::vec4(0, 1, 0.5f, 1));
+  ASSERT_EQ(v.primitives.size(), 1u);
+  EXPECT_EQ(v.primitives[0].first, 0u);
+  EXPECT_EQ(v.primitives[0].count, 3u);
+}
+
+// A draw a consumer still holds (the path tracer's scene) is never reused or changed.
+TEST_F(RecordTest, ADrawStillHeldElsewhereIsNotReused) {
+  triangle(0.25f);
+  std::shared_ptr<const glpt::rec::VertexData> held = draws().at(0)->vertices;
+  ctx_.recorder.clear();
+  triangle(0.5f);
+  EXPECT_NE(draws().at(0)->vertices.get(), held.get());
+  EXPECT_NE(&draws().at(0)->vertices->position[0].x, &held->position[0].x);
+  ASSERT_EQ(held->vertex_count(), 3u);
+  EXPECT_EQ(held->position[0], glm::vec4(0, 0, 0.25f, 1));
+}
+
+// Array draws take the storage too, and record their own vertices in it.
+TEST_F(RecordTest, ArrayDrawsReuseAClearedRecordsStorage) {
+  triangle(0.25f);
+  const float* first_storage = &draws().at(0)->vertices->position[0].x;
+  ctx_.recorder.clear();
+  const GLfloat positions[] = {1, 2, 3, 4, 5, 6, 7, 8, 9};
+  glVertexPointer(3, GL_FLOAT, 0, positions);
+  glEnableClientState(GL_VERTEX_ARRAY);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  const auto d = draws();
+  ASSERT_EQ(d.size(), 1u);
+  const glpt::rec::VertexData& v = *d[0]->vertices;
+  EXPECT_EQ(&v.position[0].x, first_storage);
+  ASSERT_EQ(v.vertex_count(), 3u);
+  EXPECT_EQ(v.position[0], glm::vec4(1, 2, 3, 1));
+  EXPECT_EQ(v.position[2], glm::vec4(7, 8, 9, 1));
+  EXPECT_TRUE(v.indices.empty());
+}
