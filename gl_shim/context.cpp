@@ -114,6 +114,10 @@ void start_new_record(Context& ctx) {
   ctx.recorder.record().query_at_start = ctx.queries.active_id();
   ctx.snapshots.record_cleared();
   ctx.recording_since.restart();
+  // A frame ended between glBegin and glEnd (a swap there, as a replayed or careless program
+  // may do): the open primitive's state id named the old record, so it is captured again into
+  // the new one (state cannot change inside glBegin/glEnd but for the current attributes).
+  if (ctx.assembly.inside) ctx.assembly.state = ctx.snapshots.capture(ctx, ctx.recorder.record());
 }
 
 }  // namespace

@@ -8,5 +8,7 @@ scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
 # The reader holds at most 512 MiB of strings and blobs per call (kMaxBytesPerCall), which a
 # string may grow to twice that in capacity: the limits leave room for it and ASan.
-"$fuzzer" -max_total_time="$seconds" -rss_limit_mb=3072 -malloc_limit_mb=1200 -max_len=16384 -timeout=10 \
+# The fuzzer carries clang's sanitizer runtimes; scripts/sanitize.sh preloads GCC's for the other
+# tests, which clang's ASan refuses to run beside ("incompatible ASan runtimes").
+env -u LD_PRELOAD "$fuzzer" -max_total_time="$seconds" -rss_limit_mb=3072 -malloc_limit_mb=1200 -max_len=16384 -timeout=10 \
   -print_final_stats=1 -artifact_prefix="${TRACE_FUZZ_ARTIFACTS:-$PWD}/trace-fuzz-" "$scratch" "$corpus"

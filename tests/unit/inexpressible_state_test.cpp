@@ -79,3 +79,23 @@ TEST_F(InexpressibleStateTest, ShadowComparisonIsNotCounted) {
 }
 
 }  // namespace
+
+namespace {
+
+// A frame that ends between glBegin and glEnd (a swap inside a primitive) leaves the open
+// primitive drawable in the next frame: its state is taken into the new record (under ASan this
+// read a destroyed snapshot before).
+TEST_F(InexpressibleStateTest, FrameEndInsideBeginEndKeepsThePrimitiveValid) {
+  glBegin(GL_TRIANGLES);
+  glVertex2f(-1, -1);
+  glpt::end_frame(ctx_, true);
+  // The open primitive names a state of the new record.
+  EXPECT_LT(ctx_.assembly.state, ctx_.recorder.record().states.size());
+  glVertex2f(1, -1);
+  glVertex2f(-1, 1);
+  glEnd();
+  glpt::end_frame(ctx_, true);
+  EXPECT_EQ(ctx_.output->last_frame_stats().draws, 1u);
+}
+
+}  // namespace
