@@ -9,7 +9,6 @@
 #define EGL_EGLEXT_PROTOTYPES 1
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cstdint>
@@ -25,6 +24,7 @@
 #include "gl_shim/egl/egl_configs.hpp"
 #include "gl_shim/frame/headless_target.hpp"
 #include "gl_shim/glx/x11_window_target.hpp"
+#include "gl_shim/process_owner.hpp"
 
 extern "C" GLPT_EXPORT void glFlush(void);
 
@@ -90,21 +90,18 @@ std::mutex& objects_mutex() {
   return m;
 }
 
-// Every display, destroyed at exit. A forked child that exits without exec'ing (xscreensaver's
-// image-loading hacks do when xscreensaver-getimage is missing) runs this destructor too, with
-// the parent's X connections, shared-memory segments and Vulkan device, whose threads exist only
-// in the parent: tearing them down there would break the parent or wait forever, so the child
-// leaves them to the kernel.
+// Every display, destroyed at exit, but not by a forked child exiting without exec
+// (process_owner.hpp): the child leaks them.
 class DisplayRegistry {
  public:
   ~DisplayRegistry() {
-    if (getpid() == owner_) return;
+    if (owner_.is_this_process()) return;
     for (auto& d : all) static_cast<void>(d.release());
   }
   std::vector<std::unique_ptr<EglDisplay>> all;
 
  private:
-  pid_t owner_ = getpid();
+  glpt::ProcessOwner owner_;
 };
 
 std::vector<std::unique_ptr<EglDisplay>>& displays() {

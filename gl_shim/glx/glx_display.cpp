@@ -1,6 +1,5 @@
 #include "gl_shim/glx/glx_display.hpp"
 
-#include <unistd.h>
 #include <xcb/xcb.h>
 
 #include <algorithm>
@@ -59,7 +58,7 @@ DisplayState* DisplayState::of(Display* dpy) {
   return raw;
 }
 
-DisplayState::DisplayState(Display* dpy) : dpy_(dpy), owner_pid_(getpid()) {
+DisplayState::DisplayState(Display* dpy) : dpy_(dpy) {
   has_glx_ = XQueryExtension(dpy, "GLX", &glx_opcode_, &glx_event_base_, &glx_error_base_);
   if (!has_glx_) glx_opcode_ = glx_event_base_ = glx_error_base_ = 0;
   const int screens = ScreenCount(dpy);
@@ -67,9 +66,8 @@ DisplayState::DisplayState(Display* dpy) : dpy_(dpy), owner_pid_(getpid()) {
 }
 
 DisplayState::~DisplayState() {
-  // A forked child exiting without exec runs the registry's static destructor on the parent's
-  // connection: it leaves the connection alone (see X11WindowTarget's destructor).
-  if (connection_ != nullptr && getpid() == owner_pid_)
+  // Not in a forked child exiting without exec (process_owner.hpp).
+  if (connection_ != nullptr && owner_.is_this_process())
     xcb_disconnect(static_cast<xcb_connection_t*>(connection_));
 }
 

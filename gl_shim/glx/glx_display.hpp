@@ -12,6 +12,7 @@
 
 #include "gl_shim/frame/headless_target.hpp"
 #include "gl_shim/glx/glx_configs.hpp"
+#include "gl_shim/process_owner.hpp"
 
 namespace glpt::glx {
 
@@ -58,7 +59,7 @@ class DisplayState {
   Display* dpy_;
   void* connection_ = nullptr;  // glpt's own xcb connection for GLX queries (under `mutex`)
   void* connection();           // opened on first use
-  int owner_pid_;               // the process that may use and close the connection
+  ProcessOwner owner_;          // the process that may use and close the connection
   bool has_glx_ = false;
   int glx_opcode_ = 0, glx_error_base_ = 0, glx_event_base_ = 0;
   std::vector<std::unique_ptr<ScreenConfigs>> screens_;  // loaded on first use

@@ -2,7 +2,6 @@
 
 #include <sys/ipc.h>
 #include <sys/shm.h>
-#include <unistd.h>
 #include <xcb/shm.h>
 #include <xcb/xcb.h>
 
@@ -29,14 +28,10 @@ std::unique_ptr<X11WindowTarget> X11WindowTarget::create(const std::string& disp
 
 X11WindowTarget::X11WindowTarget(xcb_connection_t* connection, uint32_t window,
                                  rec::DrawableConfig config)
-    : connection_(connection), window_(window), owner_pid_(getpid()), config_(config) {}
+    : connection_(connection), window_(window), config_(config) {}
 
 X11WindowTarget::~X11WindowTarget() {
-  // A forked child that exits without exec'ing (xscreensaver's image-loading hacks do when
-  // xscreensaver-getimage is missing) runs the static destructors that end here, on the
-  // parent's connection: a request or the shutdown() inside xcb_disconnect would break the
-  // parent's connection and its shared-memory segment. The child leaves them alone.
-  if (getpid() != owner_pid_) return;
+  if (!owner_.is_this_process()) return;  // a forked child's exit (process_owner.hpp)
   release_shm();
   if (gc_ != 0) xcb_free_gc(connection_, gc_);
   xcb_disconnect(connection_);

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "gl_shim/frame/frame_output.hpp"
+#include "gl_shim/process_owner.hpp"
 
 struct xcb_connection_t;
 
@@ -38,7 +39,7 @@ class X11WindowTarget final : public WindowTarget {
 
   xcb_connection_t* connection_;
   uint32_t window_;
-  int owner_pid_;  // the process that connected: only it may send requests or disconnect
+  ProcessOwner owner_;  // only the process that connected may send requests or disconnect
   rec::DrawableConfig config_;
   uint32_t gc_ = 0;
   uint8_t depth_ = 0;
