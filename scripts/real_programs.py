@@ -25,7 +25,7 @@ import tempfile
 import time
 
 import glpt_images
-from xscreensaver_table import HACK_DIR, start_xvfb
+from xscreensaver_table import HACK_DIR, death, start_xvfb, stop
 
 DEFAULT_PROGRAMS = ["glxgears", "gears", "lament", "sproingies", "pipes", "atlantis", "molecule"]
 
@@ -98,7 +98,7 @@ def run(name, mode, args, display, work):
     while not os.path.exists(target):
         if proc.poll() is not None:
             ended = "exited %d" % proc.returncode if proc.returncode >= 0 else \
-                "crash (%s)" % signal.Signals(-proc.returncode).name
+                death(proc.returncode)
             break
         if time.time() - started > args.timeout:
             ended = "too slow (timeout)"
@@ -110,15 +110,10 @@ def run(name, mode, args, display, work):
     if ended is None:
         equal, detail = compare_window(proc, display, out, work)
     if proc.poll() is None:
-        proc.send_signal(signal.SIGTERM)
-        try:
-            proc.wait(timeout=15)
-        except subprocess.TimeoutExpired:
-            proc.kill()
-            proc.wait()
-            ended = ended or "hang on SIGTERM (killed)"
+        clean = stop(proc, 15)
         if ended is None:
-            ended = "ran" if proc.returncode in (0, -signal.SIGTERM) else \
+            ended = "ran" if clean else \
+                "hang on SIGTERM (killed)" if proc.returncode == -signal.SIGKILL else \
                 "crash on exit (%s)" % proc.returncode
     log.close()
     return dict(frames=frames, seconds=seconds, fps=frames / seconds if seconds > 0 else 0.0,

@@ -40,6 +40,27 @@ def png_is_flat(path):
         return True
 
 
+def death(returncode):
+    """How a process that ended by a signal or an error status ended, for the tables."""
+    try:
+        return "crash (%s)" % signal.Signals(-returncode).name
+    except ValueError:
+        return "crash (status %d)" % returncode
+
+
+def stop(proc, grace):
+    """SIGTERM, then SIGKILL after `grace` seconds. Returns True when the program ended cleanly
+    (by the SIGTERM or status 0), False when it had to be killed or died otherwise."""
+    proc.send_signal(signal.SIGTERM)
+    try:
+        proc.wait(timeout=grace)
+    except subprocess.TimeoutExpired:
+        proc.kill()
+        proc.wait()
+        return False
+    return proc.returncode in (0, -signal.SIGTERM)
+
+
 def start_xvfb(size):
     read_fd, write_fd = os.pipe()
     xvfb = subprocess.Popen(["Xvfb", "-displayfd", str(write_fd), "-screen", "0", f"{size}x24",
@@ -68,18 +89,9 @@ def run_hack(path, display, libgl, seconds, size, mode, work):
             proc.wait(timeout=seconds)
             ended = "exited %d" % proc.returncode if proc.returncode >= 0 else None
         except subprocess.TimeoutExpired:
-            proc.send_signal(signal.SIGTERM)
-            try:
-                proc.wait(timeout=10)
-            except subprocess.TimeoutExpired:
-                proc.kill()
-                proc.wait()
-            ended = "ran" if proc.returncode in (-signal.SIGTERM, 0) else None
+            ended = "ran" if stop(proc, 10) else None
         if ended is None:
-            try:
-                ended = "crash (%s)" % signal.Signals(-proc.returncode).name
-            except ValueError:
-                ended = "crash (status %d)" % proc.returncode
+            ended = death(proc.returncode)
     text = open(stderr_path, "rb").read().decode("utf-8", "replace")
     frames = [m for m in re.finditer(r"^glpt: frame=\d+ .*?draws=(\d+)", text, re.M)]
     drawn = sum(1 for m in frames if int(m.group(1)) > 0)
