@@ -31,28 +31,45 @@ namespace glpt {
 namespace {
 
 template <typename T>
-void append_values(const ArrayReader& reader, const std::vector<uint32_t>& vertices,
+void append_values(const ArrayReader& reader, const VertexSelection& vertices,
                    std::vector<T>& out) {
-  out.resize(vertices.size());
-  for (size_t i = 0; i < vertices.size(); ++i) {
-    const glm::vec4 v = reader.read(vertices[i]);
-    if constexpr (std::is_same_v<T, glm::vec4>)
-      out[i] = v;
-    else if constexpr (std::is_same_v<T, glm::vec3>)
-      out[i] = glm::vec3(v);
-    else if constexpr (std::is_same_v<T, uint8_t>)
-      out[i] = v.x != 0.0f ? 1 : 0;
-    else
-      out[i] = v.x;
+  out.resize(vertices.count);
+  if constexpr (std::is_same_v<T, glm::vec4>) {
+    reader.read(vertices, out.data());
+  } else {
+    // Through a small buffer of vec4s: the conversion is chosen once per chunk, not per element.
+    constexpr size_t kChunk = 512;
+    glm::vec4 chunk[kChunk];
+    for (size_t start = 0; start < vertices.count; start += kChunk) {
+      VertexSelection part = vertices;
+      part.count = std::min(kChunk, vertices.count - start);
+      if (part.list != nullptr)
+        part.list += start;
+      else
+        part.first += uint32_t(start);
+      reader.read(part, chunk);
+      for (size_t i = 0; i < part.count; ++i) {
+        const glm::vec4& v = chunk[i];
+        if constexpr (std::is_same_v<T, glm::vec3>)
+          out[start + i] = glm::vec3(v);
+        else if constexpr (std::is_same_v<T, uint8_t>)
+          out[start + i] = v.x != 0.0f ? 1 : 0;
+        else
+          out[start + i] = v.x;
+      }
+    }
   }
 }
 
 bool executing_while_compiling(const Context& ctx) { return ctx.lists.compiling(); }
 
-// Gives `values` the storage of a draw of the last frame (FrameRecorder::take_storage), so a
-// program drawing the same large arrays every frame does not allocate them anew each time.
-void use_recorder_storage(Context& ctx, ArrayVertices& values) {
+// Gives `values` (and `indices`, when given) the storage of a draw of the last frame
+// (FrameRecorder::take_storage), so a program drawing the same large arrays every frame does not
+// allocate them anew (and page-fault them in) each time.
+void use_recorder_storage(Context& ctx, ArrayVertices& values,
+                          std::vector<uint32_t>* indices = nullptr) {
   rec::VertexData storage = ctx.recorder.take_storage();
+  if (indices != nullptr) indices->swap(storage.indices);
   values.position.swap(storage.position);
   values.color.swap(storage.color);
   values.secondary_color.swap(storage.secondary_color);
@@ -63,25 +80,26 @@ void use_recorder_storage(Context& ctx, ArrayVertices& values) {
   values.edge_flag.swap(storage.edge_flag);
 }
 
-// Vertex numbers of `indices`, made compact: `vertices` lists the distinct vertices to read and
-// `indices` is rewritten to refer to positions in it. A dense range is kept as a range.
-void compact_indices(std::vector<uint32_t>& indices, std::vector<uint32_t>& vertices) {
+// Vertex numbers of `indices`, made compact: the selection returned names the distinct vertices
+// to read and `indices` is rewritten to refer to positions in it. A dense range is kept as a
+// range; otherwise `vertices` holds the list the selection points to.
+VertexSelection compact_indices(std::vector<uint32_t>& indices, std::vector<uint32_t>& vertices) {
   vertices.clear();
-  if (indices.empty()) return;
+  if (indices.empty()) return {};
   const auto [lo, hi] = std::minmax_element(indices.begin(), indices.end());
   const uint32_t first = *lo;
   const uint64_t span = uint64_t(*hi) - first + 1;
   if (span <= 2 * uint64_t(indices.size()) + 64) {
-    vertices.resize(size_t(span));
-    for (size_t i = 0; i < vertices.size(); ++i) vertices[i] = first + uint32_t(i);
-    for (uint32_t& index : indices) index -= first;
-    return;
+    if (first != 0)
+      for (uint32_t& index : indices) index -= first;
+    return VertexSelection::range(first, size_t(span));
   }
   vertices = indices;
   std::sort(vertices.begin(), vertices.end());
   vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
   for (uint32_t& index : indices)
     index = uint32_t(std::lower_bound(vertices.begin(), vertices.end(), index) - vertices.begin());
+  return VertexSelection::of(vertices);
 }
 
 uint8_t sampled_texture_units(const rec::StateSnapshot& state) {
@@ -133,6 +151,8 @@ void draw_elements(Context& ctx, GLenum mode, const std::vector<GLsizei>& counts
   uint64_t total = 0;
   for (size_t d = 0; d < counts.size(); ++d) total += uint64_t(std::max(counts[d], 0));
   if (total > kMaxArrayDrawVertices) return record_error(ctx, GL_OUT_OF_MEMORY);
+  ArrayVertices values;
+  if (!executing_while_compiling(ctx)) use_recorder_storage(ctx, values, &part);
   for (size_t d = 0; d < counts.size(); ++d) {
     if (counts[d] <= 0 || !read_indices(ctx, counts[d], type, index_pointers[d], part)) continue;
     if (executing_while_compiling(ctx)) {
@@ -140,14 +160,15 @@ void draw_elements(Context& ctx, GLenum mode, const std::vector<GLsizei>& counts
       continue;
     }
     ranges.push_back({uint32_t(elements.size()), uint32_t(part.size())});
-    elements.insert(elements.end(), part.begin(), part.end());
+    if (elements.empty())
+      elements.swap(part);  // one draw (the usual case): its indices, not a copy
+    else
+      elements.insert(elements.end(), part.begin(), part.end());
   }
   if (elements.empty() || !vertex_array_enabled(ctx)) return;
   std::vector<uint32_t> vertices;
-  compact_indices(elements, vertices);
-  ArrayVertices values;
-  use_recorder_storage(ctx, values);
-  read_array_vertices(ctx, vertices, ArrayConversion::kVertexFetch, values, kDrawnArrays);
+  const VertexSelection selection = compact_indices(elements, vertices);
+  read_array_vertices(ctx, selection, ArrayConversion::kVertexFetch, values, kDrawnArrays);
   record_array_draw(ctx, mode, std::move(values), std::move(elements), std::move(ranges),
                     ArrayDrawSource::kElements);
 }
@@ -193,6 +214,11 @@ bool read_indices(const Context& ctx, GLsizei count, GLenum type, const void* in
 }
 
 void read_array_vertices(const Context& ctx, const std::vector<uint32_t>& vertices,
+                         ArrayConversion conversion, ArrayVertices& out, uint32_t kinds) {
+  read_array_vertices(ctx, VertexSelection::of(vertices), conversion, out, kinds);
+}
+
+void read_array_vertices(const Context& ctx, const VertexSelection& vertices,
                          ArrayConversion conversion, ArrayVertices& out, uint32_t kinds) {
   // Cleared, not replaced: `out` may hold reused storage (use_recorder_storage).
   out.mask = 0;
@@ -312,12 +338,13 @@ void glDrawArrays(Context& ctx, GLenum mode, GLint first, GLsizei count) {
     if (!begin_live_draw(ctx, check_draw(ctx, mode, count))) return;
     if (count == 0 || first < 0) return;
     if (uint64_t(count) > kMaxArrayDrawVertices) return record_error(ctx, GL_OUT_OF_MEMORY);
-    const std::vector<uint32_t> vertices = vertex_range(first, count);
-    if (executing_while_compiling(ctx)) return draw_as_immediate(ctx, mode, vertices);
+    if (executing_while_compiling(ctx))
+      return draw_as_immediate(ctx, mode, vertex_range(first, count));
     if (!vertex_array_enabled(ctx)) return;
     ArrayVertices values;
     use_recorder_storage(ctx, values);
-    read_array_vertices(ctx, vertices, ArrayConversion::kVertexFetch, values, kDrawnArrays);
+    read_array_vertices(ctx, VertexSelection::range(uint32_t(first), size_t(count)),
+                        ArrayConversion::kVertexFetch, values, kDrawnArrays);
     record_array_draw(ctx, mode, std::move(values), {}, {{0, uint32_t(count)}},
                       ArrayDrawSource::kArrays);
   });

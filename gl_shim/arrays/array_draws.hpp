@@ -40,6 +40,9 @@ inline constexpr uint32_t kDrawnArrays = kAllArrays & ~(1u << int(ArrayKind::kIn
 void read_array_vertices(const Context& ctx, const std::vector<uint32_t>& vertices,
                          ArrayConversion conversion, ArrayVertices& out,
                          uint32_t kinds = kAllArrays);
+void read_array_vertices(const Context& ctx, const VertexSelection& vertices,
+                         ArrayConversion conversion, ArrayVertices& out,
+                         uint32_t kinds = kAllArrays);
 
 // glArrayElement's effect for vertex `i` of the enabled arrays (immediate conversions): the
 // current attributes, then a vertex (GL 1.5 2.8). Also what a compiled glArrayElement replays.

@@ -44,6 +44,60 @@ glm::vec4 element(const uint8_t* p, int size) {
   return out;
 }
 
+// element() for a whole selection, the component count known at compile time.
+template <typename T, ArrayConversion C, bool N, int Size>
+void gather(const uint8_t* base, size_t stride, const VertexSelection& selection, glm::vec4* out) {
+  for (size_t i = 0; i < selection.count; ++i) {
+    const uint8_t* p = base + size_t(selection.at(i)) * stride;
+    glm::vec4 v(0.0f, 0.0f, 0.0f, 1.0f);
+    for (int k = 0; k < Size; ++k) v[k] = component<T, C, N>(load<T>(p + size_t(k) * sizeof(T)));
+    out[i] = v;
+  }
+}
+
+template <typename T, ArrayConversion C, bool N>
+ArrayReader::GatherFn gather_fn(int size) {
+  switch (size) {
+    case 1:
+      return &gather<T, C, N, 1>;
+    case 2:
+      return &gather<T, C, N, 2>;
+    case 3:
+      return &gather<T, C, N, 3>;
+    default:
+      return &gather<T, C, N, 4>;
+  }
+}
+
+template <typename T>
+ArrayReader::GatherFn gather_fn(ArrayConversion c, bool normalized, int size) {
+  if (!normalized) return gather_fn<T, ArrayConversion::kVertexFetch, false>(size);
+  return c == ArrayConversion::kVertexFetch
+             ? gather_fn<T, ArrayConversion::kVertexFetch, true>(size)
+             : gather_fn<T, ArrayConversion::kImmediate, true>(size);
+}
+
+ArrayReader::GatherFn gather_fn(GLenum type, ArrayConversion c, bool normalized, int size) {
+  switch (type) {
+    case GL_BYTE:
+      return gather_fn<GLbyte>(c, normalized, size);
+    case GL_UNSIGNED_BYTE:
+      return gather_fn<GLubyte>(c, normalized, size);
+    case GL_SHORT:
+      return gather_fn<GLshort>(c, normalized, size);
+    case GL_UNSIGNED_SHORT:
+      return gather_fn<GLushort>(c, normalized, size);
+    case GL_INT:
+      return gather_fn<GLint>(c, normalized, size);
+    case GL_UNSIGNED_INT:
+      return gather_fn<GLuint>(c, normalized, size);
+    case GL_DOUBLE:
+      return gather_fn<GLdouble>(c, normalized, size);
+    default:
+      return gather_fn<GLfloat>(c, normalized, size);
+  }
+}
+
 template <typename T>
 ArrayReader::ElementFn element_fn(ArrayConversion c, bool normalized) {
   if (!normalized) return &element<T, ArrayConversion::kVertexFetch, false>;
@@ -80,7 +134,8 @@ ArrayReader::ArrayReader(const ClientArray& array, ArrayConversion conversion)
       stride_(array.effective_stride()),
       element_bytes_(array.element_bytes()),
       size_(array.size),
-      element_(element_fn(array.type, conversion, array.normalized)) {}
+      element_(element_fn(array.type, conversion, array.normalized)),
+      gather_(gather_fn(array.type, conversion, array.normalized, array.size)) {}
 
 glm::vec4 ArrayReader::read(uint64_t i) const {
   const uint8_t* base = bytes_.bytes();
@@ -90,6 +145,20 @@ glm::vec4 ArrayReader::read(uint64_t i) const {
   if (offset > bytes_.size() || bytes_.size() - offset < element_bytes_)
     return glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
   return element_(base + offset, size_);
+}
+
+void ArrayReader::read(const VertexSelection& selection, glm::vec4* out) const {
+  if (selection.count == 0) return;
+  uint32_t last = selection.first + uint32_t(selection.count - 1);
+  if (selection.list != nullptr)
+    last = *std::max_element(selection.list, selection.list + selection.count);
+  // Every element inside the data (the common case): no check per element.
+  const uint8_t* base = bytes_.bytes();
+  const uint64_t end = uint64_t{last} * stride_;
+  if (base != nullptr && size_ >= 1 && size_ <= 4 && end <= bytes_.size() &&
+      bytes_.size() - end >= element_bytes_)
+    return gather_(base, stride_, selection, out);
+  for (size_t i = 0; i < selection.count; ++i) out[i] = read(selection.at(i));
 }
 
 }  // namespace glpt

@@ -15,6 +15,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <glm/glm.hpp>
+#include <vector>
 
 #include "gl_shim/arrays/vertex_arrays.hpp"
 #include "gl_shim/buffers/buffer_objects.hpp"
@@ -23,6 +24,19 @@
 namespace glpt {
 
 enum class ArrayConversion : uint8_t { kVertexFetch, kImmediate };
+
+// The vertex numbers a draw reads: `list[i]` when a list is given, else `first + i`; i < count.
+struct VertexSelection {
+  const uint32_t* list = nullptr;
+  uint32_t first = 0;
+  size_t count = 0;
+
+  static VertexSelection range(uint32_t first, size_t count) { return {nullptr, first, count}; }
+  static VertexSelection of(const std::vector<uint32_t>& vertices) {
+    return {vertices.data(), 0, vertices.size()};
+  }
+  uint32_t at(size_t i) const { return list != nullptr ? list[i] : first + uint32_t(i); }
+};
 
 // Reads the elements of one client array.
 class ArrayReader {
@@ -35,8 +49,13 @@ class ArrayReader {
   // object's store, and every element of an array without data (a null pointer, an orphaned
   // offset), read (0, 0, 0, 1) too.
   glm::vec4 read(uint64_t i) const;
+  // read(selection.at(i)) into out[i] for every i: one call for a draw's vertices, the
+  // conversion chosen once (a draw of 100 000 triangles reads 300 000 elements per array).
+  void read(const VertexSelection& selection, glm::vec4* out) const;
 
   using ElementFn = glm::vec4 (*)(const uint8_t* element, int size);
+  using GatherFn = void (*)(const uint8_t* base, size_t stride, const VertexSelection& selection,
+                            glm::vec4* out);
 
  private:
   ArrayBytes bytes_;
@@ -44,6 +63,7 @@ class ArrayReader {
   size_t element_bytes_;
   int size_;
   ElementFn element_;
+  GatherFn gather_;
 };
 
 }  // namespace glpt

@@ -17,14 +17,13 @@ bool all_equal(const std::vector<T>& values) {
   return true;
 }
 
-// Storage is released only where one value remains: shrinking every per-vertex array would copy
-// megabytes of a large draw into fresh pages each frame, to save less than half of them.
+// The storage is kept (capacity): a batch's arrays become the next frame's spare storage
+// (FrameRecorder::clear), and immediate mode records every attribute per vertex, so releasing
+// the secondary colour, fog coordinate and edge flags that one value holds would make them grow
+// again, page by page, every frame.
 template <typename T>
 void compact(std::vector<T>& values) {
-  if (values.size() > 1 && all_equal(values)) {
-    values.resize(1);
-    values.shrink_to_fit();
-  }
+  if (values.size() > 1 && all_equal(values)) values.resize(1);
 }
 
 template <typename T>
