@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <cstring>
 
-#include "common/content_hash.hpp"
-
 namespace glpt {
 namespace {
 
@@ -52,6 +50,7 @@ void clear_vertex_arrays(rec::VertexData& d) {
   d.material.clear();
   d.indices.clear();
   d.primitives.clear();
+  d.forget_keys();
 }
 
 void finish_vertex_data(rec::VertexData& d) {
@@ -63,24 +62,7 @@ void finish_vertex_data(rec::VertexData& d) {
   compact(d.edge_flag);
   compact(d.material);
 
-  ContentHash geometry;
-  geometry.add_bytes(&d.mode, sizeof d.mode);
-  geometry.add_bytes(&d.source, sizeof d.source);
-  geometry.add_bytes(&d.per_vertex, sizeof d.per_vertex);
-  geometry.add(d.position);
-  geometry.add(d.indices);
-  geometry.add(d.primitives);
-  d.geometry_key = geometry.value();
-
-  ContentHash attributes;
-  attributes.add(d.normal);
-  attributes.add(d.color);
-  attributes.add(d.secondary_color);
-  attributes.add(d.fog_coord);
-  for (const auto& t : d.tex_coord) attributes.add(t);
-  attributes.add(d.edge_flag);
-  attributes.add(d.material);
-  d.attribute_key = attributes.value();
+  d.forget_keys();  // hashed when a consumer asks (VertexData::keys)
 }
 
 void FrameRecorder::add_primitive(rec::StateId state, rec::VertexData& p) {

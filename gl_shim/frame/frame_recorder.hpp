@@ -4,7 +4,8 @@
 // one Draw (one glBegin/glEnd becomes one PrimitiveRange of it), so a display list of thousands
 // of tiny glBegin/glEnd blocks is a handful of draws. A batch stays open, and mutable, until any
 // other command is recorded or the record is sealed; then its attribute arrays are compacted (an
-// attribute that never changed keeps one value) and its identity keys are computed.
+// attribute that never changed keeps one value). Its identity keys are hashed when a consumer
+// asks (rec::VertexData::keys).
 #pragma once
 
 #include <cstddef>
@@ -57,8 +58,7 @@ class FrameRecorder {
 // Empties every array of `data` (attributes, indices, primitives), keeping their storage.
 void clear_vertex_arrays(rec::VertexData& data);
 
-// Shrinks attributes whose values are all equal to one value and computes geometry_key and
-// attribute_key (exposed for tests).
+// Shrinks attributes whose values are all equal to one value (exposed for tests).
 void finish_vertex_data(rec::VertexData& data);
 
 }  // namespace glpt

@@ -65,6 +65,28 @@ enum class PrimitiveSource : uint8_t {
 inline constexpr uint8_t kPerVertexColor = 1;
 inline constexpr uint8_t kPerVertexSecondaryColor = 2;
 
+// Content hashes of a draw's vertex data, so equal draws in different frames have equal keys.
+// `geometry` covers what decides the shape (mode, source, per_vertex, positions, indices,
+// primitives): recolouring never changes it, so an acceleration structure is reused.
+// `attributes` covers everything else.
+struct VertexKeys {
+  uint64_t geometry = 0;
+  uint64_t attributes = 0;
+};
+
+// VertexData's cache of its keys. A copy or move starts without them: the copy may be changed.
+class CachedVertexKeys {
+ public:
+  CachedVertexKeys() = default;
+  CachedVertexKeys(const CachedVertexKeys&) {}
+  CachedVertexKeys& operator=(const CachedVertexKeys&) {
+    valid = false;
+    return *this;
+  }
+  bool valid = false;
+  VertexKeys keys;
+};
+
 // Per-vertex attributes of a draw in object space, with GL's current values as they were at
 // each glVertex / array element. Every attribute array holds either one value per vertex or a
 // single value shared by all vertices (it did not change during the draw). A texture coordinate
@@ -90,14 +112,15 @@ struct VertexData {
   std::vector<uint32_t> indices;
   std::vector<PrimitiveRange> primitives;
 
-  // Identity, computed once by the front end (content hashes, so equal draws in different frames
-  // have equal keys). `geometry_key` covers what decides the shape (mode, source, per_vertex,
-  // positions, indices, primitives): recolouring never changes it, so an acceleration structure
-  // is reused. `attribute_key` covers everything else.
-  uint64_t geometry_key = 0;
-  uint64_t attribute_key = 0;
-
   uint32_t vertex_count() const { return static_cast<uint32_t>(position.size()); }
+
+  // Identity (VertexKeys), hashed on first use and cached: only path-traced mode asks (to reuse
+  // acceleration structures and accumulation), so raster mode never hashes a frame's megabytes of
+  // vertices. A draw's data does not change once it is in a record; whoever changes a VertexData
+  // in place after asking calls forget_keys(). Not thread-safe (a record has one consumer).
+  const VertexKeys& keys() const;
+  void forget_keys() { cached_keys.valid = false; }
+  mutable CachedVertexKeys cached_keys;
 };
 
 // Attribute accessors that hide the "one value or one per vertex" rule.

@@ -34,8 +34,9 @@ FrameSignature::FrameSignature(const rec::FrameRecord& record, std::span<const s
     e.kind = static_cast<uint32_t>(command.index());
     if (const rec::StateSnapshot* state = state_of(record, command)) e.state = *state;
     if (const auto* draw = std::get_if<rec::Draw>(&command); draw && draw->vertices) {
-      e.geometry_key = draw->vertices->geometry_key;
-      e.attribute_key = draw->vertices->attribute_key;
+      const rec::VertexKeys& keys = draw->vertices->keys();
+      e.geometry_key = keys.geometry;
+      e.attribute_key = keys.attributes;
     } else if (const auto* clear = std::get_if<rec::Clear>(&command)) {
       e.clear[0] = clear->mask;
       std::memcpy(&e.clear[1], &clear->color, sizeof clear->color);

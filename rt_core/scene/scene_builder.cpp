@@ -190,8 +190,9 @@ class Batcher {
               ? shared_material
               : intern(g.materials, material_of(lighting, v.material[provoking][0])));
     }
-    shape_.add_bytes(&v.geometry_key, sizeof v.geometry_key);
-    shading_.add_bytes(&v.attribute_key, sizeof v.attribute_key);
+    const rec::VertexKeys& keys = v.keys();
+    shape_.add_bytes(&keys.geometry, sizeof keys.geometry);
+    shading_.add_bytes(&keys.attributes, sizeof keys.attributes);
     shading_.add_bytes(&flat, sizeof flat);
     if (projective) {
       shape_.add_bytes(&transform.modelview, sizeof transform.modelview);

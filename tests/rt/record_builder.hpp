@@ -7,7 +7,6 @@
 #include <memory>
 #include <vector>
 
-#include "common/content_hash.hpp"
 #include "rt_core/record/frame_record.hpp"
 
 namespace glpt::rt::test {
@@ -60,17 +59,8 @@ class RecordBuilder {
     draw(std::move(v));
   }
 
-  // A draw of prepared vertex data; its keys are computed here as the front end would.
+  // A draw of prepared vertex data (its keys are hashed when a consumer asks).
   void draw(std::shared_ptr<rec::VertexData> v) {
-    ContentHash shape, attributes;
-    shape.add_bytes(&v->mode, sizeof v->mode);
-    shape.add(v->position);
-    shape.add(v->indices);
-    for (const rec::PrimitiveRange& r : v->primitives) shape.add_bytes(&r, sizeof r);
-    attributes.add(v->normal);
-    attributes.add(v->color);
-    v->geometry_key = shape.value();
-    v->attribute_key = attributes.value();
     rec::Draw d;
     d.state = snapshot();
     d.vertices = std::move(v);

@@ -129,7 +129,7 @@ TEST_F(GlTest, RectIsRecordedLikeTheEquivalentQuad) {
   ASSERT_EQ(d.size(), 2u);
   EXPECT_EQ(d[0]->vertices->mode, GLenum{GL_QUADS});
   EXPECT_EQ(d[0]->vertices->position, d[1]->vertices->position);
-  EXPECT_EQ(d[0]->vertices->geometry_key, d[1]->vertices->geometry_key);
+  EXPECT_EQ(d[0]->vertices->keys().geometry, d[1]->vertices->keys().geometry);
   EXPECT_EQ(glGetError(), GLenum{GL_NO_ERROR});
 }
 

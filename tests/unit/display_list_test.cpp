@@ -61,7 +61,7 @@ TEST_F(GlTest, SameListUnderAnotherMatrixGivesSameGeometry) {
   glCallList(list);
   const auto d = draws(ctx_);
   ASSERT_EQ(d.size(), 2u);
-  EXPECT_EQ(d[0].vertices->geometry_key, d[1].vertices->geometry_key);
+  EXPECT_EQ(d[0].vertices->keys().geometry, d[1].vertices->keys().geometry);
   const auto& states = ctx_.recorder.record().states;
   EXPECT_FLOAT_EQ(states.at(d[1].state).transform->modelview[3][0], 3.0f);
 }

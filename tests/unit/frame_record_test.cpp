@@ -151,8 +151,30 @@ TEST_F(RecordTest, RecolouringKeepsTheGeometryKey) {
   glpt::rec::VertexData recoloured = *d[1]->vertices;
   recoloured.color = {glm::vec4(1, 1, 0, 1)};
   glpt::finish_vertex_data(recoloured);
-  EXPECT_EQ(recoloured.geometry_key, d[1]->vertices->geometry_key);
-  EXPECT_NE(recoloured.attribute_key, d[1]->vertices->attribute_key);
+  EXPECT_EQ(recoloured.keys().geometry, d[1]->vertices->keys().geometry);
+  EXPECT_NE(recoloured.keys().attributes, d[1]->vertices->keys().attributes);
+}
+
+// Keys are hashed on first use and cached; a copy does not carry the cache, so changing the copy
+// changes its keys (and only the changed one).
+TEST(VertexKeysTest, ACopyIsHashedAgain) {
+  glpt::rec::VertexData original;
+  original.mode = GL_TRIANGLES;
+  original.position = {glm::vec4(0, 0, 0, 1), glm::vec4(1, 0, 0, 1), glm::vec4(0, 1, 0, 1)};
+  original.color = {glm::vec4(1, 0, 0, 1)};
+  original.primitives = {{0, 3}};
+  const glpt::rec::VertexKeys keys = original.keys();
+  glpt::rec::VertexData copy = original;
+  copy.color = {glm::vec4(0, 1, 0, 1)};
+  EXPECT_EQ(copy.keys().geometry, keys.geometry);
+  EXPECT_NE(copy.keys().attributes, keys.attributes);
+  glpt::rec::VertexData moved = std::move(copy);
+  moved.position[2].y = 2.0f;
+  EXPECT_NE(moved.keys().geometry, keys.geometry);
+  // Changed in place after asking: forget_keys() makes it hash again.
+  original.indices = {0, 1, 2};
+  original.forget_keys();
+  EXPECT_NE(original.keys().geometry, keys.geometry);
 }
 
 TEST_F(RecordTest, DisablingColorMaterialKeepsTheColourItWrote) {
@@ -208,8 +230,8 @@ TEST_F(RecordTest, ADisplayListDrawnTwiceGivesEqualKeys) {
   glCallList(list);
   const auto d = draws();
   ASSERT_EQ(d.size(), 2u);
-  EXPECT_EQ(d[0]->vertices->geometry_key, d[1]->vertices->geometry_key);
-  EXPECT_EQ(d[0]->vertices->attribute_key, d[1]->vertices->attribute_key);
+  EXPECT_EQ(d[0]->vertices->keys().geometry, d[1]->vertices->keys().geometry);
+  EXPECT_EQ(d[0]->vertices->keys().attributes, d[1]->vertices->keys().attributes);
 }
 
 TEST_F(RecordTest, EndListInsideBeginEndIsAnError) {
