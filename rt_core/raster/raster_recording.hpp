@@ -19,23 +19,52 @@ inline void swap_red_and_blue(uint8_t* pixels, size_t count) {
   for (size_t i = 0; i < count; ++i) std::swap(pixels[4 * i], pixels[4 * i + 2]);
 }
 
-// Appends values to the per-record upload buffer, 16-byte aligned.
+// Lays out the per-record upload buffer (pieces 16-byte aligned) and fills it. Data the renderer
+// makes itself (indices, materials, quads) is copied into `local` at once; the record's vertex
+// arrays are only referenced (add_external) and copied once, straight into the mapped Vulkan
+// buffer (write_to): a frame's megabytes of vertices are not copied twice.
 class Arena {
  public:
-  explicit Arena(std::vector<uint8_t>& bytes) : bytes_(bytes) { bytes_.clear(); }
+  explicit Arena(std::vector<uint8_t>& local) : local_(local) { local_.clear(); }
   template <typename T>
   VkDeviceSize add(const T* data, size_t count) {
-    const size_t offset = (bytes_.size() + 15) & ~size_t{15};
-    bytes_.resize(offset);
+    const size_t bytes = count * sizeof(T);
+    const VkDeviceSize offset = place(nullptr, local_.size(), bytes);
     // Appended, not resized and then copied over: zero-filling megabytes first costs as much.
-    const auto* bytes = reinterpret_cast<const uint8_t*>(data);
-    if (count > 0) bytes_.insert(bytes_.end(), bytes, bytes + count * sizeof(T));
+    const auto* p = reinterpret_cast<const uint8_t*>(data);
+    if (bytes > 0) local_.insert(local_.end(), p, p + bytes);
     return offset;
   }
-  size_t size() const { return bytes_.size(); }
+  // `data` must stay valid and unchanged until write_to.
+  template <typename T>
+  VkDeviceSize add_external(const T* data, size_t count) {
+    return place(reinterpret_cast<const uint8_t*>(data), 0, count * sizeof(T));
+  }
+  size_t size() const { return size_; }
+  // Copies every piece to its offset in `destination` (size() bytes).
+  void write_to(uint8_t* destination) const {
+    for (const Piece& piece : pieces_) {
+      const uint8_t* source = piece.external ? piece.external : local_.data() + piece.local_offset;
+      std::memcpy(destination + piece.offset, source, piece.bytes);
+    }
+  }
 
  private:
-  std::vector<uint8_t>& bytes_;
+  struct Piece {
+    VkDeviceSize offset;
+    const uint8_t* external;  // null: local_ at local_offset
+    size_t local_offset;
+    size_t bytes;
+  };
+  VkDeviceSize place(const uint8_t* external, size_t local_offset, size_t bytes) {
+    const size_t offset = (size_ + 15) & ~size_t{15};
+    size_ = offset + bytes;
+    if (bytes > 0) pieces_.push_back({offset, external, local_offset, bytes});
+    return offset;
+  }
+  std::vector<uint8_t>& local_;
+  std::vector<Piece> pieces_;
+  size_t size_ = 0;
 };
 
 inline VkRect2D intersect_with_framebuffer(int32_t x, int32_t y, int32_t w, int32_t h,
@@ -59,6 +88,9 @@ struct RasterRenderer::DrawGeometry {
   std::array<VkDeviceSize, GLPT_RASTER_ATTR_COUNT> strides{};
   VkDeviceSize index_offset = 0;
   uint32_t index_count = 0;
+  // Where the indices are: the upload buffer, or (for triangles drawn in vertex order) the
+  // renderer's buffer of ascending indices.
+  bool ascending_indices = false;
   VkDeviceSize edge_offset = 0;  // unfilled draws: per-triangle boundary-edge masks
   RasterTopology topology = RasterTopology::kTriangles;
   // Per-vertex materials (RasterPushConstants::materials): all zero when the draw has none.

@@ -29,6 +29,23 @@ bool finite(const glm::vec4& v) {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && std::isfinite(v.w);
 }
 
+// Whether Mesa's triangles of `v` are its elements in order, three by three, all of them, with
+// finite positions: then the draw's own indices (or ascending ones) serve as the index list.
+bool in_vertex_order(const rec::VertexData& v, const std::vector<rec::DecomposedTriangle>& tris) {
+  const bool indexed = !v.indices.empty();
+  if (tris.empty() || (indexed ? v.indices.size() : v.vertex_count()) != 3 * tris.size())
+    return false;
+  for (size_t t = 0; t < tris.size(); ++t) {
+    for (uint32_t k = 0; k < 3; ++k) {
+      const size_t element = 3 * t + k;
+      const uint32_t vertex = tris[t].v[k];
+      if (vertex != (indexed ? v.indices[element] : element)) return false;
+      if (!finite(v.position[vertex])) return false;
+    }
+  }
+  return true;
+}
+
 }  // namespace
 
 RasterRenderer::RasterRenderer(std::shared_ptr<VulkanDevice> device)
@@ -166,7 +183,7 @@ void RasterRenderer::execute(const rec::FrameRecord& record, const rec::Drawable
         g.strides[location] = 0;
         return;
       }
-      g.offsets[location] = arena.add(values.data(), values.size());
+      g.offsets[location] = arena.add_external(values.data(), values.size());
       g.strides[location] = values.size() == 1 ? 0 : sizeof(T);
     };
     attribute(GLPT_RASTER_ATTR_POSITION, v.position, 0);
@@ -228,6 +245,20 @@ void RasterRenderer::execute(const rec::FrameRecord& record, const rec::Drawable
           if (ok(l.v[0]) && ok(l.v[1])) indices.insert(indices.end(), {l.v[0], l.v[1]});
       } else {
         g.topology = RasterTopology::kTriangles;
+        const rec::PrimitiveState& p = state.raster->primitive;
+        const bool unfilled = p.polygon_mode_front != GL_FILL || p.polygon_mode_back != GL_FILL;
+        if (!unfilled && in_vertex_order(v, decomposed_.triangles)) {
+          // The draw's own order: its indices as they are, or ascending ones (no index list is
+          // made and uploaded per draw; lavapipe still draws indexed, as every other draw).
+          g.index_count = static_cast<uint32_t>(3 * decomposed_.triangles.size());
+          if (v.indices.empty()) {
+            g.ascending_indices = true;
+            ensure_ascending_indices(g.index_count);
+          } else {
+            g.index_offset = arena.add_external(v.indices.data(), v.indices.size());
+          }
+          continue;
+        }
         edge_masks.clear();
         for (const auto& t : decomposed_.triangles) {
           if (!ok(t.v[0]) || !ok(t.v[1]) || !ok(t.v[2])) continue;
@@ -235,8 +266,7 @@ void RasterRenderer::execute(const rec::FrameRecord& record, const rec::Drawable
           edge_masks.push_back(t.boundary_edges);
         }
         // The geometry shader of unfilled polygons reads each triangle's boundary edges.
-        const rec::PrimitiveState& p = state.raster->primitive;
-        if (p.polygon_mode_front != GL_FILL || p.polygon_mode_back != GL_FILL) {
+        if (unfilled) {
           edge_masks.resize((edge_masks.size() + 3) & ~size_t{3}, 0);
           g.edge_offset = arena.add(edge_masks.data(), edge_masks.size());
         }
@@ -252,7 +282,7 @@ void RasterRenderer::execute(const rec::FrameRecord& record, const rec::Drawable
   ensure_capacity(*device_, vertices_, arena.size(),
                   VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_INDEX_BUFFER_BIT |
                       VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-  vertices_.write(upload_.data(), arena.size());
+  arena.write_to(static_cast<uint8_t*>(vertices_.mapped()));
   upload_pixels();
   stats.upload_ms += timer.elapsed_ms();
 
@@ -662,9 +692,19 @@ void RasterRenderer::record_draw_pass(Recording& r, const rec::Draw& draw, const
   buffers.fill(vertices_.handle());
   vkCmdBindVertexBuffers2(r.cmd, 0, GLPT_RASTER_ATTR_COUNT, buffers.data(), g.offsets.data(),
                           nullptr, g.strides.data());
-  vkCmdBindIndexBuffer(r.cmd, vertices_.handle(), g.index_offset, VK_INDEX_TYPE_UINT32);
+  vkCmdBindIndexBuffer(r.cmd, g.ascending_indices ? ascending_.handle() : vertices_.handle(),
+                       g.index_offset, VK_INDEX_TYPE_UINT32);
   queries_.before_draw(r.cmd, r.counting);
   vkCmdDrawIndexed(r.cmd, g.index_count, 1, 0, 0, 0);
+}
+
+void RasterRenderer::ensure_ascending_indices(uint32_t count) {
+  if (ascending_ && ascending_.size() >= VkDeviceSize{count} * sizeof(uint32_t)) return;
+  ensure_capacity(*device_, ascending_, VkDeviceSize{count} * sizeof(uint32_t),
+                  VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+  auto* indices = static_cast<uint32_t*>(ascending_.mapped());
+  const size_t capacity = ascending_.size() / sizeof(uint32_t);
+  for (size_t i = 0; i < capacity; ++i) indices[i] = static_cast<uint32_t>(i);
 }
 
 void RasterRenderer::record_frame_end(VkCommandBuffer cmd, const FrameEnd& end) {

@@ -80,6 +80,8 @@ class RasterRenderer {
   void set_dynamic_state(Recording& r, const DynamicDrawState& d, const VkViewport& viewport,
                          const VkRect2D& scissor);
   void record_frame_end(VkCommandBuffer cmd, const FrameEnd& end);
+  // ascending_ holds 0, 1, 2, ... for at least `count` indices.
+  void ensure_ascending_indices(uint32_t count);
   bool read_image(const GpuImage& image, VkImageAspectFlags aspect, uint32_t texel_bytes, int32_t x,
                   int32_t y, uint32_t width, uint32_t height, std::vector<uint8_t>& out);
   // Replaces the rectangle `rect` of a colour image with `rgba` (RGBA8, rows bottom to top).
@@ -107,8 +109,9 @@ class RasterRenderer {
   PFN_vkCmdSetLineStippleEXT set_line_stipple_ = nullptr;
   rec::DrawableConfig drawable_{0, 0};
   GpuImage front_, back_, depth_stencil_;
-  GpuBuffer states_;    // RasterState per snapshot (+ one per clear drawn as a quad)
-  GpuBuffer vertices_;  // this record's attributes and indices
+  GpuBuffer states_;     // RasterState per snapshot (+ one per clear drawn as a quad)
+  GpuBuffer vertices_;   // this record's attributes and indices
+  GpuBuffer ascending_;  // indices 0, 1, 2, ...: draws whose triangles are in vertex order
   GpuBuffer readback_;
   GpuBuffer present_;  // the window's host memory (FrameEnd::present_to), imported
   uint64_t present_generation_ = 0;
