@@ -303,12 +303,14 @@ void get_material(Context& ctx, GLenum face, GLenum pname, T* out) {
 
 }  // namespace
 
-rec::Material with_color_material(rec::Material m, const rec::LightingState& l, int side,
-                                  const glm::vec4& color) {
-  if (!l.color_material) return m;
+namespace {
+
+// GL_COLOR_MATERIAL (GL 1.5 2.14.3): the tracked fields of `side`'s material take `color`.
+void track_color(rec::Material& m, const rec::LightingState& l, int side, const glm::vec4& color) {
+  if (!l.color_material) return;
   const bool tracked =
       side == 0 ? l.color_material_face != GL_BACK : l.color_material_face != GL_FRONT;
-  if (!tracked) return m;
+  if (!tracked) return;
   switch (l.color_material_mode) {
     case GL_EMISSION:
       m.emission = color;
@@ -326,13 +328,22 @@ rec::Material with_color_material(rec::Material m, const rec::LightingState& l, 
       m.ambient = m.diffuse = color;
       break;
   }
+}
+
+}  // namespace
+
+rec::Material with_color_material(rec::Material m, const rec::LightingState& l, int side,
+                                  const glm::vec4& color) {
+  track_color(m, l, side, color);
   return m;
 }
 
+// Called for every glColor (in immediate mode for every vertex): the materials are updated in
+// place, not copied through with_color_material.
 void apply_color_material(Context& ctx) {
   rec::LightingState& l = ctx.lighting;
-  for (int side = 0; side < 2; ++side)
-    l.material[side] = with_color_material(l.material[side], l, side, ctx.current.color);
+  if (!l.color_material) return;
+  for (int side = 0; side < 2; ++side) track_color(l.material[side], l, side, ctx.current.color);
 }
 
 namespace impl {
