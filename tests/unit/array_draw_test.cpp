@@ -1,6 +1,7 @@
 // Drawing from vertex arrays (GL 1.5 2.8): what glDrawArrays, glDrawElements,
 // glDrawRangeElements, glMultiDraw* and glArrayElement record, Mesa's conversions of every
 // component type (mesa_reference/mesa_array_expected.inc, printed by OSMesa), and the errors.
+#include <cstddef>
 #include <cstdint>
 #include <cstring>
 #include <limits>
@@ -218,6 +219,86 @@ TEST_F(ArrayDrawTest, StridesStepThroughPaddedData) {
   ASSERT_EQ(d.vertex_count(), 3u);
   EXPECT_EQ(d.position[2], glm::vec4(2, 20, 0, 1));
   EXPECT_EQ(d.color.at(2), glm::vec4(0, 0, 1, 0.5f));
+}
+
+// Long draws read each array in one pass per draw (and the non-vec4 attributes in chunks of a few
+// hundred elements): every element must still be its own, from a range, from a sparse index list,
+// and where part of a buffer object's array lies beyond its store (those elements read
+// (0, 0, 0, 1), as element by element).
+TEST_F(ArrayDrawTest, LongDrawsReadEveryElement) {
+  constexpr int kVertices = 1500;
+  struct Vertex {
+    GLshort position[2];
+    GLubyte colour[3];
+    GLubyte pad;
+    GLfloat normal[3];
+  };
+  std::vector<Vertex> v(kVertices);
+  std::vector<GLfloat> fog(kVertices);
+  for (int i = 0; i < kVertices; ++i) {
+    v[i] = {{GLshort(i), GLshort(-i)},
+            {GLubyte(i % 2 ? 255 : 0), GLubyte(i % 3 ? 255 : 0), 255},
+            0,
+            {float(i), 0.5f, -float(i)}};
+    fog[i] = 0.25f * float(i);
+  }
+  auto expect_vertex = [&](const VertexData& d, uint32_t at, int i) {
+    SCOPED_TRACE(::testing::Message() << "vertex " << i);
+    EXPECT_EQ(d.position.at(at), glm::vec4(float(i), float(-i), 0, 1));
+    EXPECT_EQ(d.color.at(at), glm::vec4(i % 2 ? 1 : 0, i % 3 ? 1 : 0, 1, 1));
+    EXPECT_EQ(d.normal.at(at), glm::vec3(float(i), 0.5f, -float(i)));
+    EXPECT_EQ(d.fog_coord.at(at), 0.25f * float(i));
+  };
+  glEnableClientState(GL_VERTEX_ARRAY);
+  glVertexPointer(2, GL_SHORT, sizeof(Vertex), &v[0].position);
+  glEnableClientState(GL_COLOR_ARRAY);
+  glColorPointer(3, GL_UNSIGNED_BYTE, sizeof(Vertex), &v[0].colour);
+  glEnableClientState(GL_NORMAL_ARRAY);
+  glNormalPointer(GL_FLOAT, sizeof(Vertex), &v[0].normal);
+  glEnableClientState(GL_FOG_COORDINATE_ARRAY);
+  glFogCoordPointer(GL_FLOAT, 0, fog.data());
+
+  glDrawArrays(GL_POINTS, 7, kVertices - 7);
+  {
+    const VertexData& d = only_draw();
+    ASSERT_EQ(d.vertex_count(), uint32_t(kVertices - 7));
+    for (int i = 7; i < kVertices; ++i) expect_vertex(d, uint32_t(i - 7), i);
+  }
+
+  // Sparse indices (a span far beyond twice their count): a list of vertices, not a range.
+  std::vector<GLuint> indices;
+  for (int i = kVertices - 1; i >= 0; i -= 7) indices.push_back(GLuint(i));
+  indices.push_back(3);
+  ctx_.recorder.clear();
+  glDrawElements(GL_POINTS, GLsizei(indices.size()), GL_UNSIGNED_INT, indices.data());
+  {
+    const VertexData& d = only_draw();
+    ASSERT_EQ(d.indices.size(), indices.size());
+    for (size_t k = 0; k < indices.size(); ++k) expect_vertex(d, d.indices[k], int(indices[k]));
+  }
+
+  // Colours from a buffer object holding only the first 1000 elements: the rest read
+  // (0, 0, 0, 1) while the in-store ones are converted as usual.
+  GLuint buffer = 0;
+  glGenBuffers(1, &buffer);
+  glBindBuffer(GL_ARRAY_BUFFER, buffer);
+  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(1000 * sizeof(Vertex)), v.data(), GL_STATIC_DRAW);
+  glColorPointer(3, GL_UNSIGNED_BYTE, sizeof(Vertex),
+                 reinterpret_cast<const void*>(offsetof(Vertex, colour)));
+  glBindBuffer(GL_ARRAY_BUFFER, 0);
+  glVertexPointer(2, GL_SHORT, sizeof(Vertex), &v[0].position);
+  ctx_.recorder.clear();
+  glDrawArrays(GL_POINTS, 0, kVertices);
+  {
+    const VertexData& d = only_draw();
+    ASSERT_EQ(d.color.size(), size_t(kVertices));
+    for (int i = 0; i < kVertices; ++i) {
+      const glm::vec4 expected =
+          i < 1000 ? glm::vec4(i % 2 ? 1 : 0, i % 3 ? 1 : 0, 1, 1) : glm::vec4(0, 0, 0, 1);
+      EXPECT_EQ(d.color[size_t(i)], expected) << "vertex " << i;
+    }
+  }
+  EXPECT_EQ(glGetError(), GLenum{GL_NO_ERROR});
 }
 
 template <typename Index>
