@@ -27,6 +27,10 @@ void material_set_inside_begin_end(Context& ctx, uint32_t fields);
 // 2 specular, 3 emission, 4 shininess.
 constexpr uint32_t material_field_bit(int side, int field) { return 1u << (side * 5 + field); }
 
+// Makes the GL_COLOR_MATERIAL update a glColor inside glBegin/glEnd deferred (see
+// VertexAssembly::color_material_pending); called before anything reads or writes the material.
+void flush_color_material(Context& ctx);
+
 // extra_attributes.cpp
 void attribute_secondary_color(Context& ctx, glm::vec3 color);  // alpha stays 1 (as in Mesa)
 void attribute_fog_coord(Context& ctx, float coord);

@@ -18,6 +18,10 @@ struct VertexAssembly {
   // glMaterial was called inside this primitive: every vertex records its material. The
   // vertices before the first call get the material at glBegin.
   bool per_vertex_material = false;
+  // A glColor inside glBegin/glEnd whose GL_COLOR_MATERIAL update of ctx.lighting.material is
+  // still to be made (flush_color_material): nothing reads the material before glEnd unless
+  // glMaterial is called, and immediate mode calls glColor for every vertex.
+  bool color_material_pending = false;
   std::array<rec::Material, 2> material_at_begin{};
   // The material fields glMaterial set inside this primitive (material_field_bit).
   uint16_t material_fields_set = 0;

@@ -52,7 +52,22 @@ void attribute_normal(Context& ctx, glm::vec3 n) { ctx.current.normal = n; }
 
 void attribute_color(Context& ctx, glm::vec4 c) {
   ctx.current.color = c;
-  if (ctx.assembly.inside) ctx.assembly.vertices.per_vertex |= rec::kPerVertexColor;
+  VertexAssembly& a = ctx.assembly;
+  if (a.inside) {
+    a.vertices.per_vertex |= rec::kPerVertexColor;
+    // The material is read again at glEnd (or by a glMaterial, or per vertex once one was
+    // called): only the last colour's update matters.
+    if (!a.per_vertex_material) {
+      a.color_material_pending = true;
+      return;
+    }
+  }
+  apply_color_material(ctx);
+}
+
+void flush_color_material(Context& ctx) {
+  if (!ctx.assembly.color_material_pending) return;
+  ctx.assembly.color_material_pending = false;
   apply_color_material(ctx);
 }
 
@@ -109,6 +124,7 @@ void glBegin(Context& ctx, GLenum mode) {
   if (ctx.render_mode.mode == GL_FEEDBACK) a.texture_units |= 1;  // feedback reports unit 0's
   a.material_at_begin = ctx.lighting.material;
   a.per_vertex_material = false;
+  a.color_material_pending = false;
   a.material_fields_set = 0;
   a.first_edge_flag_vertex.reset();
   a.dropped_vertices = 0;
@@ -123,6 +139,7 @@ void glEnd(Context& ctx) {
   VertexAssembly& a = ctx.assembly;
   if (!a.inside) return record_error(ctx, GL_INVALID_OPERATION);
   a.inside = false;
+  flush_color_material(ctx);
   rec::VertexData& d = a.vertices;
   if (d.position.empty()) return;
   d.primitives.push_back({0, static_cast<uint32_t>(d.position.size())});

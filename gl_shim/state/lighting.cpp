@@ -191,6 +191,7 @@ void set_material(Context& ctx, GLenum face, GLenum pname, const T* p) {
         return false;
     }
   };
+  flush_color_material(ctx);  // a glColor before it, inside glBegin/glEnd
   bool ok = true;
   if (face != GL_BACK) ok = apply(ctx.lighting.material[0]);
   if (ok && face != GL_FRONT) ok = apply(ctx.lighting.material[1]);

@@ -220,6 +220,50 @@ TEST_F(RecordTest, MaterialChangesInsideBeginEndArePerVertex) {
   EXPECT_EQ(m[2][0].diffuse, glm::vec4(0, 0, 1, 1));
 }
 
+// glColor inside glBegin/glEnd updates the GL_COLOR_MATERIAL fields once it matters (at glEnd,
+// or when glMaterial is called): the material then is what it would have been after every glColor.
+TEST_F(RecordTest, ColorMaterialInsideBeginEndTakesEffect) {
+  const GLfloat shiny[4] = {0.5f, 0.5f, 0.5f, 1};
+  glColorMaterial(GL_FRONT_AND_BACK, GL_DIFFUSE);
+  glEnable(GL_COLOR_MATERIAL);
+  glBegin(GL_TRIANGLES);
+  glColor3f(1, 0, 0);
+  glVertex3f(0, 0, 0);
+  glColor3f(0, 1, 0);
+  glVertex3f(1, 0, 0);
+  // From here every vertex carries its material: the one of the green glColor before it.
+  glMaterialfv(GL_FRONT, GL_SPECULAR, shiny);
+  glVertex3f(0, 1, 0);
+  glColor3f(0, 0, 1);
+  glVertex3f(0, 0, 1);
+  glVertex3f(1, 0, 1);
+  glVertex3f(0, 1, 1);
+  glEnd();
+  EXPECT_EQ(glGetError(), GLenum{GL_NO_ERROR});
+  const auto& m = draws().at(0)->vertices->material;
+  ASSERT_EQ(m.size(), 6u);
+  EXPECT_EQ(m[2][0].diffuse, glm::vec4(0, 1, 0, 1));
+  EXPECT_EQ(m[2][0].specular, glm::vec4(0.5f, 0.5f, 0.5f, 1));
+  EXPECT_EQ(m[3][0].diffuse, glm::vec4(0, 0, 1, 1));
+  EXPECT_EQ(m[3][1].diffuse, glm::vec4(0, 0, 1, 1));
+  GLfloat diffuse[4];
+  glGetMaterialfv(GL_BACK, GL_DIFFUSE, diffuse);
+  EXPECT_EQ(diffuse[2], 1.0f);
+  // Without glMaterial inside: the last colour's update, visible after glEnd.
+  glBegin(GL_POINTS);
+  glColor3f(1, 1, 0);
+  glVertex3f(0, 0, 0);
+  glColor3f(0, 1, 1);
+  glEnd();
+  glGetMaterialfv(GL_FRONT, GL_DIFFUSE, diffuse);
+  EXPECT_EQ(diffuse[0], 0.0f);
+  EXPECT_EQ(diffuse[1], 1.0f);
+  EXPECT_EQ(diffuse[2], 1.0f);
+  // The next draw's snapshot holds it too.
+  triangle();
+  EXPECT_EQ(state_of(*draws().back()).lighting->material[0].diffuse, glm::vec4(0, 1, 1, 1));
+}
+
 TEST_F(RecordTest, ADisplayListDrawnTwiceGivesEqualKeys) {
   const GLuint list = glGenLists(1);
   glNewList(list, GL_COMPILE);
