@@ -7,6 +7,8 @@
 // glMateriali*, glFogiv(GL_FOG_COLOR).
 #pragma once
 
+#include <array>
+
 #include "gl_shim/gl_types.h"
 
 namespace glpt {
@@ -14,7 +16,14 @@ namespace glpt {
 inline float normalized_component(GLbyte v) {
   return (2.0f * static_cast<float>(v) + 1.0f) * (1.0f / 255.0f);
 }
-inline float normalized_component(GLubyte v) { return static_cast<float>(v) / 255.0f; }
+// c / 255.0f for every c, as a table (glColor*ub is called per vertex): compile-time float
+// division rounds as the run-time one does.
+inline constexpr std::array<float, 256> kUnsignedByteComponents = [] {
+  std::array<float, 256> table{};
+  for (int c = 0; c < 256; ++c) table[size_t(c)] = static_cast<float>(c) / 255.0f;
+  return table;
+}();
+inline float normalized_component(GLubyte v) { return kUnsignedByteComponents[v]; }
 inline float normalized_component(GLshort v) {
   return (2.0f * static_cast<float>(v) + 1.0f) * (1.0f / 65535.0f);
 }

@@ -61,6 +61,18 @@ TEST_F(GlTest, ColourAndNormalIntegersRoundAsMesa) {
   EXPECT_EQ(floats(GL_CURRENT_NORMAL, 3), (V{0x1.6p-29f, -0x1.2p-29f, 0x1.d6f346p-5f}));
 }
 
+// Every unsigned byte colour component is c / 255.0f (GL 1.5 table 2.9; Mesa's UBYTE_TO_FLOAT
+// table holds the same quotients), divided here at run time.
+TEST_F(GlTest, EveryUnsignedByteColourIsItsQuotient) {
+  volatile float divisor = 255.0f;
+  for (int c = 0; c < 256; ++c) {
+    const GLubyte component = GLubyte(c);
+    glColor4ub(component, component, component, component);
+    const float expected = float(c) / divisor;
+    EXPECT_EQ(floats(GL_CURRENT_COLOR, 4), (V{expected, expected, expected, expected})) << c;
+  }
+}
+
 TEST_F(GlTest, FogCoordinateEdgeFlagAndIndexVariants) {
   glFogCoordf(2.5f);
   EXPECT_EQ(floats(GL_CURRENT_FOG_COORD, 1), (V{2.5f}));
