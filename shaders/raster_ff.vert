@@ -118,7 +118,7 @@ Lit light_face(uint face, vec3 n, vec3 eye, vec4 color) {
     vec3 vp;
     float attenuation = 1.0;
     vec3 half_vector;
-    if (l.position.w != 0.0) {
+    if ((kLightMask & (GLPT_LIGHT_POSITIONAL << i)) != 0u) {  // position.w != 0
       vec3 offset = l.position.xyz / l.position.w - eye;
       float d = length(offset);
       vp = offset / d;
@@ -130,7 +130,7 @@ Lit light_face(uint face, vec3 n, vec3 eye, vec4 color) {
     }
     // GL 1.5 2.14.1 (and Mesa) apply the spotlight to directional lights too, with the light's
     // direction as VP. Mesa's test is strict: cos(cutoff) < spot cosine.
-    if (l.spot.w > -1.5) {
+    if ((kLightMask & (GLPT_LIGHT_SPOT << i)) != 0u) {  // spot.w > -1.5
       float spot_cos = dot(-vp, l.spot.xyz);
       attenuation *= spot_cos > l.spot.w ? power_gl(spot_cos, l.attenuation.w) : 0.0;
     }

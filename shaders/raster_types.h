@@ -86,7 +86,13 @@ using mat4 = glm::mat4;
 #define GLPT_VS_LINES 256u             // line primitives: exact view clipping (clip distances)
 #define GLPT_VS_FOG_COORD_SOURCE 512u  // fog coordinate from glFogCoord, not eye distance
 #define GLPT_VS_NEEDS_EYE 1024u        // eye position needed (fog, texgen, clip planes, lights)
+// bit i: GL_LIGHTi enabled; bit 8 + i: it is positional (w != 0); bit 16 + i: it is a spotlight.
+// The kinds select the shader's code per light, as Mesa's fixed-function program is generated for
+// the enabled lights' kinds (both branches of a test on a value read per draw run for every
+// vertex on lavapipe).
 #define GLPT_SC_LIGHT_MASK 1
+#define GLPT_LIGHT_POSITIONAL 0x100u
+#define GLPT_LIGHT_SPOT 0x10000u
 // bits 0-2: GL_COLOR_MATERIAL mode (0 off, 1 ambient, 2 diffuse, 3 ambient+diffuse, 4 specular,
 // 5 emission); bit 3: front tracked; bit 4: back tracked
 #define GLPT_SC_COLOR_MATERIAL 2

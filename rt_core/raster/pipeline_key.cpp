@@ -5,6 +5,7 @@
 #include "common/content_hash.hpp"
 #include "raster_types.h"
 #include "rt_core/raster/sampler_setup.hpp"
+#include "rt_core/raster/state_uniforms.hpp"
 
 namespace glpt::rt {
 namespace {
@@ -303,7 +304,7 @@ DrawSetup make_draw_setup(const rec::StateSnapshot& state, const DrawContext& co
     if (lighting.two_side) vs |= GLPT_VS_TWO_SIDE;
     if (lighting.local_viewer) vs |= GLPT_VS_LOCAL_VIEWER;
     if (lighting.separate_specular) vs |= GLPT_VS_SEPARATE_SPECULAR;
-    sc[GLPT_SC_LIGHT_MASK] = lighting.light_mask;
+    sc[GLPT_SC_LIGHT_MASK] = lighting.light_mask | light_kind_bits(lighting);
     if (lighting.color_material) {
       uint32_t cm = 0;
       switch (lighting.color_material_mode) {

@@ -28,17 +28,31 @@ gpu::RasterLight pack(const rec::Light& l) {
     out.position = glm::vec4(vp, 0.0f);
     out.half_vector = glm::vec4(normalize_or_zero(vp + glm::vec3(0, 0, 1)), 0.0f);
   }
-  // Mesa's cosine of the cutoff: cosf of the angle converted in double, clamped to >= 0.
-  const bool spot = l.spot_cutoff != 180.0f;
-  const float cos_cutoff =
-      std::max(std::cos(static_cast<float>(l.spot_cutoff * M_PI / 180.0)), 0.0f);
-  out.spot = glm::vec4(normalize_or_zero(l.spot_direction), spot ? cos_cutoff : -2.0f);
+  out.spot = glm::vec4(normalize_or_zero(l.spot_direction), packed_spot_cosine(l));
   out.attenuation = glm::vec4(l.constant_attenuation, l.linear_attenuation, l.quadratic_attenuation,
                               l.spot_exponent);
   return out;
 }
 
 }  // namespace
+
+float packed_spot_cosine(const rec::Light& l) {
+  // Mesa's cosine of the cutoff: cosf of the angle converted in double, clamped to >= 0.
+  if (l.spot_cutoff == 180.0f) return -2.0f;
+  return std::max(std::cos(static_cast<float>(l.spot_cutoff * M_PI / 180.0)), 0.0f);
+}
+
+uint32_t light_kind_bits(const rec::LightingState& lighting) {
+  uint32_t bits = 0;
+  for (int i = 0; i < rec::kMaxLights; ++i) {
+    if ((lighting.light_mask & (1u << i)) == 0) continue;
+    const rec::Light& l = lighting.lights[i];
+    // The shader's own tests of the packed values (RasterLight position.w, spot.w).
+    if (l.position.w != 0.0f) bits |= GLPT_LIGHT_POSITIONAL << i;
+    if (packed_spot_cosine(l) > -1.5f) bits |= GLPT_LIGHT_SPOT << i;
+  }
+  return bits;
+}
 
 gpu::RasterMaterial pack_material(const rec::Material& m) {
   return {m.ambient, m.diffuse, m.specular, m.emission, glm::vec4(m.shininess, 0, 0, 0)};
