@@ -6,6 +6,7 @@
 
 #include "gl/gl_enums.h"
 #include "gl_shim/frame/headless_target.hpp"
+#include "gl_shim/gl_impl_decls.hpp"
 
 namespace glpt {
 namespace {
@@ -22,6 +23,7 @@ Context::Context(const Context* shared)
     lists.store = shared->lists.store;
     buffers = shared->buffers;
     textures.store = shared->textures.store;
+    render_group = shared->render_group;
   }
 }
 
@@ -51,7 +53,15 @@ bool Context::list_executes_while_compiling() const {
 Context* current_context() { return t_current; }
 void set_current_context(Context* ctx) { t_current = ctx; }
 
+void flush_before_release(Context& ctx) {
+  if (ctx.target == nullptr) return;
+  flush_bitmap_cache(ctx);
+  if (ctx.recorder.empty()) return;  // (a front-buffer frame would otherwise present again)
+  impl::glFinish(ctx);
+}
+
 void bind_target_and_make_current(Context& ctx, WindowTarget* target) {
+  if (ctx.target != nullptr && ctx.target != target) flush_before_release(ctx);
   ctx.target = target;
   set_current_context(&ctx);
   uint32_t w = 0, h = 0;
@@ -87,7 +97,7 @@ bool ensure_output(Context& ctx) {
   if (ctx.target == nullptr || ctx.renderer_unavailable) return false;
   if (ctx.output) return true;
   std::string error;
-  ctx.output = FrameOutput::create(&error);
+  ctx.output = FrameOutput::create(*ctx.render_group, &error);
   if (!ctx.output) {
     // Reported once per context (make-current does not retry it); the program keeps
     // running, showing nothing.
@@ -129,8 +139,8 @@ bool execute_record(Context& ctx) {
   bool ok = true;
   std::vector<rt::QuerySamples> samples;
   if (!ctx.recorder.empty() || drawable != ctx.output->drawable())
-    ok = ctx.output->execute(ctx.recorder.record(), drawable, ctx.recording_since.elapsed_ms(),
-                             &samples);
+    ok = ctx.output->execute(ctx.recorder.record(), *ctx.target, drawable,
+                             ctx.recording_since.elapsed_ms(), &samples);
   start_new_record(ctx);
   count_query_samples(ctx.queries, samples);
   return ok;
@@ -152,7 +162,7 @@ void end_frame(Context& ctx, bool swap) {
   ctx.recorder.seal();
   std::vector<rt::QuerySamples> samples;
   ctx.output->end_frame(ctx.recorder.record(), current_drawable(ctx),
-                        ctx.recording_since.elapsed_ms(), ctx.target, swap, &samples);
+                        ctx.recording_since.elapsed_ms(), *ctx.target, swap, &samples);
   // Running totals, so a program killed mid-run (as screensavers are) still leaves them.
   if (ctx.output->stats_enabled()) {
     uint64_t unimplemented = 0;

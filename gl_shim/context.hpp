@@ -99,6 +99,8 @@ class Context {
   // The buffers of the drawable the context was first made current with (GLX visual / EGL config):
   // what GL_DOUBLEBUFFER, GL_*_BITS and the initial draw/read buffers report.
   rec::DrawableConfig drawable;
+  // The renderer of the share group (shared with share_list, as the objects are).
+  std::shared_ptr<RenderGroup> render_group = std::make_shared<RenderGroup>();
   std::unique_ptr<FrameOutput> output;    // created when the first record is executed
   bool renderer_unavailable = false;      // creation failed: reported once, never retried
   void* window_system_context = nullptr;  // the GLX/EGL context wrapping this one
@@ -118,8 +120,14 @@ Context* current_context();
 void set_current_context(Context* ctx);
 
 // Binds `target` to `ctx` and makes it current. On the context's first binding the viewport and
-// scissor box become the target's size (GL 1.5 2.11.1, 4.1.2).
+// scissor box become the target's size (GL 1.5 2.11.1, 4.1.2). A context moving to another
+// drawable is flushed first (flush_before_release).
 void bind_target_and_make_current(Context& ctx, WindowTarget* target);
+
+// `ctx` stops being current (or leaves its drawable): GLX 1.4 3.3.7 and EGL 1.5 3.7.3 flush it,
+// so what it drew is executed on the drawable it was drawn for, where other contexts drawing to
+// that drawable see it (piglit glx-multi-context-single-window, glx-make-glxdrawable-current).
+void flush_before_release(Context& ctx);
 
 // Executes the frame record (everything recorded since it was last executed) on the drawable's
 // buffers: at a swap, a read, glFinish/glFlush. Returns false if there is nothing to execute on

@@ -1,5 +1,6 @@
 // glClear*, glViewport, glDepthRange, glScissor, glDrawBuffer/glReadBuffer, glPixelStore,
-// glFlush, glFinish (glReadPixels: gl_shim/pixels/read_pixels.cpp) (GL 1.5 spec 2.11.1, 4.2, 4.3, 5.5).
+// glFlush, glFinish (glReadPixels: gl_shim/pixels/read_pixels.cpp) (GL 1.5
+// spec 2.11.1, 4.2, 4.3, 5.5).
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -23,13 +24,15 @@ bool read_framebuffer(Context& ctx, rec::PixelKind kind, uint32_t buffer, int32_
   if (!execute_record(ctx) || !ctx.output) return false;
   rt::Renderer& renderer = ctx.output->renderer();
   const rec::DrawableConfig& drawable = ctx.output->drawable();
+  std::lock_guard lock(ctx.target->mutex());
+  rt::DrawableBuffers& buffers = ctx.target->buffers();
   std::string error;
   const size_t n = size_t{width} * height;
   bool ok = false;
   switch (kind) {
     case rec::PixelKind::kColor: {
       std::vector<uint8_t> rgba;
-      ok = renderer.read_color(buffer, x, y, width, height, rgba, &error);
+      ok = renderer.read_color(buffers, buffer, x, y, width, height, rgba, &error);
       if (ok) {
         out.color.resize(n);
         for (size_t i = 0; i < n; ++i)
@@ -39,11 +42,11 @@ bool read_framebuffer(Context& ctx, rec::PixelKind kind, uint32_t buffer, int32_
       break;
     }
     case rec::PixelKind::kDepth:
-      ok = renderer.read_depth(x, y, width, height, out.depth, &error);
+      ok = renderer.read_depth(buffers, x, y, width, height, out.depth, &error);
       break;
     case rec::PixelKind::kStencil: {
       std::vector<uint8_t> stencil;
-      ok = renderer.read_stencil(x, y, width, height, stencil, &error);
+      ok = renderer.read_stencil(buffers, x, y, width, height, stencil, &error);
       if (ok) out.stencil.assign(stencil.begin(), stencil.end());
       break;
     }
@@ -85,7 +88,7 @@ void glClear(Context& ctx, GLbitfield mask) {
   clear.state = ctx.snapshots.capture(ctx, ctx.recorder.record());
   clear.mask = mask;
   clear.color = fb.clear_color;
-  clear.depth = static_cast<float>(fb.clear_depth);
+  clear.depth = fb.clear_depth;
   clear.stencil = fb.clear_stencil;
   clear.accum = fb.clear_accum;
   ctx.recorder.add(clear);
