@@ -77,27 +77,6 @@ ArrayReader::GatherFn gather_fn(ArrayConversion c, bool normalized, int size) {
              : gather_fn<T, ArrayConversion::kImmediate, true>(size);
 }
 
-ArrayReader::GatherFn gather_fn(GLenum type, ArrayConversion c, bool normalized, int size) {
-  switch (type) {
-    case GL_BYTE:
-      return gather_fn<GLbyte>(c, normalized, size);
-    case GL_UNSIGNED_BYTE:
-      return gather_fn<GLubyte>(c, normalized, size);
-    case GL_SHORT:
-      return gather_fn<GLshort>(c, normalized, size);
-    case GL_UNSIGNED_SHORT:
-      return gather_fn<GLushort>(c, normalized, size);
-    case GL_INT:
-      return gather_fn<GLint>(c, normalized, size);
-    case GL_UNSIGNED_INT:
-      return gather_fn<GLuint>(c, normalized, size);
-    case GL_DOUBLE:
-      return gather_fn<GLdouble>(c, normalized, size);
-    default:
-      return gather_fn<GLfloat>(c, normalized, size);
-  }
-}
-
 template <typename T>
 ArrayReader::ElementFn element_fn(ArrayConversion c, bool normalized) {
   if (!normalized) return &element<T, ArrayConversion::kVertexFetch, false>;
@@ -105,26 +84,38 @@ ArrayReader::ElementFn element_fn(ArrayConversion c, bool normalized) {
                                             : &element<T, ArrayConversion::kImmediate, true>;
 }
 
-// Defined for the types of GL 1.5 table 2.4 (the pointer commands accept no other).
-ArrayReader::ElementFn element_fn(GLenum type, ArrayConversion c, bool normalized) {
+// Calls f with a value of the C type of `type`, one of GL 1.5 table 2.4's (the pointer commands
+// accept no other).
+template <typename F>
+auto with_component_type(GLenum type, F&& f) {
   switch (type) {
     case GL_BYTE:
-      return element_fn<GLbyte>(c, normalized);
+      return f(GLbyte{});
     case GL_UNSIGNED_BYTE:
-      return element_fn<GLubyte>(c, normalized);
+      return f(GLubyte{});
     case GL_SHORT:
-      return element_fn<GLshort>(c, normalized);
+      return f(GLshort{});
     case GL_UNSIGNED_SHORT:
-      return element_fn<GLushort>(c, normalized);
+      return f(GLushort{});
     case GL_INT:
-      return element_fn<GLint>(c, normalized);
+      return f(GLint{});
     case GL_UNSIGNED_INT:
-      return element_fn<GLuint>(c, normalized);
+      return f(GLuint{});
     case GL_DOUBLE:
-      return element_fn<GLdouble>(c, normalized);
+      return f(GLdouble{});
     default:
-      return element_fn<GLfloat>(c, normalized);
+      return f(GLfloat{});
   }
+}
+
+ArrayReader::ElementFn element_fn(GLenum type, ArrayConversion c, bool normalized) {
+  return with_component_type(
+      type, [&](auto value) { return element_fn<decltype(value)>(c, normalized); });
+}
+
+ArrayReader::GatherFn gather_fn(GLenum type, ArrayConversion c, bool normalized, int size) {
+  return with_component_type(
+      type, [&](auto value) { return gather_fn<decltype(value)>(c, normalized, size); });
 }
 
 }  // namespace
