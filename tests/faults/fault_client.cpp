@@ -7,9 +7,10 @@
 //                                    the left half, swapped; then the pixels of the right half
 //                                    (glReadPixels and the window's), GL state and errors
 //   fault_client no-display          GLX and EGL without an X server
-//   fault_client window-closed MODE  frames into a window that another connection destroys
+//   fault_client window-closed MODE  frames into a GLX window that another connection destroys
 //                                    (MODE destroy) or whose client it kills (MODE kill) after
-//                                    frame 3; then exits without destroying its context
+//                                    frame 3, or an EGL window it destroys (MODE destroy-egl);
+//                                    then exits without destroying its context
 #include <GL/gl.h>
 #include <GL/glx.h>
 #include <X11/Xlib.h>
@@ -134,9 +135,44 @@ int no_display() {
   return 0;
 }
 
+// An EGL window surface and context current on `dpy`'s window `*window` (as xscreensaver's
+// hacks make theirs).
+bool open_egl_window(Display* dpy, Window* window) {
+  EGLDisplay egl = eglGetDisplay(reinterpret_cast<EGLNativeDisplayType>(dpy));
+  if (!eglInitialize(egl, nullptr, nullptr) || !eglBindAPI(EGL_OPENGL_API)) return false;
+  const EGLint attribs[] = {EGL_SURFACE_TYPE, EGL_WINDOW_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT,
+                            EGL_NONE};
+  EGLConfig config = nullptr;
+  EGLint n = 0;
+  if (!eglChooseConfig(egl, attribs, &config, 1, &n) || n != 1) return false;
+  EGLint visual_id = 0;
+  eglGetConfigAttrib(egl, config, EGL_NATIVE_VISUAL_ID, &visual_id);
+  XVisualInfo templ{};
+  templ.visualid = static_cast<VisualID>(visual_id);
+  XVisualInfo* vi = XGetVisualInfo(dpy, VisualIDMask, &templ, &n);
+  if (vi == nullptr) return false;
+  XSetWindowAttributes attr{};
+  attr.colormap = XCreateColormap(dpy, RootWindow(dpy, vi->screen), vi->visual, AllocNone);
+  *window = XCreateWindow(dpy, RootWindow(dpy, vi->screen), 0, 0, 32, 32, 0, vi->depth, InputOutput,
+                          vi->visual, CWColormap, &attr);
+  XFree(vi);
+  XMapWindow(dpy, *window);
+  XSync(dpy, False);
+  EGLSurface surface = eglCreateWindowSurface(egl, config, *window, nullptr);
+  EGLContext ctx = eglCreateContext(egl, config, EGL_NO_CONTEXT, nullptr);
+  return surface != EGL_NO_SURFACE && ctx != EGL_NO_CONTEXT &&
+         eglMakeCurrent(egl, surface, surface, ctx);
+}
+
 int window_closed(const char* mode) {
+  const bool egl = std::strcmp(mode, "destroy-egl") == 0;
   GlxWindow w;
-  if (!open_glx_window(&w, 32)) return 2;
+  if (egl) {
+    w.dpy = XOpenDisplay(nullptr);
+    if (w.dpy == nullptr || !open_egl_window(w.dpy, &w.window)) return 2;
+  } else if (!open_glx_window(&w, 32)) {
+    return 2;
+  }
   Display* other = XOpenDisplay(nullptr);
   if (other == nullptr) return 2;
   for (int frame = 0; frame < 8; ++frame) {
@@ -152,7 +188,10 @@ int window_closed(const char* mode) {
       std::fflush(stdout);
     }
     draw_frame();
-    glXSwapBuffers(w.dpy, w.window);
+    if (egl)
+      eglSwapBuffers(eglGetCurrentDisplay(), eglGetCurrentSurface(EGL_DRAW));
+    else
+      glXSwapBuffers(w.dpy, w.window);
     std::printf("frame %d\n", frame);
     std::fflush(stdout);
   }

@@ -7,8 +7,8 @@
 #   no-vulkan      no Vulkan driver: one message, GL state answers, frames show the clear colour
 #                  (window, glReadPixels, PNG)
 #   no-display     DISPLAY unset, then pointing at a dead server: GLX NULL, EGL's errors
-#   window-closed  the window destroyed by another client mid-frame, then the program exits
-#                  with its context current: a clean exit
+#   window-closed  the window (GLX, then EGL) destroyed by another client mid-frame, then the
+#                  program exits with its context current: a clean exit
 #   window-killed  the program's X connection killed (XKillClient) mid-frame: Xlib's own exit,
 #                  no crash, no hang
 #   bad-output     GLPT_OUTPUT under a regular file, or a directory that takes no files: one
@@ -136,11 +136,13 @@ case "$fault" in
     done
     ;;
   window-closed)
-    run -- window-closed destroy
-    expect_rc 0
-    expect_line "closed 3"
-    expect_line "frame 7"
-    expect_line "exit"
+    for mode in destroy destroy-egl; do
+      run -- window-closed "$mode"
+      expect_rc 0
+      expect_line "closed 3"
+      expect_line "frame 7"
+      expect_line "exit"
+    done
     ;;
   window-killed)
     run -- window-closed kill
