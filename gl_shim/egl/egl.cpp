@@ -323,6 +323,8 @@ void flush_current() { glFlush(); }
 
 extern "C" {
 
+// Every entry point but this one (it reads a thread-local and cannot fail) runs through
+// egl_entry: no exception crosses the C ABI.
 GLPT_EXPORT EGLint eglGetError(void) {
   const EGLint e = t_error;
   t_error = EGL_SUCCESS;

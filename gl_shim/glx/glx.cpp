@@ -352,6 +352,10 @@ bool drawable_size(DisplayState* state, GLXDrawable draw, uint32_t* w, uint32_t*
 
 }  // namespace
 
+// Each entry point that can allocate runs through glx_entry (glx_display.hpp): no exception
+// crosses the C ABI. Those that only return constants or read the current context
+// (glXQueryVersion, glX*String, glXGetCurrent*) cannot fail; glXMakeCurrentReadSGI,
+// glXQueryServerString and glXGetProcAddress forward to guarded ones.
 extern "C" {
 
 GLPT_EXPORT XVisualInfo* glXChooseVisual(Display* dpy, int screen, int* attrib_list) {

@@ -23,6 +23,8 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "../common/x11_gl_test_util.hpp"
+
 namespace {
 
 struct GlxWindow {
@@ -47,19 +49,11 @@ bool open_glx_window(GlxWindow* w, int size) {
   return w->ctx != nullptr && glXMakeCurrent(w->dpy, w->window, w->ctx);
 }
 
-void draw_frame() {
-  glClearColor(0, 0, 1, 1);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  glMatrixMode(GL_PROJECTION);
-  glLoadIdentity();
-  glOrtho(0, 1, 0, 1, -1, 1);
-  glColor3f(1, 0, 0);
-  glBegin(GL_QUADS);
-  glVertex2f(0, 0);
-  glVertex2f(0.5f, 0);
-  glVertex2f(0.5f, 1);
-  glVertex2f(0, 1);
-  glEnd();
+// A blue clear and a red quad over the left half of the 32x32 window; the pixels at (8, 16) and
+// (24, 16) as glReadPixels reads them.
+void draw_frame(GLubyte left[4] = nullptr, GLubyte right[4] = nullptr) {
+  GLubyte ignored[2][4];
+  glpt_test::draw_half_red(8, 24, 16, left ? left : ignored[0], right ? right : ignored[1]);
 }
 
 int draw(int frames) {
@@ -79,10 +73,8 @@ int draw(int frames) {
     XDestroyImage(image);
   }
   // GL's state machine answers, whatever the renderer.
-  draw_frame();
   GLubyte left[4] = {}, right[4] = {};
-  glReadPixels(8, 16, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, left);
-  glReadPixels(24, 16, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, right);
+  draw_frame(left, right);
   std::printf("read_left %d %d %d %d\n", left[0], left[1], left[2], left[3]);
   std::printf("read_right %d %d %d %d\n", right[0], right[1], right[2], right[3]);
   GLfloat clear[4] = {};
