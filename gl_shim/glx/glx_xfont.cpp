@@ -69,60 +69,61 @@ std::vector<GLubyte> glyph_bitmap(Display* dpy, Window root, GC gc, unsigned c, 
   return bits;
 }
 
+void use_x_font(Font font, int first, int count, int list_base) {
+  glpt::Context* gl = glpt::current_context();
+  if (gl == nullptr || gl->window_system != glpt::WindowSystem::kGlx) return;
+  Display* dpy = glXGetCurrentDisplay();
+  if (dpy == nullptr) return;
+  if (count < 0) return glpt::record_error(*gl, GL_INVALID_VALUE);
+  XFontStruct* fs = XQueryFont(dpy, font);
+  if (fs == nullptr) return glpt::record_error(*gl, GL_INVALID_VALUE);  // as Mesa
+
+  // The lists are made with the default unpacking, byte-aligned; the program's is restored.
+  const GLenum kUnpack[] = {GL_UNPACK_SWAP_BYTES, GL_UNPACK_LSB_FIRST,   GL_UNPACK_ROW_LENGTH,
+                            GL_UNPACK_SKIP_ROWS,  GL_UNPACK_SKIP_PIXELS, GL_UNPACK_ALIGNMENT};
+  GLint saved[6];
+  for (int i = 0; i < 6; ++i) glGetIntegerv(kUnpack[i], &saved[i]);
+  for (int i = 0; i < 5; ++i) glPixelStorei(kUnpack[i], 0);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+
+  const int screen = DefaultScreen(dpy);
+  const Window root = RootWindow(dpy, screen);
+  Pixmap scratch = XCreatePixmap(dpy, root, 8, 8, 1);
+  XGCValues values{};
+  values.font = fs->fid;
+  GC gc = XCreateGC(dpy, scratch, GCFont, &values);
+  XFreePixmap(dpy, scratch);
+
+  for (int i = 0; i < count; ++i) {
+    const unsigned c = static_cast<unsigned>(first + i);
+    const XCharStruct* ch = glyph_metrics(fs, c);
+    const bool valid = ch != nullptr;
+    if (!valid) ch = &fs->max_bounds;
+    const int width = ch->rbearing - ch->lbearing;
+    const int height = ch->ascent + ch->descent;
+    const int row_bytes = (width + 7) / 8;
+    glNewList(static_cast<GLuint>(list_base + i), GL_COMPILE);
+    if (valid && row_bytes > 0 && height > 0) {
+      const std::vector<GLubyte> bits =
+          glyph_bitmap(dpy, root, gc, c, row_bytes, height, -ch->lbearing, ch->ascent);
+      glBitmap(width, height, static_cast<GLfloat>(-ch->lbearing),
+               static_cast<GLfloat>(ch->descent - 1), static_cast<GLfloat>(ch->width), 0,
+               bits.data());
+    } else {
+      glBitmap(0, 0, 0, 0, static_cast<GLfloat>(ch->width), 0, nullptr);
+    }
+    glEndList();
+  }
+  XFreeGC(dpy, gc);
+  XFreeFontInfo(nullptr, fs, 1);
+  for (int i = 0; i < 6; ++i) glPixelStorei(kUnpack[i], saved[i]);
+}
+
 }  // namespace
 
 // An allocation failure (a glyph's bitmap) is GL_OUT_OF_MEMORY, as in the GL commands it makes
-// the lists with.
+// the lists with (c_abi_guard.hpp).
 extern "C" GLPT_EXPORT void glXUseXFont(Font font, int first, int count, int list_base) {
-  glpt::guard_c_abi_void(
-      [] { glpt::exception_at_entry_point(); },
-      [&] {
-        glpt::Context* gl = glpt::current_context();
-        if (gl == nullptr || gl->window_system != glpt::WindowSystem::kGlx) return;
-        Display* dpy = glXGetCurrentDisplay();
-        if (dpy == nullptr) return;
-        if (count < 0) return glpt::record_error(*gl, GL_INVALID_VALUE);
-        XFontStruct* fs = XQueryFont(dpy, font);
-        if (fs == nullptr) return glpt::record_error(*gl, GL_INVALID_VALUE);  // as Mesa
-
-        // The lists are made with the default unpacking, byte-aligned; the program's is restored.
-        const GLenum kUnpack[] = {GL_UNPACK_SWAP_BYTES, GL_UNPACK_LSB_FIRST,   GL_UNPACK_ROW_LENGTH,
-                                  GL_UNPACK_SKIP_ROWS,  GL_UNPACK_SKIP_PIXELS, GL_UNPACK_ALIGNMENT};
-        GLint saved[6];
-        for (int i = 0; i < 6; ++i) glGetIntegerv(kUnpack[i], &saved[i]);
-        for (int i = 0; i < 5; ++i) glPixelStorei(kUnpack[i], 0);
-        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-
-        const int screen = DefaultScreen(dpy);
-        const Window root = RootWindow(dpy, screen);
-        Pixmap scratch = XCreatePixmap(dpy, root, 8, 8, 1);
-        XGCValues values{};
-        values.font = fs->fid;
-        GC gc = XCreateGC(dpy, scratch, GCFont, &values);
-        XFreePixmap(dpy, scratch);
-
-        for (int i = 0; i < count; ++i) {
-          const unsigned c = static_cast<unsigned>(first + i);
-          const XCharStruct* ch = glyph_metrics(fs, c);
-          const bool valid = ch != nullptr;
-          if (!valid) ch = &fs->max_bounds;
-          const int width = ch->rbearing - ch->lbearing;
-          const int height = ch->ascent + ch->descent;
-          const int row_bytes = (width + 7) / 8;
-          glNewList(static_cast<GLuint>(list_base + i), GL_COMPILE);
-          if (valid && row_bytes > 0 && height > 0) {
-            const std::vector<GLubyte> bits =
-                glyph_bitmap(dpy, root, gc, c, row_bytes, height, -ch->lbearing, ch->ascent);
-            glBitmap(width, height, static_cast<GLfloat>(-ch->lbearing),
-                     static_cast<GLfloat>(ch->descent - 1), static_cast<GLfloat>(ch->width), 0,
-                     bits.data());
-          } else {
-            glBitmap(0, 0, 0, 0, static_cast<GLfloat>(ch->width), 0, nullptr);
-          }
-          glEndList();
-        }
-        XFreeGC(dpy, gc);
-        XFreeFontInfo(nullptr, fs, 1);
-        for (int i = 0; i < 6; ++i) glPixelStorei(kUnpack[i], saved[i]);
-      });
+  glpt::guard_c_abi_void([] { glpt::exception_at_entry_point(); },
+                         [&] { use_x_font(font, first, count, list_base); });
 }

@@ -77,6 +77,9 @@ int draw(int frames) {
   draw_frame(left, right);
   std::printf("read_left %d %d %d %d\n", left[0], left[1], left[2], left[3]);
   std::printf("read_right %d %d %d %d\n", right[0], right[1], right[2], right[3]);
+  GLfloat depth = -1;
+  glReadPixels(24, 16, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT, &depth);
+  std::printf("read_depth_right %g\n", depth);
   GLfloat clear[4] = {};
   glGetFloatv(GL_COLOR_CLEAR_VALUE, clear);
   std::printf("clear_value %g %g %g %g\n", clear[0], clear[1], clear[2], clear[3]);

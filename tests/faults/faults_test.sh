@@ -108,6 +108,7 @@ case "$fault" in
     expect_line "error_after 0x0"
     # Every buffer shows the last clear colour (the quad is not drawn).
     expect_line "read_left 0 0 255 255"
+    expect_line "read_depth_right 1"
     expect_line "read_right 0 0 255 255"
     expect_line "window_right 0x0000ff"
     [ "$(find "$work/png" -name 'frame_*.png' | wc -l)" -eq 5 ] || fail "not 5 PNGs"
