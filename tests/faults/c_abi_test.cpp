@@ -30,6 +30,8 @@
 #include <thread>
 #include <vector>
 
+extern "C" void glXSwapIntervalEXT(Display* dpy, GLXDrawable drawable, int interval);
+
 namespace {
 
 // -1: allocations succeed. N >= 0: the calling thread's allocation after N more fails.
@@ -99,6 +101,8 @@ constexpr int kXGlxCreateContext = 3;  // glxproto.h
 constexpr int kXGlxMakeCurrent = 5;
 constexpr int kXGlxCreateNewContext = 24;
 constexpr int kXGlxCreatePbuffer = 27;
+constexpr int kXGlxVendorPrivate = 16;
+constexpr int kXGlxCreateWindow = 31;
 
 class CAbi : public ::testing::Test {
  protected:
@@ -237,6 +241,31 @@ TEST_F(CAbi, GlxAllocationFailureIsTheFunctionsFailureAndBadAlloc) {
                 }),
             0);
   XFreeFont(dpy_, font);
+
+  // A GLX window over the X window, and its swap interval (GLX_EXT_swap_control's request).
+  EXPECT_GT(sweep_allocation_failures([&] { return glXCreateWindow(dpy_, config, win, nullptr); },
+                                      [&](GLXWindow glx_window) {
+                                        if (glx_window == None) {
+                                          expect_bad_alloc(kXGlxCreateWindow);
+                                          return true;
+                                        }
+                                        glXDestroyWindow(dpy_, glx_window);
+                                        return false;
+                                      }),
+            0);
+  EXPECT_GT(sweep_allocation_failures(
+                [&] {
+                  glXSwapIntervalEXT(dpy_, win, 2);
+                  return !g_x_errors.empty();
+                },
+                [&](bool failed) {
+                  if (failed) expect_bad_alloc(kXGlxVendorPrivate);
+                  return failed;
+                }),
+            0);
+  unsigned interval = 0;
+  glXQueryDrawable(dpy_, win, GLX_SWAP_INTERVAL_EXT, &interval);
+  EXPECT_EQ(interval, 2u);
   glXMakeCurrent(dpy_, None, nullptr);
   glXDestroyContext(dpy_, ctx);
   XDestroyWindow(dpy_, win);
@@ -305,6 +334,26 @@ TEST_F(CAbiEgl, AllocationFailureIsEglBadAllocAndTheFailureValue) {
       sweep_allocation_failures([&] { return eglCreatePbufferSurface(egl_, config_, size); },
                                 bad_alloc(EGL_NO_SURFACE, [&](EGLSurface s) { pbuffer = s; })),
       0);
+  // A window surface (glpt's own connection to the window is made).
+  const EGLint window_attribs[] = {EGL_SURFACE_TYPE, EGL_WINDOW_BIT, EGL_RENDERABLE_TYPE,
+                                   EGL_OPENGL_BIT, EGL_NONE};
+  EGLConfig window_config = nullptr;
+  ASSERT_TRUE(eglChooseConfig(egl_, window_attribs, &window_config, 1, &n));
+  EGLint visual_id = 0;
+  ASSERT_TRUE(eglGetConfigAttrib(egl_, window_config, EGL_NATIVE_VISUAL_ID, &visual_id));
+  XVisualInfo templ{};
+  templ.visualid = static_cast<VisualID>(visual_id);
+  int visuals = 0;
+  XVisualInfo* vi = XGetVisualInfo(dpy_, VisualIDMask, &templ, &visuals);
+  ASSERT_NE(vi, nullptr);
+  const Window win = glpt_test::create_mapped_window(dpy_, *vi, 16, 16);
+  XFree(vi);
+  EXPECT_GT(sweep_allocation_failures(
+                [&] { return eglCreateWindowSurface(egl_, window_config, win, nullptr); },
+                bad_alloc(EGL_NO_SURFACE,
+                          [&](EGLSurface s) { EXPECT_TRUE(eglDestroySurface(egl_, s)); })),
+            0);
+  XDestroyWindow(dpy_, win);
   // The objects made once memory was back work.
   EGLContext ctx = eglCreateContext(egl_, config_, EGL_NO_CONTEXT, nullptr);
   ASSERT_NE(ctx, EGL_NO_CONTEXT);
