@@ -354,7 +354,7 @@ bool drawable_size(DisplayState* state, GLXDrawable draw, uint32_t* w, uint32_t*
 
 // Each entry point that can allocate runs through glx_entry (glx_display.hpp): no exception
 // crosses the C ABI. Those that only return constants or read the current context
-// (glXQueryVersion, glX*String, glXGetCurrent*) cannot fail; glXMakeCurrentReadSGI,
+// (glXQueryVersion, glX*String, glXGetCurrent*, glXWaitX) cannot fail; glXMakeCurrentReadSGI,
 // glXQueryServerString and glXGetProcAddress forward to guarded ones.
 extern "C" {
 
@@ -585,7 +585,7 @@ GLPT_EXPORT Bool glXMakeCurrentReadSGI(Display* dpy, GLXDrawable draw, GLXDrawab
 }
 
 GLPT_EXPORT void glXSwapBuffers(Display* dpy, GLXDrawable drawable) {
-  glx_entry_void(dpy, glpt::glx::kXGlxSwapBuffers, [&] {
+  glpt::glx::gl_work_entry([&] {
     if (dpy == nullptr) return;
     // The program's X requests (a resize, its own drawing) are done before glpt's connection asks
     // for the window's size and draws: Mesa's swap makes its requests on `dpy`, after them.
@@ -919,16 +919,14 @@ GLPT_EXPORT void glXQueryDrawable(Display* dpy, GLXDrawable draw, int attribute,
 // glpt renders synchronously. glXWaitGL: what GL drew reaches the window before later X
 // rendering, as glFinish makes it. glXWaitX: the program's X requests are done (Mesa: XSync).
 GLPT_EXPORT void glXWaitGL(void) {
-  glx_entry_void(glXGetCurrentDisplay(), glpt::glx::kXGlxWaitGL, [&] {
+  glpt::glx::gl_work_entry([&] {
     if (current_glx() != nullptr) glpt::impl::glFinish(*glpt::current_context());
   });
 }
 
 GLPT_EXPORT void glXWaitX(void) {
-  glx_entry_void(glXGetCurrentDisplay(), glpt::glx::kXGlxWaitX, [&] {
-    GLXContext ctx = current_glx();
-    if (ctx != nullptr && ctx->display != nullptr) XSync(ctx->display, False);
-  });
+  GLXContext ctx = current_glx();
+  if (ctx != nullptr && ctx->display != nullptr) XSync(ctx->display, False);
 }
 
 // glXCopyContext (GLX 1.4 3.3.7): the attribute groups of `mask` go from `src` to `dst` as if

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "gl_shim/c_abi_guard.hpp"
+#include "gl_shim/dispatch.hpp"
 #include "gl_shim/frame/headless_target.hpp"
 #include "gl_shim/glx/glx_configs.hpp"
 #include "gl_shim/process_owner.hpp"
@@ -93,6 +94,14 @@ void glx_entry_void(Display* dpy, int minor, Body&& body) noexcept {
   guard_c_abi_void([&] { report_bad_alloc(dpy, minor); }, std::forward<Body>(body));
 }
 
+// A GLX function whose work is GL's (the frame glXSwapBuffers renders, glXWaitGL's finish, the
+// lists glXUseXFont makes): an exception is GL_OUT_OF_MEMORY on the current context, as in GL's
+// own commands, not an X error (whose default handler would end the program).
+template <typename Body>
+void gl_work_entry(Body&& body) noexcept {
+  guard_c_abi_void([] { exception_at_entry_point(); }, std::forward<Body>(body));
+}
+
 // GLX error codes (glxproto.h), offsets from the extension's first error.
 inline constexpr int kGlxBadContext = 0;
 inline constexpr int kGlxBadDrawable = 2;
@@ -108,8 +117,6 @@ inline constexpr int kXGlxCreateContext = 3;
 inline constexpr int kXGlxDestroyContext = 4;
 inline constexpr int kXGlxMakeCurrent = 5;
 inline constexpr int kXGlxIsDirect = 6;
-inline constexpr int kXGlxWaitGL = 8;
-inline constexpr int kXGlxWaitX = 9;
 inline constexpr int kXGlxCopyContext = 10;
 inline constexpr int kXGlxSwapBuffers = 11;
 inline constexpr int kXGlxCreateGLXPixmap = 13;

@@ -8,11 +8,11 @@
 #include <vector>
 
 #include "gl/gl_enums.h"
-#include "gl_shim/c_abi_guard.hpp"
 #include "gl_shim/context.hpp"
 #include "gl_shim/dispatch.hpp"
 #include "gl_shim/gl_impl_decls.hpp"
 #include "gl_shim/glx/glx_api.hpp"
+#include "gl_shim/glx/glx_display.hpp"
 
 // The exported GL entry points: list compilation goes through them like the program's own calls.
 extern "C" {
@@ -122,8 +122,7 @@ void use_x_font(Font font, int first, int count, int list_base) {
 }  // namespace
 
 // An allocation failure (a glyph's bitmap) is GL_OUT_OF_MEMORY, as in the GL commands it makes
-// the lists with (c_abi_guard.hpp).
+// the lists with.
 extern "C" GLPT_EXPORT void glXUseXFont(Font font, int first, int count, int list_base) {
-  glpt::guard_c_abi_void([] { glpt::exception_at_entry_point(); },
-                         [&] { use_x_font(font, first, count, list_base); });
+  glpt::glx::gl_work_entry([&] { use_x_font(font, first, count, list_base); });
 }
