@@ -266,6 +266,35 @@ TEST_F(CAbi, GlxAllocationFailureIsTheFunctionsFailureAndBadAlloc) {
   unsigned interval = 0;
   glXQueryDrawable(dpy_, win, GLX_SWAP_INTERVAL_EXT, &interval);
   EXPECT_EQ(interval, 2u);
+
+  // A swap renders the frame (the renderer exists after the first one). The renderer catches
+  // its own failures (the frame is lost, said once on stderr) or the swap records
+  // GL_OUT_OF_MEMORY; either way nothing escapes, no X error ends the program, and the next frame
+  // is drawn as if nothing had happened. Counted: the swaps that met a failure.
+  ASSERT_TRUE(glXMakeCurrent(dpy_, win, ctx));
+  unsigned char left[4], right[4];
+  glpt_test::draw_half_red(4, 12, 8, left, right);
+  glXSwapBuffers(dpy_, win);
+  EXPECT_GT(sweep_allocation_failures(
+                [&] {
+                  const long n = t_allocations_until_failure;  // failing in the swap only
+                  t_allocations_until_failure = -1;
+                  glClearColor(0, 0, 1, 1);
+                  glClear(GL_COLOR_BUFFER_BIT);
+                  glRectf(-1, -1, 0, 1);
+                  t_allocations_until_failure = n;
+                  glXSwapBuffers(dpy_, win);
+                  return glGetError();
+                },
+                [&](GLenum error) {
+                  EXPECT_TRUE(error == GL_NO_ERROR || error == GL_OUT_OF_MEMORY) << error;
+                  return t_allocation_failed;
+                }),
+            0);
+  glpt_test::draw_half_red(4, 12, 8, left, right);
+  EXPECT_EQ(left[0], 255);
+  EXPECT_EQ(right[2], 255);
+  EXPECT_TRUE(g_x_errors.empty());
   glXMakeCurrent(dpy_, None, nullptr);
   glXDestroyContext(dpy_, ctx);
   XDestroyWindow(dpy_, win);
