@@ -78,11 +78,25 @@ void use_x_font(Font font, int first, int count, int list_base) {
   XFontStruct* fs = XQueryFont(dpy, font);
   if (fs == nullptr) return glpt::record_error(*gl, GL_INVALID_VALUE);  // as Mesa
 
-  // The lists are made with the default unpacking, byte-aligned; the program's is restored.
-  const GLenum kUnpack[] = {GL_UNPACK_SWAP_BYTES, GL_UNPACK_LSB_FIRST,   GL_UNPACK_ROW_LENGTH,
-                            GL_UNPACK_SKIP_ROWS,  GL_UNPACK_SKIP_PIXELS, GL_UNPACK_ALIGNMENT};
-  GLint saved[6];
-  for (int i = 0; i < 6; ++i) glGetIntegerv(kUnpack[i], &saved[i]);
+  // The lists are made with the default unpacking, byte-aligned; the program's is restored, the
+  // font and GC freed and an open list closed, also when an allocation fails on the way.
+  static constexpr GLenum kUnpack[] = {GL_UNPACK_SWAP_BYTES,  GL_UNPACK_LSB_FIRST,
+                                       GL_UNPACK_ROW_LENGTH,  GL_UNPACK_SKIP_ROWS,
+                                       GL_UNPACK_SKIP_PIXELS, GL_UNPACK_ALIGNMENT};
+  struct Restore {
+    Display* dpy;
+    XFontStruct* fs;
+    GC gc = nullptr;
+    GLint saved[6] = {};
+    bool list_open = false;  // a failure between glNewList and glEndList
+    ~Restore() {
+      if (list_open) glEndList();
+      if (gc != nullptr) XFreeGC(dpy, gc);
+      XFreeFontInfo(nullptr, fs, 1);
+      for (int i = 0; i < 6; ++i) glPixelStorei(kUnpack[i], saved[i]);
+    }
+  } restore{dpy, fs};
+  for (int i = 0; i < 6; ++i) glGetIntegerv(kUnpack[i], &restore.saved[i]);
   for (int i = 0; i < 5; ++i) glPixelStorei(kUnpack[i], 0);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
 
@@ -92,6 +106,7 @@ void use_x_font(Font font, int first, int count, int list_base) {
   XGCValues values{};
   values.font = fs->fid;
   GC gc = XCreateGC(dpy, scratch, GCFont, &values);
+  restore.gc = gc;
   XFreePixmap(dpy, scratch);
 
   for (int i = 0; i < count; ++i) {
@@ -103,6 +118,7 @@ void use_x_font(Font font, int first, int count, int list_base) {
     const int height = ch->ascent + ch->descent;
     const int row_bytes = (width + 7) / 8;
     glNewList(static_cast<GLuint>(list_base + i), GL_COMPILE);
+    restore.list_open = true;
     if (valid && row_bytes > 0 && height > 0) {
       const std::vector<GLubyte> bits =
           glyph_bitmap(dpy, root, gc, c, row_bytes, height, -ch->lbearing, ch->ascent);
@@ -113,10 +129,8 @@ void use_x_font(Font font, int first, int count, int list_base) {
       glBitmap(0, 0, 0, 0, static_cast<GLfloat>(ch->width), 0, nullptr);
     }
     glEndList();
+    restore.list_open = false;
   }
-  XFreeGC(dpy, gc);
-  XFreeFontInfo(nullptr, fs, 1);
-  for (int i = 0; i < 6; ++i) glPixelStorei(kUnpack[i], saved[i]);
 }
 
 }  // namespace

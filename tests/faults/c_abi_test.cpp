@@ -231,8 +231,11 @@ TEST_F(CAbi, GlxAllocationFailureIsTheFunctionsFailureAndBadAlloc) {
                 },
                 [&](GLenum error) {
                   if (error == GL_OUT_OF_MEMORY) {
-                    glEndList();  // a list the failure left open
-                    glGetError();
+                    GLint open_list = -1, alignment = 0;
+                    glGetIntegerv(GL_LIST_INDEX, &open_list);
+                    glGetIntegerv(GL_UNPACK_ALIGNMENT, &alignment);
+                    EXPECT_EQ(open_list, 0);  // closed again
+                    EXPECT_EQ(alignment, 4);  // the program's, restored
                     return true;
                   }
                   EXPECT_EQ(error, static_cast<GLenum>(GL_NO_ERROR));
