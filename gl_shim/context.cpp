@@ -22,6 +22,7 @@ Context::Context(const Context* shared)
     lists.store = shared->lists.store;
     buffers = shared->buffers;
     textures.store = shared->textures.store;
+    render_group = shared->render_group;
   }
 }
 
@@ -87,7 +88,7 @@ bool ensure_output(Context& ctx) {
   if (ctx.target == nullptr || ctx.renderer_unavailable) return false;
   if (ctx.output) return true;
   std::string error;
-  ctx.output = FrameOutput::create(&error);
+  ctx.output = FrameOutput::create(*ctx.render_group, &error);
   if (!ctx.output) {
     // Reported once per context (make-current does not retry it); the program keeps
     // running, its GL state answering, its frames showing the clear colour.
@@ -137,8 +138,8 @@ bool execute_record(Context& ctx) {
   bool ok = true;
   std::vector<rt::QuerySamples> samples;
   if (!ctx.recorder.empty() || drawable != ctx.output->drawable())
-    ok = ctx.output->execute(ctx.recorder.record(), drawable, ctx.recording_since.elapsed_ms(),
-                             &samples);
+    ok = ctx.output->execute(ctx.recorder.record(), *ctx.target, drawable,
+                             ctx.recording_since.elapsed_ms(), &samples);
   start_new_record(ctx);
   count_query_samples(ctx.queries, samples);
   return ok;
@@ -160,6 +161,7 @@ void end_frame(Context& ctx, bool swap) {
     if (ctx.clear_fallback && ctx.target) {
       ctx.recorder.seal();
       const rec::DrawableConfig drawable = current_drawable(ctx);
+      std::lock_guard lock(ctx.target->mutex());  // presenting, as FrameOutput::end_frame does
       ctx.clear_fallback->end_frame(ctx.recorder.record(), drawable.width, drawable.height,
                                     ctx.target);
       start_new_record(ctx);
@@ -169,7 +171,7 @@ void end_frame(Context& ctx, bool swap) {
   ctx.recorder.seal();
   std::vector<rt::QuerySamples> samples;
   ctx.output->end_frame(ctx.recorder.record(), current_drawable(ctx),
-                        ctx.recording_since.elapsed_ms(), ctx.target, swap, &samples);
+                        ctx.recording_since.elapsed_ms(), *ctx.target, swap, &samples);
   // Running totals, so a program killed mid-run (as screensavers are) still leaves them.
   if (ctx.output->stats_enabled()) {
     uint64_t unimplemented = 0;

@@ -100,6 +100,8 @@ class Context {
   // The buffers of the drawable the context was first made current with (GLX visual / EGL config):
   // what GL_DOUBLEBUFFER, GL_*_BITS and the initial draw/read buffers report.
   rec::DrawableConfig drawable;
+  // The renderer of the share group (shared with share_list, as the objects are).
+  std::shared_ptr<RenderGroup> render_group = std::make_shared<RenderGroup>();
   std::unique_ptr<FrameOutput> output;    // created when the first record is executed
   bool renderer_unavailable = false;      // creation failed: reported once, never retried
   void* window_system_context = nullptr;  // the GLX/EGL context wrapping this one

@@ -37,7 +37,7 @@ class GlptBackend final : public Backend {
     auto context = std::make_unique<Context>(shared);
     // The renderer now rather than at the first frame: a missing Vulkan device is a clear error
     // at the start, and frames can be seeded before they render.
-    context->output = FrameOutput::create(error);
+    context->output = FrameOutput::create(*context->render_group, error);
     if (!context->output) return nullptr;
     Context* handle = context.get();
     contexts_.push_back(std::move(context));

@@ -1,9 +1,11 @@
 #include "rt_core/renderer.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cstdlib>
 #include <cstring>
 #include <exception>
+#include <mutex>
 
 #include "rt_core/passes/gbuffer.hpp"
 #include "rt_core/passes/path_tracer.hpp"
@@ -47,11 +49,12 @@ class Renderer::Impl {
   }
 
   // Throws on failure (Renderer::execute turns that into false + message).
-  bool execute(const rec::FrameRecord& record, const rec::DrawableConfig& drawable,
-               FrameStats& stats, const FrameEnd* end, std::vector<QuerySamples>* queries) {
+  bool execute(const rec::FrameRecord& record, DrawableBuffers& buffers,
+               const rec::DrawableConfig& drawable, FrameStats& stats, const FrameEnd* end,
+               std::vector<QuerySamples>* queries) {
     stats = FrameStats();
     if (settings_.mode == RenderMode::kRaster || !tracer_) {
-      raster_.execute(record, drawable, stats, nullptr, end, nullptr, queries);
+      raster_.execute(record, buffers, drawable, stats, nullptr, end, nullptr, queries);
       return true;
     }
     // Path-traced mode (docs/architecture.md): the traced draws are rasterized into the
@@ -61,7 +64,7 @@ class Renderer::Impl {
     if (!scene_.any_traced || drawable.width == 0 || drawable.height == 0) {
       // Nothing traced (e.g. the rest of a frame after a glReadPixels): raster mode. The
       // accumulation stays valid for the next frame with the same signature.
-      raster_.execute(record, drawable, stats, nullptr, end, nullptr, queries);
+      raster_.execute(record, buffers, drawable, stats, nullptr, end, nullptr, queries);
       return true;
     }
     try {
@@ -72,7 +75,8 @@ class Renderer::Impl {
       // Occlusion queries count the traced draws' samples here, where they are rasterized with
       // their own pipelines' coverage, depth and stencil tests (only their outputs differ), and
       // the other draws' in pass 3.
-      raster_.execute(record, drawable, stats, &scene_.gbuffer_pass, nullptr, &targets, queries);
+      raster_.execute(record, buffers, drawable, stats, &scene_.gbuffer_pass, nullptr, &targets,
+                      queries);
       const TraceTargets trace_targets{&gbuffer_, raster_.color_image(true).view(),
                                        raster_.color_image(!drawable.double_buffered).view()};
       FrameStats traced;
@@ -90,9 +94,12 @@ class Renderer::Impl {
       tracer_->forget_previous_frame();  // nothing about this frame's accumulation holds
       throw;
     }
-    raster_.execute(record, drawable, stats, &scene_.after_trace, end, nullptr, queries);
+    raster_.execute(record, buffers, drawable, stats, &scene_.after_trace, end, nullptr, queries);
     return true;
   }
+
+  // Every public method holds it: contexts of one share group may be current on several threads.
+  std::mutex mutex;
 
  private:
   RenderSettings settings_;
@@ -115,7 +122,7 @@ std::unique_ptr<Renderer> Renderer::create(const RenderSettings& settings, std::
     if (const char* filter = std::getenv("GLPT_VK_DEVICE")) options.name_filter = filter;
     if (const char* hide = std::getenv("GLPT_VK_NO_RAY_QUERY"); hide && *hide && *hide != '0')
       options.hide_ray_query = true;
-    std::shared_ptr<VulkanDevice> device = VulkanDevice::create(options);
+    std::shared_ptr<VulkanDevice> device = VulkanDevice::shared(options);
     RenderSettings effective = settings;
     std::unique_ptr<PathTracer> tracer;
     if (settings.mode == RenderMode::kPathTraced) {
@@ -140,41 +147,59 @@ std::unique_ptr<Renderer> Renderer::create(const RenderSettings& settings, std::
 RenderMode Renderer::mode() const { return impl_->mode(); }
 const std::string& Renderer::device_name() const { return impl_->device_name(); }
 
-bool Renderer::execute(const rec::FrameRecord& record, const rec::DrawableConfig& drawable,
-                       FrameStats& stats, std::string* error, const FrameEnd* end,
-                       std::vector<QuerySamples>* queries) {
+bool Renderer::execute(const rec::FrameRecord& record, DrawableBuffers& buffers,
+                       const rec::DrawableConfig& drawable, FrameStats& stats, std::string* error,
+                       const FrameEnd* end, std::vector<QuerySamples>* queries) {
   if (queries != nullptr) queries->clear();
+  std::lock_guard lock(impl_->mutex);
   return guarded("render failed", error,
-                 [&] { return impl_->execute(record, drawable, stats, end, queries); });
+                 [&] { return impl_->execute(record, buffers, drawable, stats, end, queries); });
 }
 
-bool Renderer::read_color(uint32_t buffer, int32_t x, int32_t y, uint32_t width, uint32_t height,
-                          std::vector<uint8_t>& rgba, std::string* error) {
+bool Renderer::read_color(DrawableBuffers& buffers, uint32_t buffer, int32_t x, int32_t y,
+                          uint32_t width, uint32_t height, std::vector<uint8_t>& rgba,
+                          std::string* error) {
+  std::lock_guard lock(impl_->mutex);
+  return guarded("read failed", error, [&] {
+    return impl_->raster().read_color(buffers, buffer, x, y, width, height, rgba);
+  });
+}
+
+bool Renderer::read_depth(DrawableBuffers& buffers, int32_t x, int32_t y, uint32_t width,
+                          uint32_t height, std::vector<float>& depth, std::string* error) {
+  std::lock_guard lock(impl_->mutex);
   return guarded("read failed", error,
-                 [&] { return impl_->raster().read_color(buffer, x, y, width, height, rgba); });
+                 [&] { return impl_->raster().read_depth(buffers, x, y, width, height, depth); });
 }
 
-bool Renderer::read_depth(int32_t x, int32_t y, uint32_t width, uint32_t height,
-                          std::vector<float>& depth, std::string* error) {
-  return guarded("read failed", error,
-                 [&] { return impl_->raster().read_depth(x, y, width, height, depth); });
+bool Renderer::read_stencil(DrawableBuffers& buffers, int32_t x, int32_t y, uint32_t width,
+                            uint32_t height, std::vector<uint8_t>& stencil, std::string* error) {
+  std::lock_guard lock(impl_->mutex);
+  return guarded("read failed", error, [&] {
+    return impl_->raster().read_stencil(buffers, x, y, width, height, stencil);
+  });
 }
 
-bool Renderer::read_stencil(int32_t x, int32_t y, uint32_t width, uint32_t height,
-                            std::vector<uint8_t>& stencil, std::string* error) {
-  return guarded("read failed", error,
-                 [&] { return impl_->raster().read_stencil(x, y, width, height, stencil); });
-}
-
-bool Renderer::swap_buffers(std::string* error) {
+bool Renderer::swap_buffers(DrawableBuffers& buffers, std::string* error) {
+  std::lock_guard lock(impl_->mutex);
   return guarded("swap failed", error, [&] {
-    impl_->raster().swap_buffers();
+    impl_->raster().swap_buffers(buffers);
     return true;
   });
 }
 
 void Renderer::start_independent_frame(uint64_t frame_index) {
+  std::lock_guard lock(impl_->mutex);
   impl_->start_independent_frame(frame_index);
+}
+
+uint64_t new_host_image_generation() {
+  static std::atomic<uint64_t> next{1};  // an id allocator, process-wide like the device
+  return next.fetch_add(1, std::memory_order_relaxed);
+}
+
+std::shared_ptr<DrawableBuffers> create_drawable_buffers() {
+  return std::make_shared<DrawableBuffers>();
 }
 
 }  // namespace glpt::rt

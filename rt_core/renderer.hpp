@@ -4,8 +4,11 @@
 // The drawable's buffers (colour front and back, depth, stencil, accumulation) persist between
 // records as GL's do; a record only applies its commands to them. Reads answer from them.
 //
-// Not thread-safe: one Renderer is used by one thread at a time (the GL context's). No exception
-// leaves this API; failures come back as nullptr / false with a message.
+// A Renderer holds what a share group's contexts share on the GPU (textures, pipelines,
+// acceleration structures, the path tracer's history); the device under it is the process's
+// (one per process). Its methods may be called from several threads (contexts of one share
+// group current on different threads): they are serialized. No exception leaves this API;
+// failures come back as nullptr / false with a message.
 #pragma once
 
 #include <cstdint>
@@ -24,8 +27,11 @@ namespace glpt::rt {
 struct HostImage {
   uint8_t* pixels = nullptr;
   uint32_t width = 0, height = 0;
-  uint64_t generation = 0;  // changes whenever `pixels` is (re)allocated
+  // A new value from new_host_image_generation() whenever `pixels` is (re)allocated: renderers
+  // import the memory once per generation, and present to several windows.
+  uint64_t generation = 0;
 };
+uint64_t new_host_image_generation();  // unique in the process
 
 // What happens at the end of a frame, in the same submission as the record's commands (one
 // round trip into the Vulkan queue per frame).
@@ -42,6 +48,13 @@ struct QuerySamples {
   uint64_t samples = 0;
 };
 
+// The buffers of one GL drawable (colour front and back, depth/stencil, accumulation; see
+// raster/drawable_buffers.hpp). They belong to the drawable: every context drawing to it (with
+// any renderer of the process) draws into and reads the same buffers. Created empty; the first
+// execute on them allocates them. Not thread-safe: the caller serializes uses of one drawable.
+struct DrawableBuffers;
+std::shared_ptr<DrawableBuffers> create_drawable_buffers();
+
 class Renderer {
  public:
   // nullptr + one clear message in *error when no usable Vulkan device exists (it names what is
@@ -56,27 +69,27 @@ class Renderer {
   RenderMode mode() const;
   const std::string& device_name() const;
 
-  // Applies the record's commands to the drawable's buffers. Buffers are (re)created when the
+  // Applies the record's commands to the drawable's `buffers`. They are (re)created when the
   // drawable's configuration changes; their contents are then undefined, as after a resize.
   // `queries` (may be null) receives one entry per occlusion query the record counts into
   // (active at its start or begun in it), zero samples included.
-  bool execute(const rec::FrameRecord& record, const rec::DrawableConfig& drawable,
-               FrameStats& stats, std::string* error, const FrameEnd* end = nullptr,
-               std::vector<QuerySamples>* queries = nullptr);
+  bool execute(const rec::FrameRecord& record, DrawableBuffers& buffers,
+               const rec::DrawableConfig& drawable, FrameStats& stats, std::string* error,
+               const FrameEnd* end = nullptr, std::vector<QuerySamples>* queries = nullptr);
 
   // A rectangle of a colour buffer (GL_FRONT*, GL_BACK*: the resolved read buffer) as RGBA8,
   // rows bottom to top; pixels outside the drawable are zero. False before the first execute.
-  bool read_color(uint32_t buffer, int32_t x, int32_t y, uint32_t width, uint32_t height,
-                  std::vector<uint8_t>& rgba, std::string* error);
+  bool read_color(DrawableBuffers& buffers, uint32_t buffer, int32_t x, int32_t y, uint32_t width,
+                  uint32_t height, std::vector<uint8_t>& rgba, std::string* error);
   // Window depth in [0, 1] and stencil values of the rectangle; false if the drawable has none.
-  bool read_depth(int32_t x, int32_t y, uint32_t width, uint32_t height, std::vector<float>& depth,
-                  std::string* error);
-  bool read_stencil(int32_t x, int32_t y, uint32_t width, uint32_t height,
+  bool read_depth(DrawableBuffers& buffers, int32_t x, int32_t y, uint32_t width, uint32_t height,
+                  std::vector<float>& depth, std::string* error);
+  bool read_stencil(DrawableBuffers& buffers, int32_t x, int32_t y, uint32_t width, uint32_t height,
                     std::vector<uint8_t>& stencil, std::string* error);
 
   // glXSwapBuffers of a double-buffered drawable: the front buffer takes the back buffer's
   // contents, and the back buffer keeps them (Mesa's software swap does the same).
-  bool swap_buffers(std::string* error);
+  bool swap_buffers(DrawableBuffers& buffers, std::string* error);
 
   // The next frame depends on no earlier one (glpt-replay's shards): path-traced accumulation
   // restarts and its random sequence is seeded by `frame_index`. Raster mode has no such state.

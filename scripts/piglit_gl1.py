@@ -3,11 +3,12 @@
 results as a Markdown table (docs/piglit.md by default).
 
     scripts/piglit_gl1.py [--libgl build/gl_shim/libGL.so.1] [--filter REGEX] [--jobs 2]
-                          [--timeout 120] [--out docs/piglit.md]
+                          [--timeout 120] [--out docs/piglit.md] [--groups REGEX]
 
 The tests are those of Debian's piglit package (`piglit print-cmd opengl`) in the groups
 "spec@!opengl 1.0" .. "spec@!opengl 1.5" (piglit's tests/spec/gl-1.* and the older general/
-tests that need only GL 1.x). Each runs on the window (without piglit's -fbo: glpt implements
+tests that need only GL 1.x); `--groups '^glx@'` runs piglit's GLX tests instead (contexts,
+drawables, several contexts and threads: docs/piglit-glx.md). Each runs on the window (without piglit's -fbo: glpt implements
 GL 1.5, which has no framebuffer objects), in one private Xvfb (tests/e2e/with_xvfb.sh), once
 with the system libGL (Mesa llvmpipe) and once with glpt preloaded (GLPT_MODE=raster). A test's
 result is its last `PIGLIT: {"result": ...}` line; no line is "crash", a timeout "timeout".
@@ -25,10 +26,10 @@ import sys
 import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-GROUPS = re.compile(r"^spec@!opengl 1\.[0-5]@")
+GL1_GROUPS = r"^spec@!opengl 1\.[0-5]@"
 
 
-def list_tests(pattern):
+def list_tests(groups, pattern):
     out = subprocess.run(["piglit", "print-cmd", "opengl"], capture_output=True, text=True,
                          check=True).stdout
     tests = []
@@ -36,7 +37,7 @@ def list_tests(pattern):
         if " ::: " not in line:
             continue
         name, command = line.split(" ::: ", 1)
-        if not GROUPS.search(name) or (pattern and not re.search(pattern, name)):
+        if not re.search(groups, name) or (pattern and not re.search(pattern, name)):
             continue
         argv = [a for a in shlex.split(command) if a != "-fbo"]
         tests.append((name, argv))
@@ -108,6 +109,8 @@ def main():
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--timeout", type=int, default=120, help="seconds per test run")
     ap.add_argument("--out", default=os.path.join(ROOT, "docs/piglit.md"))
+    ap.add_argument("--groups", default=GL1_GROUPS,
+                    help="tests whose name matches this regex (default: the GL 1.0-1.5 groups)")
     args = ap.parse_args()
 
     if "DISPLAY" not in os.environ or not os.environ.get("GLPT_PIGLIT_UNDER_XVFB"):
@@ -119,7 +122,7 @@ def main():
     libgl = os.path.realpath(args.libgl)
     if not os.path.isfile(libgl):
         sys.exit(f"piglit_gl1: libGL not found: {libgl}")
-    tests = list_tests(args.filter)
+    tests = list_tests(args.groups, args.filter)
     mesa_env = dict(os.environ)
     glpt_env = dict(os.environ, LD_PRELOAD=libgl, GLPT_MODE="raster", GLPT_QUIET="1")
     results = {}
@@ -147,9 +150,12 @@ def main():
     elapsed = time.monotonic() - started
     command = "scripts/piglit_gl1.py" + "".join(
         f" {flag} {shlex.quote(str(value))}" for flag, value in
-        (("--filter", args.filter), ("--jobs", args.jobs), ("--timeout", args.timeout)) if value)
+        (("--filter", args.filter), ("--jobs", args.jobs), ("--timeout", args.timeout),
+         ("--groups", args.groups if args.groups != GL1_GROUPS else "")) if value)
+    what = ("OpenGL 1.0-1.5 tests" if args.groups == GL1_GROUPS
+            else f"tests matching `{args.groups}`")
     lines = [
-        "# piglit: OpenGL 1.0-1.5 tests, real Mesa vs glpt raster mode",
+        f"# piglit: {what}, real Mesa vs glpt raster mode",
         "",
         f"Produced by `{command}` ({len(tests)} tests, {elapsed:.0f} s, "
         f"{time.strftime('%Y-%m-%d')}). Mesa is the system libGL (llvmpipe, "

@@ -9,15 +9,19 @@ namespace glpt {
 namespace {
 
 void call_list(Context& ctx, GLuint name) {
-  auto& store = *ctx.lists.store;
-  auto it = store.lists.find(name);
-  if (it == store.lists.end() || !it->second.defined) return;  // undefined lists do nothing
   if (ctx.lists.call_depth >= DisplayListState::kMaxNesting) return;
+  std::shared_ptr<const ListStream> stream;
+  {
+    DisplayListStore& store = *ctx.lists.store;
+    std::lock_guard lock(store.mutex);
+    auto it = store.lists.find(name);
+    if (it == store.lists.end() || !it->second.defined) return;  // undefined lists do nothing
+    stream = it->second.stream;
+  }
+  // Replayed without the lock (lists call lists) and without copying: the stream is immutable
+  // and this call holds it.
   ++ctx.lists.call_depth;
-  // Replay without copying: the entry stays valid while it runs because every command that
-  // could redefine, delete or add lists (glNewList, glDeleteLists, glGenLists) is executed
-  // immediately rather than compiled, so none can run from inside a list.
-  replay_list(ctx, it->second.stream);
+  replay_list(ctx, *stream);
   --ctx.lists.call_depth;
 }
 
@@ -92,11 +96,15 @@ void glNewList(Context& ctx, GLuint list, GLenum mode) {
 
 void glEndList(Context& ctx) {
   if (!ctx.lists.compiling()) return record_error(ctx, GL_INVALID_OPERATION);
-  auto& store = *ctx.lists.store;
-  auto& entry = store.lists[ctx.lists.compiling_name];
-  entry.stream = std::move(ctx.lists.pending);
-  entry.defined = true;
+  auto stream = std::make_shared<const ListStream>(std::move(ctx.lists.pending));
   ctx.lists.pending = ListStream();
+  {
+    DisplayListStore& store = *ctx.lists.store;
+    std::lock_guard lock(store.mutex);
+    DisplayListStore::Entry& entry = store.lists[ctx.lists.compiling_name];
+    entry.stream = std::move(stream);
+    entry.defined = true;
+  }
   ctx.lists.compiling_name = 0;
   ctx.lists.compiling_mode = 0;
 }
@@ -121,6 +129,7 @@ GLuint glGenLists(Context& ctx, GLsizei range) {
     return 0;
   }
   if (range == 0) return 0;
+  std::lock_guard lock(ctx.lists.store->mutex);
   auto& lists = ctx.lists.store->lists;
   // The first run of `range` unused names after the highest one in use (or from 1).
   GLuint start = 1;
@@ -141,6 +150,7 @@ GLuint glGenLists(Context& ctx, GLsizei range) {
 
 void glDeleteLists(Context& ctx, GLuint list, GLsizei range) {
   if (range < 0) return record_error(ctx, GL_INVALID_VALUE);
+  std::lock_guard lock(ctx.lists.store->mutex);
   auto& lists = ctx.lists.store->lists;
   if (static_cast<size_t>(range) > lists.size()) {
     std::erase_if(lists, [&](const auto& kv) {
@@ -153,6 +163,7 @@ void glDeleteLists(Context& ctx, GLuint list, GLsizei range) {
 }
 
 GLboolean glIsList(Context& ctx, GLuint list) {
+  std::lock_guard lock(ctx.lists.store->mutex);
   auto& lists = ctx.lists.store->lists;
   auto it = lists.find(list);
   return it != lists.end() && it->second.defined ? 1 : 0;

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <mutex>
 #include <unordered_map>
 
 #include "gl_shim/display_lists/list_stream.hpp"
@@ -13,9 +14,14 @@ namespace glpt {
 
 struct DisplayListStore {
   struct Entry {
-    ListStream stream;
+    // Immutable once defined, and held by each glCallList running it: a context of the share
+    // group on another thread may redefine or delete the list meanwhile.
+    std::shared_ptr<const ListStream> stream;
     bool defined = false;  // glGenLists reserves names; glEndList defines them
   };
+  // Guards `lists`: contexts of a share group may be current on several threads (GL leaves the
+  // order of their changes to the program, but they must never corrupt the store).
+  std::mutex mutex;
   std::unordered_map<GLuint, Entry> lists;
 };
 

@@ -70,9 +70,9 @@ void write_frame_png(const OutputSettings& settings, uint64_t frame_index, uint3
   }
 }
 
-std::unique_ptr<FrameOutput> FrameOutput::create(std::string* error) {
+std::unique_ptr<FrameOutput> FrameOutput::create(RenderGroup& group, std::string* error) {
   std::string notice;
-  auto renderer = rt::Renderer::create(rt::RenderSettings::from_environment(), error, &notice);
+  std::shared_ptr<rt::Renderer> renderer = group.renderer(error, &notice);
   if (!renderer) return nullptr;
   if (!notice.empty()) std::fprintf(stderr, "%s\n", notice.c_str());
   OutputSettings settings = OutputSettings::from_environment();
@@ -80,7 +80,7 @@ std::unique_ptr<FrameOutput> FrameOutput::create(std::string* error) {
   return std::unique_ptr<FrameOutput>(new FrameOutput(std::move(renderer), std::move(settings)));
 }
 
-FrameOutput::FrameOutput(std::unique_ptr<rt::Renderer> renderer, OutputSettings settings)
+FrameOutput::FrameOutput(std::shared_ptr<rt::Renderer> renderer, OutputSettings settings)
     : renderer_(std::move(renderer)), settings_(std::move(settings)) {}
 
 void FrameOutput::report_failure(const std::string& error) {
@@ -88,13 +88,15 @@ void FrameOutput::report_failure(const std::string& error) {
   failure_reported_ = true;
 }
 
-bool FrameOutput::execute(const rec::FrameRecord& record, const rec::DrawableConfig& drawable,
-                          double record_ms, std::vector<rt::QuerySamples>* queries) {
+bool FrameOutput::execute(const rec::FrameRecord& record, WindowTarget& target,
+                          const rec::DrawableConfig& drawable, double record_ms,
+                          std::vector<rt::QuerySamples>* queries) {
   std::string error;
   rt::FrameStats stats;
   drawable_ = drawable;
   record_ms_ += record_ms;
-  if (!renderer_->execute(record, drawable, stats, &error, nullptr, queries)) {
+  std::lock_guard lock(target.mutex());
+  if (!renderer_->execute(record, target.buffers(), drawable, stats, &error, nullptr, queries)) {
     report_failure(error);
     return false;
   }
@@ -103,7 +105,7 @@ bool FrameOutput::execute(const rec::FrameRecord& record, const rec::DrawableCon
 }
 
 void FrameOutput::end_frame(const rec::FrameRecord& record, const rec::DrawableConfig& drawable,
-                            double record_ms, WindowTarget* target, bool swap,
+                            double record_ms, WindowTarget& target, bool swap,
                             std::vector<rt::QuerySamples>* queries) {
   const double frame_ms = since_last_frame_.elapsed_ms();
   std::string error;
@@ -113,20 +115,25 @@ void FrameOutput::end_frame(const rec::FrameRecord& record, const rec::DrawableC
   // With host memory from the window (X shared memory), the frame goes there inside the
   // renderer's submission and presenting is one request; the RGBA copy is only made for PNGs.
   const uint32_t width = drawable_.width, height = drawable_.height;
-  const rt::HostImage* host = target ? target->host_image(width, height) : nullptr;
+  // The drawable is held from the execute to the present: another context drawing to it (on
+  // another thread) must not change its buffers or the window's memory in between.
+  std::unique_lock lock(target.mutex());
+  const rt::HostImage* host = target.host_image(width, height);
   const bool want_png = !settings_.png_dir.empty() && frame_index_ % settings_.png_every == 0;
   const rt::FrameEnd end{swap, host == nullptr || want_png ? &image_ : nullptr, host};
   image_.clear();
-  const bool ok = renderer_->execute(record, drawable, stats, &error, &end, queries);
+  const bool ok =
+      renderer_->execute(record, target.buffers(), drawable, stats, &error, &end, queries);
   if (!ok) report_failure(error);
   add(frame_stats_, stats);
   const Stopwatch present_timer;
   const bool have_image =
       ok && width > 0 && height > 0 && image_.size() == size_t{width} * height * 4;
   if (ok && host != nullptr)
-    target->present_host_image();
-  else if (have_image && target)
-    target->present(image_.data(), width, height);
+    target.present_host_image();
+  else if (have_image)
+    target.present(image_.data(), width, height);
+  lock.unlock();
   const double present_ms = present_timer.elapsed_ms();
 
   if (have_image && !settings_.png_dir.empty() && frame_index_ % settings_.png_every == 0)

@@ -5,10 +5,12 @@
 
 #include <cstdint>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 
 #include "common/stopwatch.hpp"
+#include "gl_shim/frame/render_group.hpp"
 #include "rt_core/frame_stats.hpp"
 #include "rt_core/record/frame_record.hpp"
 #include "rt_core/renderer.hpp"
@@ -33,6 +35,16 @@ class WindowTarget {
     return nullptr;
   }
   virtual void present_host_image() {}
+
+  // The drawable's buffers: every context drawing to it draws into and reads these (GLX and EGL
+  // let several contexts share a drawable, one after another or on several threads).
+  rt::DrawableBuffers& buffers() { return *buffers_; }
+  // Held while a context executes on, reads or presents the drawable.
+  std::mutex& mutex() { return mutex_; }
+
+ private:
+  std::shared_ptr<rt::DrawableBuffers> buffers_ = rt::create_drawable_buffers();
+  std::mutex mutex_;
 };
 
 struct OutputSettings {
@@ -54,18 +66,21 @@ void write_frame_png(const OutputSettings& settings, uint64_t frame_index, uint3
 
 class FrameOutput {
  public:
-  // nullptr and a message if no renderer can be created (e.g. no Vulkan device).
-  static std::unique_ptr<FrameOutput> create(std::string* error);
+  // A context's output, rendering with its share group's renderer. nullptr and a message if no
+  // renderer can be created (e.g. no Vulkan device).
+  static std::unique_ptr<FrameOutput> create(RenderGroup& group, std::string* error);
 
-  // Applies `record` to the drawable's buffers. `record_ms`: time spent recording it.
-  // `queries`: the samples counted for its occlusion queries (rt::Renderer::execute).
-  bool execute(const rec::FrameRecord& record, const rec::DrawableConfig& drawable,
-               double record_ms, std::vector<rt::QuerySamples>* queries = nullptr);
+  // Applies `record` to the buffers of `target`, whose configuration is `drawable`. `record_ms`:
+  // time spent recording it. `queries`: the samples counted for its occlusion queries
+  // (rt::Renderer::execute).
+  bool execute(const rec::FrameRecord& record, WindowTarget& target,
+               const rec::DrawableConfig& drawable, double record_ms,
+               std::vector<rt::QuerySamples>* queries = nullptr);
   // End of a frame: a swap (double-buffered) or glFlush/glFinish of a single-buffered drawable.
   // Executes the rest of the frame's record, swaps if asked (all in one submission), shows the
-  // front buffer in `target` (may be null), writes the PNG and prints the frame's statistics.
+  // front buffer in `target`, writes the PNG and prints the frame's statistics.
   void end_frame(const rec::FrameRecord& record, const rec::DrawableConfig& drawable,
-                 double record_ms, WindowTarget* target, bool swap,
+                 double record_ms, WindowTarget& target, bool swap,
                  std::vector<rt::QuerySamples>* queries = nullptr);
 
   rt::Renderer& renderer() { return *renderer_; }
@@ -75,10 +90,10 @@ class FrameOutput {
   const rec::DrawableConfig& drawable() const { return drawable_; }
 
  private:
-  FrameOutput(std::unique_ptr<rt::Renderer> renderer, OutputSettings settings);
+  FrameOutput(std::shared_ptr<rt::Renderer> renderer, OutputSettings settings);
   void report_failure(const std::string& error);
 
-  std::unique_ptr<rt::Renderer> renderer_;
+  std::shared_ptr<rt::Renderer> renderer_;  // the share group's
   OutputSettings settings_;
   rec::DrawableConfig drawable_{0, 0};
   std::vector<uint8_t> image_;  // the front buffer, for presenting

@@ -31,13 +31,15 @@ bool read_framebuffer(Context& ctx, rec::PixelKind kind, uint32_t buffer, int32_
   }
   rt::Renderer& renderer = ctx.output->renderer();
   const rec::DrawableConfig& drawable = ctx.output->drawable();
+  std::lock_guard lock(ctx.target->mutex());
+  rt::DrawableBuffers& buffers = ctx.target->buffers();
   std::string error;
   const size_t n = size_t{width} * height;
   bool ok = false;
   switch (kind) {
     case rec::PixelKind::kColor: {
       std::vector<uint8_t> rgba;
-      ok = renderer.read_color(buffer, x, y, width, height, rgba, &error);
+      ok = renderer.read_color(buffers, buffer, x, y, width, height, rgba, &error);
       if (ok) {
         out.color.resize(n);
         for (size_t i = 0; i < n; ++i)
@@ -47,11 +49,11 @@ bool read_framebuffer(Context& ctx, rec::PixelKind kind, uint32_t buffer, int32_
       break;
     }
     case rec::PixelKind::kDepth:
-      ok = renderer.read_depth(x, y, width, height, out.depth, &error);
+      ok = renderer.read_depth(buffers, x, y, width, height, out.depth, &error);
       break;
     case rec::PixelKind::kStencil: {
       std::vector<uint8_t> stencil;
-      ok = renderer.read_stencil(x, y, width, height, stencil, &error);
+      ok = renderer.read_stencil(buffers, x, y, width, height, stencil, &error);
       if (ok) out.stencil.assign(stencil.begin(), stencil.end());
       break;
     }

@@ -39,11 +39,11 @@ struct __GLXcontextRec {
   int screen = 0;
   GLXDrawable drawable = None;
   GLXDrawable readable = None;
-  // The X windows and pixmaps this context drew to lately, each with glpt's own connection to
-  // it, and when each was last made current (a program that makes new windows now and then does
-  // not pile up connections).
+  // The X windows and pixmaps this context drew to lately (their targets are shared with the
+  // other contexts drawing to them, DisplayState::window_targets), and when each was last made
+  // current (a program that makes new windows now and then does not pile up connections).
   struct WindowEntry {
-    std::unique_ptr<glpt::X11WindowTarget> target;
+    std::shared_ptr<glpt::X11WindowTarget> target;
     uint64_t last_use = 0;
   };
   std::map<XID, WindowEntry> windows;
@@ -122,8 +122,37 @@ bool find_glx_drawable(DisplayState* state, XID id, GlxDrawable* out) {
   return true;
 }
 
-// The target drawing to X window or pixmap `x` for `ctx`, created on first use. nullptr (and
-// GLXBadDrawable) when `x` is not a drawable of the display.
+// The target drawing to X window or pixmap `x`, shared by every context drawing to it, created
+// on first use. nullptr (and GLXBadDrawable) when `x` is not a drawable of the display.
+std::shared_ptr<glpt::X11WindowTarget> shared_window_target(Display* dpy, DisplayState* state,
+                                                            XID x, const Config* config,
+                                                            int minor) {
+  {
+    std::lock_guard lock(state->mutex);
+    std::erase_if(state->window_targets, [](const auto& e) { return e.second.expired(); });
+    auto it = state->window_targets.find(x);
+    if (it != state->window_targets.end())
+      if (std::shared_ptr<glpt::X11WindowTarget> target = it->second.lock()) return target;
+  }
+  // glpt's connection is about to ask the server about a window the program may have created
+  // just now: its requests must have reached the server first (as Mesa's own requests on `dpy`
+  // follow them), so a program needs no XSync of its own.
+  XSync(dpy, False);
+  std::string error;
+  std::shared_ptr<glpt::X11WindowTarget> target = glpt::X11WindowTarget::create(
+      DisplayString(dpy), static_cast<uint32_t>(x), glpt::glx::drawable_config(*config), &error);
+  uint32_t w = 0, h = 0;
+  if (!target || !target->query_size(&w, &h)) {
+    if (!error.empty()) std::fprintf(stderr, "glpt: %s\n", error.c_str());
+    glpt::glx::send_glx_error(dpy, glpt::glx::kGlxBadDrawable, x, minor);
+    return nullptr;
+  }
+  std::lock_guard lock(state->mutex);
+  state->window_targets[x] = target;
+  return target;
+}
+
+// The target of X window or pixmap `x` for `ctx`, remembered among the context's recent ones.
 glpt::WindowTarget* window_target(Display* dpy, GLXContext ctx, XID x, const Config* config,
                                   int minor) {
   auto it = ctx->windows.find(x);
@@ -131,19 +160,10 @@ glpt::WindowTarget* window_target(Display* dpy, GLXContext ctx, XID x, const Con
     it->second.last_use = ++ctx->uses;
     return it->second.target.get();
   }
-  // glpt's connection is about to ask the server about a window the program may have created
-  // just now: its requests must have reached the server first (as Mesa's own requests on `dpy`
-  // follow them), so a program needs no XSync of its own.
-  XSync(dpy, False);
-  std::string error;
-  auto target = glpt::X11WindowTarget::create(DisplayString(dpy), static_cast<uint32_t>(x),
-                                              glpt::glx::drawable_config(*config), &error);
-  uint32_t w = 0, h = 0;
-  if (!target || !target->query_size(&w, &h)) {
-    if (!error.empty()) std::fprintf(stderr, "glpt: %s\n", error.c_str());
-    glpt::glx::send_glx_error(dpy, glpt::glx::kGlxBadDrawable, x, minor);
-    return nullptr;
-  }
+  DisplayState* state = DisplayState::of(dpy);
+  std::shared_ptr<glpt::X11WindowTarget> target =
+      state ? shared_window_target(dpy, state, x, config, minor) : nullptr;
+  if (!target) return nullptr;
   // Keep the few most recently used (the current one is never the oldest: it was just used).
   constexpr size_t kMaxCachedWindows = 4;
   if (ctx->windows.size() >= kMaxCachedWindows) {

@@ -16,6 +16,10 @@
 #include "gl_shim/glx/glx_configs.hpp"
 #include "gl_shim/process_owner.hpp"
 
+namespace glpt {
+class X11WindowTarget;
+}
+
 namespace glpt::glx {
 
 enum class DrawableKind { kWindow, kPixmap, kPbuffer };
@@ -50,8 +54,11 @@ class DisplayState {
   int glx_error_base() const { return glx_error_base_; }
   int glx_event_base() const { return glx_event_base_; }
 
-  std::mutex mutex;  // guards drawables and swap_intervals
+  std::mutex mutex;  // guards drawables, swap_intervals and window_targets
   std::map<XID, GlxDrawable> drawables;
+  // The X windows and pixmaps contexts draw to, each with glpt's connection to it and its
+  // buffers: one per X drawable, shared by every context drawing to it (held by the contexts).
+  std::map<XID, std::weak_ptr<X11WindowTarget>> window_targets;
   std::map<XID, int> swap_intervals;  // GLX_EXT_swap_control, per drawable (default 1)
 
   explicit DisplayState(Display* dpy);

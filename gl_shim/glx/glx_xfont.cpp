@@ -88,14 +88,19 @@ void use_x_font(Font font, int first, int count, int list_base) {
     XFontStruct* fs;
     GC gc = nullptr;
     GLint saved[6] = {};
-    bool list_open = false;  // a failure between glNewList and glEndList
+    GLint program_list = 0;  // a list the program is compiling (then glNewList fails here)
     ~Restore() {
-      if (list_open) glEndList();
+      // A list of ours left open by a failure (also one inside glNewList or glEndList, which
+      // catch it themselves) is closed, or the program's commands would go into it.
+      GLint open_list = 0;
+      glGetIntegerv(GL_LIST_INDEX, &open_list);
+      if (open_list != program_list) glEndList();
       if (gc != nullptr) XFreeGC(dpy, gc);
       XFreeFontInfo(nullptr, fs, 1);
       for (int i = 0; i < 6; ++i) glPixelStorei(kUnpack[i], saved[i]);
     }
   } restore{dpy, fs};
+  glGetIntegerv(GL_LIST_INDEX, &restore.program_list);
   for (int i = 0; i < 6; ++i) glGetIntegerv(kUnpack[i], &restore.saved[i]);
   for (int i = 0; i < 5; ++i) glPixelStorei(kUnpack[i], 0);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
@@ -118,7 +123,6 @@ void use_x_font(Font font, int first, int count, int list_base) {
     const int height = ch->ascent + ch->descent;
     const int row_bytes = (width + 7) / 8;
     glNewList(static_cast<GLuint>(list_base + i), GL_COMPILE);
-    restore.list_open = true;
     if (valid && row_bytes > 0 && height > 0) {
       const std::vector<GLubyte> bits =
           glyph_bitmap(dpy, root, gc, c, row_bytes, height, -ch->lbearing, ch->ascent);
@@ -129,7 +133,6 @@ void use_x_font(Font font, int first, int count, int list_base) {
       glBitmap(0, 0, 0, 0, static_cast<GLfloat>(ch->width), 0, nullptr);
     }
     glEndList();
-    restore.list_open = false;
   }
 }
 

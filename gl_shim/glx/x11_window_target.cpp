@@ -88,7 +88,7 @@ const rt::HostImage* X11WindowTarget::host_image(uint32_t width, uint32_t height
     shm_available_ = false;  // e.g. a server on another host
     return nullptr;
   }
-  shm_image_ = {static_cast<uint8_t*>(memory), width, height, ++shm_generations_};
+  shm_image_ = {static_cast<uint8_t*>(memory), width, height, rt::new_host_image_generation()};
   return &shm_image_;
 }
 
@@ -149,7 +149,8 @@ bool X11WindowTarget::prepare() {
           depth_ = d.data->depth;
         }
   if (depth_ != 24 && depth_ != 32) {
-    std::fprintf(stderr, "glpt: cannot present to a window of depth %u (need 24 or 32)\n", depth_);
+    std::fprintf(stderr, "glpt: cannot present to a window of depth %u (need 24 or 32)\n",
+                 depth_.load());
     return false;
   }
   gc_ = xcb_generate_id(connection_);

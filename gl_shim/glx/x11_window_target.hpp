@@ -5,6 +5,7 @@
 // program. XCB returns errors per request, so a window that vanished is just a failed present.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -42,7 +43,7 @@ class X11WindowTarget final : public WindowTarget {
   ProcessOwner owner_;  // only the process that connected may send requests or disconnect
   rec::DrawableConfig config_;
   uint32_t gc_ = 0;
-  uint8_t depth_ = 0;
+  std::atomic<uint8_t> depth_ = 0;  // written by query_size, which any thread may call
   int red_shift_ = 16, green_shift_ = 8, blue_shift_ = 0;
   bool prepared_ = false;
   bool lsb_first_ = true;  // server image byte order
@@ -52,7 +53,6 @@ class X11WindowTarget final : public WindowTarget {
   bool shm_checked_ = false, shm_available_ = false;
   uint32_t shm_segment_ = 0;  // xcb_shm_seg_t, 0 when none is attached
   rt::HostImage shm_image_;
-  uint64_t shm_generations_ = 0;
   void release_shm();
   void round_trip();
 };

@@ -229,10 +229,11 @@ bool RasterRenderer::prepare_pixels(Recording& r, size_t index, Arena& arena,
     }
   } else if (const auto* c = std::get_if<rec::CopyPixels>(&command)) {
     const ColorTargets targets =
-        resolve_draw_buffer(state->raster->ops.draw_buffer, drawable_.double_buffered);
+        resolve_draw_buffer(state->raster->ops.draw_buffer, buffers_->config.double_buffered);
     // Mesa never blits while an occlusion query is active: the copy's fragments count.
-    const std::optional<Blit> blit =
-        queries_.query_of(index) == 0 ? blit_region(*c, *state, drawable_, targets) : std::nullopt;
+    const std::optional<Blit> blit = queries_.query_of(index) == 0
+                                         ? blit_region(*c, *state, buffers_->config, targets)
+                                         : std::nullopt;
     if (blit) {
       plan.prepared = true;
       plan.blit = true;
@@ -241,8 +242,8 @@ bool RasterRenderer::prepare_pixels(Recording& r, size_t index, Arena& arena,
       return true;
     }
     // The source as far as it lies in the drawable; the rest of the image reads as zero.
-    const VkRect2D inside =
-        intersect_with_framebuffer(c->x, c->y, int32_t(c->width), int32_t(c->height), drawable_);
+    const VkRect2D inside = intersect_with_framebuffer(c->x, c->y, int32_t(c->width),
+                                                       int32_t(c->height), buffers_->config);
     stored = glm::uvec4(uint32_t(inside.offset.x - c->x), uint32_t(inside.offset.y - c->y),
                         inside.extent.width, inside.extent.height);
     const size_t texels = size_t{inside.extent.width} * inside.extent.height;
@@ -265,12 +266,13 @@ bool RasterRenderer::prepare_pixels(Recording& r, size_t index, Arena& arena,
     s.pixel_table = glm::uvec4(0xFFFFFFFFu, uint32_t(int32_t(p0.x)), uint32_t(int32_t(p0.y)), 0);
   } else {
     // Which group each window column and row of the quad takes, per triangle of Mesa's quad.
-    const PixelQuad mesa = mesa_pixel_quad(p0, p1, drawable_.width, drawable_.height, image.copy);
+    const PixelQuad mesa =
+        mesa_pixel_quad(p0, p1, buffers_->config.width, buffers_->config.height, image.copy);
     const glm::vec2 low = glm::min(p0, p1), high = glm::max(p0, p1);
-    const int32_t x0 = std::clamp(int32_t(std::floor(low.x)), 0, int32_t(drawable_.width));
-    const int32_t x1 = std::clamp(int32_t(std::ceil(high.x)), 0, int32_t(drawable_.width));
-    const int32_t y0 = std::clamp(int32_t(std::floor(low.y)), 0, int32_t(drawable_.height));
-    const int32_t y1 = std::clamp(int32_t(std::ceil(high.y)), 0, int32_t(drawable_.height));
+    const int32_t x0 = std::clamp(int32_t(std::floor(low.x)), 0, int32_t(buffers_->config.width));
+    const int32_t x1 = std::clamp(int32_t(std::ceil(high.x)), 0, int32_t(buffers_->config.width));
+    const int32_t y0 = std::clamp(int32_t(std::floor(low.y)), 0, int32_t(buffers_->config.height));
+    const int32_t y1 = std::clamp(int32_t(std::ceil(high.y)), 0, int32_t(buffers_->config.height));
     s.pixel_table = glm::uvec4(uint32_t(pixel_words_.size()), uint32_t(x0), uint32_t(y0),
                                uint32_t(std::max(x1 - x0, 0)));
     for (int32_t x = x0; x < x1; ++x)
@@ -290,7 +292,7 @@ bool RasterRenderer::prepare_pixels(Recording& r, size_t index, Arena& arena,
 
   // ---- its quad: the zoomed image's window rectangle in clip space, as Mesa computes it
   // (draw_textured_quad), at the raster position's depth; constant attributes
-  const float w = float(drawable_.width), h = float(drawable_.height);
+  const float w = float(buffers_->config.width), h = float(buffers_->config.height);
   const float z = image.raster->window.z * 2.0f - 1.0f;
   const float x0 = p0.x / w * 2.0f - 1.0f, x1 = p1.x / w * 2.0f - 1.0f;
   const float y0 = p0.y / h * 2.0f - 1.0f, y1 = p1.y / h * 2.0f - 1.0f;
@@ -334,14 +336,17 @@ void RasterRenderer::record_pixels(Recording& r, size_t index) {
   const rec::StateSnapshot& state = *state_of(*r.record, command);
   const PixelImage image = describe(command, state);
   const rec::FragmentOpsState& ops = state.raster->ops;
-  const ColorTargets targets = resolve_draw_buffer(ops.draw_buffer, drawable_.double_buffered);
-  const GpuImage& read_color =
-      front_buffer(ops.read_buffer, drawable_.double_buffered) ? front_ : back_;
+  const ColorTargets targets =
+      resolve_draw_buffer(ops.draw_buffer, buffers_->config.double_buffered);
+  const GpuImage& read_color = front_buffer(ops.read_buffer, buffers_->config.double_buffered)
+                                   ? buffers_->front
+                                   : buffers_->back;
   const VkImageAspectFlags aspect = image.kind == rec::PixelKind::kColor ? VK_IMAGE_ASPECT_COLOR_BIT
                                     : image.kind == rec::PixelKind::kDepth
                                         ? VK_IMAGE_ASPECT_DEPTH_BIT
                                         : VK_IMAGE_ASPECT_STENCIL_BIT;
-  const GpuImage& source = image.kind == rec::PixelKind::kColor ? read_color : depth_stencil_;
+  const GpuImage& source =
+      image.kind == rec::PixelKind::kColor ? read_color : buffers_->depth_stencil;
 
   // ---- glCopyPixels: the source first (a plain copy when Mesa blits)
   if (image.copy) {
@@ -351,11 +356,11 @@ void RasterRenderer::record_pixels(Recording& r, size_t index) {
     if (plan.blit) {
       if (plan.blit_destination.extent.width == 0 || plan.blit_destination.extent.height == 0)
         return;
-      const GpuImage& destination = image.kind != rec::PixelKind::kColor ? depth_stencil_
-                                    : targets == ColorTargets::kFront    ? front_
-                                                                         : back_;
-      if ((image.kind == rec::PixelKind::kDepth && drawable_.depth_bits == 0) ||
-          (image.kind == rec::PixelKind::kStencil && drawable_.stencil_bits == 0))
+      const GpuImage& destination = image.kind != rec::PixelKind::kColor ? buffers_->depth_stencil
+                                    : targets == ColorTargets::kFront    ? buffers_->front
+                                                                         : buffers_->back;
+      if ((image.kind == rec::PixelKind::kDepth && buffers_->config.depth_bits == 0) ||
+          (image.kind == rec::PixelKind::kStencil && buffers_->config.stencil_bits == 0))
         return;
       VkImageCopy region{};
       region.srcSubresource = {aspect, 0, 0, 1};
@@ -371,7 +376,7 @@ void RasterRenderer::record_pixels(Recording& r, size_t index) {
     }
     const auto& copy = std::get<rec::CopyPixels>(command);
     const VkRect2D inside = intersect_with_framebuffer(copy.x, copy.y, int32_t(copy.width),
-                                                       int32_t(copy.height), drawable_);
+                                                       int32_t(copy.height), buffers_->config);
     if (inside.extent.width > 0 && inside.extent.height > 0) {
       VkBufferImageCopy region{};
       region.bufferOffset = VkDeviceSize{plan.first_word} * sizeof(uint32_t);
@@ -386,9 +391,9 @@ void RasterRenderer::record_pixels(Recording& r, size_t index) {
                    VK_ACCESS_SHADER_READ_BIT | kAttachmentAccess);
   }
 
-  const VkViewport viewport{0.0f, 0.0f, float(drawable_.width), float(drawable_.height),
-                            0.0f, 1.0f};
-  const VkRect2D scissor = scissor_of(ops, drawable_);
+  const VkViewport viewport{
+      0.0f, 0.0f, float(buffers_->config.width), float(buffers_->config.height), 0.0f, 1.0f};
+  const VkRect2D scissor = scissor_of(ops, buffers_->config);
   if (scissor.extent.width == 0 || scissor.extent.height == 0) return;
   auto draw_quad = [&](uint32_t keep) {
     const gpu::RasterPushConstants push{glm::uvec4(plan.state, 0, keep, 0), glm::uvec4(0u)};
@@ -406,10 +411,10 @@ void RasterRenderer::record_pixels(Recording& r, size_t index) {
   // ---- stencil images: only the stencil buffer, under the scissor and the stencil write mask
   // (GL 1.5 4.3.1): every written bit cleared, then set again bit by bit where the image has it
   if (image.kind == rec::PixelKind::kStencil) {
-    const uint32_t stencil_max = (1u << std::min(drawable_.stencil_bits, 8u)) - 1;
+    const uint32_t stencil_max = (1u << std::min(buffers_->config.stencil_bits, 8u)) - 1;
     const uint32_t write_mask = ops.stencil_write_mask & stencil_max;
     // Mesa draws the quad (its fragments count in an occlusion query) even when it writes nothing.
-    if ((drawable_.stencil_bits == 0 || write_mask == 0) && r.counting == 0) return;
+    if ((buffers_->config.stencil_bits == 0 || write_mask == 0) && r.counting == 0) return;
     PipelineKey key;
     key.topology = static_cast<uint8_t>(RasterTopology::kTriangles);
     key.polygon_mode = VK_POLYGON_MODE_FILL;
@@ -468,8 +473,8 @@ void RasterRenderer::record_pixels(Recording& r, size_t index) {
   DrawContext context;
   context.topology = RasterTopology::kTriangles;
   context.targets = targets;
-  context.drawable_has_alpha = drawable_.has_alpha;
-  context.stencil_bits = drawable_.stencil_bits;
+  context.drawable_has_alpha = buffers_->config.has_alpha;
+  context.stencil_bits = buffers_->config.stencil_bits;
   DrawSetup setup = make_draw_setup(pixel_state, context);
   // Not reproduced: the texture coordinates of bitmaps under a texture matrix or texgen; Mesa's
   // colour images with GL_COLOR_SUM on (their colour becomes unrelated
@@ -481,8 +486,8 @@ void RasterRenderer::record_pixels(Recording& r, size_t index) {
   const glm::vec2 corner = image.origin + glm::vec2(image.width, image.height) * image.zoom;
   const bool clipped = std::min(image.origin.x, corner.x) < 0.0f ||
                        std::min(image.origin.y, corner.y) < 0.0f ||
-                       std::max(image.origin.x, corner.x) > float(drawable_.width) ||
-                       std::max(image.origin.y, corner.y) > float(drawable_.height);
+                       std::max(image.origin.x, corner.x) > float(buffers_->config.width) ||
+                       std::max(image.origin.y, corner.y) > float(buffers_->config.height);
   const bool whole_zoom = image.zoom == glm::round(image.zoom);
   if (setup.approximated || unreproduced_coords || (color_sum && !image.bitmap && !depth_image) ||
       (image.copy && state.pixel_transfer->map_color) || (clipped && !whole_zoom))
@@ -496,7 +501,7 @@ void RasterRenderer::record_pixels(Recording& r, size_t index) {
   DynamicDrawState d = setup.dynamic;
   d.cull = VK_CULL_MODE_NONE;
   d.depth_bias = false;
-  if (drawable_.depth_bits == 0) d.depth_test = d.depth_write = false;
+  if (buffers_->config.depth_bits == 0) d.depth_test = d.depth_write = false;
   begin_rendering(r, targets);
   bind(r, key, &pixel_state);
   set_dynamic_state(r, d, viewport, scissor);
@@ -508,15 +513,16 @@ bool RasterRenderer::accumulation_touches_color(const rec::Accum& accum) {
 }
 
 void RasterRenderer::clear_accum(const rec::FrameRecord& record, const rec::Clear& clear) {
-  if (accum_.width() == 0 || clear.state >= record.states.size()) return;
-  const VkRect2D rect = scissor_of(record.states[clear.state].raster->ops, drawable_);
-  accum_.clear({rect.offset.x, rect.offset.y, rect.extent.width, rect.extent.height}, clear.accum);
+  if (buffers_->accum.width() == 0 || clear.state >= record.states.size()) return;
+  const VkRect2D rect = scissor_of(record.states[clear.state].raster->ops, buffers_->config);
+  buffers_->accum.clear({rect.offset.x, rect.offset.y, rect.extent.width, rect.extent.height},
+                        clear.accum);
 }
 
 void RasterRenderer::execute_accum(const rec::FrameRecord& record, const rec::Accum& accum) {
-  if (accum_.width() == 0 || accum.state >= record.states.size()) return;
+  if (buffers_->accum.width() == 0 || accum.state >= record.states.size()) return;
   const rec::FragmentOpsState& ops = record.states[accum.state].raster->ops;
-  const VkRect2D scissor = scissor_of(ops, drawable_);
+  const VkRect2D scissor = scissor_of(ops, buffers_->config);
   const PixelRect rect{scissor.offset.x, scissor.offset.y, scissor.extent.width,
                        scissor.extent.height};
   if (rect.pixels() == 0) return;
@@ -524,33 +530,34 @@ void RasterRenderer::execute_accum(const rec::FrameRecord& record, const rec::Ac
   // Mesa skips the operations that would not change the buffer.
   switch (accum.op) {
     case GL_ADD:
-      if (accum.value != 0.0f) accum_.add(rect, accum.value);
+      if (accum.value != 0.0f) buffers_->accum.add(rect, accum.value);
       return;
     case GL_MULT:
-      if (accum.value != 1.0f) accum_.multiply(rect, accum.value);
+      if (accum.value != 1.0f) buffers_->accum.multiply(rect, accum.value);
       return;
     case GL_ACCUM:
     case GL_LOAD:
       if (accum.op == GL_ACCUM && accum.value == 0.0f) return;
-      read_color(ops.read_buffer, rect.x, rect.y, rect.width, rect.height, rgba);
-      accum_.accumulate(rect, rgba, accum.value, accum.op == GL_LOAD);
+      read_current_color(ops.read_buffer, rect.x, rect.y, rect.width, rect.height, rgba);
+      buffers_->accum.accumulate(rect, rgba, accum.value, accum.op == GL_LOAD);
       return;
     case GL_RETURN:
       break;
     default:
       return;
   }
-  const ColorTargets targets = resolve_draw_buffer(ops.draw_buffer, drawable_.double_buffered);
+  const ColorTargets targets =
+      resolve_draw_buffer(ops.draw_buffer, buffers_->config.double_buffered);
   std::array<bool, 4> mask = ops.color_write;
-  mask[3] = mask[3] && drawable_.has_alpha;  // a drawable without alpha keeps alpha 1
-  for (const GpuImage* image : {&front_, &back_}) {
-    const bool front = image == &front_;
+  mask[3] = mask[3] && buffers_->config.has_alpha;  // a drawable without alpha keeps alpha 1
+  for (const GpuImage* image : {&buffers_->front, &buffers_->back}) {
+    const bool front = image == &buffers_->front;
     if (!(targets == ColorTargets::kFrontAndBack || (front && targets == ColorTargets::kFront) ||
           (!front && targets == ColorTargets::kBack)))
       continue;
     read_image(*image, VK_IMAGE_ASPECT_COLOR_BIT, 4, rect.x, rect.y, rect.width, rect.height, rgba);
     swap_red_and_blue(rgba.data(), rect.pixels());  // BGRA8 buffers
-    accum_.return_to(rect, accum.value, mask, rgba);
+    buffers_->accum.return_to(rect, accum.value, mask, rgba);
     write_image(*image, {{rect.x, rect.y}, {rect.width, rect.height}}, rgba);
   }
 }

@@ -39,12 +39,14 @@ RasterRenderer::RasterRenderer(std::shared_ptr<VulkanDevice> device)
       load_device_function<PFN_vkCmdSetLineStippleEXT>(*device_, "vkCmdSetLineStippleEXT");
 }
 
-void RasterRenderer::ensure_buffers(const rec::DrawableConfig& drawable) {
-  if (drawable == drawable_ && front_) return;
-  drawable_ = drawable;
-  front_ = GpuImage();
-  back_ = GpuImage();
-  depth_stencil_ = GpuImage();
+void RasterRenderer::ensure_buffers(DrawableBuffers& buffers, const rec::DrawableConfig& drawable) {
+  buffers_ = &buffers;
+  if (drawable == buffers.config && buffers.front && buffers.device == device_) return;
+  buffers.device = device_;
+  buffers_->config = drawable;
+  buffers_->front = GpuImage();
+  buffers_->back = GpuImage();
+  buffers_->depth_stencil = GpuImage();
   if (drawable.width == 0 || drawable.height == 0) return;
   GpuImageInfo color;
   color.format = kColorFormat;
@@ -52,50 +54,50 @@ void RasterRenderer::ensure_buffers(const rec::DrawableConfig& drawable) {
   color.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
                 VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
                 VK_IMAGE_USAGE_STORAGE_BIT;
-  front_ = GpuImage::create(*device_, color);
-  back_ = GpuImage::create(*device_, color);
+  buffers_->front = GpuImage::create(*device_, color);
+  buffers_->back = GpuImage::create(*device_, color);
   GpuImageInfo depth = color;
   depth.format = kDepthStencilFormat;
   depth.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
                 VK_IMAGE_USAGE_TRANSFER_DST_BIT;
   depth.aspect = VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT;
-  depth_stencil_ = GpuImage::create(*device_, depth);
-  accum_.resize(drawable.accum_bits > 0 ? drawable.width : 0,
-                drawable.accum_bits > 0 ? drawable.height : 0);
+  buffers_->depth_stencil = GpuImage::create(*device_, depth);
+  buffers_->accum.resize(drawable.accum_bits > 0 ? drawable.width : 0,
+                         drawable.accum_bits > 0 ? drawable.height : 0);
   // GL leaves a new drawable's contents undefined; glpt starts from transparent black, depth 1
   // and stencil 0, like a freshly cleared Mesa drawable. A drawable without alpha holds alpha 1
   // from the start and never writes it (GL 1.5 4.1.8: its alpha reads as 1).
   device_->submit_and_wait([&](VkCommandBuffer cmd) {
     const VkClearColorValue black{{0.0f, 0.0f, 0.0f, drawable.has_alpha ? 0.0f : 1.0f}};
     const VkImageSubresourceRange color_range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-    for (const GpuImage* image : {&front_, &back_}) {
+    for (const GpuImage* image : {&buffers_->front, &buffers_->back}) {
       image->initial_barrier(cmd);
       vkCmdClearColorImage(cmd, image->handle(), VK_IMAGE_LAYOUT_GENERAL, &black, 1, &color_range);
     }
-    depth_stencil_.initial_barrier(cmd);
+    buffers_->depth_stencil.initial_barrier(cmd);
     const VkClearDepthStencilValue far{1.0f, 0};
     const VkImageSubresourceRange ds_range{VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT,
                                            0, 1, 0, 1};
-    vkCmdClearDepthStencilImage(cmd, depth_stencil_.handle(), VK_IMAGE_LAYOUT_GENERAL, &far, 1,
-                                &ds_range);
+    vkCmdClearDepthStencilImage(cmd, buffers_->depth_stencil.handle(), VK_IMAGE_LAYOUT_GENERAL,
+                                &far, 1, &ds_range);
   });
 }
 
-void RasterRenderer::execute(const rec::FrameRecord& record, const rec::DrawableConfig& drawable,
-                             FrameStats& stats, const std::vector<size_t>* commands,
-                             const FrameEnd* end, const GBufferTargets* gbuffer,
-                             std::vector<QuerySamples>* queries) {
+void RasterRenderer::execute(const rec::FrameRecord& record, DrawableBuffers& buffers,
+                             const rec::DrawableConfig& drawable, FrameStats& stats,
+                             const std::vector<size_t>* commands, const FrameEnd* end,
+                             const GBufferTargets* gbuffer, std::vector<QuerySamples>* queries) {
   const Stopwatch timer;
   ++frame_;
-  ensure_buffers(drawable);
+  ensure_buffers(buffers, drawable);
   std::vector<size_t> all;
   if (commands == nullptr) {
     all.resize(record.commands.size());
     for (size_t i = 0; i < all.size(); ++i) all[i] = i;
     commands = &all;
   }
-  queries_.begin_record(record, front_ ? *commands : std::vector<size_t>{});
-  if (!front_) {
+  queries_.begin_record(record, buffers_->front ? *commands : std::vector<size_t>{});
+  if (!buffers_->front) {
     if (end && end->front_rgba) end->front_rgba->clear();
     if (queries) queries_.collect(*queries);  // nothing drawn: no samples
     return;
@@ -256,18 +258,10 @@ void RasterRenderer::execute(const rec::FrameRecord& record, const rec::Drawable
   upload_pixels();
   stats.upload_ms += timer.elapsed_ms();
 
-  if (end && end->present_to && end->present_to->generation != present_generation_) {
-    // The window's memory, imported once per allocation (empty if the device cannot import it).
-    present_ = GpuBuffer();
-    const size_t bytes = (size_t{end->present_to->width} * end->present_to->height * 4 +
-                          device_->host_pointer_alignment() - 1) &
-                         ~(device_->host_pointer_alignment() - 1);
-    present_ = GpuBuffer::import_host(*device_, end->present_to->pixels, bytes,
-                                      VK_BUFFER_USAGE_TRANSFER_DST_BIT);
-    present_generation_ = end->present_to->generation;
-  }
+  present_ = end && end->present_to ? imported_host_image(*end->present_to) : nullptr;
   if (end && (end->front_rgba || (end->present_to && !present_)))
-    ensure_capacity(*device_, readback_, size_t{drawable_.width} * drawable_.height * 4,
+    ensure_capacity(*device_, readback_,
+                    size_t{buffers_->config.width} * buffers_->config.height * 4,
                     VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
 
   // ---- record and run: one submission, or one more after each glAccum that reads or writes
@@ -325,28 +319,50 @@ void RasterRenderer::execute(const rec::FrameRecord& record, const rec::Drawable
   } while (position < commands->size());
   stats.raster_ms += raster_timer.elapsed_ms();
   if (queries) queries_.collect(*queries);
-  const size_t pixel_count = size_t{drawable_.width} * drawable_.height;
+  const size_t pixel_count = size_t{buffers_->config.width} * buffers_->config.height;
   if (end && end->front_rgba) {
     end->front_rgba->resize(pixel_count * 4);
     std::memcpy(end->front_rgba->data(), readback_.mapped(), pixel_count * 4);
     swap_red_and_blue(end->front_rgba->data(), pixel_count);
   }
   // Without an imported buffer the window's memory is filled here, rows flipped.
-  if (end && end->present_to && !present_ && end->present_to->width == drawable_.width &&
-      end->present_to->height == drawable_.height) {
-    const size_t row = size_t{drawable_.width} * 4;
+  if (end && end->present_to && !present_ && end->present_to->width == buffers_->config.width &&
+      end->present_to->height == buffers_->config.height) {
+    const size_t row = size_t{buffers_->config.width} * 4;
     const auto* src = static_cast<const uint8_t*>(readback_.mapped());
-    for (uint32_t y = 0; y < drawable_.height; ++y)
-      std::memcpy(end->present_to->pixels + (drawable_.height - 1 - y) * row, src + y * row, row);
+    for (uint32_t y = 0; y < buffers_->config.height; ++y)
+      std::memcpy(end->present_to->pixels + (buffers_->config.height - 1 - y) * row, src + y * row,
+                  row);
   }
   textures_.evict_unused(frame_);
+}
+
+GpuBuffer* RasterRenderer::imported_host_image(const HostImage& image) {
+  auto it = std::find_if(imported_.begin(), imported_.end(), [&](const ImportedHostImage& i) {
+    return i.generation == image.generation;
+  });
+  if (it == imported_.end()) {
+    // A share group's renderer presents to each of its contexts' windows: a few are kept.
+    constexpr size_t kMaxImported = 4;
+    if (imported_.size() >= kMaxImported) imported_.erase(imported_.begin());
+    const VkDeviceSize alignment = device_->host_pointer_alignment();
+    const size_t bytes =
+        (size_t{image.width} * image.height * 4 + alignment - 1) & ~(alignment - 1);
+    imported_.push_back(
+        {image.generation,
+         GpuBuffer::import_host(*device_, image.pixels, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT)});
+  } else {
+    std::rotate(it, it + 1, imported_.end());  // the most recently used last
+  }
+  GpuBuffer& buffer = imported_.back().buffer;
+  return buffer ? &buffer : nullptr;
 }
 
 void RasterRenderer::begin_rendering(Recording& r, ColorTargets targets) {
   // GL_NONE still writes depth and stencil: render to the back (or front) buffer with a colour
   // write mask of zero (the pipeline key has it).
   if (targets == ColorTargets::kNone)
-    targets = drawable_.double_buffered ? ColorTargets::kBack : ColorTargets::kFront;
+    targets = buffers_->config.double_buffered ? ColorTargets::kBack : ColorTargets::kFront;
   if (r.rendering && r.targets == targets) return;
   end_rendering(r);
   std::array<VkRenderingAttachmentInfo, GLPT_GBUFFER_ATTACHMENTS> colors{};
@@ -360,18 +376,18 @@ void RasterRenderer::begin_rendering(Recording& r, ColorTargets targets) {
     a.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
   };
   if (targets == ColorTargets::kFront || targets == ColorTargets::kFrontAndBack)
-    add_color(front_.view());
+    add_color(buffers_->front.view());
   if (targets == ColorTargets::kBack || targets == ColorTargets::kFrontAndBack)
-    add_color(back_.view());
+    add_color(buffers_->back.view());
   if (targets == ColorTargets::kGBuffer)
     for (VkImageView view : r.gbuffer->views) add_color(view);
   auto depth = make_info<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
-  depth.imageView = depth_stencil_.view();
+  depth.imageView = buffers_->depth_stencil.view();
   depth.imageLayout = VK_IMAGE_LAYOUT_GENERAL;
   depth.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
   depth.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
   auto info = make_info<VkRenderingInfo>(VK_STRUCTURE_TYPE_RENDERING_INFO);
-  info.renderArea = {{0, 0}, {drawable_.width, drawable_.height}};
+  info.renderArea = {{0, 0}, {buffers_->config.width, buffers_->config.height}};
   info.layerCount = 1;
   info.colorAttachmentCount = count;
   info.pColorAttachments = colors.data();
@@ -503,19 +519,21 @@ void RasterRenderer::set_dynamic_state(Recording& r, const DynamicDrawState& d,
 
 void RasterRenderer::record_clear(Recording& r, const rec::Clear& clear, uint32_t state_index) {
   const rec::FragmentOpsState& ops = r.record->states[clear.state].raster->ops;
-  const VkRect2D rect = scissor_of(ops, drawable_);
+  const VkRect2D rect = scissor_of(ops, buffers_->config);
   if (rect.extent.width == 0 || rect.extent.height == 0) return;
-  const ColorTargets targets = resolve_draw_buffer(ops.draw_buffer, drawable_.double_buffered);
+  const ColorTargets targets =
+      resolve_draw_buffer(ops.draw_buffer, buffers_->config.double_buffered);
   // Without alpha, clearing alpha to 1 leaves it as it is: the plain clear serves.
   const bool all_channels = ops.color_write[0] && ops.color_write[1] && ops.color_write[2] &&
-                            (ops.color_write[3] || !drawable_.has_alpha);
+                            (ops.color_write[3] || !buffers_->config.has_alpha);
   const bool color =
       (clear.mask & GL_COLOR_BUFFER_BIT) && targets != ColorTargets::kNone &&
       (ops.color_write[0] || ops.color_write[1] || ops.color_write[2] || ops.color_write[3]);
-  const bool depth = (clear.mask & GL_DEPTH_BUFFER_BIT) && ops.depth_write && drawable_.depth_bits;
+  const bool depth =
+      (clear.mask & GL_DEPTH_BUFFER_BIT) && ops.depth_write && buffers_->config.depth_bits;
   const uint32_t stencil_mask = ops.stencil_write_mask & 0xFFu;
   const bool stencil =
-      (clear.mask & GL_STENCIL_BUFFER_BIT) && stencil_mask != 0 && drawable_.stencil_bits;
+      (clear.mask & GL_STENCIL_BUFFER_BIT) && stencil_mask != 0 && buffers_->config.stencil_bits;
   if (clear.mask & GL_ACCUM_BUFFER_BIT) clear_accum(*r.record, clear);  // on the CPU, now
   if (!color && !depth && !stencil) return;
   begin_rendering(r, color ? targets : ColorTargets::kNone);
@@ -533,7 +551,7 @@ void RasterRenderer::record_clear(Recording& r, const rec::Clear& clear, uint32_
         a.aspectMask = VK_IMAGE_ASPECT_COLOR_BIT;
         a.colorAttachment = c;
         const glm::vec4 v = glm::clamp(clear.color, 0.0f, 1.0f);
-        a.clearValue.color = {{v.r, v.g, v.b, drawable_.has_alpha ? v.a : 1.0f}};
+        a.clearValue.color = {{v.r, v.g, v.b, buffers_->config.has_alpha ? v.a : 1.0f}};
       }
     }
     if (depth || stencil) {
@@ -557,7 +575,7 @@ void RasterRenderer::record_clear(Recording& r, const rec::Clear& clear, uint32_
   uint8_t mask = 0;
   if (color) {
     for (int c = 0; c < 4; ++c)
-      if (ops.color_write[c] && (c < 3 || drawable_.has_alpha))
+      if (ops.color_write[c] && (c < 3 || buffers_->config.has_alpha))
         mask |= static_cast<uint8_t>(1u << c);
   }
   key.color_write_mask = mask;
@@ -574,8 +592,12 @@ void RasterRenderer::record_clear(Recording& r, const rec::Clear& clear, uint32_
   d.stencil_reference = static_cast<uint32_t>(clear.stencil) & 0xFFu;
   // The whole drawable at the clear depth: a viewport whose depth range is that one value.
   const float z = std::clamp(clear.depth, 0.0f, 1.0f);
-  const VkViewport viewport{
-      0.0f, 0.0f, static_cast<float>(drawable_.width), static_cast<float>(drawable_.height), z, z};
+  const VkViewport viewport{0.0f,
+                            0.0f,
+                            static_cast<float>(buffers_->config.width),
+                            static_cast<float>(buffers_->config.height),
+                            z,
+                            z};
   set_dynamic_state(r, d, viewport, rect);
   const gpu::RasterPushConstants push{glm::uvec4(state_index, 0, 0, 0), glm::uvec4(0u)};
   vkCmdPushConstants(r.cmd, pipelines_.layout(), pipelines_.push_constant_stages(), 0, sizeof push,
@@ -612,9 +634,10 @@ void RasterRenderer::record_draw_pass(Recording& r, const rec::Draw& draw, const
   const rec::TransformState& t = *state.transform;
   DrawContext context;
   context.topology = g.topology;
-  context.targets = resolve_draw_buffer(state.raster->ops.draw_buffer, drawable_.double_buffered);
-  context.drawable_has_alpha = drawable_.has_alpha;
-  context.stencil_bits = drawable_.stencil_bits;
+  context.targets =
+      resolve_draw_buffer(state.raster->ops.draw_buffer, buffers_->config.double_buffered);
+  context.drawable_has_alpha = buffers_->config.has_alpha;
+  context.stencil_bits = buffers_->config.stencil_bits;
   context.face_pass = face_pass;
   DrawSetup setup = make_draw_setup(state, context);
   if (setup.skip) return;
@@ -639,12 +662,12 @@ void RasterRenderer::record_draw_pass(Recording& r, const rec::Draw& draw, const
   }
   if (setup.approximated) ++r.stats->inexpressible;
   if (t.viewport[2] <= 0 || t.viewport[3] <= 0) return;  // GL draws nothing in an empty viewport
-  const VkRect2D scissor = scissor_of(state.raster->ops, drawable_);
+  const VkRect2D scissor = scissor_of(state.raster->ops, buffers_->config);
   if (scissor.extent.width == 0 || scissor.extent.height == 0) return;
   begin_rendering(r, context.targets);
   bind(r, setup.key, &state);
   DynamicDrawState d = setup.dynamic;
-  if (drawable_.depth_bits == 0) d.depth_test = d.depth_write = false;
+  if (buffers_->config.depth_bits == 0) d.depth_test = d.depth_write = false;
   const VkViewport viewport{static_cast<float>(t.viewport[0]),
                             static_cast<float>(t.viewport[1]),
                             static_cast<float>(t.viewport[2]),
@@ -676,39 +699,40 @@ void RasterRenderer::record_frame_end(VkCommandBuffer cmd, const FrameEnd& end) 
                          VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0, 1, &barrier, 0, nullptr, 0,
                          nullptr);
   };
-  if (end.swap && drawable_.double_buffered) {
+  if (end.swap && buffers_->config.double_buffered) {
     wait_for_previous();
     VkImageCopy copy{};
     copy.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
     copy.dstSubresource = copy.srcSubresource;
-    copy.extent = {drawable_.width, drawable_.height, 1};
-    vkCmdCopyImage(cmd, back_.handle(), VK_IMAGE_LAYOUT_GENERAL, front_.handle(),
+    copy.extent = {buffers_->config.width, buffers_->config.height, 1};
+    vkCmdCopyImage(cmd, buffers_->back.handle(), VK_IMAGE_LAYOUT_GENERAL, buffers_->front.handle(),
                    VK_IMAGE_LAYOUT_GENERAL, 1, &copy);
   }
-  const bool to_window = end.present_to && end.present_to->width == drawable_.width &&
-                         end.present_to->height == drawable_.height;
+  const bool to_window = end.present_to && end.present_to->width == buffers_->config.width &&
+                         end.present_to->height == buffers_->config.height;
   if (end.front_rgba || (to_window && !present_)) {
     wait_for_previous();
     VkBufferImageCopy copy{};
     copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-    copy.imageExtent = {drawable_.width, drawable_.height, 1};
-    vkCmdCopyImageToBuffer(cmd, front_.handle(), VK_IMAGE_LAYOUT_GENERAL, readback_.handle(), 1,
-                           &copy);
+    copy.imageExtent = {buffers_->config.width, buffers_->config.height, 1};
+    vkCmdCopyImageToBuffer(cmd, buffers_->front.handle(), VK_IMAGE_LAYOUT_GENERAL,
+                           readback_.handle(), 1, &copy);
   }
   if (to_window && present_) {
     // Straight into the window's memory, one region per row: X rows run top to bottom.
     wait_for_previous();
-    std::vector<VkBufferImageCopy> rows(drawable_.height);
-    for (uint32_t y = 0; y < drawable_.height; ++y) {
+    std::vector<VkBufferImageCopy> rows(buffers_->config.height);
+    for (uint32_t y = 0; y < buffers_->config.height; ++y) {
       VkBufferImageCopy& copy = rows[y];
       copy = {};
-      copy.bufferOffset = VkDeviceSize{drawable_.height - 1 - y} * drawable_.width * 4;
+      copy.bufferOffset =
+          VkDeviceSize{buffers_->config.height - 1 - y} * buffers_->config.width * 4;
       copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
       copy.imageOffset = {0, static_cast<int32_t>(y), 0};
-      copy.imageExtent = {drawable_.width, 1, 1};
+      copy.imageExtent = {buffers_->config.width, 1, 1};
     }
-    vkCmdCopyImageToBuffer(cmd, front_.handle(), VK_IMAGE_LAYOUT_GENERAL, present_.handle(),
-                           static_cast<uint32_t>(rows.size()), rows.data());
+    vkCmdCopyImageToBuffer(cmd, buffers_->front.handle(), VK_IMAGE_LAYOUT_GENERAL,
+                           present_->handle(), static_cast<uint32_t>(rows.size()), rows.data());
   }
 }
 
@@ -717,8 +741,8 @@ bool RasterRenderer::read_image(const GpuImage& image, VkImageAspectFlags aspect
                                 uint32_t height, std::vector<uint8_t>& out) {
   out.assign(size_t{width} * height * texel_bytes, 0);
   if (!image) return false;
-  const VkRect2D inside = intersect_with_framebuffer(x, y, static_cast<int32_t>(width),
-                                                     static_cast<int32_t>(height), drawable_);
+  const VkRect2D inside = intersect_with_framebuffer(
+      x, y, static_cast<int32_t>(width), static_cast<int32_t>(height), buffers_->config);
   if (inside.extent.width == 0 || inside.extent.height == 0) return true;
   const VkDeviceSize bytes = VkDeviceSize{inside.extent.width} * inside.extent.height * texel_bytes;
   ensure_capacity(*device_, readback_, bytes,
@@ -741,20 +765,28 @@ bool RasterRenderer::read_image(const GpuImage& image, VkImageAspectFlags aspect
   return true;
 }
 
-bool RasterRenderer::read_color(uint32_t buffer, int32_t x, int32_t y, uint32_t width,
-                                uint32_t height, std::vector<uint8_t>& rgba) {
+bool RasterRenderer::read_color(DrawableBuffers& buffers, uint32_t buffer, int32_t x, int32_t y,
+                                uint32_t width, uint32_t height, std::vector<uint8_t>& rgba) {
+  buffers_ = &buffers;
+  return read_current_color(buffer, x, y, width, height, rgba);
+}
+
+bool RasterRenderer::read_current_color(uint32_t buffer, int32_t x, int32_t y, uint32_t width,
+                                        uint32_t height, std::vector<uint8_t>& rgba) {
   const bool front = buffer == GL_FRONT || buffer == GL_FRONT_LEFT || buffer == GL_LEFT ||
-                     !drawable_.double_buffered;
-  if (!read_image(front ? front_ : back_, VK_IMAGE_ASPECT_COLOR_BIT, 4, x, y, width, height, rgba))
+                     !buffers_->config.double_buffered;
+  if (!read_image(front ? buffers_->front : buffers_->back, VK_IMAGE_ASPECT_COLOR_BIT, 4, x, y,
+                  width, height, rgba))
     return false;
   swap_red_and_blue(rgba.data(), size_t{width} * height);
   return true;
 }
 
-bool RasterRenderer::read_depth(int32_t x, int32_t y, uint32_t width, uint32_t height,
-                                std::vector<float>& depth) {
+bool RasterRenderer::read_depth(DrawableBuffers& buffers, int32_t x, int32_t y, uint32_t width,
+                                uint32_t height, std::vector<float>& depth) {
+  buffers_ = &buffers;
   std::vector<uint8_t> raw;
-  if (!read_image(depth_stencil_, VK_IMAGE_ASPECT_DEPTH_BIT, 4, x, y, width, height, raw))
+  if (!read_image(buffers_->depth_stencil, VK_IMAGE_ASPECT_DEPTH_BIT, 4, x, y, width, height, raw))
     return false;
   // The depth aspect of D24_UNORM_S8_UINT copies as 32-bit words holding 24 bits of depth.
   depth.resize(size_t{width} * height);
@@ -766,15 +798,18 @@ bool RasterRenderer::read_depth(int32_t x, int32_t y, uint32_t width, uint32_t h
   return true;
 }
 
-bool RasterRenderer::read_stencil(int32_t x, int32_t y, uint32_t width, uint32_t height,
-                                  std::vector<uint8_t>& stencil) {
-  return read_image(depth_stencil_, VK_IMAGE_ASPECT_STENCIL_BIT, 1, x, y, width, height, stencil);
+bool RasterRenderer::read_stencil(DrawableBuffers& buffers, int32_t x, int32_t y, uint32_t width,
+                                  uint32_t height, std::vector<uint8_t>& stencil) {
+  buffers_ = &buffers;
+  return read_image(buffers_->depth_stencil, VK_IMAGE_ASPECT_STENCIL_BIT, 1, x, y, width, height,
+                    stencil);
 }
 
 void RasterRenderer::write_color(bool front, const std::vector<uint8_t>& rgba) {
-  const GpuImage& image = front || !drawable_.double_buffered ? front_ : back_;
-  if (!image || rgba.size() != size_t{drawable_.width} * drawable_.height * 4) return;
-  write_image(image, {{0, 0}, {drawable_.width, drawable_.height}}, rgba);
+  const GpuImage& image =
+      front || !buffers_->config.double_buffered ? buffers_->front : buffers_->back;
+  if (!image || rgba.size() != size_t{buffers_->config.width} * buffers_->config.height * 4) return;
+  write_image(image, {{0, 0}, {buffers_->config.width, buffers_->config.height}}, rgba);
 }
 
 void RasterRenderer::write_image(const GpuImage& image, const VkRect2D& rect,
@@ -793,14 +828,15 @@ void RasterRenderer::write_image(const GpuImage& image, const VkRect2D& rect,
   });
 }
 
-void RasterRenderer::swap_buffers() {
-  if (!front_ || !drawable_.double_buffered) return;
+void RasterRenderer::swap_buffers(DrawableBuffers& buffers) {
+  buffers_ = &buffers;
+  if (!buffers_->front || !buffers_->config.double_buffered) return;
   device_->submit_and_wait([&](VkCommandBuffer cmd) {
     VkImageCopy copy{};
     copy.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
     copy.dstSubresource = copy.srcSubresource;
-    copy.extent = {drawable_.width, drawable_.height, 1};
-    vkCmdCopyImage(cmd, back_.handle(), VK_IMAGE_LAYOUT_GENERAL, front_.handle(),
+    copy.extent = {buffers_->config.width, buffers_->config.height, 1};
+    vkCmdCopyImage(cmd, buffers_->back.handle(), VK_IMAGE_LAYOUT_GENERAL, buffers_->front.handle(),
                    VK_IMAGE_LAYOUT_GENERAL, 1, &copy);
   });
 }

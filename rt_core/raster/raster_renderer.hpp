@@ -9,6 +9,7 @@
 
 #include "rt_core/frame_stats.hpp"
 #include "rt_core/raster/accumulation.hpp"
+#include "rt_core/raster/drawable_buffers.hpp"
 #include "rt_core/raster/gbuffer_targets.hpp"
 #include "rt_core/raster/occlusion_queries.hpp"
 #include "rt_core/raster/pipeline_key.hpp"
@@ -33,41 +34,43 @@ class RasterRenderer {
   explicit RasterRenderer(std::shared_ptr<VulkanDevice> device);
 
   // Applies the commands of `record` whose indices `commands` lists (all when empty) to the
-  // drawable's buffers, which are (re)created when `drawable` changes. Throws VulkanError.
+  // drawable's `buffers`, which are (re)created when `drawable` changes. Throws VulkanError.
   // `end`: swap and/or read the front buffer in the same submission.
   // `gbuffer` (path-traced mode): the draws it marks go into the G-buffer instead of the colour
   // buffers (same coverage, depth and stencil); its SURFACE attachment starts cleared and every
   // colour clear clears it too.
   // `queries`: the samples these commands count into the record's occlusion queries are added
   // to it (an entry per query of the record, occlusion_queries.hpp).
-  void execute(const rec::FrameRecord& record, const rec::DrawableConfig& drawable,
-               FrameStats& stats, const std::vector<size_t>* commands = nullptr,
-               const FrameEnd* end = nullptr, const GBufferTargets* gbuffer = nullptr,
+  void execute(const rec::FrameRecord& record, DrawableBuffers& buffers,
+               const rec::DrawableConfig& drawable, FrameStats& stats,
+               const std::vector<size_t>* commands = nullptr, const FrameEnd* end = nullptr,
+               const GBufferTargets* gbuffer = nullptr,
                std::vector<QuerySamples>* queries = nullptr);
 
   // Reads back a rectangle: colour as RGBA8 of GL_FRONT*/GL_BACK*, depth as [0, 1], stencil.
   // Pixels outside the drawable are zero. False before the buffers exist.
-  bool read_color(uint32_t buffer, int32_t x, int32_t y, uint32_t width, uint32_t height,
-                  std::vector<uint8_t>& rgba);
-  bool read_depth(int32_t x, int32_t y, uint32_t width, uint32_t height, std::vector<float>& depth);
-  bool read_stencil(int32_t x, int32_t y, uint32_t width, uint32_t height,
+  bool read_color(DrawableBuffers& buffers, uint32_t buffer, int32_t x, int32_t y, uint32_t width,
+                  uint32_t height, std::vector<uint8_t>& rgba);
+  bool read_depth(DrawableBuffers& buffers, int32_t x, int32_t y, uint32_t width, uint32_t height,
+                  std::vector<float>& depth);
+  bool read_stencil(DrawableBuffers& buffers, int32_t x, int32_t y, uint32_t width, uint32_t height,
                     std::vector<uint8_t>& stencil);
   // Copies the back buffer into the front buffer (the back keeps its contents).
-  void swap_buffers();
+  void swap_buffers(DrawableBuffers& buffers);
   // Replaces a whole colour buffer with `rgba` (RGBA8, rows bottom to top): the path tracer's
   // image, before the draws it does not take are rasterized over it.
   void write_color(bool front, const std::vector<uint8_t>& rgba);
 
-  const rec::DrawableConfig& drawable() const { return drawable_; }
   VulkanDevice& device() { return *device_; }
-  // The buffers, for path-traced mode (which writes the traced image into them).
-  const GpuImage& color_image(bool front) const { return front ? front_ : back_; }
-  const GpuImage& depth_stencil_image() const { return depth_stencil_; }
+  // The buffers of the last execute, for path-traced mode (which writes the traced image into
+  // them).
+  const GpuImage& color_image(bool front) const { return front ? buffers_->front : buffers_->back; }
+  const GpuImage& depth_stencil_image() const { return buffers_->depth_stencil; }
 
  private:
   struct DrawGeometry;  // uploaded vertices and indices of one draw
   struct Recording;     // state of one command-buffer recording
-  void ensure_buffers(const rec::DrawableConfig& drawable);
+  void ensure_buffers(DrawableBuffers& buffers, const rec::DrawableConfig& drawable);
   void record_clear(Recording& r, const rec::Clear& clear, uint32_t state_index);
   void record_draw(Recording& r, const rec::Draw& draw, const DrawGeometry& geometry,
                    bool to_gbuffer = false);
@@ -80,6 +83,9 @@ class RasterRenderer {
   void set_dynamic_state(Recording& r, const DynamicDrawState& d, const VkViewport& viewport,
                          const VkRect2D& scissor);
   void record_frame_end(VkCommandBuffer cmd, const FrameEnd& end);
+  // read_color on the buffers of the call in progress (glAccum reads the read buffer).
+  bool read_current_color(uint32_t buffer, int32_t x, int32_t y, uint32_t width, uint32_t height,
+                          std::vector<uint8_t>& rgba);
   bool read_image(const GpuImage& image, VkImageAspectFlags aspect, uint32_t texel_bytes, int32_t x,
                   int32_t y, uint32_t width, uint32_t height, std::vector<uint8_t>& out);
   // Replaces the rectangle `rect` of a colour image with `rgba` (RGBA8, rows bottom to top).
@@ -105,13 +111,21 @@ class RasterRenderer {
   TextureCache textures_;
   PFN_vkCmdPushDescriptorSetKHR push_descriptor_set_ = nullptr;
   PFN_vkCmdSetLineStippleEXT set_line_stipple_ = nullptr;
-  rec::DrawableConfig drawable_{0, 0};
-  GpuImage front_, back_, depth_stencil_;
+  // The drawable's buffers the current call works on (set by each public call: a renderer may
+  // serve several drawables, and a drawable several renderers).
+  DrawableBuffers* buffers_ = nullptr;
   GpuBuffer states_;    // RasterState per snapshot (+ one per clear drawn as a quad)
   GpuBuffer vertices_;  // this record's attributes and indices
   GpuBuffer readback_;
-  GpuBuffer present_;  // the window's host memory (FrameEnd::present_to), imported
-  uint64_t present_generation_ = 0;
+  // Windows' host memory (FrameEnd::present_to), imported once per allocation (an empty buffer
+  // when the device cannot import it), most recently used last.
+  struct ImportedHostImage {
+    uint64_t generation = 0;
+    GpuBuffer buffer;
+  };
+  std::vector<ImportedHostImage> imported_;
+  GpuBuffer* present_ = nullptr;  // this execute's window memory, if imported
+  GpuBuffer* imported_host_image(const HostImage& image);
   uint64_t frame_ = 0;
   rec::Decomposed decomposed_;  // scratch
   // Scratch of execute(), kept across frames: a large frame's megabytes of vertices are not
@@ -121,7 +135,6 @@ class RasterRenderer {
   std::vector<uint8_t> edge_masks_;
   GpuBuffer pixels_;                   // images of this record's pixel rectangles (32-bit words)
   std::vector<uint32_t> pixel_words_;  // scratch: what goes to pixels_
-  AccumulationBuffer accum_;
   OcclusionQueries queries_{*device_};
 };
 

@@ -1,5 +1,7 @@
 #include "rt_core/vk/vk_device.hpp"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
@@ -236,8 +238,15 @@ VKAPI_ATTR VkBool32 VKAPI_CALL VulkanDevice::on_validation_message(
   return VK_FALSE;
 }
 
+namespace {
+std::atomic<uint64_t> g_devices_created{0};  // a statistic, for tests and GLPT_STATS
+}  // namespace
+
+uint64_t VulkanDevice::devices_created() { return g_devices_created.load(); }
+
 std::unique_ptr<VulkanDevice> VulkanDevice::create(const DeviceOptions& options) {
   std::unique_ptr<VulkanDevice> self(new VulkanDevice());
+  ++g_devices_created;
 
   // ---- instance
   bool validation = options.validation && has_layer(kValidationLayer);
@@ -483,7 +492,29 @@ uint32_t VulkanDevice::memory_type(uint32_t type_bits, VkMemoryPropertyFlags req
   return fallback;
 }
 
+std::shared_ptr<VulkanDevice> VulkanDevice::shared(const DeviceOptions& options) {
+  // Process-wide by nature (the issue is "one device per process"): weak references, so the
+  // device goes when its last renderer does. A forked child never reuses its parent's device,
+  // whose lavapipe threads exist only in the parent (gl_shim/process_owner.hpp).
+  struct Entry {
+    DeviceOptions options;
+    pid_t process;
+    std::weak_ptr<VulkanDevice> device;
+  };
+  static std::mutex mutex;
+  static std::vector<Entry> devices;
+  std::lock_guard lock(mutex);
+  std::erase_if(devices, [](const Entry& e) { return e.device.expired(); });
+  for (const Entry& e : devices)
+    if (e.options == options && e.process == ::getpid())
+      if (std::shared_ptr<VulkanDevice> device = e.device.lock()) return device;
+  std::shared_ptr<VulkanDevice> device = create(options);
+  devices.push_back({options, ::getpid(), device});
+  return device;
+}
+
 double VulkanDevice::submit_and_wait(const std::function<void(VkCommandBuffer)>& record) {
+  std::lock_guard lock(submit_mutex_);
   VkCommandBuffer cmd = command_buffer_;
   GLPT_VK_CHECK(vkResetCommandBuffer(cmd, 0));
   auto begin = make_info<VkCommandBufferBeginInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO);

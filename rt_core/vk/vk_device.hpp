@@ -5,9 +5,11 @@
 
 #include <vulkan/vulkan.h>
 
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <mutex>
 #include <stdexcept>
 #include <string>
 
@@ -33,6 +35,7 @@ struct DeviceOptions {
   // Treat every device as lacking ray queries (GLPT_VK_NO_RAY_QUERY=1): exercises the fallback to
   // raster mode on a machine that has them.
   bool hide_ray_query = false;
+  bool operator==(const DeviceOptions&) const = default;
 };
 
 // Entry points of VK_KHR_acceleration_structure: the loader does not export them, they come from
@@ -47,8 +50,15 @@ struct AccelerationStructureFunctions {
 
 class VulkanDevice {
  public:
-  // Throws DeviceUnavailable or VulkanError.
+  // A new device of its own (tests that want one). Throws DeviceUnavailable or VulkanError.
   static std::unique_ptr<VulkanDevice> create(const DeviceOptions& options);
+  // The process's device for `options`: created on first use and shared by every renderer (every
+  // GL context, whatever its share group) for as long as one holds it. One device means one set
+  // of lavapipe threads and one queue, and a drawable's buffers can be used by any context.
+  // Throws as create().
+  static std::shared_ptr<VulkanDevice> shared(const DeviceOptions& options);
+  // How many devices this process has created so far (what tests of "one device" count).
+  static uint64_t devices_created();
   ~VulkanDevice();
   VulkanDevice(const VulkanDevice&) = delete;
   VulkanDevice& operator=(const VulkanDevice&) = delete;
@@ -80,7 +90,8 @@ class VulkanDevice {
   // Records commands into the device's command buffer with `record`, submits them and waits for
   // completion. Each call starts with a full memory barrier, so work of earlier calls and host
   // writes are visible, and ends with one that makes results visible to the host. Returns the
-  // wall-clock milliseconds of submit + wait.
+  // wall-clock milliseconds of submit + wait. Thread-safe: contexts current on different threads
+  // share the device, and calls are serialized (the queue and command buffer are one).
   double submit_and_wait(const std::function<void(VkCommandBuffer)>& record);
 
   // Number of messages the validation layer reported (0 without validation).
@@ -94,13 +105,14 @@ class VulkanDevice {
 
   // Written by the validation callback, which can run until the instance is gone: declared
   // first so it outlives every Vulkan object below.
-  uint64_t validation_messages_ = 0;
+  std::atomic<uint64_t> validation_messages_ = 0;
   // Declaration order is destruction order in reverse: everything device-level goes before the
   // device, the device before the messenger and instance.
   vk::Instance instance_;
   vk::DebugMessenger messenger_;
   VkPhysicalDevice physical_device_ = VK_NULL_HANDLE;
   vk::Device device_;
+  std::mutex submit_mutex_;  // guards command_buffer_, fence_ and queue_ (submit_and_wait)
   vk::CommandPool command_pool_;
   vk::Fence fence_;
   VkQueue queue_ = VK_NULL_HANDLE;

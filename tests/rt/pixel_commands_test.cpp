@@ -153,9 +153,11 @@ class PixelCommandsVsMesa : public ::testing::Test {
     FrameStats stats;
     std::string error;
     Buffers b;
-    EXPECT_TRUE(renderer_->execute(builder.record, drawable, stats, &error)) << error;
-    EXPECT_TRUE(renderer_->read_color(GL_FRONT, 0, 0, kSize, kSize, b.color, &error)) << error;
-    EXPECT_TRUE(renderer_->read_stencil(0, 0, kSize, kSize, b.stencil, &error)) << error;
+    const std::shared_ptr<DrawableBuffers> buffers = create_drawable_buffers();
+    EXPECT_TRUE(renderer_->execute(builder.record, *buffers, drawable, stats, &error)) << error;
+    EXPECT_TRUE(renderer_->read_color(*buffers, GL_FRONT, 0, 0, kSize, kSize, b.color, &error))
+        << error;
+    EXPECT_TRUE(renderer_->read_stencil(*buffers, 0, 0, kSize, kSize, b.stencil, &error)) << error;
     if (stats_out != nullptr) *stats_out = stats;
     return b;
   }

@@ -64,11 +64,14 @@ std::unique_ptr<Renderer> make_renderer(RenderSettings settings, std::string* er
   return Renderer::create(settings, error);
 }
 
+// Each render draws into a new drawable (its record clears what it needs).
 Image render_with(Renderer& renderer, const RecordBuilder& b) {
   Image image;
   std::string error;
-  EXPECT_TRUE(renderer.execute(b.record, b.drawable, image.stats, &error)) << error;
-  EXPECT_TRUE(renderer.read_color(GL_FRONT, 0, 0, kSize, kSize, image.rgba, &error)) << error;
+  const std::shared_ptr<DrawableBuffers> buffers = create_drawable_buffers();
+  EXPECT_TRUE(renderer.execute(b.record, *buffers, b.drawable, image.stats, &error)) << error;
+  EXPECT_TRUE(renderer.read_color(*buffers, GL_FRONT, 0, 0, kSize, kSize, image.rgba, &error))
+      << error;
   return image;
 }
 
@@ -341,7 +344,9 @@ TEST_F(RenderTest, EmptyAndDegenerateRecords) {
   RecordBuilder nothing(0, 0);
   FrameStats stats;
   std::string error;
-  EXPECT_TRUE(renderer_->execute(nothing.record, nothing.drawable, stats, &error)) << error;
+  EXPECT_TRUE(renderer_->execute(nothing.record, *create_drawable_buffers(), nothing.drawable,
+                                 stats, &error))
+      << error;
 }
 
 TEST_F(RenderTest, SpotLightLightsOnlyInsideItsCone) {
@@ -397,9 +402,10 @@ TEST_F(RenderTest, EvictsBlasUnusedForManyFrames) {
   RecordBuilder other(8, 8);  // keep the filler frames cheap
   other.transform.projection = glm::perspective(glm::radians(60.0f), 1.0f, 0.1f, 100.0f);
   other.quad({-1, -1, -4.75f}, {2, 0, 0}, {0, 2, 0}, glm::vec4(1));
+  const std::shared_ptr<DrawableBuffers> buffers = create_drawable_buffers();
   for (int i = 0; i < 70; ++i) {
     FrameStats stats;
-    ASSERT_TRUE(renderer_->execute(other.record, other.drawable, stats, nullptr));
+    ASSERT_TRUE(renderer_->execute(other.record, *buffers, other.drawable, stats, nullptr));
   }
   EXPECT_EQ(render(first).stats.blas_builds, 1u);  // rebuilt: it had been evicted
 }

@@ -121,6 +121,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "%s\n", error.c_str());
     return 1;
   }
+  const std::shared_ptr<glpt::rt::DrawableBuffers> buffers = glpt::rt::create_drawable_buffers();
 
   // Budget: a floor grid (~1/4) and three spheres sharing one geometry, plus a lamp marker.
   const int grid = std::max(2, int(std::sqrt(target_triangles / 8)));
@@ -183,8 +184,8 @@ int main(int argc, char** argv) {
 
     glpt::rt::FrameStats stats;
     const auto start = std::chrono::steady_clock::now();
-    if (!renderer->execute(b.record, b.drawable, stats, &error) ||
-        !renderer->read_color(GL_FRONT, 0, 0, width, height, rgba, &error)) {
+    if (!renderer->execute(b.record, *buffers, b.drawable, stats, &error) ||
+        !renderer->read_color(*buffers, GL_FRONT, 0, 0, width, height, rgba, &error)) {
       std::fprintf(stderr, "%s\n", error.c_str());
       return 1;
     }
