@@ -6,6 +6,7 @@
 
 #include "gl/gl_enums.h"
 #include "gl_shim/frame/headless_target.hpp"
+#include "gl_shim/gl_impl_decls.hpp"
 
 namespace glpt {
 namespace {
@@ -52,7 +53,15 @@ bool Context::list_executes_while_compiling() const {
 Context* current_context() { return t_current; }
 void set_current_context(Context* ctx) { t_current = ctx; }
 
+void flush_before_release(Context& ctx) {
+  if (ctx.target == nullptr) return;
+  flush_bitmap_cache(ctx);
+  if (ctx.recorder.empty()) return;  // (a front-buffer frame would otherwise present again)
+  impl::glFinish(ctx);
+}
+
 void bind_target_and_make_current(Context& ctx, WindowTarget* target) {
+  if (ctx.target != nullptr && ctx.target != target) flush_before_release(ctx);
   ctx.target = target;
   set_current_context(&ctx);
   uint32_t w = 0, h = 0;

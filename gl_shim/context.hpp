@@ -123,8 +123,14 @@ Context* current_context();
 void set_current_context(Context* ctx);
 
 // Binds `target` to `ctx` and makes it current. On the context's first binding the viewport and
-// scissor box become the target's size (GL 1.5 2.11.1, 4.1.2).
+// scissor box become the target's size (GL 1.5 2.11.1, 4.1.2). A context moving to another
+// drawable is flushed first (flush_before_release).
 void bind_target_and_make_current(Context& ctx, WindowTarget* target);
+
+// `ctx` stops being current (or leaves its drawable): GLX 1.4 3.3.7 and EGL 1.5 3.7.3 flush it,
+// so what it drew is executed on the drawable it was drawn for, where other contexts drawing to
+// that drawable see it (piglit glx-multi-context-single-window, glx-make-glxdrawable-current).
+void flush_before_release(Context& ctx);
 
 // Executes the frame record (everything recorded since it was last executed) on the drawable's
 // buffers: at a swap, a read, glFinish/glFlush. Returns false if there is nothing to execute on

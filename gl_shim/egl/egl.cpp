@@ -190,6 +190,8 @@ void release_current_locked() {
   EglContext* old = t_bound;
   t_bound = nullptr;
   if (old == nullptr) return;
+  glpt::flush_before_release(old->gl);
+  old->gl.target = nullptr;  // a released context has no surface (it may be destroyed now)
   old->current = false;
   for (EglSurface* s : {old->draw, old->read})
     if (s) --s->bindings;

@@ -88,6 +88,8 @@ void release_current() {
   GLXContext old = current_glx();
   glpt::set_current_context(nullptr);
   if (old == nullptr) return;
+  glpt::flush_before_release(old->gl);
+  old->gl.target = nullptr;  // a released context has no drawable (a pbuffer may go now)
   bool destroy_now = false;
   {
     std::lock_guard lock(contexts_mutex());

@@ -370,6 +370,63 @@ TEST_F(GlxDrawables, TwoContextsTwoWindowsShareLists) {
   EXPECT_EQ(x_pixel(b, 4, 4), 0x00FF00u);
 }
 
+// GLX 1.4 3.3.7: make-current flushes the context it replaces, and the buffers are the
+// window's: contexts drawing in turn into one window, without any flush, all land in it (as
+// piglit's glx-multi-context-single-window).
+TEST_F(GlxDrawables, SeveralContextsDrawIntoOneWindow) {
+  XVisualInfo* vi = visual({GLX_RGBA, GLX_DOUBLEBUFFER});
+  ASSERT_NE(vi, nullptr);
+  const Window win = unsynced_window(*vi, 24, 8);
+  GLXContext contexts[3] = {context(vi), context(vi), context(vi)};
+  XFree(vi);
+  const GLfloat colors[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  for (int i = 0; i < 3; ++i) {
+    ASSERT_TRUE(glXMakeCurrent(dpy_, win, contexts[i]));
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(8 * i, 0, 8, 8);
+    glClearColor(colors[i][0], colors[i][1], colors[i][2], 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+  }
+  ASSERT_TRUE(glXMakeCurrent(dpy_, win, contexts[0]));
+  for (int i = 0; i < 3; ++i) {
+    GLubyte rgba[4] = {};
+    glReadPixels(8 * i + 4, 4, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+    EXPECT_EQ(rgba[0], colors[i][0] * 255) << "context " << i;
+    EXPECT_EQ(rgba[1], colors[i][1] * 255) << "context " << i;
+    EXPECT_EQ(rgba[2], colors[i][2] * 255) << "context " << i;
+  }
+  glXSwapBuffers(dpy_, win);
+  EXPECT_EQ(x_pixel(win, 20, 4), 0x0000FFu);
+  EXPECT_TRUE(g_errors.empty());
+}
+
+// One context moving between two windows of one configuration: each keeps what was drawn into
+// it (piglit's glx-make-glxdrawable-current).
+TEST_F(GlxDrawables, OneContextMovingBetweenWindowsFindsEachOnesContents) {
+  XVisualInfo* vi = visual({GLX_RGBA, GLX_DOUBLEBUFFER});
+  ASSERT_NE(vi, nullptr);
+  const Window one = unsynced_window(*vi, 8, 8);
+  const Window two = unsynced_window(*vi, 8, 8);
+  GLXContext ctx = context(vi);
+  XFree(vi);
+  ASSERT_TRUE(glXMakeCurrent(dpy_, one, ctx));
+  glClearColor(0, 1, 0, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  ASSERT_TRUE(glXMakeCurrent(dpy_, two, ctx));
+  glClearColor(1, 0, 0, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  const auto green_at_1_1 = [] {
+    GLubyte rgba[4] = {};
+    glReadPixels(1, 1, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+    return rgba[0] == 0 && rgba[1] == 255 && rgba[2] == 0;
+  };
+  ASSERT_TRUE(glXMakeCurrent(dpy_, one, ctx));
+  EXPECT_TRUE(green_at_1_1());
+  ASSERT_TRUE(glXMakeCurrent(dpy_, two, ctx));
+  EXPECT_FALSE(green_at_1_1());  // red
+  EXPECT_TRUE(g_errors.empty());
+}
+
 TEST_F(GlxDrawables, MakeContextCurrentKeepsSeparateReadDrawable) {
   XVisualInfo* vi = visual({GLX_RGBA, GLX_DOUBLEBUFFER});
   ASSERT_NE(vi, nullptr);
