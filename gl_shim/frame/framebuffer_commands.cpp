@@ -100,7 +100,7 @@ void glClear(Context& ctx, GLbitfield mask) {
   clear.state = ctx.snapshots.capture(ctx, ctx.recorder.record());
   clear.mask = mask;
   clear.color = fb.clear_color;
-  clear.depth = static_cast<float>(fb.clear_depth);
+  clear.depth = fb.clear_depth;
   clear.stencil = fb.clear_stencil;
   clear.accum = fb.clear_accum;
   ctx.recorder.add(clear);

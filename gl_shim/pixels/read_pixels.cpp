@@ -94,6 +94,18 @@ void glReadPixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height,
         pack_color(dst, fb.color, LuminanceFrom::kSumRgb);
         break;
       case rec::PixelKind::kDepth:
+        if (type == GL_UNSIGNED_INT && ctx.pixel_transfer.depth_scale == 1.0f &&
+            ctx.pixel_transfer.depth_bias == 0.0f) {
+          // Mesa's path for 32-bit integers without scale or bias (read_depth_pixels): the
+          // 24-bit values, widened by repeating their top bits below them (z24 -> z32 unorm).
+          std::vector<uint32_t> words(fb.depth.size());
+          for (size_t i = 0; i < words.size(); ++i) {
+            const auto z24 = uint32_t(std::nearbyint(double(fb.depth[i]) * 16777215.0));
+            words[i] = (z24 << 8) | (z24 >> 16);
+          }
+          pack_indices(dst, words);
+          break;
+        }
         transfer_depth(ctx.pixel_transfer, fb.depth);
         pack_depth(dst, fb.depth);
         break;

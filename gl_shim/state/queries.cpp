@@ -104,11 +104,13 @@ bool lookup(const Context& ctx, GLenum pname, Value* out) {
     case GL_COLOR_CLEAR_VALUE:
       *out = floats(&fb.clear_color.x, 4, Kind::kColor);
       return true;
-    case GL_DEPTH_CLEAR_VALUE: {
-      float d = float(fb.clear_depth);
-      *out = floats(&d, 1, Kind::kColor);
+    case GL_DEPTH_CLEAR_VALUE:
+      // Kept as the double glClearDepth took, as Mesa keeps it: integer queries map the double
+      // (conformance scene pixels_depth_clears_read_as_uint).
+      out->kind = Kind::kColor;
+      out->count = 1;
+      out->v[0] = fb.clear_depth;
       return true;
-    }
     case GL_STENCIL_CLEAR_VALUE:
       *out = ints({double(fb.clear_stencil)});
       return true;

@@ -8,6 +8,7 @@
 
 #include "common/stopwatch.hpp"
 #include "raster_types.h"
+#include "rt_core/raster/depth_clear.hpp"
 #include "rt_core/raster/raster_recording.hpp"
 #include "rt_core/raster/state_uniforms.hpp"
 #include "rt_core/vk/vk_error.hpp"
@@ -537,6 +538,12 @@ void RasterRenderer::record_clear(Recording& r, const rec::Clear& clear, uint32_
   if (clear.mask & GL_ACCUM_BUFFER_BIT) clear_accum(*r.record, clear);  // on the CPU, now
   if (!color && !depth && !stencil) return;
   begin_rendering(r, color ? targets : ColorTargets::kNone);
+  // The depth Mesa writes: its whole-buffer clear and its quad clear round differently.
+  const bool whole_buffer = rect.offset.x == 0 && rect.offset.y == 0 &&
+                            rect.extent.width == buffers_->config.width &&
+                            rect.extent.height == buffers_->config.height;
+  const uint32_t z24 =
+      mesa_clear_z24(clear.depth, whole_buffer && (!stencil || stencil_mask == 0xFFu));
 
   // Full masks: a plain attachment clear. Partial colour or stencil masks: a quad through a
   // pipeline whose write masks are GL's (GL 1.5 4.2.3: only the scissor, dithering and the
@@ -558,7 +565,7 @@ void RasterRenderer::record_clear(Recording& r, const rec::Clear& clear, uint32_
       VkClearAttachment& a = attachments[n++];
       a.aspectMask =
           (depth ? VK_IMAGE_ASPECT_DEPTH_BIT : 0) | (stencil ? VK_IMAGE_ASPECT_STENCIL_BIT : 0);
-      a.clearValue.depthStencil = {std::clamp(clear.depth, 0.0f, 1.0f),
+      a.clearValue.depthStencil = {attachment_clear_depth(z24),
                                    static_cast<uint32_t>(clear.stencil) & 0xFFu};
     }
     const VkClearRect clear_rect{rect, 0, 1};
@@ -591,7 +598,7 @@ void RasterRenderer::record_clear(Recording& r, const rec::Clear& clear, uint32_
   d.stencil_write_mask = stencil_mask;
   d.stencil_reference = static_cast<uint32_t>(clear.stencil) & 0xFFu;
   // The whole drawable at the clear depth: a viewport whose depth range is that one value.
-  const float z = std::clamp(clear.depth, 0.0f, 1.0f);
+  const float z = fragment_depth(z24);
   const VkViewport viewport{0.0f,
                             0.0f,
                             static_cast<float>(buffers_->config.width),

@@ -115,7 +115,7 @@ struct Clear {
   StateId state = 0;
   uint32_t mask = 0;  // GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | ACCUM
   glm::vec4 color{0.0f};
-  float depth = 1.0f;
+  double depth = 1.0;  // glClearDepth's double: Mesa converts from it (raster/depth_clear.hpp)
   int32_t stencil = 0;
   glm::vec4 accum{0.0f};
 };

@@ -40,7 +40,8 @@ FrameSignature::FrameSignature(const rec::FrameRecord& record, std::span<const s
       e.clear[0] = clear->mask;
       std::memcpy(&e.clear[1], &clear->color, sizeof clear->color);
       std::memcpy(&e.clear[5], &clear->depth, sizeof clear->depth);
-      e.clear[6] = static_cast<uint32_t>(clear->stencil);
+      static_assert(sizeof clear->depth == 8);
+      e.clear[7] = static_cast<uint32_t>(clear->stencil);
     }
   }
 }

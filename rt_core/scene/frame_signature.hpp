@@ -29,7 +29,7 @@ class FrameSignature {
     uint64_t geometry_key = 0, attribute_key = 0;
     rec::StateSnapshot state;
     // Clear: mask, colour, depth, stencil as raw bits (NaNs compare equal to themselves).
-    uint32_t clear[7] = {};
+    uint32_t clear[8] = {};  // mask, colour, depth (a double), stencil
   };
   static bool same(const Entry& a, const Entry& b);
 

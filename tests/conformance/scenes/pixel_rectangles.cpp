@@ -745,3 +745,58 @@ GLPT_EXACT_SCENE(accum_return_colour_mask, 64, 64) {
 }
 
 }  // namespace
+
+// ---- depth values as 32-bit integers
+// ---------------------------------------------------------------------------------
+
+namespace {
+
+// Shows the current depth buffer's values, read as GL_UNSIGNED_INT, byte for byte as colours:
+// any difference in the clear value's conversion or in the read's scaling shows exactly.
+void show_depth_as_bytes(int width, int height) {
+  std::vector<GLuint> depth(size_t(width) * height);
+  glReadPixels(0, 0, width, height, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, depth.data());
+  glDisable(GL_SCISSOR_TEST);
+  glDisable(GL_DEPTH_TEST);
+  glWindowPos2i(0, 0);
+  glDrawPixels(width, height, GL_RGBA, GL_UNSIGNED_BYTE, depth.data());
+}
+
+}  // namespace
+
+GLPT_EXACT_SCENE(pixels_depth_clears_read_as_uint, 40, 16) {
+  const double values[] = {0.0, 0.1, 1.0 / 3.0, 0.5, 0.7, 0.999, 1.0, 0.123456789, 0.75, 0.2};
+  glEnable(GL_SCISSOR_TEST);
+  for (int i = 0; i < 10; ++i) {
+    glScissor(4 * i, 0, 4, 16);
+    glClearDepth(values[i]);
+    glClear(GL_DEPTH_BUFFER_BIT);
+  }
+  show_depth_as_bytes(40, 16);
+}
+
+// Whole-buffer clears (no scissor) convert the clear depth differently from scissored ones: each
+// value is cleared over the whole buffer, read back, and shown in a column of its own.
+GLPT_EXACT_SCENE(pixels_depth_full_clears_read_as_uint, 40, 16) {
+  const double values[] = {0.0, 0.1, 1.0 / 3.0, 0.5, 0.7, 0.999, 1.0, 0.123456789, 0.75, 0.2};
+  std::vector<GLuint> columns(40 * 16);
+  for (int i = 0; i < 10; ++i) {
+    glClearDepth(values[i]);
+    glClear(GL_DEPTH_BUFFER_BIT);
+    std::vector<GLuint> depth(4 * 16);
+    glReadPixels(4 * i, 0, 4, 16, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, depth.data());
+    for (int y = 0; y < 16; ++y)
+      for (int x = 0; x < 4; ++x) columns[size_t(y) * 40 + 4 * i + x] = depth[size_t(y) * 4 + x];
+  }
+  glWindowPos2i(0, 0);
+  glDrawPixels(40, 16, GL_RGBA, GL_UNSIGNED_BYTE, columns.data());
+}
+
+GLPT_EXACT_SCENE(pixels_drawn_depth_read_as_uint, 40, 16) {
+  clear_all(0, 0, 0);
+  pixel_projection(40, 16);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_ALWAYS);
+  for (int i = 0; i < 10; ++i) quad(4 * i, 0, 4 * i + 4, 16, -1.0f + 0.2f * i + 0.013f);
+  show_depth_as_bytes(40, 16);
+}
