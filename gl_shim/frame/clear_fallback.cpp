@@ -18,7 +18,7 @@ void ClearFallback::consume(const rec::FrameRecord& record) {
     if (clear == nullptr) continue;
     if (clear->mask & GL_COLOR_BUFFER_BIT)
       color_ = glm::round(glm::clamp(clear->color, 0.0f, 1.0f) * 255.0f) / 255.0f;
-    if (clear->mask & GL_DEPTH_BUFFER_BIT) depth_ = clear->depth;
+    if (clear->mask & GL_DEPTH_BUFFER_BIT) depth_ = static_cast<float>(clear->depth);
     if (clear->mask & GL_STENCIL_BUFFER_BIT)
       stencil_ = static_cast<uint32_t>(clear->stencil) & 0xFF;
   }
