@@ -54,7 +54,8 @@ Context* current_context() { return t_current; }
 void set_current_context(Context* ctx) { t_current = ctx; }
 
 void flush_before_release(Context& ctx) {
-  if (ctx.target == nullptr) return;
+  // (A context whose frames are not rendered, glpt-replay's other shards, has nothing to show.)
+  if (ctx.target == nullptr || !ctx.render_frame_ends) return;
   flush_bitmap_cache(ctx);
   if (ctx.recorder.empty()) return;  // (a front-buffer frame would otherwise present again)
   impl::glFinish(ctx);

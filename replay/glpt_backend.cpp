@@ -56,6 +56,9 @@ class GlptBackend final : public Backend {
 
   bool make_current(ContextHandle handle, uint64_t surface, uint32_t width, uint32_t height,
                     bool double_buffered, std::string* /*error*/) override {
+    // The context losing its current status is flushed, as GLX and EGL do.
+    if (Context* old = current_context(); old != nullptr && old != handle)
+      flush_before_release(*old);
     if (handle == nullptr) {
       set_current_context(nullptr);
       return true;

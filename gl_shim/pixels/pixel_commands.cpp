@@ -107,10 +107,11 @@ std::vector<glm::vec4> mesa_transfer_colors(const std::vector<glm::vec4>& image,
 // applies but the scissor (no colour is written). glpt records that as a stencil rectangle (which
 // only writes stencil) and a depth rectangle whose state is the live one with the depth test
 // forced to GL_ALWAYS and colour, alpha test, stencil test and blending off; the two write
-// different buffers, so their order does not matter. (Under an occlusion query the fragments are
-// counted twice, where Mesa counts its one quad once.)
+// different buffers, so their order does not matter. An occlusion query counts the fragments of
+// the depth half only, as Mesa counts its one quad.
 template <typename Command>
 void record_depth_stencil(Context& ctx, Command stencil, Command depth) {
+  stencil.counted = false;
   record(ctx, std::move(stencil));
   const rec::FragmentOpsState live = ctx.raster.ops;
   struct Restore {

@@ -9,12 +9,11 @@
 namespace glpt::rt {
 namespace {
 
-// The commands whose fragments GL counts (Mesa draws all of them as primitives).
+// The commands whose fragments GL counts (Mesa draws all of them as primitives), once each.
 bool makes_fragments(const rec::Command& command) {
-  return std::holds_alternative<rec::Draw>(command) ||
-         std::holds_alternative<rec::Bitmap>(command) ||
-         std::holds_alternative<rec::DrawPixels>(command) ||
-         std::holds_alternative<rec::CopyPixels>(command);
+  if (const auto* draw_pixels = std::get_if<rec::DrawPixels>(&command)) return draw_pixels->counted;
+  if (const auto* copy_pixels = std::get_if<rec::CopyPixels>(&command)) return copy_pixels->counted;
+  return std::holds_alternative<rec::Draw>(command) || std::holds_alternative<rec::Bitmap>(command);
 }
 
 }  // namespace

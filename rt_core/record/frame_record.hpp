@@ -157,6 +157,9 @@ struct DrawPixels {
   std::vector<glm::vec4> color;   // kColor: width * height RGBA, rows bottom to top
   std::vector<float> depth;       // kDepth: [0, 1]
   std::vector<uint32_t> stencil;  // kStencil
+  // False for the stencil half of a GL_DEPTH_STENCIL rectangle: GL counts its fragments once
+  // (occlusion queries), with the depth half.
+  bool counted = true;
 };
 
 // glCopyPixels: a rectangle of the read buffer (state's FragmentOpsState::read_buffer) drawn at
@@ -167,6 +170,7 @@ struct CopyPixels {
   PixelKind kind = PixelKind::kColor;
   int32_t x = 0, y = 0;
   uint32_t width = 0, height = 0;
+  bool counted = true;  // as DrawPixels::counted
 };
 
 // glAccum (GL 1.5 4.2.4): `state` supplies the scissor, colour write mask and buffers.
@@ -184,6 +188,7 @@ struct Read {
   PixelKind kind = PixelKind::kColor;
   int32_t x = 0, y = 0;
   uint32_t width = 0, height = 0;
+  bool counted = true;  // as DrawPixels::counted
 };
 
 // glBeginQuery(GL_SAMPLES_PASSED, ...) and glEndQuery (GL 1.5 4.1.6): the samples of the

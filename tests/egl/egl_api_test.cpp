@@ -664,4 +664,38 @@ TEST_F(Egl, DlopenLibEglGivesGlptsEntryPoints) {
   dlclose(lib);
 }
 
+// Two contexts (not sharing) drawing in turn to one pbuffer: eglMakeCurrent flushes the context
+// it replaces (EGL 1.5 3.7.3), and the surface's buffers are the surface's, so the second sees
+// what the first drew.
+TEST_F(Egl, ContextsDrawingInTurnShareTheSurfacesBuffers) {
+  EGLConfig config = choose(kWindowConfig);
+  const EGLint size[] = {EGL_WIDTH, 16, EGL_HEIGHT, 8, EGL_NONE};
+  EGLSurface pbuffer = eglCreatePbufferSurface(egl_, config, size);
+  ASSERT_NE(pbuffer, EGL_NO_SURFACE);
+  EGLContext a = eglCreateContext(egl_, config, EGL_NO_CONTEXT, nullptr);
+  EGLContext b = eglCreateContext(egl_, config, EGL_NO_CONTEXT, nullptr);
+  ASSERT_TRUE(a != EGL_NO_CONTEXT && b != EGL_NO_CONTEXT);
+  const auto clear_half = [](int x, float r, float g) {
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(x, 0, 8, 8);
+    glClearColor(r, g, 0, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+  };
+  ASSERT_TRUE(eglMakeCurrent(egl_, pbuffer, pbuffer, a));
+  clear_half(0, 1, 0);  // no flush: switching contexts does it
+  ASSERT_TRUE(eglMakeCurrent(egl_, pbuffer, pbuffer, b));
+  clear_half(8, 0, 1);
+  unsigned char left[4] = {}, right[4] = {};
+  glReadPixels(2, 2, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, left);
+  glReadPixels(12, 2, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, right);
+  EXPECT_EQ(left[0], 255);
+  EXPECT_EQ(left[1], 0);
+  EXPECT_EQ(right[0], 0);
+  EXPECT_EQ(right[1], 255);
+  EXPECT_TRUE(eglMakeCurrent(egl_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT));
+  EXPECT_TRUE(eglDestroyContext(egl_, a));
+  EXPECT_TRUE(eglDestroyContext(egl_, b));
+  EXPECT_TRUE(eglDestroySurface(egl_, pbuffer));
+}
+
 }  // namespace

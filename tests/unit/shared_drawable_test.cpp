@@ -30,20 +30,25 @@ void clear_rect(int x, int y, int width, int height, const Rgba& color) {
   glDisable(GL_SCISSOR_TEST);
 }
 
-// A lit triangle over the lower left half of the drawable, in a frame ended by a swap: its
-// statistics are what the context's renderer made for it.
-const glpt::rt::FrameStats& draw_lit_triangle_frame(Context& ctx) {
-  glClearColor(0, 0, 0, 1);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  glEnable(GL_LIGHTING);
-  glEnable(GL_LIGHT0);
-  glEnable(GL_DEPTH_TEST);
+// A triangle over the lower left half of the drawable, facing the viewer.
+void triangle() {
   glBegin(GL_TRIANGLES);
   glNormal3f(0, 0, 1);
   glVertex3f(-1, -1, -0.5f);
   glVertex3f(1, -1, -0.5f);
   glVertex3f(-1, 1, -0.5f);
   glEnd();
+}
+
+// The triangle, lit, in a frame ended by a swap: its statistics are what the context's renderer
+// made for it.
+const glpt::rt::FrameStats& draw_lit_triangle_frame(Context& ctx) {
+  glClearColor(0, 0, 0, 1);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glEnable(GL_LIGHTING);
+  glEnable(GL_LIGHT0);
+  glEnable(GL_DEPTH_TEST);
+  triangle();
   glpt::end_frame(ctx, /*swap=*/true);
   EXPECT_TRUE(ctx.output);
   static const glpt::rt::FrameStats none;
@@ -118,12 +123,7 @@ TEST_F(SharedDrawableTest, AShareGroupSharesAccelerationStructures) {
   glpt::make_current_headless(a, target);
   const GLuint list = glGenLists(1);
   glNewList(list, GL_COMPILE);
-  glBegin(GL_TRIANGLES);
-  glNormal3f(0, 0, 1);
-  glVertex3f(-1, -1, -0.5f);
-  glVertex3f(1, -1, -0.5f);
-  glVertex3f(-1, 1, -0.5f);
-  glEnd();
+  triangle();
   glEndList();
   const auto frame = [&](Context& ctx) {
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
