@@ -101,9 +101,10 @@ bool ensure_output(Context& ctx) {
   ctx.output = FrameOutput::create(*ctx.render_group, &error);
   if (!ctx.output) {
     // Reported once per context (make-current does not retry it); the program keeps
-    // running, showing nothing.
-    std::fprintf(stderr, "%s\n", error.c_str());  // the message names glpt itself
+    // running, its GL state answering, its frames showing the clear colour.
+    std::fprintf(stderr, "%s; frames show only the clear colour\n", error.c_str());
     ctx.renderer_unavailable = true;
+    ctx.clear_fallback = std::make_unique<ClearFallback>();
     return false;
   }
   return true;
@@ -134,7 +135,14 @@ void start_new_record(Context& ctx) {
 }  // namespace
 
 bool execute_record(Context& ctx) {
-  if (!ensure_output(ctx)) return false;
+  if (!ensure_output(ctx)) {
+    if (ctx.clear_fallback && ctx.target) {  // the record is consumed all the same
+      ctx.recorder.seal();
+      ctx.clear_fallback->consume(ctx.recorder.record());
+      start_new_record(ctx);
+    }
+    return false;
+  }
   const rec::DrawableConfig drawable = current_drawable(ctx);
   ctx.recorder.seal();
   bool ok = true;
@@ -159,7 +167,17 @@ void end_frame(Context& ctx, bool swap) {
     start_new_record(ctx);
     return;
   }
-  if (!ensure_output(ctx)) return;
+  if (!ensure_output(ctx)) {
+    if (ctx.clear_fallback && ctx.target) {
+      ctx.recorder.seal();
+      const rec::DrawableConfig drawable = current_drawable(ctx);
+      std::lock_guard lock(ctx.target->mutex());  // presenting, as FrameOutput::end_frame does
+      ctx.clear_fallback->end_frame(ctx.recorder.record(), drawable.width, drawable.height,
+                                    ctx.target);
+      start_new_record(ctx);
+    }
+    return;
+  }
   ctx.recorder.seal();
   std::vector<rt::QuerySamples> samples;
   ctx.output->end_frame(ctx.recorder.record(), current_drawable(ctx),

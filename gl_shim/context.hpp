@@ -15,6 +15,7 @@
 #include "gl_shim/buffers/buffer_objects.hpp"
 #include "gl_shim/display_lists/display_lists.hpp"
 #include "gl_shim/evaluators/evaluator_state.hpp"
+#include "gl_shim/frame/clear_fallback.hpp"
 #include "gl_shim/frame/frame_output.hpp"
 #include "gl_shim/frame/frame_recorder.hpp"
 #include "gl_shim/frame/state_snapshot.hpp"
@@ -108,6 +109,8 @@ class Context {
   // false: end_frame drops the frame's record instead of rendering it (glpt-replay's shards
   // replay every frame's state but render only their own frames).
   bool render_frame_ends = true;
+  // Without a renderer (renderer_unavailable): frames show the last clear colour.
+  std::unique_ptr<ClearFallback> clear_fallback;
 
   // --- accounting -------------------------------------------------------------------------------
   std::vector<uint64_t> unimplemented_calls;  // per CommandId

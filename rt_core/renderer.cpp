@@ -120,6 +120,8 @@ std::unique_ptr<Renderer> Renderer::create(const RenderSettings& settings, std::
     DeviceOptions options;
     options.validation = settings.validation;
     if (const char* filter = std::getenv("GLPT_VK_DEVICE")) options.name_filter = filter;
+    if (const char* hide = std::getenv("GLPT_VK_NO_RAY_QUERY"); hide && *hide && *hide != '0')
+      options.hide_ray_query = true;
     std::shared_ptr<VulkanDevice> device = VulkanDevice::shared(options);
     RenderSettings effective = settings;
     std::unique_ptr<PathTracer> tracer;

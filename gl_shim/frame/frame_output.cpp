@@ -46,19 +46,37 @@ OutputSettings OutputSettings::from_environment() {
   return s;
 }
 
+void create_png_directory(OutputSettings& settings) {
+  if (settings.png_dir.empty()) return;
+  std::error_code ec;
+  std::filesystem::create_directories(settings.png_dir, ec);
+  if (!ec) return;
+  std::fprintf(stderr, "glpt: cannot create GLPT_OUTPUT directory %s: %s; writing no PNGs\n",
+               settings.png_dir.c_str(), ec.message().c_str());
+  settings.png_dir.clear();
+}
+
+void write_frame_png(const OutputSettings& settings, uint64_t frame_index, uint32_t width,
+                     uint32_t height, std::vector<uint8_t>& rgba, bool* failure_reported) {
+  char name[64];
+  std::snprintf(name, sizeof name, "frame_%06" PRIu64 ".png", frame_index);
+  // The PNG shows what the window shows: opaque. (glReadPixels still returns GL's alpha.)
+  for (size_t i = 3; i < rgba.size(); i += 4) rgba[i] = 255;
+  std::string error;
+  if (!write_png_rgba8(settings.png_dir + "/" + name, width, height, rgba.data(), true, &error) &&
+      !*failure_reported) {
+    std::fprintf(stderr, "glpt: GLPT_OUTPUT: %s (reported once)\n", error.c_str());
+    *failure_reported = true;
+  }
+}
+
 std::unique_ptr<FrameOutput> FrameOutput::create(RenderGroup& group, std::string* error) {
   std::string notice;
   std::shared_ptr<rt::Renderer> renderer = group.renderer(error, &notice);
   if (!renderer) return nullptr;
   if (!notice.empty()) std::fprintf(stderr, "%s\n", notice.c_str());
   OutputSettings settings = OutputSettings::from_environment();
-  if (!settings.png_dir.empty()) {
-    std::error_code ec;
-    std::filesystem::create_directories(settings.png_dir, ec);
-    if (ec)
-      std::fprintf(stderr, "glpt: cannot create GLPT_OUTPUT directory %s: %s\n",
-                   settings.png_dir.c_str(), ec.message().c_str());
-  }
+  create_png_directory(settings);
   return std::unique_ptr<FrameOutput>(new FrameOutput(std::move(renderer), std::move(settings)));
 }
 
@@ -118,18 +136,8 @@ void FrameOutput::end_frame(const rec::FrameRecord& record, const rec::DrawableC
   lock.unlock();
   const double present_ms = present_timer.elapsed_ms();
 
-  if (have_image && !settings_.png_dir.empty() && frame_index_ % settings_.png_every == 0) {
-    char name[64];
-    std::snprintf(name, sizeof name, "frame_%06" PRIu64 ".png", frame_index_);
-    // The PNG shows what the window shows: opaque. (glReadPixels still returns GL's alpha.)
-    for (size_t i = 3; i < image_.size(); i += 4) image_[i] = 255;
-    if (!write_png_rgba8(settings_.png_dir + "/" + name, width, height, image_.data(), true,
-                         &error) &&
-        !png_failure_reported_) {
-      std::fprintf(stderr, "glpt: %s\n", error.c_str());
-      png_failure_reported_ = true;
-    }
-  }
+  if (have_image && !settings_.png_dir.empty() && frame_index_ % settings_.png_every == 0)
+    write_frame_png(settings_, frame_index_, width, height, image_, &png_failure_reported_);
   if (settings_.stats) {
     const rt::FrameStats& s = frame_stats_;
     const double trace_s = s.trace_ms / 1000.0;

@@ -54,6 +54,16 @@ struct OutputSettings {
   static OutputSettings from_environment();
 };
 
+// Creates settings.png_dir if it is set. If that fails, says so once on stderr and clears
+// png_dir: an unwritable GLPT_OUTPUT is reported once, not at every frame, and the program runs
+// on without PNGs.
+void create_png_directory(OutputSettings& settings);
+// Writes frame `frame_index` (`rgba`: rows bottom to top, made opaque here, as the window shows
+// it) as settings.png_dir/frame_NNNNNN.png. A failure is reported on stderr the first time only
+// (*failure_reported).
+void write_frame_png(const OutputSettings& settings, uint64_t frame_index, uint32_t width,
+                     uint32_t height, std::vector<uint8_t>& rgba, bool* failure_reported);
+
 class FrameOutput {
  public:
   // A context's output, rendering with its share group's renderer. nullptr and a message if no

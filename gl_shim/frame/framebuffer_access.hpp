@@ -29,4 +29,9 @@ struct FramebufferPixels {
 bool read_framebuffer(Context& ctx, rec::PixelKind kind, uint32_t buffer, int32_t x, int32_t y,
                       uint32_t width, uint32_t height, FramebufferPixels& out);
 
+// Sets out.inside for the rectangle at (x, y) of out.width x out.height: 1 where a pixel lies in
+// a drawable of `drawable_width` x `drawable_height`.
+void mark_inside_drawable(FramebufferPixels& out, int32_t x, int32_t y, uint32_t drawable_width,
+                          uint32_t drawable_height);
+
 }  // namespace glpt

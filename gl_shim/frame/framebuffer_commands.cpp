@@ -21,7 +21,14 @@ float clamp01(float v) { return std::clamp(v, 0.0f, 1.0f); }
 bool read_framebuffer(Context& ctx, rec::PixelKind kind, uint32_t buffer, int32_t x, int32_t y,
                       uint32_t width, uint32_t height, FramebufferPixels& out) {
   out = FramebufferPixels();
-  if (!execute_record(ctx) || !ctx.output) return false;
+  if (!execute_record(ctx) || !ctx.output) {
+    // No renderer: the clear colour stands in for the buffers (clear_fallback.hpp).
+    uint32_t w = 0, h = 0;
+    if (!ctx.clear_fallback || ctx.target == nullptr || !ctx.target->query_size(&w, &h))
+      return false;
+    ctx.clear_fallback->read(kind, x, y, width, height, w, h, out);
+    return true;
+  }
   rt::Renderer& renderer = ctx.output->renderer();
   const rec::DrawableConfig& drawable = ctx.output->drawable();
   std::lock_guard lock(ctx.target->mutex());
@@ -58,14 +65,19 @@ bool read_framebuffer(Context& ctx, rec::PixelKind kind, uint32_t buffer, int32_
   }
   out.width = width;
   out.height = height;
-  out.inside.assign(n, 0);
-  for (uint32_t j = 0; j < height; ++j)
-    for (uint32_t i = 0; i < width; ++i) {
-      const int64_t sx = int64_t{x} + i, sy = int64_t{y} + j;
-      out.inside[size_t{j} * width + i] =
-          sx >= 0 && sy >= 0 && sx < drawable.width && sy < drawable.height ? 1 : 0;
-    }
+  mark_inside_drawable(out, x, y, drawable.width, drawable.height);
   return true;
+}
+
+void mark_inside_drawable(FramebufferPixels& out, int32_t x, int32_t y, uint32_t drawable_width,
+                          uint32_t drawable_height) {
+  out.inside.assign(size_t{out.width} * out.height, 0);
+  for (uint32_t j = 0; j < out.height; ++j)
+    for (uint32_t i = 0; i < out.width; ++i) {
+      const int64_t sx = int64_t{x} + i, sy = int64_t{y} + j;
+      out.inside[size_t{j} * out.width + i] =
+          sx >= 0 && sy >= 0 && sx < drawable_width && sy < drawable_height ? 1 : 0;
+    }
 }
 
 namespace impl {

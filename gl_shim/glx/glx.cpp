@@ -59,7 +59,10 @@ namespace {
 using glpt::glx::Config;
 using glpt::glx::DisplayState;
 using glpt::glx::DrawableKind;
+using glpt::glx::glx_entry;
+using glpt::glx::glx_entry_void;
 using glpt::glx::GlxDrawable;
+using glpt::glx::kClientSide;
 
 // Every live GLX context, so that a stale or foreign GLXContext is GLXBadContext, not a crash.
 // Process-wide like the contexts themselves (a context may be made current on any thread).
@@ -103,13 +106,13 @@ GLXContext create_context(Display* dpy, const Config* config, GLXContext share, 
     glpt::glx::send_glx_error(dpy, glpt::glx::kGlxBadContext, 0, minor);
     return nullptr;
   }
-  auto* ctx = new __GLXcontextRec(share);
+  auto ctx = std::make_unique<__GLXcontextRec>(share);
   ctx->display = dpy;
   ctx->config = config;
   ctx->screen = config->screen;
   std::lock_guard lock(contexts_mutex());
-  live_contexts().insert(ctx);
-  return ctx;
+  live_contexts().insert(ctx.get());  // may throw: then the context is freed
+  return ctx.release();
 }
 
 // The GLX drawable `id` names on `dpy`, if it is one glX*Create* made.
@@ -215,19 +218,24 @@ bool make_current(Display* dpy, GLXDrawable draw, GLXDrawable read, GLXContext c
     glpt::glx::send_x_error(dpy, BadAccess, 0, minor);
     return false;
   }
-  const auto fail = [&] {
-    if (!was_bound) {
+  // The claim is given up again unless the context becomes current (a failure below, or an
+  // exception such as an allocation failure on the way).
+  struct Claim {
+    GLXContext ctx;
+    bool was_bound;
+    bool kept = false;
+    ~Claim() {
+      if (kept || was_bound) return;
       std::lock_guard lock(contexts_mutex());
       ctx->bound = false;
     }
-    return false;
-  };
+  } claim{ctx, was_bound};
   // The read drawable must be a drawable too; glpt reads from the draw drawable's buffers.
   GlxDrawable read_info;
   if (read != draw && !find_glx_drawable(state, read, &read_info)) {
     uint32_t w = 0, h = 0;
     glpt::WindowTarget* t = window_target(dpy, ctx, read, ctx->config, minor);
-    if (t == nullptr || !t->query_size(&w, &h)) return fail();
+    if (t == nullptr || !t->query_size(&w, &h)) return false;
   }
   GlxDrawable info;
   glpt::WindowTarget* target = nullptr;
@@ -242,7 +250,7 @@ bool make_current(Display* dpy, GLXDrawable draw, GLXDrawable read, GLXContext c
   } else {
     target = window_target(dpy, ctx, draw, ctx->config, minor);
   }
-  if (target == nullptr) return fail();
+  if (target == nullptr) return false;
   GLXContext old = current_glx();
   if (old != ctx) release_current();
   ctx->display = dpy;
@@ -250,6 +258,7 @@ bool make_current(Display* dpy, GLXDrawable draw, GLXDrawable read, GLXContext c
   ctx->readable = read;
   ctx->pbuffer = std::move(pbuffer);
   glpt::bind_target_and_make_current(ctx->gl, target);
+  claim.kept = true;
   return true;
 }
 
@@ -365,196 +374,231 @@ bool drawable_size(DisplayState* state, GLXDrawable draw, uint32_t* w, uint32_t*
 
 }  // namespace
 
+// Each entry point that can allocate runs through glx_entry (glx_display.hpp): no exception
+// crosses the C ABI. Those that only return constants or read the current context
+// (glXQueryVersion, glX*String, glXGetCurrent*, glXWaitX) cannot fail; glXMakeCurrentReadSGI,
+// glXQueryServerString and glXGetProcAddress forward to guarded ones.
 extern "C" {
 
 GLPT_EXPORT XVisualInfo* glXChooseVisual(Display* dpy, int screen, int* attrib_list) {
-  DisplayState* state = DisplayState::of(dpy);
-  const glpt::glx::ScreenConfigs* configs = state ? state->screen(screen) : nullptr;
-  if (configs == nullptr) return nullptr;
-  // The best visual config (Mesa: the first of the best, in the server's order).
-  const Config wanted = glpt::glx::chooser_template(attrib_list, /*fbconfig_style=*/false);
-  const Config* best = nullptr;
-  for (const Config& c : configs->visuals)
-    if (glpt::glx::compatible(wanted, c) && (best == nullptr || glpt::glx::compare(c, *best) < 0))
-      best = &c;
-  return best ? visual_info(dpy, screen, best->visual_id) : nullptr;
+  return glx_entry(dpy, kClientSide, static_cast<XVisualInfo*>(nullptr), [&]() -> XVisualInfo* {
+    DisplayState* state = DisplayState::of(dpy);
+    const glpt::glx::ScreenConfigs* configs = state ? state->screen(screen) : nullptr;
+    if (configs == nullptr) return nullptr;
+    // The best visual config (Mesa: the first of the best, in the server's order).
+    const Config wanted = glpt::glx::chooser_template(attrib_list, /*fbconfig_style=*/false);
+    const Config* best = nullptr;
+    for (const Config& c : configs->visuals)
+      if (glpt::glx::compatible(wanted, c) && (best == nullptr || glpt::glx::compare(c, *best) < 0))
+        best = &c;
+    return best ? visual_info(dpy, screen, best->visual_id) : nullptr;
+  });
 }
 
 GLPT_EXPORT int glXGetConfig(Display* dpy, XVisualInfo* vis, int attrib, int* value) {
-  DisplayState* state = DisplayState::of(dpy);
-  if (state == nullptr) return GLX_NO_EXTENSION;
-  if (vis == nullptr || value == nullptr) return GLX_BAD_VALUE;
-  if (state->screen(vis->screen) == nullptr) return GLX_BAD_SCREEN;
-  const Config* c = state->visual_config(vis->screen, vis->visualid);
-  if (c == nullptr) {
-    // A visual without GLX: only GLX_USE_GL may be asked (it is False), as in Mesa.
-    if (attrib != GLX_USE_GL) return GLX_BAD_VISUAL;
-    *value = 0;
-    return Success;
-  }
-  return glpt::glx::config_attribute(*c, attrib, value) ? Success : GLX_BAD_ATTRIBUTE;
+  return glx_entry(dpy, kClientSide, int{GLX_BAD_VALUE}, [&]() -> int {
+    DisplayState* state = DisplayState::of(dpy);
+    if (state == nullptr) return GLX_NO_EXTENSION;
+    if (vis == nullptr || value == nullptr) return GLX_BAD_VALUE;
+    if (state->screen(vis->screen) == nullptr) return GLX_BAD_SCREEN;
+    const Config* c = state->visual_config(vis->screen, vis->visualid);
+    if (c == nullptr) {
+      // A visual without GLX: only GLX_USE_GL may be asked (it is False), as in Mesa.
+      if (attrib != GLX_USE_GL) return GLX_BAD_VISUAL;
+      *value = 0;
+      return Success;
+    }
+    return glpt::glx::config_attribute(*c, attrib, value) ? Success : GLX_BAD_ATTRIBUTE;
+  });
 }
 
 GLPT_EXPORT GLXFBConfig* glXGetFBConfigs(Display* dpy, int screen, int* nelements) {
-  if (nelements) *nelements = 0;
-  DisplayState* state = DisplayState::of(dpy);
-  const glpt::glx::ScreenConfigs* configs = state ? state->screen(screen) : nullptr;
-  if (configs == nullptr || nelements == nullptr) return nullptr;
-  std::vector<const Config*> all;
-  for (const Config& c : configs->fbconfigs) all.push_back(&c);
-  return config_list(all, nelements);
+  return glx_entry(dpy, kClientSide, static_cast<GLXFBConfig*>(nullptr), [&]() -> GLXFBConfig* {
+    if (nelements) *nelements = 0;
+    DisplayState* state = DisplayState::of(dpy);
+    const glpt::glx::ScreenConfigs* configs = state ? state->screen(screen) : nullptr;
+    if (configs == nullptr || nelements == nullptr) return nullptr;
+    std::vector<const Config*> all;
+    for (const Config& c : configs->fbconfigs) all.push_back(&c);
+    return config_list(all, nelements);
+  });
 }
 
 GLPT_EXPORT GLXFBConfig* glXChooseFBConfig(Display* dpy, int screen, const int* attrib_list,
                                            int* nelements) {
-  if (nelements) *nelements = 0;
-  DisplayState* state = DisplayState::of(dpy);
-  const glpt::glx::ScreenConfigs* configs = state ? state->screen(screen) : nullptr;
-  if (configs == nullptr || nelements == nullptr) return nullptr;
-  std::vector<const Config*> chosen;
-  for (const Config& c : configs->fbconfigs) chosen.push_back(&c);
-  // Mesa returns every config, unsorted, for a NULL list.
-  if (attrib_list != nullptr) {
-    const Config wanted = glpt::glx::chooser_template(attrib_list, /*fbconfig_style=*/true);
-    std::erase_if(chosen, [&](const Config* c) { return !glpt::glx::compatible(wanted, *c); });
-    std::stable_sort(chosen.begin(), chosen.end(), [](const Config* a, const Config* b) {
-      return glpt::glx::compare(*a, *b) < 0;
-    });
-  }
-  return config_list(chosen, nelements);
+  return glx_entry(dpy, kClientSide, static_cast<GLXFBConfig*>(nullptr), [&]() -> GLXFBConfig* {
+    if (nelements) *nelements = 0;
+    DisplayState* state = DisplayState::of(dpy);
+    const glpt::glx::ScreenConfigs* configs = state ? state->screen(screen) : nullptr;
+    if (configs == nullptr || nelements == nullptr) return nullptr;
+    std::vector<const Config*> chosen;
+    for (const Config& c : configs->fbconfigs) chosen.push_back(&c);
+    // Mesa returns every config, unsorted, for a NULL list.
+    if (attrib_list != nullptr) {
+      const Config wanted = glpt::glx::chooser_template(attrib_list, /*fbconfig_style=*/true);
+      std::erase_if(chosen, [&](const Config* c) { return !glpt::glx::compatible(wanted, *c); });
+      std::stable_sort(chosen.begin(), chosen.end(), [](const Config* a, const Config* b) {
+        return glpt::glx::compare(*a, *b) < 0;
+      });
+    }
+    return config_list(chosen, nelements);
+  });
 }
 
 GLPT_EXPORT int glXGetFBConfigAttrib(Display* dpy, GLXFBConfig config, int attribute, int* value) {
-  DisplayState* state = DisplayState::of(dpy);
-  const Config* c = state ? state->validate(config) : nullptr;
-  if (c == nullptr) return 9;  // GLXBadFBConfig's code, returned as Mesa does
-  if (value == nullptr) return GLX_BAD_VALUE;
-  return glpt::glx::config_attribute(*c, attribute, value) ? Success : GLX_BAD_ATTRIBUTE;
+  return glx_entry(dpy, kClientSide, int{GLX_BAD_VALUE}, [&]() -> int {
+    DisplayState* state = DisplayState::of(dpy);
+    const Config* c = state ? state->validate(config) : nullptr;
+    if (c == nullptr) return 9;  // GLXBadFBConfig's code, returned as Mesa does
+    if (value == nullptr) return GLX_BAD_VALUE;
+    return glpt::glx::config_attribute(*c, attribute, value) ? Success : GLX_BAD_ATTRIBUTE;
+  });
 }
 
 GLPT_EXPORT XVisualInfo* glXGetVisualFromFBConfig(Display* dpy, GLXFBConfig config) {
-  DisplayState* state = DisplayState::of(dpy);
-  const Config* c = state ? state->validate(config) : nullptr;
-  return c ? visual_info(dpy, c->screen, c->visual_id) : nullptr;
+  return glx_entry(dpy, kClientSide, static_cast<XVisualInfo*>(nullptr), [&]() -> XVisualInfo* {
+    DisplayState* state = DisplayState::of(dpy);
+    const Config* c = state ? state->validate(config) : nullptr;
+    return c ? visual_info(dpy, c->screen, c->visual_id) : nullptr;
+  });
 }
 
 GLPT_EXPORT GLXContext glXCreateContext(Display* dpy, XVisualInfo* vis, GLXContext share_list,
                                         Bool direct) {
-  (void)direct;
-  DisplayState* state = DisplayState::of(dpy);
-  if (state == nullptr) return nullptr;
-  const Config* config = vis ? state->visual_config(vis->screen, vis->visualid) : nullptr;
-  if (config == nullptr) {
-    glpt::glx::send_x_error(dpy, BadValue, vis ? vis->visualid : 0, glpt::glx::kXGlxCreateContext);
-    return nullptr;
-  }
-  return create_context(dpy, config, share_list, glpt::glx::kXGlxCreateContext);
+  return glx_entry(
+      dpy, glpt::glx::kXGlxCreateContext, static_cast<GLXContext>(nullptr), [&]() -> GLXContext {
+        (void)direct;
+        DisplayState* state = DisplayState::of(dpy);
+        if (state == nullptr) return nullptr;
+        const Config* config = vis ? state->visual_config(vis->screen, vis->visualid) : nullptr;
+        if (config == nullptr) {
+          glpt::glx::send_x_error(dpy, BadValue, vis ? vis->visualid : 0,
+                                  glpt::glx::kXGlxCreateContext);
+          return nullptr;
+        }
+        return create_context(dpy, config, share_list, glpt::glx::kXGlxCreateContext);
+      });
 }
 
 GLPT_EXPORT GLXContext glXCreateNewContext(Display* dpy, GLXFBConfig config, int render_type,
                                            GLXContext share_list, Bool direct) {
-  (void)direct;
-  const Config* c = fbconfig(dpy, config, glpt::glx::kXGlxCreateNewContext);
-  if (c == nullptr) return nullptr;
-  if (render_type != GLX_RGBA_TYPE) {
-    // Colour index included (glpt's configs are RGBA only): BadValue, as Mesa reports it.
-    glpt::glx::send_x_error(dpy, BadValue, static_cast<XID>(render_type),
-                            glpt::glx::kXGlxCreateNewContext);
-    return nullptr;
-  }
-  return create_context(dpy, c, share_list, glpt::glx::kXGlxCreateNewContext);
+  return glx_entry(dpy, glpt::glx::kXGlxCreateNewContext, static_cast<GLXContext>(nullptr),
+                   [&]() -> GLXContext {
+                     (void)direct;
+                     const Config* c = fbconfig(dpy, config, glpt::glx::kXGlxCreateNewContext);
+                     if (c == nullptr) return nullptr;
+                     if (render_type != GLX_RGBA_TYPE) {
+                       // Colour index included (glpt's configs are RGBA only): BadValue, as Mesa
+                       // reports it.
+                       glpt::glx::send_x_error(dpy, BadValue, static_cast<XID>(render_type),
+                                               glpt::glx::kXGlxCreateNewContext);
+                       return nullptr;
+                     }
+                     return create_context(dpy, c, share_list, glpt::glx::kXGlxCreateNewContext);
+                   });
 }
 
 GLPT_EXPORT GLXContext glXCreateContextAttribsARB(Display* dpy, GLXFBConfig config,
                                                   GLXContext share_context, Bool direct,
                                                   const int* attrib_list) {
-  (void)direct;
-  constexpr int kMinor = glpt::glx::kXGlxCreateContextAttribsArb;
-  const Config* c = fbconfig(dpy, config, kMinor);
-  if (c == nullptr) return nullptr;
-  int major = 1, minor = 0, render_type = GLX_RGBA_TYPE, flags = 0;
-  int profile = GLX_CONTEXT_CORE_PROFILE_BIT_ARB;
-  constexpr int kAllFlags = GLX_CONTEXT_DEBUG_BIT_ARB | GLX_CONTEXT_FORWARD_COMPATIBLE_BIT_ARB |
-                            0x4 /* GLX_CONTEXT_ROBUST_ACCESS_BIT_ARB */;
-  for (int i = 0; attrib_list && attrib_list[i] != None; i += 2) {
-    const int value = attrib_list[i + 1];
-    switch (attrib_list[i]) {
-      case GLX_CONTEXT_MAJOR_VERSION_ARB:
-        major = value;
-        break;
-      case GLX_CONTEXT_MINOR_VERSION_ARB:
-        minor = value;
-        break;
-      case GLX_CONTEXT_PROFILE_MASK_ARB:
-        profile = value;
-        break;
-      case GLX_RENDER_TYPE:
-        render_type = value;
-        break;
-      case GLX_CONTEXT_FLAGS_ARB:
-        flags = value;
-        break;
-      default:
-        // GLX_ARB_create_context: an attribute it does not define is BadValue.
-        glpt::glx::send_x_error(dpy, BadValue, static_cast<XID>(attrib_list[i]), 0);
-        return nullptr;
-    }
-  }
-  // The errors below are Mesa's choices, reported as Mesa does (minor code 0: found on the client
-  // side). GLX_ARB_create_context: unknown flag bits are BadValue; a version GL never defined or
-  // forward-compatibility before 3.0 is BadMatch. GLX_ARB_create_context_profile: no profile bit,
-  // an unknown one or both is GLXBadProfileARB, whatever the version (as Mesa checks it). Colour
-  // index (no such configs) and unknown render types are BadValue.
-  const int profile_bits =
-      GLX_CONTEXT_CORE_PROFILE_BIT_ARB | GLX_CONTEXT_COMPATIBILITY_PROFILE_BIT_ARB;
-  if ((flags & ~kAllFlags) != 0 || render_type != GLX_RGBA_TYPE) {
-    glpt::glx::send_x_error(dpy, BadValue, 0, 0);
-    return nullptr;
-  }
-  const bool defined =
-      (major == 1 && minor >= 0 && minor <= 5) || (major == 2 && minor >= 0 && minor <= 1) ||
-      (major == 3 && minor >= 0 && minor <= 3) || (major == 4 && minor >= 0 && minor <= 6);
-  if (!defined || ((flags & GLX_CONTEXT_FORWARD_COMPATIBLE_BIT_ARB) && major < 3)) {
-    glpt::glx::send_x_error(dpy, BadMatch, 0, 0);
-    return nullptr;
-  }
-  if (profile == 0 || (profile & ~profile_bits) != 0 || profile == profile_bits) {
-    glpt::glx::send_glx_error(dpy, glpt::glx::kGlxBadProfileArb, 0, 0);
-    return nullptr;
-  }
-  // glpt is an OpenGL 1.5 implementation: later versions are configs it cannot serve.
-  if (major > 1) {
-    glpt::glx::send_glx_error(dpy, glpt::glx::kGlxBadFBConfig, 0, kMinor);
-    return nullptr;
-  }
-  return create_context(dpy, c, share_context, kMinor);
+  return glx_entry(
+      dpy, glpt::glx::kXGlxCreateContextAttribsArb, static_cast<GLXContext>(nullptr),
+      [&]() -> GLXContext {
+        (void)direct;
+        constexpr int kMinor = glpt::glx::kXGlxCreateContextAttribsArb;
+        const Config* c = fbconfig(dpy, config, kMinor);
+        if (c == nullptr) return nullptr;
+        int major = 1, minor = 0, render_type = GLX_RGBA_TYPE, flags = 0;
+        int profile = GLX_CONTEXT_CORE_PROFILE_BIT_ARB;
+        constexpr int kAllFlags = GLX_CONTEXT_DEBUG_BIT_ARB |
+                                  GLX_CONTEXT_FORWARD_COMPATIBLE_BIT_ARB |
+                                  0x4 /* GLX_CONTEXT_ROBUST_ACCESS_BIT_ARB */;
+        for (int i = 0; attrib_list && attrib_list[i] != None; i += 2) {
+          const int value = attrib_list[i + 1];
+          switch (attrib_list[i]) {
+            case GLX_CONTEXT_MAJOR_VERSION_ARB:
+              major = value;
+              break;
+            case GLX_CONTEXT_MINOR_VERSION_ARB:
+              minor = value;
+              break;
+            case GLX_CONTEXT_PROFILE_MASK_ARB:
+              profile = value;
+              break;
+            case GLX_RENDER_TYPE:
+              render_type = value;
+              break;
+            case GLX_CONTEXT_FLAGS_ARB:
+              flags = value;
+              break;
+            default:
+              // GLX_ARB_create_context: an attribute it does not define is BadValue.
+              glpt::glx::send_x_error(dpy, BadValue, static_cast<XID>(attrib_list[i]), 0);
+              return nullptr;
+          }
+        }
+        // The errors below are Mesa's choices, reported as Mesa does (minor code 0: found on the
+        // client side). GLX_ARB_create_context: unknown flag bits are BadValue; a version GL never
+        // defined or forward-compatibility before 3.0 is BadMatch. GLX_ARB_create_context_profile:
+        // no profile bit, an unknown one or both is GLXBadProfileARB, whatever the version (as Mesa
+        // checks it). Colour index (no such configs) and unknown render types are BadValue.
+        const int profile_bits =
+            GLX_CONTEXT_CORE_PROFILE_BIT_ARB | GLX_CONTEXT_COMPATIBILITY_PROFILE_BIT_ARB;
+        if ((flags & ~kAllFlags) != 0 || render_type != GLX_RGBA_TYPE) {
+          glpt::glx::send_x_error(dpy, BadValue, 0, 0);
+          return nullptr;
+        }
+        const bool defined =
+            (major == 1 && minor >= 0 && minor <= 5) || (major == 2 && minor >= 0 && minor <= 1) ||
+            (major == 3 && minor >= 0 && minor <= 3) || (major == 4 && minor >= 0 && minor <= 6);
+        if (!defined || ((flags & GLX_CONTEXT_FORWARD_COMPATIBLE_BIT_ARB) && major < 3)) {
+          glpt::glx::send_x_error(dpy, BadMatch, 0, 0);
+          return nullptr;
+        }
+        if (profile == 0 || (profile & ~profile_bits) != 0 || profile == profile_bits) {
+          glpt::glx::send_glx_error(dpy, glpt::glx::kGlxBadProfileArb, 0, 0);
+          return nullptr;
+        }
+        // glpt is an OpenGL 1.5 implementation: later versions are configs it cannot serve.
+        if (major > 1) {
+          glpt::glx::send_glx_error(dpy, glpt::glx::kGlxBadFBConfig, 0, kMinor);
+          return nullptr;
+        }
+        return create_context(dpy, c, share_context, kMinor);
+      });
 }
 
 GLPT_EXPORT void glXDestroyContext(Display* dpy, GLXContext ctx) {
-  if (ctx == nullptr) return;
-  bool live = false, destroy_now = false;
-  {
-    std::lock_guard lock(contexts_mutex());
-    live = live_contexts().count(ctx) != 0;
-    if (live && ctx->bound) {
-      ctx->destroy_when_released = true;  // GLX 1.4 3.3.7: once no thread has it current
-    } else if (live) {
-      live_contexts().erase(ctx);
-      destroy_now = true;
+  glx_entry_void(dpy, glpt::glx::kXGlxDestroyContext, [&] {
+    if (ctx == nullptr) return;
+    bool live = false, destroy_now = false;
+    {
+      std::lock_guard lock(contexts_mutex());
+      live = live_contexts().count(ctx) != 0;
+      if (live && ctx->bound) {
+        ctx->destroy_when_released = true;  // GLX 1.4 3.3.7: once no thread has it current
+      } else if (live) {
+        live_contexts().erase(ctx);
+        destroy_now = true;
+      }
     }
-  }
-  if (!live && dpy != nullptr)
-    glpt::glx::send_glx_error(dpy, glpt::glx::kGlxBadContext, 0, glpt::glx::kXGlxDestroyContext);
-  if (destroy_now) delete ctx;
+    if (!live && dpy != nullptr)
+      glpt::glx::send_glx_error(dpy, glpt::glx::kGlxBadContext, 0, glpt::glx::kXGlxDestroyContext);
+    if (destroy_now) delete ctx;
+  });
 }
 
 GLPT_EXPORT Bool glXMakeCurrent(Display* dpy, GLXDrawable drawable, GLXContext ctx) {
-  return make_current(dpy, drawable, drawable, ctx, glpt::glx::kXGlxMakeCurrent) ? True : False;
+  return glx_entry(dpy, glpt::glx::kXGlxMakeCurrent, Bool{False}, [&]() -> Bool {
+    return make_current(dpy, drawable, drawable, ctx, glpt::glx::kXGlxMakeCurrent) ? True : False;
+  });
 }
 
 GLPT_EXPORT Bool glXMakeContextCurrent(Display* dpy, GLXDrawable draw, GLXDrawable read,
                                        GLXContext ctx) {
-  return make_current(dpy, draw, read, ctx, glpt::glx::kXGlxMakeContextCurrent) ? True : False;
+  return glx_entry(dpy, glpt::glx::kXGlxMakeContextCurrent, Bool{False}, [&]() -> Bool {
+    return make_current(dpy, draw, read, ctx, glpt::glx::kXGlxMakeContextCurrent) ? True : False;
+  });
 }
 
 GLPT_EXPORT Bool glXMakeCurrentReadSGI(Display* dpy, GLXDrawable draw, GLXDrawable read,
@@ -563,25 +607,27 @@ GLPT_EXPORT Bool glXMakeCurrentReadSGI(Display* dpy, GLXDrawable draw, GLXDrawab
 }
 
 GLPT_EXPORT void glXSwapBuffers(Display* dpy, GLXDrawable drawable) {
-  if (dpy == nullptr) return;
-  // The program's X requests (a resize, its own drawing) are done before glpt's connection asks
-  // for the window's size and draws: Mesa's swap makes its requests on `dpy`, after them.
-  XSync(dpy, False);
-  if (drawable == None) {
-    glpt::glx::send_glx_error(dpy, glpt::glx::kGlxBadDrawable, drawable,
-                              glpt::glx::kXGlxSwapBuffers);
-    return;
-  }
-  GLXContext ctx = current_glx();
-  // Swapping a drawable that is not current here has no GL work of this thread to show.
-  if (ctx == nullptr || ctx->drawable != drawable) return;
-  GlxDrawable info;
-  if (find_glx_drawable(DisplayState::of(dpy), drawable, &info) &&
-      info.kind == DrawableKind::kPixmap)
-    return;  // GLX 1.4 3.3.10: no effect on a pixmap
-  // A single-buffered window has nothing to swap; what was drawn is flushed to it, as Mesa's
-  // swap flushes the context.
-  glpt::end_frame(ctx->gl, /*swap=*/current_target_double_buffered(ctx));
+  glpt::glx::gl_work_entry([&] {
+    if (dpy == nullptr) return;
+    // The program's X requests (a resize, its own drawing) are done before glpt's connection asks
+    // for the window's size and draws: Mesa's swap makes its requests on `dpy`, after them.
+    XSync(dpy, False);
+    if (drawable == None) {
+      glpt::glx::send_glx_error(dpy, glpt::glx::kGlxBadDrawable, drawable,
+                                glpt::glx::kXGlxSwapBuffers);
+      return;
+    }
+    GLXContext ctx = current_glx();
+    // Swapping a drawable that is not current here has no GL work of this thread to show.
+    if (ctx == nullptr || ctx->drawable != drawable) return;
+    GlxDrawable info;
+    if (find_glx_drawable(DisplayState::of(dpy), drawable, &info) &&
+        info.kind == DrawableKind::kPixmap)
+      return;  // GLX 1.4 3.3.10: no effect on a pixmap
+    // A single-buffered window has nothing to swap; what was drawn is flushed to it, as Mesa's
+    // swap flushes the context.
+    glpt::end_frame(ctx->gl, /*swap=*/current_target_double_buffered(ctx));
+  });
 }
 
 GLPT_EXPORT const char* glXQueryExtensionsString(Display* dpy, int screen) {
@@ -610,11 +656,13 @@ GLPT_EXPORT const char* glXQueryServerString(Display* dpy, int screen, int name)
 }
 
 GLPT_EXPORT Bool glXQueryExtension(Display* dpy, int* error_base, int* event_base) {
-  DisplayState* state = DisplayState::of(dpy);
-  if (state == nullptr) return False;
-  if (error_base) *error_base = state->glx_error_base();
-  if (event_base) *event_base = state->glx_event_base();
-  return True;
+  return glx_entry(dpy, kClientSide, Bool{False}, [&]() -> Bool {
+    DisplayState* state = DisplayState::of(dpy);
+    if (state == nullptr) return False;
+    if (error_base) *error_base = state->glx_error_base();
+    if (event_base) *event_base = state->glx_event_base();
+    return True;
+  });
 }
 
 GLPT_EXPORT Bool glXQueryVersion(Display* dpy, int* major, int* minor) {
@@ -625,11 +673,13 @@ GLPT_EXPORT Bool glXQueryVersion(Display* dpy, int* major, int* minor) {
 }
 
 GLPT_EXPORT Bool glXIsDirect(Display* dpy, GLXContext ctx) {
-  if (!is_live(ctx)) {
-    if (dpy && ctx) glpt::glx::send_glx_error(dpy, glpt::glx::kGlxBadContext, 0, 6);
-    return False;
-  }
-  return True;
+  return glx_entry(dpy, glpt::glx::kXGlxIsDirect, Bool{False}, [&]() -> Bool {
+    if (!is_live(ctx)) {
+      if (dpy && ctx) glpt::glx::send_glx_error(dpy, glpt::glx::kGlxBadContext, 0, 6);
+      return False;
+    }
+    return True;
+  });
 }
 
 GLPT_EXPORT GLXContext glXGetCurrentContext(void) { return current_glx(); }
@@ -652,221 +702,248 @@ GLPT_EXPORT Display* glXGetCurrentDisplay(void) {
 }
 
 GLPT_EXPORT int glXQueryContext(Display* dpy, GLXContext ctx, int attribute, int* value) {
-  (void)dpy;
-  if (!is_live(ctx) || value == nullptr) return GLX_BAD_CONTEXT;
-  switch (attribute) {
-    case GLX_FBCONFIG_ID:
-      *value = ctx->config->fbconfig_id;
-      return Success;
-    case GLX_RENDER_TYPE:
-      *value = GLX_RGBA_TYPE;
-      return Success;
-    case GLX_SCREEN:
-      *value = ctx->screen;
-      return Success;
-    case 0x800B:  // GLX_VISUAL_ID_EXT
-      *value = ctx->config->visual_id;
-      return Success;
-    case 0x800A:  // GLX_SHARE_CONTEXT_EXT: contexts have no server XID
-      *value = 0;
-      return Success;
-    default:
-      return GLX_BAD_ATTRIBUTE;
-  }
+  return glx_entry(dpy, kClientSide, int{GLX_BAD_CONTEXT}, [&]() -> int {
+    (void)dpy;
+    if (!is_live(ctx) || value == nullptr) return GLX_BAD_CONTEXT;
+    switch (attribute) {
+      case GLX_FBCONFIG_ID:
+        *value = ctx->config->fbconfig_id;
+        return Success;
+      case GLX_RENDER_TYPE:
+        *value = GLX_RGBA_TYPE;
+        return Success;
+      case GLX_SCREEN:
+        *value = ctx->screen;
+        return Success;
+      case 0x800B:  // GLX_VISUAL_ID_EXT
+        *value = ctx->config->visual_id;
+        return Success;
+      case 0x800A:  // GLX_SHARE_CONTEXT_EXT: contexts have no server XID
+        *value = 0;
+        return Success;
+      default:
+        return GLX_BAD_ATTRIBUTE;
+    }
+  });
 }
 
 GLPT_EXPORT GLXWindow glXCreateWindow(Display* dpy, GLXFBConfig config, Window win,
                                       const int* attrib_list) {
-  (void)attrib_list;  // GLX 1.4 defines no attributes for windows
-  return create_glx_drawable(dpy, config, win, DrawableKind::kWindow, GLX_WINDOW_BIT, BadWindow,
-                             glpt::glx::kXGlxCreateWindow);
+  return glx_entry(dpy, glpt::glx::kXGlxCreateWindow, GLXWindow{None}, [&]() -> GLXWindow {
+    (void)attrib_list;  // GLX 1.4 defines no attributes for windows
+    return create_glx_drawable(dpy, config, win, DrawableKind::kWindow, GLX_WINDOW_BIT, BadWindow,
+                               glpt::glx::kXGlxCreateWindow);
+  });
 }
 
 GLPT_EXPORT void glXDestroyWindow(Display* dpy, GLXWindow win) {
-  destroy_glx_drawable(dpy, win, DrawableKind::kWindow, glpt::glx::kGlxBadWindow,
-                       glpt::glx::kXGlxDestroyWindow);
+  glx_entry_void(dpy, glpt::glx::kXGlxDestroyWindow, [&] {
+    destroy_glx_drawable(dpy, win, DrawableKind::kWindow, glpt::glx::kGlxBadWindow,
+                         glpt::glx::kXGlxDestroyWindow);
+  });
 }
 
 GLPT_EXPORT GLXPixmap glXCreatePixmap(Display* dpy, GLXFBConfig config, Pixmap pixmap,
                                       const int* attrib_list) {
-  (void)attrib_list;  // GLX 1.4 defines no attributes for pixmaps
-  return create_glx_drawable(dpy, config, pixmap, DrawableKind::kPixmap, GLX_PIXMAP_BIT, BadPixmap,
-                             glpt::glx::kXGlxCreatePixmap);
+  return glx_entry(dpy, glpt::glx::kXGlxCreatePixmap, GLXPixmap{None}, [&]() -> GLXPixmap {
+    (void)attrib_list;  // GLX 1.4 defines no attributes for pixmaps
+    return create_glx_drawable(dpy, config, pixmap, DrawableKind::kPixmap, GLX_PIXMAP_BIT,
+                               BadPixmap, glpt::glx::kXGlxCreatePixmap);
+  });
 }
 
 GLPT_EXPORT void glXDestroyPixmap(Display* dpy, GLXPixmap pixmap) {
-  destroy_glx_drawable(dpy, pixmap, DrawableKind::kPixmap, glpt::glx::kGlxBadPixmap,
-                       glpt::glx::kXGlxDestroyPixmap);
+  glx_entry_void(dpy, glpt::glx::kXGlxDestroyPixmap, [&] {
+    destroy_glx_drawable(dpy, pixmap, DrawableKind::kPixmap, glpt::glx::kGlxBadPixmap,
+                         glpt::glx::kXGlxDestroyPixmap);
+  });
 }
 
 GLPT_EXPORT GLXPixmap glXCreateGLXPixmap(Display* dpy, XVisualInfo* vis, Pixmap pixmap) {
-  DisplayState* state = DisplayState::of(dpy);
-  if (state == nullptr) return None;
-  const Config* c = vis ? state->visual_config(vis->screen, vis->visualid) : nullptr;
-  if (c == nullptr) {
-    glpt::glx::send_x_error(dpy, BadValue, vis ? vis->visualid : 0,
-                            glpt::glx::kXGlxCreateGLXPixmap);
-    return None;
-  }
-  if (pixmap == None) {
-    glpt::glx::send_x_error(dpy, BadPixmap, pixmap, glpt::glx::kXGlxCreateGLXPixmap);
-    return None;
-  }
-  GlxDrawable d;
-  d.kind = DrawableKind::kPixmap;
-  d.config = c;
-  d.x_drawable = pixmap;
-  return new_glx_drawable(dpy, state, d);
+  return glx_entry(dpy, glpt::glx::kXGlxCreateGLXPixmap, GLXPixmap{None}, [&]() -> GLXPixmap {
+    DisplayState* state = DisplayState::of(dpy);
+    if (state == nullptr) return None;
+    const Config* c = vis ? state->visual_config(vis->screen, vis->visualid) : nullptr;
+    if (c == nullptr) {
+      glpt::glx::send_x_error(dpy, BadValue, vis ? vis->visualid : 0,
+                              glpt::glx::kXGlxCreateGLXPixmap);
+      return None;
+    }
+    if (pixmap == None) {
+      glpt::glx::send_x_error(dpy, BadPixmap, pixmap, glpt::glx::kXGlxCreateGLXPixmap);
+      return None;
+    }
+    GlxDrawable d;
+    d.kind = DrawableKind::kPixmap;
+    d.config = c;
+    d.x_drawable = pixmap;
+    return new_glx_drawable(dpy, state, d);
+  });
 }
 
 GLPT_EXPORT void glXDestroyGLXPixmap(Display* dpy, GLXPixmap pixmap) {
-  destroy_glx_drawable(dpy, pixmap, DrawableKind::kPixmap, glpt::glx::kGlxBadPixmap,
-                       glpt::glx::kXGlxDestroyGLXPixmap);
+  glx_entry_void(dpy, glpt::glx::kXGlxDestroyGLXPixmap, [&] {
+    destroy_glx_drawable(dpy, pixmap, DrawableKind::kPixmap, glpt::glx::kGlxBadPixmap,
+                         glpt::glx::kXGlxDestroyGLXPixmap);
+  });
 }
 
 GLPT_EXPORT GLXPbuffer glXCreatePbuffer(Display* dpy, GLXFBConfig config, const int* attrib_list) {
-  constexpr int kMinor = glpt::glx::kXGlxCreatePbuffer;
-  const Config* c = fbconfig(dpy, config, kMinor);
-  if (c == nullptr) return None;
-  if ((c->drawable_type & GLX_PBUFFER_BIT) == 0) {
-    glpt::glx::send_x_error(dpy, BadMatch, 0, kMinor);
-    return None;
-  }
-  int width = 0, height = 0;
-  GlxDrawable d;
-  d.kind = DrawableKind::kPbuffer;
-  d.config = c;
-  for (int i = 0; attrib_list && attrib_list[i] != None; i += 2) {
-    const int value = attrib_list[i + 1];
-    switch (attrib_list[i]) {
-      case GLX_PBUFFER_WIDTH:
-        width = value;
-        break;
-      case GLX_PBUFFER_HEIGHT:
-        height = value;
-        break;
-      case GLX_PRESERVED_CONTENTS:  // contents are always preserved
-        break;
-      case GLX_LARGEST_PBUFFER:
-        d.largest_pbuffer = value != 0;
-        break;
-      default:
-        glpt::glx::send_x_error(dpy, BadValue, static_cast<XID>(attrib_list[i]), kMinor);
-        return None;
-    }
-  }
-  int max_size = 0;
-  glpt::glx::config_attribute(*c, GLX_MAX_PBUFFER_WIDTH, &max_size);
-  if (width < 0 || height < 0) {
-    glpt::glx::send_x_error(dpy, BadValue, 0, kMinor);
-    return None;
-  }
-  if (width > max_size || height > max_size) {
-    if (!d.largest_pbuffer) {
-      glpt::glx::send_x_error(dpy, BadAlloc, 0, kMinor);
+  return glx_entry(dpy, glpt::glx::kXGlxCreatePbuffer, GLXPbuffer{None}, [&]() -> GLXPbuffer {
+    constexpr int kMinor = glpt::glx::kXGlxCreatePbuffer;
+    const Config* c = fbconfig(dpy, config, kMinor);
+    if (c == nullptr) return None;
+    if ((c->drawable_type & GLX_PBUFFER_BIT) == 0) {
+      glpt::glx::send_x_error(dpy, BadMatch, 0, kMinor);
       return None;
     }
-    width = std::min(width, max_size);
-    height = std::min(height, max_size);
-  }
-  d.pbuffer = std::make_shared<glpt::HeadlessTarget>(
-      static_cast<uint32_t>(width), static_cast<uint32_t>(height), glpt::glx::drawable_config(*c));
-  return new_glx_drawable(dpy, DisplayState::of(dpy), d);
+    int width = 0, height = 0;
+    GlxDrawable d;
+    d.kind = DrawableKind::kPbuffer;
+    d.config = c;
+    for (int i = 0; attrib_list && attrib_list[i] != None; i += 2) {
+      const int value = attrib_list[i + 1];
+      switch (attrib_list[i]) {
+        case GLX_PBUFFER_WIDTH:
+          width = value;
+          break;
+        case GLX_PBUFFER_HEIGHT:
+          height = value;
+          break;
+        case GLX_PRESERVED_CONTENTS:  // contents are always preserved
+          break;
+        case GLX_LARGEST_PBUFFER:
+          d.largest_pbuffer = value != 0;
+          break;
+        default:
+          glpt::glx::send_x_error(dpy, BadValue, static_cast<XID>(attrib_list[i]), kMinor);
+          return None;
+      }
+    }
+    int max_size = 0;
+    glpt::glx::config_attribute(*c, GLX_MAX_PBUFFER_WIDTH, &max_size);
+    if (width < 0 || height < 0) {
+      glpt::glx::send_x_error(dpy, BadValue, 0, kMinor);
+      return None;
+    }
+    if (width > max_size || height > max_size) {
+      if (!d.largest_pbuffer) {
+        glpt::glx::send_x_error(dpy, BadAlloc, 0, kMinor);
+        return None;
+      }
+      width = std::min(width, max_size);
+      height = std::min(height, max_size);
+    }
+    d.pbuffer = std::make_shared<glpt::HeadlessTarget>(static_cast<uint32_t>(width),
+                                                       static_cast<uint32_t>(height),
+                                                       glpt::glx::drawable_config(*c));
+    return new_glx_drawable(dpy, DisplayState::of(dpy), d);
+  });
 }
 
 GLPT_EXPORT void glXDestroyPbuffer(Display* dpy, GLXPbuffer pbuf) {
-  destroy_glx_drawable(dpy, pbuf, DrawableKind::kPbuffer, glpt::glx::kGlxBadPbuffer,
-                       glpt::glx::kXGlxDestroyPbuffer);
+  glx_entry_void(dpy, glpt::glx::kXGlxDestroyPbuffer, [&] {
+    destroy_glx_drawable(dpy, pbuf, DrawableKind::kPbuffer, glpt::glx::kGlxBadPbuffer,
+                         glpt::glx::kXGlxDestroyPbuffer);
+  });
 }
 
 GLPT_EXPORT void glXSelectEvent(Display* dpy, GLXDrawable draw, unsigned long event_mask) {
-  DisplayState* state = DisplayState::of(dpy);
-  if (state == nullptr) return;
-  std::lock_guard lock(state->mutex);
-  auto it = state->drawables.find(draw);
-  if (it == state->drawables.end()) {
-    glpt::glx::send_glx_error(dpy, glpt::glx::kGlxBadDrawable, draw, 0);
-    return;
-  }
-  it->second.event_mask = event_mask;
+  glx_entry_void(dpy, glpt::glx::kXGlxChangeDrawableAttributes, [&] {
+    DisplayState* state = DisplayState::of(dpy);
+    if (state == nullptr) return;
+    std::lock_guard lock(state->mutex);
+    auto it = state->drawables.find(draw);
+    if (it == state->drawables.end()) {
+      glpt::glx::send_glx_error(dpy, glpt::glx::kGlxBadDrawable, draw, 0);
+      return;
+    }
+    it->second.event_mask = event_mask;
+  });
 }
 
 GLPT_EXPORT void glXGetSelectedEvent(Display* dpy, GLXDrawable draw, unsigned long* event_mask) {
-  DisplayState* state = DisplayState::of(dpy);
-  if (state == nullptr || event_mask == nullptr) return;
-  std::lock_guard lock(state->mutex);
-  auto it = state->drawables.find(draw);
-  if (it == state->drawables.end()) {
-    glpt::glx::send_glx_error(dpy, glpt::glx::kGlxBadDrawable, draw, 0);
-    return;
-  }
-  *event_mask = it->second.event_mask;
+  glx_entry_void(dpy, glpt::glx::kXGlxGetDrawableAttributes, [&] {
+    DisplayState* state = DisplayState::of(dpy);
+    if (state == nullptr || event_mask == nullptr) return;
+    std::lock_guard lock(state->mutex);
+    auto it = state->drawables.find(draw);
+    if (it == state->drawables.end()) {
+      glpt::glx::send_glx_error(dpy, glpt::glx::kGlxBadDrawable, draw, 0);
+      return;
+    }
+    *event_mask = it->second.event_mask;
+  });
 }
 
 GLPT_EXPORT void glXQueryDrawable(Display* dpy, GLXDrawable draw, int attribute,
                                   unsigned int* value) {
-  constexpr int kMinor = glpt::glx::kXGlxGetDrawableAttributes;
-  DisplayState* state = DisplayState::of(dpy);
-  if (state == nullptr || value == nullptr) return;
-  if (draw == None) {
-    glpt::glx::send_glx_error(dpy, glpt::glx::kGlxBadDrawable, draw, kMinor);
-    return;
-  }
-  XSync(dpy, False);  // Mesa asks on `dpy`, after the program's own requests
-  GlxDrawable info;
-  const bool glx_drawable = find_glx_drawable(state, draw, &info);
-  GLXContext ctx = current_glx();
-  const Config* config = glx_drawable                     ? info.config
-                         : (ctx && ctx->drawable == draw) ? ctx->config
-                                                          : nullptr;
-  switch (attribute) {
-    case GLX_WIDTH:
-    case GLX_HEIGHT: {
-      uint32_t w = 0, h = 0;
-      if (!drawable_size(state, draw, &w, &h)) {
-        glpt::glx::send_glx_error(dpy, glpt::glx::kGlxBadDrawable, draw, kMinor);
+  glx_entry_void(dpy, glpt::glx::kXGlxGetDrawableAttributes, [&] {
+    constexpr int kMinor = glpt::glx::kXGlxGetDrawableAttributes;
+    DisplayState* state = DisplayState::of(dpy);
+    if (state == nullptr || value == nullptr) return;
+    if (draw == None) {
+      glpt::glx::send_glx_error(dpy, glpt::glx::kGlxBadDrawable, draw, kMinor);
+      return;
+    }
+    XSync(dpy, False);  // Mesa asks on `dpy`, after the program's own requests
+    GlxDrawable info;
+    const bool glx_drawable = find_glx_drawable(state, draw, &info);
+    GLXContext ctx = current_glx();
+    const Config* config = glx_drawable                     ? info.config
+                           : (ctx && ctx->drawable == draw) ? ctx->config
+                                                            : nullptr;
+    switch (attribute) {
+      case GLX_WIDTH:
+      case GLX_HEIGHT: {
+        uint32_t w = 0, h = 0;
+        if (!drawable_size(state, draw, &w, &h)) {
+          glpt::glx::send_glx_error(dpy, glpt::glx::kGlxBadDrawable, draw, kMinor);
+          return;
+        }
+        *value = attribute == GLX_WIDTH ? w : h;
         return;
       }
-      *value = attribute == GLX_WIDTH ? w : h;
-      return;
+      case GLX_PRESERVED_CONTENTS:
+        // A pbuffer's contents are always kept (its buffers are the context's own), so it says
+        // True whatever was asked, as Mesa on Xvfb does.
+        *value = glx_drawable && info.kind == DrawableKind::kPbuffer ? 1 : 0;
+        return;
+      case GLX_LARGEST_PBUFFER:
+        *value = glx_drawable && info.kind == DrawableKind::kPbuffer ? info.largest_pbuffer : 0;
+        return;
+      case GLX_FBCONFIG_ID:
+        // A plain X window answers the FBConfig of its visual (a context made from a visual has
+        // the visual's config, which has no FBConfig id), as Mesa does.
+        if (config != nullptr && !glx_drawable && config->fbconfig_id == glpt::glx::kDontCare)
+          config = state->fbconfig_for_visual(config->screen, config->visual_id);
+        *value = config ? static_cast<unsigned>(config->fbconfig_id) : 0;
+        return;
+      case GLX_EVENT_MASK:
+        *value = glx_drawable ? static_cast<unsigned>(info.event_mask) : 0;
+        return;
+      case GLX_SWAP_INTERVAL_EXT: {
+        std::lock_guard lock(state->mutex);
+        auto it = state->swap_intervals.find(draw);
+        *value = it == state->swap_intervals.end() ? 1u : static_cast<unsigned>(it->second);
+        return;
+      }
+      case GLX_MAX_SWAP_INTERVAL_EXT:
+        *value = INT_MAX;
+        return;
+      default:
+        glpt::glx::send_x_error(dpy, BadValue, static_cast<XID>(attribute), kMinor);
+        return;
     }
-    case GLX_PRESERVED_CONTENTS:
-      // A pbuffer's contents are always kept (its buffers are the context's own), so it says
-      // True whatever was asked, as Mesa on Xvfb does.
-      *value = glx_drawable && info.kind == DrawableKind::kPbuffer ? 1 : 0;
-      return;
-    case GLX_LARGEST_PBUFFER:
-      *value = glx_drawable && info.kind == DrawableKind::kPbuffer ? info.largest_pbuffer : 0;
-      return;
-    case GLX_FBCONFIG_ID:
-      // A plain X window answers the FBConfig of its visual (a context made from a visual has
-      // the visual's config, which has no FBConfig id), as Mesa does.
-      if (config != nullptr && !glx_drawable && config->fbconfig_id == glpt::glx::kDontCare)
-        config = state->fbconfig_for_visual(config->screen, config->visual_id);
-      *value = config ? static_cast<unsigned>(config->fbconfig_id) : 0;
-      return;
-    case GLX_EVENT_MASK:
-      *value = glx_drawable ? static_cast<unsigned>(info.event_mask) : 0;
-      return;
-    case GLX_SWAP_INTERVAL_EXT: {
-      std::lock_guard lock(state->mutex);
-      auto it = state->swap_intervals.find(draw);
-      *value = it == state->swap_intervals.end() ? 1u : static_cast<unsigned>(it->second);
-      return;
-    }
-    case GLX_MAX_SWAP_INTERVAL_EXT:
-      *value = INT_MAX;
-      return;
-    default:
-      glpt::glx::send_x_error(dpy, BadValue, static_cast<XID>(attribute), kMinor);
-      return;
-  }
+  });
 }
 
 // glpt renders synchronously. glXWaitGL: what GL drew reaches the window before later X
 // rendering, as glFinish makes it. glXWaitX: the program's X requests are done (Mesa: XSync).
 GLPT_EXPORT void glXWaitGL(void) {
-  if (current_glx() != nullptr) glpt::impl::glFinish(*glpt::current_context());
+  glpt::glx::gl_work_entry([&] {
+    if (current_glx() != nullptr) glpt::impl::glFinish(*glpt::current_context());
+  });
 }
 
 GLPT_EXPORT void glXWaitX(void) {
@@ -877,85 +954,97 @@ GLPT_EXPORT void glXWaitX(void) {
 // glXCopyContext (GLX 1.4 3.3.7): the attribute groups of `mask` go from `src` to `dst` as if
 // glPushAttrib(mask) on `src` were popped on `dst`.
 GLPT_EXPORT void glXCopyContext(Display* dpy, GLXContext src, GLXContext dst, unsigned long mask) {
-  constexpr int kMinor = glpt::glx::kXGlxCopyContext;
-  if (dpy == nullptr) return;
-  if (!is_live(src) || !is_live(dst)) {
-    glpt::glx::send_glx_error(dpy, glpt::glx::kGlxBadContext, 0, kMinor);
-    return;
-  }
-  bool dst_bound = false;
-  {
-    std::lock_guard lock(contexts_mutex());
-    dst_bound = dst->bound;
-  }
-  if (dst_bound) {
-    glpt::glx::send_x_error(dpy, BadAccess, 0, kMinor);  // the destination may not be current
-    return;
-  }
-  if (src == dst || src->screen != dst->screen) {
-    glpt::glx::send_x_error(dpy, BadMatch, 0, kMinor);
-    return;
-  }
-  glpt::copy_attrib_groups(src->gl, dst->gl, static_cast<GLbitfield>(mask));
+  glx_entry_void(dpy, glpt::glx::kXGlxCopyContext, [&] {
+    constexpr int kMinor = glpt::glx::kXGlxCopyContext;
+    if (dpy == nullptr) return;
+    if (!is_live(src) || !is_live(dst)) {
+      glpt::glx::send_glx_error(dpy, glpt::glx::kGlxBadContext, 0, kMinor);
+      return;
+    }
+    bool dst_bound = false;
+    {
+      std::lock_guard lock(contexts_mutex());
+      dst_bound = dst->bound;
+    }
+    if (dst_bound) {
+      glpt::glx::send_x_error(dpy, BadAccess, 0, kMinor);  // the destination may not be current
+      return;
+    }
+    if (src == dst || src->screen != dst->screen) {
+      glpt::glx::send_x_error(dpy, BadMatch, 0, kMinor);
+      return;
+    }
+    glpt::copy_attrib_groups(src->gl, dst->gl, static_cast<GLbitfield>(mask));
+  });
 }
 
 // GLX_EXT_swap_control, GLX_MESA_swap_control, GLX_SGI_swap_control: intervals are remembered
 // per drawable and answered; glpt presents each swap at once (no vsync to wait for).
 GLPT_EXPORT void glXSwapIntervalEXT(Display* dpy, GLXDrawable drawable, int interval) {
-  DisplayState* state = DisplayState::of(dpy);
-  if (state == nullptr) return;
-  if (drawable == None) {
-    glpt::glx::send_x_error(dpy, BadWindow, drawable, 0);
-    return;
-  }
-  if (interval < 0) {  // no GLX_EXT_swap_control_tear
-    glpt::glx::send_x_error(dpy, BadValue, static_cast<XID>(interval), 0);
-    return;
-  }
-  std::lock_guard lock(state->mutex);
-  state->swap_intervals[drawable] = interval;
+  glx_entry_void(dpy, glpt::glx::kXGlxVendorPrivate, [&] {
+    DisplayState* state = DisplayState::of(dpy);
+    if (state == nullptr) return;
+    if (drawable == None) {
+      glpt::glx::send_x_error(dpy, BadWindow, drawable, 0);
+      return;
+    }
+    if (interval < 0) {  // no GLX_EXT_swap_control_tear
+      glpt::glx::send_x_error(dpy, BadValue, static_cast<XID>(interval), 0);
+      return;
+    }
+    std::lock_guard lock(state->mutex);
+    state->swap_intervals[drawable] = interval;
+  });
 }
 
 GLPT_EXPORT int glXSwapIntervalMESA(unsigned int interval) {
-  if (interval > INT_MAX) return GLX_BAD_VALUE;
-  GLXContext ctx = current_glx();
-  if (ctx == nullptr) return GLX_BAD_CONTEXT;
-  DisplayState* state = DisplayState::of(ctx->display);
-  std::lock_guard lock(state->mutex);
-  state->swap_intervals[ctx->drawable] = static_cast<int>(interval);
-  return 0;
+  return glx_entry(nullptr, kClientSide, int{GLX_BAD_CONTEXT}, [&]() -> int {
+    if (interval > INT_MAX) return GLX_BAD_VALUE;
+    GLXContext ctx = current_glx();
+    if (ctx == nullptr) return GLX_BAD_CONTEXT;
+    DisplayState* state = DisplayState::of(ctx->display);
+    std::lock_guard lock(state->mutex);
+    state->swap_intervals[ctx->drawable] = static_cast<int>(interval);
+    return 0;
+  });
 }
 
 GLPT_EXPORT int glXGetSwapIntervalMESA(void) {
-  GLXContext ctx = current_glx();
-  if (ctx == nullptr) return 0;
-  DisplayState* state = DisplayState::of(ctx->display);
-  std::lock_guard lock(state->mutex);
-  auto it = state->swap_intervals.find(ctx->drawable);
-  return it == state->swap_intervals.end() ? 1 : it->second;
+  return glx_entry(nullptr, kClientSide, 0, [&]() -> int {
+    GLXContext ctx = current_glx();
+    if (ctx == nullptr) return 0;
+    DisplayState* state = DisplayState::of(ctx->display);
+    std::lock_guard lock(state->mutex);
+    auto it = state->swap_intervals.find(ctx->drawable);
+    return it == state->swap_intervals.end() ? 1 : it->second;
+  });
 }
 
 GLPT_EXPORT int glXSwapIntervalSGI(int interval) {
-  GLXContext ctx = current_glx();
-  if (ctx == nullptr) return GLX_BAD_CONTEXT;
-  if (interval <= 0) return GLX_BAD_VALUE;
-  DisplayState* state = DisplayState::of(ctx->display);
-  std::lock_guard lock(state->mutex);
-  state->swap_intervals[ctx->drawable] = interval;
-  return 0;
+  return glx_entry(nullptr, kClientSide, int{GLX_BAD_CONTEXT}, [&]() -> int {
+    GLXContext ctx = current_glx();
+    if (ctx == nullptr) return GLX_BAD_CONTEXT;
+    if (interval <= 0) return GLX_BAD_VALUE;
+    DisplayState* state = DisplayState::of(ctx->display);
+    std::lock_guard lock(state->mutex);
+    state->swap_intervals[ctx->drawable] = interval;
+    return 0;
+  });
 }
 
 GLPT_EXPORT __GLXextFuncPtr glXGetProcAddressARB(const GLubyte* name) {
-  if (name == nullptr) return nullptr;
-  const char* n = reinterpret_cast<const char*>(name);
-  if (std::strncmp(n, "glX", 3) == 0) {
-    size_t count = 0;
-    const GlxProc* table = glx_proc_table(&count);
-    for (size_t i = 0; i < count; ++i)
-      if (std::strcmp(table[i].name, n) == 0) return table[i].entry;
-    return nullptr;
-  }
-  return glpt::lookup_gl_proc(n);
+  return glx_entry(nullptr, kClientSide, __GLXextFuncPtr{nullptr}, [&]() -> __GLXextFuncPtr {
+    if (name == nullptr) return nullptr;
+    const char* n = reinterpret_cast<const char*>(name);
+    if (std::strncmp(n, "glX", 3) == 0) {
+      size_t count = 0;
+      const GlxProc* table = glx_proc_table(&count);
+      for (size_t i = 0; i < count; ++i)
+        if (std::strcmp(table[i].name, n) == 0) return table[i].entry;
+      return nullptr;
+    }
+    return glpt::lookup_gl_proc(n);
+  });
 }
 
 GLPT_EXPORT __GLXextFuncPtr glXGetProcAddress(const GLubyte* name) {

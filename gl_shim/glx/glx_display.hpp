@@ -10,6 +10,8 @@
 #include <mutex>
 #include <vector>
 
+#include "gl_shim/c_abi_guard.hpp"
+#include "gl_shim/dispatch.hpp"
 #include "gl_shim/frame/headless_target.hpp"
 #include "gl_shim/glx/glx_configs.hpp"
 #include "gl_shim/process_owner.hpp"
@@ -81,6 +83,32 @@ XID allocate_xid(Display* dpy);
 void send_glx_error(Display* dpy, int glx_error, XID resource, int minor);
 void send_x_error(Display* dpy, int core_error, XID resource, int minor);
 
+// A GLX entry point's body: an exception (allocation failure) returns the function's `failure`
+// value (NULL, False, None, an error code) instead of crossing the C ABI, and is a BadAlloc X
+// error for request `minor` as the server would send it; kClientSide: a function Mesa answers
+// on the client side, whose result alone says it failed.
+inline constexpr int kClientSide = -1;
+inline void report_bad_alloc(Display* dpy, int minor) {
+  if (dpy != nullptr && minor != kClientSide) send_x_error(dpy, BadAlloc, 0, minor);
+}
+template <typename Result, typename Body>
+Result glx_entry(Display* dpy, int minor, Result failure, Body&& body) noexcept {
+  return guard_c_abi(
+      failure, [&] { report_bad_alloc(dpy, minor); }, std::forward<Body>(body));
+}
+template <typename Body>
+void glx_entry_void(Display* dpy, int minor, Body&& body) noexcept {
+  guard_c_abi_void([&] { report_bad_alloc(dpy, minor); }, std::forward<Body>(body));
+}
+
+// A GLX function whose work is GL's (the frame glXSwapBuffers renders, glXWaitGL's finish, the
+// lists glXUseXFont makes): an exception is GL_OUT_OF_MEMORY on the current context, as in GL's
+// own commands, not an X error (whose default handler would end the program).
+template <typename Body>
+void gl_work_entry(Body&& body) noexcept {
+  guard_c_abi_void([] { exception_at_entry_point(); }, std::forward<Body>(body));
+}
+
 // GLX error codes (glxproto.h), offsets from the extension's first error.
 inline constexpr int kGlxBadContext = 0;
 inline constexpr int kGlxBadDrawable = 2;
@@ -95,15 +123,18 @@ inline constexpr int kGlxBadProfileArb = 13;
 inline constexpr int kXGlxCreateContext = 3;
 inline constexpr int kXGlxDestroyContext = 4;
 inline constexpr int kXGlxMakeCurrent = 5;
+inline constexpr int kXGlxIsDirect = 6;
 inline constexpr int kXGlxCopyContext = 10;
 inline constexpr int kXGlxSwapBuffers = 11;
 inline constexpr int kXGlxCreateGLXPixmap = 13;
+inline constexpr int kXGlxVendorPrivate = 16;  // GLX_EXT_swap_control's request
 inline constexpr int kXGlxDestroyGLXPixmap = 15;
 inline constexpr int kXGlxCreateNewContext = 24;
 inline constexpr int kXGlxMakeContextCurrent = 26;
 inline constexpr int kXGlxCreatePbuffer = 27;
 inline constexpr int kXGlxDestroyPbuffer = 28;
 inline constexpr int kXGlxGetDrawableAttributes = 29;
+inline constexpr int kXGlxChangeDrawableAttributes = 30;
 inline constexpr int kXGlxCreatePixmap = 22;
 inline constexpr int kXGlxDestroyPixmap = 23;
 inline constexpr int kXGlxCreateWindow = 31;

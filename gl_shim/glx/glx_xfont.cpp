@@ -12,6 +12,7 @@
 #include "gl_shim/dispatch.hpp"
 #include "gl_shim/gl_impl_decls.hpp"
 #include "gl_shim/glx/glx_api.hpp"
+#include "gl_shim/glx/glx_display.hpp"
 
 // The exported GL entry points: list compilation goes through them like the program's own calls.
 extern "C" {
@@ -68,9 +69,7 @@ std::vector<GLubyte> glyph_bitmap(Display* dpy, Window root, GC gc, unsigned c, 
   return bits;
 }
 
-}  // namespace
-
-extern "C" GLPT_EXPORT void glXUseXFont(Font font, int first, int count, int list_base) {
+void use_x_font(Font font, int first, int count, int list_base) {
   glpt::Context* gl = glpt::current_context();
   if (gl == nullptr || gl->window_system != glpt::WindowSystem::kGlx) return;
   Display* dpy = glXGetCurrentDisplay();
@@ -79,11 +78,30 @@ extern "C" GLPT_EXPORT void glXUseXFont(Font font, int first, int count, int lis
   XFontStruct* fs = XQueryFont(dpy, font);
   if (fs == nullptr) return glpt::record_error(*gl, GL_INVALID_VALUE);  // as Mesa
 
-  // The lists are made with the default unpacking, byte-aligned; the program's is restored.
-  const GLenum kUnpack[] = {GL_UNPACK_SWAP_BYTES, GL_UNPACK_LSB_FIRST,   GL_UNPACK_ROW_LENGTH,
-                            GL_UNPACK_SKIP_ROWS,  GL_UNPACK_SKIP_PIXELS, GL_UNPACK_ALIGNMENT};
-  GLint saved[6];
-  for (int i = 0; i < 6; ++i) glGetIntegerv(kUnpack[i], &saved[i]);
+  // The lists are made with the default unpacking, byte-aligned; the program's is restored, the
+  // font and GC freed and an open list closed, also when an allocation fails on the way.
+  static constexpr GLenum kUnpack[] = {GL_UNPACK_SWAP_BYTES,  GL_UNPACK_LSB_FIRST,
+                                       GL_UNPACK_ROW_LENGTH,  GL_UNPACK_SKIP_ROWS,
+                                       GL_UNPACK_SKIP_PIXELS, GL_UNPACK_ALIGNMENT};
+  struct Restore {
+    Display* dpy;
+    XFontStruct* fs;
+    GC gc = nullptr;
+    GLint saved[6] = {};
+    GLint program_list = 0;  // a list the program is compiling (then glNewList fails here)
+    ~Restore() {
+      // A list of ours left open by a failure (also one inside glNewList or glEndList, which
+      // catch it themselves) is closed, or the program's commands would go into it.
+      GLint open_list = 0;
+      glGetIntegerv(GL_LIST_INDEX, &open_list);
+      if (open_list != program_list) glEndList();
+      if (gc != nullptr) XFreeGC(dpy, gc);
+      XFreeFontInfo(nullptr, fs, 1);
+      for (int i = 0; i < 6; ++i) glPixelStorei(kUnpack[i], saved[i]);
+    }
+  } restore{dpy, fs};
+  glGetIntegerv(GL_LIST_INDEX, &restore.program_list);
+  for (int i = 0; i < 6; ++i) glGetIntegerv(kUnpack[i], &restore.saved[i]);
   for (int i = 0; i < 5; ++i) glPixelStorei(kUnpack[i], 0);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
 
@@ -93,6 +111,7 @@ extern "C" GLPT_EXPORT void glXUseXFont(Font font, int first, int count, int lis
   XGCValues values{};
   values.font = fs->fid;
   GC gc = XCreateGC(dpy, scratch, GCFont, &values);
+  restore.gc = gc;
   XFreePixmap(dpy, scratch);
 
   for (int i = 0; i < count; ++i) {
@@ -115,7 +134,12 @@ extern "C" GLPT_EXPORT void glXUseXFont(Font font, int first, int count, int lis
     }
     glEndList();
   }
-  XFreeGC(dpy, gc);
-  XFreeFontInfo(nullptr, fs, 1);
-  for (int i = 0; i < 6; ++i) glPixelStorei(kUnpack[i], saved[i]);
+}
+
+}  // namespace
+
+// An allocation failure (a glyph's bitmap) is GL_OUT_OF_MEMORY, as in the GL commands it makes
+// the lists with.
+extern "C" GLPT_EXPORT void glXUseXFont(Font font, int first, int count, int list_base) {
+  glpt::glx::gl_work_entry([&] { use_x_font(font, first, count, list_base); });
 }

@@ -324,6 +324,9 @@ std::unique_ptr<VulkanDevice> VulkanDevice::create(const DeviceOptions& options)
   GLPT_VK_CHECK(vkEnumeratePhysicalDevices(instance, &count, physical_devices.data()));
   std::vector<Candidate> candidates;
   for (VkPhysicalDevice device : physical_devices) candidates.push_back(evaluate(device));
+  if (options.hide_ray_query)
+    for (Candidate& c : candidates)
+      c.missing_ray_query.push_back("ray queries: hidden by GLPT_VK_NO_RAY_QUERY");
   const Candidate& chosen = choose(candidates, options.name_filter);
   self->physical_device_ = chosen.device;
   self->name_ = chosen.name;

@@ -32,6 +32,9 @@ struct DeviceOptions {
   // Pick the first suitable device whose name contains this (GLPT_VK_DEVICE); empty: prefer a
   // CPU device (lavapipe), then any suitable one.
   std::string name_filter;
+  // Treat every device as lacking ray queries (GLPT_VK_NO_RAY_QUERY=1): exercises the fallback to
+  // raster mode on a machine that has them.
+  bool hide_ray_query = false;
   bool operator==(const DeviceOptions&) const = default;
 };
 
