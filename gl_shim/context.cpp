@@ -100,9 +100,9 @@ bool ensure_output(Context& ctx) {
   std::string error;
   ctx.output = FrameOutput::create(*ctx.render_group, &error);
   if (!ctx.output) {
-    // Reported once per context (make-current does not retry it); the program keeps
-    // running, its GL state answering, its frames showing the clear colour.
-    std::fprintf(stderr, "%s; frames show only the clear colour\n", error.c_str());
+    // Not retried by this context, and said once per process; the program keeps running, its
+    // GL state answering, its frames showing the clear colour.
+    report_once_per_process(error + "; frames show only the clear colour");
     ctx.renderer_unavailable = true;
     ctx.clear_fallback = std::make_unique<ClearFallback>();
     return false;

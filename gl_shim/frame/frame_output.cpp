@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <mutex>
+#include <set>
 
 #include "common/image_io.hpp"
 
@@ -46,13 +48,22 @@ OutputSettings OutputSettings::from_environment() {
   return s;
 }
 
+void report_once_per_process(const std::string& message, const std::string& key) {
+  // Process-wide by nature, like the device and the output directory the messages are about.
+  static std::mutex mutex;
+  static std::set<std::string> said;
+  std::lock_guard lock(mutex);
+  if (said.insert(key.empty() ? message : key).second)
+    std::fprintf(stderr, "%s\n", message.c_str());
+}
+
 void create_png_directory(OutputSettings& settings) {
   if (settings.png_dir.empty()) return;
   std::error_code ec;
   std::filesystem::create_directories(settings.png_dir, ec);
   if (!ec) return;
-  std::fprintf(stderr, "glpt: cannot create GLPT_OUTPUT directory %s: %s; writing no PNGs\n",
-               settings.png_dir.c_str(), ec.message().c_str());
+  report_once_per_process("glpt: cannot create GLPT_OUTPUT directory " + settings.png_dir + ": " +
+                          ec.message() + "; writing no PNGs");
   settings.png_dir.clear();
 }
 
@@ -65,7 +76,9 @@ void write_frame_png(const OutputSettings& settings, uint64_t frame_index, uint3
   std::string error;
   if (!write_png_rgba8(settings.png_dir + "/" + name, width, height, rgba.data(), true, &error) &&
       !*failure_reported) {
-    std::fprintf(stderr, "glpt: GLPT_OUTPUT: %s (reported once)\n", error.c_str());
+    // Once per context here, once per process for the directory (every context fails alike).
+    report_once_per_process("glpt: GLPT_OUTPUT: " + error + " (reported once)",
+                            "png " + settings.png_dir);
     *failure_reported = true;
   }
 }
@@ -74,7 +87,7 @@ std::unique_ptr<FrameOutput> FrameOutput::create(RenderGroup& group, std::string
   std::string notice;
   std::shared_ptr<rt::Renderer> renderer = group.renderer(error, &notice);
   if (!renderer) return nullptr;
-  if (!notice.empty()) std::fprintf(stderr, "%s\n", notice.c_str());
+  if (!notice.empty()) report_once_per_process(notice);
   OutputSettings settings = OutputSettings::from_environment();
   create_png_directory(settings);
   return std::unique_ptr<FrameOutput>(new FrameOutput(std::move(renderer), std::move(settings)));

@@ -64,6 +64,11 @@ void create_png_directory(OutputSettings& settings);
 void write_frame_png(const OutputSettings& settings, uint64_t frame_index, uint32_t width,
                      uint32_t height, std::vector<uint8_t>& rgba, bool* failure_reported);
 
+// Prints `message` (one line, on stderr) unless this process printed it already: what every
+// context of a program would say alike (no Vulkan device, no ray queries, an unusable
+// GLPT_OUTPUT) is said once. `key` (default: the message) names what is reported.
+void report_once_per_process(const std::string& message, const std::string& key = {});
+
 class FrameOutput {
  public:
   // A context's output, rendering with its share group's renderer. nullptr and a message if no

@@ -5,7 +5,8 @@
 //
 //   fault_client draw FRAMES         a GLX window; per frame a clear to blue and a red quad over
 //                                    the left half, swapped; then the pixels of the right half
-//                                    (glReadPixels and the window's), GL state and errors
+//                                    (glReadPixels and the window's), GL state and errors; then
+//                                    a frame from a second, unshared context
 //   fault_client no-display          GLX and EGL without an X server
 //   fault_client window-closed MODE  frames into a GLX window that another connection destroys
 //                                    (MODE destroy) or whose client it kills (MODE kill) after
@@ -31,6 +32,7 @@ struct GlxWindow {
   Display* dpy = nullptr;
   Window window = 0;
   GLXContext ctx = nullptr;
+  XVisualInfo visual{};
 };
 
 bool open_glx_window(GlxWindow* w, int size) {
@@ -45,6 +47,7 @@ bool open_glx_window(GlxWindow* w, int size) {
                             InputOutput, vi->visual, CWColormap, &attr);
   XMapWindow(w->dpy, w->window);
   w->ctx = glXCreateContext(w->dpy, vi, nullptr, True);
+  w->visual = *vi;
   XFree(vi);
   return w->ctx != nullptr && glXMakeCurrent(w->dpy, w->window, w->ctx);
 }
@@ -91,7 +94,16 @@ int draw(int frames) {
   glEnable(0x1234);  // an invalid capability: GL_INVALID_ENUM
   std::printf("error 0x%x\n", glGetError());
   std::printf("error_after 0x%x\n", glGetError());
+  // A second context (another share group, so another renderer) says nothing new: what is
+  // missing is said once per process.
+  GLXContext second = glXCreateContext(w.dpy, &w.visual, nullptr, True);
+  if (second != nullptr && glXMakeCurrent(w.dpy, w.window, second)) {
+    draw_frame();
+    glXSwapBuffers(w.dpy, w.window);
+    std::printf("second_context drew\n");
+  }
   glXMakeCurrent(w.dpy, None, nullptr);
+  if (second != nullptr) glXDestroyContext(w.dpy, second);
   glXDestroyContext(w.dpy, w.ctx);
   XDestroyWindow(w.dpy, w.window);
   XCloseDisplay(w.dpy);

@@ -88,6 +88,7 @@ case "$fault" in
     run GLPT_MODE=path GLPT_VK_NO_RAY_QUERY=1 -- draw 5
     expect_rc 0
     expect_line "frames 5"
+    expect_line "second_context drew"  # ... and said nothing more (once per process)
     expect_stderr_count 1 "has no ray queries (lacks .*hidden by GLPT_VK_NO_RAY_QUERY.*): drawing in raster mode"
     # Raster mode drew the quad: red left, the clear colour right.
     expect_line "read_left 255 0 0 255"
@@ -99,6 +100,7 @@ case "$fault" in
     run VK_ICD_FILENAMES="$none" VK_DRIVER_FILES="$none" GLPT_OUTPUT="$work/png" -- draw 5
     expect_rc 0
     expect_line "frames 5"
+    expect_line "second_context drew"  # ... and said nothing more (once per process)
     expect_stderr_count 1 "frames show only the clear colour"
     # GL's state machine answers.
     expect_line "clear_value 0 0 1 1"
