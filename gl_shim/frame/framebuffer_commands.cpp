@@ -1,6 +1,6 @@
 // glClear*, glViewport, glDepthRange, glScissor, glDrawBuffer/glReadBuffer, glPixelStore,
-// glFlush, glFinish (glReadPixels: gl_shim/pixels/read_pixels.cpp) (GL 1.5
-// spec 2.11.1, 4.2, 4.3, 5.5).
+// glFlush, glFinish (GL 1.5 spec 2.11.1, 4.2, 4.3, 5.5); glReadPixels is in
+// gl_shim/pixels/read_pixels.cpp.
 #include <algorithm>
 #include <cmath>
 #include <cstring>

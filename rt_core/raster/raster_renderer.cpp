@@ -58,13 +58,13 @@ RasterRenderer::RasterRenderer(std::shared_ptr<VulkanDevice> device)
 }
 
 void RasterRenderer::ensure_buffers(DrawableBuffers& buffers, const rec::DrawableConfig& drawable) {
-  buffers_ = &buffers;
+  buffers_ = &buffers;  // the buffers every helper of this call works on
   if (drawable == buffers.config && buffers.front && buffers.device == device_) return;
   buffers.device = device_;
-  buffers_->config = drawable;
-  buffers_->front = GpuImage();
-  buffers_->back = GpuImage();
-  buffers_->depth_stencil = GpuImage();
+  buffers.config = drawable;
+  buffers.front = GpuImage();
+  buffers.back = GpuImage();
+  buffers.depth_stencil = GpuImage();
   if (drawable.width == 0 || drawable.height == 0) return;
   GpuImageInfo color;
   color.format = kColorFormat;
@@ -72,32 +72,32 @@ void RasterRenderer::ensure_buffers(DrawableBuffers& buffers, const rec::Drawabl
   color.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
                 VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
                 VK_IMAGE_USAGE_STORAGE_BIT;
-  buffers_->front = GpuImage::create(*device_, color);
-  buffers_->back = GpuImage::create(*device_, color);
+  buffers.front = GpuImage::create(*device_, color);
+  buffers.back = GpuImage::create(*device_, color);
   GpuImageInfo depth = color;
   depth.format = kDepthStencilFormat;
   depth.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
                 VK_IMAGE_USAGE_TRANSFER_DST_BIT;
   depth.aspect = VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT;
-  buffers_->depth_stencil = GpuImage::create(*device_, depth);
-  buffers_->accum.resize(drawable.accum_bits > 0 ? drawable.width : 0,
-                         drawable.accum_bits > 0 ? drawable.height : 0);
+  buffers.depth_stencil = GpuImage::create(*device_, depth);
+  buffers.accum.resize(drawable.accum_bits > 0 ? drawable.width : 0,
+                       drawable.accum_bits > 0 ? drawable.height : 0);
   // GL leaves a new drawable's contents undefined; glpt starts from transparent black, depth 1
   // and stencil 0, like a freshly cleared Mesa drawable. A drawable without alpha holds alpha 1
   // from the start and never writes it (GL 1.5 4.1.8: its alpha reads as 1).
   device_->submit_and_wait([&](VkCommandBuffer cmd) {
     const VkClearColorValue black{{0.0f, 0.0f, 0.0f, drawable.has_alpha ? 0.0f : 1.0f}};
     const VkImageSubresourceRange color_range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-    for (const GpuImage* image : {&buffers_->front, &buffers_->back}) {
+    for (const GpuImage* image : {&buffers.front, &buffers.back}) {
       image->initial_barrier(cmd);
       vkCmdClearColorImage(cmd, image->handle(), VK_IMAGE_LAYOUT_GENERAL, &black, 1, &color_range);
     }
-    buffers_->depth_stencil.initial_barrier(cmd);
+    buffers.depth_stencil.initial_barrier(cmd);
     const VkClearDepthStencilValue far{1.0f, 0};
     const VkImageSubresourceRange ds_range{VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT,
                                            0, 1, 0, 1};
-    vkCmdClearDepthStencilImage(cmd, buffers_->depth_stencil.handle(), VK_IMAGE_LAYOUT_GENERAL,
-                                &far, 1, &ds_range);
+    vkCmdClearDepthStencilImage(cmd, buffers.depth_stencil.handle(), VK_IMAGE_LAYOUT_GENERAL, &far,
+                                1, &ds_range);
   });
 }
 
