@@ -785,11 +785,19 @@ void main() {
     return;
   }
 #endif
+  // gl_FragCoord and gl_FrontFacing only in the variants that read them (raster_types.h,
+  // GLPT_VARYING_WINDOW_POSITION).
+#if (GLPT_VARYINGS & GLPT_VARYING_WINDOW_POSITION) != 0
   if ((kFlags & GLPT_FS_POLYGON_STIPPLE) != 0u) {
     uint row = uint(gl_FragCoord.y) & 31u, column = uint(gl_FragCoord.x) & 31u;
     if (((S.stipple[row >> 2u][row & 3u] >> (31u - column)) & 1u) == 0u) discard;
   }
+#endif
+#if (GLPT_VARYINGS & GLPT_VARYING_BACK) != 0
   bool back = (kFlags & GLPT_FS_TWO_SIDE) != 0u && !gl_FrontFacing;
+#else
+  bool back = false;  // two-sided lighting selects a variant with the back colours
+#endif
   vec4 primary = back ? v_back_color : v_front_color;
   vec4 secondary = back ? v_back_secondary : v_front_secondary;
 #if GLPT_PIXELS

@@ -235,6 +235,7 @@ uint32_t varyings_read(const PipelineKey& key) {
   uint32_t varyings = 0;
   if (fs & GLPT_FS_TWO_SIDE) varyings |= GLPT_VARYING_BACK;
   if (fs & GLPT_FS_COLOR_SUM) varyings |= GLPT_VARYING_SECONDARY;
+  if (fs & GLPT_FS_POLYGON_STIPPLE) varyings |= GLPT_VARYING_WINDOW_POSITION;
   if ((key.constants[GLPT_SC_FS_ALPHA_FOG] >> 12) & 3u) varyings |= GLPT_VARYING_FOG;
   for (int u = 0; u < GLPT_RASTER_MAX_UNITS; ++u)
     if (key.constants[GLPT_SC_UNIT0 + u] & 7u) varyings |= GLPT_VARYING_TEXCOORDS;
