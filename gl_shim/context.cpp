@@ -123,6 +123,7 @@ rec::DrawableConfig current_drawable(Context& ctx) {
 
 void start_new_record(Context& ctx) {
   ctx.recorder.clear();
+  ctx.buffer_draws.record_cleared();
   ctx.recorder.record().query_at_start = ctx.queries.active_id();
   ctx.snapshots.record_cleared();
   ctx.recording_since.restart();

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "common/stopwatch.hpp"
+#include "gl_shim/arrays/buffer_draw_cache.hpp"
 #include "gl_shim/arrays/vertex_arrays.hpp"
 #include "gl_shim/buffers/buffer_objects.hpp"
 #include "gl_shim/display_lists/display_lists.hpp"
@@ -81,8 +82,9 @@ class Context {
   HintState hints;
   VertexAssembly assembly;
   DisplayListState lists;
-  VertexArrays arrays;        // client vertex arrays and buffer bindings (GL 1.5 2.8, 2.9)
-  EvaluatorState evaluators;  // maps and grids (GL 1.5 5.1); their enables are in `enables`
+  VertexArrays arrays;           // client vertex arrays and buffer bindings (GL 1.5 2.8, 2.9)
+  BufferDrawCache buffer_draws;  // draws from unchanged buffer objects, recorded once
+  EvaluatorState evaluators;     // maps and grids (GL 1.5 5.1); their enables are in `enables`
   // Buffer objects of the share group (the constructor shares them with share_list).
   std::shared_ptr<BufferStore> buffers = std::make_shared<BufferStore>();
   AttribStacks attrib_stacks;   // glPushAttrib / glPushClientAttrib

@@ -14,7 +14,9 @@ struct FrameStats {
   uint64_t triangles = 0, rays = 0;
   // Samples per pixel in the image now shown.
   uint32_t accumulated_samples = 0;
-  uint32_t draws = 0;              // Draw commands executed
+  uint32_t draws = 0;  // Draw commands executed
+  // Draws whose vertices were already on the GPU from an earlier record (resident geometry).
+  uint32_t resident_draws = 0;
   uint32_t pipelines_created = 0;  // raster pipelines compiled for this record (0 once warm)
   uint32_t inexpressible = 0;      // commands drawn approximately (state raster cannot express)
 };

@@ -19,8 +19,10 @@
 #include <algorithm>
 #include <cstring>
 #include <new>
+#include <optional>
 
 #include "gl/gl_enums.h"
+#include "gl_shim/arrays/buffer_draw_cache.hpp"
 #include "gl_shim/context.hpp"
 #include "gl_shim/dispatch.hpp"
 #include "gl_shim/geometry/attributes.hpp"
@@ -144,6 +146,34 @@ void draw_as_immediate(Context& ctx, GLenum mode, const std::vector<uint32_t>& e
   impl::glEnd(ctx);
 }
 
+// A live draw from buffer objects only (buffer_draw_cache.hpp): recorded again from the cache when
+// the same draw was recorded with the same buffer contents (true), else the key to cache the
+// draw under once recorded (when it can be cached).
+struct CachedDraw {
+  bool recorded = false;
+  std::optional<BufferDrawKey> key;
+};
+CachedDraw record_cached_draw(Context& ctx, GLenum mode, GLint first, GLsizei count,
+                              GLenum index_type, const void* indices) {
+  if (executing_while_compiling(ctx) || ctx.render_mode.mode != GL_RENDER) return {};
+  const rec::StateId state = ctx.snapshots.capture(ctx, ctx.recorder.record());
+  const uint8_t units = sampled_texture_units(ctx.recorder.record().states[state]);
+  CachedDraw result;
+  result.key = buffer_draw_key(ctx, mode, first, count, index_type, indices, units);
+  if (!result.key) return result;
+  if (std::shared_ptr<const rec::VertexData> vertices = ctx.buffer_draws.find(*result.key)) {
+    ctx.recorder.add_recorded_draw(state, std::move(vertices));
+    note_frame_content(ctx);
+    result.recorded = true;
+  }
+  return result;
+}
+
+void remember_draw(Context& ctx, const CachedDraw& cached,
+                   std::shared_ptr<const rec::VertexData> recorded) {
+  if (cached.key && recorded) ctx.buffer_draws.insert(*cached.key, std::move(recorded));
+}
+
 void draw_elements(Context& ctx, GLenum mode, const std::vector<GLsizei>& counts, GLenum type,
                    const std::vector<const void*>& index_pointers) {
   std::vector<uint32_t> elements, part;
@@ -151,6 +181,12 @@ void draw_elements(Context& ctx, GLenum mode, const std::vector<GLsizei>& counts
   uint64_t total = 0;
   for (size_t d = 0; d < counts.size(); ++d) total += uint64_t(std::max(counts[d], 0));
   if (total > kMaxArrayDrawVertices) return record_error(ctx, GL_OUT_OF_MEMORY);
+  // Before anything is read: a draw recorded before reads nothing again.
+  CachedDraw cached;
+  if (counts.size() == 1 && counts[0] > 0) {
+    cached = record_cached_draw(ctx, mode, 0, counts[0], type, index_pointers[0]);
+    if (cached.recorded) return;
+  }
   ArrayVertices values;
   if (!executing_while_compiling(ctx)) use_recorder_storage(ctx, values, &part);
   for (size_t d = 0; d < counts.size(); ++d) {
@@ -169,8 +205,9 @@ void draw_elements(Context& ctx, GLenum mode, const std::vector<GLsizei>& counts
   std::vector<uint32_t> vertices;
   const VertexSelection selection = compact_indices(elements, vertices);
   read_array_vertices(ctx, selection, ArrayConversion::kVertexFetch, values, kDrawnArrays);
-  record_array_draw(ctx, mode, std::move(values), std::move(elements), std::move(ranges),
-                    ArrayDrawSource::kElements);
+  remember_draw(ctx, cached,
+                record_array_draw(ctx, mode, std::move(values), std::move(elements),
+                                  std::move(ranges), ArrayDrawSource::kElements));
 }
 
 }  // namespace
@@ -284,9 +321,12 @@ void array_element(Context& ctx, const ArrayVertices& v, uint32_t i) {
 // The one place array draws enter the frame record. It also says how the draw was specified
 // (rec::VertexData::source: Mesa assembles glDrawArrays, glDrawElements and compiled draws
 // differently) and which colours came per vertex from arrays (per_vertex).
-void record_array_draw(Context& ctx, GLenum mode, ArrayVertices&& v, std::vector<uint32_t> indices,
-                       std::vector<rec::PrimitiveRange> ranges, ArrayDrawSource source) {
-  if (v.position.empty() || ranges.empty()) return;
+std::shared_ptr<const rec::VertexData> record_array_draw(Context& ctx, GLenum mode,
+                                                         ArrayVertices&& v,
+                                                         std::vector<uint32_t> indices,
+                                                         std::vector<rec::PrimitiveRange> ranges,
+                                                         ArrayDrawSource source) {
+  if (v.position.empty() || ranges.empty()) return nullptr;
   const rec::StateId state = ctx.snapshots.capture(ctx, ctx.recorder.record());
   uint8_t units = sampled_texture_units(ctx.recorder.record().states[state]);
   if (ctx.render_mode.mode == GL_FEEDBACK) units |= 1;  // feedback reports unit 0's coordinates
@@ -318,17 +358,22 @@ void record_array_draw(Context& ctx, GLenum mode, ArrayVertices&& v, std::vector
                                                       : rec::PrimitiveSource::kDisplayList;
     d.per_vertex = uint8_t((v.has(ArrayKind::kColor) ? rec::kPerVertexColor : 0) |
                            (v.has(ArrayKind::kSecondaryColor) ? rec::kPerVertexSecondaryColor : 0));
-    if (ctx.render_mode.mode != GL_RENDER)
-      return render_mode_array_draw(ctx, ctx.recorder.record().states[state], d,
-                                    v.has(ArrayKind::kEdgeFlag));
+    if (ctx.render_mode.mode != GL_RENDER) {
+      render_mode_array_draw(ctx, ctx.recorder.record().states[state], d,
+                             v.has(ArrayKind::kEdgeFlag));
+      return nullptr;
+    }
+    std::shared_ptr<const rec::VertexData> recorded;
     if (source == ArrayDrawSource::kDisplayList)
       ctx.recorder.add_primitive(state, d);
     else
-      ctx.recorder.add_draw(state, std::move(d));
+      recorded = ctx.recorder.add_draw(state, std::move(d));
+    note_frame_content(ctx);
+    return recorded;
   } catch (const std::bad_alloc&) {
-    return record_error(ctx, GL_OUT_OF_MEMORY);
+    record_error(ctx, GL_OUT_OF_MEMORY);
+    return nullptr;
   }
-  note_frame_content(ctx);
 }
 
 namespace impl {
@@ -341,12 +386,15 @@ void glDrawArrays(Context& ctx, GLenum mode, GLint first, GLsizei count) {
     if (executing_while_compiling(ctx))
       return draw_as_immediate(ctx, mode, vertex_range(first, count));
     if (!vertex_array_enabled(ctx)) return;
+    const CachedDraw cached = record_cached_draw(ctx, mode, first, count, 0, nullptr);
+    if (cached.recorded) return;
     ArrayVertices values;
     use_recorder_storage(ctx, values);
     read_array_vertices(ctx, VertexSelection::range(uint32_t(first), size_t(count)),
                         ArrayConversion::kVertexFetch, values, kDrawnArrays);
-    record_array_draw(ctx, mode, std::move(values), {}, {{0, uint32_t(count)}},
-                      ArrayDrawSource::kArrays);
+    remember_draw(ctx, cached,
+                  record_array_draw(ctx, mode, std::move(values), {}, {{0, uint32_t(count)}},
+                                    ArrayDrawSource::kArrays));
   });
 }
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "gl_shim/arrays/array_fetch.hpp"
@@ -53,10 +54,14 @@ void array_element(Context& ctx, const ArrayVertices& values, uint32_t which);
 // empty: vertex i is element i) and `ranges` are the record's. `from_list`: replayed by glCallList
 // (batched like a replayed glBegin/glEnd, as Mesa compiles array draws) rather than a live
 // glDrawArrays/glDrawElements (one draw each).
+// Returns the recorded vertices of a draw recorded on its own (null for batched, fed-back or
+// selected draws and draws that record nothing).
 enum class ArrayDrawSource : uint8_t { kArrays, kElements, kDisplayList };
-void record_array_draw(Context& ctx, GLenum mode, ArrayVertices&& vertices,
-                       std::vector<uint32_t> indices, std::vector<rec::PrimitiveRange> ranges,
-                       ArrayDrawSource source);
+std::shared_ptr<const rec::VertexData> record_array_draw(Context& ctx, GLenum mode,
+                                                         ArrayVertices&& vertices,
+                                                         std::vector<uint32_t> indices,
+                                                         std::vector<rec::PrimitiveRange> ranges,
+                                                         ArrayDrawSource source);
 
 // Vertex numbers first .. first + count - 1.
 std::vector<uint32_t> vertex_range(GLint first, GLsizei count);

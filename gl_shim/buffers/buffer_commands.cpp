@@ -92,6 +92,11 @@ bool valid_range(Context& ctx, BufferObject& buffer, GLintptr offset, GLsizeiptr
 
 }  // namespace
 
+uint64_t new_buffer_contents_version() {
+  static std::atomic<uint64_t> next{1};
+  return next.fetch_add(1, std::memory_order_relaxed);
+}
+
 namespace impl {
 
 void glGenBuffers(Context& ctx, GLsizei n, GLuint* buffers) {
@@ -160,6 +165,7 @@ void glBufferData(Context& ctx, GLenum target, GLsizeiptr size, const void* data
     auto store = std::make_shared<std::vector<uint8_t>>(size_t(size), 0);
     if (data != nullptr && size > 0) std::memcpy(store->data(), data, size_t(size));
     buffer->store = std::move(store);
+    buffer->contents_changed();
   } catch (const std::bad_alloc&) {
     // The old store is kept (GL 1.5 2.5: the command has no other effect).
     return record_error(ctx, GL_OUT_OF_MEMORY);
@@ -174,6 +180,7 @@ void glBufferSubData(Context& ctx, GLenum target, GLintptr offset, GLsizeiptr si
   const std::lock_guard lock(buffer->mutex);
   if (!valid_range(ctx, *buffer, offset, size)) return;
   if (data != nullptr && size > 0) std::memcpy(buffer->store->data() + offset, data, size_t(size));
+  buffer->contents_changed();
 }
 
 void glGetBufferSubData(Context& ctx, GLenum target, GLintptr offset, GLsizeiptr size, void* data) {
@@ -201,6 +208,7 @@ void* glMapBuffer(Context& ctx, GLenum target, GLenum access) {
   // against `access` are undefined in GL and simply reach the store here.
   buffer->mapped = true;
   buffer->access = access;
+  buffer->contents_changed();
   return buffer->store->data();
 }
 
@@ -214,6 +222,7 @@ GLboolean glUnmapBuffer(Context& ctx, GLenum target) {
   }
   buffer->mapped = false;
   buffer->access = GL_READ_WRITE;
+  buffer->contents_changed();
   return 1;  // the store cannot be corrupted while mapped: it is glpt's own memory
 }
 

@@ -25,6 +25,7 @@ void add(rt::FrameStats& sum, const rt::FrameStats& s) {
   sum.rays += s.rays;
   sum.accumulated_samples = s.accumulated_samples;
   sum.draws += s.draws;
+  sum.resident_draws += s.resident_draws;
   sum.pipelines_created += s.pipelines_created;
   sum.inexpressible += s.inexpressible;
 }
@@ -158,15 +159,15 @@ void FrameOutput::end_frame(const rec::FrameRecord& record, const rec::DrawableC
                  "glpt: frame=%" PRIu64
                  " size=%ux%u frame_ms=%.2f capture_ms=%.2f upload_ms=%.2f raster_ms=%.2f "
                  "blas_ms=%.2f tlas_ms=%.2f trace_ms=%.2f readback_ms=%.2f present_ms=%.2f "
-                 "total_ms=%.2f draws=%u pipelines_created=%u inexpressible=%u "
+                 "total_ms=%.2f draws=%u resident_draws=%u pipelines_created=%u inexpressible=%u "
                  "triangles=%" PRIu64 " rays=%" PRIu64
                  " mrays_per_s=%.3f blas_builds=%u blas_reused=%u spp=%u\n",
                  frame_index_, width, height, frame_ms, record_ms_, s.upload_ms, s.raster_ms,
                  s.blas_ms, s.tlas_ms, s.trace_ms, s.readback_ms, present_ms,
                  record_ms_ + s.upload_ms + s.raster_ms + s.blas_ms + s.tlas_ms + s.trace_ms +
                      s.readback_ms + present_ms,
-                 s.draws, s.pipelines_created, s.inexpressible, s.triangles, s.rays,
-                 trace_s > 0 ? s.rays / trace_s / 1e6 : 0.0, s.blas_builds, s.blas_reused,
+                 s.draws, s.resident_draws, s.pipelines_created, s.inexpressible, s.triangles,
+                 s.rays, trace_s > 0 ? s.rays / trace_s / 1e6 : 0.0, s.blas_builds, s.blas_reused,
                  s.accumulated_samples);
   }
   last_frame_stats_ = frame_stats_;

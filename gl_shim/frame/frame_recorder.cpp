@@ -102,13 +102,22 @@ void FrameRecorder::add_primitive(rec::StateId state, rec::VertexData& p) {
   append(d.material, p.material);
 }
 
-void FrameRecorder::add_draw(rec::StateId state, rec::VertexData&& draw) {
-  if (draw.position.empty() || draw.primitives.empty()) return;
-  seal();
-  vertex_bytes_ += draw.position.size() * bytes_per_vertex(draw) + draw.indices.size() * 4;
+std::shared_ptr<const rec::VertexData> FrameRecorder::add_draw(rec::StateId state,
+                                                               rec::VertexData&& draw) {
+  if (draw.position.empty() || draw.primitives.empty()) return nullptr;
   auto data = std::make_shared<rec::VertexData>(std::move(draw));
   finish_vertex_data(*data);
-  record_.commands.push_back(rec::Draw{state, std::move(data)});
+  add_recorded_draw(state, data);
+  return data;
+}
+
+void FrameRecorder::add_recorded_draw(rec::StateId state,
+                                      std::shared_ptr<const rec::VertexData> vertices) {
+  if (!vertices) return;
+  seal();
+  vertex_bytes_ +=
+      vertices->position.size() * bytes_per_vertex(*vertices) + vertices->indices.size() * 4;
+  record_.commands.push_back(rec::Draw{state, std::move(vertices)});
 }
 
 rec::VertexData FrameRecorder::take_storage() {

@@ -25,7 +25,11 @@ class FrameRecorder {
   void add_primitive(rec::StateId state, rec::VertexData& primitive);
   // Appends one complete draw (an array draw: any number of primitives, indices allowed; an
   // attribute may hold one value for all vertices). It is never batched with others.
-  void add_draw(rec::StateId state, rec::VertexData&& draw);
+  // Returns the recorded vertices.
+  std::shared_ptr<const rec::VertexData> add_draw(rec::StateId state, rec::VertexData&& draw);
+  // Appends a draw of vertices recorded before (and never changed since): a draw from buffer
+  // objects whose contents did not change (gl_shim/arrays/buffer_draw_cache.hpp).
+  void add_recorded_draw(rec::StateId state, std::shared_ptr<const rec::VertexData> vertices);
   // Storage for a new draw: the cleared arrays of a spare batch (their capacity kept), or none.
   rec::VertexData take_storage();
   // Any other command ends the open batch.

@@ -399,11 +399,7 @@ void RasterRenderer::record_pixels(Recording& r, size_t index) {
     const gpu::RasterPushConstants push{glm::uvec4(plan.state, 0, keep, 0), glm::uvec4(0u)};
     vkCmdPushConstants(r.cmd, pipelines_.layout(), pipelines_.push_constant_stages(), 0,
                        sizeof push, &push);
-    std::array<VkBuffer, GLPT_RASTER_ATTR_COUNT> buffers;
-    buffers.fill(vertices_.handle());
-    vkCmdBindVertexBuffers2(r.cmd, 0, GLPT_RASTER_ATTR_COUNT, buffers.data(),
-                            plan.quad.offsets.data(), nullptr, plan.quad.strides.data());
-    vkCmdBindIndexBuffer(r.cmd, vertices_.handle(), plan.quad.index_offset, VK_INDEX_TYPE_UINT32);
+    bind_geometry(r.cmd, plan.quad);
     queries_.before_draw(r.cmd, r.counting);
     vkCmdDrawIndexed(r.cmd, plan.quad.index_count, 1, 0, 0, 0);
   };

@@ -82,12 +82,29 @@ inline VkRect2D scissor_of(const rec::FragmentOpsState& ops, const rec::Drawable
                                     ops.scissor_box[3], d);
 }
 
-// Where one draw's attributes and indices are in the upload buffer.
+// The vertex attributes of a draw as the raster pipelines read them: `f(location, values,
+// default_at)` for each, where `values` is the record's array (possibly empty: the attribute then
+// reads the default value at byte `default_at` of the renderer's defaults).
+template <typename F>
+void for_each_attribute(const rec::VertexData& v, F&& f) {
+  f(GLPT_RASTER_ATTR_POSITION, v.position, 0);
+  f(GLPT_RASTER_ATTR_NORMAL, v.normal, 16);
+  f(GLPT_RASTER_ATTR_COLOR, v.color, 32);
+  f(GLPT_RASTER_ATTR_SECONDARY, v.secondary_color, 64);
+  f(GLPT_RASTER_ATTR_FOG, v.fog_coord, 64);
+  for (int u = 0; u < rec::kMaxTextureUnits; ++u)
+    f(GLPT_RASTER_ATTR_TEXCOORD0 + u, v.tex_coord[u], 48);
+}
+
+// Where one draw's attributes and indices are: the upload buffer, unless `buffers` /
+// `index_buffer` name another (resident geometry).
 struct RasterRenderer::DrawGeometry {
   std::array<VkDeviceSize, GLPT_RASTER_ATTR_COUNT> offsets{};
   std::array<VkDeviceSize, GLPT_RASTER_ATTR_COUNT> strides{};
+  std::array<VkBuffer, GLPT_RASTER_ATTR_COUNT> buffers{};  // null: the upload buffer
   VkDeviceSize index_offset = 0;
   uint32_t index_count = 0;
+  VkBuffer index_buffer = VK_NULL_HANDLE;  // null: the upload buffer (or ascending_indices)
   // Where the indices are: the upload buffer, or (for triangles drawn in vertex order) the
   // renderer's buffer of ascending indices.
   bool ascending_indices = false;

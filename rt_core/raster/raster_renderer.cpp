@@ -179,23 +179,32 @@ void RasterRenderer::execute(const rec::FrameRecord& record, DrawableBuffers& bu
     if (draw == nullptr || !draw->vertices) continue;
     const rec::VertexData& v = *draw->vertices;
     DrawGeometry& g = r.geometry[i];
-    auto attribute = [&](uint32_t location, const auto& values, VkDeviceSize default_at) {
+    ResidentGeometry::Entry* resident = resident_.use(*device_, v, frame_);
+    if (resident != nullptr) ++stats.resident_draws;
+    for_each_attribute(v, [&](uint32_t location, const auto& values, VkDeviceSize default_at) {
       using T = typename std::decay_t<decltype(values)>::value_type;
       if (values.empty()) {
         g.offsets[location] = default_offset + default_at;
         g.strides[location] = 0;
         return;
       }
-      g.offsets[location] = arena.add_external(values.data(), values.size());
+      if (resident != nullptr) {
+        g.buffers[location] = resident->buffer.handle();
+        g.offsets[location] = resident->offsets[location];
+      } else {
+        g.offsets[location] = arena.add_external(values.data(), values.size());
+      }
       g.strides[location] = values.size() == 1 ? 0 : sizeof(T);
+    });
+    // The draw's own indices, wherever its attributes are.
+    auto own_indices = [&] {
+      if (resident != nullptr) {
+        g.index_buffer = resident->buffer.handle();
+        g.index_offset = resident->index_offset;
+      } else {
+        g.index_offset = arena.add_external(v.indices.data(), v.indices.size());
+      }
     };
-    attribute(GLPT_RASTER_ATTR_POSITION, v.position, 0);
-    attribute(GLPT_RASTER_ATTR_NORMAL, v.normal, 16);
-    attribute(GLPT_RASTER_ATTR_COLOR, v.color, 32);
-    attribute(GLPT_RASTER_ATTR_SECONDARY, v.secondary_color, 64);
-    attribute(GLPT_RASTER_ATTR_FOG, v.fog_coord, 64);
-    for (int u = 0; u < rec::kMaxTextureUnits; ++u)
-      attribute(GLPT_RASTER_ATTR_TEXCOORD0 + u, v.tex_coord[u], 48);
     // Materials given between glBegin and glEnd: front and back per vertex (or one pair).
     if (v.material.size() == 1 || (!v.material.empty() && v.material.size() == v.vertex_count())) {
       materials.clear();
@@ -234,10 +243,30 @@ void RasterRenderer::execute(const rec::FrameRecord& record, DrawableBuffers& bu
         if (v.mode == GL_LINE_LOOP) indices.push_back(element(0));
       }
     } else {
+      const rec::AssemblyState assembly = rec::assembly_state(state, v);
+      const rec::PrimitiveState& p = state.raster->primitive;
+      const bool unfilled = p.polygon_mode_front != GL_FILL || p.polygon_mode_back != GL_FILL;
+      // The draw's own order, known from an earlier record (resident geometry).
+      auto own_order = [&](uint32_t index_count) {
+        g.topology = RasterTopology::kTriangles;
+        g.index_count = index_count;
+        if (v.indices.empty()) {
+          g.ascending_indices = true;
+          ensure_ascending_indices(g.index_count);
+        } else {
+          own_indices();
+        }
+      };
+      uint32_t known_count = 0;
+      if (cls == rec::PrimitiveClass::kTriangles && !unfilled && resident != nullptr &&
+          resident->in_vertex_order(assembly, &known_count)) {
+        own_order(known_count);
+        continue;
+      }
       decomposed_.clear();
       // Mesa's exact triangles and vertex order (decompose.hpp): they decide interpolation and
       // edge ties.
-      rec::decompose(v, rec::assembly_state(state, v), decomposed_);
+      rec::decompose(v, assembly, decomposed_);
       if (cls == rec::PrimitiveClass::kPoints) {
         g.topology = RasterTopology::kPoints;
         for (uint32_t p : decomposed_.points)
@@ -248,18 +277,11 @@ void RasterRenderer::execute(const rec::FrameRecord& record, DrawableBuffers& bu
           if (ok(l.v[0]) && ok(l.v[1])) indices.insert(indices.end(), {l.v[0], l.v[1]});
       } else {
         g.topology = RasterTopology::kTriangles;
-        const rec::PrimitiveState& p = state.raster->primitive;
-        const bool unfilled = p.polygon_mode_front != GL_FILL || p.polygon_mode_back != GL_FILL;
         if (!unfilled && in_vertex_order(v, decomposed_.triangles)) {
           // The draw's own order: its indices as they are, or ascending ones (no index list is
           // made and uploaded per draw; lavapipe still draws indexed, as every other draw).
-          g.index_count = static_cast<uint32_t>(3 * decomposed_.triangles.size());
-          if (v.indices.empty()) {
-            g.ascending_indices = true;
-            ensure_ascending_indices(g.index_count);
-          } else {
-            g.index_offset = arena.add_external(v.indices.data(), v.indices.size());
-          }
+          if (resident != nullptr) resident->found_in_vertex_order(decomposed_, assembly);
+          own_order(static_cast<uint32_t>(3 * decomposed_.triangles.size()));
           continue;
         }
         edge_masks.clear();
@@ -366,6 +388,7 @@ void RasterRenderer::execute(const rec::FrameRecord& record, DrawableBuffers& bu
                   row);
   }
   textures_.evict_unused(frame_);
+  resident_.release_unused(frame_);
 }
 
 GpuBuffer* RasterRenderer::imported_host_image(const HostImage& image) {
@@ -640,11 +663,7 @@ void RasterRenderer::record_clear(Recording& r, const rec::Clear& clear, uint32_
   vkCmdPushConstants(r.cmd, pipelines_.layout(), pipelines_.push_constant_stages(), 0, sizeof push,
                      &push);
   const DrawGeometry& g = r.clear_geometry;
-  std::array<VkBuffer, GLPT_RASTER_ATTR_COUNT> buffers;
-  buffers.fill(vertices_.handle());
-  vkCmdBindVertexBuffers2(r.cmd, 0, GLPT_RASTER_ATTR_COUNT, buffers.data(), g.offsets.data(),
-                          nullptr, g.strides.data());
-  vkCmdBindIndexBuffer(r.cmd, vertices_.handle(), g.index_offset, VK_INDEX_TYPE_UINT32);
+  bind_geometry(r.cmd, g);
   vkCmdDrawIndexed(r.cmd, g.index_count, 1, 0, 0, 0);
   if (color && r.gbuffer) clear_gbuffer_surface(r, rect);
 }
@@ -718,14 +737,21 @@ void RasterRenderer::record_draw_pass(Recording& r, const rec::Draw& draw, const
       glm::uvec4(draw.state, static_cast<uint32_t>(g.edge_offset / 4), jitter), g.materials};
   vkCmdPushConstants(r.cmd, pipelines_.layout(), pipelines_.push_constant_stages(), 0, sizeof push,
                      &push);
-  std::array<VkBuffer, GLPT_RASTER_ATTR_COUNT> buffers;
-  buffers.fill(vertices_.handle());
-  vkCmdBindVertexBuffers2(r.cmd, 0, GLPT_RASTER_ATTR_COUNT, buffers.data(), g.offsets.data(),
-                          nullptr, g.strides.data());
-  vkCmdBindIndexBuffer(r.cmd, g.ascending_indices ? ascending_.handle() : vertices_.handle(),
-                       g.index_offset, VK_INDEX_TYPE_UINT32);
+  bind_geometry(r.cmd, g);
   queries_.before_draw(r.cmd, r.counting);
   vkCmdDrawIndexed(r.cmd, g.index_count, 1, 0, 0, 0);
+}
+
+void RasterRenderer::bind_geometry(VkCommandBuffer cmd, const DrawGeometry& g) {
+  std::array<VkBuffer, GLPT_RASTER_ATTR_COUNT> buffers;
+  for (size_t a = 0; a < buffers.size(); ++a)
+    buffers[a] = g.buffers[a] != VK_NULL_HANDLE ? g.buffers[a] : vertices_.handle();
+  vkCmdBindVertexBuffers2(cmd, 0, GLPT_RASTER_ATTR_COUNT, buffers.data(), g.offsets.data(), nullptr,
+                          g.strides.data());
+  const VkBuffer indices = g.ascending_indices                ? ascending_.handle()
+                           : g.index_buffer != VK_NULL_HANDLE ? g.index_buffer
+                                                              : vertices_.handle();
+  vkCmdBindIndexBuffer(cmd, indices, g.index_offset, VK_INDEX_TYPE_UINT32);
 }
 
 void RasterRenderer::ensure_ascending_indices(uint32_t count) {

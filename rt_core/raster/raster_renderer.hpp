@@ -14,6 +14,7 @@
 #include "rt_core/raster/occlusion_queries.hpp"
 #include "rt_core/raster/pipeline_key.hpp"
 #include "rt_core/raster/raster_pipelines.hpp"
+#include "rt_core/raster/resident_geometry.hpp"
 #include "rt_core/raster/texture_cache.hpp"
 #include "rt_core/record/decompose.hpp"
 #include "rt_core/record/frame_record.hpp"
@@ -86,6 +87,8 @@ class RasterRenderer {
   // read_color on the buffers of the call in progress (glAccum reads the read buffer).
   bool read_current_color(uint32_t buffer, int32_t x, int32_t y, uint32_t width, uint32_t height,
                           std::vector<uint8_t>& rgba);
+  // Binds the vertex and index buffers `geometry` names.
+  void bind_geometry(VkCommandBuffer cmd, const DrawGeometry& geometry);
   // ascending_ holds 0, 1, 2, ... for at least `count` indices.
   void ensure_ascending_indices(uint32_t count);
   bool read_image(const GpuImage& image, VkImageAspectFlags aspect, uint32_t texel_bytes, int32_t x,
@@ -116,9 +119,10 @@ class RasterRenderer {
   // The drawable's buffers the current call works on (set by each public call: a renderer may
   // serve several drawables, and a drawable several renderers).
   DrawableBuffers* buffers_ = nullptr;
-  GpuBuffer states_;     // RasterState per snapshot (+ one per clear drawn as a quad)
-  GpuBuffer vertices_;   // this record's attributes and indices
-  GpuBuffer ascending_;  // indices 0, 1, 2, ...: draws whose triangles are in vertex order
+  GpuBuffer states_;           // RasterState per snapshot (+ one per clear drawn as a quad)
+  GpuBuffer vertices_;         // this record's attributes and indices
+  GpuBuffer ascending_;        // indices 0, 1, 2, ...: draws whose triangles are in vertex order
+  ResidentGeometry resident_;  // large draws drawn again unchanged: uploaded once
   GpuBuffer readback_;
   // Windows' host memory (FrameEnd::present_to), imported once per allocation (an empty buffer
   // when the device cannot import it), most recently used last.

@@ -397,6 +397,8 @@ void decompose(const VertexData& vertices, const AssemblyState& assembly, Decomp
       const bool aero = arrays_smooth && mode == GL_TRIANGLES && n == 9 && assembly.clip_test;
       const bool path_matters =
           (mode == GL_QUADS && arrays_smooth) || mode == GL_QUAD_STRIP || aero;
+      // Quads also split by constant interpolation (emit_batch).
+      if (path_matters || mode == GL_QUADS) out.assembly_consulted = true;
       if (path_matters) {
         bool pipeline = assembly.pipeline;
         for (uint32_t i = 0; i < n && !pipeline && assembly.clip_test; ++i) {

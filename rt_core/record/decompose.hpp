@@ -74,10 +74,16 @@ struct Decomposed {
   std::vector<uint32_t> points;
   std::vector<DecomposedLine> lines;
   std::vector<DecomposedTriangle> triangles;
+  // Whether the AssemblyState decided anything (a batch whose order depends on Mesa's path:
+  // quads, quad strips, the 9-vertex defect). When false, the same vertices decompose the same
+  // under every AssemblyState (consumers keep the result across frames: rt_core's resident
+  // geometry).
+  bool assembly_consulted = false;
   void clear() {
     points.clear();
     lines.clear();
     triangles.clear();
+    assembly_consulted = false;
   }
 };
 
@@ -105,6 +111,8 @@ struct AssemblyState {
   // Window coordinates = ndc * viewport_scale + viewport_offset (for the 9-vertex defect).
   float viewport_scale_x = 1.0f, viewport_offset_x = 0.0f;
   float viewport_scale_y = 1.0f, viewport_offset_y = 0.0f;
+
+  bool operator==(const AssemblyState&) const = default;
 };
 
 // Mesa's assembly state for drawing `vertices` with `state`.

@@ -14,6 +14,7 @@
 #pragma once
 
 #include <array>
+#include <atomic>
 #include <cstdint>
 #include <glm/glm.hpp>
 #include <memory>
@@ -74,17 +75,20 @@ struct VertexKeys {
   uint64_t attributes = 0;
 };
 
-// VertexData's cache of its keys. A copy or move starts without them: the copy may be changed.
+// VertexData's cache of its keys and content id. A copy or move starts without them: the copy
+// may be changed.
 class CachedVertexKeys {
  public:
   CachedVertexKeys() = default;
   CachedVertexKeys(const CachedVertexKeys&) {}
   CachedVertexKeys& operator=(const CachedVertexKeys&) {
     valid = false;
+    content_id.store(0, std::memory_order_relaxed);
     return *this;
   }
   bool valid = false;
   VertexKeys keys;
+  std::atomic<uint64_t> content_id{0};  // 0: none given yet
 };
 
 // Per-vertex attributes of a draw in object space, with GL's current values as they were at
@@ -119,7 +123,19 @@ struct VertexData {
   // vertices. A draw's data does not change once it is in a record; whoever changes a VertexData
   // in place after asking calls forget_keys(). Not thread-safe (a record has one consumer).
   const VertexKeys& keys() const;
-  void forget_keys() { cached_keys.valid = false; }
+  // A process-unique number for these contents, given on first use: two draws with the same
+  // number hold the same vertices (the same object, unchanged). Cheaper than keys() (nothing is
+  // hashed), but equal contents in two objects get two numbers. Consumers key what they derive
+  // from a draw and keep across frames by it (rt_core's resident geometry): the front end hands
+  // the same object to every frame that draws the same buffer-object vertices
+  // (gl_shim/arrays/buffer_draw_cache.hpp). Thread-safe.
+  uint64_t content_id() const;
+  // Whoever changes a VertexData in place after it was in a record calls this: new keys and a
+  // new content id on next use.
+  void forget_keys() {
+    cached_keys.valid = false;
+    cached_keys.content_id.store(0, std::memory_order_relaxed);
+  }
   mutable CachedVertexKeys cached_keys;
 };
 

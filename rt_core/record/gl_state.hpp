@@ -273,7 +273,7 @@ struct PixelTransferState {
   int32_t index_shift = 0, index_offset = 0;
   glm::vec4 scale{1.0f}, bias{0.0f};  // RGBA
   float depth_scale = 1.0f, depth_bias = 0.0f;
-  float zoom_x = 1.0f, zoom_y = 1.0f;  // glPixelZoom
+  float zoom_x = 1.0f, zoom_y = 1.0f;     // glPixelZoom
   std::shared_ptr<const PixelMaps> maps;  // null: GL's initial maps
 
   const PixelMaps& pixel_maps() const { return maps ? *maps : PixelMaps::initial(); }

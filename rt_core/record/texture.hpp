@@ -30,10 +30,13 @@ enum class TexelFormat : uint8_t {
 
 constexpr uint32_t texel_bytes(TexelFormat format) {
   switch (format) {
-    case TexelFormat::kRgba16: return 8;
-    case TexelFormat::kRgba32f: return 16;
+    case TexelFormat::kRgba16:
+      return 8;
+    case TexelFormat::kRgba32f:
+      return 16;
     case TexelFormat::kRgba8:
-    case TexelFormat::kDepth32f: break;
+    case TexelFormat::kDepth32f:
+      break;
   }
   return 4;
 }

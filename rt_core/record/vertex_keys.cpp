@@ -27,4 +27,17 @@ const VertexKeys& VertexData::keys() const {
   return cached_keys.keys;
 }
 
+uint64_t VertexData::content_id() const {
+  uint64_t id = cached_keys.content_id.load(std::memory_order_relaxed);
+  if (id != 0) return id;
+  // Numbers are never reused in a process, so a consumer's entry for a number that no longer
+  // exists can never be mistaken for new contents that happen to live at the same address.
+  static std::atomic<uint64_t> next_id{1};
+  const uint64_t fresh = next_id.fetch_add(1, std::memory_order_relaxed);
+  // Two threads asking at once agree on one number.
+  return cached_keys.content_id.compare_exchange_strong(id, fresh, std::memory_order_relaxed)
+             ? fresh
+             : id;
+}
+
 }  // namespace glpt::rec

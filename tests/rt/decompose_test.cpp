@@ -53,6 +53,32 @@ AssemblyState clip_tested() {
 const std::vector<Tri> kQuadDiagonal02 = {{0, 1, 2, 1 | 2}, {0, 2, 3, 2 | 4}};
 const std::vector<Tri> kQuadDiagonal13 = {{0, 1, 3, 1 | 4}, {1, 2, 3, 1 | 2}};
 
+// Decomposed::assembly_consulted: whether the result may change with the AssemblyState (rt_core's
+// resident geometry keeps a decomposition across frames only when it did not, or for the same
+// state).
+TEST(Decompose, SaysWhenTheAssemblyStateDecided) {
+  auto consulted = [](const VertexData& d) {
+    Decomposed out;
+    decompose(d, clip_tested(), out);
+    return out.assembly_consulted;
+  };
+  EXPECT_FALSE(consulted(primitive(GL_TRIANGLES, 12, PrimitiveSource::kArrays)));
+  EXPECT_FALSE(consulted(primitive(GL_TRIANGLE_STRIP, 9, PrimitiveSource::kArrays)));
+  EXPECT_FALSE(consulted(primitive(GL_TRIANGLES, 9, PrimitiveSource::kElements)));
+  EXPECT_FALSE(consulted(primitive(GL_POLYGON, 9, PrimitiveSource::kArrays)));
+  // The 9-vertex defect of the arrays path, quads (constant interpolation, path), quad strips.
+  EXPECT_TRUE(consulted(primitive(GL_TRIANGLES, 9, PrimitiveSource::kArrays)));
+  EXPECT_TRUE(consulted(primitive(GL_QUADS, 8, PrimitiveSource::kElements)));
+  EXPECT_TRUE(consulted(primitive(GL_QUAD_STRIP, 8, PrimitiveSource::kArrays)));
+  // Appending keeps what an earlier decomposition said; clear() forgets it.
+  Decomposed out;
+  decompose(primitive(GL_QUADS, 4, PrimitiveSource::kArrays), clip_tested(), out);
+  decompose(primitive(GL_TRIANGLES, 6, PrimitiveSource::kArrays), clip_tested(), out);
+  EXPECT_TRUE(out.assembly_consulted);
+  out.clear();
+  EXPECT_FALSE(out.assembly_consulted);
+}
+
 TEST(Decompose, TrianglesKeepOrderAndAllEdges) {
   EXPECT_EQ(triangles(primitive(GL_TRIANGLES, 7)),
             (std::vector<Tri>{{0, 1, 2, 7}, {3, 4, 5, 7}}));  // the 7th vertex is dropped
