@@ -6,6 +6,7 @@
 
 #include "gl/gl_enums.h"
 #include "gl_shim/frame/headless_target.hpp"
+#include "gl_shim/frame/heap_tuning.hpp"
 #include "gl_shim/gl_impl_decls.hpp"
 
 namespace glpt {
@@ -107,6 +108,7 @@ bool ensure_output(Context& ctx) {
     ctx.clear_fallback = std::make_unique<ClearFallback>();
     return false;
   }
+  tune_heap_for_rendering();  // the process renders from now on (heap_tuning.hpp)
   return true;
 }
 

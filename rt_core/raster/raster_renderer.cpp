@@ -263,6 +263,16 @@ void RasterRenderer::execute(const rec::FrameRecord& record, DrawableBuffers& bu
         own_order(known_count);
         continue;
       }
+      // The common case told without decomposing: a triangle list in element order.
+      if (cls == rec::PrimitiveClass::kTriangles && !unfilled &&
+          rec::triangles_in_element_order(v, assembly) &&
+          std::all_of(v.position.begin(), v.position.end(),
+                      [](const glm::vec4& p) { return finite(p); })) {
+        const uint32_t count = static_cast<uint32_t>(v.primitives[0].count);
+        if (resident != nullptr) resident->found_in_vertex_order(count, false, assembly);
+        own_order(count);
+        continue;
+      }
       decomposed_.clear();
       // Mesa's exact triangles and vertex order (decompose.hpp): they decide interpolation and
       // edge ties.
@@ -280,8 +290,10 @@ void RasterRenderer::execute(const rec::FrameRecord& record, DrawableBuffers& bu
         if (!unfilled && in_vertex_order(v, decomposed_.triangles)) {
           // The draw's own order: its indices as they are, or ascending ones (no index list is
           // made and uploaded per draw; lavapipe still draws indexed, as every other draw).
-          if (resident != nullptr) resident->found_in_vertex_order(decomposed_, assembly);
-          own_order(static_cast<uint32_t>(3 * decomposed_.triangles.size()));
+          const auto count = static_cast<uint32_t>(3 * decomposed_.triangles.size());
+          if (resident != nullptr)
+            resident->found_in_vertex_order(count, decomposed_.assembly_consulted, assembly);
+          own_order(count);
           continue;
         }
         edge_masks.clear();

@@ -28,11 +28,11 @@ bool ResidentGeometry::Entry::in_vertex_order(const rec::AssemblyState& assembly
   return true;
 }
 
-void ResidentGeometry::Entry::found_in_vertex_order(const rec::Decomposed& decomposed,
+void ResidentGeometry::Entry::found_in_vertex_order(uint32_t index_count, bool assembly_consulted,
                                                     const rec::AssemblyState& assembly) {
   vertex_order_known_ = true;
-  vertex_order_index_count_ = static_cast<uint32_t>(3 * decomposed.triangles.size());
-  assembly_consulted_ = decomposed.assembly_consulted;
+  vertex_order_index_count_ = index_count;
+  assembly_consulted_ = assembly_consulted;
   assembly_ = assembly;
 }
 

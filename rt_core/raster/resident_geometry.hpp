@@ -36,7 +36,8 @@ class ResidentGeometry {
     // Filled triangles found to be drawn in vertex order (their own or ascending indices), with
     // the assembly state they were found for when the decomposition consulted it.
     bool in_vertex_order(const rec::AssemblyState& assembly, uint32_t* index_count) const;
-    void found_in_vertex_order(const rec::Decomposed& decomposed,
+    // `assembly_consulted`: the decomposition depended on `assembly` (Decomposed).
+    void found_in_vertex_order(uint32_t index_count, bool assembly_consulted,
                                const rec::AssemblyState& assembly);
 
    private:

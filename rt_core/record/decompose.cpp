@@ -492,6 +492,28 @@ AssemblyState assembly_state(const StateSnapshot& state, const VertexData& verti
   return a;
 }
 
+bool triangles_in_element_order(const VertexData& vertices, const AssemblyState& assembly) {
+  if (vertices.mode != GL_TRIANGLES || vertices.primitives.size() != 1) return false;
+  const uint32_t vertex_count = vertices.vertex_count();
+  const bool indexed = !vertices.indices.empty();
+  const uint64_t elements = indexed ? vertices.indices.size() : vertex_count;
+  const PrimitiveRange& range = vertices.primitives[0];
+  if (range.first != 0 || range.count != elements || range.count == 0 || range.count % 3 != 0)
+    return false;
+  // The 9-vertex defect of the arrays path (decompose): batches are cut every 4095 vertices, so a
+  // batch of 9 is the last one of a count of 4095k + 9.
+  const bool indexed_path = vertices.source == PrimitiveSource::kDisplayList ||
+                            vertices.source == PrimitiveSource::kElements;
+  const uint32_t batch = trim(kBatchVertices, split_of(GL_TRIANGLES));
+  if (!indexed_path && !assembly.constant_interpolation && assembly.clip_test &&
+      range.count % batch == 9)
+    return false;
+  if (indexed)
+    for (const uint32_t v : vertices.indices)
+      if (v >= vertex_count) return false;
+  return true;
+}
+
 void decompose(const VertexData& vertices, Decomposed& out) {
   decompose(vertices, AssemblyState{}, out);
 }

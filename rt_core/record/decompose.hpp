@@ -131,6 +131,11 @@ bool mesa_draws_strips_as_lines(const VertexData& vertices);
 // primitives are dropped as GL drops them; out-of-range indices drop the primitive they belong
 // to.
 void decompose(const VertexData& vertices, const AssemblyState& assembly, Decomposed& out);
+// Whether decompose(vertices, assembly) gives exactly the draw's elements in order, three by
+// three (element 3i, 3i+1, 3i+2 as triangle i), answered without decomposing: GL_TRIANGLES drawn
+// as one range, every index naming a vertex, no batch whose order Mesa's path decides. False
+// when it cannot tell so cheaply (decompose then answers). Positions are not looked at.
+bool triangles_in_element_order(const VertexData& vertices, const AssemblyState& assembly);
 // The same with a default AssemblyState (smooth, filled, nothing clipped): the decomposition
 // for consumers that do not need Mesa's exact order (the path tracer).
 void decompose(const VertexData& vertices, Decomposed& out);

@@ -79,6 +79,55 @@ TEST(Decompose, SaysWhenTheAssemblyStateDecided) {
   EXPECT_FALSE(out.assembly_consulted);
 }
 
+// triangles_in_element_order answers what decomposing says for triangle lists, and no otherwise.
+TEST(Decompose, TrianglesInElementOrderWithoutDecomposing) {
+  auto decomposed_in_order = [](const VertexData& d, const AssemblyState& a) {
+    Decomposed out;
+    decompose(d, a, out);
+    const uint64_t elements = d.indices.empty() ? d.vertex_count() : d.indices.size();
+    if (out.triangles.empty() || 3 * out.triangles.size() != elements) return false;
+    for (size_t t = 0; t < out.triangles.size(); ++t)
+      for (uint32_t k = 0; k < 3; ++k) {
+        const size_t e = 3 * t + k;
+        if (out.triangles[t].v[k] != (d.indices.empty() ? e : d.indices[e])) return false;
+      }
+    return true;
+  };
+  auto indexed = [](uint32_t count, uint32_t bad_at = ~0u) {
+    VertexData d = primitive(GL_TRIANGLES, count, PrimitiveSource::kElements);
+    for (uint32_t i = 0; i < count; ++i) d.indices.push_back(i == bad_at ? count : count - 1 - i);
+    return d;
+  };
+  VertexData two_ranges = primitive(GL_TRIANGLES, 6, PrimitiveSource::kArrays);
+  add_range(two_ranges, 3);
+  const std::vector<VertexData> cases = {
+      primitive(GL_TRIANGLES, 12, PrimitiveSource::kArrays),
+      primitive(GL_TRIANGLES, 12, PrimitiveSource::kImmediate),
+      primitive(GL_TRIANGLES, 9, PrimitiveSource::kArrays),  // the 9-vertex defect's batch
+      primitive(GL_TRIANGLES, 4095 * 2 + 9, PrimitiveSource::kArrays),
+      primitive(GL_TRIANGLES, 9, PrimitiveSource::kElements),
+      primitive(GL_TRIANGLES, 10, PrimitiveSource::kArrays),  // a trailing vertex
+      indexed(12),
+      indexed(12, 5),  // an index past the vertices
+      primitive(GL_QUADS, 8, PrimitiveSource::kArrays),
+      primitive(GL_TRIANGLE_STRIP, 3, PrimitiveSource::kImmediate),
+      two_ranges,
+  };
+  for (size_t i = 0; i < cases.size(); ++i) {
+    for (const AssemblyState& a : {AssemblyState{}, clip_tested()}) {
+      if (triangles_in_element_order(cases[i], a)) {
+        EXPECT_TRUE(decomposed_in_order(cases[i], a)) << "case " << i;
+      }
+    }
+  }
+  EXPECT_TRUE(triangles_in_element_order(cases[0], clip_tested()));
+  EXPECT_TRUE(triangles_in_element_order(cases[4], clip_tested()));
+  EXPECT_TRUE(triangles_in_element_order(cases[6], clip_tested()));
+  EXPECT_FALSE(triangles_in_element_order(cases[2], clip_tested()));
+  EXPECT_FALSE(triangles_in_element_order(cases[3], clip_tested()));
+  EXPECT_FALSE(triangles_in_element_order(cases[7], clip_tested()));
+}
+
 TEST(Decompose, TrianglesKeepOrderAndAllEdges) {
   EXPECT_EQ(triangles(primitive(GL_TRIANGLES, 7)),
             (std::vector<Tri>{{0, 1, 2, 7}, {3, 4, 5, 7}}));  // the 7th vertex is dropped
