@@ -44,11 +44,21 @@ size_t BufferDrawKeyHash::operator()(const BufferDrawKey& key) const {
   return static_cast<size_t>(hash.value());
 }
 
+bool draw_reads_buffer_objects_only(const Context& ctx, bool indexed) {
+  const VertexArrays& arrays = ctx.arrays;
+  if (!arrays[ArrayKind::kVertex].enabled || (indexed && !arrays.element_buffer)) return false;
+  for (int k = 0; k < kArrayKinds; ++k) {
+    const ClientArray& a = arrays.arrays[size_t(k)];
+    if ((kDrawnArrays & (1u << k)) != 0 && a.enabled && (!a.buffer || a.orphaned)) return false;
+  }
+  return true;
+}
+
 std::optional<BufferDrawKey> buffer_draw_key(const Context& ctx, GLenum mode, GLint first,
                                              GLsizei count, GLenum index_type, const void* indices,
                                              uint8_t units) {
   const VertexArrays& arrays = ctx.arrays;
-  if (!arrays[ArrayKind::kVertex].enabled) return std::nullopt;
+  if (!draw_reads_buffer_objects_only(ctx, index_type != 0)) return std::nullopt;
   BufferDrawKey key;
   KeyWriter out(key);
   out.word(mode);
@@ -56,12 +66,7 @@ std::optional<BufferDrawKey> buffer_draw_key(const Context& ctx, GLenum mode, GL
   out.word(uint64_t(int64_t{count}));
   out.word(index_type);
   out.word(reinterpret_cast<uintptr_t>(indices));
-  if (index_type != 0) {
-    if (!arrays.element_buffer) return std::nullopt;
-    out.word(arrays.element_buffer->contents_version());
-  } else {
-    out.word(0);
-  }
+  out.word(index_type != 0 ? arrays.element_buffer->contents_version() : 0);
   out.word(units);
   for (int k = 0; k < kArrayKinds; ++k) {
     if ((kDrawnArrays & (1u << k)) == 0) continue;
@@ -70,10 +75,8 @@ std::optional<BufferDrawKey> buffer_draw_key(const Context& ctx, GLenum mode, GL
       out.word(0);
       continue;
     }
-    if (!a.buffer || a.orphaned) return std::nullopt;  // client memory: may change at any time
-    out.word(1 | uint64_t(uint32_t(a.size)) << 8 | uint64_t{a.type} << 16 |
-             uint64_t{a.normalized} << 48);
-    out.word(uint64_t(int64_t{a.stride}));
+    out.word(1 | uint64_t{a.normalized} << 1 | uint64_t(uint32_t(a.size)) << 32);
+    out.word(uint64_t{a.type} | uint64_t(uint32_t(a.stride)) << 32);
     out.word(reinterpret_cast<uintptr_t>(a.pointer));
     out.word(a.buffer->contents_version());
   }

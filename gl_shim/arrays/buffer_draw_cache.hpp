@@ -36,6 +36,10 @@ struct BufferDrawKeyHash {
   size_t operator()(const BufferDrawKey& key) const;
 };
 
+// Whether every array a draw reads (and, for glDrawElements, `indexed`, its indices) comes from a
+// buffer object: the draws a key can be made for. Cheap; checked before anything else.
+bool draw_reads_buffer_objects_only(const Context& ctx, bool indexed);
+
 // The key of a draw of `count` vertices of `mode` from `first` (glDrawArrays: `index_type` 0)
 // or of `count` indices of `index_type` at offset `indices` into the element buffer
 // (glDrawElements), drawn with texture units `units` sampled; nothing when the draw does not

@@ -125,6 +125,10 @@ TEST_F(BufferDrawReuseTest, EveryChangeTheVerticesDependOnRecordsNewOnes) {
   // The pointer (offset, stride, type).
   glColorPointer(3, GL_UNSIGNED_BYTE, sizeof(Vertex), offset(offsetof(Vertex, color)));
   expect_new("glColorPointer");
+  glColorPointer(4, GL_UNSIGNED_SHORT, sizeof(Vertex), offset(offsetof(Vertex, color)));
+  expect_new("type");
+  glColorPointer(4, GL_UNSIGNED_SHORT, 2 * sizeof(Vertex), offset(offsetof(Vertex, color)));
+  expect_new("stride");
   // A current value the draw falls back to, once its array is disabled; -0.0 is not 0.0.
   glDisableClientState(GL_COLOR_ARRAY);
   expect_new("colour array disabled");
@@ -201,10 +205,11 @@ class ResidentDrawTest : public BufferDrawReuseTest {
     BufferDrawReuseTest::TearDown();
   }
   // Draws a frame (cleared to grey), swaps: the front buffer's pixels and the frame's statistics.
-  std::vector<uint8_t> frame(glpt::rt::FrameStats* stats) {
+  // `indices`: an offset into the element buffer, or client memory.
+  std::vector<uint8_t> frame(glpt::rt::FrameStats* stats, const void* indices = nullptr) {
     glClearColor(0.5f, 0.5f, 0.5f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
-    glDrawElements(mode_, count_, GL_UNSIGNED_INT, offset(0));
+    glDrawElements(mode_, count_, GL_UNSIGNED_INT, indices);
     glpt::end_frame(ctx_, true);
     EXPECT_TRUE(ctx_.output);
     if (ctx_.output) *stats = ctx_.output->last_frame_stats();
@@ -213,6 +218,19 @@ class ResidentDrawTest : public BufferDrawReuseTest {
     glReadPixels(0, 0, kSize, kSize, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
     EXPECT_EQ(glGetError(), GLenum{GL_NO_ERROR});
     return rgba;
+  }
+  // The same draw of `vertices` from client memory (never reused): its pixels.
+  std::vector<uint8_t> client_frame(const std::vector<Vertex>& vertices) {
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
+    glVertexPointer(3, GL_FLOAT, sizeof(Vertex), &vertices[0].position);
+    glColorPointer(4, GL_UNSIGNED_BYTE, sizeof(Vertex), &vertices[0].color);
+    std::vector<GLuint> indices(vertices.size());
+    for (size_t i = 0; i < indices.size(); ++i) indices[i] = GLuint(i);
+    glpt::rt::FrameStats stats;
+    std::vector<uint8_t> pixels = frame(&stats, indices.data());
+    EXPECT_EQ(stats.resident_draws, 0u);
+    return pixels;
   }
   static constexpr uint32_t kSize = 64;
   GLenum mode_ = GL_TRIANGLES;
@@ -244,20 +262,8 @@ TEST_F(ResidentDrawTest, ReusedVerticesDrawTheSamePixelsAndFollowChanges) {
   EXPECT_EQ(stats.resident_draws, 0u);
   EXPECT_EQ(frame(&stats), changed);
   EXPECT_EQ(stats.resident_draws, 1u);
-  // The same vertices from client memory (never reused) draw the same pixels.
-  glBindBuffer(GL_ARRAY_BUFFER, 0);
-  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
-  glVertexPointer(3, GL_FLOAT, sizeof(Vertex), &vertices[0].position);
-  glColorPointer(4, GL_UNSIGNED_BYTE, sizeof(Vertex), &vertices[0].color);
-  std::vector<GLuint> indices(vertices.size());
-  for (size_t i = 0; i < indices.size(); ++i) indices[i] = GLuint(i);
-  glClear(GL_COLOR_BUFFER_BIT);
-  glDrawElements(GL_TRIANGLES, count_, GL_UNSIGNED_INT, indices.data());
-  glpt::end_frame(ctx_, true);
-  std::vector<uint8_t> client(size_t{kSize} * kSize * 4);
-  glReadPixels(0, 0, kSize, kSize, GL_RGBA, GL_UNSIGNED_BYTE, client.data());
-  EXPECT_EQ(client, changed);
-  EXPECT_EQ(ctx_.output->last_frame_stats().resident_draws, 0u);
+  // The same vertices from client memory draw the same pixels.
+  EXPECT_EQ(client_frame(vertices), changed);
 }
 
 TEST_F(ResidentDrawTest, ResidentQuadsAreSplitPerFrameByTheTransform) {
@@ -286,19 +292,7 @@ TEST_F(ResidentDrawTest, ResidentQuadsAreSplitPerFrameByTheTransform) {
   }
   EXPECT_EQ(stats.resident_draws, 1u);
   // The last frame again, recorded afresh from client memory: the same pixels.
-  glBindBuffer(GL_ARRAY_BUFFER, 0);
-  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
-  glVertexPointer(3, GL_FLOAT, sizeof(Vertex), &vertices[0].position);
-  glColorPointer(4, GL_UNSIGNED_BYTE, sizeof(Vertex), &vertices[0].color);
-  std::vector<GLuint> indices(vertices.size());
-  for (size_t i = 0; i < indices.size(); ++i) indices[i] = GLuint(i);
-  glClear(GL_COLOR_BUFFER_BIT);
-  glDrawElements(GL_QUADS, count_, GL_UNSIGNED_INT, indices.data());
-  glpt::end_frame(ctx_, true);
-  std::vector<uint8_t> client(size_t{kSize} * kSize * 4);
-  glReadPixels(0, 0, kSize, kSize, GL_RGBA, GL_UNSIGNED_BYTE, client.data());
-  EXPECT_EQ(client, last);
-  EXPECT_EQ(ctx_.output->last_frame_stats().resident_draws, 0u);
+  EXPECT_EQ(client_frame(vertices), last);
 }
 
 }  // namespace
