@@ -246,7 +246,9 @@ void RasterRenderer::execute(const rec::FrameRecord& record, DrawableBuffers& bu
       const rec::AssemblyState assembly = rec::assembly_state(state, v);
       const rec::PrimitiveState& p = state.raster->primitive;
       const bool unfilled = p.polygon_mode_front != GL_FILL || p.polygon_mode_back != GL_FILL;
-      // The draw's own order, known from an earlier record (resident geometry).
+      // Triangles drawn in the draw's own order: its indices as they are, or ascending ones (no
+      // index list is made and uploaded per draw; lavapipe still draws indexed, as every other
+      // draw).
       auto own_order = [&](uint32_t index_count) {
         g.topology = RasterTopology::kTriangles;
         g.index_count = index_count;
@@ -257,6 +259,7 @@ void RasterRenderer::execute(const rec::FrameRecord& record, DrawableBuffers& bu
           own_indices();
         }
       };
+      // Known from an earlier record (resident geometry).
       uint32_t known_count = 0;
       if (cls == rec::PrimitiveClass::kTriangles && !unfilled && resident != nullptr &&
           resident->in_vertex_order(assembly, &known_count)) {
@@ -288,8 +291,6 @@ void RasterRenderer::execute(const rec::FrameRecord& record, DrawableBuffers& bu
       } else {
         g.topology = RasterTopology::kTriangles;
         if (!unfilled && in_vertex_order(v, decomposed_.triangles)) {
-          // The draw's own order: its indices as they are, or ascending ones (no index list is
-          // made and uploaded per draw; lavapipe still draws indexed, as every other draw).
           const auto count = static_cast<uint32_t>(3 * decomposed_.triangles.size());
           if (resident != nullptr)
             resident->found_in_vertex_order(count, decomposed_.assembly_consulted, assembly);
