@@ -10,12 +10,8 @@
 #include "gl_shim/gl_impl_decls.hpp"
 
 namespace glpt {
-namespace {
 
-// The one piece of global mutable state glpt has: GL's current context, per thread.
-thread_local Context* t_current = nullptr;
-
-}  // namespace
+constinit thread_local Context* t_current_context = nullptr;
 
 Context::Context(const Context* shared)
     : unimplemented_calls(static_cast<size_t>(CommandId::kCount), 0),
@@ -29,7 +25,7 @@ Context::Context(const Context* shared)
 }
 
 Context::~Context() {
-  if (t_current == this) t_current = nullptr;
+  if (t_current_context == this) t_current_context = nullptr;
   if (std::getenv("GLPT_STATS") == nullptr) return;
   uint64_t total = 0;
   for (size_t i = 0; i < unimplemented_calls.size(); ++i) {
@@ -51,8 +47,7 @@ bool Context::list_executes_while_compiling() const {
   return lists.compiling_mode == GL_COMPILE_AND_EXECUTE;
 }
 
-Context* current_context() { return t_current; }
-void set_current_context(Context* ctx) { t_current = ctx; }
+void set_current_context(Context* ctx) { t_current_context = ctx; }
 
 void flush_before_release(Context& ctx) {
   // (A context whose frames are not rendered, glpt-replay's other shards, has nothing to show.)
