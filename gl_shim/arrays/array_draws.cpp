@@ -156,7 +156,7 @@ struct CachedDraw {
 CachedDraw record_cached_draw(Context& ctx, GLenum mode, GLint first, GLsizei count,
                               GLenum index_type, const void* indices) {
   if (executing_while_compiling(ctx) || ctx.render_mode.mode != GL_RENDER ||
-      !draw_reads_buffer_objects_only(ctx, index_type != 0))
+      !draw_reads_static_buffers_only(ctx, index_type != 0))
     return {};
   const rec::StateId state = ctx.snapshots.capture(ctx, ctx.recorder.record());
   const uint8_t units = sampled_texture_units(ctx.recorder.record().states[state]);

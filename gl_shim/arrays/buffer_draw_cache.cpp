@@ -36,6 +36,24 @@ class KeyWriter {
   bool half_ = false;
 };
 
+bool is_static(BufferObject& buffer) {
+  const std::lock_guard lock(buffer.mutex);
+  return buffer.usage == GL_STATIC_DRAW || buffer.usage == GL_STATIC_READ ||
+         buffer.usage == GL_STATIC_COPY;
+}
+
+// The bytes `vertices` holds (what an entry keeps alive).
+size_t vertex_bytes(const rec::VertexData& v) {
+  size_t bytes = v.position.size() * sizeof(v.position[0]) + v.normal.size() * sizeof(v.normal[0]) +
+                 v.color.size() * sizeof(v.color[0]) +
+                 v.secondary_color.size() * sizeof(v.secondary_color[0]) +
+                 v.fog_coord.size() * sizeof(float) + v.edge_flag.size() +
+                 v.indices.size() * sizeof(uint32_t) +
+                 v.primitives.size() * sizeof(rec::PrimitiveRange);
+  for (const auto& t : v.tex_coord) bytes += t.size() * sizeof(t[0]);
+  return bytes;
+}
+
 }  // namespace
 
 size_t BufferDrawKeyHash::operator()(const BufferDrawKey& key) const {
@@ -44,12 +62,14 @@ size_t BufferDrawKeyHash::operator()(const BufferDrawKey& key) const {
   return static_cast<size_t>(hash.value());
 }
 
-bool draw_reads_buffer_objects_only(const Context& ctx, bool indexed) {
+bool draw_reads_static_buffers_only(const Context& ctx, bool indexed) {
   const VertexArrays& arrays = ctx.arrays;
-  if (!arrays[ArrayKind::kVertex].enabled || (indexed && !arrays.element_buffer)) return false;
+  if (!arrays[ArrayKind::kVertex].enabled) return false;
+  if (indexed && (!arrays.element_buffer || !is_static(*arrays.element_buffer))) return false;
   for (int k = 0; k < kArrayKinds; ++k) {
     const ClientArray& a = arrays.arrays[size_t(k)];
-    if ((kDrawnArrays & (1u << k)) != 0 && a.enabled && (!a.buffer || a.orphaned)) return false;
+    if ((kDrawnArrays & (1u << k)) == 0 || !a.enabled) continue;
+    if (!a.buffer || a.orphaned || !is_static(*a.buffer)) return false;
   }
   return true;
 }
@@ -58,7 +78,7 @@ std::optional<BufferDrawKey> buffer_draw_key(const Context& ctx, GLenum mode, GL
                                              GLsizei count, GLenum index_type, const void* indices,
                                              uint8_t units) {
   const VertexArrays& arrays = ctx.arrays;
-  if (!draw_reads_buffer_objects_only(ctx, index_type != 0)) return std::nullopt;
+  if (!draw_reads_static_buffers_only(ctx, index_type != 0)) return std::nullopt;
   BufferDrawKey key;
   KeyWriter out(key);
   out.word(mode);
@@ -106,19 +126,31 @@ std::shared_ptr<const rec::VertexData> BufferDrawCache::find(const BufferDrawKey
 void BufferDrawCache::insert(const BufferDrawKey& key,
                              std::shared_ptr<const rec::VertexData> vertices) {
   if (!vertices) return;
-  if (entries_.size() >= kMaxEntries && entries_.find(key) == entries_.end()) {
-    auto oldest = std::min_element(
-        entries_.begin(), entries_.end(),
-        [](const auto& a, const auto& b) { return a.second.last_used < b.second.last_used; });
-    entries_.erase(oldest);
+  if (const auto it = entries_.find(key); it != entries_.end()) erase(it);
+  const size_t bytes = vertex_bytes(*vertices);
+  if (bytes > kMaxBytes) return;
+  while (!entries_.empty() && (entries_.size() >= kMaxEntries || bytes_ + bytes > kMaxBytes)) {
+    erase(std::min_element(entries_.begin(), entries_.end(), [](const auto& a, const auto& b) {
+      return a.second.last_used < b.second.last_used;
+    }));
   }
-  entries_[key] = Entry{std::move(vertices), record_};
+  entries_.emplace(key, Entry{std::move(vertices), record_, bytes});
+  bytes_ += bytes;
+}
+
+void BufferDrawCache::erase(
+    std::unordered_map<BufferDrawKey, Entry, BufferDrawKeyHash>::iterator it) {
+  bytes_ -= it->second.bytes;
+  entries_.erase(it);
 }
 
 void BufferDrawCache::record_cleared() {
   ++record_;
-  std::erase_if(entries_,
-                [&](const auto& entry) { return entry.second.last_used + kKeepRecords < record_; });
+  for (auto it = entries_.begin(); it != entries_.end();) {
+    const auto next = std::next(it);
+    if (it->second.last_used + kKeepRecords < record_) erase(it);
+    it = next;
+  }
 }
 
 }  // namespace glpt

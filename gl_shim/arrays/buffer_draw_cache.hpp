@@ -7,8 +7,11 @@
 // structures, both by its content id).
 //
 // Only live glDrawArrays and glDrawElements in GL_RENDER mode are cached; every enabled array
-// they read, and glDrawElements' indices, must come from buffer objects. A key holds everything
-// the recorded vertices are a function of (BufferDrawKey); buffer contents enter by version
+// they read, and glDrawElements' indices, must come from buffer objects the program declared
+// static (GL_STATIC_DRAW, _READ, _COPY: GL 1.5 2.9's usage hint). Dynamic and stream buffers
+// change every frame or so: caching them would only hold on to stale vertices (and keep the
+// recorder from reusing their storage). A key holds everything the recorded vertices are a
+// function of (BufferDrawKey); buffer contents enter by version
 // (BufferObject::contents_version), never by hashing their bytes.
 #pragma once
 
@@ -37,8 +40,8 @@ struct BufferDrawKeyHash {
 };
 
 // Whether every array a draw reads (and, for glDrawElements, `indexed`, its indices) comes from a
-// buffer object: the draws a key can be made for. Cheap; checked before anything else.
-bool draw_reads_buffer_objects_only(const Context& ctx, bool indexed);
+// static buffer object: the draws a key can be made for. Cheap; checked before anything else.
+bool draw_reads_static_buffers_only(const Context& ctx, bool indexed);
 
 // The key of a draw of `count` vertices of `mode` from `first` (glDrawArrays: `index_type` 0)
 // or of `count` indices of `index_type` at offset `indices` into the element buffer
@@ -52,8 +55,9 @@ class BufferDrawCache {
  public:
   // Entries not drawn in this many records in a row are dropped.
   static constexpr uint64_t kKeepRecords = 4;
-  // At most this many entries; the least recently drawn go first.
+  // At most this many entries and bytes of vertices; the least recently drawn go first.
   static constexpr size_t kMaxEntries = 256;
+  static constexpr size_t kMaxBytes = size_t{512} << 20;
 
   // The vertices recorded for `key`, or null.
   std::shared_ptr<const rec::VertexData> find(const BufferDrawKey& key);
@@ -61,14 +65,18 @@ class BufferDrawCache {
   // A record was executed and cleared.
   void record_cleared();
   size_t size() const { return entries_.size(); }
+  size_t bytes() const { return bytes_; }
 
  private:
   struct Entry {
     std::shared_ptr<const rec::VertexData> vertices;
     uint64_t last_used = 0;
+    size_t bytes = 0;
   };
+  void erase(std::unordered_map<BufferDrawKey, Entry, BufferDrawKeyHash>::iterator it);
   std::unordered_map<BufferDrawKey, Entry, BufferDrawKeyHash> entries_;
   uint64_t record_ = 0;
+  size_t bytes_ = 0;
 };
 
 }  // namespace glpt

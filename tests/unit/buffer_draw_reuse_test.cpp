@@ -166,12 +166,42 @@ TEST_F(BufferDrawReuseTest, ClientArraysAreNeverReused) {
   EXPECT_EQ(ctx_.buffer_draws.size(), 0u);
 }
 
+TEST_F(BufferDrawReuseTest, OnlyStaticBuffersAreCached) {
+  const std::vector<Vertex> vertices = grid_triangles(4);
+  set_up_buffers(vertices);
+  const auto first = draw_in_new_record();
+  EXPECT_EQ(ctx_.buffer_draws.size(), 1u);
+  EXPECT_GT(ctx_.buffer_draws.bytes(), vertices.size() * sizeof(glm::vec4));
+  // The same contents declared dynamic (or stream): recorded anew every time, nothing kept.
+  for (GLenum usage : {GLenum(GL_DYNAMIC_DRAW), GLenum(GL_STREAM_DRAW)}) {
+    for (uint64_t i = 0; i <= glpt::BufferDrawCache::kKeepRecords; ++i) next_record();
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices.size() * sizeof(Vertex)), vertices.data(),
+                 usage);
+    const auto a = draw_in_new_record();
+    const auto b = draw_in_new_record();
+    ASSERT_TRUE(a && b);
+    EXPECT_NE(a->content_id(), b->content_id());
+    EXPECT_EQ(ctx_.buffer_draws.size(), 0u);
+    EXPECT_EQ(ctx_.buffer_draws.bytes(), 0u);
+  }
+  // A static vertex buffer with dynamic indices: not cached either.
+  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices.size() * sizeof(Vertex)), vertices.data(),
+               GL_STATIC_DRAW);
+  std::vector<GLuint> indices(vertices.size());
+  for (size_t i = 0; i < indices.size(); ++i) indices[i] = GLuint(i);
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(indices.size() * sizeof(GLuint)),
+               indices.data(), GL_DYNAMIC_DRAW);
+  draw_in_new_record();
+  EXPECT_EQ(ctx_.buffer_draws.size(), 0u);
+}
+
 TEST_F(BufferDrawReuseTest, EntriesNotDrawnForSomeRecordsAreDropped) {
   set_up_buffers(grid_triangles(4));
   const auto first = draw_in_new_record();
   EXPECT_EQ(ctx_.buffer_draws.size(), 1u);
   for (uint64_t i = 0; i <= glpt::BufferDrawCache::kKeepRecords; ++i) next_record();
   EXPECT_EQ(ctx_.buffer_draws.size(), 0u);
+  EXPECT_EQ(ctx_.buffer_draws.bytes(), 0u);
   EXPECT_NE(draw_in_new_record(), first);
 }
 
