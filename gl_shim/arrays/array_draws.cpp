@@ -162,7 +162,6 @@ CachedDraw record_cached_draw(Context& ctx, GLenum mode, GLint first, GLsizei co
   const uint8_t units = sampled_texture_units(ctx.recorder.record().states[state]);
   CachedDraw result;
   result.key = buffer_draw_key(ctx, mode, first, count, index_type, indices, units);
-  if (!result.key) return result;
   if (std::shared_ptr<const rec::VertexData> vertices = ctx.buffer_draws.find(*result.key)) {
     ctx.recorder.add_recorded_draw(state, std::move(vertices));
     note_frame_content(ctx);

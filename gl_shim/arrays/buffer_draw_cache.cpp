@@ -42,18 +42,6 @@ bool is_static(BufferObject& buffer) {
          buffer.usage == GL_STATIC_COPY;
 }
 
-// The bytes `vertices` holds (what an entry keeps alive).
-size_t vertex_bytes(const rec::VertexData& v) {
-  size_t bytes = v.position.size() * sizeof(v.position[0]) + v.normal.size() * sizeof(v.normal[0]) +
-                 v.color.size() * sizeof(v.color[0]) +
-                 v.secondary_color.size() * sizeof(v.secondary_color[0]) +
-                 v.fog_coord.size() * sizeof(float) + v.edge_flag.size() +
-                 v.indices.size() * sizeof(uint32_t) +
-                 v.primitives.size() * sizeof(rec::PrimitiveRange);
-  for (const auto& t : v.tex_coord) bytes += t.size() * sizeof(t[0]);
-  return bytes;
-}
-
 }  // namespace
 
 size_t BufferDrawKeyHash::operator()(const BufferDrawKey& key) const {
@@ -74,11 +62,9 @@ bool draw_reads_static_buffers_only(const Context& ctx, bool indexed) {
   return true;
 }
 
-std::optional<BufferDrawKey> buffer_draw_key(const Context& ctx, GLenum mode, GLint first,
-                                             GLsizei count, GLenum index_type, const void* indices,
-                                             uint8_t units) {
+BufferDrawKey buffer_draw_key(const Context& ctx, GLenum mode, GLint first, GLsizei count,
+                              GLenum index_type, const void* indices, uint8_t units) {
   const VertexArrays& arrays = ctx.arrays;
-  if (!draw_reads_static_buffers_only(ctx, index_type != 0)) return std::nullopt;
   BufferDrawKey key;
   KeyWriter out(key);
   out.word(mode);
@@ -127,7 +113,7 @@ void BufferDrawCache::insert(const BufferDrawKey& key,
                              std::shared_ptr<const rec::VertexData> vertices) {
   if (!vertices) return;
   if (const auto it = entries_.find(key); it != entries_.end()) erase(it);
-  const size_t bytes = vertex_bytes(*vertices);
+  const size_t bytes = vertices->bytes();
   if (bytes > kMaxBytes) return;
   while (!entries_.empty() && (entries_.size() >= kMaxEntries || bytes_ + bytes > kMaxBytes)) {
     erase(std::min_element(entries_.begin(), entries_.end(), [](const auto& a, const auto& b) {

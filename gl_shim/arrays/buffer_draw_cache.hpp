@@ -18,7 +18,6 @@
 #include <array>
 #include <cstdint>
 #include <memory>
-#include <optional>
 #include <unordered_map>
 
 #include "gl_shim/gl_types.h"
@@ -45,11 +44,10 @@ bool draw_reads_static_buffers_only(const Context& ctx, bool indexed);
 
 // The key of a draw of `count` vertices of `mode` from `first` (glDrawArrays: `index_type` 0)
 // or of `count` indices of `index_type` at offset `indices` into the element buffer
-// (glDrawElements), drawn with texture units `units` sampled; nothing when the draw does not
-// read buffer objects only.
-std::optional<BufferDrawKey> buffer_draw_key(const Context& ctx, GLenum mode, GLint first,
-                                             GLsizei count, GLenum index_type, const void* indices,
-                                             uint8_t units);
+// (glDrawElements), drawn with texture units `units` sampled. Only for draws that
+// draw_reads_static_buffers_only accepts.
+BufferDrawKey buffer_draw_key(const Context& ctx, GLenum mode, GLint first, GLsizei count,
+                              GLenum index_type, const void* indices, uint8_t units);
 
 class BufferDrawCache {
  public:

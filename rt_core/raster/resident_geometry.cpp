@@ -1,7 +1,6 @@
 #include "rt_core/raster/resident_geometry.hpp"
 
 #include <cstring>
-#include <vector>
 
 #include "rt_core/raster/raster_recording.hpp"
 
@@ -9,15 +8,6 @@ namespace glpt::rt {
 namespace {
 
 constexpr VkDeviceSize align16(VkDeviceSize offset) { return (offset + 15) & ~VkDeviceSize{15}; }
-
-// The bytes of `vertices` that the raster pipelines read: the attribute arrays and the indices.
-size_t drawn_bytes(const rec::VertexData& vertices) {
-  size_t bytes = vertices.indices.size() * sizeof(uint32_t);
-  for_each_attribute(vertices, [&](uint32_t, const auto& values, VkDeviceSize) {
-    bytes += values.size() * sizeof(values[0]);
-  });
-  return bytes;
-}
 
 }  // namespace
 
@@ -43,7 +33,7 @@ ResidentGeometry::Entry* ResidentGeometry::use(const VulkanDevice& device,
     it->second.last_used = execute;
     return &it->second;
   }
-  if (drawn_bytes(vertices) < kMinBytes) return nullptr;
+  if (vertices.bytes() < kMinBytes) return nullptr;
   const auto [sighting, first_sight] = seen_.try_emplace(id, execute);
   if (first_sight) return nullptr;
   seen_.erase(sighting);

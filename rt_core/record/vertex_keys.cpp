@@ -27,6 +27,14 @@ const VertexKeys& VertexData::keys() const {
   return cached_keys.keys;
 }
 
+size_t VertexData::bytes() const {
+  auto of = [](const auto& values) { return values.size() * sizeof(values[0]); };
+  size_t sum = of(position) + of(normal) + of(color) + of(secondary_color) + of(fog_coord) +
+               of(edge_flag) + of(material) + of(indices) + of(primitives);
+  for (const auto& t : tex_coord) sum += of(t);
+  return sum;
+}
+
 uint64_t VertexData::content_id() const {
   uint64_t id = cached_keys.content_id.load(std::memory_order_relaxed);
   if (id != 0) return id;
