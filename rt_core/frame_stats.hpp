@@ -12,6 +12,8 @@ struct FrameStats {
   uint32_t blas_builds = 0, blas_reused = 0;
   // `rays`: rays actually traced this frame (primary + shadow + bounce), counted on the GPU.
   uint64_t triangles = 0, rays = 0;
+  // Path samples whose radiance was NaN or infinite: dropped (not averaged in, not shown).
+  uint64_t non_finite_samples = 0;
   // Samples per pixel in the image now shown.
   uint32_t accumulated_samples = 0;
   uint32_t draws = 0;  // Draw commands executed

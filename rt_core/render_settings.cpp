@@ -15,6 +15,25 @@ namespace {
 constexpr uint32_t kMaxSamplesPerFrame = 1024;
 constexpr uint32_t kMaxBounces = 16;
 constexpr uint32_t kMaxAccumulated = 1u << 24;  // accumulated sums stay exact-ish in float
+constexpr uint32_t kMaxReference = 1u << 16;
+
+// A parser of one of the `names`, mapped to `values` in order.
+template <typename Enum, size_t N>
+auto choice_parser(const char* const (&names)[N], const Enum (&values)[N]) {
+  return [&names, &values](const char* text) -> std::optional<Enum> {
+    for (size_t i = 0; i < N; ++i)
+      if (std::strcmp(text, names[i]) == 0) return values[i];
+    return std::nullopt;
+  };
+}
+
+constexpr const char* kUnlitNames[] = {"keep", "ao", "emit"};
+constexpr UnlitPolicy kUnlitValues[] = {UnlitPolicy::kKeep, UnlitPolicy::kAo, UnlitPolicy::kEmit};
+constexpr const char* kEnvironmentNames[] = {"black", "clear"};
+constexpr Environment kEnvironmentValues[] = {Environment::kBlack, Environment::kClear};
+constexpr const char* kLightChoiceNames[] = {"contribution", "uniform", "all"};
+constexpr LightChoice kLightChoiceValues[] = {LightChoice::kContribution, LightChoice::kUniform,
+                                              LightChoice::kAll};
 
 std::optional<uint32_t> parse_uint(const char* text, uint32_t min, uint32_t max) {
   if (text == nullptr || *text == '\0' || std::strchr(text, '-') != nullptr) return std::nullopt;
@@ -82,6 +101,23 @@ RenderSettings parse_render_settings(const std::function<const char*(const char*
       "GLPT_LIGHT_SIZE_DEG", settings.light_angular_radius_deg,
       [](const char* text) { return parse_float(text, 0.0f, 45.0f); }, "0..45 degrees");
   apply("GLPT_VALIDATION", settings.validation, parse_bool, "0 or 1");
+  apply("GLPT_SHADOWS", settings.shadows, parse_bool, "0 or 1");
+  apply("GLPT_AO", settings.ambient_occlusion, parse_bool, "0 or 1");
+  apply(
+      "GLPT_AO_RADIUS", settings.ao_radius,
+      [](const char* text) { return parse_float(text, 0.0f, 1.0e30f); }, "a distance >= 0");
+  apply(
+      "GLPT_LIGHT_RADIUS", settings.light_radius,
+      [](const char* text) { return parse_float(text, 0.0f, 1.0e30f); }, "a distance >= 0");
+  apply("GLPT_UNLIT", settings.unlit, choice_parser(kUnlitNames, kUnlitValues), "keep, ao or emit");
+  apply("GLPT_DEFAULT_LIGHT", settings.default_light, parse_bool, "0 or 1");
+  apply("GLPT_ENVIRONMENT", settings.environment,
+        choice_parser(kEnvironmentNames, kEnvironmentValues), "black or clear");
+  apply("GLPT_LIGHT_CHOICE", settings.light_choice,
+        choice_parser(kLightChoiceNames, kLightChoiceValues), "contribution, uniform or all");
+  apply(
+      "GLPT_REFERENCE", settings.reference_samples,
+      [](const char* text) { return parse_uint(text, 0, kMaxReference); }, "0..65536");
 
   if (warning != nullptr) {
     warning->clear();

@@ -13,23 +13,66 @@ enum class RenderMode : uint8_t {
   kRaster,      // "raster": GL fixed function on Vulkan graphics pipelines, pixels equal Mesa's
 };
 
+// GLPT_UNLIT: what path tracing adds to draws with GL lighting off (docs/light-transport.md).
+enum class UnlitPolicy : uint8_t {
+  kKeep,  // "keep" (default): exactly GL's colour where seen; a diffuse reflector for bounces
+  kAo,    // "ao": GL's colour darkened by ray-traced ambient occlusion
+  kEmit,  // "emit": GL's colour where seen, and an emitter of it for the bounces of lit surfaces
+};
+
+// GLPT_ENVIRONMENT: what rays that leave the scene see.
+enum class Environment : uint8_t {
+  kBlack,  // "black" (default): nothing (GL's ambient light stands for the world around)
+  kClear,  // "clear": the frame's clear colour, as radiance
+};
+
+// GLPT_LIGHT_CHOICE: how the light of a sample is chosen among a surface's GL lights.
+enum class LightChoice : uint8_t {
+  kContribution,  // "contribution" (default): in proportion to its estimated contribution
+  kUniform,       // "uniform": every light alike
+  kAll,           // "all": every light, one shadow ray each
+};
+
 struct RenderSettings {
   RenderMode mode = RenderMode::kPathTraced;
   // Samples per pixel per frame; GLPT_SPP.
   uint32_t samples_per_pixel = 1;
-  // Diffuse bounces after the primary hit; GLPT_BOUNCES (0 = direct light only).
+  // Bounces after the primary hit; GLPT_BOUNCES (0 = direct light only).
   uint32_t bounces = 1;
+  // Shadow rays; GLPT_SHADOWS=0 lights every surface as if nothing were in the way.
+  bool shadows = true;
+  // GL's ambient light occluded by ray-traced ambient occlusion; GLPT_AO=0 leaves it unoccluded.
+  bool ambient_occlusion = true;
+  // Fixed ambient-occlusion radius in eye-space units; GLPT_AO_RADIUS. 0 (default): each
+  // occluder occludes within its own size.
+  float ao_radius = 0.0f;
+  // Radius of positional GL lights (sphere lights) in eye-space units; GLPT_LIGHT_RADIUS.
+  // Negative (default): the radius at which the light subtends GLPT_LIGHT_SIZE_DEG from the eye.
+  // 0: point lights.
+  float light_radius = -1.0f;
+  UnlitPolicy unlit = UnlitPolicy::kKeep;
+  // A lit scene without any enabled GL light gets a white directional light; GLPT_DEFAULT_LIGHT=1.
+  bool default_light = false;
+  Environment environment = Environment::kBlack;
+  LightChoice light_choice = LightChoice::kContribution;
+  // GLPT_REFERENCE=N: every frame is rendered with N samples per pixel (jittered over the pixel),
+  // from scratch: the ground truth for accuracy measurements. 0: off.
+  uint32_t reference_samples = 0;
   // Average with previous frames while the frame is unchanged; GLPT_ACCUMULATE=0 disables.
   bool accumulate = true;
   // Stop adding samples once a pixel has this many; GLPT_MAX_SPP.
   uint32_t max_accumulated = 4096;
-  // Angular radius of every light as seen from a surface (soft shadows); GLPT_LIGHT_SIZE_DEG.
+  // Angular radius of directional GL lights (soft shadows); GLPT_LIGHT_SIZE_DEG. Also sets the
+  // default size of positional lights (light_radius).
   float light_angular_radius_deg = 1.0f;
   // GLPT_VALIDATION=1 enables VK_LAYER_KHRONOS_validation if present.
   bool validation = false;
 
   // Reads the variables above; bad values -> defaults + one stderr warning.
   static RenderSettings from_environment();
+
+  // GLPT_SHADOWS=0 GLPT_BOUNCES=0 GLPT_AO=0: GL's own lighting equation, per pixel.
+  bool gl_parity() const { return !shadows && !ambient_occlusion && bounces == 0; }
 };
 
 // from_environment() with the lookup injectable (tests): `lookup(name)` returns the variable's

@@ -60,7 +60,9 @@ class Renderer::Impl {
     // Path-traced mode (docs/architecture.md): the traced draws are rasterized into the
     // G-buffer in record order (after what precedes them), the trace pass lights the G-buffer into
     // the colour buffers, then the other draws are rasterized over the result.
-    build_trace_scene(record, drawable, scene_);
+    SceneOptions scene_options;
+    scene_options.default_light = settings_.default_light;
+    build_trace_scene(record, drawable, scene_, scene_options);
     if (!scene_.any_traced || drawable.width == 0 || drawable.height == 0) {
       // Nothing traced (e.g. the rest of a frame after a glReadPixels): raster mode. The
       // accumulation stays valid for the next frame with the same signature.
@@ -68,28 +70,40 @@ class Renderer::Impl {
       return true;
     }
     try {
-      const glm::vec2 jitter =
+      glm::vec2 jitter =
           tracer_->begin_frame(FrameSignature(record, scene_.gbuffer_pass, drawable));
       gbuffer_.ensure(raster_.device(), drawable.width, drawable.height);
-      const GBufferTargets targets = gbuffer_.targets(&scene_.traced, jitter);
-      // Occlusion queries count the traced draws' samples here, where they are rasterized with
-      // their own pipelines' coverage, depth and stencil tests (only their outputs differ), and
-      // the other draws' in pass 3.
-      raster_.execute(record, buffers, drawable, stats, &scene_.gbuffer_pass, nullptr, &targets,
-                      queries);
-      const TraceTargets trace_targets{&gbuffer_, raster_.color_image(true).view(),
-                                       raster_.color_image(!drawable.double_buffered).view()};
-      FrameStats traced;
-      tracer_->trace(scene_.scene, trace_targets, traced);
-      stats.upload_ms += traced.upload_ms;
-      stats.blas_ms = traced.blas_ms;
-      stats.tlas_ms = traced.tlas_ms;
-      stats.trace_ms = traced.trace_ms;
-      stats.blas_builds = traced.blas_builds;
-      stats.blas_reused = traced.blas_reused;
-      stats.triangles = traced.triangles;
-      stats.rays = traced.rays;
-      stats.accumulated_samples = traced.accumulated_samples;
+      // GLPT_REFERENCE repeats the G-buffer pass and the trace with new jitter until the frame
+      // has the reference's samples; occlusion queries count the last pass only.
+      for (bool last = false; !last;) {
+        glm::vec2 next_jitter;
+        FrameStats traced;
+        const GBufferTargets targets = gbuffer_.targets(&scene_.traced, jitter);
+        // Occlusion queries count the traced draws' samples here, where they are rasterized with
+        // their own pipelines' coverage, depth and stencil tests (only their outputs differ), and
+        // the other draws' in pass 3.
+        const std::vector<QuerySamples> counted_before =
+            queries != nullptr ? *queries : std::vector<QuerySamples>();
+        raster_.execute(record, buffers, drawable, stats, &scene_.gbuffer_pass, nullptr, &targets,
+                        queries);
+        // The colour buffers exist once the raster renderer has drawn into them.
+        const TraceTargets trace_targets{&gbuffer_, raster_.color_image(true).view(),
+                                         raster_.color_image(!drawable.double_buffered).view()};
+        tracer_->trace(scene_.scene, trace_targets, traced);
+        last = !tracer_->next_reference_pass(&next_jitter);
+        if (!last && queries != nullptr) *queries = counted_before;  // the last pass counts
+        jitter = next_jitter;
+        stats.upload_ms += traced.upload_ms;
+        stats.blas_ms += traced.blas_ms;
+        stats.tlas_ms += traced.tlas_ms;
+        stats.trace_ms += traced.trace_ms;
+        stats.blas_builds += traced.blas_builds;
+        stats.blas_reused += traced.blas_reused;
+        stats.triangles = traced.triangles;
+        stats.rays += traced.rays;
+        stats.non_finite_samples += traced.non_finite_samples;
+        stats.accumulated_samples = traced.accumulated_samples;
+      }
     } catch (...) {
       tracer_->forget_previous_frame();  // nothing about this frame's accumulation holds
       throw;

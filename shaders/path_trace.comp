@@ -1,16 +1,17 @@
 #version 460
-// Trace pass of path-traced mode. Primary visibility comes from the G-buffer (gbuffer_layout.h),
-// which the raster pipelines drew with GL's coverage, depth test, culling and matrices. For each
-// pixel it covers, `frame.sampling.y` samples of
-//   G-buffer surface -> GL direct lighting (one shadow ray per light of the pixel's own state)
-//   + ambient (occluded by the next bounce ray) + emission -> `frame.sampling.z` cosine-sampled
-//   diffuse bounces, shaded the same way (with the lights of the state the hit geometry was
-//   drawn with)
-// are added to the accumulation buffer, and the average over every accumulated frame is written
-// into the colour buffer(s) the pixel's draw writes. Pixels no sample covered keep what the
-// clears and raster draws left; pixels covered by some samples blend with it (anti-aliasing).
-// Unlit surfaces show their G-buffer colour, the exact colour raster mode draws.
-// Everything is in GL eye space. Colours are GL-linear, clamped when written.
+// Trace pass of path-traced mode (docs/light-transport.md). Primary visibility comes from the
+// G-buffer (gbuffer_layout.h), which the raster pipelines drew with GL's coverage, depth test,
+// culling, clip planes and textures. For each pixel it covers, `frame.sampling.y` paths:
+//   at every vertex, next-event estimation of one of the surface's GL lights (chosen in
+//   proportion to its estimated contribution; sphere and distant lights with multiple importance
+//   sampling against the BSDF), then a bounce sampled from the diffuse or the GGX lobe, with
+//   Russian roulette after the first; emission where bounces hit it; GL's ambient light at the
+//   primary vertex, occluded by one ray-traced ambient-occlusion ray.
+// The result is written as linear HDR radiance into the channels (shared_types.h: direct
+// diffuse, indirect diffuse, specular; the diffuse ones divided by the albedo), this frame's
+// samples averaged. composite.comp turns them into the GL colour buffer.
+// With GLPT_OPTION_GL_PARITY the primary vertex is lit by GL's own lighting equation instead
+// (GL 1.5 2.14.1, per pixel, no rays). Everything is in GL eye space.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_ray_query : require
 #extension GL_EXT_shader_image_load_formatted : require
@@ -34,11 +35,6 @@ layout(std430, set = 0, binding = GLPT_PT_BINDING_LIGHTS) readonly buffer LightT
 layout(std430, set = 0, binding = GLPT_PT_BINDING_STATES) readonly buffer StateTable {
   GpuTraceState states[];
 };
-// Per pixel two vec4: [2i] rgb: sum of the covered samples' radiance, a: sum of their alpha;
-// [2i + 1] x: how many samples were covered.
-layout(std430, set = 0, binding = GLPT_PT_BINDING_ACCUMULATION) buffer Accumulation {
-  vec4 accumulation[];
-};
 layout(std430, set = 0, binding = GLPT_PT_BINDING_COUNTERS) buffer Counters {
   GpuCounters counters;
 };
@@ -53,9 +49,12 @@ layout(set = 0, binding = GLPT_PT_BINDING_GBUFFER + GLPT_GBUFFER_MATERIAL0, rgba
     uniform readonly uimage2D gbuffer_material0;
 layout(set = 0, binding = GLPT_PT_BINDING_GBUFFER + GLPT_GBUFFER_MATERIAL1, rgba32ui)
     uniform readonly uimage2D gbuffer_material1;
-// The colour buffers are BGRA8: no format qualifier (the view's format converts).
-layout(set = 0, binding = GLPT_PT_BINDING_FRONT) uniform image2D front_buffer;
-layout(set = 0, binding = GLPT_PT_BINDING_BACK) uniform image2D back_buffer;
+layout(set = 0, binding = GLPT_PT_BINDING_CHANNELS + GLPT_CHANNEL_DIRECT_DIFFUSE, rgba32f)
+    uniform writeonly image2D channel_direct;
+layout(set = 0, binding = GLPT_PT_BINDING_CHANNELS + GLPT_CHANNEL_INDIRECT_DIFFUSE, rgba32f)
+    uniform writeonly image2D channel_indirect;
+layout(set = 0, binding = GLPT_PT_BINDING_CHANNELS + GLPT_CHANNEL_SPECULAR, rgba32f)
+    uniform writeonly image2D channel_specular;
 
 layout(buffer_reference, std430, buffer_reference_align = 16) readonly buffer PositionArray {
   GpuPosition positions[];
@@ -67,414 +66,302 @@ layout(buffer_reference, std430, buffer_reference_align = 16) readonly buffer Ma
   GpuMaterial materials[];
 };
 
-const float kPi = 3.14159265358979;
-// Bounce and directional-light shadow rays have no natural end.
-const float kUnboundedRay = 1.0e30;
+#include "trace/rng.h"
+#include "trace/queries.h"
+#include "trace/surface.h"
+#include "trace/lights.h"
 
-// ---- random numbers ---------------------------------------------------------------------------
+uint g_rays = 0u;
 
-// PCG hash (Jarzynski & Olano 2020): cheap, and good enough to both seed and step the generator.
-uint pcg_hash(uint v) {
-  uint state = v * 747796405u + 2891336453u;
-  uint word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
-  return (word >> 22u) ^ word;
-}
+bool has_option(uint option) { return (frame.options.x & option) != 0u; }
 
-float next_random(inout uint rng) {
-  rng = pcg_hash(rng);
-  return float(rng >> 8) * (1.0 / 16777216.0);  // 24 bits: exactly representable, in [0,1)
-}
-
-vec2 next_random2(inout uint rng) {
-  float u = next_random(rng);
-  return vec2(u, next_random(rng));
-}
-
-// ---- geometry helpers -------------------------------------------------------------------------
-
-// Orthonormal basis around a unit vector (Duff et al. 2017, branchless).
-void make_basis(vec3 n, out vec3 t, out vec3 b) {
-  float s = n.z >= 0.0 ? 1.0 : -1.0;
-  float a = -1.0 / (s + n.z);
-  float c = n.x * n.y * a;
-  t = vec3(1.0 + s * n.x * n.x * a, s * c, -s * n.x);
-  b = vec3(c, s + n.y * n.y * a, -n.y);
-}
-
-vec3 sample_cosine_hemisphere(vec3 n, vec2 u) {
-  float r = sqrt(u.x);
-  float phi = 2.0 * kPi * u.y;
-  vec3 t, b;
-  make_basis(n, t, b);
-  return normalize(r * cos(phi) * t + r * sin(phi) * b + sqrt(max(0.0, 1.0 - u.x)) * n);
-}
-
-// Uniform direction inside the cone of half-angle acos(cos_max) around `axis` (soft shadows).
-vec3 sample_cone(vec3 axis, float cos_max, vec2 u) {
-  if (cos_max >= 1.0) return axis;
-  float cos_theta = mix(1.0, cos_max, u.x);
-  float sin_theta = sqrt(max(0.0, 1.0 - cos_theta * cos_theta));
-  float phi = 2.0 * kPi * u.y;
-  vec3 t, b;
-  make_basis(axis, t, b);
-  return normalize(sin_theta * cos(phi) * t + sin_theta * sin(phi) * b + cos_theta * axis);
-}
-
-// Moves a ray origin off the surface along `n` by a few float ulps of the position (Waechter &
-// Binder, "A Fast and Robust Method for Avoiding Self-Intersection", Ray Tracing Gems ch. 6):
-// scale independent, so it works for scenes of any size without a tuned epsilon.
-vec3 offset_ray_origin(vec3 p, vec3 n) {
-  const float kOriginThreshold = 1.0 / 32.0;
-  const float kFloatScale = 1.0 / 65536.0;
-  const float kIntScale = 256.0;
-  ivec3 offset_ulps = ivec3(kIntScale * n);
-  vec3 p_ulps = vec3(intBitsToFloat(floatBitsToInt(p.x) + (p.x < 0.0 ? -offset_ulps.x : offset_ulps.x)),
-                     intBitsToFloat(floatBitsToInt(p.y) + (p.y < 0.0 ? -offset_ulps.y : offset_ulps.y)),
-                     intBitsToFloat(floatBitsToInt(p.z) + (p.z < 0.0 ? -offset_ulps.z : offset_ulps.z)));
-  return vec3(abs(p.x) < kOriginThreshold ? p.x + kFloatScale * n.x : p_ulps.x,
-              abs(p.y) < kOriginThreshold ? p.y + kFloatScale * n.y : p_ulps.y,
-              abs(p.z) < kOriginThreshold ? p.z + kFloatScale * n.z : p_ulps.z);
-}
-
-vec3 normalize_or(vec3 v, vec3 fallback) {
-  float len2 = dot(v, v);
-  return len2 > 1.0e-30 ? v * inversesqrt(len2) : fallback;
-}
-
-// GL's (x)^e with 0^0 = 1 (GLSL's pow leaves 0^0 undefined, GL lighting needs 1).
-float power_gl(float x, float e) { return e == 0.0 ? 1.0 : pow(max(x, 0.0), e); }
-
-// ---- ray queries ------------------------------------------------------------------------------
-// One call site each for closest-hit and shadow queries: lavapipe inlines the whole BVH traversal
-// at every call site, so fewer sites mean faster pipeline compiles and smaller code.
-
-struct Hit {
-  float t;
-  int instance;
-  int primitive;
-  vec2 barycentrics;
-  mat4x3 object_to_eye;
-  mat4x3 eye_to_object;
-};
-
-bool trace_closest(vec3 origin, vec3 direction, float t_max, out Hit hit) {
-  rayQueryEXT query;
-  rayQueryInitializeEXT(query, scene, gl_RayFlagsOpaqueEXT, GLPT_MASK_VISIBLE, origin, 0.0,
-                        direction, t_max);
-  while (rayQueryProceedEXT(query)) {
-    // Everything is opaque: there are no candidates to confirm.
-  }
-  if (rayQueryGetIntersectionTypeEXT(query, true) != gl_RayQueryCommittedIntersectionTriangleEXT)
-    return false;
-  hit.t = rayQueryGetIntersectionTEXT(query, true);
-  hit.instance = rayQueryGetIntersectionInstanceCustomIndexEXT(query, true);
-  hit.primitive = rayQueryGetIntersectionPrimitiveIndexEXT(query, true);
-  hit.barycentrics = rayQueryGetIntersectionBarycentricsEXT(query, true);
-  hit.object_to_eye = rayQueryGetIntersectionObjectToWorldEXT(query, true);
-  hit.eye_to_object = rayQueryGetIntersectionWorldToObjectEXT(query, true);
-  return true;
-}
-
-bool occluded(vec3 origin, vec3 direction, float t_max, uint cull_mask) {
-  rayQueryEXT query;
-  rayQueryInitializeEXT(query, scene, gl_RayFlagsOpaqueEXT | gl_RayFlagsTerminateOnFirstHitEXT,
-                        cull_mask, origin, 0.0, direction, t_max);
-  while (rayQueryProceedEXT(query)) {
-  }
-  return rayQueryGetIntersectionTypeEXT(query, true) != gl_RayQueryCommittedIntersectionNoneEXT;
-}
-
-// ---- surfaces ---------------------------------------------------------------------------------
-
-struct Surface {
-  vec3 position;         // eye space, on the triangle
-  vec3 shadow_position;  // where secondary rays start (terminator-corrected, offset)
-  vec3 normal;           // shading normal (GL one-sided lighting: as given; two-sided lighting:
-                         // flipped for back faces)
-  vec3 offset_normal;    // unit geometric normal on the side secondary rays leave from
-  vec3 ambient;
-  vec3 diffuse;
+// What one path contributes to the three channels (the diffuse ones not yet divided by albedo).
+struct Channels {
+  vec3 direct;
+  vec3 indirect;
   vec3 specular;
-  vec3 emission;
-  float shininess;
-  uint state;  // record state: lights, ambient, viewer
 };
 
-// A surface where a bounce ray hit the traced geometry (BLAS shading data, no textures).
-Surface load_surface(Hit hit, vec3 ray_direction) {
-  GpuInstance instance = instances[hit.instance];
-  PositionArray position_array = PositionArray(instance.addresses.xy);
-  VertexArray vertex_array = VertexArray(instance.addresses.zw);
-  MaterialArray material_array = MaterialArray(instance.materials.xy);
-  uint first = 3u * uint(hit.primitive);
-  ShadingVertex v0 = vertex_array.vertices[first];
-  ShadingVertex v1 = vertex_array.vertices[first + 1u];
-  ShadingVertex v2 = vertex_array.vertices[first + 2u];
-  vec3 w = vec3(1.0 - hit.barycentrics.x - hit.barycentrics.y, hit.barycentrics);
-
-  vec3 p0 = position_array.positions[first].position.xyz;
-  vec3 p1 = position_array.positions[first + 1u].position.xyz;
-  vec3 p2 = position_array.positions[first + 2u].position.xyz;
-  vec3 n0 = v0.normal.xyz, n1 = v1.normal.xyz, n2 = v2.normal.xyz;
-  vec3 p_object = w.x * p0 + w.y * p1 + w.z * p2;
-
-  // Normals go to eye space with the inverse-transpose of object->eye, as GL's normal matrix:
-  // n * M == transpose(M) * n, and M = eye->object is the inverse.
-  mat3 normal_matrix_t = mat3(hit.eye_to_object);
-  vec3 geometric_object = cross(p1 - p0, p2 - p0);
-  vec3 geometric = normalize_or(geometric_object * normal_matrix_t, vec3(0.0, 0.0, 1.0));
-  vec3 shading_object = w.x * n0 + w.y * n1 + w.z * n2;
-  Surface s;
-  s.state = instance.materials.z;
-  s.normal = normalize_or(shading_object * normal_matrix_t, geometric);
-  bool from_front = dot(geometric, ray_direction) < 0.0;
-  s.offset_normal = from_front ? geometric : -geometric;
-  s.position = hit.object_to_eye * vec4(p_object, 1.0);
-
-  // Shadow terminator fix (Hanika, "Hacking the shadow terminator", Ray Tracing Gems II ch. 4):
-  // on coarse meshes with smooth normals (glutSolidSphere...), secondary rays from the flat
-  // triangle would hit the neighbouring triangles near the terminator and show the facets as
-  // shadow steps. Lift the origin onto the curved surface the vertex normals describe, on the
-  // side the normals point to (only when the ray arrived from that side). The G-buffer pass
-  // does the same for the surfaces the camera sees (raster_ff.frag).
-  vec3 shading_side = dot(geometric_object, shading_object) >= 0.0 ? geometric : -geometric;
-  vec3 p_shadow = p_object;
-  if (dot(shading_side, s.offset_normal) > 0.0) {
-    vec3 fallback = normalize_or(geometric_object, vec3(0.0, 0.0, 1.0));
-    vec3 u0 = normalize_or(n0, fallback), u1 = normalize_or(n1, fallback);
-    vec3 u2 = normalize_or(n2, fallback);
-    vec3 lift = w.x * min(0.0, dot(p_object - p0, u0)) * u0 +
-                w.y * min(0.0, dot(p_object - p1, u1)) * u1 +
-                w.z * min(0.0, dot(p_object - p2, u2)) * u2;
-    p_shadow = p_object - lift;
-  }
-  s.shadow_position = offset_ray_origin(hit.object_to_eye * vec4(p_shadow, 1.0), s.offset_normal);
-
-  // Interpolated relative to vertex 0, so a constant colour comes out bit-exact.
-  vec3 color = v0.color.rgb + w.y * (v1.color.rgb - v0.color.rgb) +
-               w.z * (v2.color.rgb - v0.color.rgb);
-  GpuMaterial m = material_array.materials[uint(v0.normal.w)];
-  s.ambient = m.ambient.rgb;
-  s.diffuse = m.diffuse.rgb;
-  s.specular = m.specular.rgb;
-  s.emission = m.emission.rgb;
-  s.shininess = uintBitsToFloat(m.params.x);
-  // GL_COLOR_MATERIAL: the current colour replaces the tracked material colour(s).
-  switch (m.params.z) {
-    case GLPT_COLOR_SOURCE_AMBIENT_AND_DIFFUSE: s.ambient = color; s.diffuse = color; break;
-    case GLPT_COLOR_SOURCE_DIFFUSE: s.diffuse = color; break;
-    case GLPT_COLOR_SOURCE_AMBIENT: s.ambient = color; break;
-    case GLPT_COLOR_SOURCE_EMISSION: s.emission = color; break;
-    case GLPT_COLOR_SOURCE_SPECULAR: s.specular = color; break;
-    default: break;
-  }
-  if (m.params.y == 0u) {
-    // Lighting off: for light arriving from elsewhere a plain diffuse reflector of its colour,
-    // not an emitter.
-    s.ambient = color;
-    s.diffuse = color;
-    s.specular = vec3(0.0);
-    s.emission = vec3(0.0);
-  }
-  return s;
+// Adds `value` to the channel of the primary vertex's lobe: diffuse light found directly goes to
+// `direct`, everything found beyond the first bounce to `indirect`; the specular lobe has one.
+void add_to_channel(inout Channels c, uint lobe, bool direct, vec3 value) {
+  if (lobe == GLPT_LOBE_SPECULAR)
+    c.specular += value;
+  else if (direct)
+    c.direct += value;
+  else
+    c.indirect += value;
 }
 
-// The direction from `p` towards the viewer of `state` (its projection's centre, or GL's
-// infinite viewer for parallel projections).
-vec3 towards_viewer(uint state, vec3 p) {
-  vec4 viewer = states[state].viewer;
-  return viewer.w != 0.0 ? normalize_or(viewer.xyz - p, vec3(0.0, 0.0, 1.0)) : viewer.xyz;
-}
+// ---- GL's lighting equation (GL-parity mode) ---------------------------------------------------
 
-// The lit surface a G-buffer pixel shows; `alpha`: GL's fragment alpha there.
-Surface load_gbuffer_surface(ivec2 pixel, uvec4 surface, out float alpha) {
-  vec4 position = imageLoad(gbuffer_position, pixel);
-  uvec4 m0 = imageLoad(gbuffer_material0, pixel);
-  uvec4 m1 = imageLoad(gbuffer_material1, pixel);
-  Surface s;
-  s.state = surface.x - 1u;
-  s.position = position.xyz;
-  s.normal = gbuffer_unpack_normal(surface.y);
-  vec3 geometric = gbuffer_unpack_normal(surface.z);
-  // Secondary rays leave on the side of the geometric surface that faces the viewer. "The
-  // viewer" is GL's: for a parallel projection (an identity projection, a flipped glOrtho) the
-  // infinite viewer at +Z that GL lights with, so a face GL lights never shadows itself.
-  s.offset_normal =
-      dot(geometric, towards_viewer(s.state, s.position)) >= 0.0 ? geometric : -geometric;
-  vec2 emission_b_lift_x = unpackHalf2x16(m1.z);
-  vec3 lift = vec3(emission_b_lift_x.y, unpackHalf2x16(m1.w));
-  // The terminator fix applies where the vertex normals point to the side rays leave from.
-  vec3 base = dot(lift, s.offset_normal) > 0.0 ? s.position + lift : s.position;
-  s.shadow_position = offset_ray_origin(base, s.offset_normal);
-  vec4 diffuse = vec4(unpackHalf2x16(m0.x), unpackHalf2x16(m0.y));
-  vec2 ambient_rg = unpackHalf2x16(m0.z), ambient_b_specular_r = unpackHalf2x16(m0.w);
-  s.diffuse = diffuse.rgb;
-  alpha = diffuse.a;
-  s.ambient = vec3(ambient_rg, ambient_b_specular_r.x);
-  s.specular = vec3(ambient_b_specular_r.y, unpackHalf2x16(m1.x));
-  s.emission = vec3(unpackHalf2x16(m1.y), emission_b_lift_x.x);
-  s.shininess = unpackHalf2x16(surface.w >> 16).x;
-  return s;
-}
-
-// ---- GL lighting ------------------------------------------------------------------------------
-
-// Sum over the lights of the surface's state of GL's diffuse + specular terms, each visible only
-// if its shadow ray is unoccluded. `ambient_light` returns the state's global ambient + the
-// lights' ambient terms (attenuated and spot-weighted as GL does), to be multiplied by the
-// material ambient and an occlusion factor.
-vec3 direct_light(Surface s, vec3 to_viewer, inout uint rng, inout uint rays,
-                  out vec3 ambient_light) {
-  vec3 radiance = vec3(0.0);
-  ambient_light = states[s.state].global_ambient.rgb;
-  uint light_count = states[s.state].info.x;
-  for (uint i = 0u; i < light_count; ++i) {
+// GL 1.5 2.14.1 at the primary vertex, per pixel: ambient, diffuse and specular of every light,
+// unoccluded, with GL's viewer (local or infinite), spot cones on every light and GL's
+// unnormalised Blinn-Phong specular.
+Channels lighting_gl(Surface s) {
+  Channels c;
+  c.direct = vec3(0.0);
+  c.specular = vec3(0.0);
+  vec3 ambient_light = states[s.state].global_ambient.rgb;
+  bool local_viewer = (states[s.state].info.w & GLPT_STATE_LOCAL_VIEWER) != 0u;
+  vec3 to_viewer = local_viewer ? normalize_or(-s.position, vec3(0.0, 0.0, 1.0)) : vec3(0.0, 0.0, 1.0);
+  uint count = min(states[s.state].info.x, uint(GLPT_MAX_STATE_LIGHTS));
+  for (uint i = 0u; i < count; ++i) {
     GpuLight light = lights[states[s.state].lights[i >> 2u][i & 3u]];
     vec3 to_light;
-    float light_distance;
-    float attenuation = 1.0;
+    float d = 0.0;
     if (light.position.w != 0.0) {
       vec3 offset = light.position.xyz / light.position.w - s.position;
-      light_distance = max(length(offset), 1.0e-20);
-      to_light = offset / light_distance;
-      attenuation = 1.0 / max(light.attenuation.x + light.attenuation.y * light_distance +
-                                  light.attenuation.z * light_distance * light_distance,
-                              1.0e-20);
+      d = length(offset);
+      to_light = normalize_or(offset, vec3(0.0, 0.0, 1.0));
     } else {
       to_light = light.position.xyz;
-      light_distance = kUnboundedRay;
     }
-    if (light.spot.w > -1.5) {
-      float spot_cos = dot(-to_light, light.spot.xyz);
-      attenuation *= spot_cos >= light.spot.w ? power_gl(spot_cos, light.attenuation.w) : 0.0;
-    }
+    float attenuation = attenuation_gl(light, to_light, d, true);
     ambient_light += attenuation * light.ambient.rgb;
-
     float n_dot_l = dot(s.normal, to_light);
-    if (n_dot_l <= 0.0 || attenuation <= 0.0) continue;
-    vec3 shadow_direction = sample_cone(to_light, frame.params.y, next_random2(rng));
-    ++rays;
-    if (occluded(s.shadow_position, shadow_direction, light_distance, light.params.x)) continue;
-    vec3 half_vector = normalize(to_light + to_viewer);
-    float specular = power_gl(dot(s.normal, half_vector), s.shininess);
-    radiance += attenuation * (s.diffuse * light.diffuse.rgb * n_dot_l +
-                               s.specular * light.specular.rgb * specular);
+    if (n_dot_l <= 0.0) continue;
+    c.direct += attenuation * n_dot_l * s.diffuse_gl * light.diffuse.rgb;
+    vec3 h = normalize_or(to_light + to_viewer, s.normal);
+    c.specular += attenuation * power_gl(dot(s.normal, h), s.shininess) * s.specular_gl *
+                  light.specular.rgb;
   }
-  return radiance;
+  c.indirect = s.ambient * ambient_light;
+  return c;
 }
 
-// ---- paths ------------------------------------------------------------------------------------
+// ---- light transport ---------------------------------------------------------------------------
 
-// The radiance leaving the G-buffer surface `first` towards the viewer.
-vec3 trace_path(Surface first, inout uint rng, inout uint rays) {
+// Ambient occlusion (seed 001's obscurance, with a ray instead of the depth buffer): 1 if a
+// cosine-distributed ray from `s` escapes its occluders. An occluder counts within the fixed
+// radius frame.params.x, or, when that is 0, within its own size: a box occludes the floor it
+// stands on within about a box's width, whatever else is in the scene.
+float ambient_visibility(Surface s, inout uint rng) {
+  vec3 direction = sample_cosine_hemisphere(s.normal, next_random2(rng));
+  if (dot(direction, s.offset_normal) <= 0.0) return 0.0;  // into the surface itself
+  float radius = frame.params.x;
+  Hit hit;
+  ++g_rays;
+  if (!trace_closest(s.shadow_position, direction, radius > 0.0 ? radius : kUnboundedRay, hit))
+    return 1.0;
+  if (radius > 0.0) return 0.0;
+  return hit.t < uintBitsToFloat(instances[hit.instance].materials.w) ? 0.0 : 1.0;
+}
+
+// Next-event estimation at `s` (view direction v in `basis`'s local frame) for light i of
+// `choice`: the light's contribution through each lobe, MIS-weighted against BSDF sampling when a
+// bounce ray will also be traced from `s` (`mis`).
+void light_sample(Surface s, Bsdf bsdf, Basis basis, vec3 v, LightChoice choice, uint i, bool mis,
+                  inout uint rng, out vec3 diffuse, out vec3 specular) {
+  diffuse = vec3(0.0);
+  specular = vec3(0.0);
+  LightView view = choice.views[i];
+  float probability = choice.probability[i];
+  if (probability <= 0.0) return;
+  vec2 u = next_random2(rng);
+  bool area = view.one_minus_cos > 0.0;
+  vec3 direction = area ? sample_cone(view.direction, view.one_minus_cos, u)
+                        : view.direction;
+  vec3 l = to_local(basis, direction);
+  if (l.z <= 0.0 || dot(direction, s.offset_normal) <= 0.0) return;
+  vec3 f_diffuse = bsdf_lobe_cos(bsdf, GLPT_LOBE_DIFFUSE, v, l);
+  vec3 f_specular = bsdf_lobe_cos(bsdf, GLPT_LOBE_SPECULAR, v, l);
+  if (max3(f_diffuse + f_specular) <= 0.0) return;
+  if (has_option(GLPT_OPTION_SHADOWS)) {
+    ++g_rays;
+    float t_max = view.distance - view.sphere_radius;
+    if (occluded(s.shadow_position, direction, t_max, lights[choice.indices[i]].params.x)) return;
+  }
+  if (!area) {
+    // A delta light: GL's colour is irradiance / pi at normal incidence.
+    diffuse = kPi * f_diffuse * view.diffuse / probability;
+    specular = kPi * f_specular * view.specular / probability;
+    return;
+  }
+  float pdf = probability * cone_pdf(view.one_minus_cos);
+  float w_diffuse = 1.0, w_specular = 1.0;
+  if (mis) {
+    w_diffuse = power_heuristic(pdf, lobe_probability(bsdf, GLPT_LOBE_DIFFUSE) *
+                                         lobe_pdf(bsdf, GLPT_LOBE_DIFFUSE, v, l));
+    w_specular = power_heuristic(pdf, lobe_probability(bsdf, GLPT_LOBE_SPECULAR) *
+                                          lobe_pdf(bsdf, GLPT_LOBE_SPECULAR, v, l));
+  }
+  diffuse = w_diffuse * f_diffuse * view.diffuse / pdf;
+  specular = w_specular * f_specular * view.specular / pdf;
+}
+
+// The radiance of the path starting at the G-buffer surface `first` towards the viewer, by
+// channel.
+Channels trace_path(Surface first, inout uint rng) {
+  Channels c;
+  c.direct = vec3(0.0);
+  c.indirect = vec3(0.0);
+  c.specular = vec3(0.0);
   Surface s = first;
   vec3 to_viewer = towards_viewer(s.state, s.position);
-  vec3 radiance = vec3(0.0);
   vec3 throughput = vec3(1.0);
-  // Ambient term of the previous path vertex, added once the next ray shows it is not occluded.
-  vec3 pending_ambient = vec3(0.0);
+  uint first_lobe = GLPT_LOBE_DIFFUSE;
   uint bounces = frame.sampling.z;
   for (uint depth = 0u;; ++depth) {
-    vec3 ambient_light;
-    vec3 direct = direct_light(s, to_viewer, rng, rays, ambient_light);
-    radiance += throughput * (s.emission + direct);
-    pending_ambient = throughput * s.ambient * ambient_light;
-    throughput *= s.diffuse;
-    if (depth >= bounces || max(throughput.r, max(throughput.g, throughput.b)) <= 0.0) {
-      radiance += pending_ambient;  // no further ray: nothing to occlude the ambient with
-      break;
+    Basis basis = make_basis(s.normal);
+    vec3 v = to_local(basis, to_viewer);
+    // Unlit surfaces hit by bounces: a diffuse reflector of their colour, or (GLPT_UNLIT=emit)
+    // an emitter of it that reflects nothing more.
+    bool emitter_only = !s.lit && has_option(GLPT_OPTION_UNLIT_EMIT);
+    if (depth > 0u) {
+      vec3 emitted = emitter_only ? s.diffuse_gl : s.emission;
+      add_to_channel(c, first_lobe, false, throughput * emitted);
+      if (emitter_only) break;
+    }
+    Bsdf bsdf = material_bsdf(s.diffuse_gl, s.specular_gl, s.shininess);
+    // Seen from below its shading normal (a normal facing away from the viewer, or leaning
+    // away near a silhouette) a surface has no specular reflection: the lobe needs v.z > 0.
+    if (v.z <= 1.0e-4) bsdf.specular = vec3(0.0);
+    LightChoice choice = choose_lights(s.state, s.position, s.normal);
+    if (depth == 0u && has_option(GLPT_OPTION_AO)) {
+      // GL's ambient light, occluded, seen at the primary vertex only: it stands for the light
+      // of the world around the scene, which bounces do not trace (docs/light-transport.md).
+      vec3 ambient = s.ambient * choice.ambient;
+      if (max3(ambient) > 0.0) c.indirect += ambient * ambient_visibility(s, rng);
+    } else if (depth == 0u) {
+      c.indirect += s.ambient * choice.ambient;
     }
 
-    // Cosine-weighted diffuse bounce around the shading normal turned to the side rays leave
-    // from; mirrored back if it would leave through the geometric surface. With a Lambertian
-    // BRDF (albedo / pi) and cosine sampling the estimator is simply albedo * incoming radiance,
-    // which `throughput` carries.
-    vec3 bounce_normal = dot(s.normal, s.offset_normal) >= 0.0 ? s.normal : -s.normal;
-    vec3 direction = sample_cosine_hemisphere(bounce_normal, next_random2(rng));
-    float below = dot(direction, s.offset_normal);
-    if (below <= 0.0) direction = normalize(direction - 2.0 * below * s.offset_normal);
-    Hit hit;
-    bool found = trace_closest(s.shadow_position, direction, kUnboundedRay, hit);
-    ++rays;
-    // Ambient occlusion: the previous vertex's ambient counts if this bounce ray got farther
-    // than the AO radius (or left the scene).
-    if (!found || hit.t > frame.params.x) radiance += pending_ambient;
-    if (!found) break;  // a bounce that leaves the scene adds nothing
-    s = load_surface(hit, direction);
-    to_viewer = -direction;
-  }
-  return radiance;
-}
-
-// GL's fog (GL 1.5 3.10) on a lit pixel's radiance; unlit pixels come fogged from the G-buffer.
-vec3 apply_fog(uint state, float fog_coordinate, vec3 radiance) {
-  uint mode = states[state].info.y;
-  if (mode == 0u) return radiance;
-  vec4 p = states[state].fog_params;
-  float z = fog_coordinate;
-  float f = mode == 1u ? (p.z - z) * p.w : mode == 2u ? exp(-p.x * z) : exp(-(p.x * z) * (p.x * z));
-  return mix(states[state].fog_color.rgb, radiance, clamp(f, 0.0, 1.0));
-}
-
-// Writes the pixel's average over all accumulated samples into the colour buffers `targets`:
-// `sum` holds the covered samples (`covered` of them); the others show what the colour buffer
-// holds (the clears and raster draws of this frame).
-void write_average(ivec2 pixel, uint targets, vec4 sum, float covered) {
-  float total = float(frame.sampling.w);
-  for (uint t = 0u; t < 2u; ++t) {
-    if ((targets & (1u << t)) == 0u) continue;
-    vec4 background = t == 0u ? imageLoad(front_buffer, pixel) : imageLoad(back_buffer, pixel);
-    vec4 color = clamp((sum + (total - covered) * background) / total, 0.0, 1.0);
-    if (t == 0u)
-      imageStore(front_buffer, pixel, color);
-    else
-      imageStore(back_buffer, pixel, color);
-  }
-}
-
-void main() {
-  ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
-  uint rays = 0u;
-  if (pixel.x < int(frame.image.x) && pixel.y < int(frame.image.y)) {
-    uint pixel_index = uint(pixel.y) * frame.image.x + uint(pixel.x);
-    uvec4 surface = imageLoad(gbuffer_surface, pixel);
-    bool covered = surface.x != 0u;
-    uint samples = frame.sampling.y;
-    vec4 sum = vec4(0.0);
-    if (covered && samples > 0u) {
-      if ((surface.w & GLPT_GBUFFER_LIT) == 0u) {
-        // Lighting off: exactly the colour raster mode draws, no rays.
-        sum = unpackUnorm4x8(imageLoad(gbuffer_material0, pixel).x) * float(samples);
+    bool bounce = depth < bounces;
+    if (choice.count > 0u) {
+      if (frame.options.y == GLPT_LIGHT_CHOICE_ALL) {
+        for (uint i = 0u; i < choice.count; ++i) {
+          vec3 d, sp;
+          light_sample(s, bsdf, basis, v, choice, i, bounce, rng, d, sp);
+          add_to_channel(c, depth == 0u ? GLPT_LOBE_DIFFUSE : first_lobe, depth == 0u, throughput * d);
+          add_to_channel(c, depth == 0u ? GLPT_LOBE_SPECULAR : first_lobe, depth == 0u, throughput * sp);
+        }
       } else {
-        float alpha;
-        Surface s = load_gbuffer_surface(pixel, surface, alpha);
-        float fog_coordinate = imageLoad(gbuffer_position, pixel).w;
-        for (uint k = 0u; k < samples; ++k) {
-          uint sample_index = frame.sampling.x + k;
-          uint rng = pcg_hash(pixel_index ^ pcg_hash(frame.image.w + sample_index * 0x9E3779B9u));
-          vec3 radiance = apply_fog(s.state, fog_coordinate, trace_path(s, rng, rays));
-          // One NaN (a degenerate transform or triangle) would poison the pixel for the rest of
-          // the accumulation: drop such a sample's radiance instead.
-          if (any(isnan(radiance)) || any(isinf(radiance))) radiance = vec3(0.0);
-          sum += vec4(radiance, alpha);
+        uint i = pick_light(choice, next_random(rng));
+        if (i < choice.count) {
+          vec3 d, sp;
+          light_sample(s, bsdf, basis, v, choice, i, bounce, rng, d, sp);
+          add_to_channel(c, depth == 0u ? GLPT_LOBE_DIFFUSE : first_lobe, depth == 0u, throughput * d);
+          add_to_channel(c, depth == 0u ? GLPT_LOBE_SPECULAR : first_lobe, depth == 0u, throughput * sp);
         }
       }
     }
-    float count = covered ? float(samples) : 0.0;
-    if (frame.sampling.x != 0u) {
-      sum += accumulation[2u * pixel_index];
-      count += accumulation[2u * pixel_index + 1u].x;
+    if (!bounce) break;
+
+    // The bounce: one lobe chosen in proportion to its reflectance, then sampled.
+    float p_specular = specular_lobe_probability(bsdf);
+    if (max3(bsdf.diffuse) <= 0.0 && p_specular <= 0.0) break;
+    uint lobe = next_random(rng) < p_specular ? GLPT_LOBE_SPECULAR : GLPT_LOBE_DIFFUSE;
+    float p_lobe = lobe == GLPT_LOBE_SPECULAR ? p_specular : 1.0 - p_specular;
+    vec3 l = sample_lobe(bsdf, lobe, v, next_random2(rng));
+    float pdf = p_lobe * lobe_pdf(bsdf, lobe, v, l);
+    if (l.z <= 0.0 || pdf <= 0.0) break;
+    vec3 direction = normalize(to_world(basis, l));
+    if (dot(direction, s.offset_normal) <= 0.0) break;  // below the geometric surface
+    vec3 weight = bsdf_lobe_cos(bsdf, lobe, v, l) / pdf;
+    if (depth == 0u) first_lobe = lobe;
+
+    Hit hit;
+    ++g_rays;
+    bool found = trace_closest(s.shadow_position, direction, kUnboundedRay, hit);
+    float t_hit = found ? hit.t : kUnboundedRay;
+    // The ray passing through one of the surface's area lights: the other technique of MIS.
+    for (uint i = 0u; i < choice.count; ++i) {
+      LightView view = choice.views[i];
+      GpuLight light = lights[choice.indices[i]];
+      float t_light = light_hit_distance(view, s.shadow_position, direction, light_centre(light));
+      if (t_light >= t_hit) continue;
+      float light_pdf = light_direction_pdf(choice, i, direction);
+      if (light_pdf <= 0.0) continue;
+      vec3 radiance = lobe == GLPT_LOBE_SPECULAR ? view.specular : view.diffuse;
+      add_to_channel(c, first_lobe, depth == 0u,
+                     throughput * weight * radiance * power_heuristic(pdf, light_pdf));
     }
-    if (samples > 0u) {
-      accumulation[2u * pixel_index] = sum;
-      accumulation[2u * pixel_index + 1u] = vec4(count, 0.0, 0.0, 0.0);
+    throughput *= weight;
+    if (!found) {
+      if (has_option(GLPT_OPTION_ENVIRONMENT))
+        add_to_channel(c, first_lobe, false, throughput * frame.environment.rgb);
+      break;
     }
-    if (count > 0.0) {
-      uint targets = covered ? states[surface.x - 1u].info.z : frame.image.z;
-      write_average(pixel, targets, sum, count);
+    // Russian roulette after the first bounce: paths that carry little go on rarely, with
+    // their weight raised to keep the estimate unbiased.
+    if (depth >= 1u) {
+      float keep = clamp(max3(throughput), 0.05, 0.95);
+      if (next_random(rng) >= keep) break;
+      throughput /= keep;
     }
+    s = load_surface(hit, direction);
+    to_viewer = -direction;
+  }
+  return c;
+}
+
+bool finite(vec3 v) { return !any(isnan(v)) && !any(isinf(v)); }
+
+void main() {
+  ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+  uint dropped = 0u;
+  if (pixel.x < int(frame.image.x) && pixel.y < int(frame.image.y)) {
+    uint pixel_index = uint(pixel.y) * frame.image.x + uint(pixel.x);
+    uvec4 surface = imageLoad(gbuffer_surface, pixel);
+    uint samples = frame.sampling.y;
+    Channels sum;
+    sum.direct = vec3(0.0);
+    sum.indirect = vec3(0.0);
+    sum.specular = vec3(0.0);
+    float traced = 0.0;
+    if (surface.x != 0u && samples > 0u) {
+      if ((surface.w & GLPT_GBUFFER_LIT) == 0u) {
+        // Lighting off: the colour raster mode draws (composite.comp), no rays, unless the unlit
+        // policy darkens it by ambient occlusion.
+        traced = float(samples);
+        if (has_option(GLPT_OPTION_UNLIT_AO)) {
+          Surface s = load_gbuffer_surface(pixel, surface);
+          float visible = 0.0;
+          for (uint k = 0u; k < samples; ++k) {
+            uint rng = sample_seed(pixel_index, frame.image.w, frame.sampling.x + k);
+            visible += ambient_visibility(s, rng);
+          }
+          sum.indirect = vec3(visible);
+        }
+      } else {
+        Surface s = load_gbuffer_surface(pixel, surface);
+        vec3 albedo = demodulation_albedo(material_bsdf(s.diffuse_gl, s.specular_gl, s.shininess).diffuse);
+        // GL's equation has no randomness: one evaluation stands for every sample.
+        bool parity = has_option(GLPT_OPTION_GL_PARITY);
+        for (uint k = 0u; k < (parity ? 1u : samples); ++k) {
+          Channels c;
+          if (parity) {
+            c = lighting_gl(s);
+          } else {
+            uint rng = sample_seed(pixel_index, frame.image.w, frame.sampling.x + k);
+            c = trace_path(s, rng);
+          }
+          // A non-finite sample (a degenerate transform or triangle) would poison the pixel for
+          // the rest of the accumulation: it is dropped and counted, not shown as black.
+          if (!finite(c.direct) || !finite(c.indirect) || !finite(c.specular)) {
+            ++dropped;
+            continue;
+          }
+          sum.direct += c.direct / albedo;
+          sum.indirect += c.indirect / albedo;
+          sum.specular += c.specular;
+          traced += 1.0;
+        }
+      }
+    }
+    float scale = traced > 0.0 ? 1.0 / traced : 0.0;
+    if (traced > 0.0 && (surface.w & GLPT_GBUFFER_LIT) != 0u && has_option(GLPT_OPTION_GL_PARITY))
+      traced = float(samples);
+    imageStore(channel_direct, pixel, vec4(sum.direct * scale, traced));
+    imageStore(channel_indirect, pixel, vec4(sum.indirect * scale, 0.0));
+    imageStore(channel_specular, pixel, vec4(sum.specular * scale, 0.0));
   }
   // Count rays with one atomic per subgroup rather than per invocation.
-  uint subgroup_rays = subgroupAdd(rays);
-  if (subgroupElect()) atomicAdd(counters.rays.x, subgroup_rays);
+  uint subgroup_rays = subgroupAdd(g_rays);
+  uint subgroup_dropped = subgroupAdd(dropped);
+  if (subgroupElect()) {
+    atomicAdd(counters.rays.x, subgroup_rays);
+    if (subgroup_dropped != 0u) atomicAdd(counters.rays.y, subgroup_dropped);
+  }
 }

@@ -18,16 +18,34 @@ using mat4 = glm::mat4;
 
 // ---- descriptor bindings ---------------------------------------------------------------------
 // path_trace.comp, set 0
-#define GLPT_PT_BINDING_SCENE 0         // accelerationStructureEXT (TLAS)
-#define GLPT_PT_BINDING_INSTANCES 1     // GpuInstance[], indexed by instanceCustomIndex
-#define GLPT_PT_BINDING_LIGHTS 2        // GpuLight[]
-#define GLPT_PT_BINDING_ACCUMULATION 3  // vec4[2 * width * height], see path_trace.comp
-#define GLPT_PT_BINDING_COUNTERS 4      // GpuCounters
-#define GLPT_PT_BINDING_FRAME 5         // uniform FrameUniforms
-#define GLPT_PT_BINDING_STATES 6        // GpuTraceState[], one per record state
-#define GLPT_PT_BINDING_GBUFFER 7       // 4 storage images (gbuffer_layout.h), bindings 7..10
-#define GLPT_PT_BINDING_FRONT 11        // colour buffers: storage images, read and written
-#define GLPT_PT_BINDING_BACK 12
+#define GLPT_PT_BINDING_SCENE 0      // accelerationStructureEXT (TLAS)
+#define GLPT_PT_BINDING_INSTANCES 1  // GpuInstance[], indexed by instanceCustomIndex
+#define GLPT_PT_BINDING_LIGHTS 2     // GpuLight[]
+#define GLPT_PT_BINDING_COUNTERS 4   // GpuCounters
+#define GLPT_PT_BINDING_FRAME 5      // uniform FrameUniforms
+#define GLPT_PT_BINDING_STATES 6     // GpuTraceState[], one per record state
+#define GLPT_PT_BINDING_GBUFFER 7    // 4 storage images (gbuffer_layout.h), bindings 7..10
+#define GLPT_PT_BINDING_CHANNELS 11  // GLPT_CHANNELS storage images (below), bindings 11..13
+
+// composite.comp, set 0
+#define GLPT_CO_BINDING_FRAME 0         // uniform FrameUniforms
+#define GLPT_CO_BINDING_STATES 1        // GpuTraceState[]
+#define GLPT_CO_BINDING_ACCUMULATION 2  // vec4[2 * width * height], see composite.comp
+#define GLPT_CO_BINDING_GBUFFER 3       // the G-buffer, bindings 3..6
+#define GLPT_CO_BINDING_CHANNELS 7      // the channels, bindings 7..9
+#define GLPT_CO_BINDING_FRONT 10        // colour buffers: storage images, read and written
+#define GLPT_CO_BINDING_BACK 11
+
+// ---- radiance channels -----------------------------------------------------------------------
+// What the trace pass writes per pixel (RGBA32F, this frame's samples averaged; linear HDR
+// radiance with the albedo divided out where the channel is diffuse), and the composite pass (or
+// the denoiser before it) reads. Composite: albedo * (direct + indirect) + specular + emission.
+#define GLPT_CHANNEL_DIRECT_DIFFUSE 0    // rgb: next-event estimation through the diffuse lobe
+#define GLPT_CHANNEL_INDIRECT_DIFFUSE 1  // rgb: paths continuing from the diffuse lobe + ambient
+#define GLPT_CHANNEL_SPECULAR 2          // rgb: everything reflected by the specular lobe
+#define GLPT_CHANNELS 3
+// The channels' alpha: DIRECT_DIFFUSE.a = samples traced this frame (0: none), INDIRECT.a and
+// SPECULAR.a unused.
 
 // The trace pass runs 8x8 pixel tiles: neighbouring rays stay coherent, which is what lavapipe's
 // ray traversal (one SIMD lane per invocation) rewards.
@@ -67,7 +85,9 @@ struct GpuMaterial {
   vec4 diffuse;
   vec4 specular;
   vec4 emission;
-  uvec4 params;  // x: floatBits(shininess), y: lit (0/1), z: GLPT_COLOR_SOURCE_*, w: unused
+  // x: floatBits(shininess), y: lit (0/1), z: GLPT_COLOR_SOURCE_*, w: index of the material of
+  // back faces (itself unless two-sided lighting gives back faces their own)
+  uvec4 params;
 };
 
 // One entry per TLAS instance (instanceCustomIndex indexes this table).
@@ -77,7 +97,9 @@ struct GpuInstance {
   // transformed in the shader with the query's world-to-object matrix (the inverse-transpose GL
   // uses), so no matrix is stored here.
   uvec4 addresses;
-  // xy: address of the GpuMaterial array, z: the record state whose lights light it, w: unused
+  // xy: address of the GpuMaterial array, z: the record state whose lights light it, w:
+  // floatBits(the instance's size: the diagonal of its eye-space bounds), which sets how far it
+  // occludes ambient light (automatic AO radius, docs/light-transport.md)
   uvec4 materials;
 };
 
@@ -89,7 +111,8 @@ struct GpuLight {
   vec4 specular;
   vec4 spot;         // xyz: unit spot direction, w: cos(cutoff), or -2 for "not a spot light"
   vec4 attenuation;  // x: constant, y: linear, z: quadratic, w: spot exponent
-  uvec4 params;      // x: shadow ray cull mask, yzw: unused
+  // x: shadow ray cull mask, y: floatBits(sphere radius; 0 = a point light), z: unused, w: unused
+  uvec4 params;
 };
 
 // Per record state: the lighting of pixels (G-buffer) and bounce hits (instances) drawn with it.
@@ -99,10 +122,26 @@ struct GpuTraceState {
   vec4 fog_color;
   vec4 fog_params;  // density, start, end, 1 / (end - start)
   // x: light count (<= 8), y: fog mode (0 off, 1 linear, 2 exp, 3 exp2), z: colour buffers
-  // (bit 0 front, bit 1 back), w: unused
+  // (bit 0 front, bit 1 back), w: GLPT_STATE_* flags
   uvec4 info;
   uvec4 lights[2];  // GpuLight indices, lights[i / 4][i % 4]
 };
+
+// GpuTraceState::info.w
+#define GLPT_STATE_LOCAL_VIEWER 1u  // GL_LIGHT_MODEL_LOCAL_VIEWER
+#define GLPT_STATE_TWO_SIDE 2u      // GL_LIGHT_MODEL_TWO_SIDE
+
+// FrameUniforms::options.x: what the trace pass models (render_settings.hpp)
+#define GLPT_OPTION_SHADOWS 1u       // shadow rays (GLPT_SHADOWS)
+#define GLPT_OPTION_AO 2u            // ambient light occluded by ray-traced AO (GLPT_AO)
+#define GLPT_OPTION_GL_PARITY 4u     // GL's lighting equation per pixel (no shadows, AO, bounces)
+#define GLPT_OPTION_UNLIT_AO 8u      // GLPT_UNLIT=ao: unlit pixels darkened by AO
+#define GLPT_OPTION_UNLIT_EMIT 16u   // GLPT_UNLIT=emit: unlit surfaces light others
+#define GLPT_OPTION_ENVIRONMENT 32u  // rays that miss see FrameUniforms::environment
+// FrameUniforms::options.y: how one light of a surface's lights is chosen per sample
+#define GLPT_LIGHT_CHOICE_CONTRIBUTION 0u  // in proportion to its estimated contribution
+#define GLPT_LIGHT_CHOICE_UNIFORM 1u       // uniformly (for comparison)
+#define GLPT_LIGHT_CHOICE_ALL 2u           // every light, one shadow ray each
 
 struct FrameUniforms {
   // x: image width, y: image height, z: colour buffers of pixels traced earlier but not in this
@@ -111,12 +150,16 @@ struct FrameUniforms {
   // x: samples already accumulated before this frame (0 = overwrite), y: samples to trace this
   // frame, z: bounces, w: total samples after this frame
   uvec4 sampling;
-  // x: ambient-occlusion radius (eye-space units), y: cos(light angular radius), z, w: unused
+  // x: ambient-occlusion radius (eye-space units; 0: each occluder's own size), y: cos(angular
+  // radius of directional lights), z: 1 - y (computed without cancellation), w: unused
   vec4 params;
+  uvec4 options;      // x: GLPT_OPTION_* bits, y: GLPT_LIGHT_CHOICE_*, z, w: unused
+  vec4 environment;   // rgb: radiance of rays that miss (GLPT_OPTION_ENVIRONMENT), a: unused
 };
 
 struct GpuCounters {
-  uvec4 rays;  // x: rays traced this frame (shadow + bounce), yzw: unused
+  // x: rays traced this frame (shadow + bounce + AO), y: non-finite samples dropped, zw: unused
+  uvec4 rays;
 };
 
 #ifdef __cplusplus
@@ -126,7 +169,7 @@ static_assert(sizeof(GpuMaterial) == 80);
 static_assert(sizeof(GpuInstance) == 32);
 static_assert(sizeof(GpuLight) == 112);
 static_assert(sizeof(GpuTraceState) == 112);
-static_assert(sizeof(FrameUniforms) == 48);
+static_assert(sizeof(FrameUniforms) == 80);
 static_assert(sizeof(GpuCounters) == 16);
 }  // namespace glpt::rt::gpu
 #endif

@@ -17,7 +17,6 @@ constexpr VkDescriptorSetLayoutBinding kBindings[] = {
     binding(GLPT_PT_BINDING_SCENE, VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR),
     binding(GLPT_PT_BINDING_INSTANCES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
     binding(GLPT_PT_BINDING_LIGHTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
-    binding(GLPT_PT_BINDING_ACCUMULATION, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
     binding(GLPT_PT_BINDING_COUNTERS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
     binding(GLPT_PT_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER),
     binding(GLPT_PT_BINDING_STATES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
@@ -25,10 +24,11 @@ constexpr VkDescriptorSetLayoutBinding kBindings[] = {
     binding(GLPT_PT_BINDING_GBUFFER + 1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
     binding(GLPT_PT_BINDING_GBUFFER + 2, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
     binding(GLPT_PT_BINDING_GBUFFER + 3, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
-    binding(GLPT_PT_BINDING_FRONT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
-    binding(GLPT_PT_BINDING_BACK, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
+    binding(GLPT_PT_BINDING_CHANNELS + 0, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
+    binding(GLPT_PT_BINDING_CHANNELS + 1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
+    binding(GLPT_PT_BINDING_CHANNELS + 2, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
 };
-static_assert(GLPT_GBUFFER_ATTACHMENTS == 4);
+static_assert(GLPT_GBUFFER_ATTACHMENTS == 4 && GLPT_CHANNELS == 3);
 
 }  // namespace
 
@@ -55,38 +55,27 @@ void PathTracePass::record(VkCommandBuffer cmd, const PathTraceResources& resour
   const VkDescriptorBufferInfo instances = whole(resources.instances);
   const VkDescriptorBufferInfo lights = whole(resources.lights);
   const VkDescriptorBufferInfo states = whole(resources.states);
-  const VkDescriptorBufferInfo accumulation = whole(resources.accumulation);
   const VkDescriptorBufferInfo counters = whole(resources.counters);
   const VkDescriptorBufferInfo frame{resources.frame->handle(), 0, sizeof(gpu::FrameUniforms)};
-  VkDescriptorImageInfo images[6];
-  VkWriteDescriptorSet image_writes[6];
-  const VkImageView views[6] = {resources.gbuffer[0], resources.gbuffer[1], resources.gbuffer[2],
-                                resources.gbuffer[3], resources.front,      resources.back};
-  for (uint32_t i = 0; i < 6; ++i) {
-    images[i] = {VK_NULL_HANDLE, views[i], VK_IMAGE_LAYOUT_GENERAL};
-    image_writes[i] = make_info<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
-    image_writes[i].dstSet = set;
-    image_writes[i].dstBinding = i < 4    ? GLPT_PT_BINDING_GBUFFER + i
-                                 : i == 4 ? GLPT_PT_BINDING_FRONT
-                                          : GLPT_PT_BINDING_BACK;
-    image_writes[i].descriptorCount = 1;
-    image_writes[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
-    image_writes[i].pImageInfo = &images[i];
-  }
+  VkDescriptorImageInfo images[GLPT_GBUFFER_ATTACHMENTS + GLPT_CHANNELS];
+  for (uint32_t i = 0; i < GLPT_GBUFFER_ATTACHMENTS; ++i)
+    images[i] = general_image_info(resources.gbuffer[i]);
+  for (uint32_t i = 0; i < GLPT_CHANNELS; ++i)
+    images[GLPT_GBUFFER_ATTACHMENTS + i] = general_image_info(resources.channels[i]);
   const VkWriteDescriptorSet writes[] = {
       scene_write,
       storage_buffer_write(set, GLPT_PT_BINDING_INSTANCES, &instances),
       storage_buffer_write(set, GLPT_PT_BINDING_LIGHTS, &lights),
       storage_buffer_write(set, GLPT_PT_BINDING_STATES, &states),
-      storage_buffer_write(set, GLPT_PT_BINDING_ACCUMULATION, &accumulation),
       storage_buffer_write(set, GLPT_PT_BINDING_COUNTERS, &counters),
       uniform_buffer_write(set, GLPT_PT_BINDING_FRAME, &frame),
-      image_writes[0],
-      image_writes[1],
-      image_writes[2],
-      image_writes[3],
-      image_writes[4],
-      image_writes[5],
+      storage_image_write(set, GLPT_PT_BINDING_GBUFFER + 0, &images[0]),
+      storage_image_write(set, GLPT_PT_BINDING_GBUFFER + 1, &images[1]),
+      storage_image_write(set, GLPT_PT_BINDING_GBUFFER + 2, &images[2]),
+      storage_image_write(set, GLPT_PT_BINDING_GBUFFER + 3, &images[3]),
+      storage_image_write(set, GLPT_PT_BINDING_CHANNELS + 0, &images[4]),
+      storage_image_write(set, GLPT_PT_BINDING_CHANNELS + 1, &images[5]),
+      storage_image_write(set, GLPT_PT_BINDING_CHANNELS + 2, &images[6]),
   };
   pipeline_.update_and_dispatch(device_.handle(), cmd, writes, width, height);
 }

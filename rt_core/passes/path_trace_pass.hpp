@@ -1,7 +1,9 @@
-// The trace pass (shaders/path_trace.comp): lights every pixel the G-buffer covers (shadow rays,
-// diffuse bounces, ambient occlusion), accumulates the samples, and writes the average into the
-// colour buffers; pixels no sample covered keep what the clears and raster draws left there.
+// The trace pass (shaders/path_trace.comp): the light transport of every pixel the G-buffer
+// covers (next-event estimation, bounces, ambient occlusion), written as this frame's radiance
+// channels (shared_types.h, GLPT_CHANNEL_*), which the composite pass turns into colours.
 #pragma once
+
+#include <array>
 
 #include "rt_core/vk/compute_pipeline.hpp"
 #include "rt_core/vk/gpu_buffer.hpp"
@@ -12,15 +14,13 @@ namespace glpt::rt {
 
 struct PathTraceResources {
   VkAccelerationStructureKHR scene = VK_NULL_HANDLE;
-  const GpuBuffer* instances = nullptr;     // gpu::GpuInstance[]
-  const GpuBuffer* lights = nullptr;        // gpu::GpuLight[]
-  const GpuBuffer* states = nullptr;        // gpu::GpuTraceState[]
-  const GpuBuffer* accumulation = nullptr;  // vec4[2 * width * height]
-  const GpuBuffer* counters = nullptr;      // gpu::GpuCounters, zeroed by the caller
-  const GpuBuffer* frame = nullptr;         // gpu::FrameUniforms
-  VkImageView gbuffer[4] = {};              // gbuffer_layout.h attachments
-  VkImageView front = VK_NULL_HANDLE;       // colour buffers (the same view twice when the
-  VkImageView back = VK_NULL_HANDLE;        // drawable is single-buffered)
+  const GpuBuffer* instances = nullptr;  // gpu::GpuInstance[]
+  const GpuBuffer* lights = nullptr;     // gpu::GpuLight[]
+  const GpuBuffer* states = nullptr;     // gpu::GpuTraceState[]
+  const GpuBuffer* counters = nullptr;   // gpu::GpuCounters, zeroed by the caller
+  const GpuBuffer* frame = nullptr;      // gpu::FrameUniforms
+  std::array<VkImageView, 4> gbuffer{};  // gbuffer_layout.h attachments
+  std::array<VkImageView, GLPT_CHANNELS> channels{};  // written
 };
 
 class PathTracePass {

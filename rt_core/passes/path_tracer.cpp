@@ -1,6 +1,8 @@
 #include "rt_core/passes/path_tracer.hpp"
 
 #include <algorithm>
+#include <bit>
+#include <limits>
 #include <cmath>
 #include <cstring>
 #include <exception>
@@ -14,10 +16,9 @@
 namespace glpt::rt {
 namespace {
 
-// Ambient occlusion radius as a fraction of the diagonal of the scene's eye-space bounding box:
-// large enough to darken creases and contact regions, small enough that open surfaces near
-// other objects keep their GL ambient.
-constexpr float kAoRadiusSceneFraction = 0.1f;
+// GLPT_REFERENCE renders its samples in at most this many G-buffer passes (jitter positions):
+// enough for anti-aliased edges, few enough that the G-buffer rasterization stays a small part.
+constexpr uint32_t kMaxReferencePasses = 64;
 
 // VkTransformMatrixKHR is the top 3 rows of a row-major 4x4; glm is column-major.
 VkTransformMatrixKHR to_vk_transform(const glm::mat4& m) {
@@ -50,6 +51,21 @@ float halton(uint32_t index, uint32_t base) {
   return result;
 }
 
+static_assert(static_cast<uint32_t>(LightChoice::kContribution) == GLPT_LIGHT_CHOICE_CONTRIBUTION);
+static_assert(static_cast<uint32_t>(LightChoice::kUniform) == GLPT_LIGHT_CHOICE_UNIFORM);
+static_assert(static_cast<uint32_t>(LightChoice::kAll) == GLPT_LIGHT_CHOICE_ALL);
+
+uint32_t options_bits(const RenderSettings& settings) {
+  uint32_t bits = 0;
+  if (settings.shadows) bits |= GLPT_OPTION_SHADOWS;
+  if (settings.ambient_occlusion) bits |= GLPT_OPTION_AO;
+  if (settings.gl_parity()) bits |= GLPT_OPTION_GL_PARITY;
+  if (settings.unlit == UnlitPolicy::kAo) bits |= GLPT_OPTION_UNLIT_AO;
+  if (settings.unlit == UnlitPolicy::kEmit) bits |= GLPT_OPTION_UNLIT_EMIT;
+  if (settings.environment == Environment::kClear) bits |= GLPT_OPTION_ENVIRONMENT;
+  return bits;
+}
+
 gpu::GpuTraceState pack_state(const TraceState& state) {
   gpu::GpuTraceState packed{};
   packed.global_ambient = state.global_ambient;
@@ -57,7 +73,9 @@ gpu::GpuTraceState pack_state(const TraceState& state) {
   packed.fog_color = state.fog_color;
   packed.fog_params = state.fog_params;
   const uint32_t count = static_cast<uint32_t>(std::min<size_t>(state.lights.size(), 8));
-  packed.info = glm::uvec4(count, state.fog_mode, state.targets, 0u);
+  const uint32_t flags = (state.local_viewer ? GLPT_STATE_LOCAL_VIEWER : 0u) |
+                         (state.two_side ? GLPT_STATE_TWO_SIDE : 0u);
+  packed.info = glm::uvec4(count, state.fog_mode, state.targets, flags);
   for (uint32_t i = 0; i < count; ++i) packed.lights[i / 4][i % 4] = state.lights[i];
   return packed;
 }
@@ -77,7 +95,8 @@ PathTracer::PathTracer(const RenderSettings& settings, std::shared_ptr<VulkanDev
       device_(std::move(device)),
       blas_cache_(*device_),
       tlas_(*device_),
-      trace_pass_(*device_) {
+      trace_pass_(*device_),
+      composite_pass_(*device_) {
   frame_uniforms_ =
       GpuBuffer::create(*device_, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
   counters_ =
@@ -110,6 +129,7 @@ std::unique_ptr<PathTracer> PathTracer::create(std::shared_ptr<VulkanDevice> dev
 void PathTracer::forget_previous_frame() noexcept {
   previous_signature_ = FrameSignature();
   accumulated_samples_ = 0;
+  accumulated_passes_ = 0;
   frame_samples_ = 0;
   tlas_valid_ = false;
 }
@@ -120,16 +140,57 @@ void PathTracer::start_independent_frame(uint64_t frame_index) noexcept {
   seed_frame_index_ = frame_index;
 }
 
+uint32_t PathTracer::samples_of_next_pass() const {
+  uint32_t target = settings_.max_accumulated, per_pass = settings_.samples_per_pixel;
+  if (settings_.reference_samples > 0) {
+    target = settings_.reference_samples;
+    per_pass = std::max(per_pass, (target + kMaxReferencePasses - 1) / kMaxReferencePasses);
+  }
+  return std::min(per_pass, target - std::min(accumulated_samples_, target));
+}
+
+glm::vec2 PathTracer::jitter_of_next_pass() const {
+  if (accumulated_samples_ == 0 || frame_samples_ == 0) return glm::vec2(0.0f);
+  return glm::vec2(halton(accumulated_passes_, 2), halton(accumulated_passes_, 3)) - 0.5f;
+}
+
 glm::vec2 PathTracer::begin_frame(FrameSignature signature) {
   ++frame_number_;
   same_scene_ = signature == previous_signature_;
-  if (!(settings_.accumulate && same_scene_)) accumulated_samples_ = 0;
-  frame_samples_ = std::min(
-      settings_.samples_per_pixel,
-      settings_.max_accumulated - std::min(accumulated_samples_, settings_.max_accumulated));
+  if (!(settings_.accumulate && same_scene_) || settings_.reference_samples > 0) {
+    accumulated_samples_ = 0;
+    accumulated_passes_ = 0;
+  }
   previous_signature_ = std::move(signature);
-  if (accumulated_samples_ == 0 || frame_samples_ == 0) return glm::vec2(0.0f);
-  return glm::vec2(halton(accumulated_samples_, 2), halton(accumulated_samples_, 3)) - 0.5f;
+  frame_samples_ = samples_of_next_pass();
+  return jitter_of_next_pass();
+}
+
+bool PathTracer::next_reference_pass(glm::vec2* jitter) {
+  if (settings_.reference_samples == 0) return false;
+  frame_samples_ = samples_of_next_pass();
+  if (frame_samples_ == 0) return false;
+  same_scene_ = true;  // the same record again: the TLAS stays
+  *jitter = jitter_of_next_pass();
+  return true;
+}
+
+void PathTracer::ensure_channels(uint32_t width, uint32_t height) {
+  if (width == channels_width_ && height == channels_height_ && channels_[0]) return;
+  for (GpuImage& image : channels_) image = GpuImage();
+  channels_width_ = channels_height_ = 0;
+  for (GpuImage& image : channels_) {
+    GpuImageInfo info;
+    info.format = VK_FORMAT_R32G32B32A32_SFLOAT;
+    info.extent = {width, height, 1};
+    info.usage = VK_IMAGE_USAGE_STORAGE_BIT;
+    image = GpuImage::create(*device_, info);
+  }
+  device_->submit_and_wait([&](VkCommandBuffer cmd) {
+    for (const GpuImage& image : channels_) image.initial_barrier(cmd);
+  });
+  channels_width_ = width;
+  channels_height_ = height;
 }
 
 void PathTracer::build_scene_setup(const TraceScene& scene, SceneSetup& setup) const {
@@ -156,14 +217,17 @@ void PathTracer::build_scene_setup(const TraceScene& scene, SceneSetup& setup) c
     tlas_instance.accelerationStructureReference = entry->blas_address;
     setup.tlas_instances.push_back(tlas_instance);
 
+    const EyeBounds bounds =
+        EyeBounds::transformed(entry->bounds_min, entry->bounds_max, instance.modelview);
     const glm::uvec2 positions = split_address(entry->positions_address);
     const glm::uvec2 vertices = split_address(shading->vertices_address);
     const glm::uvec2 materials = split_address(shading->materials_address);
-    setup.instance_table.push_back(
-        {glm::uvec4(positions, vertices), glm::uvec4(materials, instance.state, 0u)});
+    float size = bounds.diagonal();
+    if (!std::isfinite(size)) size = std::numeric_limits<float>::max();
+    setup.instance_table.push_back({glm::uvec4(positions, vertices),
+                                    glm::uvec4(materials, instance.state,
+                                               std::bit_cast<uint32_t>(size))});
 
-    const EyeBounds bounds =
-        EyeBounds::transformed(entry->bounds_min, entry->bounds_max, instance.modelview);
     setup.instance_bounds.push_back(bounds);
     setup.scene_bounds.extend(bounds);
     setup.triangles += entry->triangle_count;
@@ -201,8 +265,10 @@ void PathTracer::trace(const TraceScene& scene, const TraceTargets& targets, Fra
   const Stopwatch upload_timer;
   build_scene_setup(scene, scene_);
   stats.triangles = scene_.triangles;
+  const LightSize light_size{settings_.light_radius,
+                             glm::radians(settings_.light_angular_radius_deg)};
   const LightSetup light_setup =
-      setup_lights(scene.lights, scene_.instance_bounds, scene_.scene_bounds);
+      setup_lights(scene.lights, scene_.instance_bounds, scene_.scene_bounds, light_size);
   for (size_t i = 0; i < scene_.tlas_instances.size(); ++i)
     scene_.tlas_instances[i].mask = light_setup.instance_masks[i] & 0xFFu;
   sort_instances_spatially(scene_);
@@ -216,6 +282,7 @@ void PathTracer::trace(const TraceScene& scene, const TraceTargets& targets, Fra
   const size_t pixel_count = size_t{scene.width} * scene.height;
   ensure_capacity(*device_, accumulation_, 2 * pixel_count * sizeof(glm::vec4),
                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  ensure_channels(scene.width, scene.height);
   gpu::FrameUniforms uniforms{};
   // The seed changes every frame so accumulated frames (and restarted ones) see new samples.
   uniforms.image = glm::uvec4(scene.width, scene.height, scene.default_targets,
@@ -224,10 +291,12 @@ void PathTracer::trace(const TraceScene& scene, const TraceTargets& targets, Fra
                                   0x9E3779B9u));
   uniforms.sampling = glm::uvec4(accumulated_samples_, frame_samples_, settings_.bounces,
                                  accumulated_samples_ + frame_samples_);
-  float ao_radius = kAoRadiusSceneFraction * scene_.scene_bounds.diagonal();
-  if (!std::isfinite(ao_radius)) ao_radius = 0.0f;  // 0: ambient never occluded
-  uniforms.params =
-      glm::vec4(ao_radius, std::cos(glm::radians(settings_.light_angular_radius_deg)), 0.0f, 0.0f);
+  const float angle = glm::radians(settings_.light_angular_radius_deg);
+  const float half_sin = std::sin(0.5f * angle);
+  uniforms.params = glm::vec4(settings_.ao_radius, std::cos(angle), 2.0f * half_sin * half_sin, 0.0f);
+  uniforms.options = glm::uvec4(options_bits(settings_), static_cast<uint32_t>(settings_.light_choice),
+                                0u, 0u);
+  uniforms.environment = scene.clear_color;
   frame_uniforms_.write(&uniforms, sizeof uniforms);
   const gpu::GpuCounters zero_counters{};
   counters_.write(&zero_counters, sizeof zero_counters);
@@ -240,23 +309,39 @@ void PathTracer::trace(const TraceScene& scene, const TraceTargets& targets, Fra
     tlas_valid_ = true;
   }
 
-  // ---- trace (also when no sample is left to add: the pass writes the accumulated image)
-  PathTraceResources resources;
-  resources.scene = tlas_.handle();
-  resources.instances = &instance_table_;
-  resources.lights = &lights_;
-  resources.states = &states_;
-  resources.accumulation = &accumulation_;
-  resources.counters = &counters_;
-  resources.frame = &frame_uniforms_;
+  // ---- trace, then composite, in one submission (also when no sample is left to add: the
+  // composite pass writes the accumulated image)
+  PathTraceResources trace;
+  trace.scene = tlas_.handle();
+  trace.instances = &instance_table_;
+  trace.lights = &lights_;
+  trace.states = &states_;
+  trace.counters = &counters_;
+  trace.frame = &frame_uniforms_;
+  CompositeResources composite;
+  composite.frame = &frame_uniforms_;
+  composite.states = &states_;
+  composite.accumulation = &accumulation_;
   for (int a = 0; a < GLPT_GBUFFER_ATTACHMENTS; ++a)
-    resources.gbuffer[a] = targets.gbuffer->image(a).view();
-  resources.front = targets.front;
-  resources.back = targets.back;
-  stats.trace_ms = device_->submit_and_wait(
-      [&](VkCommandBuffer cmd) { trace_pass_.record(cmd, resources, scene.width, scene.height); });
-  stats.rays = counters_.as<gpu::GpuCounters>()->rays.x;
+    trace.gbuffer[a] = composite.gbuffer[a] = targets.gbuffer->image(a).view();
+  for (int c = 0; c < GLPT_CHANNELS; ++c) trace.channels[c] = composite.channels[c] = channels_[c].view();
+  composite.front = targets.front;
+  composite.back = targets.back;
+  stats.trace_ms = device_->submit_and_wait([&](VkCommandBuffer cmd) {
+    trace_pass_.record(cmd, trace, scene.width, scene.height);
+    // The composite pass reads the channels the trace pass wrote.
+    VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER, nullptr, VK_ACCESS_SHADER_WRITE_BIT,
+                            VK_ACCESS_SHADER_READ_BIT};
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                         VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &barrier, 0, nullptr, 0,
+                         nullptr);
+    composite_pass_.record(cmd, composite, scene.width, scene.height);
+  });
+  const gpu::GpuCounters* counters = counters_.as<gpu::GpuCounters>();
+  stats.rays = counters->rays.x;
+  stats.non_finite_samples = counters->rays.y;
   accumulated_samples_ += frame_samples_;
+  if (frame_samples_ > 0) ++accumulated_passes_;
   frame_samples_ = 0;
   stats.accumulated_samples = accumulated_samples_;
 

@@ -15,6 +15,7 @@
 #include "rt_core/accel/blas_cache.hpp"
 #include "rt_core/accel/tlas.hpp"
 #include "rt_core/frame_stats.hpp"
+#include "rt_core/passes/composite_pass.hpp"
 #include "rt_core/passes/gbuffer.hpp"
 #include "rt_core/passes/path_trace_pass.hpp"
 #include "rt_core/render_settings.hpp"
@@ -43,8 +44,13 @@ class PathTracer {
   // Starts a frame: its samples are added to the previous frames' while `signature` equals the
   // previous frame's (and GLPT_ACCUMULATE is on); otherwise accumulation restarts. Returns the
   // sub-pixel offset (pixels) for this frame's G-buffer: 0 for an accumulation's first samples,
-  // so a single frame samples GL's pixel centres, then a Halton (2, 3) sequence in [-0.5, 0.5).
+  // so a single frame samples GL's pixel centres, then a Halton (2, 3) sequence in [-0.5, 0.5)
+  // indexed by the G-buffers accumulated (not the samples), so it covers the pixel at any
+  // GLPT_SPP. With GLPT_REFERENCE every frame starts a new accumulation.
   glm::vec2 begin_frame(FrameSignature signature);
+  // GLPT_REFERENCE: after the first trace of a frame, whether another G-buffer pass and trace
+  // are needed to reach the reference's samples; if so, `jitter` is that pass's offset.
+  bool next_reference_pass(glm::vec2* jitter);
   // Builds what `scene` needs (BLASes, TLAS, tables) and runs the trace pass over the G-buffer of
   // the frame begun last, writing the colour buffers. Throws VulkanError.
   void trace(const TraceScene& scene, const TraceTargets& targets, FrameStats& stats);
@@ -68,6 +74,10 @@ class PathTracer {
     uint64_t triangles = 0;
   };
   void build_scene_setup(const TraceScene& scene, SceneSetup& setup) const;
+  void ensure_channels(uint32_t width, uint32_t height);
+  // The samples per pixel of the next pass: GLPT_SPP, or a reference's share.
+  uint32_t samples_of_next_pass() const;
+  glm::vec2 jitter_of_next_pass() const;
   // lavapipe's TLAS builder, like its BLAS builder, splits the instance *index* range, and GL
   // draw order is not spatial: put instances in Morton order of their bounds' centres. The
   // instance table order (instanceCustomIndex) is unaffected.
@@ -79,6 +89,9 @@ class PathTracer {
   BlasCache blas_cache_;
   Tlas tlas_;
   PathTracePass trace_pass_;
+  CompositePass composite_pass_;
+  std::array<GpuImage, GLPT_CHANNELS> channels_;  // this frame's radiance (trace -> composite)
+  uint32_t channels_width_ = 0, channels_height_ = 0;
   GpuBuffer frame_uniforms_;
   GpuBuffer counters_;
   GpuBuffer instance_table_;
@@ -90,6 +103,7 @@ class PathTracer {
   bool same_scene_ = false;  // this frame's signature equals the previous frame's
   bool tlas_valid_ = false;
   uint32_t accumulated_samples_ = 0;  // before this frame
+  uint32_t accumulated_passes_ = 0;   // G-buffers (jitter positions) those samples came from
   uint32_t frame_samples_ = 0;        // this frame
   uint64_t frame_number_ = 0;
   bool seeded_by_frame_index_ = false;  // start_independent_frame was called

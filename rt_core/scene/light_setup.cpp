@@ -1,6 +1,7 @@
 #include "rt_core/scene/light_setup.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <glm/trigonometric.hpp>
 
@@ -16,7 +17,7 @@ glm::vec3 normalize_or(const glm::vec3& v, const glm::vec3& fallback) {
   return length > 0.0f && std::isfinite(length) ? v / length : fallback;
 }
 
-gpu::GpuLight pack_light(const Light& light, size_t index) {
+gpu::GpuLight pack_light(const Light& light, size_t index, const LightSize& size) {
   gpu::GpuLight packed{};
   packed.position = light.position;
   if (light.position.w == 0.0f) {
@@ -26,14 +27,22 @@ gpu::GpuLight pack_light(const Light& light, size_t index) {
   packed.diffuse = light.diffuse;
   packed.specular = light.specular;
   // GL: cutoff 180 is "no spot". GL 1.5 2.14.1 and Mesa apply a spot cutoff to directional
-  // lights too (the light's direction is VP), as piglit's infinite-spot-light checks.
+  // lights too (the light's direction is VP), as piglit's infinite-spot-light checks; the trace
+  // pass does so in its GL-parity evaluation only (a distant light has no position to be a spot).
   const bool spot = light.spot_cutoff < 180.0f;
   const float cutoff = glm::radians(std::clamp(light.spot_cutoff, 0.0f, 90.0f));
   packed.spot = glm::vec4(normalize_or(light.spot_direction, glm::vec3(0, 0, -1)),
                           spot ? std::cos(cutoff) : -2.0f);
   packed.attenuation = glm::vec4(light.constant_attenuation, light.linear_attenuation,
                                  light.quadratic_attenuation, light.spot_exponent);
-  packed.params = glm::uvec4(shadow_bit(index), 0u, 0u, 0u);
+  float radius = 0.0f;
+  if (light.position.w != 0.0f) {
+    const glm::vec3 centre = glm::vec3(light.position) / light.position.w;
+    radius = size.radius >= 0.0f ? size.radius
+                                 : std::sin(size.angular_radius_rad) * glm::length(centre);
+    if (!std::isfinite(radius) || radius < 0.0f) radius = 0.0f;
+  }
+  packed.params = glm::uvec4(shadow_bit(index), std::bit_cast<uint32_t>(radius), 0u, 0u);
   return packed;
 }
 
@@ -61,9 +70,10 @@ Light default_light() {
 }
 
 LightSetup setup_lights(std::span<const Light> lights, std::span<const EyeBounds> instance_bounds,
-                        const EyeBounds& scene_bounds) {
+                        const EyeBounds& scene_bounds, const LightSize& size) {
   LightSetup setup;
-  for (size_t i = 0; i < lights.size(); ++i) setup.lights.push_back(pack_light(lights[i], i));
+  for (size_t i = 0; i < lights.size(); ++i)
+    setup.lights.push_back(pack_light(lights[i], i, size));
 
   const float lamp_max_diagonal = kLampMarkerMaxSceneFraction * scene_bounds.diagonal();
   setup.instance_masks.reserve(instance_bounds.size());

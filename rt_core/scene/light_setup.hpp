@@ -39,7 +39,8 @@ struct EyeBounds {
                                const glm::mat4& transform);
 };
 
-// Used when a frame has lit surfaces but no enabled light, so a lit scene is never just ambient:
+// Used when a frame has lit surfaces but no enabled light and the user asked for it
+// (GLPT_DEFAULT_LIGHT=1; GL itself lights such a scene by ambient and emission alone):
 // GL_LIGHT0's colours (diffuse and specular white, no ambient), directional, from the camera's
 // upper left and slightly behind it: direction towards the light (-1, 1, 1) in eye space.
 Light default_light();
@@ -54,9 +55,17 @@ struct LightSetup {
 // that instance casts no shadow for that light, otherwise it would black out the whole light.
 constexpr float kLampMarkerMaxSceneFraction = 0.1f;
 
+// The size of GL's lights as light sources (docs/light-transport.md, "Lights").
+struct LightSize {
+  // Radius of positional lights (eye-space units); negative: the radius at which the light
+  // subtends `angular_radius_rad` seen from the eye, so a light looks as large wherever it is.
+  float radius = -1.0f;
+  float angular_radius_rad = 0.0f;  // also the angular radius of directional lights
+};
+
 // Packs `lights` for the shader and computes each instance's shadow mask from its eye-space
 // bounds (`instance_bounds`, one per instance) and the scene's bounds.
 LightSetup setup_lights(std::span<const Light> lights, std::span<const EyeBounds> instance_bounds,
-                        const EyeBounds& scene_bounds);
+                        const EyeBounds& scene_bounds, const LightSize& size = {});
 
 }  // namespace glpt::rt

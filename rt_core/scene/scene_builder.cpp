@@ -76,19 +76,21 @@ ColorSource color_source_of(uint32_t mode) {
   }
 }
 
-Material material_of(const rec::LightingState& lighting, const rec::Material& front) {
+// The material of one face (`back`: the back face's, with two-sided lighting).
+Material material_of(const rec::LightingState& lighting, const rec::Material& face, bool back) {
   Material m;
   if (!lighting.enabled) {
     m.lit = false;  // the surface shows its vertex colour
     m.color_source = ColorSource::kAmbientAndDiffuse;
     return m;
   }
-  m.ambient = front.ambient;
-  m.diffuse = front.diffuse;
-  m.specular = front.specular;
-  m.emission = front.emission;
-  m.shininess = front.shininess;
-  if (lighting.color_material && lighting.color_material_face != GL_BACK)
+  m.ambient = face.ambient;
+  m.diffuse = face.diffuse;
+  m.specular = face.specular;
+  m.emission = face.emission;
+  m.shininess = face.shininess;
+  const uint32_t tracked = back ? GL_FRONT : GL_BACK;  // the face colour material leaves alone
+  if (lighting.color_material && lighting.color_material_face != tracked)
     m.color_source = color_source_of(lighting.color_material_mode);
   return m;
 }
@@ -158,9 +160,14 @@ class Batcher {
     rec::decompose(v, scratch);
     const bool flat = state.raster->primitive.shade_model == GL_FLAT;
     const rec::LightingState& lighting = *state.lighting;
-    const uint32_t shared_material =
-        v.material.empty() ? intern(open_->materials, material_of(lighting, lighting.material[0]))
-                           : 0;
+    // Two-sided lighting gives faces seen from behind the back material (GL 1.5 2.14.1).
+    const bool two_side = lighting.enabled && lighting.two_side;
+    auto material_pair = [&](const std::array<rec::Material, 2>& pair) {
+      Material front = material_of(lighting, pair[0], false);
+      if (two_side) front.back = intern(open_->materials, material_of(lighting, pair[1], true));
+      return intern(open_->materials, front);
+    };
+    const uint32_t shared_material = v.material.empty() ? material_pair(lighting.material) : 0;
     // GL's normal transform (the inverse transpose of the modelview) for eye-space normals.
     const glm::mat3 normal_matrix = glm::transpose(glm::mat3(transform.modelview_inverse));
     Geometry& g = *open_;
@@ -188,7 +195,7 @@ class Batcher {
       g.material_ids.push_back(
           v.material.empty()
               ? shared_material
-              : intern(g.materials, material_of(lighting, v.material[provoking][0])));
+              : material_pair(v.material[provoking]));
     }
     const rec::VertexKeys& keys = v.keys();
     shape_.add_bytes(&keys.geometry, sizeof keys.geometry);
@@ -208,6 +215,7 @@ class Batcher {
         shading_.add_bytes(&m.shininess, sizeof m.shininess);
         const uint32_t flags = (m.lit ? 1u : 0u) | (static_cast<uint32_t>(m.color_source) << 1);
         shading_.add_bytes(&flags, sizeof flags);
+        shading_.add_bytes(&m.back, sizeof m.back);
       }
       open_->shape_hash = shape_.value();
       open_->shading_hash = shading_.value();
@@ -319,7 +327,7 @@ DrawClass classify_draw(const rec::Draw& draw, const rec::StateSnapshot& state,
 }
 
 void build_trace_scene(const rec::FrameRecord& record, const rec::DrawableConfig& drawable,
-                       SceneBuild& out) {
+                       SceneBuild& out, const SceneOptions& options) {
   out.scene = TraceScene();
   out.classes.assign(record.commands.size(), DrawClass::kNotTriangles);
   out.traced.assign(record.commands.size(), 0);
@@ -342,6 +350,9 @@ void build_trace_scene(const rec::FrameRecord& record, const rec::DrawableConfig
       const rec::StateSnapshot& state = record.states[draw->state];
       out.classes[i] = classify_draw(*draw, state, camera, drawable);
     }
+    if (const auto* clear = std::get_if<rec::Clear>(&command);
+        clear != nullptr && !out.any_traced && (clear->mask & GL_COLOR_BUFFER_BIT) != 0)
+      scene.clear_color = clear->color;
     if (draw == nullptr || out.classes[i] != DrawClass::kTraced) {
       // Clears act on the G-buffer in its pass; everything else before the first traced draw is
       // drawn first, the rest after the trace.
@@ -379,6 +390,8 @@ void build_trace_scene(const rec::FrameRecord& record, const rec::DrawableConfig
     const float range = fog.end - fog.start;
     t.fog_params = glm::vec4(fog.density, fog.start, fog.end, range != 0.0f ? 1.0f / range : 1.0f);
     if (!lighting.enabled) continue;
+    t.local_viewer = lighting.local_viewer;
+    t.two_side = lighting.two_side;
     if (first_lit < 0) first_lit = static_cast<int>(s);
     t.global_ambient = lighting.model_ambient;
     for (int l = 0; l < rec::kMaxLights; ++l) {
@@ -387,8 +400,8 @@ void build_trace_scene(const rec::FrameRecord& record, const rec::DrawableConfig
       any_light = true;
     }
   }
-  // A lit scene without any enabled light gets the documented default light (light_setup.hpp).
-  if (first_lit >= 0 && !any_light) {
+  // A lit scene without any enabled light gets the default light only when asked for.
+  if (options.default_light && first_lit >= 0 && !any_light) {
     scene.lights.push_back(default_light());
     for (size_t s = 0; s < record.states.size(); ++s)
       if (state_used[s] && record.states[s].lighting->enabled) scene.states[s].lights = {0};

@@ -62,8 +62,14 @@ struct SceneBuild {
   bool any_traced = false;
 };
 
+struct SceneOptions {
+  // A lit scene without any enabled light gets default_light() (GLPT_DEFAULT_LIGHT=1); by
+  // default it is lit by GL's ambient and emission alone, as GL lights it.
+  bool default_light = false;
+};
+
 void build_trace_scene(const rec::FrameRecord& record, const rec::DrawableConfig& drawable,
-                       SceneBuild& out);
+                       SceneBuild& out, const SceneOptions& options = {});
 
 // The eye-space viewer of a projection: its centre of projection as a point (w = 1) for
 // perspective projections, a unit direction towards the viewer (w = 0) for parallel ones, where

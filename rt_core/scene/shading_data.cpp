@@ -13,7 +13,7 @@ static_assert(static_cast<uint32_t>(ColorSource::kAmbient) == GLPT_COLOR_SOURCE_
 static_assert(static_cast<uint32_t>(ColorSource::kEmission) == GLPT_COLOR_SOURCE_EMISSION);
 static_assert(static_cast<uint32_t>(ColorSource::kSpecular) == GLPT_COLOR_SOURCE_SPECULAR);
 
-gpu::GpuMaterial pack_material(const Material& material) {
+gpu::GpuMaterial pack_material(const Material& material, uint32_t index) {
   gpu::GpuMaterial packed{};
   packed.ambient = material.ambient;
   packed.diffuse = material.diffuse;
@@ -22,7 +22,8 @@ gpu::GpuMaterial pack_material(const Material& material) {
   uint32_t shininess_bits;
   std::memcpy(&shininess_bits, &material.shininess, sizeof shininess_bits);
   packed.params = glm::uvec4(shininess_bits, material.lit ? 1u : 0u,
-                             static_cast<uint32_t>(material.color_source), 0u);
+                             static_cast<uint32_t>(material.color_source),
+                             material.back == Material::kSameForBack ? index : material.back);
   return packed;
 }
 
@@ -44,7 +45,8 @@ void pack_shading(const Geometry& geometry, std::span<const uint32_t> triangle_o
                   std::span<gpu::ShadingVertex> vertices, std::span<gpu::GpuMaterial> materials) {
   const size_t material_count = packed_material_count(geometry);
   for (size_t i = 0; i < material_count; ++i) {
-    materials[i] = pack_material(geometry.materials.empty() ? Material{} : geometry.materials[i]);
+    materials[i] = pack_material(geometry.materials.empty() ? Material{} : geometry.materials[i],
+                                 static_cast<uint32_t>(i));
   }
 
   const glm::vec4 kDefaultColor(1.0f);  // GL's initial current colour

@@ -11,7 +11,9 @@
 
 namespace glpt::rt {
 
-gpu::GpuMaterial pack_material(const Material& material);
+// `index`: the material's own index in its geometry's table (the back material of faces seen from
+// behind, unless Material::back names another).
+gpu::GpuMaterial pack_material(const Material& material, uint32_t index);
 
 // How many GpuMaterial records pack_shading writes: at least one, so out-of-range or missing
 // material ids always have something to point at.

@@ -32,6 +32,10 @@ struct Material {
   // its vertex colour (see docs/architecture.md, "unlit policy").
   bool lit = true;
   ColorSource color_source = ColorSource::kNone;
+  // Two-sided lighting: the index (in the geometry's table) of the material of faces seen from
+  // behind; kSameForBack: this one.
+  static constexpr uint32_t kSameForBack = ~0u;
+  uint32_t back = kSameForBack;
 
   bool operator==(const Material&) const = default;
 };
@@ -93,18 +97,23 @@ struct TraceState {
   glm::vec4 fog_color{0.0f};
   glm::vec4 fog_params{0.0f};  // density, start, end, 1 / (end - start)
   uint32_t targets = 0;        // colour buffers its draws write: bit 0 front, bit 1 back
+  bool local_viewer = false;   // GL_LIGHT_MODEL_LOCAL_VIEWER (the GL-parity evaluation)
+  bool two_side = false;       // GL_LIGHT_MODEL_TWO_SIDE
 };
 
 struct TraceScene {
   uint32_t width = 0, height = 0;  // drawable size in pixels
-  // Distinct enabled GL lights of the traced draws' states (a lit scene without any: the default
-  // light), shared by the states that list them.
+  // Distinct enabled GL lights of the traced draws' states (a lit scene without any: none, or the
+  // default light if asked for), shared by the states that list them.
   std::vector<Light> lights;
   std::vector<TraceState> states;  // one per record state
   std::vector<Instance> instances;
   // Colour buffers to write where a pixel was traced in earlier samples but not in this frame's
   // G-buffer (the first traced draw's).
   uint32_t default_targets = 1;
+  // The colour of the frame's last colour clear before its first traced draw (the background
+  // GLPT_ENVIRONMENT=clear gives rays that miss).
+  glm::vec4 clear_color{0.0f};
 };
 
 }  // namespace glpt::rt

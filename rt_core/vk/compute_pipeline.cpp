@@ -92,6 +92,21 @@ VkWriteDescriptorSet storage_buffer_write(VkDescriptorSet set, uint32_t binding,
   return write;
 }
 
+VkWriteDescriptorSet storage_image_write(VkDescriptorSet set, uint32_t binding,
+                                         const VkDescriptorImageInfo* info) {
+  auto write = make_info<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
+  write.dstSet = set;
+  write.dstBinding = binding;
+  write.descriptorCount = 1;
+  write.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+  write.pImageInfo = info;
+  return write;
+}
+
+VkDescriptorImageInfo general_image_info(VkImageView view) {
+  return {VK_NULL_HANDLE, view, VK_IMAGE_LAYOUT_GENERAL};
+}
+
 VkWriteDescriptorSet uniform_buffer_write(VkDescriptorSet set, uint32_t binding,
                                           const VkDescriptorBufferInfo* info) {
   VkWriteDescriptorSet write = storage_buffer_write(set, binding, info);

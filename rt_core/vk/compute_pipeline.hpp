@@ -1,5 +1,5 @@
 // A compute pipeline with one descriptor set (layout, pool, set), built from embedded SPIR-V.
-// Shared plumbing of the passes (path_trace_pass, tonemap_pass).
+// Shared plumbing of the passes (path_trace_pass, composite_pass).
 #pragma once
 
 #include <cstdint>
@@ -39,5 +39,9 @@ VkWriteDescriptorSet storage_buffer_write(VkDescriptorSet set, uint32_t binding,
                                           const VkDescriptorBufferInfo* info);
 VkWriteDescriptorSet uniform_buffer_write(VkDescriptorSet set, uint32_t binding,
                                           const VkDescriptorBufferInfo* info);
+VkWriteDescriptorSet storage_image_write(VkDescriptorSet set, uint32_t binding,
+                                         const VkDescriptorImageInfo* info);
+// A storage image in VK_IMAGE_LAYOUT_GENERAL (every image of glpt's, gpu_image.hpp).
+VkDescriptorImageInfo general_image_info(VkImageView view);
 
 }  // namespace glpt::rt

@@ -1,0 +1,66 @@
+#include "rt_core/passes/composite_pass.hpp"
+
+#include <cstdint>
+
+#include "composite_spv.h"  // generated from shaders/composite.comp at build time
+#include "gbuffer_layout.h"
+
+namespace glpt::rt {
+namespace {
+
+constexpr VkDescriptorSetLayoutBinding binding(uint32_t index, VkDescriptorType type) {
+  return {index, type, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
+}
+
+constexpr VkDescriptorSetLayoutBinding kBindings[] = {
+    binding(GLPT_CO_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER),
+    binding(GLPT_CO_BINDING_STATES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
+    binding(GLPT_CO_BINDING_ACCUMULATION, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
+    binding(GLPT_CO_BINDING_GBUFFER + 0, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
+    binding(GLPT_CO_BINDING_GBUFFER + 1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
+    binding(GLPT_CO_BINDING_GBUFFER + 2, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
+    binding(GLPT_CO_BINDING_GBUFFER + 3, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
+    binding(GLPT_CO_BINDING_CHANNELS + 0, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
+    binding(GLPT_CO_BINDING_CHANNELS + 1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
+    binding(GLPT_CO_BINDING_CHANNELS + 2, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
+    binding(GLPT_CO_BINDING_FRONT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
+    binding(GLPT_CO_BINDING_BACK, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
+};
+static_assert(GLPT_GBUFFER_ATTACHMENTS == 4 && GLPT_CHANNELS == 3);
+
+}  // namespace
+
+CompositePass::CompositePass(const VulkanDevice& device)
+    : device_(device), pipeline_(device, composite_spv, kBindings) {}
+
+void CompositePass::record(VkCommandBuffer cmd, const CompositeResources& resources,
+                           uint32_t width, uint32_t height) const {
+  const VkDescriptorSet set = pipeline_.descriptor_set();
+  const VkDescriptorBufferInfo frame{resources.frame->handle(), 0, sizeof(gpu::FrameUniforms)};
+  const VkDescriptorBufferInfo states{resources.states->handle(), 0, VK_WHOLE_SIZE};
+  const VkDescriptorBufferInfo accumulation{resources.accumulation->handle(), 0, VK_WHOLE_SIZE};
+  VkDescriptorImageInfo images[GLPT_GBUFFER_ATTACHMENTS + GLPT_CHANNELS + 2];
+  for (uint32_t i = 0; i < GLPT_GBUFFER_ATTACHMENTS; ++i)
+    images[i] = general_image_info(resources.gbuffer[i]);
+  for (uint32_t i = 0; i < GLPT_CHANNELS; ++i)
+    images[GLPT_GBUFFER_ATTACHMENTS + i] = general_image_info(resources.channels[i]);
+  images[7] = general_image_info(resources.front);
+  images[8] = general_image_info(resources.back);
+  const VkWriteDescriptorSet writes[] = {
+      uniform_buffer_write(set, GLPT_CO_BINDING_FRAME, &frame),
+      storage_buffer_write(set, GLPT_CO_BINDING_STATES, &states),
+      storage_buffer_write(set, GLPT_CO_BINDING_ACCUMULATION, &accumulation),
+      storage_image_write(set, GLPT_CO_BINDING_GBUFFER + 0, &images[0]),
+      storage_image_write(set, GLPT_CO_BINDING_GBUFFER + 1, &images[1]),
+      storage_image_write(set, GLPT_CO_BINDING_GBUFFER + 2, &images[2]),
+      storage_image_write(set, GLPT_CO_BINDING_GBUFFER + 3, &images[3]),
+      storage_image_write(set, GLPT_CO_BINDING_CHANNELS + 0, &images[4]),
+      storage_image_write(set, GLPT_CO_BINDING_CHANNELS + 1, &images[5]),
+      storage_image_write(set, GLPT_CO_BINDING_CHANNELS + 2, &images[6]),
+      storage_image_write(set, GLPT_CO_BINDING_FRONT, &images[7]),
+      storage_image_write(set, GLPT_CO_BINDING_BACK, &images[8]),
+  };
+  pipeline_.update_and_dispatch(device_.handle(), cmd, writes, width, height);
+}
+
+}  // namespace glpt::rt

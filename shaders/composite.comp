@@ -1,0 +1,118 @@
+#version 460
+// Composite pass of path-traced mode: the radiance channels of the trace pass (or of the
+// denoiser, later) become GL's colour buffer. Per pixel this frame covered:
+//   colour = fog(albedo * (direct + indirect) + specular + emission)
+// with the albedo and emission from the G-buffer and GL's fog of the pixel's draw; unlit pixels
+// show the G-buffer's colour (times their ambient visibility under GLPT_UNLIT=ao). The colours
+// of all frames accumulated so far are averaged; samples that did not cover the pixel (its edge,
+// under sub-pixel jitter) show what the colour buffer holds there (the clears and raster draws
+// of this frame), which is how partially covered edge pixels blend. The result is clamped to
+// [0, 1] and written into the colour buffer(s) the pixel's draw writes.
+#extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_shader_image_load_formatted : require
+
+#include "gbuffer_layout.h"
+#include "shared_types.h"
+#include "trace/gbuffer_material.h"
+
+layout(local_size_x = GLPT_TILE_SIZE, local_size_y = GLPT_TILE_SIZE) in;
+
+layout(std140, set = 0, binding = GLPT_CO_BINDING_FRAME) uniform FrameBlock {
+  FrameUniforms frame;
+};
+layout(std430, set = 0, binding = GLPT_CO_BINDING_STATES) readonly buffer StateTable {
+  GpuTraceState states[];
+};
+// Per pixel two vec4: [2i] rgb: sum of the covered samples' colour, a: sum of their alpha;
+// [2i + 1] x: how many samples were covered, y: how many samples there were.
+layout(std430, set = 0, binding = GLPT_CO_BINDING_ACCUMULATION) buffer Accumulation {
+  vec4 accumulation[];
+};
+layout(set = 0, binding = GLPT_CO_BINDING_GBUFFER + GLPT_GBUFFER_POSITION, rgba32f)
+    uniform readonly image2D gbuffer_position;
+layout(set = 0, binding = GLPT_CO_BINDING_GBUFFER + GLPT_GBUFFER_SURFACE, rgba32ui)
+    uniform readonly uimage2D gbuffer_surface;
+layout(set = 0, binding = GLPT_CO_BINDING_GBUFFER + GLPT_GBUFFER_MATERIAL0, rgba32ui)
+    uniform readonly uimage2D gbuffer_material0;
+layout(set = 0, binding = GLPT_CO_BINDING_GBUFFER + GLPT_GBUFFER_MATERIAL1, rgba32ui)
+    uniform readonly uimage2D gbuffer_material1;
+layout(set = 0, binding = GLPT_CO_BINDING_CHANNELS + GLPT_CHANNEL_DIRECT_DIFFUSE, rgba32f)
+    uniform readonly image2D channel_direct;
+layout(set = 0, binding = GLPT_CO_BINDING_CHANNELS + GLPT_CHANNEL_INDIRECT_DIFFUSE, rgba32f)
+    uniform readonly image2D channel_indirect;
+layout(set = 0, binding = GLPT_CO_BINDING_CHANNELS + GLPT_CHANNEL_SPECULAR, rgba32f)
+    uniform readonly image2D channel_specular;
+// The colour buffers are BGRA8: no format qualifier (the view's format converts).
+layout(set = 0, binding = GLPT_CO_BINDING_FRONT) uniform image2D front_buffer;
+layout(set = 0, binding = GLPT_CO_BINDING_BACK) uniform image2D back_buffer;
+
+// GL's fog (GL 1.5 3.10) on a lit pixel's radiance; unlit pixels come fogged from the G-buffer.
+vec3 apply_fog(uint state, float fog_coordinate, vec3 radiance) {
+  uint mode = states[state].info.y;
+  if (mode == 0u) return radiance;
+  vec4 p = states[state].fog_params;
+  float z = fog_coordinate;
+  float f = mode == 1u ? (p.z - z) * p.w : mode == 2u ? exp(-p.x * z) : exp(-(p.x * z) * (p.x * z));
+  return mix(states[state].fog_color.rgb, radiance, clamp(f, 0.0, 1.0));
+}
+
+// This frame's colour of a pixel the G-buffer covers (rgb) and its alpha.
+vec4 composite(ivec2 pixel, uvec4 surface) {
+  uvec4 m0 = imageLoad(gbuffer_material0, pixel);
+  if ((surface.w & GLPT_GBUFFER_LIT) == 0u) {
+    vec4 color = unpackUnorm4x8(m0.x);
+    if ((frame.options.x & GLPT_OPTION_UNLIT_AO) != 0u)
+      color.rgb *= imageLoad(channel_indirect, pixel).r;
+    return color;
+  }
+  GBufferMaterial m = gbuffer_material(surface, m0, imageLoad(gbuffer_material1, pixel));
+  vec3 diffuse_light = imageLoad(channel_direct, pixel).rgb + imageLoad(channel_indirect, pixel).rgb;
+  vec3 radiance = gbuffer_albedo(m) * diffuse_light + imageLoad(channel_specular, pixel).rgb +
+                  m.emission;
+  float fog_coordinate = imageLoad(gbuffer_position, pixel).w;
+  return vec4(apply_fog(surface.x - 1u, fog_coordinate, radiance), m.diffuse.a);
+}
+
+// Writes the pixel's average over all accumulated samples into the colour buffers `targets`:
+// `sum` holds the covered samples (`covered` of the `total`); the others show what the colour
+// buffer holds.
+void write_average(ivec2 pixel, uint targets, vec4 sum, float covered, float total) {
+  for (uint t = 0u; t < 2u; ++t) {
+    if ((targets & (1u << t)) == 0u) continue;
+    vec4 background = t == 0u ? imageLoad(front_buffer, pixel) : imageLoad(back_buffer, pixel);
+    vec4 color = clamp((sum + (total - covered) * background) / total, 0.0, 1.0);
+    if (t == 0u)
+      imageStore(front_buffer, pixel, color);
+    else
+      imageStore(back_buffer, pixel, color);
+  }
+}
+
+void main() {
+  ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+  if (pixel.x >= int(frame.image.x) || pixel.y >= int(frame.image.y)) return;
+  uint pixel_index = uint(pixel.y) * frame.image.x + uint(pixel.x);
+  uvec4 surface = imageLoad(gbuffer_surface, pixel);
+  // Samples of this frame: covered ones the trace pass kept (it drops non-finite ones, which then
+  // count nowhere), uncovered ones all of the frame's.
+  float traced = imageLoad(channel_direct, pixel).a;
+  bool covered = surface.x != 0u && traced > 0.0;
+  uint samples = frame.sampling.y;
+  vec4 sum = covered ? composite(pixel, surface) * traced : vec4(0.0);
+  float count = covered ? traced : 0.0;
+  float total = surface.x != 0u ? traced : float(samples);
+  if (frame.sampling.x != 0u) {
+    sum += accumulation[2u * pixel_index];
+    vec4 counts = accumulation[2u * pixel_index + 1u];
+    count += counts.x;
+    total += counts.y;
+  }
+  if (samples > 0u) {
+    accumulation[2u * pixel_index] = sum;
+    accumulation[2u * pixel_index + 1u] = vec4(count, total, 0.0, 0.0);
+  }
+  if (count > 0.0 && total > 0.0) {
+    uint targets = surface.x != 0u ? states[surface.x - 1u].info.z : frame.image.z;
+    write_average(pixel, targets, sum, count, total);
+  }
+}

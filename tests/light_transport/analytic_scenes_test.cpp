@@ -1,0 +1,528 @@
+// Path-traced GL scenes whose radiance is known in closed form (docs/light-transport.md, "Tests"):
+// each is drawn with GL through glpt's front end on a headless drawable and read back with
+// glReadPixels, and compared with the analytic answer (8-bit read-back: tolerances are stated as
+// a relative error plus one or two steps of 1/255). Raster mode stands for Mesa where an image
+// is compared with GL's (the conformance suite checks raster mode against Mesa pixel for pixel).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <functional>
+#include <glm/glm.hpp>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "common/image_io.hpp"
+#include "gl/gl_enums.h"
+#include "gl_shim/context.hpp"
+#include "gl_shim/frame/headless_target.hpp"
+#include "gl_shim/gl_entry_decls.h"
+
+namespace {
+
+constexpr int kSize = 64;
+// camera(): a 60-degree frustum, x and y in [-kHalf, kHalf] * distance.
+constexpr float kHalf = 0.57735f;
+
+using Settings = std::vector<std::pair<const char*, std::string>>;
+
+struct Image {
+  std::vector<uint8_t> rgba;
+  // GL window coordinates: y = 0 is the bottom row; channel 0..3.
+  int at(int x, int y, int channel = 0) const {
+    return rgba[(size_t(y) * kSize + size_t(x)) * 4 + size_t(channel)];
+  }
+  double mean(int channel = 0) const {
+    double sum = 0;
+    for (int y = 0; y < kSize; ++y)
+      for (int x = 0; x < kSize; ++x) sum += at(x, y, channel);
+    return sum / (kSize * kSize);
+  }
+};
+
+// Draws `scene` `frames` times on a fresh context with the GLPT_* `settings` and reads the last
+// frame back. GLPT_TEST_IMAGES=DIR keeps each image as DIR/<test>_<tag>.png.
+Image render(const Settings& settings, const std::function<void()>& scene, int frames,
+             const char* tag) {
+  for (const auto& [name, value] : settings) ::setenv(name, value.c_str(), 1);
+  glpt::rec::DrawableConfig config;
+  config.double_buffered = false;
+  auto target = std::make_unique<glpt::HeadlessTarget>(kSize, kSize, config);
+  auto context = std::make_unique<glpt::Context>(nullptr);
+  glpt::make_current_headless(*context, *target);
+  Image image;
+  image.rgba.resize(size_t{kSize} * kSize * 4);
+  for (int frame = 0; frame < frames; ++frame) {
+    scene();
+    glFinish();
+  }
+  glReadPixels(0, 0, kSize, kSize, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
+  EXPECT_EQ(glGetError(), GLenum{GL_NO_ERROR});
+  if (const char* dir = std::getenv("GLPT_TEST_IMAGES")) {
+    const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
+    const std::string path = std::string(dir) + "/" + test->name() + "_" + tag + ".png";
+    glpt::write_png_rgba8(path, kSize, kSize, image.rgba.data(), true, nullptr);
+  }
+  glpt::set_current_context(nullptr);
+  context.reset();
+  for (const auto& [name, value] : settings) ::unsetenv(name);
+  return image;
+}
+
+Settings path(Settings extra) {
+  extra.insert(extra.begin(), {"GLPT_MODE", "path"});
+  return extra;
+}
+
+void camera(float near_plane = 1.0f) {
+  glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
+  glFrustum(-kHalf * near_plane, kHalf * near_plane, -kHalf * near_plane, kHalf * near_plane,
+            near_plane, 50.0);
+  glMatrixMode(GL_MODELVIEW);
+  glLoadIdentity();
+  glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glEnable(GL_DEPTH_TEST);
+}
+
+// GL lighting with no ambient anywhere and the given material (specular black unless set).
+void material(glm::vec3 diffuse, glm::vec3 emission = glm::vec3(0.0f),
+              glm::vec3 ambient = glm::vec3(0.0f), glm::vec3 specular = glm::vec3(0.0f),
+              float shininess = 0.0f) {
+  glEnable(GL_LIGHTING);
+  const float black[] = {0, 0, 0, 1};
+  glLightModelfv(GL_LIGHT_MODEL_AMBIENT, black);
+  const float d[] = {diffuse.r, diffuse.g, diffuse.b, 1};
+  const float e[] = {emission.r, emission.g, emission.b, 1};
+  const float a[] = {ambient.r, ambient.g, ambient.b, 1};
+  const float s[] = {specular.r, specular.g, specular.b, 1};
+  glMaterialfv(GL_FRONT_AND_BACK, GL_DIFFUSE, d);
+  glMaterialfv(GL_FRONT_AND_BACK, GL_EMISSION, e);
+  glMaterialfv(GL_FRONT_AND_BACK, GL_AMBIENT, a);
+  glMaterialfv(GL_FRONT_AND_BACK, GL_SPECULAR, s);
+  glMaterialf(GL_FRONT_AND_BACK, GL_SHININESS, shininess);
+}
+
+// A quad with corners p0..p3 (counter-clockwise seen from where `normal` points).
+void quad(glm::vec3 p0, glm::vec3 p1, glm::vec3 p2, glm::vec3 p3) {
+  const glm::vec3 n = glm::normalize(glm::cross(p1 - p0, p3 - p0));
+  glBegin(GL_QUADS);
+  glNormal3f(n.x, n.y, n.z);
+  for (const glm::vec3& p : {p0, p1, p2, p3}) glVertex3f(p.x, p.y, p.z);
+  glEnd();
+}
+
+// The plane z = `z` facing +z, split into n x n quads over [-extent, extent]^2.
+void facing_plane(float z, float extent, int n = 4) {
+  const float step = 2 * extent / n;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      const float x = -extent + i * step, y = -extent + j * step;
+      quad({x, y, z}, {x + step, y, z}, {x + step, y + step, z}, {x, y + step, z});
+    }
+}
+
+// The eye-space point of the plane z = `z` seen through the centre of pixel (px, py).
+glm::vec3 on_plane(int px, int py, float z) {
+  const float nx = (px + 0.5f) / kSize * 2 - 1, ny = (py + 0.5f) / kSize * 2 - 1;
+  return {nx * kHalf * -z, ny * kHalf * -z, z};
+}
+
+// A positional light of diffuse colour `color` at `position` with GL's inverse-square
+// attenuation alone: a physical point (or sphere) light.
+void inverse_square_light(GLenum light, glm::vec3 position, glm::vec3 color) {
+  const float p[] = {position.x, position.y, position.z, 1};
+  const float c[] = {color.r, color.g, color.b, 1};
+  const float black[] = {0, 0, 0, 1};
+  glLightfv(light, GL_POSITION, p);
+  glLightfv(light, GL_DIFFUSE, c);
+  glLightfv(light, GL_SPECULAR, black);
+  glLightfv(light, GL_AMBIENT, black);
+  glLightf(light, GL_CONSTANT_ATTENUATION, 0.0f);
+  glLightf(light, GL_QUADRATIC_ATTENUATION, 1.0f);
+  glEnable(light);
+}
+
+// |measured - expected| <= relative * expected + steps (8-bit values).
+void expect_close(double measured, double expected, double relative, double steps,
+                  const std::string& where) {
+  EXPECT_LE(std::abs(measured - expected), relative * expected + steps)
+      << where << ": measured " << measured << ", expected " << expected;
+}
+
+// ---- emission and bounces ----------------------------------------------------------------------
+
+TEST(LightTransport, WhiteFurnace) {
+  // A closed cube of diffuse albedo a and uniform emission Le seen from inside: every path
+  // collects Le at each vertex, so the radiance is Le / (1 - a) everywhere (0.25 / 0.5 = 0.5).
+  auto scene = [] {
+    camera(0.1f);
+    material(glm::vec3(0.5f), glm::vec3(0.25f));
+    const float s = 1.0f;
+    // Six faces, each wound to face the inside.
+    quad({-s, -s, -s}, {s, -s, -s}, {s, s, -s}, {-s, s, -s});  // back (z = -s), facing +z
+    quad({-s, -s, s}, {-s, s, s}, {s, s, s}, {s, -s, s});      // front (z = +s), facing -z
+    quad({-s, -s, -s}, {-s, s, -s}, {-s, s, s}, {-s, -s, s});  // left, facing +x
+    quad({s, -s, -s}, {s, -s, s}, {s, s, s}, {s, s, -s});      // right, facing -x
+    quad({-s, -s, -s}, {-s, -s, s}, {s, -s, s}, {s, -s, -s});  // bottom, facing +y
+    quad({-s, s, -s}, {s, s, -s}, {s, s, s}, {-s, s, s});      // top, facing -y
+  };
+  // 12 bounces: the paths cut after them miss 0.5^13 of the light (0.01 %).
+  const Image image = render(path({{"GLPT_BOUNCES", "12"}, {"GLPT_SPP", "32"}}), scene, 8, "path");
+  std::printf("white furnace: image mean %.2f (expected 127.5)\n", image.mean());
+  expect_close(image.mean(), 0.5 * 255, 0.01, 0.0, "image mean");
+  // Per pixel, 256 paths, each of which collects Le at every vertex Russian roulette lets it
+  // reach (a geometric number of them): a standard deviation of about 4 %; within 15 %.
+  for (int y = 0; y < kSize; y += 7)
+    for (int x = 0; x < kSize; x += 7)
+      expect_close(image.at(x, y), 0.5 * 255, 0.15, 1.0,
+                   "pixel " + std::to_string(x) + "," + std::to_string(y));
+}
+
+TEST(LightTransport, EachBounceAddsLessThanTheOneBefore) {
+  // The same cube, not emitting, lit by a point light in its middle: bounce k adds light
+  // reflected k times, so the image grows with the bounce count by ever smaller steps (each
+  // order carries a = 0.5 of the one before, spread over the walls).
+  auto scene = [] {
+    camera(0.1f);
+    material(glm::vec3(0.5f));
+    inverse_square_light(GL_LIGHT0, {0.0f, 0.3f, 0.0f}, glm::vec3(0.25f));
+    const float s = 1.0f;
+    quad({-s, -s, -s}, {s, -s, -s}, {s, s, -s}, {-s, s, -s});
+    quad({-s, -s, s}, {-s, s, s}, {s, s, s}, {s, -s, s});
+    quad({-s, -s, -s}, {-s, s, -s}, {-s, s, s}, {-s, -s, s});
+    quad({s, -s, -s}, {s, -s, s}, {s, s, s}, {s, s, -s});
+    quad({-s, -s, -s}, {-s, -s, s}, {s, -s, s}, {s, -s, -s});
+    quad({-s, s, -s}, {s, s, -s}, {s, s, s}, {-s, s, s});
+  };
+  std::vector<double> means;
+  for (int bounces = 0; bounces <= 3; ++bounces) {
+    const Image image =
+        render(path({{"GLPT_BOUNCES", std::to_string(bounces)}, {"GLPT_SPP", "32"},
+                     {"GLPT_LIGHT_RADIUS", "0"}}),
+               scene, 4, ("bounces" + std::to_string(bounces)).c_str());
+    means.push_back(image.mean());
+  }
+  for (size_t k = 1; k < means.size(); ++k) EXPECT_GT(means[k], means[k - 1]) << k;
+  for (size_t k = 2; k < means.size(); ++k)
+    EXPECT_LT(means[k] - means[k - 1], means[k - 1] - means[k - 2]) << k;
+}
+
+// ---- lights ------------------------------------------------------------------------------------
+
+// Radiance of a Lambertian plane z = -5 (albedo 1) under a light of diffuse colour 3 at height 2
+// above its centre with inverse-square attenuation: GL's colour is irradiance / pi, so
+// L = E / pi = 3 cos(theta) / d^2. A sphere light fully above the horizon gives the same
+// irradiance as a point at its centre.
+double plane_radiance(int px, int py) {
+  const glm::vec3 p = on_plane(px, py, -5.0f);
+  const glm::vec3 light(0.0f, 0.0f, -3.0f);
+  const double d2 = glm::dot(light - p, light - p);
+  const double cosine = 2.0 / std::sqrt(d2);
+  return 3.0 * cosine / d2;
+}
+
+void plane_under_light() {
+  camera();
+  material(glm::vec3(1.0f));
+  inverse_square_light(GL_LIGHT0, {0.0f, 0.0f, -3.0f}, glm::vec3(3.0f));
+  facing_plane(-5.0f, 3.0f);
+}
+
+TEST(LightTransport, LambertianPlaneUnderAPointLight) {
+  const Image image =
+      render(path({{"GLPT_LIGHT_RADIUS", "0"}, {"GLPT_BOUNCES", "0"}}), plane_under_light, 1, "point");
+  for (int y = 1; y < kSize; y += 6)
+    for (int x = 1; x < kSize; x += 6)
+      expect_close(image.at(x, y), 255 * plane_radiance(x, y), 0.01, 1.0,
+                   "pixel " + std::to_string(x) + "," + std::to_string(y));
+}
+
+TEST(LightTransport, LambertianPlaneUnderASphereLight) {
+  const Image image = render(
+      path({{"GLPT_LIGHT_RADIUS", "0.6"}, {"GLPT_BOUNCES", "0"}, {"GLPT_SPP", "64"}}),
+      plane_under_light, 4, "sphere");
+  for (int y = 1; y < kSize; y += 6)
+    for (int x = 1; x < kSize; x += 6)
+      expect_close(image.at(x, y), 255 * plane_radiance(x, y), 0.01, 1.5,
+                   "pixel " + std::to_string(x) + "," + std::to_string(y));
+}
+
+TEST(LightTransport, ALitSceneWithoutLightsHasOnlyGlsAmbientAndEmission) {
+  auto scene = [] {
+    camera();
+    material(glm::vec3(1.0f), glm::vec3(0.1f, 0.2f, 0.3f));
+    facing_plane(-5.0f, 3.0f);
+  };
+  const Image image = render(path({}), scene, 1, "path");
+  EXPECT_NEAR(image.at(32, 32, 0), 26, 1);  // 0.1 * 255: no default light
+  EXPECT_NEAR(image.at(32, 32, 2), 77, 1);
+  const Image lit = render(path({{"GLPT_DEFAULT_LIGHT", "1"}}), scene, 1, "default_light");
+  EXPECT_GT(lit.at(32, 32, 0), 100);  // asked for: a white directional light
+}
+
+// ---- ambient occlusion -------------------------------------------------------------------------
+
+TEST(LightTransport, AmbientOcclusionOfAnOpenPlaneIsOne) {
+  auto scene = [] {
+    camera();
+    material(glm::vec3(0.0f), glm::vec3(0.0f), glm::vec3(0.8f));
+    const float white[] = {1, 1, 1, 1};
+    glLightModelfv(GL_LIGHT_MODEL_AMBIENT, white);
+    facing_plane(-5.0f, 3.0f);
+  };
+  const Image image = render(path({{"GLPT_SPP", "16"}}), scene, 2, "path");
+  for (int y = 0; y < kSize; y += 5)
+    for (int x = 0; x < kSize; x += 5) EXPECT_EQ(image.at(x, y), 204) << x << "," << y;
+}
+
+// The form factor from a point with normal n to a planar polygon fully above its horizon
+// (Lambert's formula): (1 / 2 pi) * sum over edges of the edge's angle times the cosine of its
+// plane with n.
+double polygon_form_factor(glm::dvec3 point, glm::dvec3 n, const std::vector<glm::dvec3>& polygon) {
+  double sum = 0;
+  for (size_t i = 0; i < polygon.size(); ++i) {
+    const glm::dvec3 a = glm::normalize(polygon[i] - point);
+    const glm::dvec3 b = glm::normalize(polygon[(i + 1) % polygon.size()] - point);
+    const glm::dvec3 c = glm::cross(a, b);
+    const double length = glm::length(c);
+    if (length < 1e-12) continue;
+    sum += std::acos(glm::clamp(glm::dot(a, b), -1.0, 1.0)) * glm::dot(n, c / length);
+  }
+  return std::abs(sum) / (2 * M_PI);
+}
+
+TEST(LightTransport, AmbientOcclusionOfARightAngleCorner) {
+  // A floor facing the camera (z = -5) and a wall standing on it at x = -1 (height 2, facing
+  // +x). A floor point at distance delta from the wall sees the wall over the form factor F of
+  // its rectangle, so its ambient visibility is 1 - F (at the crease 1/2).
+  const float kWallHeight = 2.0f;
+  auto scene = [&] {
+    camera();
+    material(glm::vec3(0.0f), glm::vec3(0.0f), glm::vec3(0.8f));
+    const float white[] = {1, 1, 1, 1};
+    glLightModelfv(GL_LIGHT_MODEL_AMBIENT, white);
+    facing_plane(-5.0f, 3.0f);
+    quad({-1, -3, -5}, {-1, 3, -5}, {-1, 3, -5 + kWallHeight}, {-1, -3, -5 + kWallHeight});
+  };
+  const Image image = render(path({{"GLPT_SPP", "64"}}), scene, 16, "path");
+  for (int px = 24; px < 48; px += 3) {
+    double measured = 0, expected = 0;
+    int n = 0;
+    for (int py = 22; py < 42; ++py) {
+      const glm::dvec3 p = on_plane(px, py, -5.0f);
+      if (p.x <= -1.0) continue;
+      const std::vector<glm::dvec3> wall = {
+          {-1, -3, -5}, {-1, 3, -5}, {-1, 3, -5 + kWallHeight}, {-1, -3, -5 + kWallHeight}};
+      expected += 0.8 * 255 * (1.0 - polygon_form_factor(p, {0, 0, 1}, wall));
+      measured += image.at(px, py);
+      ++n;
+    }
+    if (n == 0) continue;
+    expect_close(measured / n, expected / n, 0.02, 1.0,
+                 "column " + std::to_string(px) + " (delta " +
+                     std::to_string(on_plane(px, 32, -5.0f).x + 1.0f) + ")");
+  }
+}
+
+// ---- specular ----------------------------------------------------------------------------------
+
+TEST(LightTransport, MirrorLikeSurfaceReflectsAStripePattern) {
+  // A black surface of GL shininess 128 and white specular facing the camera at z = -5; just
+  // behind the camera, at z = +0.2, a wall of emissive vertical stripes 4 wide. The mirror pixel
+  // at x shows the wall at (1 + 5.2 / 5) x along the reflected ray, dimmed to GL's lobe
+  // reflectance 8 / 130 (15.7 / 255 for an emitter of 1) and blurred by the lobe's roughness
+  // (alpha = 0.12, a few tenths of a unit on the wall): the stripes show, each at its place.
+  auto scene = [] {
+    camera();
+    material(glm::vec3(0.0f), glm::vec3(0.0f), glm::vec3(0.0f), glm::vec3(1.0f), 128.0f);
+    facing_plane(-5.0f, 3.0f);
+    for (int stripe = -4; stripe < 4; ++stripe) {
+      const float e = (stripe & 1) == 0 ? 1.0f : 0.0f;
+      material(glm::vec3(0.0f), glm::vec3(e));
+      const float x0 = 4.0f * stripe, x1 = x0 + 4.0f;
+      quad({x0, -20, 0.2f}, {x0, 20, 0.2f}, {x1, 20, 0.2f}, {x1, -20, 0.2f});  // facing -z
+    }
+  };
+  const Image image = render(path({{"GLPT_SPP", "32"}, {"GLPT_BOUNCES", "1"}}), scene, 4, "path");
+  double bright = 0, dark = 0, all = 0;
+  int bright_n = 0, dark_n = 0, all_n = 0;
+  for (int px = 0; px < kSize; ++px) {
+    const float wall_x = 2.04f * on_plane(px, 32, -5.0f).x;
+    const float in_stripe = wall_x / 4.0f - std::floor(wall_x / 4.0f);
+    const bool emitting = (static_cast<int>(std::floor(wall_x / 4.0f)) & 1) == 0;
+    for (int py = 28; py < 36; ++py) {
+      all += image.at(px, py);
+      ++all_n;
+      if (in_stripe < 0.35f || in_stripe > 0.65f) continue;  // away from the stripes' edges
+      (emitting ? bright : dark) += image.at(px, py);
+      (emitting ? bright_n : dark_n) += 1;
+    }
+  }
+  ASSERT_GT(bright_n, 0);
+  ASSERT_GT(dark_n, 0);
+  bright /= bright_n;
+  dark /= dark_n;
+  all /= all_n;
+  std::printf("mirror: stripe centres %.1f (emitting) and %.1f (dark), mean %.1f\n", bright, dark,
+              all);
+  EXPECT_GT(bright, 3.0 * dark);
+  EXPECT_GE(bright, 10.0);
+  EXPECT_LE(bright, 15.7 + 1.5);  // never more than the lobe's reflectance
+  // Half the wall emits: the mirror's mean is half the reflectance (less the lobe's
+  // single-scattering loss, a few per cent at this roughness).
+  EXPECT_NEAR(all, 0.5 * 15.7, 1.5);
+}
+
+// ---- many lights -------------------------------------------------------------------------------
+
+// A floor of 10 x 10 tiles, each its own draw lit by 8 of 100 positional lights: tile i by the
+// lights i .. i + 7 (mod 100), of strengths spanning two orders of magnitude.
+void hundred_lights() {
+  camera();
+  material(glm::vec3(0.8f));
+  for (int tile = 0; tile < 100; ++tile) {
+    const int tx = tile % 10, ty = tile / 10;
+    const float x = -3.0f + 0.6f * tx, y = -3.0f + 0.6f * ty;
+    for (int k = 0; k < 8; ++k) {
+      const int l = (tile + k * 13) % 100;
+      const float lx = -3.0f + 0.6f * (l % 10) + 0.3f, ly = -3.0f + 0.6f * (l / 10) + 0.3f;
+      const float strength = 0.02f * std::pow(10.0f, 2.0f * ((l * 37) % 100) / 100.0f);
+      inverse_square_light(GL_LIGHT0 + k, {lx, ly, -4.0f}, glm::vec3(strength));
+    }
+    quad({x, y, -5}, {x + 0.6f, y, -5}, {x + 0.6f, y + 0.6f, -5}, {x, y + 0.6f, -5});
+  }
+}
+
+double mean_squared_difference(const Image& a, const Image& b) {
+  double sum = 0;
+  for (size_t i = 0; i < a.rgba.size(); i += 4) {
+    const double d = double(a.rgba[i]) - double(b.rgba[i]);
+    sum += d * d;
+  }
+  return sum / (a.rgba.size() / 4);
+}
+
+TEST(LightTransport, HundredLightsConvergeToLoopingOverAllWithLessNoiseThanUniformChoice) {
+  const Settings base = {{"GLPT_BOUNCES", "0"}, {"GLPT_LIGHT_RADIUS", "0.15"}};
+  auto with = [&](const char* choice, const char* spp, int frames) {
+    Settings s = path(base);
+    s.push_back({"GLPT_LIGHT_CHOICE", choice});
+    s.push_back({"GLPT_SPP", spp});
+    return render(s, hundred_lights, frames, choice);
+  };
+  const Image reference = with("all", "64", 4);
+  const Image contribution = with("contribution", "4", 1);
+  const Image uniform = with("uniform", "4", 1);
+  const Image contribution_converged = with("contribution", "64", 4);
+  // The same image in expectation: converged, the choice matches looping over every light.
+  EXPECT_NEAR(contribution_converged.mean(), reference.mean(), 0.01 * reference.mean() + 0.3);
+  EXPECT_LT(mean_squared_difference(contribution_converged, reference), 2.0);
+  // At equal samples (and equal shadow rays: one per sample), choosing by contribution is less
+  // noisy than choosing uniformly.
+  const double error_contribution = mean_squared_difference(contribution, reference);
+  const double error_uniform = mean_squared_difference(uniform, reference);
+  std::printf("100 lights, 4 spp: mean squared error %.2f (by contribution) vs %.2f (uniform), "
+              "ratio %.2f\n",
+              error_contribution, error_uniform, error_uniform / error_contribution);
+  EXPECT_LT(error_contribution, 0.5 * error_uniform);
+}
+
+// ---- GL parity ---------------------------------------------------------------------------------
+
+// A finely tessellated lit sphere (Gouraud interpolation then differs little from per-pixel
+// lighting) under a positional light with attenuation and a coloured directional spot, with
+// specular, two-sided lighting and a local viewer.
+void lit_sphere() {
+  camera();
+  glEnable(GL_LIGHTING);
+  glEnable(GL_NORMALIZE);
+  const float ambient[] = {0.1f, 0.1f, 0.15f, 1};
+  glLightModelfv(GL_LIGHT_MODEL_AMBIENT, ambient);
+  glLightModeli(GL_LIGHT_MODEL_LOCAL_VIEWER, GL_TRUE);
+  const float p0[] = {2, 2, -2, 1}, d0[] = {0.9f, 0.8f, 0.7f, 1}, a0[] = {0.05f, 0.05f, 0.05f, 1};
+  glLightfv(GL_LIGHT0, GL_POSITION, p0);
+  glLightfv(GL_LIGHT0, GL_DIFFUSE, d0);
+  glLightfv(GL_LIGHT0, GL_AMBIENT, a0);
+  glLightf(GL_LIGHT0, GL_LINEAR_ATTENUATION, 0.1f);
+  glEnable(GL_LIGHT0);
+  const float p1[] = {-1, 0.5f, 1, 0}, d1[] = {0.2f, 0.3f, 0.6f, 1};
+  glLightfv(GL_LIGHT1, GL_POSITION, p1);
+  glLightfv(GL_LIGHT1, GL_DIFFUSE, d1);
+  glLightfv(GL_LIGHT1, GL_SPECULAR, d1);
+  glEnable(GL_LIGHT1);
+  const float diffuse[] = {0.7f, 0.5f, 0.3f, 1}, specular[] = {0.6f, 0.6f, 0.6f, 1};
+  glMaterialfv(GL_FRONT, GL_DIFFUSE, diffuse);
+  glMaterialfv(GL_FRONT, GL_SPECULAR, specular);
+  glMaterialf(GL_FRONT, GL_SHININESS, 20.0f);
+  const int kRings = 96, kSegments = 192;
+  const float r = 1.5f;
+  const glm::vec3 c(0, 0, -5);
+  for (int i = 0; i < kRings; ++i) {
+    const float t0 = M_PI * i / kRings, t1 = M_PI * (i + 1) / kRings;
+    glBegin(GL_QUAD_STRIP);
+    for (int j = 0; j <= kSegments; ++j) {
+      const float phi = 2 * M_PI * j / kSegments;
+      for (float t : {t1, t0}) {
+        const glm::vec3 n(std::sin(t) * std::cos(phi), std::cos(t), std::sin(t) * std::sin(phi));
+        glNormal3f(n.x, n.y, n.z);
+        const glm::vec3 p = c + r * n;
+        glVertex3f(p.x, p.y, p.z);
+      }
+    }
+    glEnd();
+  }
+}
+
+double psnr(const Image& a, const Image& b) {
+  double sum = 0;
+  for (size_t i = 0; i < a.rgba.size(); ++i) {
+    if (i % 4 == 3) continue;
+    const double d = double(a.rgba[i]) - double(b.rgba[i]);
+    sum += d * d;
+  }
+  const double mse = sum / (a.rgba.size() / 4 * 3);
+  return mse == 0 ? 99.0 : 10 * std::log10(255.0 * 255.0 / mse);
+}
+
+TEST(LightTransport, WithoutShadowsBouncesAndAoThePathTracerIsGlsLighting) {
+  const Image gl = render({{"GLPT_MODE", "raster"}}, lit_sphere, 1, "raster");
+  const Image parity = render(
+      path({{"GLPT_SHADOWS", "0"}, {"GLPT_BOUNCES", "0"}, {"GLPT_AO", "0"}}), lit_sphere, 1,
+      "parity");
+  const double db = psnr(gl, parity);
+  std::printf("GL parity: PSNR %.1f dB against raster mode (= Mesa)\n", db);
+  EXPECT_GT(db, 40.0);
+}
+
+// ---- bad input ---------------------------------------------------------------------------------
+
+TEST(LightTransport, NonFiniteLightAndMaterialStatePutsNoNanIntoTheImage) {
+  auto scene = [] {
+    camera();
+    material(glm::vec3(0.8f));
+    const float nan = std::nanf(""), inf = INFINITY;
+    const float p[] = {nan, 0, -3, 1}, d[] = {inf, 1, 1, 1};
+    glLightfv(GL_LIGHT0, GL_POSITION, p);
+    glLightfv(GL_LIGHT0, GL_DIFFUSE, d);
+    glEnable(GL_LIGHT0);
+    facing_plane(-5.0f, 3.0f);
+    glBegin(GL_TRIANGLES);  // zero-area and zero-normal triangles
+    glNormal3f(0, 0, 0);
+    glVertex3f(0, 0, -4);
+    glVertex3f(0, 0, -4);
+    glVertex3f(1, 0, -4);
+    glEnd();
+  };
+  const Image image = render(path({{"GLPT_SPP", "4"}}), scene, 2, "path");
+  // Whatever GL makes of such a light, every pixel has a defined colour: the clear colour's
+  // black or the plane's; not the garbage a NaN would leave in the accumulation.
+  for (int y = 0; y < kSize; ++y)
+    for (int x = 0; x < kSize; ++x) ASSERT_EQ(image.at(x, y, 3), 255) << x << "," << y;
+}
+
+}  // namespace
