@@ -62,6 +62,9 @@ class Renderer::Impl {
     // the colour buffers, then the other draws are rasterized over the result.
     SceneOptions scene_options;
     scene_options.default_light = settings_.default_light;
+    scene_options.known_geometry = [this](uint64_t shape, uint64_t shading) {
+      return tracer_->holds_geometry(shape, shading);
+    };
     build_trace_scene(record, drawable, scene_, scene_options);
     if (!scene_.any_traced || drawable.width == 0 || drawable.height == 0) {
       // Nothing traced (e.g. the rest of a frame after a glReadPixels): raster mode. The

@@ -162,8 +162,10 @@ void light_sample(Surface s, Bsdf bsdf, Basis basis, vec3 v, LightChoice choice,
   bool area = view.one_minus_cos > 0.0;
   vec3 direction = area ? sample_cone(view.direction, view.one_minus_cos, u)
                         : view.direction;
+  // A direction below the flat triangle but above the smooth surface (near the terminator of a
+  // coarse mesh) is lit: its shadow ray leaves from the lifted origin (surface.h).
   vec3 l = to_local(basis, direction);
-  if (l.z <= 0.0 || dot(direction, s.offset_normal) <= 0.0) return;
+  if (l.z <= 0.0) return;
   vec3 f_diffuse = bsdf_lobe_cos(bsdf, GLPT_LOBE_DIFFUSE, v, l);
   vec3 f_specular = bsdf_lobe_cos(bsdf, GLPT_LOBE_SPECULAR, v, l);
   if (max3(f_diffuse + f_specular) <= 0.0) return;

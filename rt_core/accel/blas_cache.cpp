@@ -137,7 +137,7 @@ BlasPrepareStats BlasCache::prepare(std::span<const Geometry* const> geometries,
   pending.reserve(geometries.size());  // PendingBuild::geometry is pointed to: no reallocation
   std::unordered_map<uint64_t, const BlasEntry*> shapes;  // this frame's, built or found
   for (const Geometry* geometry : geometries) {
-    if (geometry == nullptr || geometry->triangle_count() == 0) continue;
+    if (geometry == nullptr || (geometry->triangle_count() == 0 && !geometry->resident)) continue;
     if (shapes.count(geometry->shape_hash)) continue;
     if (auto found = entries_.find(geometry->shape_hash); found != entries_.end()) {
       found->second->last_used_frame = frame_number;
@@ -145,6 +145,7 @@ BlasPrepareStats BlasCache::prepare(std::span<const Geometry* const> geometries,
       ++stats.reused;
       continue;
     }
+    if (geometry->resident) continue;  // not held after all: drawn without it this frame
     PendingBuild& build = pending.emplace_back();
     build.shape_hash = geometry->shape_hash;
     build.entry = create_entry(*geometry, build);
@@ -153,12 +154,13 @@ BlasPrepareStats BlasCache::prepare(std::span<const Geometry* const> geometries,
   }
   // Shading data needs only the shape's triangle order, known before the BLAS is built.
   for (const Geometry* geometry : geometries) {
-    if (geometry == nullptr || geometry->triangle_count() == 0) continue;
+    if (geometry == nullptr || (geometry->triangle_count() == 0 && !geometry->resident)) continue;
     const uint64_t key = shading_key(geometry->shape_hash, geometry->shading_hash);
     if (auto found = shading_.find(key); found != shading_.end()) {
       found->second->last_used_frame = frame_number;
       continue;
     }
+    if (geometry->resident || !shapes.count(geometry->shape_hash)) continue;
     std::unique_ptr<ShadingEntry> entry =
         create_shading(*geometry, *shapes.at(geometry->shape_hash));
     entry->last_used_frame = frame_number;
@@ -213,6 +215,10 @@ BlasPrepareStats BlasCache::prepare(std::span<const Geometry* const> geometries,
 const BlasEntry* BlasCache::find(uint64_t shape_hash) const {
   auto found = entries_.find(shape_hash);
   return found == entries_.end() ? nullptr : found->second.get();
+}
+
+bool BlasCache::holds(uint64_t shape_hash, uint64_t shading_hash) const {
+  return entries_.count(shape_hash) != 0 && shading_.count(shading_key(shape_hash, shading_hash)) != 0;
 }
 
 const ShadingEntry* BlasCache::find_shading(uint64_t shape_hash, uint64_t shading_hash) const {

@@ -61,10 +61,12 @@ class BlasCache {
 
   // Makes sure every geometry (with at least one triangle) has a BLAS entry for its shape and a
   // shading entry for its shading, building all missing BLASes in one submission. Duplicates
-  // count once. Throws VulkanError; entries whose build did not complete are not kept.
+  // count once. Resident geometries (no arrays) only mark their entries used. Throws VulkanError; entries whose build did not complete are not kept.
   BlasPrepareStats prepare(std::span<const Geometry* const> geometries, uint64_t frame_number);
 
   const BlasEntry* find(uint64_t shape_hash) const;
+  // Both the shape's BLAS and this shading of it are held.
+  bool holds(uint64_t shape_hash, uint64_t shading_hash) const;
   const ShadingEntry* find_shading(uint64_t shape_hash, uint64_t shading_hash) const;
   // Drops entries unused for kEvictAfterUnusedFrames, then, while over kMemoryBudgetBytes, the
   // least recently used ones not used in `frame_number`.

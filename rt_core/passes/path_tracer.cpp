@@ -200,7 +200,7 @@ void PathTracer::build_scene_setup(const TraceScene& scene, SceneSetup& setup) c
   setup.scene_bounds = EyeBounds();
   setup.triangles = 0;
   for (const Instance& instance : scene.instances) {
-    if (!instance.geometry || instance.geometry->triangle_count() == 0) continue;
+    if (!instance.geometry) continue;
     const Geometry& geometry = *instance.geometry;
     const BlasEntry* entry = blas_cache_.find(geometry.shape_hash);
     const ShadingEntry* shading =

@@ -56,6 +56,10 @@ class PathTracer {
   void trace(const TraceScene& scene, const TraceTargets& targets, FrameStats& stats);
   // After a failure, or a frame that traced nothing: the next frame starts a new accumulation.
   void forget_previous_frame() noexcept;
+  // Whether a geometry of these hashes is held (the scene builder then need not decompose it).
+  bool holds_geometry(uint64_t shape_hash, uint64_t shading_hash) const {
+    return blas_cache_.holds(shape_hash, shading_hash);
+  }
   // A frame that must not depend on the frames rendered before it (glpt-replay's shards render
   // every nth frame and must give the same pixels as a whole replay): accumulation restarts and
   // the random sequence of this and the following records is seeded by `frame_index` instead of

@@ -132,15 +132,38 @@ uint32_t intern(std::vector<Material>& materials, const Material& m) {
   return static_cast<uint32_t>(materials.size() - 1);
 }
 
+// The parts of a draw's lighting state that make its materials (material_of), hashed: with the
+// vertex data's attribute key (which covers per-vertex materials) this identifies a geometry's
+// shading without decomposing it.
+void add_material_state(ContentHash& hash, const rec::LightingState& lighting,
+                        bool per_vertex_materials) {
+  const uint32_t flags = (lighting.enabled ? 1u : 0u) | (lighting.color_material ? 2u : 0u) |
+                         (lighting.two_side ? 4u : 0u);
+  hash.add_bytes(&flags, sizeof flags);
+  if (!lighting.enabled) return;
+  hash.add_bytes(&lighting.color_material_face, sizeof lighting.color_material_face);
+  hash.add_bytes(&lighting.color_material_mode, sizeof lighting.color_material_mode);
+  if (per_vertex_materials) return;
+  for (const rec::Material& m : lighting.material) {
+    hash.add_bytes(&m.ambient, sizeof m.ambient);
+    hash.add_bytes(&m.diffuse, sizeof m.diffuse);
+    hash.add_bytes(&m.specular, sizeof m.specular);
+    hash.add_bytes(&m.emission, sizeof m.emission);
+    hash.add_bytes(&m.shininess, sizeof m.shininess);
+  }
+}
+
 // Consecutive traced draws with one modelview and one light set become one Geometry (one BLAS).
 // Draws under a projective modelview are transformed to eye space here and batched under the
-// identity.
+// identity. A batch's identity (shape and shading hashes) comes from its draws' content keys
+// alone; only a batch the tracer does not already hold (`known`) is decomposed into triangles,
+// so unchanged geometry is not decomposed, copied or hashed again frame after frame.
 class Batcher {
  public:
-  explicit Batcher(std::vector<Instance>& instances) : instances_(instances) {}
+  Batcher(std::vector<Instance>& instances, const KnownGeometry& known, rec::Decomposed& scratch)
+      : instances_(instances), known_(known), scratch_(scratch) {}
 
-  void add(const rec::Draw& draw, const rec::StateSnapshot& state, uint32_t state_index,
-           rec::Decomposed& scratch) {
+  void add(const rec::Draw& draw, const rec::StateSnapshot& state) {
     const rec::TransformState& transform = *state.transform;
     const bool projective = is_projective(transform.modelview);
     const glm::mat4 modelview = projective ? glm::mat4(1.0f) : transform.modelview;
@@ -148,32 +171,66 @@ class Batcher {
                   !same_light_set(*state.lighting, *open_lighting_)))
       close();
     if (!open_) {
-      open_ = std::make_unique<Geometry>();
+      open_ = true;
       open_modelview_ = modelview;
       open_lighting_ = state.lighting;
-      open_state_ = state_index;
+      open_state_ = draw.state;
       shape_ = ContentHash();
       shading_ = ContentHash();
+      draws_.clear();
     }
     const rec::VertexData& v = *draw.vertices;
-    scratch.clear();
-    rec::decompose(v, scratch);
+    const bool flat = state.raster->primitive.shade_model == GL_FLAT;
+    const rec::VertexKeys& keys = v.keys();
+    shape_.add_bytes(&keys.geometry, sizeof keys.geometry);
+    shading_.add_bytes(&keys.attributes, sizeof keys.attributes);
+    shading_.add_bytes(&flat, sizeof flat);
+    add_material_state(shading_, *state.lighting, !v.material.empty());
+    if (projective) {
+      shape_.add_bytes(&transform.modelview, sizeof transform.modelview);
+      shading_.add_bytes(&transform.modelview, sizeof transform.modelview);
+    }
+    draws_.push_back({&draw, &state});
+  }
+
+  void close() {
+    if (!open_) return;
+    open_ = false;
+    auto geometry = std::make_shared<Geometry>();
+    geometry->shape_hash = shape_.value();
+    geometry->shading_hash = shading_.value();
+    if (known_ && known_(geometry->shape_hash, geometry->shading_hash)) {
+      geometry->resident = true;
+    } else {
+      for (const OpenDraw& d : draws_) append_triangles(*d.draw, *d.state, *geometry);
+      if (geometry->positions.empty()) return;
+    }
+    instances_.push_back({std::move(geometry), open_modelview_, open_state_});
+    open_lighting_.reset();
+  }
+
+ private:
+  void append_triangles(const rec::Draw& draw, const rec::StateSnapshot& state, Geometry& g) {
+    const rec::TransformState& transform = *state.transform;
+    const bool projective = is_projective(transform.modelview);
+    const rec::VertexData& v = *draw.vertices;
+    scratch_.clear();
+    rec::decompose(v, scratch_);
     const bool flat = state.raster->primitive.shade_model == GL_FLAT;
     const rec::LightingState& lighting = *state.lighting;
     // Two-sided lighting gives faces seen from behind the back material (GL 1.5 2.14.1).
     const bool two_side = lighting.enabled && lighting.two_side;
     auto material_pair = [&](const std::array<rec::Material, 2>& pair) {
       Material front = material_of(lighting, pair[0], false);
-      if (two_side) front.back = intern(open_->materials, material_of(lighting, pair[1], true));
-      return intern(open_->materials, front);
+      if (two_side) front.back = intern(g.materials, material_of(lighting, pair[1], true));
+      return intern(g.materials, front);
     };
     const uint32_t shared_material = v.material.empty() ? material_pair(lighting.material) : 0;
     // GL's normal transform (the inverse transpose of the modelview) for eye-space normals.
     const glm::mat3 normal_matrix = glm::transpose(glm::mat3(transform.modelview_inverse));
-    Geometry& g = *open_;
     const glm::vec3 kDefaultNormal(0, 0, 1);
     const glm::vec4 kDefaultColor(1.0f);
-    for (const rec::DecomposedTriangle& t : scratch.triangles) {
+    for (const rec::DecomposedTriangle& t : scratch_.triangles) {
       glm::vec3 p[3];
       bool ok = true;
       for (int k = 0; k < 3; ++k) {
@@ -192,43 +249,21 @@ class Batcher {
         g.normals.push_back(projective ? normal_matrix * normal : normal);
         g.colors.push_back(rec::attribute_at(v.color, src, kDefaultColor));
       }
-      g.material_ids.push_back(
-          v.material.empty()
-              ? shared_material
-              : material_pair(v.material[provoking]));
-    }
-    const rec::VertexKeys& keys = v.keys();
-    shape_.add_bytes(&keys.geometry, sizeof keys.geometry);
-    shading_.add_bytes(&keys.attributes, sizeof keys.attributes);
-    shading_.add_bytes(&flat, sizeof flat);
-    if (projective) {
-      shape_.add_bytes(&transform.modelview, sizeof transform.modelview);
-      shading_.add_bytes(&transform.modelview, sizeof transform.modelview);
+      g.material_ids.push_back(v.material.empty() ? shared_material
+                                                  : material_pair(v.material[provoking]));
     }
   }
 
-  void close() {
-    if (!open_) return;
-    if (!open_->positions.empty()) {
-      for (const Material& m : open_->materials) {
-        shading_.add_bytes(&m.ambient, sizeof(glm::vec4) * 4);
-        shading_.add_bytes(&m.shininess, sizeof m.shininess);
-        const uint32_t flags = (m.lit ? 1u : 0u) | (static_cast<uint32_t>(m.color_source) << 1);
-        shading_.add_bytes(&flags, sizeof flags);
-        shading_.add_bytes(&m.back, sizeof m.back);
-      }
-      open_->shape_hash = shape_.value();
-      open_->shading_hash = shading_.value();
-      instances_.push_back(
-          {std::shared_ptr<const Geometry>(std::move(open_)), open_modelview_, open_state_});
-    }
-    open_.reset();
-    open_lighting_.reset();
-  }
+  struct OpenDraw {
+    const rec::Draw* draw;
+    const rec::StateSnapshot* state;
+  };
 
- private:
   std::vector<Instance>& instances_;
-  std::unique_ptr<Geometry> open_;
+  const KnownGeometry& known_;
+  rec::Decomposed& scratch_;
+  bool open_ = false;
+  std::vector<OpenDraw> draws_;
   glm::mat4 open_modelview_{1.0f};
   std::shared_ptr<const rec::LightingState> open_lighting_;
   uint32_t open_state_ = 0;
@@ -340,8 +375,8 @@ void build_trace_scene(const rec::FrameRecord& record, const rec::DrawableConfig
   scene.states.resize(record.states.size());
 
   const MainCamera camera = find_main_camera(record, drawable);
-  Batcher batcher(scene.instances);
   rec::Decomposed scratch;
+  Batcher batcher(scene.instances, options.known_geometry, scratch);
   std::vector<uint8_t> state_used(record.states.size(), 0);
   for (size_t i = 0; i < record.commands.size(); ++i) {
     const rec::Command& command = record.commands[i];
@@ -368,7 +403,7 @@ void build_trace_scene(const rec::FrameRecord& record, const rec::DrawableConfig
     out.traced[i] = 1;
     out.gbuffer_pass.push_back(i);
     state_used[draw->state] = 1;
-    batcher.add(*draw, state, draw->state, scratch);
+    batcher.add(*draw, state);
   }
   batcher.close();
 

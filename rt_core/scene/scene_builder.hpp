@@ -26,6 +26,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "rt_core/record/frame_record.hpp"
@@ -62,10 +63,15 @@ struct SceneBuild {
   bool any_traced = false;
 };
 
+// Whether the tracer already holds the acceleration structure and shading data of a geometry
+// (its shape and shading hashes): such geometry is not decomposed again (Geometry::resident).
+using KnownGeometry = std::function<bool(uint64_t shape_hash, uint64_t shading_hash)>;
+
 struct SceneOptions {
   // A lit scene without any enabled light gets default_light() (GLPT_DEFAULT_LIGHT=1); by
   // default it is lit by GL's ambient and emission alone, as GL lights it.
   bool default_light = false;
+  KnownGeometry known_geometry;  // empty: every geometry is decomposed
 };
 
 void build_trace_scene(const rec::FrameRecord& record, const rec::DrawableConfig& drawable,

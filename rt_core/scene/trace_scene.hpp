@@ -56,6 +56,9 @@ struct Geometry {
   uint64_t shape_hash = 0;
   // Identity of the shading data (normals, colours, materials) of that shape.
   uint64_t shading_hash = 0;
+  // The arrays are left empty because the tracer holds this shape and shading already (found by
+  // their hashes, scene_builder.hpp: KnownGeometry).
+  bool resident = false;
 
   size_t triangle_count() const { return positions.size() / 3; }
 };

@@ -587,6 +587,44 @@ TEST(SceneBuilder, ProjectiveModelviewsGoToTheBlasInEyeSpace) {
   EXPECT_EQ(instance.geometry->positions[2], glm::vec3(0, 1, -1));  // (0, 2, -2) / w = 2
 }
 
+TEST(SceneBuilder, GeometryTheTracerHoldsIsNotDecomposedAgain) {
+  RecordBuilder b(16, 16);
+  b.transform.projection = glm::perspective(1.0f, 1.0f, 0.1f, 10.0f);
+  b.lighting.enabled = true;
+  b.quad({-1, -1, -3}, {2, 0, 0}, {0, 2, 0}, glm::vec4(1));
+  b.transform.modelview = glm::translate(glm::mat4(1.0f), glm::vec3(1, 0, 0));
+  b.quad({-1, -1, -3}, {2, 0, 0}, {0, 2, 0}, glm::vec4(0.5f));
+  SceneBuild fresh, held;
+  build_trace_scene(b.record, b.drawable, fresh);
+  std::vector<std::pair<uint64_t, uint64_t>> asked;
+  SceneOptions options;
+  options.known_geometry = [&](uint64_t shape, uint64_t shading) {
+    asked.emplace_back(shape, shading);
+    return true;
+  };
+  build_trace_scene(b.record, b.drawable, held, options);
+  ASSERT_EQ(fresh.scene.instances.size(), 2u);
+  ASSERT_EQ(held.scene.instances.size(), 2u);
+  ASSERT_EQ(asked.size(), 2u);
+  for (size_t i = 0; i < 2; ++i) {
+    const Geometry& a = *fresh.scene.instances[i].geometry;
+    const Geometry& h = *held.scene.instances[i].geometry;
+    EXPECT_FALSE(a.resident);
+    EXPECT_EQ(a.triangle_count(), 2u);
+    // The identity does not depend on whether the triangles were made.
+    EXPECT_EQ(h.shape_hash, a.shape_hash);
+    EXPECT_EQ(h.shading_hash, a.shading_hash);
+    EXPECT_EQ(asked[i], std::make_pair(a.shape_hash, a.shading_hash));
+    EXPECT_TRUE(h.resident);
+    EXPECT_TRUE(h.positions.empty() && h.normals.empty() && h.colors.empty());
+  }
+  // The two quads share a shape (same vertices, other modelview) but not a shading.
+  EXPECT_EQ(fresh.scene.instances[0].geometry->shape_hash,
+            fresh.scene.instances[1].geometry->shape_hash);
+  EXPECT_NE(fresh.scene.instances[0].geometry->shading_hash,
+            fresh.scene.instances[1].geometry->shading_hash);
+}
+
 TEST(SceneBuilder, ShapeIdentityIgnoresColoursAndMaterials) {
   auto build_with = [](glm::vec4 color, float shininess) {
     RecordBuilder b(16, 16);
