@@ -4,9 +4,12 @@
 #include <cstring>
 #include <string_view>
 
+#include "quality_flags.hpp"
 #include "rt_core/render_settings.hpp"
 
 namespace glpt::replay {
+
+namespace {
 
 const char* const kUsage =
     "usage: glpt-replay [options] TRACE\n"
@@ -20,18 +23,15 @@ const char* const kUsage =
     "  --shard I/N          render only the chosen frames f with f % N == I, replaying the\n"
     "                       state of all; N shards write exactly the frames of one replay\n"
     "  --backend glpt|mesa  glpt (default) or real Mesa through OSMesa (the reference images)\n"
-    "  --mode path|raster   glpt's rendering mode (GLPT_MODE; default path)\n"
-    "  --spp N              samples per pixel per frame (GLPT_SPP)\n"
-    "  --bounces N          diffuse bounces (GLPT_BOUNCES)\n"
-    "  --max-spp N          at most N samples per pixel (GLPT_MAX_SPP)\n"
-    "  --light-size-deg D   angular radius of GL lights (GLPT_LIGHT_SIZE_DEG)\n"
-    "  --device SUBSTR      Vulkan device by name (GLPT_VK_DEVICE)\n"
-    "  --validation         Khronos validation layer (GLPT_VALIDATION=1)\n"
+    "  --device SUBSTR      Vulkan device by name (GLPT_VK_DEVICE; also --vk-device)\n"
     "  --window             show the frames in a window (keys: space pause/resume, n or Right\n"
     "                       step one frame, q or Esc quit); needs a display\n"
     "  --paused             with --window: start paused (waiting at the first frame)\n"
     "  --quiet              no per-frame lines or progress\n"
     "  --help               this text\n"
+    "\n"
+    "glpt's settings, the same flags as `glpt run` (each sets the GLPT_* variable named):\n"
+    "%QUALITY_FLAGS%"
     "\n"
     "Every written frame is rendered from the same start (no accumulation across frames, its\n"
     "random numbers seeded by its index), so it does not depend on which frames were rendered\n"
@@ -40,8 +40,6 @@ const char* const kUsage =
     "\n"
     "exit status: 0 ok, 1 replay failed (no renderer, cannot write PNG), 2 bad usage,\n"
     "3 bad trace (cannot be read, or corrupt: the frames before the damage are written)\n";
-
-namespace {
 
 struct Flag {
   const char* name;
@@ -59,20 +57,41 @@ constexpr Flag kFlags[] = {
     {"--window", nullptr, false},
     {"--paused", nullptr, false},
     {"--help", nullptr, false},
-    {"--mode", "GLPT_MODE", true},
-    {"--spp", "GLPT_SPP", true},
-    {"--bounces", "GLPT_BOUNCES", true},
-    {"--max-spp", "GLPT_MAX_SPP", true},
-    {"--light-size-deg", "GLPT_LIGHT_SIZE_DEG", true},
     {"--device", "GLPT_VK_DEVICE", true},
-    {"--validation", "GLPT_VALIDATION", false},
 };
 
 }  // namespace
 
+std::string usage() {
+  std::string text = kUsage;
+  const std::string marker = "%QUALITY_FLAGS%";
+  text.replace(text.find(marker), marker.size(), cli::quality_flags_help("  "));
+  return text;
+}
+
 bool parse_command_line(int argc, const char* const* argv, Options* options, std::string* error) {
+  const std::vector<std::string> args(argv, argv + argc);
   for (int i = 1; i < argc; ++i) {
     std::string_view arg = argv[i];
+    const std::string_view name = arg.substr(0, arg.find('='));
+    bool own = false;
+    for (const Flag& f : kFlags) own = own || name == f.name;
+    if (!own && arg.rfind("--", 0) == 0 && arg != "--") {
+      // glpt's settings: the table `glpt run` uses too.
+      size_t index = static_cast<size_t>(i);
+      cli::EnvSettings quality;
+      switch (cli::parse_quality_flag(args, &index, &quality, error)) {
+        case cli::FlagParse::kParsed:
+          options->environment.insert(options->environment.end(), quality.begin(),
+                                      quality.end());
+          i = static_cast<int>(index) - 1;
+          continue;
+        case cli::FlagParse::kError:
+          return false;
+        case cli::FlagParse::kNotAQualityFlag:
+          break;
+      }
+    }
     std::string value;
     const size_t equals = arg.find('=');
     const bool inline_value = arg.rfind("--", 0) == 0 && equals != std::string_view::npos;

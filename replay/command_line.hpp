@@ -30,7 +30,8 @@ struct Options {
   std::vector<std::pair<std::string, std::string>> environment;
 };
 
-extern const char* const kUsage;
+// The --help text (with the quality flags' table, replay/cli/quality_flags.hpp).
+std::string usage();
 
 // False + message for bad usage.
 bool parse_command_line(int argc, const char* const* argv, Options* options, std::string* error);

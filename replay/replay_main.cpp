@@ -182,11 +182,11 @@ int main(int argc, char** argv) {
   Options options;
   std::string error;
   if (!parse_command_line(argc, argv, &options, &error)) {
-    std::fprintf(stderr, "glpt-replay: %s\n%s", error.c_str(), kUsage);
+    std::fprintf(stderr, "glpt-replay: %s\n%s", error.c_str(), usage().c_str());
     return kExitUsage;
   }
   if (options.help) {
-    std::fputs(kUsage, stdout);
+    std::fputs(usage().c_str(), stdout);
     return kExitOk;
   }
   try {

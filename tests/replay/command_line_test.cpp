@@ -59,6 +59,21 @@ TEST(CommandLine, QualityFlagsBecomeTheRenderersVariables) {
   using Env = std::vector<std::pair<std::string, std::string>>;
   EXPECT_EQ(o.environment,
             (Env{{"GLPT_MODE", "raster"}, {"GLPT_SPP", "4"}, {"GLPT_VALIDATION", "1"}}));
+
+  // The same table as `glpt run`: the light-transport knobs and the reference.
+  Options knobs;
+  ASSERT_TRUE(parse({"--shadows", "0", "--bounces", "0", "--ao=0", "--reference", "256",
+                     "--unlit", "ao", "--quiet", "x.trace"},
+                    &knobs, &error))
+      << error;
+  EXPECT_TRUE(knobs.quiet);  // glpt-replay's own --quiet, not GLPT_QUIET
+  EXPECT_EQ(knobs.environment, (Env{{"GLPT_SHADOWS", "0"},
+                                    {"GLPT_BOUNCES", "0"},
+                                    {"GLPT_AO", "0"},
+                                    {"GLPT_REFERENCE", "256"},
+                                    {"GLPT_UNLIT", "ao"}}));
+  EXPECT_NE(glpt::replay::usage().find("--reference N"), std::string::npos);
+  EXPECT_EQ(glpt::replay::usage().find("%QUALITY_FLAGS%"), std::string::npos);
 }
 
 TEST(CommandLine, BadUsageIsRejected) {
@@ -74,6 +89,7 @@ TEST(CommandLine, BadUsageIsRejected) {
       {"--bogus", "a.trace"},
       {"a.trace", "--out"},  // missing value
       {"--quiet=1", "a.trace"},
+      {"--unlit", "glow", "a.trace"},  // not one of keep|ao|emit
   };
   for (const auto& args : bad) {
     Options o;

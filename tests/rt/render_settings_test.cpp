@@ -67,5 +67,56 @@ TEST(RenderSettings, BadValuesKeepDefaultsAndWarnOnce) {
   EXPECT_EQ(warning.find('\n'), std::string::npos);  // one line
 }
 
+TEST(RenderSettings, LightTransportKnobs) {
+  std::string warning;
+  RenderSettings defaults = parse({}, &warning);
+  EXPECT_TRUE(defaults.shadows);
+  EXPECT_TRUE(defaults.ambient_occlusion);
+  EXPECT_EQ(defaults.ao_radius, 0.0f);
+  EXPECT_LT(defaults.light_radius, 0.0f);  // automatic
+  EXPECT_EQ(defaults.unlit, UnlitPolicy::kKeep);
+  EXPECT_FALSE(defaults.default_light);
+  EXPECT_EQ(defaults.environment, Environment::kBlack);
+  EXPECT_EQ(defaults.light_choice, LightChoice::kContribution);
+  EXPECT_EQ(defaults.reference_samples, 0u);
+  EXPECT_FALSE(defaults.gl_parity());
+
+  RenderSettings set = parse({{"GLPT_SHADOWS", "0"},
+                              {"GLPT_AO", "0"},
+                              {"GLPT_BOUNCES", "0"},
+                              {"GLPT_AO_RADIUS", "2.5"},
+                              {"GLPT_LIGHT_RADIUS", "0"},
+                              {"GLPT_UNLIT", "emit"},
+                              {"GLPT_DEFAULT_LIGHT", "1"},
+                              {"GLPT_ENVIRONMENT", "clear"},
+                              {"GLPT_LIGHT_CHOICE", "all"},
+                              {"GLPT_REFERENCE", "1024"}},
+                             &warning);
+  EXPECT_TRUE(warning.empty()) << warning;
+  EXPECT_TRUE(set.gl_parity());
+  EXPECT_EQ(set.ao_radius, 2.5f);
+  EXPECT_EQ(set.light_radius, 0.0f);
+  EXPECT_EQ(set.unlit, UnlitPolicy::kEmit);
+  EXPECT_TRUE(set.default_light);
+  EXPECT_EQ(set.environment, Environment::kClear);
+  EXPECT_EQ(set.light_choice, LightChoice::kAll);
+  EXPECT_EQ(set.reference_samples, 1024u);
+
+  RenderSettings bad = parse({{"GLPT_UNLIT", "glow"},
+                              {"GLPT_AO_RADIUS", "-1"},
+                              {"GLPT_LIGHT_RADIUS", "inf"},
+                              {"GLPT_ENVIRONMENT", "sky"},
+                              {"GLPT_REFERENCE", "100000000"}},
+                             &warning);
+  EXPECT_EQ(bad.unlit, UnlitPolicy::kKeep);
+  EXPECT_EQ(bad.ao_radius, 0.0f);
+  EXPECT_LT(bad.light_radius, 0.0f);
+  EXPECT_EQ(bad.environment, Environment::kBlack);
+  EXPECT_EQ(bad.reference_samples, 0u);
+  for (const char* name :
+       {"GLPT_UNLIT", "GLPT_AO_RADIUS", "GLPT_LIGHT_RADIUS", "GLPT_ENVIRONMENT", "GLPT_REFERENCE"})
+    EXPECT_NE(warning.find(name), std::string::npos) << name << " missing from: " << warning;
+}
+
 }  // namespace
 }  // namespace glpt::rt

@@ -444,6 +444,48 @@ TEST_F(RenderTest, StopsAtMaxAccumulatedAndCanDisableAccumulation) {
   EXPECT_EQ(render_with(*renderer, b).stats.accumulated_samples, 1u);
 }
 
+// An unlit white quad whose left edge is at x = 20.7 under a pixel-exact orthographic camera:
+// pixel column 20 is 30 % covered.
+RecordBuilder partly_covered_pixel() {
+  RecordBuilder b(kSize, kSize);
+  b.transform.projection = glm::ortho(0.0f, float(kSize), 0.0f, float(kSize), -1.0f, 1.0f);
+  b.clear(glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+  b.quad({20.7f, 10, 0}, {20, 0, 0}, {0, 20, 0}, glm::vec4(1.0f));
+  return b;
+}
+
+TEST_F(RenderTest, JitterCoversThePixelAtAnySampleCount) {
+  // With 4 samples per frame the sub-pixel offsets are indexed by the G-buffers accumulated, so
+  // 32 frames cover the pixel evenly and the edge pixel converges to 30 % of the quad's colour
+  // (indexed by the sample count, the offsets stayed in a quarter of the pixel: 0 here).
+  RenderSettings settings;
+  settings.samples_per_pixel = 4;
+  std::string error;
+  auto renderer = make_renderer(settings, &error);
+  ASSERT_NE(renderer, nullptr) << error;
+  const RecordBuilder b = partly_covered_pixel();
+  Image image;
+  for (int frame = 0; frame < 32; ++frame) image = render_with(*renderer, b);
+  EXPECT_EQ(image.stats.accumulated_samples, 128u);
+  EXPECT_NEAR(image.at(20, 20).r, 0.3 * 255, 10) << image.at(20, 20);
+  EXPECT_EQ(image.at(21, 20).r, 255);
+}
+
+TEST_F(RenderTest, ReferenceRendersItsSamplesEveryFrameFromScratch) {
+  RenderSettings settings;
+  settings.reference_samples = 32;
+  std::string error;
+  auto renderer = make_renderer(settings, &error);
+  ASSERT_NE(renderer, nullptr) << error;
+  const RecordBuilder b = partly_covered_pixel();
+  for (int frame = 0; frame < 2; ++frame) {
+    const Image image = render_with(*renderer, b);
+    EXPECT_EQ(image.stats.accumulated_samples, 32u) << "frame " << frame;
+    // 32 jittered G-buffer passes within the one frame: the edge pixel is anti-aliased already.
+    EXPECT_NEAR(image.at(20, 20).r, 0.3 * 255, 12) << image.at(20, 20);
+  }
+}
+
 TEST_F(RenderTest, AccumulationAntiAliasesEdgesAndKeepsInteriorsExact) {
   // An unlit quad whose left edge crosses pixel column 20 at its middle: every frame's G-buffer
   // is jittered by a sub-pixel offset, so the edge pixel converges to a mix of quad and
