@@ -21,6 +21,27 @@ struct FrameStats {
   uint32_t resident_draws = 0;
   uint32_t pipelines_created = 0;  // raster pipelines compiled for this record (0 once warm)
   uint32_t inexpressible = 0;      // commands drawn approximately (state raster cannot express)
+
+  // Adds another record's (or pass's) costs and counts; the samples are the later one's.
+  FrameStats& operator+=(const FrameStats& s) {
+    upload_ms += s.upload_ms;
+    blas_ms += s.blas_ms;
+    tlas_ms += s.tlas_ms;
+    trace_ms += s.trace_ms;
+    readback_ms += s.readback_ms;
+    raster_ms += s.raster_ms;
+    blas_builds += s.blas_builds;
+    blas_reused += s.blas_reused;
+    triangles += s.triangles;
+    rays += s.rays;
+    non_finite_samples += s.non_finite_samples;
+    accumulated_samples = s.accumulated_samples;
+    draws += s.draws;
+    resident_draws += s.resident_draws;
+    pipelines_created += s.pipelines_created;
+    inexpressible += s.inexpressible;
+    return *this;
+  }
 };
 
 }  // namespace glpt::rt

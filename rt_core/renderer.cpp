@@ -96,16 +96,9 @@ class Renderer::Impl {
         last = !tracer_->next_reference_pass(&next_jitter);
         if (!last && queries != nullptr) *queries = counted_before;  // the last pass counts
         jitter = next_jitter;
-        stats.upload_ms += traced.upload_ms;
-        stats.blas_ms += traced.blas_ms;
-        stats.tlas_ms += traced.tlas_ms;
-        stats.trace_ms += traced.trace_ms;
-        stats.blas_builds += traced.blas_builds;
-        stats.blas_reused += traced.blas_reused;
-        stats.triangles = traced.triangles;
-        stats.rays += traced.rays;
-        stats.non_finite_samples += traced.non_finite_samples;
-        stats.accumulated_samples = traced.accumulated_samples;
+        // Every reference pass traces the same triangles: count them once.
+        stats.triangles = 0;
+        stats += traced;
       }
     } catch (...) {
       tracer_->forget_previous_frame();  // nothing about this frame's accumulation holds

@@ -3,7 +3,7 @@
 #                             [--work DIR]
 #
 # GL parity of path-traced mode on real lit GL 1.x programs (docs/light-transport.md): records
-# each xscreensaver hack with apitrace on real Mesa in a private Xvfb (S seconds), then replays
+# each xscreensaver hack (which draw through EGL) with apitrace on real Mesa in a private Xvfb (S seconds), then replays
 # frame F of the trace through Mesa (OSMesa, the reference), through glpt's path tracer with
 # --shadows 0 --bounces 0 --ao 0 (GL's lighting equation per pixel) and with the defaults, and
 # prints FLIP and PSNR of each against Mesa (`glpt diff`). The traces and PNGs stay in DIR
@@ -43,7 +43,7 @@ for hack in $hacks; do
   [ -x "$program" ] || { echo "$hack: not installed (xscreensaver-gl)"; continue; }
   trace=$work/$hack.trace
   if [ ! -f "$trace" ]; then
-    DISPLAY=$display timeout -s INT "$seconds" apitrace trace --api gl -o "$trace" "$program" \
+    DISPLAY=$display timeout -s INT "$seconds" apitrace trace --api egl -o "$trace" "$program" \
       >/dev/null 2>&1 || true
   fi
   "$replay" --quiet --backend mesa --frames "$frame" --out "$work/$hack.mesa" "$trace"

@@ -10,28 +10,6 @@
 #include "common/image_io.hpp"
 
 namespace glpt {
-namespace {
-
-void add(rt::FrameStats& sum, const rt::FrameStats& s) {
-  sum.upload_ms += s.upload_ms;
-  sum.blas_ms += s.blas_ms;
-  sum.tlas_ms += s.tlas_ms;
-  sum.trace_ms += s.trace_ms;
-  sum.readback_ms += s.readback_ms;
-  sum.raster_ms += s.raster_ms;
-  sum.blas_builds += s.blas_builds;
-  sum.blas_reused += s.blas_reused;
-  sum.triangles += s.triangles;
-  sum.rays += s.rays;
-  sum.non_finite_samples += s.non_finite_samples;
-  sum.accumulated_samples = s.accumulated_samples;
-  sum.draws += s.draws;
-  sum.resident_draws += s.resident_draws;
-  sum.pipelines_created += s.pipelines_created;
-  sum.inexpressible += s.inexpressible;
-}
-
-}  // namespace
 
 OutputSettings OutputSettings::from_environment() {
   OutputSettings s;
@@ -115,7 +93,7 @@ bool FrameOutput::execute(const rec::FrameRecord& record, WindowTarget& target,
     report_failure(error);
     return false;
   }
-  add(frame_stats_, stats);
+  frame_stats_ += stats;
   return true;
 }
 
@@ -140,7 +118,7 @@ void FrameOutput::end_frame(const rec::FrameRecord& record, const rec::DrawableC
   const bool ok =
       renderer_->execute(record, target.buffers(), drawable, stats, &error, &end, queries);
   if (!ok) report_failure(error);
-  add(frame_stats_, stats);
+  frame_stats_ += stats;
   const Stopwatch present_timer;
   const bool have_image =
       ok && width > 0 && height > 0 && image_.size() == size_t{width} * height * 4;

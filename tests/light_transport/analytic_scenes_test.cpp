@@ -15,11 +15,9 @@
 #include <utility>
 #include <vector>
 
-#include "common/image_io.hpp"
 #include "gl/gl_enums.h"
-#include "gl_shim/context.hpp"
-#include "gl_shim/frame/headless_target.hpp"
 #include "gl_shim/gl_entry_decls.h"
+#include "../common/headless_gl_render.hpp"
 
 namespace {
 
@@ -27,7 +25,7 @@ constexpr int kSize = 64;
 // camera(): a 60-degree frustum, x and y in [-kHalf, kHalf] * distance.
 constexpr float kHalf = 0.57735f;
 
-using Settings = std::vector<std::pair<const char*, std::string>>;
+using glpt::test::Settings;
 
 struct Image {
   std::vector<uint8_t> rgba;
@@ -44,32 +42,10 @@ struct Image {
 };
 
 // Draws `scene` `frames` times on a fresh context with the GLPT_* `settings` and reads the last
-// frame back. GLPT_TEST_IMAGES=DIR keeps each image as DIR/<test>_<tag>.png.
+// frame back (tests/common/headless_gl_render.hpp).
 Image render(const Settings& settings, const std::function<void()>& scene, int frames,
              const char* tag) {
-  for (const auto& [name, value] : settings) ::setenv(name, value.c_str(), 1);
-  glpt::rec::DrawableConfig config;
-  config.double_buffered = false;
-  auto target = std::make_unique<glpt::HeadlessTarget>(kSize, kSize, config);
-  auto context = std::make_unique<glpt::Context>(nullptr);
-  glpt::make_current_headless(*context, *target);
-  Image image;
-  image.rgba.resize(size_t{kSize} * kSize * 4);
-  for (int frame = 0; frame < frames; ++frame) {
-    scene();
-    glFinish();
-  }
-  glReadPixels(0, 0, kSize, kSize, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
-  EXPECT_EQ(glGetError(), GLenum{GL_NO_ERROR});
-  if (const char* dir = std::getenv("GLPT_TEST_IMAGES")) {
-    const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
-    const std::string path = std::string(dir) + "/" + test->name() + "_" + tag + ".png";
-    glpt::write_png_rgba8(path, kSize, kSize, image.rgba.data(), true, nullptr);
-  }
-  glpt::set_current_context(nullptr);
-  context.reset();
-  for (const auto& [name, value] : settings) ::unsetenv(name);
-  return image;
+  return Image{glpt::test::render_headless(kSize, settings, scene, frames, tag)};
 }
 
 Settings path(Settings extra) {

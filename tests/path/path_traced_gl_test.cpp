@@ -11,11 +11,9 @@
 #include <memory>
 #include <vector>
 
-#include "common/image_io.hpp"
 #include "gl/gl_enums.h"
-#include "gl_shim/context.hpp"
-#include "gl_shim/frame/headless_target.hpp"
 #include "gl_shim/gl_entry_decls.h"
+#include "../common/headless_gl_render.hpp"
 
 namespace {
 
@@ -47,30 +45,7 @@ struct Image {
 // Draws `scene` with GL on a fresh context in GLPT_MODE `mode` ("path" or "raster") and reads
 // the frame back: `frames` times the same frame, the last one read.
 Image render(const char* mode, const std::function<void()>& scene, int frames = 1) {
-  ::setenv("GLPT_MODE", mode, 1);  // read when the context creates its renderer
-  glpt::rec::DrawableConfig config;
-  config.double_buffered = false;
-  auto target = std::make_unique<glpt::HeadlessTarget>(kSize, kSize, config);
-  auto context = std::make_unique<glpt::Context>(nullptr);
-  glpt::make_current_headless(*context, *target);
-  Image image;
-  image.rgba.resize(size_t{kSize} * kSize * 4);
-  for (int frame = 0; frame < frames; ++frame) {
-    scene();
-    glFinish();
-  }
-  glReadPixels(0, 0, kSize, kSize, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
-  EXPECT_EQ(glGetError(), GLenum{GL_NO_ERROR});
-  // GLPT_TEST_IMAGES=DIR keeps every image as DIR/<test>_<mode>.png (for looking at failures).
-  if (const char* dir = std::getenv("GLPT_TEST_IMAGES")) {
-    const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
-    const std::string path = std::string(dir) + "/" + test->name() + "_" + mode + ".png";
-    glpt::write_png_rgba8(path, kSize, kSize, image.rgba.data(), true, nullptr);
-  }
-  glpt::set_current_context(nullptr);
-  context.reset();
-  ::unsetenv("GLPT_MODE");
-  return image;
+  return Image{glpt::test::render_headless(kSize, {{"GLPT_MODE", mode}}, scene, frames, mode)};
 }
 
 // A 3-D camera (60 degree frustum, near 1, far 20), depth test on, cleared to dark blue.
