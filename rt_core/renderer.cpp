@@ -90,7 +90,8 @@ class Renderer::Impl {
         raster_.execute(record, buffers, drawable, stats, &scene_.gbuffer_pass, nullptr, &targets,
                         queries);
         // The colour buffers exist once the raster renderer has drawn into them.
-        const TraceTargets trace_targets{&gbuffer_, raster_.color_image(true).view(),
+        const TraceTargets trace_targets{&gbuffer_, &raster_.textures(),
+                                         raster_.color_image(true).view(),
                                          raster_.color_image(!drawable.double_buffered).view()};
         tracer_->trace(scene_.scene, trace_targets, traced);
         last = !tracer_->next_reference_pass(&next_jitter);

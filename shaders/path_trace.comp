@@ -19,6 +19,7 @@
 #extension GL_EXT_buffer_reference_uvec2 : require
 #extension GL_KHR_shader_subgroup_basic : require
 #extension GL_KHR_shader_subgroup_arithmetic : require
+#extension GL_EXT_nonuniform_qualifier : require
 
 #include "gbuffer_layout.h"
 #include "shared_types.h"
@@ -55,6 +56,7 @@ layout(set = 0, binding = GLPT_PT_BINDING_CHANNELS + GLPT_CHANNEL_INDIRECT_DIFFU
     uniform writeonly image2D channel_indirect;
 layout(set = 0, binding = GLPT_PT_BINDING_CHANNELS + GLPT_CHANNEL_SPECULAR, rgba32f)
     uniform writeonly image2D channel_specular;
+layout(set = 0, binding = GLPT_PT_BINDING_TEXTURES) uniform sampler2D textures[GLPT_TRACE_TEXTURES];
 
 layout(buffer_reference, std430, buffer_reference_align = 16) readonly buffer PositionArray {
   GpuPosition positions[];
@@ -67,6 +69,8 @@ layout(buffer_reference, std430, buffer_reference_align = 16) readonly buffer Ma
 };
 
 #include "trace/rng.h"
+#include "trace/offset_ray.h"
+#include "trace/texture.h"
 #include "trace/queries.h"
 #include "trace/surface.h"
 #include "trace/lights.h"
@@ -132,53 +136,64 @@ Channels lighting_gl(Surface s) {
 
 // ---- light transport ---------------------------------------------------------------------------
 
-// Ambient occlusion (seed 001's obscurance, with a ray instead of the depth buffer): 1 if a
-// cosine-distributed ray from `s` escapes its occluders. An occluder counts within the fixed
-// radius frame.params.x, or, when that is 0, within its own size: a box occludes the floor it
-// stands on within about a box's width, whatever else is in the scene.
-float ambient_visibility(Surface s, inout uint rng) {
-  vec3 direction = sample_cosine_hemisphere(s.normal, next_random2(rng));
-  if (dot(direction, s.offset_normal) <= 0.0) return 0.0;  // into the surface itself
-  float radius = frame.params.x;
-  Hit hit;
-  ++g_rays;
-  if (!trace_closest(s.shadow_position, direction, radius > 0.0 ? radius : kUnboundedRay, hit))
-    return 1.0;
-  if (radius > 0.0) return 0.0;
-  return hit.t < uintBitsToFloat(instances[hit.instance].materials.w) ? 0.0 : 1.0;
+// One ray that may be blocked, with what it brings where it is not: a next-event sample of a
+// light (its radiance through each lobe, weighted) or the ambient-occlusion ray. A vertex
+// collects its rays first and traces them in one loop: lavapipe inlines the BVH traversal at
+// every query call site, and one site per kind of query keeps the pipeline small enough to
+// compile in reasonable time.
+struct OcclusionRay {
+  vec3 direction;
+  float t_max;
+  uint cull_mask;
+  bool ambient;     // the AO ray: blocked by an occluder within its own size (t_max unbounded)
+  vec3 diffuse;     // what the ray brings through the diffuse lobe (already divided by its pdf)
+  vec3 specular;
+};
+
+const uint kMaxOcclusionRays = GLPT_MAX_STATE_LIGHTS + 1u;
+
+// Ambient occlusion (seed 001's obscurance, with a ray instead of the depth buffer): a
+// cosine-distributed ray from `s`, blocked by an occluder within the fixed radius frame.params.x
+// or, when that is 0, within the occluder's own size: a box occludes the floor it stands on
+// within about a box's width, whatever else is in the scene. `brings`: the ambient term.
+bool ambient_ray(Surface s, inout uint rng, vec3 brings, out OcclusionRay ray) {
+  ray.direction = sample_cosine_hemisphere(s.normal, next_random2(rng));
+  ray.t_max = frame.params.x > 0.0 ? frame.params.x : kUnboundedRay;
+  ray.cull_mask = GLPT_MASK_VISIBLE;
+  ray.ambient = true;
+  ray.diffuse = brings;
+  ray.specular = vec3(0.0);
+  return dot(ray.direction, s.offset_normal) > 0.0;  // else into the surface itself: occluded
 }
 
 // Next-event estimation at `s` (view direction v in `basis`'s local frame) for light i of
-// `choice`: the light's contribution through each lobe, MIS-weighted against BSDF sampling when a
-// bounce ray will also be traced from `s` (`mis`).
-void light_sample(Surface s, Bsdf bsdf, Basis basis, vec3 v, LightChoice choice, uint i, bool mis,
-                  inout uint rng, out vec3 diffuse, out vec3 specular) {
-  diffuse = vec3(0.0);
-  specular = vec3(0.0);
+// `choice`: the direction and what it brings through each lobe, MIS-weighted against BSDF
+// sampling when a bounce ray will also be traced from `s` (`mis`). False: nothing to bring.
+bool light_ray(Surface s, Bsdf bsdf, Basis basis, vec3 v, LightChoice choice, uint i, bool mis,
+               inout uint rng, out OcclusionRay ray) {
+  ray.ambient = false;
+  ray.diffuse = vec3(0.0);
+  ray.specular = vec3(0.0);
   LightView view = choice.views[i];
   float probability = choice.probability[i];
-  if (probability <= 0.0) return;
   vec2 u = next_random2(rng);
+  if (probability <= 0.0) return false;
   bool area = view.one_minus_cos > 0.0;
-  vec3 direction = area ? sample_cone(view.direction, view.one_minus_cos, u)
-                        : view.direction;
+  ray.direction = area ? sample_cone(view.direction, view.one_minus_cos, u) : view.direction;
+  ray.t_max = view.distance - view.sphere_radius;
+  ray.cull_mask = lights[choice.indices[i]].params.x;
   // A direction below the flat triangle but above the smooth surface (near the terminator of a
   // coarse mesh) is lit: its shadow ray leaves from the lifted origin (surface.h).
-  vec3 l = to_local(basis, direction);
-  if (l.z <= 0.0) return;
+  vec3 l = to_local(basis, ray.direction);
+  if (l.z <= 0.0) return false;
   vec3 f_diffuse = bsdf_lobe_cos(bsdf, GLPT_LOBE_DIFFUSE, v, l);
   vec3 f_specular = bsdf_lobe_cos(bsdf, GLPT_LOBE_SPECULAR, v, l);
-  if (max3(f_diffuse + f_specular) <= 0.0) return;
-  if (has_option(GLPT_OPTION_SHADOWS)) {
-    ++g_rays;
-    float t_max = view.distance - view.sphere_radius;
-    if (occluded(s.shadow_position, direction, t_max, lights[choice.indices[i]].params.x)) return;
-  }
+  if (max3(f_diffuse + f_specular) <= 0.0) return false;
   if (!area) {
     // A delta light: GL's colour is irradiance / pi at normal incidence.
-    diffuse = kPi * f_diffuse * view.diffuse / probability;
-    specular = kPi * f_specular * view.specular / probability;
-    return;
+    ray.diffuse = kPi * f_diffuse * view.diffuse / probability;
+    ray.specular = kPi * f_specular * view.specular / probability;
+    return true;
   }
   float pdf = probability * cone_pdf(view.one_minus_cos);
   float w_diffuse = 1.0, w_specular = 1.0;
@@ -188,12 +203,25 @@ void light_sample(Surface s, Bsdf bsdf, Basis basis, vec3 v, LightChoice choice,
     w_specular = power_heuristic(pdf, lobe_probability(bsdf, GLPT_LOBE_SPECULAR) *
                                           lobe_pdf(bsdf, GLPT_LOBE_SPECULAR, v, l));
   }
-  diffuse = w_diffuse * f_diffuse * view.diffuse / pdf;
-  specular = w_specular * f_specular * view.specular / pdf;
+  ray.diffuse = w_diffuse * f_diffuse * view.diffuse / pdf;
+  ray.specular = w_specular * f_specular * view.specular / pdf;
+  return true;
+}
+
+// Whether `ray` from `s` is blocked (the one occlusion query site of the pass).
+bool blocked(Surface s, OcclusionRay ray) {
+  ++g_rays;
+  float t;
+  int instance;
+  bool hit = query_occlusion(s.shadow_position, ray.direction, ray.t_max, ray.cull_mask,
+                             !ray.ambient || frame.params.x > 0.0, t, instance);
+  if (!hit || !ray.ambient || frame.params.x > 0.0) return hit;
+  return t < uintBitsToFloat(instances[instance].materials.w);
 }
 
 // The radiance of the path starting at the G-buffer surface `first` towards the viewer, by
-// channel.
+// channel. An unlit `first` (GLPT_UNLIT=ao) traces its ambient-occlusion ray only:
+// indirect.r is its visibility.
 Channels trace_path(Surface first, inout uint rng) {
   Channels c;
   c.direct = vec3(0.0);
@@ -203,7 +231,10 @@ Channels trace_path(Surface first, inout uint rng) {
   vec3 to_viewer = towards_viewer(s.state, s.position);
   vec3 throughput = vec3(1.0);
   uint first_lobe = GLPT_LOBE_DIFFUSE;
-  uint bounces = frame.sampling.z;
+  // The ray cone's width grows with the distance travelled (texture levels at bounce hits).
+  vec4 viewer = states[s.state].viewer;
+  float path_length = viewer.w != 0.0 ? length(s.position - viewer.xyz) : 0.0;
+  uint bounces = first.lit ? frame.sampling.z : 0u;
   for (uint depth = 0u;; ++depth) {
     Basis basis = make_basis(s.normal);
     vec3 v = to_local(basis, to_viewer);
@@ -220,31 +251,37 @@ Channels trace_path(Surface first, inout uint rng) {
     // away near a silhouette) a surface has no specular reflection: the lobe needs v.z > 0.
     if (v.z <= 1.0e-4) bsdf.specular = vec3(0.0);
     LightChoice choice = choose_lights(s.state, s.position, s.normal);
-    if (depth == 0u && has_option(GLPT_OPTION_AO)) {
-      // GL's ambient light, occluded, seen at the primary vertex only: it stands for the light
-      // of the world around the scene, which bounces do not trace (docs/light-transport.md).
-      vec3 ambient = s.ambient * choice.ambient;
-      if (max3(ambient) > 0.0) c.indirect += ambient * ambient_visibility(s, rng);
-    } else if (depth == 0u) {
-      c.indirect += s.ambient * choice.ambient;
-    }
-
     bool bounce = depth < bounces;
-    if (choice.count > 0u) {
-      if (frame.options.y == GLPT_LIGHT_CHOICE_ALL) {
-        for (uint i = 0u; i < choice.count; ++i) {
-          vec3 d, sp;
-          light_sample(s, bsdf, basis, v, choice, i, bounce, rng, d, sp);
-          add_to_channel(c, depth == 0u ? GLPT_LOBE_DIFFUSE : first_lobe, depth == 0u, throughput * d);
-          add_to_channel(c, depth == 0u ? GLPT_LOBE_SPECULAR : first_lobe, depth == 0u, throughput * sp);
-        }
-      } else {
-        uint i = pick_light(choice, next_random(rng));
-        if (i < choice.count) {
-          vec3 d, sp;
-          light_sample(s, bsdf, basis, v, choice, i, bounce, rng, d, sp);
-          add_to_channel(c, depth == 0u ? GLPT_LOBE_DIFFUSE : first_lobe, depth == 0u, throughput * d);
-          add_to_channel(c, depth == 0u ? GLPT_LOBE_SPECULAR : first_lobe, depth == 0u, throughput * sp);
+
+    // The vertex's occlusion rays: its light samples, and at the primary vertex the AO ray.
+    OcclusionRay rays[kMaxOcclusionRays];
+    uint ray_count = 0u;
+    if (depth == 0u) {
+      // GL's ambient light, seen at the primary vertex only: it stands for the light of the
+      // world around the scene, which bounces do not trace (docs/light-transport.md).
+      vec3 ambient = first.lit ? s.ambient * choice.ambient : vec3(1.0);
+      if (!has_option(GLPT_OPTION_AO))
+        c.indirect += ambient;
+      else if (max3(ambient) > 0.0 && ambient_ray(s, rng, ambient, rays[ray_count]))
+        ++ray_count;
+    }
+    if (choice.count > 0u && first.lit) {
+      bool all = frame.options.y == GLPT_LIGHT_CHOICE_ALL;
+      uint begin = all ? 0u : pick_light(choice, next_random(rng));
+      uint end = all ? choice.count : min(begin + 1u, choice.count);
+      for (uint i = begin; i < end; ++i)
+        if (light_ray(s, bsdf, basis, v, choice, i, bounce, rng, rays[ray_count])) ++ray_count;
+    }
+    for (uint r = 0u; r < ray_count; ++r) {
+      OcclusionRay ray = rays[r];
+      if ((!ray.ambient && !has_option(GLPT_OPTION_SHADOWS)) || !blocked(s, ray)) {
+        if (ray.ambient) {
+          c.indirect += ray.diffuse;
+        } else {
+          add_to_channel(c, depth == 0u ? GLPT_LOBE_DIFFUSE : first_lobe, depth == 0u,
+                         throughput * ray.diffuse);
+          add_to_channel(c, depth == 0u ? GLPT_LOBE_SPECULAR : first_lobe, depth == 0u,
+                         throughput * ray.specular);
         }
       }
     }
@@ -292,7 +329,8 @@ Channels trace_path(Surface first, inout uint rng) {
       if (next_random(rng) >= keep) break;
       throughput /= keep;
     }
-    s = load_surface(hit, direction);
+    path_length += hit.t;
+    s = load_surface(hit, direction, path_length * frame.params.w);
     to_viewer = -direction;
   }
   return c;
@@ -312,49 +350,43 @@ void main() {
     sum.indirect = vec3(0.0);
     sum.specular = vec3(0.0);
     float traced = 0.0;
-    if (surface.x != 0u && samples > 0u) {
-      if ((surface.w & GLPT_GBUFFER_LIT) == 0u) {
-        // Lighting off: the colour raster mode draws (composite.comp), no rays, unless the unlit
-        // policy darkens it by ambient occlusion.
-        traced = float(samples);
-        if (has_option(GLPT_OPTION_UNLIT_AO)) {
-          Surface s = load_gbuffer_surface(pixel, surface);
-          float visible = 0.0;
-          for (uint k = 0u; k < samples; ++k) {
-            uint rng = sample_seed(pixel_index, frame.image.w, frame.sampling.x + k);
-            visible += ambient_visibility(s, rng);
-          }
-          sum.indirect = vec3(visible);
+    bool lit = (surface.w & GLPT_GBUFFER_LIT) != 0u;
+    // Lighting off: the colour raster mode draws (composite.comp), no rays, unless the unlit
+    // policy darkens it by ambient occlusion. GL's equation has no randomness: one evaluation
+    // stands for every sample.
+    bool parity = lit && has_option(GLPT_OPTION_GL_PARITY);
+    bool trace = lit || has_option(GLPT_OPTION_UNLIT_AO);
+    if (surface.x != 0u && samples > 0u && trace) {
+      Surface s = load_gbuffer_surface(pixel, surface);
+      s.lit = lit;
+      vec3 albedo = lit ? demodulation_albedo(
+                              material_bsdf(s.diffuse_gl, s.specular_gl, s.shininess).diffuse)
+                        : vec3(1.0);
+      // One call site of trace_path (everything in it is inlined where it is called).
+      for (uint k = 0u; k < (parity ? 1u : samples); ++k) {
+        Channels c;
+        if (parity) {
+          c = lighting_gl(s);
+        } else {
+          uint rng = sample_seed(pixel_index, frame.image.w, frame.sampling.x + k);
+          c = trace_path(s, rng);
         }
-      } else {
-        Surface s = load_gbuffer_surface(pixel, surface);
-        vec3 albedo = demodulation_albedo(material_bsdf(s.diffuse_gl, s.specular_gl, s.shininess).diffuse);
-        // GL's equation has no randomness: one evaluation stands for every sample.
-        bool parity = has_option(GLPT_OPTION_GL_PARITY);
-        for (uint k = 0u; k < (parity ? 1u : samples); ++k) {
-          Channels c;
-          if (parity) {
-            c = lighting_gl(s);
-          } else {
-            uint rng = sample_seed(pixel_index, frame.image.w, frame.sampling.x + k);
-            c = trace_path(s, rng);
-          }
-          // A non-finite sample (a degenerate transform or triangle) would poison the pixel for
-          // the rest of the accumulation: it is dropped and counted, not shown as black.
-          if (!finite(c.direct) || !finite(c.indirect) || !finite(c.specular)) {
-            ++dropped;
-            continue;
-          }
-          sum.direct += c.direct / albedo;
-          sum.indirect += c.indirect / albedo;
-          sum.specular += c.specular;
-          traced += 1.0;
+        // A non-finite sample (a degenerate transform or triangle) would poison the pixel for
+        // the rest of the accumulation: it is dropped and counted, not shown as black.
+        if (!finite(c.direct) || !finite(c.indirect) || !finite(c.specular)) {
+          ++dropped;
+          continue;
         }
+        sum.direct += c.direct / albedo;
+        sum.indirect += c.indirect / albedo;
+        sum.specular += c.specular;
+        traced += 1.0;
       }
+    } else if (surface.x != 0u && samples > 0u) {
+      traced = float(samples);
     }
     float scale = traced > 0.0 ? 1.0 / traced : 0.0;
-    if (traced > 0.0 && (surface.w & GLPT_GBUFFER_LIT) != 0u && has_option(GLPT_OPTION_GL_PARITY))
-      traced = float(samples);
+    if (traced > 0.0 && parity) traced = float(samples);
     imageStore(channel_direct, pixel, vec4(sum.direct * scale, traced));
     imageStore(channel_indirect, pixel, vec4(sum.indirect * scale, 0.0));
     imageStore(channel_specular, pixel, vec4(sum.specular * scale, 0.0));

@@ -26,6 +26,11 @@ using mat4 = glm::mat4;
 #define GLPT_PT_BINDING_STATES 6     // GpuTraceState[], one per record state
 #define GLPT_PT_BINDING_GBUFFER 7    // 4 storage images (gbuffer_layout.h), bindings 7..10
 #define GLPT_PT_BINDING_CHANNELS 11  // GLPT_CHANNELS storage images (below), bindings 11..13
+#define GLPT_PT_BINDING_TEXTURES 14  // sampler2D[GLPT_TRACE_TEXTURES]: the traced draws' unit 0
+
+// Distinct 2-D textures the trace pass can sample in one frame (unit 0 of the traced draws; draws
+// beyond them are traced untextured).
+#define GLPT_TRACE_TEXTURES 64
 
 // composite.comp, set 0
 #define GLPT_CO_BINDING_FRAME 0         // uniform FrameUniforms
@@ -76,8 +81,9 @@ struct GpuPosition {
 // Shading data of one vertex, in the same order as the GpuPosition array of its shape. Colours
 // stay full float so an unlit surface reproduces GL's 8-bit rounding of the same value exactly.
 struct ShadingVertex {
-  vec4 normal;  // xyz: normal as given (not necessarily unit length); w: material index (float)
-  vec4 color;   // GL current colour
+  vec4 normal;    // xyz: normal as given (not necessarily unit length); w: material index (float)
+  vec4 color;     // GL current colour
+  vec4 texcoord;  // texture unit 0's coordinates after texgen and the texture matrix (s, t, r, q)
 };
 
 struct GpuMaterial {
@@ -101,6 +107,10 @@ struct GpuInstance {
   // floatBits(the instance's size: the diagonal of its eye-space bounds), which sets how far it
   // occludes ambient light (automatic AO radius, docs/light-transport.md)
   uvec4 materials;
+  // What rays see of the draw's texture unit 0 and alpha test: x: GLPT_PT_BINDING_TEXTURES index
+  // + 1 (0: untextured), y: GL_TEXTURE_ENV_MODE, z: GL alpha function (0: no alpha test),
+  // w: floatBits(alpha reference)
+  uvec4 surface;
 };
 
 // A GL light in eye space.
@@ -151,7 +161,8 @@ struct FrameUniforms {
   // frame, z: bounces, w: total samples after this frame
   uvec4 sampling;
   // x: ambient-occlusion radius (eye-space units; 0: each occluder's own size), y: cos(angular
-  // radius of directional lights), z: 1 - y (computed without cancellation), w: unused
+  // radius of directional lights), z: 1 - y (computed without cancellation), w: the angle one
+  // pixel spans at the main camera (ray cones' spread, for texture levels at bounce hits)
   vec4 params;
   uvec4 options;      // x: GLPT_OPTION_* bits, y: GLPT_LIGHT_CHOICE_*, z, w: unused
   vec4 environment;   // rgb: radiance of rays that miss (GLPT_OPTION_ENVIRONMENT), a: unused
@@ -164,9 +175,9 @@ struct GpuCounters {
 
 #ifdef __cplusplus
 static_assert(sizeof(GpuPosition) == 16);
-static_assert(sizeof(ShadingVertex) == 32);
+static_assert(sizeof(ShadingVertex) == 48);
 static_assert(sizeof(GpuMaterial) == 80);
-static_assert(sizeof(GpuInstance) == 32);
+static_assert(sizeof(GpuInstance) == 48);
 static_assert(sizeof(GpuLight) == 112);
 static_assert(sizeof(GpuTraceState) == 112);
 static_assert(sizeof(FrameUniforms) == 80);

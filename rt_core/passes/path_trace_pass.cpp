@@ -27,6 +27,8 @@ constexpr VkDescriptorSetLayoutBinding kBindings[] = {
     binding(GLPT_PT_BINDING_CHANNELS + 0, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
     binding(GLPT_PT_BINDING_CHANNELS + 1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
     binding(GLPT_PT_BINDING_CHANNELS + 2, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
+    {GLPT_PT_BINDING_TEXTURES, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, GLPT_TRACE_TEXTURES,
+     VK_SHADER_STAGE_COMPUTE_BIT, nullptr},
 };
 static_assert(GLPT_GBUFFER_ATTACHMENTS == 4 && GLPT_CHANNELS == 3);
 
@@ -62,6 +64,12 @@ void PathTracePass::record(VkCommandBuffer cmd, const PathTraceResources& resour
     images[i] = general_image_info(resources.gbuffer[i]);
   for (uint32_t i = 0; i < GLPT_CHANNELS; ++i)
     images[GLPT_GBUFFER_ATTACHMENTS + i] = general_image_info(resources.channels[i]);
+  auto texture_write = make_info<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
+  texture_write.dstSet = set;
+  texture_write.dstBinding = GLPT_PT_BINDING_TEXTURES;
+  texture_write.descriptorCount = GLPT_TRACE_TEXTURES;
+  texture_write.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+  texture_write.pImageInfo = resources.textures.data();
   const VkWriteDescriptorSet writes[] = {
       scene_write,
       storage_buffer_write(set, GLPT_PT_BINDING_INSTANCES, &instances),
@@ -76,6 +84,7 @@ void PathTracePass::record(VkCommandBuffer cmd, const PathTraceResources& resour
       storage_image_write(set, GLPT_PT_BINDING_CHANNELS + 0, &images[4]),
       storage_image_write(set, GLPT_PT_BINDING_CHANNELS + 1, &images[5]),
       storage_image_write(set, GLPT_PT_BINDING_CHANNELS + 2, &images[6]),
+      texture_write,
   };
   pipeline_.update_and_dispatch(device_.handle(), cmd, writes, width, height);
 }

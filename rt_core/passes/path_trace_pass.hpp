@@ -21,6 +21,8 @@ struct PathTraceResources {
   const GpuBuffer* frame = nullptr;      // gpu::FrameUniforms
   std::array<VkImageView, 4> gbuffer{};  // gbuffer_layout.h attachments
   std::array<VkImageView, GLPT_CHANNELS> channels{};  // written
+  // Combined image samplers of the texture table (every entry valid: dummies where unused).
+  std::array<VkDescriptorImageInfo, GLPT_TRACE_TEXTURES> textures{};
 };
 
 class PathTracePass {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <bit>
 #include <limits>
+#include <unordered_map>
 #include <cmath>
 #include <cstring>
 #include <exception>
@@ -193,12 +194,30 @@ void PathTracer::ensure_channels(uint32_t width, uint32_t height) {
   channels_height_ = height;
 }
 
-void PathTracer::build_scene_setup(const TraceScene& scene, SceneSetup& setup) const {
+void PathTracer::build_scene_setup(const TraceScene& scene, TextureCache* textures,
+                                   SceneSetup& setup) const {
+  setup.texture_views.clear();
+  setup.texture_samplers.clear();
   setup.tlas_instances.clear();
   setup.instance_table.clear();
   setup.instance_bounds.clear();
   setup.scene_bounds = EyeBounds();
   setup.triangles = 0;
+  std::unordered_map<uint64_t, uint32_t> texture_slots;  // content version -> slot + 1
+  // The slot of unit 0's texture of `surface` + 1; 0: untextured (none, not prepared, or the
+  // table is full).
+  auto texture_slot = [&](const SurfaceTexture& surface) -> uint32_t {
+    if (!surface.texture || textures == nullptr) return 0;
+    const uint64_t version = surface.texture->content_version;
+    if (auto found = texture_slots.find(version); found != texture_slots.end()) return found->second;
+    const VkImageView view = textures->view(*surface.texture);
+    if (view == VK_NULL_HANDLE || setup.texture_views.size() >= GLPT_TRACE_TEXTURES) return 0;
+    setup.texture_views.push_back(view);
+    setup.texture_samplers.push_back(textures->sampler(*surface.texture, surface.lod_bias));
+    const uint32_t slot = static_cast<uint32_t>(setup.texture_views.size());
+    texture_slots.emplace(version, slot);
+    return slot;
+  };
   for (const Instance& instance : scene.instances) {
     if (!instance.geometry) continue;
     const Geometry& geometry = *instance.geometry;
@@ -212,8 +231,11 @@ void PathTracer::build_scene_setup(const TraceScene& scene, SceneSetup& setup) c
     tlas_instance.instanceCustomIndex = static_cast<uint32_t>(setup.instance_table.size());
     tlas_instance.mask = GLPT_MASK_VISIBLE;  // shadow bits added by setup_lights
     tlas_instance.instanceShaderBindingTableRecordOffset = 0;
+    // Alpha-tested draws are not opaque: the queries' candidate loops test each hit's alpha.
+    const bool alpha_tested = instance.surface.alpha_func != 0;
     tlas_instance.flags = VK_GEOMETRY_INSTANCE_TRIANGLE_FACING_CULL_DISABLE_BIT_KHR |
-                          VK_GEOMETRY_INSTANCE_FORCE_OPAQUE_BIT_KHR;
+                          (alpha_tested ? VK_GEOMETRY_INSTANCE_FORCE_NO_OPAQUE_BIT_KHR
+                                        : VK_GEOMETRY_INSTANCE_FORCE_OPAQUE_BIT_KHR);
     tlas_instance.accelerationStructureReference = entry->blas_address;
     setup.tlas_instances.push_back(tlas_instance);
 
@@ -224,9 +246,11 @@ void PathTracer::build_scene_setup(const TraceScene& scene, SceneSetup& setup) c
     const glm::uvec2 materials = split_address(shading->materials_address);
     float size = bounds.diagonal();
     if (!std::isfinite(size)) size = std::numeric_limits<float>::max();
-    setup.instance_table.push_back({glm::uvec4(positions, vertices),
-                                    glm::uvec4(materials, instance.state,
-                                               std::bit_cast<uint32_t>(size))});
+    setup.instance_table.push_back(
+        {glm::uvec4(positions, vertices),
+         glm::uvec4(materials, instance.state, std::bit_cast<uint32_t>(size)),
+         glm::uvec4(texture_slot(instance.surface), instance.surface.env_mode,
+                    instance.surface.alpha_func, std::bit_cast<uint32_t>(instance.surface.alpha_ref))});
 
     setup.instance_bounds.push_back(bounds);
     setup.scene_bounds.extend(bounds);
@@ -263,7 +287,7 @@ void PathTracer::trace(const TraceScene& scene, const TraceTargets& targets, Fra
 
   // ---- per-frame tables
   const Stopwatch upload_timer;
-  build_scene_setup(scene, scene_);
+  build_scene_setup(scene, targets.textures, scene_);
   stats.triangles = scene_.triangles;
   const LightSize light_size{settings_.light_radius,
                              glm::radians(settings_.light_angular_radius_deg)};
@@ -293,7 +317,8 @@ void PathTracer::trace(const TraceScene& scene, const TraceTargets& targets, Fra
                                  accumulated_samples_ + frame_samples_);
   const float angle = glm::radians(settings_.light_angular_radius_deg);
   const float half_sin = std::sin(0.5f * angle);
-  uniforms.params = glm::vec4(settings_.ao_radius, std::cos(angle), 2.0f * half_sin * half_sin, 0.0f);
+  uniforms.params =
+      glm::vec4(settings_.ao_radius, std::cos(angle), 2.0f * half_sin * half_sin, scene.pixel_spread);
   uniforms.options = glm::uvec4(options_bits(settings_), static_cast<uint32_t>(settings_.light_choice),
                                 0u, 0u);
   uniforms.environment = scene.clear_color;
@@ -318,6 +343,13 @@ void PathTracer::trace(const TraceScene& scene, const TraceTargets& targets, Fra
   trace.states = &states_;
   trace.counters = &counters_;
   trace.frame = &frame_uniforms_;
+  // Unused slots of the texture table sample a white dummy (the shader never indexes them).
+  for (uint32_t t = 0; t < GLPT_TRACE_TEXTURES; ++t) {
+    const bool used = t < scene_.texture_views.size();
+    trace.textures[t] = {used ? scene_.texture_samplers[t] : targets.textures->dummy_sampler(),
+                         used ? scene_.texture_views[t] : targets.textures->dummy_view(1),
+                         VK_IMAGE_LAYOUT_GENERAL};
+  }
   CompositeResources composite;
   composite.frame = &frame_uniforms_;
   composite.states = &states_;

@@ -18,6 +18,7 @@
 #include "rt_core/passes/composite_pass.hpp"
 #include "rt_core/passes/gbuffer.hpp"
 #include "rt_core/passes/path_trace_pass.hpp"
+#include "rt_core/raster/texture_cache.hpp"
 #include "rt_core/render_settings.hpp"
 #include "rt_core/scene/frame_signature.hpp"
 #include "rt_core/scene/light_setup.hpp"
@@ -29,6 +30,9 @@ namespace glpt::rt {
 // What the trace pass reads and writes.
 struct TraceTargets {
   const GBuffer* gbuffer = nullptr;
+  // The raster renderer's textures (the G-buffer pass prepared the traced draws'): rays sample
+  // unit 0 of the draws they hit.
+  TextureCache* textures = nullptr;
   VkImageView front = VK_NULL_HANDLE;  // colour buffers (front twice when single-buffered)
   VkImageView back = VK_NULL_HANDLE;
 };
@@ -71,13 +75,16 @@ class PathTracer {
 
   // Per-frame scene description on the host, rebuilt from the TraceScene each time.
   struct SceneSetup {
+    // The frame's texture table (GLPT_PT_BINDING_TEXTURES): views and samplers by slot.
+    std::vector<VkImageView> texture_views;
+    std::vector<VkSampler> texture_samplers;
     std::vector<VkAccelerationStructureInstanceKHR> tlas_instances;
     std::vector<gpu::GpuInstance> instance_table;
     std::vector<EyeBounds> instance_bounds;
     EyeBounds scene_bounds;
     uint64_t triangles = 0;
   };
-  void build_scene_setup(const TraceScene& scene, SceneSetup& setup) const;
+  void build_scene_setup(const TraceScene& scene, TextureCache* textures, SceneSetup& setup) const;
   void ensure_channels(uint32_t width, uint32_t height);
   // The samples per pixel of the next pass: GLPT_SPP, or a reference's share.
   uint32_t samples_of_next_pass() const;

@@ -56,6 +56,8 @@ class RasterRenderer {
                   std::vector<float>& depth);
   bool read_stencil(DrawableBuffers& buffers, int32_t x, int32_t y, uint32_t width, uint32_t height,
                     std::vector<uint8_t>& stencil);
+  // The textures of the records drawn so far (path-traced mode's rays sample them).
+  TextureCache& textures() { return textures_; }
   // Copies the back buffer into the front buffer (the back keeps its contents).
   void swap_buffers(DrawableBuffers& buffers);
   // Replaces a whole colour buffer with `rgba` (RGBA8, rows bottom to top): the path tracer's

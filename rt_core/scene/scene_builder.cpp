@@ -132,6 +132,41 @@ uint32_t intern(std::vector<Material>& materials, const Material& m) {
   return static_cast<uint32_t>(materials.size() - 1);
 }
 
+// What rays see of a draw's texture unit 0 and alpha test.
+SurfaceTexture surface_texture_of(const rec::StateSnapshot& state) {
+  SurfaceTexture surface;
+  const rec::TextureUnitState& unit = state.texturing->units[0];
+  if (unit.target == GL_TEXTURE_2D && unit.texture) {
+    surface.texture = unit.texture;
+    surface.env_mode = unit.env.mode;
+    surface.lod_bias = unit.env.lod_bias;
+  }
+  const rec::FragmentOpsState& ops = state.raster->ops;
+  if (ops.alpha_test && ops.alpha_func != GL_ALWAYS) {
+    surface.alpha_func = ops.alpha_func;
+    surface.alpha_ref = ops.alpha_ref;
+  }
+  return surface;
+}
+
+// Unit 0's coordinates of vertex `src` as GL computes them: texgen (object- and eye-linear; the
+// other modes keep the given coordinates), then the texture matrix.
+glm::vec4 texcoord_of(const rec::VertexData& v, uint32_t src, const rec::TextureUnitState& unit,
+                      const glm::mat4& modelview) {
+  glm::vec4 tc = rec::attribute_at(v.tex_coord[0], src, glm::vec4(0, 0, 0, 1));
+  if (unit.texgen_mask != 0) {
+    const glm::vec4 object = v.position[src];
+    const glm::vec4 eye = modelview * object;
+    for (int c = 0; c < 4; ++c) {
+      if ((unit.texgen_mask & (1u << c)) == 0) continue;
+      const rec::TexGen& gen = unit.texgen[c];
+      if (gen.mode == GL_OBJECT_LINEAR) tc[c] = glm::dot(gen.object_plane, object);
+      if (gen.mode == GL_EYE_LINEAR) tc[c] = glm::dot(gen.eye_plane, eye);
+    }
+  }
+  return unit.matrix * tc;
+}
+
 // The parts of a draw's lighting state that make its materials (material_of), hashed: with the
 // vertex data's attribute key (which covers per-vertex materials) this identifies a geometry's
 // shading without decomposing it.
@@ -167,12 +202,14 @@ class Batcher {
     const rec::TransformState& transform = *state.transform;
     const bool projective = is_projective(transform.modelview);
     const glm::mat4 modelview = projective ? glm::mat4(1.0f) : transform.modelview;
+    const SurfaceTexture surface = surface_texture_of(state);
     if (open_ && (std::memcmp(&modelview, &open_modelview_, sizeof modelview) != 0 ||
-                  !same_light_set(*state.lighting, *open_lighting_)))
+                  !same_light_set(*state.lighting, *open_lighting_) || !(surface == open_surface_)))
       close();
     if (!open_) {
       open_ = true;
       open_modelview_ = modelview;
+      open_surface_ = surface;
       open_lighting_ = state.lighting;
       open_state_ = draw.state;
       shape_ = ContentHash();
@@ -186,6 +223,16 @@ class Batcher {
     shading_.add_bytes(&keys.attributes, sizeof keys.attributes);
     shading_.add_bytes(&flat, sizeof flat);
     add_material_state(shading_, *state.lighting, !v.material.empty());
+    if (surface.texture) {
+      // The texture coordinates: what makes them besides the vertex data.
+      const rec::TextureUnitState& unit = state.texturing->units[0];
+      shading_.add_bytes(&unit.texgen_mask, sizeof unit.texgen_mask);
+      shading_.add_bytes(&unit.matrix, sizeof unit.matrix);
+      if (unit.texgen_mask != 0) {
+        shading_.add_bytes(&unit.texgen, sizeof unit.texgen);
+        shading_.add_bytes(&transform.modelview, sizeof transform.modelview);
+      }
+    }
     if (projective) {
       shape_.add_bytes(&transform.modelview, sizeof transform.modelview);
       shading_.add_bytes(&transform.modelview, sizeof transform.modelview);
@@ -205,8 +252,9 @@ class Batcher {
       for (const OpenDraw& d : draws_) append_triangles(*d.draw, *d.state, *geometry);
       if (geometry->positions.empty()) return;
     }
-    instances_.push_back({std::move(geometry), open_modelview_, open_state_});
+    instances_.push_back({std::move(geometry), open_modelview_, open_state_, open_surface_});
     open_lighting_.reset();
+    open_surface_ = SurfaceTexture();
   }
 
  private:
@@ -226,6 +274,7 @@ class Batcher {
       return intern(g.materials, front);
     };
     const uint32_t shared_material = v.material.empty() ? material_pair(lighting.material) : 0;
+    const bool textured = surface_texture_of(state).texture != nullptr;
     // GL's normal transform (the inverse transpose of the modelview) for eye-space normals.
     const glm::mat3 normal_matrix = glm::transpose(glm::mat3(transform.modelview_inverse));
     const glm::vec3 kDefaultNormal(0, 0, 1);
@@ -248,6 +297,10 @@ class Batcher {
         g.positions.push_back(p[k]);
         g.normals.push_back(projective ? normal_matrix * normal : normal);
         g.colors.push_back(rec::attribute_at(v.color, src, kDefaultColor));
+        // Texture coordinates are not flat-shaded: they follow each vertex.
+        if (textured)
+          g.texcoords.push_back(texcoord_of(v, t.v[k], state.texturing->units[0],
+                                            transform.modelview));
       }
       g.material_ids.push_back(v.material.empty() ? shared_material
                                                   : material_pair(v.material[provoking]));
@@ -266,6 +319,7 @@ class Batcher {
   std::vector<OpenDraw> draws_;
   glm::mat4 open_modelview_{1.0f};
   std::shared_ptr<const rec::LightingState> open_lighting_;
+  SurfaceTexture open_surface_;
   uint32_t open_state_ = 0;
   ContentHash shape_, shading_;
 };
@@ -375,6 +429,10 @@ void build_trace_scene(const rec::FrameRecord& record, const rec::DrawableConfig
   scene.states.resize(record.states.size());
 
   const MainCamera camera = find_main_camera(record, drawable);
+  if (camera.valid && is_perspective(camera.projection) && camera.viewport[3] > 0 &&
+      camera.projection[1][1] != 0.0f)
+    scene.pixel_spread =
+        std::abs(2.0f / (camera.projection[1][1] * static_cast<float>(camera.viewport[3])));
   rec::Decomposed scratch;
   Batcher batcher(scene.instances, options.known_geometry, scratch);
   std::vector<uint8_t> state_used(record.states.size(), 0);

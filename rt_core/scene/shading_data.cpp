@@ -64,6 +64,8 @@ void pack_shading(const Geometry& geometry, std::span<const uint32_t> triangle_o
       gpu::ShadingVertex& out = vertices[3 * sorted + corner];
       out.normal = glm::vec4(normal, static_cast<float>(material_id));
       out.color = color;
+      out.texcoord = source < geometry.texcoords.size() ? geometry.texcoords[source]
+                                                        : glm::vec4(0, 0, 0, 1);
     }
   }
 }

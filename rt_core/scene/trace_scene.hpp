@@ -10,6 +10,9 @@
 #include <memory>
 #include <vector>
 
+#include "gl/gl_enums.h"
+#include "rt_core/record/texture.hpp"
+
 namespace glpt::rt {
 
 // How a material takes the per-vertex colour (GL_COLOR_MATERIAL, or lighting disabled).
@@ -48,6 +51,9 @@ struct Geometry {
   std::vector<glm::vec3> positions;
   std::vector<glm::vec3> normals;      // not necessarily unit length
   std::vector<glm::vec4> colors;       // current colour per vertex (used per color_source)
+  // Texture unit 0's coordinates per vertex after texgen and the texture matrix (empty when the
+  // geometry's draws are untextured).
+  std::vector<glm::vec4> texcoords;
   std::vector<uint32_t> material_ids;  // one per triangle, index into `materials`
   std::vector<Material> materials;
   // Identity of the shape (positions, triangle order): geometries with equal shape hashes share
@@ -63,11 +69,25 @@ struct Geometry {
   size_t triangle_count() const { return positions.size() / 3; }
 };
 
+// What rays see of a traced draw's texture unit 0 and alpha test (docs/light-transport.md,
+// "Textures in the tracer"): draws that differ in it are separate instances.
+struct SurfaceTexture {
+  // A 2-D texture on unit 0 (other targets and units are not sampled by rays); null: none.
+  std::shared_ptr<const rec::TextureObjectSnapshot> texture;
+  float lod_bias = 0.0f;          // the unit's GL_TEXTURE_LOD_BIAS
+  uint32_t env_mode = GL_MODULATE;  // GL_TEXTURE_ENV_MODE
+  uint32_t alpha_func = 0;        // GL alpha test function, 0 when the alpha test is off
+  float alpha_ref = 0.0f;
+
+  bool operator==(const SurfaceTexture&) const = default;
+};
+
 struct Instance {
   std::shared_ptr<const Geometry> geometry;
   glm::mat4 modelview{1.0f};  // object -> eye space at draw time
   // The record state whose lights light this geometry where bounce rays hit it.
   uint32_t state = 0;
+  SurfaceTexture surface;
 };
 
 // A GL light in eye space, with its GL parameters (already transformed by the modelview that was
@@ -117,6 +137,9 @@ struct TraceScene {
   // The colour of the frame's last colour clear before its first traced draw (the background
   // GLPT_ENVIRONMENT=clear gives rays that miss).
   glm::vec4 clear_color{0.0f};
+  // The angle one pixel spans at the main camera (0 for parallel projections): the spread of the
+  // ray cones that choose texture levels at bounce hits.
+  float pixel_spread = 0.0f;
 };
 
 }  // namespace glpt::rt

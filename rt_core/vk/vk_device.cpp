@@ -153,6 +153,9 @@ Candidate evaluate(VkPhysicalDevice device) {
       candidate.missing_ray_query.push_back("shaderStorageImageReadWithoutFormat");
     if (!core.shaderStorageImageWriteWithoutFormat)
       candidate.missing_ray_query.push_back("shaderStorageImageWriteWithoutFormat");
+    // Bounce and shadow rays sample the texture of whatever draw they hit.
+    if (!vulkan12.shaderSampledImageArrayNonUniformIndexing)
+      candidate.missing_ray_query.push_back("shaderSampledImageArrayNonUniformIndexing");
   }
 
   // The path tracer counts rays with subgroupAdd.
@@ -395,6 +398,7 @@ std::unique_ptr<VulkanDevice> VulkanDevice::create(const DeviceOptions& options)
   const VkBool32 path_traced = chosen.missing_ray_query.empty() ? VK_TRUE : VK_FALSE;
   features.features.shaderStorageImageReadWithoutFormat = path_traced;
   features.features.shaderStorageImageWriteWithoutFormat = path_traced;
+  vulkan12.shaderSampledImageArrayNonUniformIndexing = path_traced;
 
   std::vector<const char*> device_extensions(std::begin(kRasterDeviceExtensions),
                                              std::end(kRasterDeviceExtensions));

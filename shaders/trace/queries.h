@@ -1,7 +1,7 @@
 // The two ray-query sites of the trace pass: the closest hit (bounces, ambient occlusion) and the
 // occlusion test (shadow rays). One call site each: lavapipe inlines the whole BVH traversal at
 // every call site, so fewer sites mean faster pipeline compiles and smaller code.
-// Needs: `scene` (the TLAS).
+// Needs: `scene` (the TLAS), texture.h (the alpha test of candidate hits).
 #ifndef GLPT_SHADERS_TRACE_QUERIES_H
 #define GLPT_SHADERS_TRACE_QUERIES_H
 
@@ -17,13 +17,22 @@ struct Hit {
   mat4x3 eye_to_object;
 };
 
+// Only alpha-tested instances are not opaque (their TLAS instances lack FORCE_OPAQUE): their hits
+// arrive as candidates, kept where GL's alpha test keeps the fragment (texture.h).
+void confirm_if_alpha_passes(rayQueryEXT query) {
+  if (rayQueryGetIntersectionTypeEXT(query, false) != gl_RayQueryCandidateIntersectionTriangleEXT)
+    return;
+  if (candidate_passes_alpha_test(rayQueryGetIntersectionInstanceCustomIndexEXT(query, false),
+                                  rayQueryGetIntersectionPrimitiveIndexEXT(query, false),
+                                  rayQueryGetIntersectionBarycentricsEXT(query, false)))
+    rayQueryConfirmIntersectionEXT(query);
+}
+
 bool trace_closest(vec3 origin, vec3 direction, float t_max, out Hit hit) {
   rayQueryEXT query;
-  rayQueryInitializeEXT(query, scene, gl_RayFlagsOpaqueEXT, GLPT_MASK_VISIBLE, origin, 0.0,
+  rayQueryInitializeEXT(query, scene, gl_RayFlagsNoneEXT, GLPT_MASK_VISIBLE, origin, 0.0,
                         direction, t_max);
-  while (rayQueryProceedEXT(query)) {
-    // Everything is opaque: there are no candidates to confirm.
-  }
+  while (rayQueryProceedEXT(query)) confirm_if_alpha_passes(query);
   if (rayQueryGetIntersectionTypeEXT(query, true) != gl_RayQueryCommittedIntersectionTriangleEXT)
     return false;
   hit.t = rayQueryGetIntersectionTEXT(query, true);
@@ -35,13 +44,18 @@ bool trace_closest(vec3 origin, vec3 direction, float t_max, out Hit hit) {
   return true;
 }
 
-bool occluded(vec3 origin, vec3 direction, float t_max, uint cull_mask) {
+// Whether anything the mask selects lies along the ray before t_max; `first_hit`: any hit will
+// do (shadow rays), else the closest is found. `t` and `instance`: the committed hit.
+bool query_occlusion(vec3 origin, vec3 direction, float t_max, uint cull_mask, bool first_hit,
+                     out float t, out int instance) {
   rayQueryEXT query;
-  rayQueryInitializeEXT(query, scene, gl_RayFlagsOpaqueEXT | gl_RayFlagsTerminateOnFirstHitEXT,
+  rayQueryInitializeEXT(query, scene, first_hit ? gl_RayFlagsTerminateOnFirstHitEXT : 0u,
                         cull_mask, origin, 0.0, direction, t_max);
-  while (rayQueryProceedEXT(query)) {
-  }
-  return rayQueryGetIntersectionTypeEXT(query, true) != gl_RayQueryCommittedIntersectionNoneEXT;
+  while (rayQueryProceedEXT(query)) confirm_if_alpha_passes(query);
+  bool hit = rayQueryGetIntersectionTypeEXT(query, true) != gl_RayQueryCommittedIntersectionNoneEXT;
+  t = hit ? rayQueryGetIntersectionTEXT(query, true) : t_max;
+  instance = hit ? rayQueryGetIntersectionInstanceCustomIndexEXT(query, true) : 0;
+  return hit;
 }
 
 #endif  // GLPT_SHADERS_TRACE_QUERIES_H

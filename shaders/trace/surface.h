@@ -6,6 +6,7 @@
 
 #include "gbuffer_material.h"
 #include "offset_ray.h"
+#include "texture.h"
 
 struct Surface {
   vec3 position;         // eye space, on the triangle
@@ -30,8 +31,9 @@ vec3 towards_viewer(uint state, vec3 p) {
   return viewer.w != 0.0 ? normalize_or(viewer.xyz - p, vec3(0.0, 0.0, 1.0)) : viewer.xyz;
 }
 
-// A surface where a bounce ray hit the traced geometry (BLAS shading data).
-Surface load_surface(Hit hit, vec3 ray_direction) {
+// A surface where a bounce ray hit the traced geometry (BLAS shading data), reached by a ray
+// cone of width `cone_width` (texture levels).
+Surface load_surface(Hit hit, vec3 ray_direction, float cone_width) {
   GpuInstance instance = instances[hit.instance];
   PositionArray position_array = PositionArray(instance.addresses.xy);
   VertexArray vertex_array = VertexArray(instance.addresses.zw);
@@ -110,6 +112,18 @@ Surface load_surface(Hit hit, vec3 ray_direction) {
     s.diffuse_gl = color;
     s.specular_gl = vec3(0.0);
     s.emission = vec3(0.0);
+  }
+  // Unit 0's texture applies to the diffuse colour (the lit colour's stand-in, as the G-buffer
+  // pass applies it, raster_ff.frag) or to the unlit colour.
+  if (instance.surface.x != 0u) {
+    vec4 texcoord = w.x * v0.texcoord + w.y * v1.texcoord + w.z * v2.texcoord;
+    vec3 e0 = hit.object_to_eye * vec4(p0, 1.0), e1 = hit.object_to_eye * vec4(p1, 1.0);
+    vec3 e2 = hit.object_to_eye * vec4(p2, 1.0);
+    float lod = ray_cone_lod(instance, e0, e1, e2, v0.texcoord.xy, v1.texcoord.xy,
+                             v2.texcoord.xy, cone_width, ray_direction, geometric);
+    vec4 texel = sample_unit0(instance, texcoord, lod);
+    s.diffuse_gl = texture_environment(instance.surface.y, vec4(s.diffuse_gl, 1.0), texel).rgb;
+    if (s.lit) s.ambient = texture_environment(instance.surface.y, vec4(s.ambient, 1.0), texel).rgb;
   }
   return s;
 }

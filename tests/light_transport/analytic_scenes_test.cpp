@@ -354,6 +354,109 @@ TEST(LightTransport, MirrorLikeSurfaceReflectsAStripePattern) {
   EXPECT_NEAR(all, 0.5 * 15.7, 1.5);
 }
 
+// ---- textures in rays ----------------------------------------------------------------------------
+
+// A 2 x 1 RGBA texture (nearest filtering) of the two colours, modulating.
+void bind_two_texel_texture(const uint8_t left[4], const uint8_t right[4]) {
+  GLuint texture = 0;
+  glGenTextures(1, &texture);
+  glBindTexture(GL_TEXTURE_2D, texture);
+  const uint8_t texels[8] = {left[0], left[1], left[2], left[3], right[0], right[1], right[2], right[3]};
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 2, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels);
+  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+  glEnable(GL_TEXTURE_2D);
+}
+
+void textured_quad(glm::vec3 p0, glm::vec3 p1, glm::vec3 p2, glm::vec3 p3) {
+  const glm::vec3 n = glm::normalize(glm::cross(p1 - p0, p3 - p0));
+  glBegin(GL_QUADS);
+  glNormal3f(n.x, n.y, n.z);
+  const float uv[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  const glm::vec3 corners[4] = {p0, p1, p2, p3};
+  for (int k = 0; k < 4; ++k) {
+    glTexCoord2f(uv[k][0], uv[k][1]);
+    glVertex3f(corners[k].x, corners[k].y, corners[k].z);
+  }
+  glEnd();
+}
+
+TEST(LightTransport, AlphaTestedQuadCastsTheShadowOfItsCutOut) {
+  // A floor (z = -5) under a point light at (0, 0, -1); between them at z = -3 a quad whose
+  // texture's left half is opaque and right half transparent, alpha-tested (GL_GREATER 0.5). Its
+  // shadow on the floor is the left half's, scaled by 2: x in [-2, 0]; the cut-out casts none.
+  auto scene = [](bool alpha_test) {
+    return [alpha_test] {
+      camera();
+      material(glm::vec3(0.8f));
+      inverse_square_light(GL_LIGHT0, {0.0f, 0.0f, -1.0f}, glm::vec3(8.0f));
+      facing_plane(-5.0f, 3.0f);
+      const uint8_t opaque[4] = {255, 255, 255, 255}, clear[4] = {255, 255, 255, 0};
+      bind_two_texel_texture(opaque, clear);
+      if (alpha_test) {
+        glEnable(GL_ALPHA_TEST);
+        glAlphaFunc(GL_GREATER, 0.5f);
+      }
+      textured_quad({-1, -1, -3}, {1, -1, -3}, {1, 1, -3}, {-1, 1, -3});
+      glDisable(GL_ALPHA_TEST);
+      glDisable(GL_TEXTURE_2D);
+    };
+  };
+  const Settings settings = path({{"GLPT_LIGHT_RADIUS", "0"}, {"GLPT_BOUNCES", "0"}, {"GLPT_AO", "0"}});
+  const Image cut = render(settings, scene(true), 1, "alpha_test");
+  const Image solid = render(settings, scene(false), 1, "solid");
+  // Floor pixels in the left half's shadow but outside the quad's own image (x = -1.85).
+  const int shadow_x = 10, y = 32;
+  ASSERT_LT(on_plane(shadow_x, y, -5.0f).x, -1.6f);
+  EXPECT_LT(cut.at(shadow_x, y), 10) << "the opaque half shadows the floor";
+  // Floor seen through the cut-out at x = +1: lit; under the solid quad it was in shadow.
+  const int lit_x = 43;
+  ASSERT_GT(on_plane(lit_x, y, -5.0f).x, 0.8f);
+  const double lit_expected = 255 * 0.8 * 8.0 * (4.0 / std::sqrt(glm::dot(on_plane(lit_x, y, -5.0f) - glm::vec3(0, 0, -1), on_plane(lit_x, y, -5.0f) - glm::vec3(0, 0, -1)))) /
+                              glm::dot(on_plane(lit_x, y, -5.0f) - glm::vec3(0, 0, -1), on_plane(lit_x, y, -5.0f) - glm::vec3(0, 0, -1));
+  expect_close(cut.at(lit_x, y), std::min(255.0, lit_expected), 0.02, 2.0, "floor through the cut-out");
+  // The same pixel behind the solid (not alpha-tested) quad is the quad's transparent half,
+  // which GL draws: the pixel shows the quad, and the floor behind it is dark.
+  EXPECT_LT(solid.at(shadow_x, y), 10);
+}
+
+TEST(LightTransport, BounceRaysSeeTheTexturesOfWhatTheyHit) {
+  // A white floor lit from above beside a wall whose texture is pure red: light bouncing off the
+  // wall onto the floor is red. The same wall with a white texture bounces white light.
+  auto scene = [](bool red) {
+    return [red] {
+      camera();
+      material(glm::vec3(0.8f));
+      const float down[] = {-0.6f, 1.0f, 0.3f, 0.0f}, white[] = {1, 1, 1, 1};  // lights the wall's face too
+      glLightfv(GL_LIGHT0, GL_POSITION, down);
+      glLightfv(GL_LIGHT0, GL_DIFFUSE, white);
+      glEnable(GL_LIGHT0);
+      quad({-3, -1, -2}, {3, -1, -2}, {3, -1, -8}, {-3, -1, -8});  // floor, facing +y
+      const uint8_t r[4] = {255, 0, 0, 255}, w[4] = {255, 255, 255, 255};
+      bind_two_texel_texture(red ? r : w, red ? r : w);
+      textured_quad({0.5f, -1, -2}, {0.5f, 2, -2}, {0.5f, 2, -8}, {0.5f, -1, -8});  // wall, facing -x
+      glDisable(GL_TEXTURE_2D);
+    };
+  };
+  const Settings settings = path({{"GLPT_SPP", "32"}, {"GLPT_BOUNCES", "1"}, {"GLPT_AO", "0"}});
+  const Image red = render(settings, scene(true), 2, "red_wall");
+  const Image white = render(settings, scene(false), 2, "white_wall");
+  // The floor just left of the wall (which stands at x = 0.5 and covers columns 35 and up).
+  double red_g = 0, red_r = 0, white_g = 0, white_r = 0;
+  for (int x = 24; x < 34; ++x)
+    for (int y = 8; y < 20; ++y) {
+      red_r += red.at(x, y, 0);
+      red_g += red.at(x, y, 1);
+      white_r += white.at(x, y, 0);
+      white_g += white.at(x, y, 1);
+    }
+  std::printf("floor by the wall: red wall r %.0f g %.0f, white wall r %.0f g %.0f\n", red_r / 120,
+              red_g / 120, white_r / 120, white_g / 120);
+  EXPECT_GT(red_r - red_g, 0.3 * (white_r - white_g) + 120 * 3.0) << "red light bounces off the red texture";
+  EXPECT_LT(red_g, white_g) << "the red wall bounces no green";
+}
+
 // ---- many lights -------------------------------------------------------------------------------
 
 // A floor of 10 x 10 tiles, each its own draw lit by 8 of 100 positional lights: tile i by the
