@@ -34,6 +34,12 @@ class ComputePipeline {
   VkDescriptorSet descriptor_set_ = VK_NULL_HANDLE;  // freed with pool_
 };
 
+// A compute-stage binding of set 0 (`count` descriptors).
+constexpr VkDescriptorSetLayoutBinding compute_binding(uint32_t index, VkDescriptorType type,
+                                                       uint32_t count = 1) {
+  return {index, type, count, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
+}
+
 // Helpers for vkUpdateDescriptorSets.
 VkWriteDescriptorSet storage_buffer_write(VkDescriptorSet set, uint32_t binding,
                                           const VkDescriptorBufferInfo* info);
