@@ -14,6 +14,8 @@ struct FrameStats {
   uint64_t triangles = 0, rays = 0;
   // Path samples whose radiance was NaN or infinite: dropped (not averaged in, not shown).
   uint64_t non_finite_samples = 0;
+  // Emissive triangles next-event estimation sampled (the frame's emitter table).
+  uint32_t emitters = 0;
   // Samples per pixel in the image now shown.
   uint32_t accumulated_samples = 0;
   uint32_t draws = 0;  // Draw commands executed
@@ -35,6 +37,7 @@ struct FrameStats {
     triangles += s.triangles;
     rays += s.rays;
     non_finite_samples += s.non_finite_samples;
+    emitters = s.emitters;
     accumulated_samples = s.accumulated_samples;
     draws += s.draws;
     resident_draws += s.resident_draws;

@@ -33,6 +33,9 @@ layout(std430, set = 0, binding = GLPT_PT_BINDING_INSTANCES) readonly buffer Ins
 layout(std430, set = 0, binding = GLPT_PT_BINDING_LIGHTS) readonly buffer LightTable {
   GpuLight lights[];
 };
+layout(std430, set = 0, binding = GLPT_PT_BINDING_EMITTERS) readonly buffer EmitterTable {
+  GpuEmitter emitters[];
+};
 layout(std430, set = 0, binding = GLPT_PT_BINDING_STATES) readonly buffer StateTable {
   GpuTraceState states[];
 };
@@ -74,6 +77,7 @@ layout(buffer_reference, std430, buffer_reference_align = 16) readonly buffer Ma
 #include "trace/queries.h"
 #include "trace/surface.h"
 #include "trace/lights.h"
+#include "trace/emitters.h"
 
 uint g_rays = 0u;
 
@@ -150,7 +154,8 @@ struct OcclusionRay {
   vec3 specular;
 };
 
-const uint kMaxOcclusionRays = GLPT_MAX_STATE_LIGHTS + 1u;
+// Every light of the state (GLPT_LIGHT_CHOICE_ALL), an emitter, the AO ray.
+const uint kMaxOcclusionRays = GLPT_MAX_STATE_LIGHTS + 2u;
 
 // Ambient occlusion (seed 001's obscurance, with a ray instead of the depth buffer): a
 // cosine-distributed ray from `s`, blocked by an occluder within the fixed radius frame.params.x
@@ -208,6 +213,37 @@ bool light_ray(Surface s, Bsdf bsdf, Basis basis, vec3 v, LightChoice choice, ui
   return true;
 }
 
+// Next-event estimation of one emissive triangle (emitters.h) at `s`, MIS-weighted against BSDF
+// sampling when a bounce ray will also be traced (`mis`). False: nothing to bring.
+bool emitter_ray(Surface s, Bsdf bsdf, Basis basis, vec3 v, bool mis, inout uint rng,
+                 out OcclusionRay ray) {
+  ray.ambient = false;
+  ray.diffuse = vec3(0.0);
+  ray.specular = vec3(0.0);
+  ray.cull_mask = GLPT_MASK_VISIBLE;
+  float u_choice = next_random(rng);
+  EmitterSample e;
+  bool found = sample_emitter(s.position, u_choice, next_random2(rng), e);
+  ray.direction = e.direction;
+  // Stop short of the emitter itself: only what lies between blocks it.
+  ray.t_max = e.distance * (1.0 - 1.0e-3);
+  if (!found || max3(e.radiance) <= 0.0) return false;
+  vec3 l = to_local(basis, ray.direction);
+  if (l.z <= 0.0 || dot(ray.direction, s.offset_normal) <= 0.0) return false;
+  vec3 f_diffuse = bsdf_lobe_cos(bsdf, GLPT_LOBE_DIFFUSE, v, l);
+  vec3 f_specular = bsdf_lobe_cos(bsdf, GLPT_LOBE_SPECULAR, v, l);
+  float w_diffuse = 1.0, w_specular = 1.0;
+  if (mis) {
+    w_diffuse = power_heuristic(e.pdf, lobe_probability(bsdf, GLPT_LOBE_DIFFUSE) *
+                                           lobe_pdf(bsdf, GLPT_LOBE_DIFFUSE, v, l));
+    w_specular = power_heuristic(e.pdf, lobe_probability(bsdf, GLPT_LOBE_SPECULAR) *
+                                            lobe_pdf(bsdf, GLPT_LOBE_SPECULAR, v, l));
+  }
+  ray.diffuse = w_diffuse * f_diffuse * e.radiance / e.pdf;
+  ray.specular = w_specular * f_specular * e.radiance / e.pdf;
+  return true;
+}
+
 // Whether `ray` from `s` is blocked (the one occlusion query site of the pass).
 bool blocked(Surface s, OcclusionRay ray) {
   ++g_rays;
@@ -235,6 +271,9 @@ Channels trace_path(Surface first, inout uint rng) {
   vec4 viewer = states[s.state].viewer;
   float path_length = viewer.w != 0.0 ? length(s.position - viewer.xyz) : 0.0;
   uint bounces = first.lit ? frame.sampling.z : 0u;
+  // The MIS weight of emission a bounce ray hits against the emitter sampling of the vertex it
+  // left (1 where that could not have found it).
+  float emission_weight = 1.0;
   for (uint depth = 0u;; ++depth) {
     Basis basis = make_basis(s.normal);
     vec3 v = to_local(basis, to_viewer);
@@ -243,7 +282,7 @@ Channels trace_path(Surface first, inout uint rng) {
     bool emitter_only = !s.lit && has_option(GLPT_OPTION_UNLIT_EMIT);
     if (depth > 0u) {
       vec3 emitted = emitter_only ? s.diffuse_gl : s.emission;
-      add_to_channel(c, first_lobe, false, throughput * emitted);
+      add_to_channel(c, first_lobe, false, throughput * emitted * emission_weight);
       if (emitter_only) break;
     }
     Bsdf bsdf = material_bsdf(s.diffuse_gl, s.specular_gl, s.shininess);
@@ -272,6 +311,9 @@ Channels trace_path(Surface first, inout uint rng) {
       for (uint i = begin; i < end; ++i)
         if (light_ray(s, bsdf, basis, v, choice, i, bounce, rng, rays[ray_count])) ++ray_count;
     }
+    if (emitter_count() > 0u && first.lit &&
+        emitter_ray(s, bsdf, basis, v, bounce, rng, rays[ray_count]))
+      ++ray_count;
     for (uint r = 0u; r < ray_count; ++r) {
       OcclusionRay ray = rays[r];
       if ((!ray.ambient && !has_option(GLPT_OPTION_SHADOWS)) || !blocked(s, ray)) {
@@ -315,6 +357,12 @@ Channels trace_path(Surface first, inout uint rng) {
       vec3 radiance = lobe == GLPT_LOBE_SPECULAR ? view.specular : view.diffuse;
       add_to_channel(c, first_lobe, depth == 0u,
                      throughput * weight * radiance * power_heuristic(pdf, light_pdf));
+    }
+    emission_weight = 1.0;
+    if (found && first.lit) {
+      float emitter_pdf =
+          emitter_direction_pdf(instances[hit.instance], hit.primitive, direction, hit.t);
+      if (emitter_pdf > 0.0) emission_weight = power_heuristic(pdf, emitter_pdf);
     }
     throughput *= weight;
     if (!found) {

@@ -21,12 +21,17 @@ using mat4 = glm::mat4;
 #define GLPT_PT_BINDING_SCENE 0      // accelerationStructureEXT (TLAS)
 #define GLPT_PT_BINDING_INSTANCES 1  // GpuInstance[], indexed by instanceCustomIndex
 #define GLPT_PT_BINDING_LIGHTS 2     // GpuLight[]
+#define GLPT_PT_BINDING_EMITTERS 3   // GpuEmitter[]: the frame's emissive triangles
 #define GLPT_PT_BINDING_COUNTERS 4   // GpuCounters
 #define GLPT_PT_BINDING_FRAME 5      // uniform FrameUniforms
 #define GLPT_PT_BINDING_STATES 6     // GpuTraceState[], one per record state
 #define GLPT_PT_BINDING_GBUFFER 7    // 4 storage images (gbuffer_layout.h), bindings 7..10
 #define GLPT_PT_BINDING_CHANNELS 11  // GLPT_CHANNELS storage images (below), bindings 11..13
 #define GLPT_PT_BINDING_TEXTURES 14  // sampler2D[GLPT_TRACE_TEXTURES]: the traced draws' unit 0
+
+// Emissive triangles next-event estimation samples in one frame (docs/light-transport.md); the
+// emission of instances beyond them is found by bounces only.
+#define GLPT_MAX_EMITTERS 65536u
 
 // Distinct 2-D textures the trace pass can sample in one frame (unit 0 of the traced draws; draws
 // beyond them are traced untextured).
@@ -111,6 +116,21 @@ struct GpuInstance {
   // + 1 (0: untextured), y: GL_TEXTURE_ENV_MODE, z: GL alpha function (0: no alpha test),
   // w: floatBits(alpha reference)
   uvec4 surface;
+  // x: index in the emitter table (GLPT_PT_BINDING_EMITTERS) of the emitter of BLAS primitive 0
+  // + 1 (primitive p is emitter x - 1 + p); 0: not sampled by next-event estimation. yzw: unused
+  uvec4 emitters;
+};
+
+// An emissive triangle in eye space (one per BLAS primitive of an instance with GL emission).
+// GL's emission is radiance leaving both faces; next-event estimation picks a triangle in
+// proportion to its power (area x emitted luminance), then a point uniformly on it.
+struct GpuEmitter {
+  vec4 p0;  // w: the cumulative probability of the emitters up to and including this one
+  vec4 p1;  // w: the probability of choosing this one
+  vec4 p2;  // w: area
+  vec4 emission0;  // rgb: the emission at each vertex (interpolated over the triangle); a: unused
+  vec4 emission1;
+  vec4 emission2;
 };
 
 // A GL light in eye space.
@@ -164,7 +184,9 @@ struct FrameUniforms {
   // radius of directional lights), z: 1 - y (computed without cancellation), w: the angle one
   // pixel spans at the main camera (ray cones' spread, for texture levels at bounce hits)
   vec4 params;
-  uvec4 options;      // x: GLPT_OPTION_* bits, y: GLPT_LIGHT_CHOICE_*, z, w: unused
+  // x: GLPT_OPTION_* bits, y: GLPT_LIGHT_CHOICE_*, z: emitters in the emitter table (0: none
+  // emits), w: unused
+  uvec4 options;
   vec4 environment;   // rgb: radiance of rays that miss (GLPT_OPTION_ENVIRONMENT), a: unused
 };
 
@@ -177,7 +199,8 @@ struct GpuCounters {
 static_assert(sizeof(GpuPosition) == 16);
 static_assert(sizeof(ShadingVertex) == 48);
 static_assert(sizeof(GpuMaterial) == 80);
-static_assert(sizeof(GpuInstance) == 48);
+static_assert(sizeof(GpuInstance) == 64);
+static_assert(sizeof(GpuEmitter) == 96);
 static_assert(sizeof(GpuLight) == 112);
 static_assert(sizeof(GpuTraceState) == 112);
 static_assert(sizeof(FrameUniforms) == 80);

@@ -126,6 +126,7 @@ std::unique_ptr<ShadingEntry> BlasCache::create_shading(const Geometry& geometry
   entry->vertices_address = entry->data.address();
   entry->materials_address = entry->data.address() + vertex_bytes;
   entry->shape_hash = geometry.shape_hash;
+  entry->emitters = emitter_triangles(geometry, shape.triangle_order);
   return entry;
 }
 

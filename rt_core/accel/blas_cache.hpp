@@ -11,6 +11,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "rt_core/scene/shading_data.hpp"
 #include "rt_core/scene/trace_scene.hpp"
 #include "rt_core/vk/gpu_buffer.hpp"
 #include "rt_core/vk/vk_device.hpp"
@@ -37,6 +38,9 @@ struct ShadingEntry {
   VkDeviceAddress materials_address = 0;
   uint64_t shape_hash = 0;
   uint64_t last_used_frame = 0;
+  // The shape's triangles in BLAS primitive order with their emission, when any emits (host
+  // memory: each frame places them in eye space for next-event estimation); else empty.
+  std::vector<EmitterTriangle> emitters;
 };
 
 struct BlasPrepareStats {

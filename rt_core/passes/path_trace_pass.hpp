@@ -16,6 +16,7 @@ struct PathTraceResources {
   VkAccelerationStructureKHR scene = VK_NULL_HANDLE;
   const GpuBuffer* instances = nullptr;  // gpu::GpuInstance[]
   const GpuBuffer* lights = nullptr;     // gpu::GpuLight[]
+  const GpuBuffer* emitters = nullptr;   // gpu::GpuEmitter[]
   const GpuBuffer* states = nullptr;     // gpu::GpuTraceState[]
   const GpuBuffer* counters = nullptr;   // gpu::GpuCounters, zeroed by the caller
   const GpuBuffer* frame = nullptr;      // gpu::FrameUniforms

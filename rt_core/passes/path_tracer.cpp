@@ -200,6 +200,7 @@ void PathTracer::build_scene_setup(const TraceScene& scene, TextureCache* textur
   setup.texture_samplers.clear();
   setup.tlas_instances.clear();
   setup.instance_table.clear();
+  setup.emitters.clear();
   setup.instance_bounds.clear();
   setup.scene_bounds = EyeBounds();
   setup.triangles = 0;
@@ -250,12 +251,54 @@ void PathTracer::build_scene_setup(const TraceScene& scene, TextureCache* textur
         {glm::uvec4(positions, vertices),
          glm::uvec4(materials, instance.state, std::bit_cast<uint32_t>(size)),
          glm::uvec4(texture_slot(instance.surface), instance.surface.env_mode,
-                    instance.surface.alpha_func, std::bit_cast<uint32_t>(instance.surface.alpha_ref))});
+                    instance.surface.alpha_func, std::bit_cast<uint32_t>(instance.surface.alpha_ref)),
+         glm::uvec4(add_emitters(shading->emitters, instance.modelview, setup.emitters), 0u, 0u,
+                    0u)});
 
     setup.instance_bounds.push_back(bounds);
     setup.scene_bounds.extend(bounds);
     setup.triangles += entry->triangle_count;
   }
+}
+
+uint32_t PathTracer::add_emitters(std::span<const EmitterTriangle> triangles,
+                                  const glm::mat4& modelview, std::vector<gpu::GpuEmitter>& emitters) {
+  if (triangles.empty() || emitters.size() + triangles.size() > GLPT_MAX_EMITTERS) return 0;
+  const uint32_t first = static_cast<uint32_t>(emitters.size());
+  for (const EmitterTriangle& triangle : triangles) {
+    gpu::GpuEmitter& out = emitters.emplace_back();
+    glm::vec3 p[3];
+    for (int corner = 0; corner < 3; ++corner)
+      p[corner] = glm::vec3(modelview * glm::vec4(triangle.positions[corner], 1.0f));
+    const float area = 0.5f * glm::length(glm::cross(p[1] - p[0], p[2] - p[0]));
+    const glm::vec3 mean = (triangle.emission[0] + triangle.emission[1] + triangle.emission[2]) / 3.0f;
+    float power = area * glm::dot(mean, glm::vec3(0.2126f, 0.7152f, 0.0722f));  // luminance
+    // Degenerate or non-finite triangles are never chosen (power 0) and have no density.
+    if (!std::isfinite(power) || !(area > 0.0f)) power = 0.0f;
+    out.p0 = glm::vec4(p[0], 0.0f);
+    out.p1 = glm::vec4(p[1], power);  // normalised into a probability by finish_emitters
+    out.p2 = glm::vec4(p[2], power > 0.0f ? area : 0.0f);
+    out.emission0 = glm::vec4(triangle.emission[0], 0.0f);
+    out.emission1 = glm::vec4(triangle.emission[1], 0.0f);
+    out.emission2 = glm::vec4(triangle.emission[2], 0.0f);
+  }
+  return first + 1;
+}
+
+uint32_t PathTracer::finish_emitters(std::vector<gpu::GpuEmitter>& emitters) {
+  double total = 0.0;
+  for (const gpu::GpuEmitter& emitter : emitters) total += emitter.p1.w;
+  if (!(total > 0.0) || !std::isfinite(total)) return 0;
+  double cumulative = 0.0;
+  for (gpu::GpuEmitter& emitter : emitters) {
+    cumulative += emitter.p1.w;
+    emitter.p1.w = static_cast<float>(emitter.p1.w / total);
+    emitter.p0.w = static_cast<float>(cumulative / total);
+  }
+  // Rounding must not leave a gap above the last emitter that can be chosen.
+  for (auto it = emitters.rbegin(); it != emitters.rend() && it->p0.w >= 1.0f - 1.0e-6f; ++it)
+    it->p0.w = 1.0f;
+  return static_cast<uint32_t>(emitters.size());
 }
 
 void PathTracer::sort_instances_spatially(SceneSetup& setup) {
@@ -298,6 +341,9 @@ void PathTracer::trace(const TraceScene& scene, const TraceTargets& targets, Fra
   sort_instances_spatially(scene_);
   upload(*device_, instance_table_, scene_.instance_table);
   upload(*device_, lights_, light_setup.lights);
+  const uint32_t emitter_count = finish_emitters(scene_.emitters);
+  upload(*device_, emitters_, scene_.emitters);
+  stats.emitters = emitter_count;
   std::vector<gpu::GpuTraceState> states;
   states.reserve(scene.states.size());
   for (const TraceState& state : scene.states) states.push_back(pack_state(state));
@@ -319,8 +365,8 @@ void PathTracer::trace(const TraceScene& scene, const TraceTargets& targets, Fra
   const float half_sin = std::sin(0.5f * angle);
   uniforms.params =
       glm::vec4(settings_.ao_radius, std::cos(angle), 2.0f * half_sin * half_sin, scene.pixel_spread);
-  uniforms.options = glm::uvec4(options_bits(settings_), static_cast<uint32_t>(settings_.light_choice),
-                                0u, 0u);
+  uniforms.options = glm::uvec4(options_bits(settings_),
+                                static_cast<uint32_t>(settings_.light_choice), emitter_count, 0u);
   uniforms.environment = scene.clear_color;
   frame_uniforms_.write(&uniforms, sizeof uniforms);
   const gpu::GpuCounters zero_counters{};
@@ -340,6 +386,7 @@ void PathTracer::trace(const TraceScene& scene, const TraceTargets& targets, Fra
   trace.scene = tlas_.handle();
   trace.instances = &instance_table_;
   trace.lights = &lights_;
+  trace.emitters = &emitters_;
   trace.states = &states_;
   trace.counters = &counters_;
   trace.frame = &frame_uniforms_;

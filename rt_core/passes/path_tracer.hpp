@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <glm/vec2.hpp>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -80,6 +81,9 @@ class PathTracer {
     std::vector<VkSampler> texture_samplers;
     std::vector<VkAccelerationStructureInstanceKHR> tlas_instances;
     std::vector<gpu::GpuInstance> instance_table;
+    // The emissive triangles of the frame in eye space, with their choice probabilities
+    // (empty when nothing emits).
+    std::vector<gpu::GpuEmitter> emitters;
     std::vector<EyeBounds> instance_bounds;
     EyeBounds scene_bounds;
     uint64_t triangles = 0;
@@ -93,6 +97,14 @@ class PathTracer {
   // draw order is not spatial: put instances in Morton order of their bounds' centres. The
   // instance table order (instanceCustomIndex) is unaffected.
   static void sort_instances_spatially(SceneSetup& setup);
+  // Appends an instance's emissive triangles in eye space (their power in p1.w for now); returns
+  // the index of the first + 1 (GpuInstance::emitters.x), 0 when it has none or the table is
+  // full (GLPT_MAX_EMITTERS: then bounces alone find its light).
+  static uint32_t add_emitters(std::span<const EmitterTriangle> triangles,
+                               const glm::mat4& modelview, std::vector<gpu::GpuEmitter>& emitters);
+  // Turns the powers into choice probabilities and their running sum; returns the emitter count
+  // for the trace pass, 0 when nothing emits.
+  static uint32_t finish_emitters(std::vector<gpu::GpuEmitter>& emitters);
 
   RenderSettings settings_;
   // Declared first: every member below holds Vulkan objects of this device.
@@ -107,6 +119,7 @@ class PathTracer {
   GpuBuffer counters_;
   GpuBuffer instance_table_;
   GpuBuffer lights_;
+  GpuBuffer emitters_;
   GpuBuffer states_;
   GpuBuffer accumulation_;
 

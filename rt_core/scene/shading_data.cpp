@@ -1,5 +1,7 @@
 #include "rt_core/scene/shading_data.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstring>
 
 namespace glpt::rt {
@@ -68,6 +70,54 @@ void pack_shading(const Geometry& geometry, std::span<const uint32_t> triangle_o
                                                         : glm::vec4(0, 0, 0, 1);
     }
   }
+}
+
+namespace {
+
+glm::vec3 valid_emission(glm::vec3 e) {
+  for (int c = 0; c < 3; ++c) e[c] = std::isfinite(e[c]) ? std::max(e[c], 0.0f) : 0.0f;
+  return e;
+}
+
+}  // namespace
+
+std::vector<EmitterTriangle> emitter_triangles(const Geometry& geometry,
+                                               std::span<const uint32_t> triangle_order) {
+  // Lit materials only: with lighting off GL has no emission (the unlit colour is what
+  // GLPT_UNLIT=emit turns into light, found by bounces).
+  auto emission_of = [&](size_t triangle, size_t corner) {
+    const uint32_t id =
+        triangle < geometry.material_ids.size() ? geometry.material_ids[triangle] : 0;
+    if (id >= geometry.materials.size()) return glm::vec3(0.0f);
+    const Material& material = geometry.materials[id];
+    if (!material.lit) return glm::vec3(0.0f);
+    if (material.color_source == ColorSource::kEmission) {
+      const size_t source = 3 * triangle + corner;
+      return valid_emission(source < geometry.colors.size() ? glm::vec3(geometry.colors[source])
+                                                            : glm::vec3(1.0f));
+    }
+    return valid_emission(glm::vec3(material.emission));
+  };
+  const bool any_material_emits = std::any_of(
+      geometry.materials.begin(), geometry.materials.end(), [](const Material& material) {
+        return material.lit && (material.color_source == ColorSource::kEmission ||
+                                glm::vec3(material.emission) != glm::vec3(0.0f));
+      });
+  std::vector<EmitterTriangle> triangles;
+  if (!any_material_emits) return triangles;
+  triangles.resize(triangle_order.size());
+  bool emits = false;
+  for (size_t sorted = 0; sorted < triangle_order.size(); ++sorted) {
+    const size_t triangle = triangle_order[sorted];
+    EmitterTriangle& out = triangles[sorted];
+    for (size_t corner = 0; corner < 3; ++corner) {
+      out.positions[corner] = geometry.positions[3 * triangle + corner];
+      out.emission[corner] = emission_of(triangle, corner);
+      emits = emits || out.emission[corner] != glm::vec3(0.0f);
+    }
+  }
+  if (!emits) triangles.clear();
+  return triangles;
 }
 
 }  // namespace glpt::rt

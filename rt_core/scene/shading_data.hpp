@@ -5,6 +5,9 @@
 
 #include <cstdint>
 #include <span>
+#include <vector>
+
+#include <glm/vec3.hpp>
 
 #include "rt_core/scene/trace_scene.hpp"
 #include "shared_types.h"
@@ -28,5 +31,17 @@ void pack_positions(const Geometry& geometry, std::span<const uint32_t> triangle
 // range become 0.
 void pack_shading(const Geometry& geometry, std::span<const uint32_t> triangle_order,
                   std::span<gpu::ShadingVertex> vertices, std::span<gpu::GpuMaterial> materials);
+
+// One triangle of a geometry that emits light (GL emission of a lit material), object space.
+struct EmitterTriangle {
+  glm::vec3 positions[3];
+  glm::vec3 emission[3];  // per vertex: the material's, or the colour under GL_EMISSION tracking
+};
+
+// Every triangle of `geometry` in `triangle_order` (its BLAS primitive order) when at least one
+// of them emits, so that BLAS primitive p is element p; empty when none does. Non-finite or
+// negative emission counts as none.
+std::vector<EmitterTriangle> emitter_triangles(const Geometry& geometry,
+                                               std::span<const uint32_t> triangle_order);
 
 }  // namespace glpt::rt

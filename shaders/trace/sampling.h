@@ -70,6 +70,23 @@ GLPT_FN float cone_pdf(float one_minus_cos_max) {
   return 1.0f / (2.0f * kPi * max(one_minus_cos_max, 1.0e-30f));
 }
 
+// ---- triangles (emissive surfaces) ------------------------------------------------------------
+
+// Barycentric weights (w0, w1, w2) of a point uniformly distributed over a triangle's area
+// (Shirley & Chiu's square-to-triangle map).
+GLPT_FN vec3 sample_triangle_uniform(vec2 u) {
+  float r = sqrt(u.x);
+  return vec3(1.0f - r, r * (1.0f - u.y), r * u.y);
+}
+
+// The solid-angle density of a direction towards a point sampled uniformly over a triangle of
+// area `area`, seen at `distance` with cosine `cos_at_light` between the triangle's normal and
+// the direction (either side: GL's emission leaves both faces): d^2 / (area |cos|).
+GLPT_FN float triangle_solid_angle_pdf(float area, float distance, float cos_at_light) {
+  float c = abs(cos_at_light);
+  return area > 0.0f && c > 0.0f ? distance * distance / (area * c) : 0.0f;
+}
+
 // ---- GGX (Trowbridge-Reitz) microfacets, Smith height-correlated masking ----------------------
 // Local frame: the shading normal is +z.
 

@@ -4,6 +4,7 @@
 // shininess maps to the reflectance its Blinn-Phong lobe has.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -71,6 +72,48 @@ TEST(Sampling, ConePdfIntegratesToOneAndSamplesStayInTheCone) {
     const double solid_angle = 2 * M_PI * (1 - std::cos(double(half_angle)));
     EXPECT_NEAR(cone_pdf(one_minus) * solid_angle, 1.0, 1e-3) << half_angle;
   }
+}
+
+// Where the ray from `origin` along unit `w` meets the triangle (Moller-Trumbore), or -1.
+double ray_triangle(vec3 origin, vec3 w, vec3 a, vec3 b, vec3 c) {
+  const glm::dvec3 e1 = glm::dvec3(b - a), e2 = glm::dvec3(c - a), d = glm::dvec3(w);
+  const glm::dvec3 p = glm::cross(d, e2);
+  const double det = glm::dot(e1, p);
+  if (std::abs(det) < 1e-14) return -1;
+  const glm::dvec3 s = glm::dvec3(origin - a);
+  const double u = glm::dot(s, p) / det;
+  const glm::dvec3 q = glm::cross(s, e1);
+  const double v = glm::dot(d, q) / det;
+  if (u < 0 || v < 0 || u + v > 1) return -1;
+  return glm::dot(e2, q) / det;
+}
+
+TEST(Sampling, TriangleSolidAnglePdfIntegratesToOneAndSamplesCoverTheArea) {
+  const vec3 a(-1.0f, 0.2f, 2.0f), b(1.5f, -0.5f, 2.5f), c(0.3f, 1.4f, 1.2f);
+  const float area = 0.5f * length(cross(b - a, c - a));
+  const vec3 n = normalize(cross(b - a, c - a));
+  for (vec3 origin : {vec3(0.0f), vec3(0.1f, 0.3f, 1.9f), vec3(4.0f, -3.0f, 1.0f)}) {
+    // The density over every direction that meets the triangle, in solid angle, integrates to 1.
+    const double integral = integrate_sphere(
+        [&](vec3 w) {
+          const double t = ray_triangle(origin, w, a, b, c);
+          return t > 0 ? double(triangle_solid_angle_pdf(area, float(t), dot(n, w))) : 0.0;
+        },
+        false, 1200, 2400);
+    EXPECT_NEAR(integral, 1.0, 0.01) << origin.x << " " << origin.y << " " << origin.z;
+  }
+  // Uniform over the area: the fraction of samples in the sub-triangle of the first vertex and
+  // the edge midpoints is a quarter; barycentrics are non-negative and sum to one.
+  Random random;
+  int in_corner = 0;
+  const int kSamples = 100000;
+  for (int i = 0; i < kSamples; ++i) {
+    const vec3 w = sample_triangle_uniform(random.next2());
+    ASSERT_GE(std::min({w.x, w.y, w.z}), -1e-6f);
+    ASSERT_NEAR(w.x + w.y + w.z, 1.0f, 1e-5f);
+    if (w.x > 0.5f) ++in_corner;
+  }
+  EXPECT_NEAR(double(in_corner) / kSamples, 0.25, 0.01);
 }
 
 TEST(Sampling, GgxVisibleNormalPdfMatchesItsSamplerAndIntegratesToOne) {
