@@ -16,6 +16,7 @@
 #include "common/image_io.hpp"
 #include "gl/gl_enums.h"
 #include "gl_shim/context.hpp"
+#include "gl_shim/frame/frame_output.hpp"
 #include "gl_shim/frame/headless_target.hpp"
 #include "gl_shim/gl_entry_decls.h"
 
@@ -27,10 +28,12 @@ using Settings = std::vector<std::pair<const char*, std::string>>;
 
 // Draws `scene` `frames` times (each ended by glFinish) on a fresh single-buffered size x size
 // context with `settings`, and returns the last frame as RGBA8 rows from the bottom (GL's
-// glReadPixels order). GLPT_TEST_IMAGES=DIR keeps it as DIR/<test>_<tag>.png.
+// glReadPixels order). GLPT_TEST_IMAGES=DIR keeps it as DIR/<test>_<tag>.png. `stats`: where
+// to put the last frame's costs and counts (GLPT_STATS' numbers).
 inline std::vector<uint8_t> render_headless(int size, const Settings& settings,
                                             const std::function<void()>& scene, int frames,
-                                            const std::string& tag) {
+                                            const std::string& tag,
+                                            rt::FrameStats* stats = nullptr) {
   for (const auto& [name, value] : settings) ::setenv(name, value.c_str(), 1);
   rec::DrawableConfig config;
   config.double_buffered = false;
@@ -44,6 +47,7 @@ inline std::vector<uint8_t> render_headless(int size, const Settings& settings,
   }
   glReadPixels(0, 0, size, size, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
   EXPECT_EQ(glGetError(), GLenum{GL_NO_ERROR});
+  if (stats != nullptr) *stats = context->output ? context->output->last_frame_stats() : rt::FrameStats{};
   if (const char* dir = std::getenv("GLPT_TEST_IMAGES")) {
     const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
     const std::string path = std::string(dir) + "/" + test->name() + "_" + tag + ".png";

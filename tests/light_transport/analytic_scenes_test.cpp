@@ -44,8 +44,8 @@ struct Image {
 // Draws `scene` `frames` times on a fresh context with the GLPT_* `settings` and reads the last
 // frame back (tests/common/headless_gl_render.hpp).
 Image render(const Settings& settings, const std::function<void()>& scene, int frames,
-             const char* tag) {
-  return Image{glpt::test::render_headless(kSize, settings, scene, frames, tag)};
+             const char* tag, glpt::rt::FrameStats* stats = nullptr) {
+  return Image{glpt::test::render_headless(kSize, settings, scene, frames, tag, stats)};
 }
 
 Settings path(Settings extra) {
@@ -663,6 +663,32 @@ TEST(LightTransport, NonFiniteLightAndMaterialStatePutsNoNanIntoTheImage) {
   // black or the plane's; not the garbage a NaN would leave in the accumulation.
   for (int y = 0; y < kSize; ++y)
     for (int x = 0; x < kSize; ++x) ASSERT_EQ(image.at(x, y, 3), 255) << x << "," << y;
+}
+
+TEST(LightTransport, ANonFiniteSampleIsDroppedAndCountedNotShownAsBlack) {
+  // A lit plane whose bounce rays reach a surface of infinite emission behind the camera's view
+  // (GL takes any float): those paths carry infinite radiance. They are dropped and counted; the
+  // plane's pixels keep the light of the paths that stay finite.
+  auto scene = [] {
+    camera();
+    material(glm::vec3(0.8f));
+    inverse_square_light(GL_LIGHT0, {0.0f, 0.0f, -3.0f}, glm::vec3(3.0f));
+    facing_plane(-5.0f, 3.0f);
+    material(glm::vec3(0.0f), glm::vec3(INFINITY));
+    quad({-3, -3, -2}, {-3, 3, -2}, {-3, 3, 0.5f}, {-3, -3, 0.5f});  // a wall at the left edge
+  };
+  glpt::rt::FrameStats stats;
+  const Image image = render(path({{"GLPT_SPP", "4"}}), scene, 1, "path", &stats);
+  EXPECT_GT(stats.non_finite_samples, 0u);
+  std::printf("non-finite samples dropped: %llu\n",
+              static_cast<unsigned long long>(stats.non_finite_samples));
+  // The middle of the plane, lit directly (3 cos / d^2 = 0.75 of white at albedo 0.8: about
+  // 153): never black, never saturated by an infinity.
+  for (int y = 24; y < 40; y += 3)
+    for (int x = 24; x < 40; x += 3) {
+      EXPECT_GT(image.at(x, y), 100) << x << "," << y;
+      EXPECT_LT(image.at(x, y), 250) << x << "," << y;
+    }
 }
 
 }  // namespace
