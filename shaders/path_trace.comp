@@ -36,6 +36,9 @@ layout(std430, set = 0, binding = GLPT_PT_BINDING_LIGHTS) readonly buffer LightT
 layout(std430, set = 0, binding = GLPT_PT_BINDING_EMITTERS) readonly buffer EmitterTable {
   GpuEmitter emitters[];
 };
+layout(std430, set = 0, binding = GLPT_PT_BINDING_CLIP_PLANES) readonly buffer ClipPlaneTable {
+  GpuClipPlanes clip_planes[];
+};
 layout(std430, set = 0, binding = GLPT_PT_BINDING_STATES) readonly buffer StateTable {
   GpuTraceState states[];
 };

@@ -754,6 +754,13 @@ void write_gbuffer(vec4 color, bool back, vec4 texels[GLPT_RASTER_MAX_UNITS]) {
     if (cm_mode == 4u) specular = v_vertex_color;
     if (cm_mode == 5u) emission = v_vertex_color;
   }
+  // GL's texture environment receives the lit colour (GL 1.5 3.9): emission, and specular under
+  // GL_SINGLE_COLOR, are textured with it. Every environment is affine in the fragment colour,
+  // f(c) = A c + B per component: those terms get A c = f(c) - f(0); B stays with the albedo.
+  vec3 offset = textured(vec4(0.0, 0.0, 0.0, 1.0), texels).rgb;
+  emission.rgb = textured(vec4(emission.rgb, 1.0), texels).rgb - offset;
+  if ((kVsFlags & GLPT_VS_SEPARATE_SPECULAR) == 0u)
+    specular.rgb = textured(vec4(specular.rgb, 1.0), texels).rgb - offset;
   diffuse = vec4(textured(diffuse, texels).rgb, color.a);  // alpha: GL's fragment alpha
   ambient = textured(ambient, texels);
 

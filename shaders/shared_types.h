@@ -28,6 +28,7 @@ using mat4 = glm::mat4;
 #define GLPT_PT_BINDING_GBUFFER 7    // 4 storage images (gbuffer_layout.h), bindings 7..10
 #define GLPT_PT_BINDING_CHANNELS 11  // GLPT_CHANNELS storage images (below), bindings 11..13
 #define GLPT_PT_BINDING_TEXTURES 14  // sampler2D[GLPT_TRACE_TEXTURES]: the traced draws' unit 0
+#define GLPT_PT_BINDING_CLIP_PLANES 15  // GpuClipPlanes[]: the user clip planes of traced draws
 
 // Emissive triangles next-event estimation samples in one frame (docs/light-transport.md); the
 // emission of instances beyond them is found by bounces only.
@@ -116,9 +117,19 @@ struct GpuInstance {
   // + 1 (0: untextured), y: GL_TEXTURE_ENV_MODE, z: GL alpha function (0: no alpha test),
   // w: floatBits(alpha reference)
   uvec4 surface;
-  // x: index in the emitter table (GLPT_PT_BINDING_EMITTERS) of the emitter of BLAS primitive 0
-  // + 1 (primitive p is emitter x - 1 + p); 0: not sampled by next-event estimation. yzw: unused
-  uvec4 emitters;
+  // Indices into the frame's other tables. x: in the emitter table (GLPT_PT_BINDING_EMITTERS),
+  // of the emitter of BLAS primitive 0, + 1 (primitive p is emitter x - 1 + p); 0: not sampled
+  // by next-event estimation. y: in the clip-plane table (GLPT_PT_BINDING_CLIP_PLANES) + 1; 0:
+  // no clip plane. zw: unused
+  uvec4 tables;
+};
+
+// The enabled user clip planes of a draw (GL_CLIP_PLANEi, eye space): rays see only the part of
+// it GL keeps, where every plane's dot(plane, (p, 1)) >= 0.
+#define GLPT_MAX_CLIP_PLANES 6
+struct GpuClipPlanes {
+  vec4 planes[GLPT_MAX_CLIP_PLANES];
+  uvec4 count;  // x: planes in use; yzw: unused
 };
 
 // An emissive triangle in eye space (one per BLAS primitive of an instance with GL emission).
@@ -160,6 +171,7 @@ struct GpuTraceState {
 // GpuTraceState::info.w
 #define GLPT_STATE_LOCAL_VIEWER 1u  // GL_LIGHT_MODEL_LOCAL_VIEWER
 #define GLPT_STATE_TWO_SIDE 2u      // GL_LIGHT_MODEL_TWO_SIDE
+#define GLPT_STATE_SEPARATE_SPECULAR 4u  // GL_SEPARATE_SPECULAR_COLOR (specular not textured)
 
 // FrameUniforms::options.x: what the trace pass models (render_settings.hpp)
 #define GLPT_OPTION_SHADOWS 1u       // shadow rays (GLPT_SHADOWS)
@@ -201,6 +213,7 @@ static_assert(sizeof(ShadingVertex) == 48);
 static_assert(sizeof(GpuMaterial) == 80);
 static_assert(sizeof(GpuInstance) == 64);
 static_assert(sizeof(GpuEmitter) == 96);
+static_assert(sizeof(GpuClipPlanes) == 112);
 static_assert(sizeof(GpuLight) == 112);
 static_assert(sizeof(GpuTraceState) == 112);
 static_assert(sizeof(FrameUniforms) == 80);

@@ -14,6 +14,7 @@ constexpr VkDescriptorSetLayoutBinding kBindings[] = {
     compute_binding(GLPT_PT_BINDING_INSTANCES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
     compute_binding(GLPT_PT_BINDING_LIGHTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
     compute_binding(GLPT_PT_BINDING_EMITTERS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
+    compute_binding(GLPT_PT_BINDING_CLIP_PLANES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
     compute_binding(GLPT_PT_BINDING_COUNTERS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
     compute_binding(GLPT_PT_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER),
     compute_binding(GLPT_PT_BINDING_STATES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
@@ -54,6 +55,7 @@ void PathTracePass::record(VkCommandBuffer cmd, const PathTraceResources& resour
   const VkDescriptorBufferInfo instances = whole(resources.instances);
   const VkDescriptorBufferInfo lights = whole(resources.lights);
   const VkDescriptorBufferInfo emitters = whole(resources.emitters);
+  const VkDescriptorBufferInfo clip_planes = whole(resources.clip_planes);
   const VkDescriptorBufferInfo states = whole(resources.states);
   const VkDescriptorBufferInfo counters = whole(resources.counters);
   const VkDescriptorBufferInfo frame{resources.frame->handle(), 0, sizeof(gpu::FrameUniforms)};
@@ -73,6 +75,7 @@ void PathTracePass::record(VkCommandBuffer cmd, const PathTraceResources& resour
       storage_buffer_write(set, GLPT_PT_BINDING_INSTANCES, &instances),
       storage_buffer_write(set, GLPT_PT_BINDING_LIGHTS, &lights),
       storage_buffer_write(set, GLPT_PT_BINDING_EMITTERS, &emitters),
+      storage_buffer_write(set, GLPT_PT_BINDING_CLIP_PLANES, &clip_planes),
       storage_buffer_write(set, GLPT_PT_BINDING_STATES, &states),
       storage_buffer_write(set, GLPT_PT_BINDING_COUNTERS, &counters),
       uniform_buffer_write(set, GLPT_PT_BINDING_FRAME, &frame),

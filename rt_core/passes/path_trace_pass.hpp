@@ -17,6 +17,7 @@ struct PathTraceResources {
   const GpuBuffer* instances = nullptr;  // gpu::GpuInstance[]
   const GpuBuffer* lights = nullptr;     // gpu::GpuLight[]
   const GpuBuffer* emitters = nullptr;   // gpu::GpuEmitter[]
+  const GpuBuffer* clip_planes = nullptr;  // gpu::GpuClipPlanes[]
   const GpuBuffer* states = nullptr;     // gpu::GpuTraceState[]
   const GpuBuffer* counters = nullptr;   // gpu::GpuCounters, zeroed by the caller
   const GpuBuffer* frame = nullptr;      // gpu::FrameUniforms

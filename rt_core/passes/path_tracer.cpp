@@ -75,7 +75,8 @@ gpu::GpuTraceState pack_state(const TraceState& state) {
   packed.fog_params = state.fog_params;
   const uint32_t count = static_cast<uint32_t>(std::min<size_t>(state.lights.size(), 8));
   const uint32_t flags = (state.local_viewer ? GLPT_STATE_LOCAL_VIEWER : 0u) |
-                         (state.two_side ? GLPT_STATE_TWO_SIDE : 0u);
+                         (state.two_side ? GLPT_STATE_TWO_SIDE : 0u) |
+                         (state.separate_specular ? GLPT_STATE_SEPARATE_SPECULAR : 0u);
   packed.info = glm::uvec4(count, state.fog_mode, state.targets, flags);
   for (uint32_t i = 0; i < count; ++i) packed.lights[i / 4][i % 4] = state.lights[i];
   return packed;
@@ -201,13 +202,14 @@ void PathTracer::build_scene_setup(const TraceScene& scene, TextureCache* textur
   setup.tlas_instances.clear();
   setup.instance_table.clear();
   setup.emitters.clear();
+  setup.clip_planes.clear();
   setup.instance_bounds.clear();
   setup.scene_bounds = EyeBounds();
   setup.triangles = 0;
   std::unordered_map<uint64_t, uint32_t> texture_slots;  // content version -> slot + 1
   // The slot of unit 0's texture of `surface` + 1; 0: untextured (none, not prepared, or the
   // table is full).
-  auto texture_slot = [&](const SurfaceTexture& surface) -> uint32_t {
+  auto texture_slot = [&](const TracedSurface& surface) -> uint32_t {
     if (!surface.texture || textures == nullptr) return 0;
     const uint64_t version = surface.texture->content_version;
     if (auto found = texture_slots.find(version); found != texture_slots.end()) return found->second;
@@ -232,11 +234,12 @@ void PathTracer::build_scene_setup(const TraceScene& scene, TextureCache* textur
     tlas_instance.instanceCustomIndex = static_cast<uint32_t>(setup.instance_table.size());
     tlas_instance.mask = GLPT_MASK_VISIBLE;  // shadow bits added by setup_lights
     tlas_instance.instanceShaderBindingTableRecordOffset = 0;
-    // Alpha-tested draws are not opaque: the queries' candidate loops test each hit's alpha.
-    const bool alpha_tested = instance.surface.alpha_func != 0;
+    // Alpha-tested and clipped draws are not opaque: the queries' candidate loops test each
+    // hit's alpha and clip planes.
     tlas_instance.flags = VK_GEOMETRY_INSTANCE_TRIANGLE_FACING_CULL_DISABLE_BIT_KHR |
-                          (alpha_tested ? VK_GEOMETRY_INSTANCE_FORCE_NO_OPAQUE_BIT_KHR
-                                        : VK_GEOMETRY_INSTANCE_FORCE_OPAQUE_BIT_KHR);
+                          (instance.surface.tests_candidates()
+                               ? VK_GEOMETRY_INSTANCE_FORCE_NO_OPAQUE_BIT_KHR
+                               : VK_GEOMETRY_INSTANCE_FORCE_OPAQUE_BIT_KHR);
     tlas_instance.accelerationStructureReference = entry->blas_address;
     setup.tlas_instances.push_back(tlas_instance);
 
@@ -247,13 +250,21 @@ void PathTracer::build_scene_setup(const TraceScene& scene, TextureCache* textur
     const glm::uvec2 materials = split_address(shading->materials_address);
     float size = bounds.diagonal();
     if (!std::isfinite(size)) size = std::numeric_limits<float>::max();
+    uint32_t clip_index = 0;  // + 1
+    if (instance.surface.clip_plane_count > 0) {
+      gpu::GpuClipPlanes& planes = setup.clip_planes.emplace_back();
+      for (size_t i = 0; i < TracedSurface::kMaxClipPlanes; ++i)
+        planes.planes[i] = instance.surface.clip_planes[i];
+      planes.count = glm::uvec4(instance.surface.clip_plane_count, 0u, 0u, 0u);
+      clip_index = static_cast<uint32_t>(setup.clip_planes.size());
+    }
     setup.instance_table.push_back(
         {glm::uvec4(positions, vertices),
          glm::uvec4(materials, instance.state, std::bit_cast<uint32_t>(size)),
          glm::uvec4(texture_slot(instance.surface), instance.surface.env_mode,
                     instance.surface.alpha_func, std::bit_cast<uint32_t>(instance.surface.alpha_ref)),
-         glm::uvec4(add_emitters(shading->emitters, instance.modelview, setup.emitters), 0u, 0u,
-                    0u)});
+         glm::uvec4(add_emitters(shading->emitters, instance.modelview, setup.emitters),
+                    clip_index, 0u, 0u)});
 
     setup.instance_bounds.push_back(bounds);
     setup.scene_bounds.extend(bounds);
@@ -343,6 +354,7 @@ void PathTracer::trace(const TraceScene& scene, const TraceTargets& targets, Fra
   upload(*device_, lights_, light_setup.lights);
   const uint32_t emitter_count = finish_emitters(scene_.emitters);
   upload(*device_, emitters_, scene_.emitters);
+  upload(*device_, clip_planes_, scene_.clip_planes);
   stats.emitters = emitter_count;
   std::vector<gpu::GpuTraceState> states;
   states.reserve(scene.states.size());
@@ -387,6 +399,7 @@ void PathTracer::trace(const TraceScene& scene, const TraceTargets& targets, Fra
   trace.instances = &instance_table_;
   trace.lights = &lights_;
   trace.emitters = &emitters_;
+  trace.clip_planes = &clip_planes_;
   trace.states = &states_;
   trace.counters = &counters_;
   trace.frame = &frame_uniforms_;

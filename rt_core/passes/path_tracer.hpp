@@ -84,6 +84,7 @@ class PathTracer {
     // The emissive triangles of the frame in eye space, with their choice probabilities
     // (empty when nothing emits).
     std::vector<gpu::GpuEmitter> emitters;
+    std::vector<gpu::GpuClipPlanes> clip_planes;  // one per instance with user clip planes
     std::vector<EyeBounds> instance_bounds;
     EyeBounds scene_bounds;
     uint64_t triangles = 0;
@@ -98,7 +99,7 @@ class PathTracer {
   // instance table order (instanceCustomIndex) is unaffected.
   static void sort_instances_spatially(SceneSetup& setup);
   // Appends an instance's emissive triangles in eye space (their power in p1.w for now); returns
-  // the index of the first + 1 (GpuInstance::emitters.x), 0 when it has none or the table is
+  // the index of the first + 1 (GpuInstance::tables.x), 0 when it has none or the table is
   // full (GLPT_MAX_EMITTERS: then bounces alone find its light).
   static uint32_t add_emitters(std::span<const EmitterTriangle> triangles,
                                const glm::mat4& modelview, std::vector<gpu::GpuEmitter>& emitters);
@@ -120,6 +121,7 @@ class PathTracer {
   GpuBuffer instance_table_;
   GpuBuffer lights_;
   GpuBuffer emitters_;
+  GpuBuffer clip_planes_;
   GpuBuffer states_;
   GpuBuffer accumulation_;
 

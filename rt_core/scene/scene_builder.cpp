@@ -114,7 +114,9 @@ Light light_of(const rec::Light& l) {
 // a batch of draws shares the lights of its instance.
 bool same_light_set(const rec::LightingState& a, const rec::LightingState& b) {
   if (&a == &b) return true;
-  if (a.enabled != b.enabled || a.light_mask != b.light_mask || a.model_ambient != b.model_ambient)
+  if (a.enabled != b.enabled || a.light_mask != b.light_mask || a.model_ambient != b.model_ambient ||
+      a.two_side != b.two_side || a.local_viewer != b.local_viewer ||
+      a.separate_specular != b.separate_specular)
     return false;
   for (int l = 0; l < rec::kMaxLights; ++l)
     if ((a.light_mask & (1u << l)) && !(a.lights[l] == b.lights[l])) return false;
@@ -132,9 +134,9 @@ uint32_t intern(std::vector<Material>& materials, const Material& m) {
   return static_cast<uint32_t>(materials.size() - 1);
 }
 
-// What rays see of a draw's texture unit 0 and alpha test.
-SurfaceTexture surface_texture_of(const rec::StateSnapshot& state) {
-  SurfaceTexture surface;
+// What rays see of a draw besides its triangles: texture unit 0, alpha test, clip planes.
+TracedSurface surface_texture_of(const rec::StateSnapshot& state) {
+  TracedSurface surface;
   const rec::TextureUnitState& unit = state.texturing->units[0];
   if (unit.target == GL_TEXTURE_2D && unit.texture) {
     surface.texture = unit.texture;
@@ -146,6 +148,10 @@ SurfaceTexture surface_texture_of(const rec::StateSnapshot& state) {
     surface.alpha_func = ops.alpha_func;
     surface.alpha_ref = ops.alpha_ref;
   }
+  const rec::TransformState& transform = *state.transform;
+  for (size_t i = 0; i < transform.clip_planes.size() && i < TracedSurface::kMaxClipPlanes; ++i)
+    if ((transform.clip_plane_mask >> i) & 1u)
+      surface.clip_planes[surface.clip_plane_count++] = transform.clip_planes[i];
   return surface;
 }
 
@@ -202,7 +208,7 @@ class Batcher {
     const rec::TransformState& transform = *state.transform;
     const bool projective = is_projective(transform.modelview);
     const glm::mat4 modelview = projective ? glm::mat4(1.0f) : transform.modelview;
-    const SurfaceTexture surface = surface_texture_of(state);
+    const TracedSurface surface = surface_texture_of(state);
     if (open_ && (std::memcmp(&modelview, &open_modelview_, sizeof modelview) != 0 ||
                   !same_light_set(*state.lighting, *open_lighting_) || !(surface == open_surface_)))
       close();
@@ -254,7 +260,7 @@ class Batcher {
     }
     instances_.push_back({std::move(geometry), open_modelview_, open_state_, open_surface_});
     open_lighting_.reset();
-    open_surface_ = SurfaceTexture();
+    open_surface_ = TracedSurface();
   }
 
  private:
@@ -319,7 +325,7 @@ class Batcher {
   std::vector<OpenDraw> draws_;
   glm::mat4 open_modelview_{1.0f};
   std::shared_ptr<const rec::LightingState> open_lighting_;
-  SurfaceTexture open_surface_;
+  TracedSurface open_surface_;
   uint32_t open_state_ = 0;
   ContentHash shape_, shading_;
 };
@@ -485,6 +491,7 @@ void build_trace_scene(const rec::FrameRecord& record, const rec::DrawableConfig
     if (!lighting.enabled) continue;
     t.local_viewer = lighting.local_viewer;
     t.two_side = lighting.two_side;
+    t.separate_specular = lighting.separate_specular;
     if (first_lit < 0) first_lit = static_cast<int>(s);
     t.global_ambient = lighting.model_ambient;
     for (int l = 0; l < rec::kMaxLights; ++l) {

@@ -5,6 +5,7 @@
 // was drawn with, so a moving camera only changes instance transforms, never geometry.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <glm/glm.hpp>
 #include <memory>
@@ -69,17 +70,25 @@ struct Geometry {
   size_t triangle_count() const { return positions.size() / 3; }
 };
 
-// What rays see of a traced draw's texture unit 0 and alpha test (docs/light-transport.md,
-// "Textures in the tracer"): draws that differ in it are separate instances.
-struct SurfaceTexture {
+// What rays see of a traced draw besides its triangles (docs/light-transport.md, "Textures in
+// the tracer"): texture unit 0, the alpha test and the user clip planes. Draws that differ in it
+// are separate instances.
+struct TracedSurface {
   // A 2-D texture on unit 0 (other targets and units are not sampled by rays); null: none.
   std::shared_ptr<const rec::TextureObjectSnapshot> texture;
   float lod_bias = 0.0f;          // the unit's GL_TEXTURE_LOD_BIAS
   uint32_t env_mode = GL_MODULATE;  // GL_TEXTURE_ENV_MODE
   uint32_t alpha_func = 0;        // GL alpha test function, 0 when the alpha test is off
   float alpha_ref = 0.0f;
+  // The enabled GL_CLIP_PLANEi in eye space, packed (the first clip_plane_count are used, the
+  // rest stay zero so equal clipping compares equal).
+  static constexpr size_t kMaxClipPlanes = 6;
+  uint32_t clip_plane_count = 0;
+  std::array<glm::vec4, kMaxClipPlanes> clip_planes{};
 
-  bool operator==(const SurfaceTexture&) const = default;
+  // Rays must test candidate hits on it (alpha test, clip planes): not an opaque TLAS instance.
+  bool tests_candidates() const { return alpha_func != 0 || clip_plane_count != 0; }
+  bool operator==(const TracedSurface&) const = default;
 };
 
 struct Instance {
@@ -87,7 +96,7 @@ struct Instance {
   glm::mat4 modelview{1.0f};  // object -> eye space at draw time
   // The record state whose lights light this geometry where bounce rays hit it.
   uint32_t state = 0;
-  SurfaceTexture surface;
+  TracedSurface surface;
 };
 
 // A GL light in eye space, with its GL parameters (already transformed by the modelview that was
@@ -122,6 +131,9 @@ struct TraceState {
   uint32_t targets = 0;        // colour buffers its draws write: bit 0 front, bit 1 back
   bool local_viewer = false;   // GL_LIGHT_MODEL_LOCAL_VIEWER (the GL-parity evaluation)
   bool two_side = false;       // GL_LIGHT_MODEL_TWO_SIDE
+  // GL_LIGHT_MODEL_COLOR_CONTROL is GL_SEPARATE_SPECULAR_COLOR: specular is added after
+  // texturing (GL_SINGLE_COLOR: the texture environment applies to it too).
+  bool separate_specular = false;
 };
 
 struct TraceScene {

@@ -53,8 +53,8 @@ bool sample_emitter(vec3 origin, float u_choice, vec2 u_point, out EmitterSample
 // primitive `primitive` of `instance` at distance t along `direction`; 0 where it never would
 // (the instance is not in the table, or nothing emits this frame).
 float emitter_direction_pdf(GpuInstance instance, int primitive, vec3 direction, float t) {
-  if (emitter_count() == 0u || instance.emitters.x == 0u) return 0.0;
-  GpuEmitter e = emitters[instance.emitters.x - 1u + uint(primitive)];
+  if (emitter_count() == 0u || instance.tables.x == 0u) return 0.0;
+  GpuEmitter e = emitters[instance.tables.x - 1u + uint(primitive)];
   vec3 normal = normalize(cross(e.p1.xyz - e.p0.xyz, e.p2.xyz - e.p0.xyz));
   return e.p1.w * triangle_solid_angle_pdf(e.p2.w, t, dot(normal, direction));
 }

@@ -1,7 +1,7 @@
 // The two ray-query sites of the trace pass: the closest hit (bounces, ambient occlusion) and the
 // occlusion test (shadow rays). One call site each: lavapipe inlines the whole BVH traversal at
 // every call site, so fewer sites mean faster pipeline compiles and smaller code.
-// Needs: `scene` (the TLAS), texture.h (the alpha test of candidate hits).
+// Needs: `scene` (the TLAS), `clip_planes`, texture.h (the alpha test of candidate hits).
 #ifndef GLPT_SHADERS_TRACE_QUERIES_H
 #define GLPT_SHADERS_TRACE_QUERIES_H
 
@@ -17,13 +17,26 @@ struct Hit {
   mat4x3 eye_to_object;
 };
 
-// Only alpha-tested instances are not opaque (their TLAS instances lack FORCE_OPAQUE): their hits
-// arrive as candidates, kept where GL's alpha test keeps the fragment (texture.h).
-void confirm_if_alpha_passes(rayQueryEXT query) {
+// Whether eye-space point p is on the side of every user clip plane of `instance` GL keeps.
+bool inside_clip_planes(GpuInstance instance, vec3 p) {
+  if (instance.tables.y == 0u) return true;
+  GpuClipPlanes planes = clip_planes[instance.tables.y - 1u];
+  for (uint i = 0u; i < min(planes.count.x, uint(GLPT_MAX_CLIP_PLANES)); ++i)
+    if (dot(planes.planes[i], vec4(p, 1.0)) < 0.0) return false;
+  return true;
+}
+
+// Only alpha-tested and clipped instances are not opaque (their TLAS instances lack
+// FORCE_OPAQUE): their hits arrive as candidates, kept where GL keeps the fragment: inside the
+// clip planes and passing the alpha test (texture.h).
+void confirm_if_visible(rayQueryEXT query) {
   if (rayQueryGetIntersectionTypeEXT(query, false) != gl_RayQueryCandidateIntersectionTriangleEXT)
     return;
-  if (candidate_passes_alpha_test(rayQueryGetIntersectionInstanceCustomIndexEXT(query, false),
-                                  rayQueryGetIntersectionPrimitiveIndexEXT(query, false),
+  int index = rayQueryGetIntersectionInstanceCustomIndexEXT(query, false);
+  vec3 p = rayQueryGetWorldRayOriginEXT(query) +
+           rayQueryGetIntersectionTEXT(query, false) * rayQueryGetWorldRayDirectionEXT(query);
+  if (!inside_clip_planes(instances[index], p)) return;
+  if (candidate_passes_alpha_test(index, rayQueryGetIntersectionPrimitiveIndexEXT(query, false),
                                   rayQueryGetIntersectionBarycentricsEXT(query, false)))
     rayQueryConfirmIntersectionEXT(query);
 }
@@ -32,7 +45,7 @@ bool trace_closest(vec3 origin, vec3 direction, float t_max, out Hit hit) {
   rayQueryEXT query;
   rayQueryInitializeEXT(query, scene, gl_RayFlagsNoneEXT, GLPT_MASK_VISIBLE, origin, 0.0,
                         direction, t_max);
-  while (rayQueryProceedEXT(query)) confirm_if_alpha_passes(query);
+  while (rayQueryProceedEXT(query)) confirm_if_visible(query);
   if (rayQueryGetIntersectionTypeEXT(query, true) != gl_RayQueryCommittedIntersectionTriangleEXT)
     return false;
   hit.t = rayQueryGetIntersectionTEXT(query, true);
@@ -51,7 +64,7 @@ bool query_occlusion(vec3 origin, vec3 direction, float t_max, uint cull_mask, b
   rayQueryEXT query;
   rayQueryInitializeEXT(query, scene, first_hit ? gl_RayFlagsTerminateOnFirstHitEXT : 0u,
                         cull_mask, origin, 0.0, direction, t_max);
-  while (rayQueryProceedEXT(query)) confirm_if_alpha_passes(query);
+  while (rayQueryProceedEXT(query)) confirm_if_visible(query);
   bool hit = rayQueryGetIntersectionTypeEXT(query, true) != gl_RayQueryCommittedIntersectionNoneEXT;
   t = hit ? rayQueryGetIntersectionTEXT(query, true) : t_max;
   instance = hit ? rayQueryGetIntersectionInstanceCustomIndexEXT(query, true) : 0;

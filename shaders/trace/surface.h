@@ -124,6 +124,12 @@ Surface load_surface(Hit hit, vec3 ray_direction, float cone_width) {
     vec4 texel = sample_unit0(instance, texcoord, lod);
     s.diffuse_gl = texture_environment(instance.surface.y, vec4(s.diffuse_gl, 1.0), texel).rgb;
     if (s.lit) s.ambient = texture_environment(instance.surface.y, vec4(s.ambient, 1.0), texel).rgb;
+    // Under GL_SINGLE_COLOR specular is textured too, by the environment's slope f(c) - f(0)
+    // (raster_ff.frag). Emission stays untextured here, as next-event estimation sees it.
+    if (s.lit && (states[s.state].info.w & GLPT_STATE_SEPARATE_SPECULAR) == 0u)
+      s.specular_gl =
+          texture_environment(instance.surface.y, vec4(s.specular_gl, 1.0), texel).rgb -
+          texture_environment(instance.surface.y, vec4(0.0, 0.0, 0.0, 1.0), texel).rgb;
   }
   return s;
 }

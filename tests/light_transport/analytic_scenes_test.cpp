@@ -482,6 +482,41 @@ TEST(LightTransport, AlphaTestedQuadCastsTheShadowOfItsCutOut) {
   EXPECT_LT(solid.at(shadow_x, y), 10);
 }
 
+TEST(LightTransport, ClippedAwayPartsCastNoShadow) {
+  // The alpha test's scene with an untextured quad whose right half (x > 0) a user clip plane
+  // removes: the floor under the removed half is lit, the kept half still shadows.
+  auto scene = [](bool clipped) {
+    return [clipped] {
+      camera();
+      material(glm::vec3(0.8f));
+      inverse_square_light(GL_LIGHT0, {0.0f, 0.0f, -1.0f}, glm::vec3(8.0f));
+      facing_plane(-5.0f, 3.0f);
+      const double keep_left[] = {-1, 0, 0, 0};  // -x >= 0 (eye space: the modelview is I)
+      glClipPlane(GL_CLIP_PLANE2, keep_left);
+      if (clipped) glEnable(GL_CLIP_PLANE2);
+      quad({-1, -1, -3}, {1, -1, -3}, {1, 1, -3}, {-1, 1, -3});
+      glDisable(GL_CLIP_PLANE2);
+    };
+  };
+  const Settings settings = path({{"GLPT_LIGHT_RADIUS", "0"}, {"GLPT_BOUNCES", "0"}, {"GLPT_AO", "0"}});
+  const Image cut = render(settings, scene(true), 1, "clipped");
+  const Image whole = render(settings, scene(false), 1, "whole");
+  // Floor pixels in the shadows of the two halves, outside the quad's own image (x = -+1.85).
+  const int left_x = 10, right_x = 53, y = 32;
+  ASSERT_LT(on_plane(left_x, y, -5.0f).x, -1.6f);
+  ASSERT_GT(on_plane(right_x, y, -5.0f).x, 1.6f);
+  EXPECT_LT(cut.at(left_x, y), 10) << "the kept half shadows the floor";
+  EXPECT_LT(whole.at(right_x, y), 10) << "unclipped, the right half shadows it too";
+  // Clipped, the floor there is lit as if nothing were above it: kd * colour * cos / d^2.
+  for (int x : {right_x, 43}) {  // 43: seen through where the clipped half was
+    const glm::vec3 to_light = glm::vec3(0, 0, -1) - on_plane(x, y, -5.0f);
+    const double d2 = glm::dot(to_light, to_light);
+    const double lit_expected = 255 * 0.8 * 8.0 * (4.0 / std::sqrt(d2)) / d2;
+    expect_close(cut.at(x, y), std::min(255.0, lit_expected), 0.02, 2.0,
+                 "floor under the clipped-away half, x " + std::to_string(x));
+  }
+}
+
 TEST(LightTransport, BounceRaysSeeTheTexturesOfWhatTheyHit) {
   // A white floor lit from above beside a wall whose texture is pure red: light bouncing off the
   // wall onto the floor is red. The same wall with a white texture bounces white light.
@@ -577,7 +612,10 @@ TEST(LightTransport, HundredLightsConvergeToLoopingOverAllWithLessNoiseThanUnifo
 // A finely tessellated lit sphere (Gouraud interpolation then differs little from per-pixel
 // lighting) under a positional light with attenuation and a coloured directional spot, with
 // specular, two-sided lighting and a local viewer.
-void lit_sphere() {
+// A finely tessellated lit sphere with two lights, specular and a local viewer; `textured`: with
+// a checker texture (GL_MODULATE) and a little emission, under GL_LIGHT_MODEL_COLOR_CONTROL
+// `color_control`.
+void lit_sphere_with(bool textured, GLenum color_control) {
   camera();
   glEnable(GL_LIGHTING);
   glEnable(GL_NORMALIZE);
@@ -599,6 +637,26 @@ void lit_sphere() {
   glMaterialfv(GL_FRONT, GL_DIFFUSE, diffuse);
   glMaterialfv(GL_FRONT, GL_SPECULAR, specular);
   glMaterialf(GL_FRONT, GL_SHININESS, 20.0f);
+  const float no_emission[] = {0, 0, 0, 1}, emission[] = {0.1f, 0.15f, 0.05f, 1};
+  glMaterialfv(GL_FRONT, GL_EMISSION, textured ? emission : no_emission);
+  glLightModeli(GL_LIGHT_MODEL_COLOR_CONTROL, color_control);
+  if (textured) {
+    GLuint texture = 0;
+    glGenTextures(1, &texture);
+    glBindTexture(GL_TEXTURE_2D, texture);
+    uint8_t texels[8 * 8 * 3];
+    for (int i = 0; i < 8 * 8; ++i) {
+      const bool dark = ((i % 8) + (i / 8)) % 2 == 0;
+      texels[3 * i + 0] = dark ? 40 : 250;
+      texels[3 * i + 1] = dark ? 60 : 230;
+      texels[3 * i + 2] = dark ? 120 : 200;
+    }
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB, 8, 8, 0, GL_RGB, GL_UNSIGNED_BYTE, texels);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+    glEnable(GL_TEXTURE_2D);
+  }
   const int kRings = 96, kSegments = 192;
   const float r = 1.5f;
   const glm::vec3 c(0, 0, -5);
@@ -610,13 +668,17 @@ void lit_sphere() {
       for (float t : {t1, t0}) {
         const glm::vec3 n(std::sin(t) * std::cos(phi), std::cos(t), std::sin(t) * std::sin(phi));
         glNormal3f(n.x, n.y, n.z);
+        glTexCoord2f(phi / float(2 * M_PI), t / float(M_PI));
         const glm::vec3 p = c + r * n;
         glVertex3f(p.x, p.y, p.z);
       }
     }
     glEnd();
   }
+  if (textured) glDisable(GL_TEXTURE_2D);
 }
+
+void lit_sphere() { lit_sphere_with(false, GL_SINGLE_COLOR); }
 
 double psnr(const Image& a, const Image& b) {
   double sum = 0;
@@ -637,6 +699,22 @@ TEST(LightTransport, WithoutShadowsBouncesAndAoThePathTracerIsGlsLighting) {
   const double db = psnr(gl, parity);
   std::printf("GL parity: PSNR %.1f dB against raster mode (= Mesa)\n", db);
   EXPECT_GT(db, 40.0);
+}
+
+TEST(LightTransport, GlParityHoldsForTexturedSurfacesUnderBothColourControls) {
+  // GL textures the lit colour: emission always, specular too under GL_SINGLE_COLOR (GL 1.5
+  // 2.14.1, 3.9); under GL_SEPARATE_SPECULAR_COLOR specular is added after texturing.
+  for (GLenum control : {GLenum(GL_SINGLE_COLOR), GLenum(GL_SEPARATE_SPECULAR_COLOR)}) {
+    auto scene = [control] { lit_sphere_with(true, control); };
+    const Image gl = render({{"GLPT_MODE", "raster"}}, scene, 1, "raster");
+    const Image parity =
+        render(path({{"GLPT_SHADOWS", "0"}, {"GLPT_BOUNCES", "0"}, {"GLPT_AO", "0"}}), scene, 1,
+               "parity");
+    const double db = psnr(gl, parity);
+    std::printf("textured GL parity (%s): PSNR %.1f dB against raster mode\n",
+                control == GL_SINGLE_COLOR ? "GL_SINGLE_COLOR" : "GL_SEPARATE_SPECULAR_COLOR", db);
+    EXPECT_GT(db, 40.0) << control;
+  }
 }
 
 // ---- bad input ---------------------------------------------------------------------------------
