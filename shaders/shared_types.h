@@ -89,7 +89,8 @@ struct GpuPosition {
 struct ShadingVertex {
   vec4 normal;    // xyz: normal as given (not necessarily unit length); w: material index (float)
   vec4 color;     // GL current colour
-  vec4 texcoord;  // texture unit 0's coordinates after texgen and the texture matrix (s, t, r, q)
+  vec4 texcoord;   // texture unit 0's coordinates after texgen and the texture matrix (s, t, r, q)
+  vec4 texcoord1;  // texture unit 1's
 };
 
 struct GpuMaterial {
@@ -117,6 +118,9 @@ struct GpuInstance {
   // + 1 (0: untextured), y: GL_TEXTURE_ENV_MODE, z: GL alpha function (0: no alpha test),
   // w: floatBits(alpha reference)
   uvec4 surface;
+  // Texture unit 1 (a lightmap or detail texture): x: GLPT_PT_BINDING_TEXTURES index + 1 (0:
+  // none), y: its GL_TEXTURE_ENV_MODE, zw: unused
+  uvec4 surface1;
   // Indices into the frame's other tables. x: in the emitter table (GLPT_PT_BINDING_EMITTERS),
   // of the emitter of BLAS primitive 0, + 1 (primitive p is emitter x - 1 + p); 0: not sampled
   // by next-event estimation. y: in the clip-plane table (GLPT_PT_BINDING_CLIP_PLANES) + 1; 0:
@@ -209,9 +213,9 @@ struct GpuCounters {
 
 #ifdef __cplusplus
 static_assert(sizeof(GpuPosition) == 16);
-static_assert(sizeof(ShadingVertex) == 48);
+static_assert(sizeof(ShadingVertex) == 64);
 static_assert(sizeof(GpuMaterial) == 80);
-static_assert(sizeof(GpuInstance) == 64);
+static_assert(sizeof(GpuInstance) == 80);
 static_assert(sizeof(GpuEmitter) == 96);
 static_assert(sizeof(GpuClipPlanes) == 112);
 static_assert(sizeof(GpuLight) == 112);

@@ -207,9 +207,8 @@ void PathTracer::build_scene_setup(const TraceScene& scene, TextureCache* textur
   setup.scene_bounds = EyeBounds();
   setup.triangles = 0;
   std::unordered_map<uint64_t, uint32_t> texture_slots;  // content version -> slot + 1
-  // The slot of unit 0's texture of `surface` + 1; 0: untextured (none, not prepared, or the
-  // table is full).
-  auto texture_slot = [&](const TracedSurface& surface) -> uint32_t {
+  // The slot of `unit`'s texture + 1; 0: untextured (none, not prepared, or the table is full).
+  auto texture_slot = [&](const TracedUnit& surface) -> uint32_t {
     if (!surface.texture || textures == nullptr) return 0;
     const uint64_t version = surface.texture->content_version;
     if (auto found = texture_slots.find(version); found != texture_slots.end()) return found->second;
@@ -261,8 +260,10 @@ void PathTracer::build_scene_setup(const TraceScene& scene, TextureCache* textur
     setup.instance_table.push_back(
         {glm::uvec4(positions, vertices),
          glm::uvec4(materials, instance.state, std::bit_cast<uint32_t>(size)),
-         glm::uvec4(texture_slot(instance.surface), instance.surface.env_mode,
+         glm::uvec4(texture_slot(instance.surface.units[0]), instance.surface.units[0].env_mode,
                     instance.surface.alpha_func, std::bit_cast<uint32_t>(instance.surface.alpha_ref)),
+         glm::uvec4(texture_slot(instance.surface.units[1]), instance.surface.units[1].env_mode,
+                    0u, 0u),
          glm::uvec4(add_emitters(shading->emitters, instance.modelview, setup.emitters),
                     clip_index, 0u, 0u)});
 

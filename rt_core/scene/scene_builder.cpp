@@ -137,11 +137,13 @@ uint32_t intern(std::vector<Material>& materials, const Material& m) {
 // What rays see of a draw besides its triangles: texture unit 0, alpha test, clip planes.
 TracedSurface surface_texture_of(const rec::StateSnapshot& state) {
   TracedSurface surface;
-  const rec::TextureUnitState& unit = state.texturing->units[0];
-  if (unit.target == GL_TEXTURE_2D && unit.texture) {
-    surface.texture = unit.texture;
-    surface.env_mode = unit.env.mode;
-    surface.lod_bias = unit.env.lod_bias;
+  for (size_t u = 0; u < TracedSurface::kUnits; ++u) {
+    const rec::TextureUnitState& unit = state.texturing->units[u];
+    if (unit.target == GL_TEXTURE_2D && unit.texture) {
+      surface.units[u].texture = unit.texture;
+      surface.units[u].env_mode = unit.env.mode;
+      surface.units[u].lod_bias = unit.env.lod_bias;
+    }
   }
   const rec::FragmentOpsState& ops = state.raster->ops;
   if (ops.alpha_test && ops.alpha_func != GL_ALWAYS) {
@@ -155,11 +157,11 @@ TracedSurface surface_texture_of(const rec::StateSnapshot& state) {
   return surface;
 }
 
-// Unit 0's coordinates of vertex `src` as GL computes them: texgen (object- and eye-linear; the
-// other modes keep the given coordinates), then the texture matrix.
-glm::vec4 texcoord_of(const rec::VertexData& v, uint32_t src, const rec::TextureUnitState& unit,
-                      const glm::mat4& modelview) {
-  glm::vec4 tc = rec::attribute_at(v.tex_coord[0], src, glm::vec4(0, 0, 0, 1));
+// Unit `u`'s coordinates of vertex `src` as GL computes them: texgen (object- and eye-linear;
+// the other modes keep the given coordinates), then the texture matrix.
+glm::vec4 texcoord_of(const rec::VertexData& v, uint32_t src, size_t u,
+                      const rec::TextureUnitState& unit, const glm::mat4& modelview) {
+  glm::vec4 tc = rec::attribute_at(v.tex_coord[u], src, glm::vec4(0, 0, 0, 1));
   if (unit.texgen_mask != 0) {
     const glm::vec4 object = v.position[src];
     const glm::vec4 eye = modelview * object;
@@ -229,9 +231,11 @@ class Batcher {
     shading_.add_bytes(&keys.attributes, sizeof keys.attributes);
     shading_.add_bytes(&flat, sizeof flat);
     add_material_state(shading_, *state.lighting, !v.material.empty());
-    if (surface.texture) {
+    for (size_t u = 0; u < TracedSurface::kUnits; ++u) {
+      if (!surface.units[u].texture) continue;
       // The texture coordinates: what makes them besides the vertex data.
-      const rec::TextureUnitState& unit = state.texturing->units[0];
+      const rec::TextureUnitState& unit = state.texturing->units[u];
+      shading_.add_bytes(&u, sizeof u);
       shading_.add_bytes(&unit.texgen_mask, sizeof unit.texgen_mask);
       shading_.add_bytes(&unit.matrix, sizeof unit.matrix);
       if (unit.texgen_mask != 0) {
@@ -280,7 +284,9 @@ class Batcher {
       return intern(g.materials, front);
     };
     const uint32_t shared_material = v.material.empty() ? material_pair(lighting.material) : 0;
-    const bool textured = surface_texture_of(state).texture != nullptr;
+    const TracedSurface surface = surface_texture_of(state);
+    const bool textured = surface.units[0].texture != nullptr;
+    const bool textured1 = surface.units[1].texture != nullptr;
     // GL's normal transform (the inverse transpose of the modelview) for eye-space normals.
     const glm::mat3 normal_matrix = glm::transpose(glm::mat3(transform.modelview_inverse));
     const glm::vec3 kDefaultNormal(0, 0, 1);
@@ -305,8 +311,11 @@ class Batcher {
         g.colors.push_back(rec::attribute_at(v.color, src, kDefaultColor));
         // Texture coordinates are not flat-shaded: they follow each vertex.
         if (textured)
-          g.texcoords.push_back(texcoord_of(v, t.v[k], state.texturing->units[0],
+          g.texcoords.push_back(texcoord_of(v, t.v[k], 0, state.texturing->units[0],
                                             transform.modelview));
+        if (textured1)
+          g.texcoords1.push_back(texcoord_of(v, t.v[k], 1, state.texturing->units[1],
+                                             transform.modelview));
       }
       g.material_ids.push_back(v.material.empty() ? shared_material
                                                   : material_pair(v.material[provoking]));

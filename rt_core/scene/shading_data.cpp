@@ -68,6 +68,8 @@ void pack_shading(const Geometry& geometry, std::span<const uint32_t> triangle_o
       out.color = color;
       out.texcoord = source < geometry.texcoords.size() ? geometry.texcoords[source]
                                                         : glm::vec4(0, 0, 0, 1);
+      out.texcoord1 = source < geometry.texcoords1.size() ? geometry.texcoords1[source]
+                                                          : glm::vec4(0, 0, 0, 1);
     }
   }
 }

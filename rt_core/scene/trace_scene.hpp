@@ -52,9 +52,10 @@ struct Geometry {
   std::vector<glm::vec3> positions;
   std::vector<glm::vec3> normals;      // not necessarily unit length
   std::vector<glm::vec4> colors;       // current colour per vertex (used per color_source)
-  // Texture unit 0's coordinates per vertex after texgen and the texture matrix (empty when the
-  // geometry's draws are untextured).
+  // Texture units 0 and 1's coordinates per vertex after texgen and the texture matrix (empty
+  // when the geometry's draws have no 2-D texture on that unit).
   std::vector<glm::vec4> texcoords;
+  std::vector<glm::vec4> texcoords1;
   std::vector<uint32_t> material_ids;  // one per triangle, index into `materials`
   std::vector<Material> materials;
   // Identity of the shape (positions, triangle order): geometries with equal shape hashes share
@@ -70,14 +71,24 @@ struct Geometry {
   size_t triangle_count() const { return positions.size() / 3; }
 };
 
-// What rays see of a traced draw besides its triangles (docs/light-transport.md, "Textures in
-// the tracer"): texture unit 0, the alpha test and the user clip planes. Draws that differ in it
-// are separate instances.
-struct TracedSurface {
-  // A 2-D texture on unit 0 (other targets and units are not sampled by rays); null: none.
+// A texture unit as rays see it: its 2-D texture and environment.
+struct TracedUnit {
+  // The unit's texture when it samples a 2-D one (other targets are not sampled by rays); null:
+  // none.
   std::shared_ptr<const rec::TextureObjectSnapshot> texture;
-  float lod_bias = 0.0f;          // the unit's GL_TEXTURE_LOD_BIAS
+  float lod_bias = 0.0f;            // the unit's GL_TEXTURE_LOD_BIAS
   uint32_t env_mode = GL_MODULATE;  // GL_TEXTURE_ENV_MODE
+
+  bool operator==(const TracedUnit&) const = default;
+};
+
+// What rays see of a traced draw besides its triangles (docs/light-transport.md, "Textures in
+// the tracer"): texture units 0 and 1 (a base texture and a lightmap or detail texture, the
+// multitexture of GL 1.x programs), the alpha test and the user clip planes. Draws that differ
+// in it are separate instances.
+struct TracedSurface {
+  static constexpr size_t kUnits = 2;
+  std::array<TracedUnit, kUnits> units;
   uint32_t alpha_func = 0;        // GL alpha test function, 0 when the alpha test is off
   float alpha_ref = 0.0f;
   // The enabled GL_CLIP_PLANEi in eye space, packed (the first clip_plane_count are used, the

@@ -1,5 +1,5 @@
 // Textures and the alpha test as rays see them (docs/light-transport.md, "Textures in the
-// tracer"): a traced draw's texture unit 0 (2-D textures) through its texture environment, at
+// tracer"): a traced draw's texture units 0 and 1 (2-D textures) through their environments, at
 // bounce hits with a mip level from ray cones (Akenine-Moeller et al., "Texture Level of Detail
 // Strategies for Real-Time Ray Tracing", Ray Tracing Gems ch. 20), and GL's alpha test on every
 // candidate hit of an alpha-tested draw, so cut-outs neither show nor cast shadows.
@@ -42,18 +42,26 @@ bool alpha_test_passes(uint func, float alpha, float reference) {
   }
 }
 
-vec4 sample_unit0(GpuInstance instance, vec4 texcoord, float lod) {
+// The texture of table slot `slot` (+ 1, as GpuInstance stores it) at projective coordinates
+// `texcoord`, level `lod`.
+vec4 sample_slot(uint slot, vec4 texcoord, float lod) {
   vec2 uv = texcoord.w != 0.0 ? texcoord.xy / texcoord.w : texcoord.xy;
-  return textureLod(textures[nonuniformEXT(instance.surface.x - 1u)], uv, lod);
+  return textureLod(textures[nonuniformEXT(slot - 1u)], uv, lod);
+}
+
+// GL's texture units 0 and 1 as rays see them (slot + 1, GL_TEXTURE_ENV_MODE of each; slot 0:
+// the unit is off).
+uvec2 unit_of(GpuInstance instance, uint unit) {
+  return unit == 0u ? instance.surface.xy : instance.surface1.xy;
 }
 
 // The mip level of a hit on triangle (p, uv) by a ray cone of width `cone_width` arriving along
 // `direction` at a surface of unit normal `normal`: half the log of texels per unit area, plus
 // the log of the cone's footprint.
-float ray_cone_lod(GpuInstance instance, vec3 p0, vec3 p1, vec3 p2, vec2 uv0, vec2 uv1, vec2 uv2,
+float ray_cone_lod(uint slot, vec3 p0, vec3 p1, vec3 p2, vec2 uv0, vec2 uv1, vec2 uv2,
                    float cone_width, vec3 direction, vec3 normal) {
   if (cone_width <= 0.0) return 0.0;
-  vec2 size = vec2(textureSize(textures[nonuniformEXT(instance.surface.x - 1u)], 0));
+  vec2 size = vec2(textureSize(textures[nonuniformEXT(slot - 1u)], 0));
   vec2 e1 = (uv1 - uv0) * size, e2 = (uv2 - uv0) * size;
   float texel_area = abs(e1.x * e2.y - e1.y * e2.x);
   float world_area = length(cross(p1 - p0, p2 - p0));
@@ -81,7 +89,12 @@ bool candidate_passes_alpha_test(int instance_index, int primitive, vec2 barycen
   vec4 color = vec4(1.0, 1.0, 1.0, m.params.y != 0u && !tracks_diffuse ? m.diffuse.a : vertex_alpha);
   if (instance.surface.x != 0u) {
     vec4 texcoord = w.x * v0.texcoord + w.y * v1.texcoord + w.z * v2.texcoord;
-    color = texture_environment(instance.surface.y, color, sample_unit0(instance, texcoord, 0.0));
+    color = texture_environment(instance.surface.y, color, sample_slot(instance.surface.x, texcoord, 0.0));
+  }
+  if (instance.surface1.x != 0u) {
+    vec4 texcoord = w.x * v0.texcoord1 + w.y * v1.texcoord1 + w.z * v2.texcoord1;
+    color = texture_environment(instance.surface1.y, color,
+                                sample_slot(instance.surface1.x, texcoord, 0.0));
   }
   return alpha_test_passes(instance.surface.z, color.a, uintBitsToFloat(instance.surface.w));
 }

@@ -519,8 +519,11 @@ TEST(LightTransport, ClippedAwayPartsCastNoShadow) {
 
 TEST(LightTransport, BounceRaysSeeTheTexturesOfWhatTheyHit) {
   // A white floor lit from above beside a wall whose texture is pure red: light bouncing off the
-  // wall onto the floor is red. The same wall with a white texture bounces white light.
-  auto scene = [](bool red) {
+  // wall onto the floor is red. The same wall with a white texture bounces white light. The red
+  // texture on unit 0, or on unit 1 over a white one on unit 0 (a lightmap through
+  // ARB_multitexture): rays see both units.
+  enum class Red { kNone, kUnit0, kUnit1 };
+  auto scene = [](Red red) {
     return [red] {
       camera();
       material(glm::vec3(0.8f));
@@ -530,27 +533,41 @@ TEST(LightTransport, BounceRaysSeeTheTexturesOfWhatTheyHit) {
       glEnable(GL_LIGHT0);
       quad({-3, -1, -2}, {3, -1, -2}, {3, -1, -8}, {-3, -1, -8});  // floor, facing +y
       const uint8_t r[4] = {255, 0, 0, 255}, w[4] = {255, 255, 255, 255};
-      bind_two_texel_texture(red ? r : w, red ? r : w);
-      textured_quad({0.5f, -1, -2}, {0.5f, 2, -2}, {0.5f, 2, -8}, {0.5f, -1, -8});  // wall, facing -x
+      bind_two_texel_texture(red == Red::kUnit0 ? r : w, red == Red::kUnit0 ? r : w);
+      if (red == Red::kUnit1) {
+        glActiveTexture(GL_TEXTURE1);
+        bind_two_texel_texture(r, r);
+        glActiveTexture(GL_TEXTURE0);
+      }
+      // The wall, facing -x (textured_quad gives unit 0 its coordinates; unit 1 samples its
+      // constant texture at the current (0, 0)).
+      textured_quad({0.5f, -1, -2}, {0.5f, 2, -2}, {0.5f, 2, -8}, {0.5f, -1, -8});
+      glActiveTexture(GL_TEXTURE1);
+      glDisable(GL_TEXTURE_2D);
+      glActiveTexture(GL_TEXTURE0);
       glDisable(GL_TEXTURE_2D);
     };
   };
   const Settings settings = path({{"GLPT_SPP", "32"}, {"GLPT_BOUNCES", "1"}, {"GLPT_AO", "0"}});
-  const Image red = render(settings, scene(true), 2, "red_wall");
-  const Image white = render(settings, scene(false), 2, "white_wall");
-  // The floor just left of the wall (which stands at x = 0.5 and covers columns 35 and up).
-  double red_g = 0, red_r = 0, white_g = 0, white_r = 0;
-  for (int x = 24; x < 34; ++x)
-    for (int y = 8; y < 20; ++y) {
-      red_r += red.at(x, y, 0);
-      red_g += red.at(x, y, 1);
-      white_r += white.at(x, y, 0);
-      white_g += white.at(x, y, 1);
-    }
-  std::printf("floor by the wall: red wall r %.0f g %.0f, white wall r %.0f g %.0f\n", red_r / 120,
-              red_g / 120, white_r / 120, white_g / 120);
-  EXPECT_GT(red_r - red_g, 0.3 * (white_r - white_g) + 120 * 3.0) << "red light bounces off the red texture";
-  EXPECT_LT(red_g, white_g) << "the red wall bounces no green";
+  const Image white = render(settings, scene(Red::kNone), 2, "white_wall");
+  for (Red which : {Red::kUnit0, Red::kUnit1}) {
+    const char* name = which == Red::kUnit0 ? "red_unit0" : "red_unit1";
+    const Image red = render(settings, scene(which), 2, name);
+    // The floor just left of the wall (which stands at x = 0.5 and covers columns 35 and up).
+    double red_g = 0, red_r = 0, white_g = 0, white_r = 0;
+    for (int x = 24; x < 34; ++x)
+      for (int y = 8; y < 20; ++y) {
+        red_r += red.at(x, y, 0);
+        red_g += red.at(x, y, 1);
+        white_r += white.at(x, y, 0);
+        white_g += white.at(x, y, 1);
+      }
+    std::printf("floor by the wall (%s): red wall r %.0f g %.0f, white wall r %.0f g %.0f\n", name,
+                red_r / 120, red_g / 120, white_r / 120, white_g / 120);
+    EXPECT_GT(red_r - red_g, 0.3 * (white_r - white_g) + 120 * 3.0)
+        << name << ": red light bounces off the red texture";
+    EXPECT_LT(red_g, white_g) << name << ": the red wall bounces no green";
+  }
 }
 
 // ---- many lights -------------------------------------------------------------------------------
