@@ -5,6 +5,7 @@
 // is compared with GL's (the conformance suite checks raster mode against Mesa pixel for pixel).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -442,16 +443,29 @@ void textured_quad(glm::vec3 p0, glm::vec3 p1, glm::vec3 p2, glm::vec3 p3) {
   glEnd();
 }
 
+// The scene of the cut-out tests: a floor (z = -5, albedo 0.8) under a point light of colour 8
+// at (0, 0, -1), and its unoccluded value at pixel (x, y): kd * colour * cos / d^2 with
+// cos = 4 / d (the light is 4 above the floor).
+void floor_under_low_light() {
+  camera();
+  material(glm::vec3(0.8f));
+  inverse_square_light(GL_LIGHT0, {0.0f, 0.0f, -1.0f}, glm::vec3(8.0f));
+  facing_plane(-5.0f, 3.0f);
+}
+
+double unoccluded_floor(int x, int y) {
+  const glm::vec3 to_light = glm::vec3(0, 0, -1) - on_plane(x, y, -5.0f);
+  const double d2 = glm::dot(to_light, to_light);
+  return std::min(255.0, 255 * 0.8 * 8.0 * (4.0 / std::sqrt(d2)) / d2);
+}
+
 TEST(LightTransport, AlphaTestedQuadCastsTheShadowOfItsCutOut) {
   // A floor (z = -5) under a point light at (0, 0, -1); between them at z = -3 a quad whose
   // texture's left half is opaque and right half transparent, alpha-tested (GL_GREATER 0.5). Its
   // shadow on the floor is the left half's, scaled by 2: x in [-2, 0]; the cut-out casts none.
   auto scene = [](bool alpha_test) {
     return [alpha_test] {
-      camera();
-      material(glm::vec3(0.8f));
-      inverse_square_light(GL_LIGHT0, {0.0f, 0.0f, -1.0f}, glm::vec3(8.0f));
-      facing_plane(-5.0f, 3.0f);
+      floor_under_low_light();
       const uint8_t opaque[4] = {255, 255, 255, 255}, clear[4] = {255, 255, 255, 0};
       bind_two_texel_texture(opaque, clear);
       if (alpha_test) {
@@ -473,11 +487,7 @@ TEST(LightTransport, AlphaTestedQuadCastsTheShadowOfItsCutOut) {
   // Floor seen through the cut-out at x = +1: lit; under the solid quad it was in shadow.
   const int lit_x = 43;
   ASSERT_GT(on_plane(lit_x, y, -5.0f).x, 0.8f);
-  // Unshadowed: kd * colour * cos / d^2, with cos = 4 / d (the light is 4 above the floor).
-  const glm::vec3 to_light = glm::vec3(0, 0, -1) - on_plane(lit_x, y, -5.0f);
-  const double d2 = glm::dot(to_light, to_light);
-  const double lit_expected = 255 * 0.8 * 8.0 * (4.0 / std::sqrt(d2)) / d2;
-  expect_close(cut.at(lit_x, y), std::min(255.0, lit_expected), 0.02, 2.0, "floor through the cut-out");
+  expect_close(cut.at(lit_x, y), unoccluded_floor(lit_x, y), 0.02, 2.0, "floor through the cut-out");
   // The solid (not alpha-tested) quad shadows the floor there too.
   EXPECT_LT(solid.at(shadow_x, y), 10);
 }
@@ -487,10 +497,7 @@ TEST(LightTransport, ClippedAwayPartsCastNoShadow) {
   // removes: the floor under the removed half is lit, the kept half still shadows.
   auto scene = [](bool clipped) {
     return [clipped] {
-      camera();
-      material(glm::vec3(0.8f));
-      inverse_square_light(GL_LIGHT0, {0.0f, 0.0f, -1.0f}, glm::vec3(8.0f));
-      facing_plane(-5.0f, 3.0f);
+      floor_under_low_light();
       const double keep_left[] = {-1, 0, 0, 0};  // -x >= 0 (eye space: the modelview is I)
       glClipPlane(GL_CLIP_PLANE2, keep_left);
       if (clipped) glEnable(GL_CLIP_PLANE2);
@@ -507,14 +514,10 @@ TEST(LightTransport, ClippedAwayPartsCastNoShadow) {
   ASSERT_GT(on_plane(right_x, y, -5.0f).x, 1.6f);
   EXPECT_LT(cut.at(left_x, y), 10) << "the kept half shadows the floor";
   EXPECT_LT(whole.at(right_x, y), 10) << "unclipped, the right half shadows it too";
-  // Clipped, the floor there is lit as if nothing were above it: kd * colour * cos / d^2.
-  for (int x : {right_x, 43}) {  // 43: seen through where the clipped half was
-    const glm::vec3 to_light = glm::vec3(0, 0, -1) - on_plane(x, y, -5.0f);
-    const double d2 = glm::dot(to_light, to_light);
-    const double lit_expected = 255 * 0.8 * 8.0 * (4.0 / std::sqrt(d2)) / d2;
-    expect_close(cut.at(x, y), std::min(255.0, lit_expected), 0.02, 2.0,
+  // Clipped, the floor there is lit as if nothing were above it.
+  for (int x : {right_x, 43})  // 43: seen through where the clipped half was
+    expect_close(cut.at(x, y), unoccluded_floor(x, y), 0.02, 2.0,
                  "floor under the clipped-away half, x " + std::to_string(x));
-  }
 }
 
 TEST(LightTransport, BounceRaysSeeTheTexturesOfWhatTheyHit) {
