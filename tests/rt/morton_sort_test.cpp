@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <glm/geometric.hpp>
 #include <numeric>
 #include <random>
@@ -153,6 +154,66 @@ TEST(MortonSort, PackingFillsMissingAttributesWithGlDefaults) {
     EXPECT_EQ(vertex.color, glm::vec4(1.0f));
   }
   EXPECT_EQ(materials[0].diffuse, Material{}.diffuse);
+}
+
+TEST(MortonSort, PackingKeepsBothTextureUnitsCoordinates) {
+  Geometry geometry;
+  geometry.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  geometry.texcoords = {{0.1f, 0.2f, 0, 1}, {0.3f, 0.4f, 0, 1}, {0.5f, 0.6f, 0, 1}};
+  geometry.texcoords1 = {{7, 8, 0, 1}, {9, 10, 0, 1}, {11, 12, 0, 1}};
+  const std::vector<uint32_t> order = {0};
+  std::vector<gpu::ShadingVertex> vertices(3);
+  std::vector<gpu::GpuMaterial> materials(packed_material_count(geometry));
+  pack_shading(geometry, order, vertices, materials);
+  for (size_t corner = 0; corner < 3; ++corner) {
+    EXPECT_EQ(vertices[corner].texcoord, geometry.texcoords[corner]);
+    EXPECT_EQ(vertices[corner].texcoord1, geometry.texcoords1[corner]);
+  }
+}
+
+// Emitter triangles: a geometry of three triangles with materials 0 (not emitting), 1 (emission
+// 0.5, lit) and 2 (emission through GL_COLOR_MATERIAL's GL_EMISSION: the vertex colours).
+Geometry emitting_geometry() {
+  Geometry geometry;
+  for (int t = 0; t < 3; ++t)
+    for (const glm::vec3 corner : {glm::vec3(0, 0, 0), glm::vec3(1, 0, 0), glm::vec3(0, 1, 0)})
+      geometry.positions.push_back(corner + glm::vec3(float(t), 0, 0));
+  for (size_t v = 0; v < geometry.positions.size(); ++v)
+    geometry.colors.push_back(glm::vec4(float(v) / 10.0f, 0.0f, 1.0f, 1.0f));
+  geometry.materials.resize(3);
+  geometry.materials[1].emission = glm::vec4(0.5f, 0.5f, 0.5f, 1.0f);
+  geometry.materials[2].color_source = ColorSource::kEmission;
+  geometry.material_ids = {0, 1, 2};
+  return geometry;
+}
+
+TEST(EmitterTriangles, EveryTriangleInBlasOrderWithItsEmission) {
+  const Geometry geometry = emitting_geometry();
+  const std::vector<uint32_t> order = {2, 0, 1};  // BLAS primitive p is triangle order[p]
+  const std::vector<EmitterTriangle> emitters = emitter_triangles(geometry, order);
+  ASSERT_EQ(emitters.size(), 3u);
+  for (size_t p = 0; p < 3; ++p)
+    for (size_t corner = 0; corner < 3; ++corner)
+      EXPECT_EQ(emitters[p].positions[corner], geometry.positions[3 * order[p] + corner]);
+  EXPECT_EQ(emitters[1].emission[0], glm::vec3(0.0f));  // triangle 0: material 0 emits nothing
+  EXPECT_EQ(emitters[2].emission[1], glm::vec3(0.5f));  // triangle 1: the material's emission
+  EXPECT_EQ(emitters[0].emission[2], glm::vec3(geometry.colors[8]));  // triangle 2: the colour
+}
+
+TEST(EmitterTriangles, NoneWhereNothingEmitsOrLightingIsOffOrEmissionIsNotFinite) {
+  const std::vector<uint32_t> order = {0, 1, 2};
+  Geometry dark = emitting_geometry();
+  dark.materials[1].emission = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+  dark.materials[2].color_source = ColorSource::kNone;
+  EXPECT_TRUE(emitter_triangles(dark, order).empty());
+  // GL has no emission with lighting off: an unlit draw's colour is not a light source.
+  Geometry unlit = emitting_geometry();
+  for (Material& m : unlit.materials) m.lit = false;
+  EXPECT_TRUE(emitter_triangles(unlit, order).empty());
+  // NaN, infinite and negative emission count as none.
+  Geometry bad = dark;
+  bad.materials[1].emission = glm::vec4(std::nanf(""), INFINITY, -1.0f, 1.0f);
+  EXPECT_TRUE(emitter_triangles(bad, order).empty());
 }
 
 }  // namespace
