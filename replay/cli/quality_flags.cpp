@@ -147,8 +147,10 @@ FlagParse parse_quality_flag(std::span<const std::string> args, size_t* i, EnvSe
     return FlagParse::kError;
   }
   if (!valid(f, value)) {
-    *error = std::string(f.flag) + ": \"" + value + "\" is not " + expected(f.value) +
-             (f.value == FlagValue::kChoice ? " " + std::string(f.metavar) : "");
+    // Appended piece by piece: GCC 12 at -O3 misjudges `" " + std::string(...)` (a temporary
+    // inserted into) as an overlapping memcpy (-Werror=restrict, GCC bug 105329).
+    *error = std::string(f.flag) + ": \"" + value + "\" is not " + expected(f.value);
+    if (f.value == FlagValue::kChoice) error->append(" ").append(f.metavar);
     return FlagParse::kError;
   }
   env->emplace_back(f.variable, value);
