@@ -119,14 +119,19 @@ Surface load_surface(Hit hit, vec3 ray_direction, float cone_width) {
   // stays untextured here, as next-event estimation sees it.
   bool texture_specular = s.lit && (states[s.state].info.w & GLPT_STATE_SEPARATE_SPECULAR) == 0u;
   vec3 specular_offset = vec3(0.0);
+  // The triangle in eye space, for the ray cones' footprint (textured hits only).
+  vec3 e0 = vec3(0.0), e1 = vec3(0.0), e2 = vec3(0.0);
+  if (instance.surface.x != 0u || instance.surface1.x != 0u) {
+    e0 = hit.object_to_eye * vec4(p0, 1.0);
+    e1 = hit.object_to_eye * vec4(p1, 1.0);
+    e2 = hit.object_to_eye * vec4(p2, 1.0);
+  }
   for (uint unit = 0u; unit < 2u; ++unit) {
     uvec2 slot_env = unit_of(instance, unit);
     if (slot_env.x == 0u) continue;
     vec4 t0 = unit == 0u ? v0.texcoord : v0.texcoord1, t1 = unit == 0u ? v1.texcoord : v1.texcoord1;
     vec4 t2 = unit == 0u ? v2.texcoord : v2.texcoord1;
     vec4 texcoord = w.x * t0 + w.y * t1 + w.z * t2;
-    vec3 e0 = hit.object_to_eye * vec4(p0, 1.0), e1 = hit.object_to_eye * vec4(p1, 1.0);
-    vec3 e2 = hit.object_to_eye * vec4(p2, 1.0);
     float lod = ray_cone_lod(slot_env.x, e0, e1, e2, t0.xy, t1.xy, t2.xy, cone_width,
                              ray_direction, geometric);
     vec4 texel = sample_slot(slot_env.x, texcoord, lod);
