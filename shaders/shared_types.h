@@ -27,14 +27,14 @@ using mat4 = glm::mat4;
 #define GLPT_PT_BINDING_STATES 6     // GpuTraceState[], one per record state
 #define GLPT_PT_BINDING_GBUFFER 7    // 4 storage images (gbuffer_layout.h), bindings 7..10
 #define GLPT_PT_BINDING_CHANNELS 11  // GLPT_CHANNELS storage images (below), bindings 11..13
-#define GLPT_PT_BINDING_TEXTURES 14  // sampler2D[GLPT_TRACE_TEXTURES]: the traced draws' unit 0
+#define GLPT_PT_BINDING_TEXTURES 14  // sampler2D[GLPT_TRACE_TEXTURES]: the traced draws' units 0 and 1
 #define GLPT_PT_BINDING_CLIP_PLANES 15  // GpuClipPlanes[]: the user clip planes of traced draws
 
 // Emissive triangles next-event estimation samples in one frame (docs/light-transport.md); the
 // emission of instances beyond them is found by bounces only.
 #define GLPT_MAX_EMITTERS 65536u
 
-// Distinct 2-D textures the trace pass can sample in one frame (unit 0 of the traced draws; draws
+// Distinct 2-D textures the trace pass can sample in one frame (units 0 and 1 of the traced draws; units
 // beyond them are traced untextured).
 #define GLPT_TRACE_TEXTURES 64
 

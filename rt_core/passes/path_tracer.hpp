@@ -32,7 +32,7 @@ namespace glpt::rt {
 struct TraceTargets {
   const GBuffer* gbuffer = nullptr;
   // The raster renderer's textures (the G-buffer pass prepared the traced draws'): rays sample
-  // unit 0 of the draws they hit.
+  // units 0 and 1 of the draws they hit.
   TextureCache* textures = nullptr;
   VkImageView front = VK_NULL_HANDLE;  // colour buffers (front twice when single-buffered)
   VkImageView back = VK_NULL_HANDLE;

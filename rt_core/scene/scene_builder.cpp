@@ -134,7 +134,7 @@ uint32_t intern(std::vector<Material>& materials, const Material& m) {
   return static_cast<uint32_t>(materials.size() - 1);
 }
 
-// What rays see of a draw besides its triangles: texture unit 0, alpha test, clip planes.
+// What rays see of a draw besides its triangles: texture units 0 and 1, alpha test, clip planes.
 TracedSurface surface_texture_of(const rec::StateSnapshot& state) {
   TracedSurface surface;
   for (size_t u = 0; u < TracedSurface::kUnits; ++u) {

@@ -71,7 +71,7 @@ float ray_cone_lod(uint slot, vec3 p0, vec3 p1, vec3 p2, vec2 uv0, vec2 uv1, vec
 }
 
 // Whether a candidate hit on an alpha-tested instance passes the draw's alpha test: the alpha GL
-// computes there (the material's or the current colour's, through unit 0's environment).
+// computes there (the material's or the current colour's, through units 0 and 1's environments).
 bool candidate_passes_alpha_test(int instance_index, int primitive, vec2 barycentrics) {
   GpuInstance instance = instances[instance_index];
   if (instance.surface.z == 0u) return true;
