@@ -34,8 +34,8 @@ using mat4 = glm::mat4;
 // emission of instances beyond them is found by bounces only.
 #define GLPT_MAX_EMITTERS 65536u
 
-// Distinct 2-D textures the trace pass can sample in one frame (units 0 and 1 of the traced draws; units
-// beyond them are traced untextured).
+// Distinct 2-D textures the trace pass can sample in one frame (units 0 and 1 of the traced
+// draws; units beyond them are traced untextured).
 #define GLPT_TRACE_TEXTURES 64
 
 // composite.comp, set 0
