@@ -2,7 +2,7 @@
  *
  * usage: lit_scene [--lights N] [--triangles T] [--frames F] [--size WxH]
  *
- * A textured floor and a grid of 16 textured spheres (display lists, about T triangles in all,
+ * A textured floor and a grid of 16 textured spheres (display lists, at least T triangles in all,
  * default 50 000) in a GLX window, drawn F times (default 12) with nothing changing, then exits.
  * --lights N (default 1): N positional GL lights above the scene. GL allows 8 per state, so
  * with more than 8 each sphere is drawn with 8 of them (sphere i: lights i*7, i*7+1, ... mod N)
@@ -102,7 +102,8 @@ int main(int argc, char** argv) {
 
   /* Spheres of 2 * rings * segments triangles each. */
   const int per_sphere = triangles / kSpheres;
-  int rings = (int)sqrtf((float)per_sphere / 4.0f);
+  /* Rounded up: the scene has at least T triangles. */
+  int rings = (int)ceilf(sqrtf((float)per_sphere / 4.0f));
   if (rings < 4) rings = 4;
   const int segments = 2 * rings;
   const GLuint list = glGenLists(1);

@@ -6,7 +6,9 @@
 namespace glpt::rt {
 
 struct FrameStats {
-  // Wall-clock milliseconds per stage (host work, or submit + wait of the GPU work).
+  // Milliseconds per stage: host work (upload_ms, readback_ms), or the device time of the
+  // stage's submissions (timestamps). The passes of a frame overlap host and device work, so
+  // their sum is not the frame's wall-clock time.
   double upload_ms = 0, blas_ms = 0, tlas_ms = 0, trace_ms = 0, readback_ms = 0;
   double raster_ms = 0;  // raster pipelines (raster mode, and overlays in path-traced mode)
   uint32_t blas_builds = 0, blas_reused = 0;
@@ -23,6 +25,9 @@ struct FrameStats {
   uint32_t resident_draws = 0;
   uint32_t pipelines_created = 0;  // raster pipelines compiled for this record (0 once warm)
   uint32_t inexpressible = 0;      // commands drawn approximately (state raster cannot express)
+  // Times the host waited for the device: 1 per frame (at its end) unless something had to be
+  // read back in between (glAccum, occlusion queries) or a resource to be replaced.
+  uint32_t host_waits = 0;
 
   // Adds another record's (or pass's) costs and counts; the samples are the later one's.
   FrameStats& operator+=(const FrameStats& s) {
@@ -43,6 +48,7 @@ struct FrameStats {
     resident_draws += s.resident_draws;
     pipelines_created += s.pipelines_created;
     inexpressible += s.inexpressible;
+    host_waits += s.host_waits;
     return *this;
   }
 };

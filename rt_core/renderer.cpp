@@ -53,9 +53,37 @@ class Renderer::Impl {
                const rec::DrawableConfig& drawable, FrameStats& stats, const FrameEnd* end,
                std::vector<QuerySamples>* queries) {
     stats = FrameStats();
+    // Submissions of a frame do not wait for each other (each pass's host work overlaps the
+    // device work of the one before); the frame waits once, here at its end, also when it fails
+    // half-way, so nothing pending outlives the call that submitted it.
+    struct FrameEndWait {
+      VulkanDevice& device;
+      ~FrameEndWait() {
+        try {
+          device.wait_all();
+        } catch (...) {  // a lost device: the next submission reports it
+        }
+      }
+    };
+    const uint64_t waits_before = device_->host_waits();
+    {
+      const FrameEndWait frame_end{*device_};
+      run_frame(record, buffers, drawable, stats, end, queries);
+    }
+    stats.host_waits = static_cast<uint32_t>(device_->host_waits() - waits_before);
+    raster_.end_frame(stats);
+    if (tracer_) tracer_->finish_frame(stats);
+    return true;
+  }
+
+ private:
+  // One frame's passes, submitted in order; execute waits for them.
+  void run_frame(const rec::FrameRecord& record, DrawableBuffers& buffers,
+                 const rec::DrawableConfig& drawable, FrameStats& stats, const FrameEnd* end,
+                 std::vector<QuerySamples>* queries) {
     if (settings_.mode == RenderMode::kRaster || !tracer_) {
       raster_.execute(record, buffers, drawable, stats, nullptr, end, nullptr, queries);
-      return true;
+      return;
     }
     // Path-traced mode (docs/architecture.md): the traced draws are rasterized into the
     // G-buffer in record order (after what precedes them), the trace pass lights the G-buffer into
@@ -70,7 +98,7 @@ class Renderer::Impl {
       // Nothing traced (e.g. the rest of a frame after a glReadPixels): raster mode. The
       // accumulation stays valid for the next frame with the same signature.
       raster_.execute(record, buffers, drawable, stats, nullptr, end, nullptr, queries);
-      return true;
+      return;
     }
     try {
       glm::vec2 jitter =
@@ -106,9 +134,9 @@ class Renderer::Impl {
       throw;
     }
     raster_.execute(record, buffers, drawable, stats, &scene_.after_trace, end, nullptr, queries);
-    return true;
   }
 
+ public:
   // Every public method holds it: contexts of one share group may be current on several threads.
   std::mutex mutex;
 
@@ -133,6 +161,8 @@ std::unique_ptr<Renderer> Renderer::create(const RenderSettings& settings, std::
     if (const char* filter = std::getenv("GLPT_VK_DEVICE")) options.name_filter = filter;
     if (const char* hide = std::getenv("GLPT_VK_NO_RAY_QUERY"); hide && *hide && *hide != '0')
       options.hide_ray_query = true;
+    if (const char* sync = std::getenv("GLPT_VK_SYNC"); sync && *sync && *sync != '0')
+      options.sync_submissions = true;
     std::shared_ptr<VulkanDevice> device = VulkanDevice::shared(options);
     RenderSettings effective = settings;
     std::unique_ptr<PathTracer> tracer;

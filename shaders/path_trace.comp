@@ -63,6 +63,12 @@ layout(set = 0, binding = GLPT_PT_BINDING_CHANNELS + GLPT_CHANNEL_INDIRECT_DIFFU
 layout(set = 0, binding = GLPT_PT_BINDING_CHANNELS + GLPT_CHANNEL_SPECULAR, rgba32f)
     uniform writeonly image2D channel_specular;
 layout(set = 0, binding = GLPT_PT_BINDING_TEXTURES) uniform sampler2D textures[GLPT_TRACE_TEXTURES];
+layout(set = 0, binding = GLPT_PT_BINDING_TEXTURES_1D)
+    uniform sampler1D textures_1d[GLPT_TRACE_TEXTURES_OTHER];
+layout(set = 0, binding = GLPT_PT_BINDING_TEXTURES_3D)
+    uniform sampler3D textures_3d[GLPT_TRACE_TEXTURES_OTHER];
+layout(set = 0, binding = GLPT_PT_BINDING_TEXTURES_CUBE)
+    uniform samplerCube textures_cube[GLPT_TRACE_TEXTURES_OTHER];
 
 layout(buffer_reference, std430, buffer_reference_align = 16) readonly buffer PositionArray {
   GpuPosition positions[];

@@ -27,16 +27,30 @@ using mat4 = glm::mat4;
 #define GLPT_PT_BINDING_STATES 6     // GpuTraceState[], one per record state
 #define GLPT_PT_BINDING_GBUFFER 7    // 4 storage images (gbuffer_layout.h), bindings 7..10
 #define GLPT_PT_BINDING_CHANNELS 11  // GLPT_CHANNELS storage images (below), bindings 11..13
-#define GLPT_PT_BINDING_TEXTURES 14  // sampler2D[GLPT_TRACE_TEXTURES]: the traced draws' units 0 and 1
+#define GLPT_PT_BINDING_TEXTURES 14  // sampler2D[GLPT_TRACE_TEXTURES]: traced draws' 2-D textures
 #define GLPT_PT_BINDING_CLIP_PLANES 15  // GpuClipPlanes[]: the user clip planes of traced draws
+#define GLPT_PT_BINDING_TEXTURES_1D 16  // sampler1D[GLPT_TRACE_TEXTURES_OTHER]
+#define GLPT_PT_BINDING_TEXTURES_3D 17  // sampler3D[GLPT_TRACE_TEXTURES_OTHER]
+#define GLPT_PT_BINDING_TEXTURES_CUBE 18  // samplerCube[GLPT_TRACE_TEXTURES_OTHER]
 
 // Emissive triangles next-event estimation samples in one frame (docs/light-transport.md); the
 // emission of instances beyond them is found by bounces only.
 #define GLPT_MAX_EMITTERS 65536u
 
-// Distinct 2-D textures the trace pass can sample in one frame (units 0 and 1 of the traced
-// draws; units beyond them are traced untextured).
+// Distinct textures the trace pass can sample in one frame, per target: 2-D ones (most), and
+// 1-D, 3-D and cube maps. A unit whose texture finds its table full is traced untextured.
 #define GLPT_TRACE_TEXTURES 64
+#define GLPT_TRACE_TEXTURES_OTHER 16
+
+// A traced texture unit packed into one uint (GpuInstance.units): bits 0..7 the slot + 1 in its
+// target's table (0: the unit is off for rays), bits 8..9 the target, bits 10..12 which of s, t, r
+// GL_CLAMP clamps to [0, 1] before a linear lookup (no Vulkan address mode does), bits 16..31
+// GL_TEXTURE_ENV_MODE.
+#define GLPT_TRACE_TARGET_2D 0u
+#define GLPT_TRACE_TARGET_1D 1u
+#define GLPT_TRACE_TARGET_3D 2u
+#define GLPT_TRACE_TARGET_CUBE 3u
+#define GLPT_TRACE_UNITS 4
 
 // composite.comp, set 0
 #define GLPT_CO_BINDING_FRAME 0         // uniform FrameUniforms
@@ -89,8 +103,9 @@ struct GpuPosition {
 struct ShadingVertex {
   vec4 normal;    // xyz: normal as given (not necessarily unit length); w: material index (float)
   vec4 color;     // GL current colour
-  vec4 texcoord;   // texture unit 0's coordinates after texgen and the texture matrix (s, t, r, q)
-  vec4 texcoord1;  // texture unit 1's
+  // Each texture unit's coordinates after texgen and the texture matrix (s, t, r, q); (0, 0, 0, 1)
+  // for units rays do not sample
+  vec4 texcoords[GLPT_TRACE_UNITS];
 };
 
 struct GpuMaterial {
@@ -114,13 +129,11 @@ struct GpuInstance {
   // floatBits(the instance's size: the diagonal of its eye-space bounds), which sets how far it
   // occludes ambient light (automatic AO radius, docs/light-transport.md)
   uvec4 materials;
-  // What rays see of the draw's texture unit 0 and alpha test: x: GLPT_PT_BINDING_TEXTURES index
-  // + 1 (0: untextured), y: GL_TEXTURE_ENV_MODE, z: GL alpha function (0: no alpha test),
-  // w: floatBits(alpha reference)
+  // The draw's texture units 0..3 as rays see them, one packed uint each (GLPT_TRACE_TARGET_*
+  // above)
+  uvec4 units;
+  // x: GL alpha function (0: no alpha test), y: floatBits(alpha reference), zw: unused
   uvec4 surface;
-  // Texture unit 1 (a lightmap or detail texture): x: GLPT_PT_BINDING_TEXTURES index + 1 (0:
-  // none), y: its GL_TEXTURE_ENV_MODE, zw: unused
-  uvec4 surface1;
   // Indices into the frame's other tables. x: in the emitter table (GLPT_PT_BINDING_EMITTERS),
   // of the emitter of BLAS primitive 0, + 1 (primitive p is emitter x - 1 + p); 0: not sampled
   // by next-event estimation. y: in the clip-plane table (GLPT_PT_BINDING_CLIP_PLANES) + 1; 0:
@@ -213,7 +226,7 @@ struct GpuCounters {
 
 #ifdef __cplusplus
 static_assert(sizeof(GpuPosition) == 16);
-static_assert(sizeof(ShadingVertex) == 64);
+static_assert(sizeof(ShadingVertex) == 96);
 static_assert(sizeof(GpuMaterial) == 80);
 static_assert(sizeof(GpuInstance) == 80);
 static_assert(sizeof(GpuEmitter) == 96);

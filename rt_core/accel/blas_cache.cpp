@@ -174,6 +174,7 @@ BlasPrepareStats BlasCache::prepare(std::span<const Geometry* const> geometries,
 
   // All builds go into one vkCmdBuildAccelerationStructuresKHR, each with its own scratch range.
   const VkDeviceSize alignment = device_.scratch_alignment();
+  device_.wait(last_build_);  // its scratch_ is reused (or replaced) here
   VkDeviceSize scratch_total = 0;
   for (const PendingBuild& build : pending)
     scratch_total += align_up(build.scratch_size, alignment);
@@ -201,7 +202,7 @@ BlasPrepareStats BlasCache::prepare(std::span<const Geometry* const> geometries,
   std::vector<const VkAccelerationStructureBuildRangeInfoKHR*> range_pointers;
   for (const auto& range : ranges) range_pointers.push_back(&range);
 
-  stats.build_ms = device_.submit_and_wait([&](VkCommandBuffer cmd) {
+  last_build_ = stats.build_ticket = device_.submit([&](VkCommandBuffer cmd) {
     device_.as_functions().cmd_build(cmd, static_cast<uint32_t>(infos.size()), infos.data(),
                                      range_pointers.data());
   });

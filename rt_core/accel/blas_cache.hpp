@@ -45,7 +45,8 @@ struct ShadingEntry {
 
 struct BlasPrepareStats {
   double upload_ms = 0;  // host work: sorting, packing, allocating
-  double build_ms = 0;   // submit + wait of the builds
+  // The builds' submission (0: none), not waited for: the trace submitted after it sees them.
+  VulkanDevice::Ticket build_ticket = 0;
   uint32_t builds = 0;
   uint32_t reused = 0;
   uint32_t shading_uploads = 0;
@@ -88,6 +89,7 @@ class BlasCache {
   std::unordered_map<uint64_t, std::unique_ptr<BlasEntry>> entries_;
   std::unordered_map<uint64_t, std::unique_ptr<ShadingEntry>> shading_;  // by shading_key()
   GpuBuffer scratch_;              // shared by all builds; only one batch is in flight at a time
+  VulkanDevice::Ticket last_build_ = 0;  // the batch that last used scratch_
   VkDeviceSize memory_bytes_ = 0;  // bytes of every entry's buffers
 };
 

@@ -52,7 +52,8 @@ void Tlas::reserve(uint32_t instance_count) {
   capacity_ = capacity;
 }
 
-double Tlas::build(std::span<const VkAccelerationStructureInstanceKHR> instances) {
+VulkanDevice::Ticket Tlas::build(std::span<const VkAccelerationStructureInstanceKHR> instances) {
+  device_.wait(last_build_);
   const auto count = static_cast<uint32_t>(instances.size());
   reserve(count);
   instance_buffer_.write(instances.data(), instances.size_bytes());
@@ -64,8 +65,9 @@ double Tlas::build(std::span<const VkAccelerationStructureInstanceKHR> instances
   info.scratchData.deviceAddress = (scratch_.address() + alignment - 1) / alignment * alignment;
   const VkAccelerationStructureBuildRangeInfoKHR range{count, 0, 0, 0};
   const VkAccelerationStructureBuildRangeInfoKHR* ranges = &range;
-  return device_.submit_and_wait(
+  last_build_ = device_.submit(
       [&](VkCommandBuffer cmd) { device_.as_functions().cmd_build(cmd, 1, &info, &ranges); });
+  return last_build_;
 }
 
 }  // namespace glpt::rt

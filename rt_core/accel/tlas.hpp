@@ -15,9 +15,10 @@ class Tlas {
  public:
   explicit Tlas(VulkanDevice& device) : device_(device) {}
 
-  // Builds the TLAS from `instances` (any count, including 0) and waits for it. Returns the
-  // wall-clock ms of submit + wait. Throws VulkanError.
-  double build(std::span<const VkAccelerationStructureInstanceKHR> instances);
+  // Submits the build of the TLAS from `instances` (any count, including 0) without waiting
+  // (submissions after it see the result); waits for the previous build first, whose buffers
+  // this one refills. Returns the build's ticket. Throws VulkanError.
+  VulkanDevice::Ticket build(std::span<const VkAccelerationStructureInstanceKHR> instances);
 
   VkAccelerationStructureKHR handle() const { return structure_.get(); }
 
@@ -31,6 +32,7 @@ class Tlas {
   GpuBuffer storage_;
   vk::AccelerationStructure structure_;  // declared after storage_: destroyed before it
   uint32_t capacity_ = 0;
+  VulkanDevice::Ticket last_build_ = 0;
   VkDeviceSize scratch_size_ = 0;
 };
 

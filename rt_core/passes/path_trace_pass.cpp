@@ -1,6 +1,7 @@
 #include "rt_core/passes/path_trace_pass.hpp"
 
 #include <cstdint>
+#include <span>
 
 #include "gbuffer_layout.h"
 #include "path_trace_spv.h"  // generated from shaders/path_trace.comp at build time
@@ -27,6 +28,12 @@ constexpr VkDescriptorSetLayoutBinding kBindings[] = {
     compute_binding(GLPT_PT_BINDING_CHANNELS + 2, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
     compute_binding(GLPT_PT_BINDING_TEXTURES, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
                     GLPT_TRACE_TEXTURES),
+    compute_binding(GLPT_PT_BINDING_TEXTURES_1D, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                    GLPT_TRACE_TEXTURES_OTHER),
+    compute_binding(GLPT_PT_BINDING_TEXTURES_3D, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                    GLPT_TRACE_TEXTURES_OTHER),
+    compute_binding(GLPT_PT_BINDING_TEXTURES_CUBE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                    GLPT_TRACE_TEXTURES_OTHER),
 };
 static_assert(GLPT_GBUFFER_ATTACHMENTS == 4 && GLPT_CHANNELS == 3);
 
@@ -64,12 +71,15 @@ void PathTracePass::record(VkCommandBuffer cmd, const PathTraceResources& resour
     images[i] = general_image_info(resources.gbuffer[i]);
   for (uint32_t i = 0; i < GLPT_CHANNELS; ++i)
     images[GLPT_GBUFFER_ATTACHMENTS + i] = general_image_info(resources.channels[i]);
-  auto texture_write = make_info<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
-  texture_write.dstSet = set;
-  texture_write.dstBinding = GLPT_PT_BINDING_TEXTURES;
-  texture_write.descriptorCount = GLPT_TRACE_TEXTURES;
-  texture_write.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-  texture_write.pImageInfo = resources.textures.data();
+  auto texture_write = [set](uint32_t binding, std::span<const VkDescriptorImageInfo> table) {
+    auto write = make_info<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
+    write.dstSet = set;
+    write.dstBinding = binding;
+    write.descriptorCount = static_cast<uint32_t>(table.size());
+    write.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+    write.pImageInfo = table.data();
+    return write;
+  };
   const VkWriteDescriptorSet writes[] = {
       scene_write,
       storage_buffer_write(set, GLPT_PT_BINDING_INSTANCES, &instances),
@@ -86,7 +96,10 @@ void PathTracePass::record(VkCommandBuffer cmd, const PathTraceResources& resour
       storage_image_write(set, GLPT_PT_BINDING_CHANNELS + 0, &images[4]),
       storage_image_write(set, GLPT_PT_BINDING_CHANNELS + 1, &images[5]),
       storage_image_write(set, GLPT_PT_BINDING_CHANNELS + 2, &images[6]),
-      texture_write,
+      texture_write(GLPT_PT_BINDING_TEXTURES, resources.textures),
+      texture_write(GLPT_PT_BINDING_TEXTURES_1D, resources.textures_1d),
+      texture_write(GLPT_PT_BINDING_TEXTURES_3D, resources.textures_3d),
+      texture_write(GLPT_PT_BINDING_TEXTURES_CUBE, resources.textures_cube),
   };
   pipeline_.update_and_dispatch(device_.handle(), cmd, writes, width, height);
 }

@@ -23,8 +23,12 @@ struct PathTraceResources {
   const GpuBuffer* frame = nullptr;      // gpu::FrameUniforms
   std::array<VkImageView, 4> gbuffer{};  // gbuffer_layout.h attachments
   std::array<VkImageView, GLPT_CHANNELS> channels{};  // written
-  // Combined image samplers of the texture table (every entry valid: dummies where unused).
+  // Combined image samplers of the texture tables, one per target (every entry valid: dummies
+  // where unused).
   std::array<VkDescriptorImageInfo, GLPT_TRACE_TEXTURES> textures{};
+  std::array<VkDescriptorImageInfo, GLPT_TRACE_TEXTURES_OTHER> textures_1d{};
+  std::array<VkDescriptorImageInfo, GLPT_TRACE_TEXTURES_OTHER> textures_3d{};
+  std::array<VkDescriptorImageInfo, GLPT_TRACE_TEXTURES_OTHER> textures_cube{};
 };
 
 class PathTracePass {

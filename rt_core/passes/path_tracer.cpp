@@ -2,15 +2,18 @@
 
 #include <algorithm>
 #include <bit>
-#include <limits>
-#include <unordered_map>
 #include <cmath>
 #include <cstring>
 #include <exception>
 #include <glm/trigonometric.hpp>
+#include <limits>
+#include <map>
+#include <span>
+#include <unordered_map>
 
 #include "common/stopwatch.hpp"
 #include "rt_core/accel/morton_sort.hpp"
+#include "rt_core/raster/sampler_setup.hpp"
 #include "rt_core/vk/gpu_buffer.hpp"
 #include "shared_types.h"
 
@@ -197,8 +200,7 @@ void PathTracer::ensure_channels(uint32_t width, uint32_t height) {
 
 void PathTracer::build_scene_setup(const TraceScene& scene, TextureCache* textures,
                                    SceneSetup& setup) const {
-  setup.texture_views.clear();
-  setup.texture_samplers.clear();
+  for (auto& table : setup.texture_tables) table.clear();
   setup.tlas_instances.clear();
   setup.instance_table.clear();
   setup.emitters.clear();
@@ -206,19 +208,35 @@ void PathTracer::build_scene_setup(const TraceScene& scene, TextureCache* textur
   setup.instance_bounds.clear();
   setup.scene_bounds = EyeBounds();
   setup.triangles = 0;
-  std::unordered_map<uint64_t, uint32_t> texture_slots;  // content version -> slot + 1
-  // The slot of `unit`'s texture + 1; 0: untextured (none, not prepared, or the table is full).
-  auto texture_slot = [&](const TracedUnit& surface) -> uint32_t {
-    if (!surface.texture || textures == nullptr) return 0;
-    const uint64_t version = surface.texture->content_version;
-    if (auto found = texture_slots.find(version); found != texture_slots.end()) return found->second;
-    const VkImageView view = textures->view(*surface.texture);
-    if (view == VK_NULL_HANDLE || setup.texture_views.size() >= GLPT_TRACE_TEXTURES) return 0;
-    setup.texture_views.push_back(view);
-    setup.texture_samplers.push_back(textures->sampler(*surface.texture, surface.lod_bias));
-    const uint32_t slot = static_cast<uint32_t>(setup.texture_views.size());
-    texture_slots.emplace(version, slot);
-    return slot;
+  // (content version, sampler) -> slot + 1: the version names the images only, and one frame
+  // may sample them with different parameters or unit LOD biases.
+  std::map<std::pair<uint64_t, VkSampler>, uint32_t> texture_slots;
+  // `unit` packed as GpuInstance.units holds it (shared_types.h); 0: the unit is off for rays
+  // (no texture, not prepared, or its target's table is full).
+  auto packed_unit = [&](const TracedUnit& unit) -> uint32_t {
+    if (!unit.texture || textures == nullptr) return 0;
+    const rec::TextureObjectSnapshot& texture = *unit.texture;
+    const uint32_t target = texture.target == GL_TEXTURE_1D         ? GLPT_TRACE_TARGET_1D
+                            : texture.target == GL_TEXTURE_3D       ? GLPT_TRACE_TARGET_3D
+                            : texture.target == GL_TEXTURE_CUBE_MAP ? GLPT_TRACE_TARGET_CUBE
+                                                                    : GLPT_TRACE_TARGET_2D;
+    std::vector<VkDescriptorImageInfo>& table = setup.texture_tables[target];
+    const size_t capacity =
+        target == GLPT_TRACE_TARGET_2D ? GLPT_TRACE_TEXTURES : GLPT_TRACE_TEXTURES_OTHER;
+    const VkSampler sampler = textures->sampler(texture, unit.lod_bias);
+    const std::pair<uint64_t, VkSampler> key(texture.content_version, sampler);
+    uint32_t slot = 0;
+    if (auto found = texture_slots.find(key); found != texture_slots.end()) {
+      slot = found->second;
+    } else {
+      const VkImageView view = textures->view(texture);
+      if (view == VK_NULL_HANDLE || table.size() >= capacity) return 0;
+      table.push_back({sampler, view, VK_IMAGE_LAYOUT_GENERAL});
+      slot = static_cast<uint32_t>(table.size());
+      texture_slots.emplace(key, slot);
+    }
+    const uint32_t clamp = make_sampler_setup(texture, unit.lod_bias).shader.clamp_coords & 7u;
+    return slot | (target << 8) | (clamp << 10) | ((unit.env_mode & 0xFFFFu) << 16);
   };
   for (const Instance& instance : scene.instances) {
     if (!instance.geometry) continue;
@@ -260,12 +278,12 @@ void PathTracer::build_scene_setup(const TraceScene& scene, TextureCache* textur
     setup.instance_table.push_back(
         {glm::uvec4(positions, vertices),
          glm::uvec4(materials, instance.state, std::bit_cast<uint32_t>(size)),
-         glm::uvec4(texture_slot(instance.surface.units[0]), instance.surface.units[0].env_mode,
-                    instance.surface.alpha_func, std::bit_cast<uint32_t>(instance.surface.alpha_ref)),
-         glm::uvec4(texture_slot(instance.surface.units[1]), instance.surface.units[1].env_mode,
-                    0u, 0u),
-         glm::uvec4(add_emitters(shading->emitters, instance.modelview, setup.emitters),
-                    clip_index, 0u, 0u)});
+         glm::uvec4(packed_unit(instance.surface.units[0]), packed_unit(instance.surface.units[1]),
+                    packed_unit(instance.surface.units[2]), packed_unit(instance.surface.units[3])),
+         glm::uvec4(instance.surface.alpha_func,
+                    std::bit_cast<uint32_t>(instance.surface.alpha_ref), 0u, 0u),
+         glm::uvec4(add_emitters(shading->emitters, instance.modelview, setup.emitters), clip_index,
+                    0u, 0u)});
 
     setup.instance_bounds.push_back(bounds);
     setup.scene_bounds.extend(bounds);
@@ -330,6 +348,10 @@ void PathTracer::sort_instances_spatially(SceneSetup& setup) {
 void PathTracer::trace(const TraceScene& scene, const TraceTargets& targets, FrameStats& stats) {
   stats = FrameStats();
   if (scene.width == 0 || scene.height == 0 || targets.gbuffer == nullptr) return;
+  // The previous trace (a GLPT_REFERENCE pass of this frame, or the last frame's, long done)
+  // reads the tables, counters and descriptor sets rewritten below.
+  device_->wait(trace_ticket_);
+  read_counters();
 
   // ---- acceleration structures and shading data of new geometry
   std::vector<const Geometry*> geometries;
@@ -338,7 +360,7 @@ void PathTracer::trace(const TraceScene& scene, const TraceTargets& targets, Fra
   const BlasPrepareStats blas = blas_cache_.prepare(geometries, frame_number_);
   stats.blas_builds = blas.builds;
   stats.blas_reused = blas.reused;
-  stats.blas_ms = blas.build_ms;
+  if (blas.build_ticket != 0) unreported_.push_back({blas.build_ticket, &FrameStats::blas_ms});
 
   // ---- per-frame tables
   const Stopwatch upload_timer;
@@ -389,7 +411,7 @@ void PathTracer::trace(const TraceScene& scene, const TraceTargets& targets, Fra
   // ---- TLAS: the instance list follows from the signature, so an unchanged frame reuses it
   if (!same_scene_ || !tlas_valid_ || !tlas_.handle()) {
     tlas_valid_ = false;
-    stats.tlas_ms = tlas_.build(scene_.tlas_instances);
+    unreported_.push_back({tlas_.build(scene_.tlas_instances), &FrameStats::tlas_ms});
     tlas_valid_ = true;
   }
 
@@ -404,13 +426,20 @@ void PathTracer::trace(const TraceScene& scene, const TraceTargets& targets, Fra
   trace.states = &states_;
   trace.counters = &counters_;
   trace.frame = &frame_uniforms_;
-  // Unused slots of the texture table sample a white dummy (the shader never indexes them).
-  for (uint32_t t = 0; t < GLPT_TRACE_TEXTURES; ++t) {
-    const bool used = t < scene_.texture_views.size();
-    trace.textures[t] = {used ? scene_.texture_samplers[t] : targets.textures->dummy_sampler(),
-                         used ? scene_.texture_views[t] : targets.textures->dummy_view(1),
-                         VK_IMAGE_LAYOUT_GENERAL};
-  }
+  // Unused slots of the texture tables sample a white dummy of their target (the shader never
+  // indexes them; dummy_view takes TextureCache's kinds: 1-D, 2-D, 3-D, cube).
+  auto fill = [&](std::span<VkDescriptorImageInfo> out, uint32_t target, uint32_t dummy_kind) {
+    const std::vector<VkDescriptorImageInfo>& table = scene_.texture_tables[target];
+    for (size_t t = 0; t < out.size(); ++t)
+      out[t] = t < table.size() ? table[t]
+                                : VkDescriptorImageInfo{targets.textures->dummy_sampler(),
+                                                        targets.textures->dummy_view(dummy_kind),
+                                                        VK_IMAGE_LAYOUT_GENERAL};
+  };
+  fill(trace.textures, GLPT_TRACE_TARGET_2D, 1);
+  fill(trace.textures_1d, GLPT_TRACE_TARGET_1D, 0);
+  fill(trace.textures_3d, GLPT_TRACE_TARGET_3D, 2);
+  fill(trace.textures_cube, GLPT_TRACE_TARGET_CUBE, 3);
   CompositeResources composite;
   composite.frame = &frame_uniforms_;
   composite.states = &states_;
@@ -420,7 +449,7 @@ void PathTracer::trace(const TraceScene& scene, const TraceTargets& targets, Fra
   for (int c = 0; c < GLPT_CHANNELS; ++c) trace.channels[c] = composite.channels[c] = channels_[c].view();
   composite.front = targets.front;
   composite.back = targets.back;
-  stats.trace_ms = device_->submit_and_wait([&](VkCommandBuffer cmd) {
+  trace_ticket_ = device_->submit([&](VkCommandBuffer cmd) {
     trace_pass_.record(cmd, trace, scene.width, scene.height);
     // The composite pass reads the channels the trace pass wrote.
     VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER, nullptr, VK_ACCESS_SHADER_WRITE_BIT,
@@ -430,14 +459,31 @@ void PathTracer::trace(const TraceScene& scene, const TraceTargets& targets, Fra
                          nullptr);
     composite_pass_.record(cmd, composite, scene.width, scene.height);
   });
-  const gpu::GpuCounters* counters = counters_.as<gpu::GpuCounters>();
-  stats.rays = counters->rays.x;
-  stats.non_finite_samples = counters->rays.y;
+  unreported_.push_back({trace_ticket_, &FrameStats::trace_ms});
+  counters_read_ = false;
   accumulated_samples_ += frame_samples_;
   if (frame_samples_ > 0) ++accumulated_passes_;
   frame_samples_ = 0;
   stats.accumulated_samples = accumulated_samples_;
+}
 
+void PathTracer::read_counters() {
+  if (counters_read_) return;
+  const gpu::GpuCounters* counters = counters_.as<gpu::GpuCounters>();
+  counted_rays_ += counters->rays.x;
+  counted_non_finite_ += counters->rays.y;
+  counters_read_ = true;
+}
+
+void PathTracer::finish_frame(FrameStats& stats) {
+  device_->wait(trace_ticket_);  // done already where the caller waited for the frame
+  read_counters();
+  stats.rays += counted_rays_;
+  stats.non_finite_samples += counted_non_finite_;
+  counted_rays_ = counted_non_finite_ = 0;
+  for (const auto& [ticket, member] : unreported_) stats.*member += device_->take_device_ms(ticket);
+  unreported_.clear();
+  // Nothing pending uses a BLAS any more.
   blas_cache_.evict_unused(frame_number_);
 }
 

@@ -58,7 +58,12 @@ class PathTracer {
   bool next_reference_pass(glm::vec2* jitter);
   // Builds what `scene` needs (BLASes, TLAS, tables) and runs the trace pass over the G-buffer of
   // the frame begun last, writing the colour buffers. Throws VulkanError.
+  // Submits without waiting (the renderer waits at the frame's end, then calls finish_frame);
+  // waits for the previous trace first, whose tables and descriptors this one rewrites.
   void trace(const TraceScene& scene, const TraceTargets& targets, FrameStats& stats);
+  // After the device completed the frame: adds what only the device knows (rays, dropped
+  // samples, device time of the builds and the trace) to `stats`, and releases unused BLASes.
+  void finish_frame(FrameStats& stats);
   // After a failure, or a frame that traced nothing: the next frame starts a new accumulation.
   void forget_previous_frame() noexcept;
   // Whether a geometry of these hashes is held (the scene builder then need not decompose it).
@@ -76,9 +81,9 @@ class PathTracer {
 
   // Per-frame scene description on the host, rebuilt from the TraceScene each time.
   struct SceneSetup {
-    // The frame's texture table (GLPT_PT_BINDING_TEXTURES): views and samplers by slot.
-    std::vector<VkImageView> texture_views;
-    std::vector<VkSampler> texture_samplers;
+    // The frame's texture tables by target (GLPT_TRACE_TARGET_*: GLPT_PT_BINDING_TEXTURES and
+    // the 1-D, 3-D and cube tables): view and sampler by slot.
+    std::array<std::vector<VkDescriptorImageInfo>, 4> texture_tables;
     std::vector<VkAccelerationStructureInstanceKHR> tlas_instances;
     std::vector<gpu::GpuInstance> instance_table;
     // The emissive triangles of the frame in eye space, with their choice probabilities
@@ -135,6 +140,14 @@ class PathTracer {
   bool seeded_by_frame_index_ = false;  // start_independent_frame was called
   uint64_t seed_frame_index_ = 0;
   SceneSetup scene_;  // kept to reuse its vectors' capacity
+  // Submissions of this frame not yet reported: their device time goes to the member of
+  // FrameStats named here.
+  std::vector<std::pair<VulkanDevice::Ticket, double FrameStats::*>> unreported_;
+  VulkanDevice::Ticket trace_ticket_ = 0;               // the last trace submission
+  bool counters_read_ = true;                           // its counters_ are in counted_ already
+  uint64_t counted_rays_ = 0, counted_non_finite_ = 0;  // of this frame's completed traces
+  // Adds the last trace's counters to the counted ones (it has completed).
+  void read_counters();
 };
 
 }  // namespace glpt::rt

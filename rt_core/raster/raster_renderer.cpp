@@ -60,6 +60,7 @@ RasterRenderer::RasterRenderer(std::shared_ptr<VulkanDevice> device)
 void RasterRenderer::ensure_buffers(DrawableBuffers& buffers, const rec::DrawableConfig& drawable) {
   buffers_ = &buffers;  // the buffers every helper of this call works on
   if (drawable == buffers.config && buffers.front && buffers.device == device_) return;
+  device_->wait_all();  // pending submissions may still draw into the buffers replaced here
   buffers.device = device_;
   buffers.config = drawable;
   buffers.front = GpuImage();
@@ -121,7 +122,13 @@ void RasterRenderer::execute(const rec::FrameRecord& record, DrawableBuffers& bu
     return;
   }
 
-  // ---- per-record data: state uniforms, textures, vertices and indices
+  // ---- per-record data: state uniforms, textures, vertices and indices, into the upload set the
+  // previous execute did not use (its submissions may still be reading theirs)
+  std::swap(states_, spare_uploads_.states);
+  std::swap(vertices_, spare_uploads_.vertices);
+  std::swap(pixels_, spare_uploads_.pixels);
+  std::swap(uploads_ticket_, spare_uploads_.ticket);
+  device_->wait(uploads_ticket_);
   const size_t state_count = record.states.size();
   size_t quad_clears = 0;
   for (size_t i : *commands)
@@ -332,11 +339,12 @@ void RasterRenderer::execute(const rec::FrameRecord& record, DrawableBuffers& bu
 
   // ---- record and run: one submission, or one more after each glAccum that reads or writes
   // colour (the accumulation buffer is updated on the CPU, as Mesa does); the frame end goes with
-  // the last
-  const Stopwatch raster_timer;
+  // the last. Nothing waits for the device unless the host reads what it produced (the
+  // accumulation buffer, query results, read-back pixels): the renderer waits at the frame's end.
   size_t position = 0;
+  VulkanDevice::Ticket ticket = 0;
   do {
-    device_->submit_and_wait([&](VkCommandBuffer cmd) {
+    ticket = device_->submit([&](VkCommandBuffer cmd) {
       r.cmd = cmd;
       r.rendering = false;
       r.bound_pipeline = VK_NULL_HANDLE;
@@ -380,10 +388,14 @@ void RasterRenderer::execute(const rec::FrameRecord& record, DrawableBuffers& bu
       end_rendering(r);
       if (end && position == commands->size()) record_frame_end(cmd, *end);
     });
-    if (position < commands->size())
+    unreported_.push_back(ticket);
+    if (position < commands->size()) {
+      device_->wait(ticket);
       execute_accum(record, std::get<rec::Accum>(record.commands[(*commands)[position++]]));
+    }
   } while (position < commands->size());
-  stats.raster_ms += raster_timer.elapsed_ms();
+  uploads_ticket_ = ticket;
+  if (queries || (end && (end->front_rgba || end->present_to))) device_->wait(ticket);
   if (queries) queries_.collect(*queries);
   const size_t pixel_count = size_t{buffers_->config.width} * buffers_->config.height;
   if (end && end->front_rgba) {
@@ -400,6 +412,14 @@ void RasterRenderer::execute(const rec::FrameRecord& record, DrawableBuffers& bu
       std::memcpy(end->present_to->pixels + (buffers_->config.height - 1 - y) * row, src + y * row,
                   row);
   }
+}
+
+void RasterRenderer::end_frame(FrameStats& stats) {
+  // The frame's submissions have completed (the caller waited): their device time is known, and
+  // nothing pending samples a texture or reads geometry released here.
+  for (VulkanDevice::Ticket ticket : unreported_)
+    stats.raster_ms += device_->take_device_ms(ticket);
+  unreported_.clear();
   textures_.evict_unused(frame_);
   resident_.release_unused(frame_);
 }
@@ -769,6 +789,7 @@ void RasterRenderer::bind_geometry(VkCommandBuffer cmd, const DrawGeometry& g) {
 
 void RasterRenderer::ensure_ascending_indices(uint32_t count) {
   if (ascending_ && ascending_.size() >= VkDeviceSize{count} * sizeof(uint32_t)) return;
+  device_->wait_all();  // pending submissions may still read the buffer replaced here
   ensure_capacity(*device_, ascending_, VkDeviceSize{count} * sizeof(uint32_t),
                   VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
   auto* indices = static_cast<uint32_t*>(ascending_.mapped());

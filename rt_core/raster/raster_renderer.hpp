@@ -48,6 +48,11 @@ class RasterRenderer {
                const GBufferTargets* gbuffer = nullptr,
                std::vector<QuerySamples>* queries = nullptr);
 
+  // The end of a frame, after the device completed it (every execute of the frame submits
+  // without waiting unless it reads results on the host): adds the device time of the frame's
+  // submissions to `stats` and releases textures and geometry unused for a while.
+  void end_frame(FrameStats& stats);
+
   // Reads back a rectangle: colour as RGBA8 of GL_FRONT*/GL_BACK*, depth as [0, 1], stencil.
   // Pixels outside the drawable are zero. False before the buffers exist.
   bool read_color(DrawableBuffers& buffers, uint32_t buffer, int32_t x, int32_t y, uint32_t width,
@@ -123,6 +128,16 @@ class RasterRenderer {
   DrawableBuffers* buffers_ = nullptr;
   GpuBuffer states_;           // RasterState per snapshot (+ one per clear drawn as a quad)
   GpuBuffer vertices_;         // this record's attributes and indices
+  // The previous execute's states_, vertices_ and pixels_, which its submissions may still read
+  // (path-traced mode's G-buffer pass while the draws after the trace are prepared): executes
+  // alternate between the two sets, and wait for a set's last submission before refilling it.
+  struct UploadSet {
+    GpuBuffer states, vertices, pixels;
+    VulkanDevice::Ticket ticket = 0;
+  };
+  UploadSet spare_uploads_;
+  VulkanDevice::Ticket uploads_ticket_ = 0;       // the last submission reading the current set
+  std::vector<VulkanDevice::Ticket> unreported_;  // submissions whose device time is not in stats
   GpuBuffer ascending_;        // indices 0, 1, 2, ...: draws whose triangles are in vertex order
   ResidentGeometry resident_;  // large draws drawn again unchanged: uploaded once
   GpuBuffer readback_;

@@ -134,12 +134,14 @@ uint32_t intern(std::vector<Material>& materials, const Material& m) {
   return static_cast<uint32_t>(materials.size() - 1);
 }
 
-// What rays see of a draw besides its triangles: texture units 0 and 1, alpha test, clip planes.
+// What rays see of a draw besides its triangles: its texture units, alpha test, clip planes.
 TracedSurface surface_texture_of(const rec::StateSnapshot& state) {
   TracedSurface surface;
   for (size_t u = 0; u < TracedSurface::kUnits; ++u) {
     const rec::TextureUnitState& unit = state.texturing->units[u];
-    if (unit.target == GL_TEXTURE_2D && unit.texture) {
+    // A depth texture with comparison on is a shadow map of a multipass technique: what it
+    // holds is the comparison's answer for the camera's pixels, meaningless at a bounce hit.
+    if (unit.target != 0 && unit.texture && unit.texture->sampler.compare_mode == GL_NONE) {
       surface.units[u].texture = unit.texture;
       surface.units[u].env_mode = unit.env.mode;
       surface.units[u].lod_bias = unit.env.lod_bias;
@@ -157,19 +159,73 @@ TracedSurface surface_texture_of(const rec::StateSnapshot& state) {
   return surface;
 }
 
-// Unit `u`'s coordinates of vertex `src` as GL computes them: texgen (object- and eye-linear;
-// the other modes keep the given coordinates), then the texture matrix.
+// Vertex `src`'s eye-space normal as GL's texture generation uses it (GL 1.5 2.11.3): the
+// inverse transpose of the modelview, then GL_RESCALE_NORMAL's factor or GL_NORMALIZE.
+glm::vec3 eye_normal_of(const rec::VertexData& v, uint32_t src,
+                        const rec::TransformState& transform) {
+  const glm::mat4& inverse = transform.modelview_inverse;
+  glm::vec3 n = glm::transpose(glm::mat3(inverse)) *
+                rec::attribute_at(v.normal, src, glm::vec3(0.0f, 0.0f, 1.0f));
+  if (transform.rescale_normal) {
+    const float row = std::sqrt(inverse[0][2] * inverse[0][2] + inverse[1][2] * inverse[1][2] +
+                                inverse[2][2] * inverse[2][2]);
+    if (row > 0.0f) n /= row;
+  }
+  if (transform.normalize) {
+    const float length = glm::length(n);
+    if (length > 0.0f) n /= length;
+  }
+  return n;
+}
+
+// Unit `u`'s coordinates of vertex `src` as GL computes them per vertex (GL 1.5 2.11.4): texgen
+// (object- and eye-linear, sphere, reflection and normal maps; the eye-space vectors the last
+// three use are the camera's, so they are known here, once per vertex, as GL computes them),
+// then the texture matrix. A bounce hit interpolates them as GL's rasterizer does.
 glm::vec4 texcoord_of(const rec::VertexData& v, uint32_t src, size_t u,
-                      const rec::TextureUnitState& unit, const glm::mat4& modelview) {
+                      const rec::TextureUnitState& unit, const rec::TransformState& transform) {
   glm::vec4 tc = rec::attribute_at(v.tex_coord[u], src, glm::vec4(0, 0, 0, 1));
   if (unit.texgen_mask != 0) {
     const glm::vec4 object = v.position[src];
-    const glm::vec4 eye = modelview * object;
+    const glm::vec4 eye = transform.modelview * object;
+    glm::vec3 normal(0.0f), reflected(0.0f);
+    const bool needs_normal =
+        std::any_of(unit.texgen.begin(), unit.texgen.end(), [](const rec::TexGen& g) {
+          return g.mode == GL_SPHERE_MAP || g.mode == GL_REFLECTION_MAP || g.mode == GL_NORMAL_MAP;
+        });
+    if (needs_normal) {
+      normal = eye_normal_of(v, src, transform);
+      const glm::vec3 position = eye.w != 0.0f ? glm::vec3(eye) / eye.w : glm::vec3(eye);
+      const float length = glm::length(position);
+      const glm::vec3 towards = length > 0.0f ? position / length : glm::vec3(0.0f);
+      reflected = towards - 2.0f * glm::dot(normal, towards) * normal;
+    }
     for (int c = 0; c < 4; ++c) {
       if ((unit.texgen_mask & (1u << c)) == 0) continue;
       const rec::TexGen& gen = unit.texgen[c];
-      if (gen.mode == GL_OBJECT_LINEAR) tc[c] = glm::dot(gen.object_plane, object);
-      if (gen.mode == GL_EYE_LINEAR) tc[c] = glm::dot(gen.eye_plane, eye);
+      switch (gen.mode) {
+        case GL_OBJECT_LINEAR:
+          tc[c] = glm::dot(gen.object_plane, object);
+          break;
+        case GL_EYE_LINEAR:
+          tc[c] = glm::dot(gen.eye_plane, eye);
+          break;
+        case GL_SPHERE_MAP: {
+          const float m = 2.0f * std::sqrt(reflected.x * reflected.x + reflected.y * reflected.y +
+                                           (reflected.z + 1.0f) * (reflected.z + 1.0f));
+          // GL allows sphere maps for s and t only; r and q keep their coordinate.
+          if (c < 2) tc[c] = m > 0.0f ? reflected[c] / m + 0.5f : 0.5f;
+          break;
+        }
+        case GL_REFLECTION_MAP:
+          if (c < 3) tc[c] = reflected[c];
+          break;
+        case GL_NORMAL_MAP:
+          if (c < 3) tc[c] = normal[c];
+          break;
+        default:
+          break;
+      }
     }
   }
   return unit.matrix * tc;
@@ -241,6 +297,8 @@ class Batcher {
       if (unit.texgen_mask != 0) {
         shading_.add_bytes(&unit.texgen, sizeof unit.texgen);
         shading_.add_bytes(&transform.modelview, sizeof transform.modelview);
+        const uint8_t normals[2] = {transform.normalize, transform.rescale_normal};
+        shading_.add_bytes(normals, sizeof normals);
       }
     }
     if (projective) {
@@ -285,8 +343,6 @@ class Batcher {
     };
     const uint32_t shared_material = v.material.empty() ? material_pair(lighting.material) : 0;
     const TracedSurface surface = surface_texture_of(state);
-    const bool textured = surface.units[0].texture != nullptr;
-    const bool textured1 = surface.units[1].texture != nullptr;
     // GL's normal transform (the inverse transpose of the modelview) for eye-space normals.
     const glm::mat3 normal_matrix = glm::transpose(glm::mat3(transform.modelview_inverse));
     const glm::vec3 kDefaultNormal(0, 0, 1);
@@ -310,12 +366,10 @@ class Batcher {
         g.normals.push_back(projective ? normal_matrix * normal : normal);
         g.colors.push_back(rec::attribute_at(v.color, src, kDefaultColor));
         // Texture coordinates are not flat-shaded: they follow each vertex.
-        if (textured)
-          g.texcoords.push_back(texcoord_of(v, t.v[k], 0, state.texturing->units[0],
-                                            transform.modelview));
-        if (textured1)
-          g.texcoords1.push_back(texcoord_of(v, t.v[k], 1, state.texturing->units[1],
-                                             transform.modelview));
+        for (size_t u = 0; u < TracedSurface::kUnits; ++u)
+          if (surface.units[u].texture)
+            g.texcoords[u].push_back(
+                texcoord_of(v, t.v[k], u, state.texturing->units[u], transform));
       }
       g.material_ids.push_back(v.material.empty() ? shared_material
                                                   : material_pair(v.material[provoking]));

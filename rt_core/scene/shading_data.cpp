@@ -66,10 +66,10 @@ void pack_shading(const Geometry& geometry, std::span<const uint32_t> triangle_o
       gpu::ShadingVertex& out = vertices[3 * sorted + corner];
       out.normal = glm::vec4(normal, static_cast<float>(material_id));
       out.color = color;
-      out.texcoord = source < geometry.texcoords.size() ? geometry.texcoords[source]
-                                                        : glm::vec4(0, 0, 0, 1);
-      out.texcoord1 = source < geometry.texcoords1.size() ? geometry.texcoords1[source]
-                                                          : glm::vec4(0, 0, 0, 1);
+      for (size_t unit = 0; unit < GLPT_TRACE_UNITS; ++unit)
+        out.texcoords[unit] = source < geometry.texcoords[unit].size()
+                                  ? geometry.texcoords[unit][source]
+                                  : glm::vec4(0, 0, 0, 1);
     }
   }
 }

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "gl/gl_enums.h"
+#include "rt_core/record/gl_state.hpp"
 #include "rt_core/record/texture.hpp"
 
 namespace glpt::rt {
@@ -52,10 +53,9 @@ struct Geometry {
   std::vector<glm::vec3> positions;
   std::vector<glm::vec3> normals;      // not necessarily unit length
   std::vector<glm::vec4> colors;       // current colour per vertex (used per color_source)
-  // Texture units 0 and 1's coordinates per vertex after texgen and the texture matrix (empty
-  // when the geometry's draws have no 2-D texture on that unit).
-  std::vector<glm::vec4> texcoords;
-  std::vector<glm::vec4> texcoords1;
+  // Each texture unit's coordinates per vertex after texgen and the texture matrix (empty when
+  // the geometry's draws have no texture on that unit).
+  std::array<std::vector<glm::vec4>, rec::kMaxTextureUnits> texcoords;
   std::vector<uint32_t> material_ids;  // one per triangle, index into `materials`
   std::vector<Material> materials;
   // Identity of the shape (positions, triangle order): geometries with equal shape hashes share
@@ -71,10 +71,10 @@ struct Geometry {
   size_t triangle_count() const { return positions.size() / 3; }
 };
 
-// A texture unit as rays see it: its 2-D texture and environment.
+// A texture unit as rays see it: its texture (any target) and environment.
 struct TracedUnit {
-  // The unit's texture when it samples a 2-D one (other targets are not sampled by rays); null:
-  // none.
+  // The texture the unit samples (GL_TEXTURE_1D, _2D, _3D or _CUBE_MAP); null: none, or a depth
+  // texture with comparison on, which rays do not sample.
   std::shared_ptr<const rec::TextureObjectSnapshot> texture;
   float lod_bias = 0.0f;            // the unit's GL_TEXTURE_LOD_BIAS
   uint32_t env_mode = GL_MODULATE;  // GL_TEXTURE_ENV_MODE
@@ -83,11 +83,11 @@ struct TracedUnit {
 };
 
 // What rays see of a traced draw besides its triangles (docs/light-transport.md, "Textures in
-// the tracer"): texture units 0 and 1 (a base texture and a lightmap or detail texture, the
-// multitexture of GL 1.x programs), the alpha test and the user clip planes. Draws that differ
-// in it are separate instances.
+// the tracer"): its texture units (a base texture, a lightmap or detail texture, an environment
+// map: the multitexture of GL 1.x programs), the alpha test and the user clip planes. Draws that
+// differ in it are separate instances.
 struct TracedSurface {
-  static constexpr size_t kUnits = 2;
+  static constexpr size_t kUnits = rec::kMaxTextureUnits;
   std::array<TracedUnit, kUnits> units;
   uint32_t alpha_func = 0;        // GL alpha test function, 0 when the alpha test is off
   float alpha_ref = 0.0f;

@@ -3,8 +3,10 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <cstring>
+#include <new>
 #include <vector>
 
 #include "common/stopwatch.hpp"
@@ -332,6 +334,7 @@ std::unique_ptr<VulkanDevice> VulkanDevice::create(const DeviceOptions& options)
       c.missing_ray_query.push_back("ray queries: hidden by GLPT_VK_NO_RAY_QUERY");
   const Candidate& chosen = choose(candidates, options.name_filter);
   self->physical_device_ = chosen.device;
+  self->sync_submissions_ = options.sync_submissions;
   self->name_ = chosen.name;
 
   auto as_properties = make_info<VkPhysicalDeviceAccelerationStructurePropertiesKHR>(
@@ -455,7 +458,7 @@ std::unique_ptr<VulkanDevice> VulkanDevice::create(const DeviceOptions& options)
         load("vkGetAccelerationStructureDeviceAddressKHR"));
   }
 
-  // ---- one command buffer + fence, reused by every submit_and_wait
+  // ---- the submission ring: a command buffer and fence per slot, two timestamps per slot
   auto pool_info = make_info<VkCommandPoolCreateInfo>(VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO);
   pool_info.flags =
       VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT | VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
@@ -469,12 +472,30 @@ std::unique_ptr<VulkanDevice> VulkanDevice::create(const DeviceOptions& options)
   allocate_info.commandPool = pool;
   allocate_info.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
   allocate_info.commandBufferCount = 1;
-  GLPT_VK_CHECK(vkAllocateCommandBuffers(device, &allocate_info, &self->command_buffer_));
-
   auto fence_info = make_info<VkFenceCreateInfo>(VK_STRUCTURE_TYPE_FENCE_CREATE_INFO);
-  VkFence fence = VK_NULL_HANDLE;
-  GLPT_VK_CHECK(vkCreateFence(device, &fence_info, nullptr, &fence));
-  self->fence_ = vk::Fence(fence, {device});
+  for (SubmissionSlot& slot : self->slots_) {
+    GLPT_VK_CHECK(vkAllocateCommandBuffers(device, &allocate_info, &slot.cmd));
+    VkFence fence = VK_NULL_HANDLE;
+    GLPT_VK_CHECK(vkCreateFence(device, &fence_info, nullptr, &fence));
+    slot.fence = vk::Fence(fence, {device});
+  }
+
+  uint32_t family_count = 0;
+  vkGetPhysicalDeviceQueueFamilyProperties(self->physical_device_, &family_count, nullptr);
+  std::vector<VkQueueFamilyProperties> families(family_count);
+  vkGetPhysicalDeviceQueueFamilyProperties(self->physical_device_, &family_count, families.data());
+  const uint32_t valid_bits =
+      chosen.queue_family < family_count ? families[chosen.queue_family].timestampValidBits : 0;
+  if (valid_bits > 0 && self->limits_.timestampPeriod > 0.0f) {
+    auto query_info = make_info<VkQueryPoolCreateInfo>(VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO);
+    query_info.queryType = VK_QUERY_TYPE_TIMESTAMP;
+    query_info.queryCount = 2 * kSubmissionSlots;
+    VkQueryPool queries = VK_NULL_HANDLE;
+    GLPT_VK_CHECK(vkCreateQueryPool(device, &query_info, nullptr, &queries));
+    self->timestamps_ = vk::QueryPool(queries, {device});
+    self->timestamp_period_ns_ = self->limits_.timestampPeriod;
+    self->timestamp_mask_ = valid_bits >= 64 ? ~uint64_t{0} : (uint64_t{1} << valid_bits) - 1;
+  }
   return self;
 }
 
@@ -517,16 +538,40 @@ std::shared_ptr<VulkanDevice> VulkanDevice::shared(const DeviceOptions& options)
   return device;
 }
 
-double VulkanDevice::submit_and_wait(const std::function<void(VkCommandBuffer)>& record) {
+namespace {
+
+double now_ms() {
+  return std::chrono::duration<double, std::milli>(
+             std::chrono::steady_clock::now().time_since_epoch())
+      .count();
+}
+
+}  // namespace
+
+VulkanDevice::Ticket VulkanDevice::submit(const std::function<void(VkCommandBuffer)>& record) {
   std::lock_guard lock(submit_mutex_);
-  VkCommandBuffer cmd = command_buffer_;
+  const Ticket ticket = last_ticket_ + 1;
+  const size_t index = ticket % kSubmissionSlots;
+  SubmissionSlot& slot = slots_[index];
+  if (slot.ticket != 0) {
+    ++host_waits_;
+    // The slot's previous ticket, and so every ticket before it, must be complete first.
+    for (Ticket t = completed_ticket_ + 1; t <= slot.ticket; ++t)
+      complete_locked(slots_[t % kSubmissionSlots]);
+  }
+  VkCommandBuffer cmd = slot.cmd;
   GLPT_VK_CHECK(vkResetCommandBuffer(cmd, 0));
   auto begin = make_info<VkCommandBufferBeginInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO);
   begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
   GLPT_VK_CHECK(vkBeginCommandBuffer(cmd, &begin));
+  const auto first_query = static_cast<uint32_t>(2 * index);
+  if (timestamps_) {
+    vkCmdResetQueryPool(cmd, timestamps_.get(), first_query, 2);
+    vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, timestamps_.get(), first_query);
+  }
 
-  // Submissions are few and large (a BLAS batch, the TLAS, one dispatch), so one global barrier
-  // each way costs nothing and keeps every cross-submission hazard covered.
+  // Submissions are few and large (a pass, a BLAS batch, the TLAS), so one global barrier each
+  // way costs nothing and keeps every cross-submission hazard covered.
   auto before = make_info<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
   before.srcAccessMask = VK_ACCESS_MEMORY_WRITE_BIT | VK_ACCESS_HOST_WRITE_BIT;
   before.dstAccessMask = VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT;
@@ -539,18 +584,80 @@ double VulkanDevice::submit_and_wait(const std::function<void(VkCommandBuffer)>&
   vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT,
                        VK_PIPELINE_STAGE_ALL_COMMANDS_BIT | VK_PIPELINE_STAGE_HOST_BIT, 0, 1,
                        &after, 0, nullptr, 0, nullptr);
+  if (timestamps_)
+    vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, timestamps_.get(),
+                        first_query + 1);
   GLPT_VK_CHECK(vkEndCommandBuffer(cmd));
 
-  auto submit = make_info<VkSubmitInfo>(VK_STRUCTURE_TYPE_SUBMIT_INFO);
-  submit.commandBufferCount = 1;
-  submit.pCommandBuffers = &cmd;
-  VkFence fence = fence_.get();
-  const Stopwatch timer;
-  GLPT_VK_CHECK(vkQueueSubmit(queue_, 1, &submit, fence));
+  auto submit_info = make_info<VkSubmitInfo>(VK_STRUCTURE_TYPE_SUBMIT_INFO);
+  submit_info.commandBufferCount = 1;
+  submit_info.pCommandBuffers = &cmd;
+  GLPT_VK_CHECK(vkQueueSubmit(queue_, 1, &submit_info, slot.fence.get()));
+  slot.ticket = ticket;
+  slot.submitted_at_ms = now_ms();
+  last_ticket_ = ticket;
+  if (sync_submissions_) {
+    ++host_waits_;
+    for (Ticket t = completed_ticket_ + 1; t <= ticket; ++t)
+      complete_locked(slots_[t % kSubmissionSlots]);
+  }
+  return ticket;
+}
+
+void VulkanDevice::complete_locked(SubmissionSlot& slot) {
+  if (slot.ticket == 0) return;
+  VkFence fence = slot.fence.get();
   GLPT_VK_CHECK(vkWaitForFences(handle(), 1, &fence, VK_TRUE, UINT64_MAX));
-  const double elapsed_ms = timer.elapsed_ms();
+  double device_ms = now_ms() - slot.submitted_at_ms;
+  if (timestamps_) {
+    uint64_t stamps[2] = {0, 0};
+    const auto first_query = static_cast<uint32_t>(2 * (&slot - slots_.data()));
+    if (vkGetQueryPoolResults(handle(), timestamps_.get(), first_query, 2, sizeof stamps, stamps,
+                              sizeof(uint64_t), VK_QUERY_RESULT_64_BIT) == VK_SUCCESS)
+      device_ms = double((stamps[1] - stamps[0]) & timestamp_mask_) * timestamp_period_ns_ * 1e-6;
+  }
   GLPT_VK_CHECK(vkResetFences(handle(), 1, &fence));
-  return elapsed_ms;
+  // The slot is free and its ticket complete before anything that can throw: a failure below
+  // must not leave a reset fence that a later wait would block on for ever.
+  const Ticket ticket = slot.ticket;
+  slot.ticket = 0;
+  completed_ticket_ = std::max(completed_ticket_, ticket);
+  try {
+    finished_ms_[ticket] = device_ms;
+    // Times nobody takes (submissions whose callers do not report them) are kept for a while.
+    while (finished_ms_.size() > 4 * kSubmissionSlots) finished_ms_.erase(finished_ms_.begin());
+  } catch (const std::bad_alloc&) {
+    // Out of memory: the ticket's time is not reported; nothing else depends on it.
+  }
+}
+
+void VulkanDevice::wait(Ticket ticket) {
+  std::lock_guard lock(submit_mutex_);
+  ticket = std::min(ticket, last_ticket_);
+  if (ticket > completed_ticket_) ++host_waits_;
+  // In ticket order: a fence covers its own submission only.
+  for (Ticket t = completed_ticket_ + 1; t <= ticket; ++t)
+    complete_locked(slots_[t % kSubmissionSlots]);
+}
+
+VulkanDevice::Ticket VulkanDevice::last_ticket() const {
+  std::lock_guard lock(submit_mutex_);
+  return last_ticket_;
+}
+
+double VulkanDevice::take_device_ms(Ticket ticket) {
+  std::lock_guard lock(submit_mutex_);
+  auto found = finished_ms_.find(ticket);
+  if (found == finished_ms_.end()) return 0.0;
+  const double ms = found->second;
+  finished_ms_.erase(found);
+  return ms;
+}
+
+double VulkanDevice::submit_and_wait(const std::function<void(VkCommandBuffer)>& record) {
+  const Ticket ticket = submit(record);
+  wait(ticket);
+  return take_device_ms(ticket);
 }
 
 }  // namespace glpt::rt

@@ -5,9 +5,11 @@
 
 #include <vulkan/vulkan.h>
 
+#include <array>
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <stdexcept>
@@ -35,6 +37,10 @@ struct DeviceOptions {
   // Treat every device as lacking ray queries (GLPT_VK_NO_RAY_QUERY=1): exercises the fallback to
   // raster mode on a machine that has them.
   bool hide_ray_query = false;
+  // Wait for every submission right away (GLPT_VK_SYNC=1), as glpt did before the passes of a
+  // frame overlapped: what that overlap gains is measured against it, and a synchronization
+  // problem shows by going away with it.
+  bool sync_submissions = false;
   bool operator==(const DeviceOptions&) const = default;
 };
 
@@ -87,12 +93,30 @@ class VulkanDevice {
   uint32_t memory_type(uint32_t type_bits, VkMemoryPropertyFlags required,
                        VkMemoryPropertyFlags preferred) const;
 
-  // Records commands into the device's command buffer with `record`, submits them and waits for
-  // completion. Each call starts with a full memory barrier, so work of earlier calls and host
-  // writes are visible, and ends with one that makes results visible to the host. Returns the
-  // wall-clock milliseconds of submit + wait. Thread-safe: contexts current on different threads
-  // share the device, and calls are serialized (the queue and command buffer are one).
+  // Submissions: tickets in submission order (0: none). `submit` records commands with `record`
+  // into a command buffer of its own and submits them without waiting, so the passes of one
+  // frame follow each other on the device while the host prepares the next; `wait` blocks until
+  // a ticket and every earlier one have completed. Each submission starts with a full memory
+  // barrier, so earlier submissions' work and host writes made before it are visible, and ends
+  // with one that makes its results visible to the host once waited. A caller that writes host
+  // memory a pending submission reads, or reads what it writes, waits for it first. Thread-safe:
+  // contexts current on different threads share the device, and submissions are serialized (the
+  // queue is one).
+  using Ticket = uint64_t;
+  Ticket submit(const std::function<void(VkCommandBuffer)>& record);
+  void wait(Ticket ticket);
+  void wait_all() { wait(last_ticket()); }
+  Ticket last_ticket() const;
+  // The device time of a completed ticket's commands in milliseconds (timestamps; where the
+  // queue has none, submit to completion as the host saw it), once: the value is handed over
+  // and forgotten. 0 for a ticket not waited for, unknown or already taken.
+  double take_device_ms(Ticket ticket);
+  // submit, then wait; returns the ticket's device milliseconds.
   double submit_and_wait(const std::function<void(VkCommandBuffer)>& record);
+  // How many times the host has waited for the device (waits for tickets not yet known to be
+  // complete, and submissions that had to wait for a free slot): what FrameStats::host_waits
+  // counts per frame.
+  uint64_t host_waits() const { return host_waits_; }
 
   // Number of messages the validation layer reported (0 without validation).
   uint64_t validation_messages() const { return validation_messages_; }
@@ -112,9 +136,28 @@ class VulkanDevice {
   vk::DebugMessenger messenger_;
   VkPhysicalDevice physical_device_ = VK_NULL_HANDLE;
   vk::Device device_;
-  std::mutex submit_mutex_;  // guards command_buffer_, fence_ and queue_ (submit_and_wait)
+  // Guards the submission ring, the ticket counters, the finished times and queue_.
+  mutable std::mutex submit_mutex_;
   vk::CommandPool command_pool_;
-  vk::Fence fence_;
+  // Submissions in flight: slot t % kSubmissionSlots holds ticket t until it is waited for (a new
+  // submission waits for the slot's previous ticket, kSubmissionSlots tickets back).
+  static constexpr size_t kSubmissionSlots = 16;
+  struct SubmissionSlot {
+    VkCommandBuffer cmd = VK_NULL_HANDLE;  // freed with command_pool_
+    vk::Fence fence;
+    Ticket ticket = 0;  // pending while nonzero
+    double submitted_at_ms = 0;
+  };
+  std::array<SubmissionSlot, kSubmissionSlots> slots_;
+  vk::QueryPool timestamps_;  // two per slot (start, end); null where the queue has none
+  double timestamp_period_ns_ = 0;
+  uint64_t timestamp_mask_ = 0;
+  Ticket last_ticket_ = 0;
+  std::atomic<uint64_t> host_waits_ = 0;
+  bool sync_submissions_ = false;
+  Ticket completed_ticket_ = 0;           // every ticket up to it has completed
+  std::map<Ticket, double> finished_ms_;  // device times not yet taken (the newest only)
+  void complete_locked(SubmissionSlot& slot);
   VkQueue queue_ = VK_NULL_HANDLE;
   uint32_t queue_family_ = 0;
   bool ray_query_ = false;
@@ -124,7 +167,6 @@ class VulkanDevice {
   bool precise_occlusion_queries_ = false;
   bool external_host_memory_ = false;
   VkDeviceSize host_pointer_alignment_ = 4096;
-  VkCommandBuffer command_buffer_ = VK_NULL_HANDLE;  // freed with command_pool_
 
   AccelerationStructureFunctions as_functions_;
   std::string name_;

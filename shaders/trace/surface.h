@@ -113,7 +113,7 @@ Surface load_surface(Hit hit, vec3 ray_direction, float cone_width) {
     s.specular_gl = vec3(0.0);
     s.emission = vec3(0.0);
   }
-  // Units 0 and 1 apply, in GL's order, to the diffuse colour (the lit colour's stand-in, as the
+  // The units apply, in GL's order, to the diffuse colour (the lit colour's stand-in, as the
   // G-buffer pass applies them, raster_ff.frag) or to the unlit colour. Under GL_SINGLE_COLOR
   // specular is textured too, by the environments' slope f(c) - f(0) (raster_ff.frag). Emission
   // stays untextured here, as next-event estimation sees it.
@@ -121,25 +121,24 @@ Surface load_surface(Hit hit, vec3 ray_direction, float cone_width) {
   vec3 specular_offset = vec3(0.0);
   // The triangle in eye space, for the ray cones' footprint (textured hits only).
   vec3 e0 = vec3(0.0), e1 = vec3(0.0), e2 = vec3(0.0);
-  if (instance.surface.x != 0u || instance.surface1.x != 0u) {
+  if (any(notEqual(instance.units & uvec4(0xFFu), uvec4(0u)))) {
     e0 = hit.object_to_eye * vec4(p0, 1.0);
     e1 = hit.object_to_eye * vec4(p1, 1.0);
     e2 = hit.object_to_eye * vec4(p2, 1.0);
   }
-  for (uint unit = 0u; unit < 2u; ++unit) {
-    uvec2 slot_env = unit_of(instance, unit);
-    if (slot_env.x == 0u) continue;
-    vec4 t0 = unit == 0u ? v0.texcoord : v0.texcoord1, t1 = unit == 0u ? v1.texcoord : v1.texcoord1;
-    vec4 t2 = unit == 0u ? v2.texcoord : v2.texcoord1;
+  for (uint u = 0u; u < GLPT_TRACE_UNITS; ++u) {
+    uint unit = instance.units[u];
+    if (unit_slot(unit) == 0u) continue;
+    vec4 t0 = v0.texcoords[u], t1 = v1.texcoords[u], t2 = v2.texcoords[u];
     vec4 texcoord = w.x * t0 + w.y * t1 + w.z * t2;
-    float lod = ray_cone_lod(slot_env.x, e0, e1, e2, t0.xy, t1.xy, t2.xy, cone_width,
-                             ray_direction, geometric);
-    vec4 texel = sample_slot(slot_env.x, texcoord, lod);
-    s.diffuse_gl = texture_environment(slot_env.y, vec4(s.diffuse_gl, 1.0), texel).rgb;
-    if (s.lit) s.ambient = texture_environment(slot_env.y, vec4(s.ambient, 1.0), texel).rgb;
+    float lod = ray_cone_lod(unit, e0, e1, e2, t0, t1, t2, cone_width, ray_direction, geometric);
+    vec4 texel = sample_unit(unit, texcoord, lod);
+    uint env = unit_env_mode(unit);
+    s.diffuse_gl = texture_environment(env, vec4(s.diffuse_gl, 1.0), texel).rgb;
+    if (s.lit) s.ambient = texture_environment(env, vec4(s.ambient, 1.0), texel).rgb;
     if (texture_specular) {
-      s.specular_gl = texture_environment(slot_env.y, vec4(s.specular_gl, 1.0), texel).rgb;
-      specular_offset = texture_environment(slot_env.y, vec4(specular_offset, 1.0), texel).rgb;
+      s.specular_gl = texture_environment(env, vec4(s.specular_gl, 1.0), texel).rgb;
+      specular_offset = texture_environment(env, vec4(specular_offset, 1.0), texel).rgb;
     }
   }
   s.specular_gl -= specular_offset;

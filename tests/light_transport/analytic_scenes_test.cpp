@@ -573,6 +573,133 @@ TEST(LightTransport, BounceRaysSeeTheTexturesOfWhatTheyHit) {
   }
 }
 
+// The floor by the wall of BounceRaysSeeTheTexturesOfWhatTheyHit: mean red and green over the
+// pixels just left of the wall (which stands at x = 0.5 and covers columns 35 and up).
+glm::dvec2 floor_by_the_wall(const Image& image) {
+  glm::dvec2 sum(0.0);
+  for (int x = 24; x < 34; ++x)
+    for (int y = 8; y < 20; ++y) sum += glm::dvec2(image.at(x, y, 0), image.at(x, y, 1));
+  return sum / 120.0;
+}
+
+void nearest_filtering(GLenum target) {
+  glTexParameteri(target, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(target, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+}
+
+TEST(LightTransport, BounceRaysSeeEveryTextureTargetUnitAndCoordinateGeneration) {
+  // The scene of BounceRaysSeeTheTexturesOfWhatTheyHit with the wall's red from each texture
+  // target and from unit 3, and from textures that are red only where GL's coordinate
+  // generation points: cube maps red on one face only (green elsewhere), under GL_NORMAL_MAP
+  // the -X face (the wall faces -x) and under GL_REFLECTION_MAP the -Z face (the view vectors
+  // (x > 0, y, z << 0) reflect to (-x, y, z): mostly -Z; the normal would pick -X, the quad's
+  // own coordinates +X or +Y), and a 2-texel texture red on the left under GL_SPHERE_MAP (the
+  // reflected vectors have x < 0: s < 0.5; unreflected ones x > 0; the quad's coordinates span
+  // both texels). Each must bounce the light of a plain red 2-D texture: wrong coordinates
+  // bounce green or yellow light.
+  const uint8_t red[4] = {255, 0, 0, 255}, green[4] = {0, 255, 0, 255},
+                white[4] = {255, 255, 255, 255};
+  enum class Red { kNone, k2D, k1D, k3D, kUnit3, kCubeNormalMap, kCubeReflectionMap, kSphereMap };
+  auto scene = [&](Red which) {
+    return [&, which] {
+      camera();
+      material(glm::vec3(0.8f));
+      const float down[] = {-0.6f, 1.0f, 0.3f, 0.0f}, one[] = {1, 1, 1, 1};
+      glLightfv(GL_LIGHT0, GL_POSITION, down);
+      glLightfv(GL_LIGHT0, GL_DIFFUSE, one);
+      glEnable(GL_LIGHT0);
+      quad({-3, -1, -2}, {3, -1, -2}, {3, -1, -8}, {-3, -1, -8});  // floor, facing +y
+      GLuint texture = 0;
+      glGenTextures(1, &texture);
+      GLenum target = GL_TEXTURE_2D;
+      std::vector<GLenum> generated;  // GL_TEXTURE_GEN_* enabled
+      GLint mode = 0;
+      switch (which) {
+        case Red::kNone:
+          bind_two_texel_texture(white, white);
+          break;
+        case Red::k2D:
+          bind_two_texel_texture(red, red);
+          break;
+        case Red::k1D:
+          target = GL_TEXTURE_1D;
+          glBindTexture(target, texture);
+          nearest_filtering(target);
+          glTexImage1D(target, 0, GL_RGBA, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, red);
+          break;
+        case Red::k3D:
+          target = GL_TEXTURE_3D;
+          glBindTexture(target, texture);
+          nearest_filtering(target);
+          glTexImage3D(target, 0, GL_RGBA, 1, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, red);
+          break;
+        case Red::kUnit3:
+          bind_two_texel_texture(white, white);
+          glActiveTexture(GL_TEXTURE3);
+          bind_two_texel_texture(red, red);
+          glActiveTexture(GL_TEXTURE0);
+          break;
+        case Red::kCubeNormalMap:
+        case Red::kCubeReflectionMap:
+          target = GL_TEXTURE_CUBE_MAP;
+          glBindTexture(target, texture);
+          nearest_filtering(target);
+          mode = which == Red::kCubeNormalMap ? GL_NORMAL_MAP : GL_REFLECTION_MAP;
+          for (GLenum face = 0; face < 6; ++face) {
+            // Faces in the order +X, -X, +Y, -Y, +Z, -Z.
+            const bool red_face = face == (mode == GL_NORMAL_MAP ? 1u : 5u);
+            glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face, 0, GL_RGBA, 1, 1, 0, GL_RGBA,
+                         GL_UNSIGNED_BYTE, red_face ? red : green);
+          }
+          generated = {GL_S, GL_T, GL_R};
+          break;
+        case Red::kSphereMap:
+          bind_two_texel_texture(red, green);
+          generated = {GL_S, GL_T};
+          mode = GL_SPHERE_MAP;
+          break;
+      }
+      glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+      glEnable(target);
+      for (GLenum coord : generated) {
+        glTexGeni(coord, GL_TEXTURE_GEN_MODE, mode);
+        glEnable(coord == GL_S   ? GL_TEXTURE_GEN_S
+                 : coord == GL_T ? GL_TEXTURE_GEN_T
+                                 : GL_TEXTURE_GEN_R);
+      }
+      textured_quad({0.5f, -1, -2}, {0.5f, 2, -2}, {0.5f, 2, -8}, {0.5f, -1, -8});  // faces -x
+      glDisable(GL_TEXTURE_GEN_S);
+      glDisable(GL_TEXTURE_GEN_T);
+      glDisable(GL_TEXTURE_GEN_R);
+      glDisable(target);
+      glActiveTexture(GL_TEXTURE3);
+      glDisable(GL_TEXTURE_2D);
+      glActiveTexture(GL_TEXTURE0);
+    };
+  };
+  const Settings settings = path({{"GLPT_SPP", "32"}, {"GLPT_BOUNCES", "1"}, {"GLPT_AO", "0"}});
+  const glm::dvec2 white_floor =
+      floor_by_the_wall(render(settings, scene(Red::kNone), 2, "white_wall"));
+  const glm::dvec2 red_floor = floor_by_the_wall(render(settings, scene(Red::k2D), 2, "red_2d"));
+  std::printf("floor by the wall: white wall r %.1f g %.1f, plain red wall r %.1f g %.1f\n",
+              white_floor.x, white_floor.y, red_floor.x, red_floor.y);
+  ASSERT_GT(white_floor.y - red_floor.y, 10.0) << "the red wall's bounce is visible at all";
+  const std::pair<Red, const char*> cases[] = {{Red::k1D, "red_1d"},
+                                               {Red::k3D, "red_3d"},
+                                               {Red::kUnit3, "red_unit3"},
+                                               {Red::kCubeNormalMap, "red_cube_normal_map"},
+                                               {Red::kCubeReflectionMap, "red_cube_reflection_map"},
+                                               {Red::kSphereMap, "red_sphere_map"}};
+  for (const auto& [which, name] : cases) {
+    const glm::dvec2 floor = floor_by_the_wall(render(settings, scene(which), 2, name));
+    std::printf("floor by the wall (%s): r %.1f g %.1f\n", name, floor.x, floor.y);
+    // Green missing from the floor as the plain red wall takes it (to 10 %), red kept.
+    EXPECT_GT(white_floor.y - floor.y, 0.9 * (white_floor.y - red_floor.y))
+        << name << ": the wall bounces green light: its red texels were missed";
+    EXPECT_NEAR(floor.x, red_floor.x, 2.0) << name;
+  }
+}
+
 // ---- many lights -------------------------------------------------------------------------------
 
 // A floor of 10 x 10 tiles, each its own draw lit by 8 of 100 positional lights: tile i by the

@@ -156,18 +156,21 @@ TEST(MortonSort, PackingFillsMissingAttributesWithGlDefaults) {
   EXPECT_EQ(materials[0].diffuse, Material{}.diffuse);
 }
 
-TEST(MortonSort, PackingKeepsBothTextureUnitsCoordinates) {
+TEST(MortonSort, PackingKeepsEveryTextureUnitsCoordinates) {
   Geometry geometry;
   geometry.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
-  geometry.texcoords = {{0.1f, 0.2f, 0, 1}, {0.3f, 0.4f, 0, 1}, {0.5f, 0.6f, 0, 1}};
-  geometry.texcoords1 = {{7, 8, 0, 1}, {9, 10, 0, 1}, {11, 12, 0, 1}};
+  geometry.texcoords[0] = {{0.1f, 0.2f, 0, 1}, {0.3f, 0.4f, 0, 1}, {0.5f, 0.6f, 0, 1}};
+  geometry.texcoords[1] = {{7, 8, 0, 1}, {9, 10, 0, 1}, {11, 12, 0, 1}};
+  geometry.texcoords[3] = {{1, 2, 3, 4}, {5, 6, 7, 8}, {9, 10, 11, 12}};  // unit 2 untextured
   const std::vector<uint32_t> order = {0};
   std::vector<gpu::ShadingVertex> vertices(3);
   std::vector<gpu::GpuMaterial> materials(packed_material_count(geometry));
   pack_shading(geometry, order, vertices, materials);
   for (size_t corner = 0; corner < 3; ++corner) {
-    EXPECT_EQ(vertices[corner].texcoord, geometry.texcoords[corner]);
-    EXPECT_EQ(vertices[corner].texcoord1, geometry.texcoords1[corner]);
+    EXPECT_EQ(vertices[corner].texcoords[0], geometry.texcoords[0][corner]);
+    EXPECT_EQ(vertices[corner].texcoords[1], geometry.texcoords[1][corner]);
+    EXPECT_EQ(vertices[corner].texcoords[2], glm::vec4(0, 0, 0, 1));
+    EXPECT_EQ(vertices[corner].texcoords[3], geometry.texcoords[3][corner]);
   }
 }
 

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <glm/gtc/matrix_transform.hpp>
@@ -161,6 +162,38 @@ TEST_F(RenderTest, OccluderShadowsThePlaneBehindIt) {
   const glm::ivec2 shadowed = project(b, {0, -1, -5}), open = project(b, {2, -1, -5});
   const Rgba in_shadow = image.at(shadowed.x, shadowed.y), in_light = image.at(open.x, open.y);
   EXPECT_LT(in_shadow.luminance() * 2, in_light.luminance()) << in_shadow << " vs " << in_light;
+}
+
+TEST_F(RenderTest, PassesOfAFrameFollowEachOtherWithoutTheHostWaiting) {
+  // The G-buffer pass, the BLAS and TLAS builds, the trace and the raster pass after it are
+  // submitted back to back, each one's host work overlapping the device work before it: the
+  // host waits for the device once per frame, at its end (it waited after every pass before:
+  // four times a frame with new geometry). Frames into one drawable, each with a new occluder
+  // (a BLAS and a TLAS build every frame); the first also creates the drawable's buffers.
+  const std::shared_ptr<DrawableBuffers> buffers = create_drawable_buffers();
+  std::string error;
+  for (int frame = 0; frame < 4; ++frame) {
+    RecordBuilder b = base_frame();
+    b.directional_light(0, {0, 1, 0});
+    b.quad({-4, -1, -2}, {8, 0, 0}, {0, 0, -8}, glm::vec4(1));
+    b.quad({-0.45f + 0.1f * float(frame), -0.5f, -4.5f}, {1, 0, 0}, {0, 0, -1}, glm::vec4(1));
+    FrameStats stats;
+    ASSERT_TRUE(renderer_->execute(b.record, *buffers, b.drawable, stats, &error)) << error;
+    EXPECT_GE(stats.blas_builds, 1u) << "frame " << frame;
+    EXPECT_GT(stats.rays, 0u) << "frame " << frame << ": counted once the frame completed";
+    EXPECT_GT(stats.trace_ms, 0.0) << "frame " << frame << ": the trace's device time";
+    if (frame > 0) {
+      EXPECT_EQ(stats.host_waits, 1u) << "frame " << frame;
+    }
+  }
+  // The frames' results are complete when execute returns: read them without further ado.
+  std::vector<uint8_t> rgba;
+  ASSERT_TRUE(renderer_->read_color(*buffers, GL_FRONT, 0, 0, kSize, kSize, rgba, &error)) << error;
+  const std::vector<uint8_t> clear = {51, 102, 153, 0};
+  const auto top_left = rgba.begin() + std::ptrdiff_t{(kSize - 1) * kSize * 4};
+  EXPECT_TRUE(std::equal(clear.begin(), clear.end(), top_left)) << "the sky keeps the clear colour";
+  const int floor = rgba[(4 * kSize + kSize / 2) * 4];  // near the bottom, middle: lit floor
+  EXPECT_GT(floor, 100);
 }
 
 TEST_F(RenderTest, DefaultLightOnlyWhenAskedFor) {
