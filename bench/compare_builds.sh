@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # compare_builds.sh BUILD_A BUILD_B [--rounds N] [--frames F] [--settings "VAR=V ..."]
-#                   [--settings-b "VAR=V ..."] [--metric total_ms|frame_ms]
+#                   [--settings-b "VAR=V ..."] [--metric total_ms|wall_ms]
 #
 # Whether a change made path-traced frames slower: runs glxgears and bench/lit_scene through the
 # libGL.so.1 of two build directories (say, one of the commit before a change and one after),
@@ -13,8 +13,9 @@
 #   --frames F      lit_scene's frames per run (default 8; glxgears runs 25 s)
 #   --settings S    GLPT_* settings of every run (default: none, glpt's defaults)
 #   --settings-b S  settings added to B's runs only (say GLPT_VK_SYNC=1)
-#   --metric M      total_ms (the stages' sum, default) or frame_ms (wall clock between frames:
-#                   what overlapping host and device work saves shows here only)
+#   --metric M      total_ms (the stages' sum, default) or wall_ms (the wall clock of the
+#                   frame's end, render and present: what overlapping host and device work
+#                   saves shows here only)
 set -euo pipefail
 [ $# -ge 2 ] || { sed -n '2,19p' "$0" | sed 's/^# \{0,1\}//'; exit 2; }
 build_a=$1

@@ -351,9 +351,21 @@ Channels trace_path(Surface first, inout uint rng) {
     vec3 weight = bsdf_lobe_cos(bsdf, lobe, v, l) / pdf;
     if (depth == 0u) first_lobe = lobe;
 
+    // The world first; a ray that misses it sees the sky where the frame has one, looked up
+    // from the eye in the ray's direction (the sky is drawn around the camera, so its radiance
+    // depends on the direction alone), else GLPT_ENVIRONMENT. One query site for both (lavapipe
+    // inlines the traversal at each).
     Hit hit;
-    ++g_rays;
-    bool found = trace_closest(s.shadow_position, direction, kUnboundedRay, hit);
+    bool found = false, at_sky = false;
+    for (uint look = 0u; look < 2u && !found; ++look) {
+      at_sky = look == 1u;
+      if (at_sky && !has_option(GLPT_OPTION_SKY)) break;
+      ++g_rays;
+      found = trace_closest(at_sky ? vec3(0.0) : s.shadow_position, direction, kUnboundedRay,
+                            at_sky ? GLPT_MASK_SKY : GLPT_MASK_VISIBLE, hit);
+    }
+    bool sky_hit = found && at_sky;
+    if (sky_hit) found = false;
     float t_hit = found ? hit.t : kUnboundedRay;
     // The ray passing through one of the surface's area lights: the other technique of MIS.
     for (uint i = 0u; i < choice.count; ++i) {
@@ -374,20 +386,25 @@ Channels trace_path(Surface first, inout uint rng) {
       if (emitter_pdf > 0.0) emission_weight = power_heuristic(pdf, emitter_pdf);
     }
     throughput *= weight;
-    if (!found) {
+    if (!found && !sky_hit) {
       if (has_option(GLPT_OPTION_ENVIRONMENT))
         add_to_channel(c, first_lobe, false, throughput * frame.environment.rgb);
       break;
     }
     // Russian roulette after the first bounce: paths that carry little go on rarely, with
     // their weight raised to keep the estimate unbiased.
-    if (depth >= 1u) {
+    if (found && depth >= 1u) {
       float keep = clamp(max3(throughput), 0.05, 0.95);
       if (next_random(rng) >= keep) break;
       throughput /= keep;
     }
     path_length += hit.t;
     s = load_surface(hit, direction, path_length * frame.params.w);
+    if (sky_hit) {
+      // The sky's radiance is the colour GL draws it with (unlit, textured).
+      add_to_channel(c, first_lobe, false, throughput * s.diffuse_gl);
+      break;
+    }
     to_viewer = -direction;
   }
   return c;

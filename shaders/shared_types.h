@@ -77,11 +77,13 @@ using mat4 = glm::mat4;
 #define GLPT_TILE_SIZE 8
 
 // ---- ray masks -------------------------------------------------------------------------------
-// Every instance has GLPT_MASK_VISIBLE set; bits 0..6 say "casts shadows for light i" (lights 7+
-// share bit 6). Bounce rays use GLPT_MASK_VISIBLE, shadow rays the light's bit, so an instance
-// can be visible yet not shadow a light (see light_setup.cpp: lamp markers).
+// Every world instance has GLPT_MASK_VISIBLE set; bits 0..5 say "casts shadows for light i"
+// (lights 6+ share bit 5). Bounce rays use GLPT_MASK_VISIBLE, shadow rays the light's bit, so an
+// instance can be visible yet not shadow a light (see light_setup.cpp: lamp markers). Sky
+// instances have GLPT_MASK_SKY alone: only the sky lookup of rays that miss the world sees them.
 #define GLPT_MASK_VISIBLE 0x80u
-#define GLPT_MASK_SHADOW_BITS 7u
+#define GLPT_MASK_SKY 0x40u
+#define GLPT_MASK_SHADOW_BITS 6u
 
 // ---- GpuMaterial::params.z flags and ColorSource values (same numbers as rt::ColorSource) ----
 #define GLPT_COLOR_SOURCE_NONE 0u
@@ -197,6 +199,7 @@ struct GpuTraceState {
 #define GLPT_OPTION_UNLIT_AO 8u      // GLPT_UNLIT=ao: unlit pixels darkened by AO
 #define GLPT_OPTION_UNLIT_EMIT 16u   // GLPT_UNLIT=emit: unlit surfaces light others
 #define GLPT_OPTION_ENVIRONMENT 32u  // rays that miss see FrameUniforms::environment
+#define GLPT_OPTION_SKY 64u          // the frame has sky instances (GLPT_MASK_SKY)
 // FrameUniforms::options.y: how one light of a surface's lights is chosen per sample
 #define GLPT_LIGHT_CHOICE_CONTRIBUTION 0u  // in proportion to its estimated contribution
 #define GLPT_LIGHT_CHOICE_UNIFORM 1u       // uniformly (for comparison)

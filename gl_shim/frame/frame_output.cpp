@@ -101,6 +101,7 @@ void FrameOutput::end_frame(const rec::FrameRecord& record, const rec::DrawableC
                             double record_ms, WindowTarget& target, bool swap,
                             std::vector<rt::QuerySamples>* queries) {
   const double frame_ms = since_last_frame_.elapsed_ms();
+  const Stopwatch wall_timer;  // what the frame's end costs the program: render and present
   std::string error;
   rt::FrameStats stats;
   drawable_ = drawable;
@@ -141,14 +142,15 @@ void FrameOutput::end_frame(const rec::FrameRecord& record, const rec::DrawableC
                  "total_ms=%.2f draws=%u resident_draws=%u pipelines_created=%u inexpressible=%u "
                  "triangles=%" PRIu64 " rays=%" PRIu64
                  " mrays_per_s=%.3f blas_builds=%u blas_reused=%u spp=%u non_finite=%" PRIu64
-                 " emitters=%u host_waits=%u\n",
+                 " emitters=%u host_waits=%u wall_ms=%.2f\n",
                  frame_index_, width, height, frame_ms, record_ms_, s.upload_ms, s.raster_ms,
                  s.blas_ms, s.tlas_ms, s.trace_ms, s.readback_ms, present_ms,
                  record_ms_ + s.upload_ms + s.raster_ms + s.blas_ms + s.tlas_ms + s.trace_ms +
                      s.readback_ms + present_ms,
                  s.draws, s.resident_draws, s.pipelines_created, s.inexpressible, s.triangles,
                  s.rays, trace_s > 0 ? s.rays / trace_s / 1e6 : 0.0, s.blas_builds, s.blas_reused,
-                 s.accumulated_samples, s.non_finite_samples, s.emitters, s.host_waits);
+                 s.accumulated_samples, s.non_finite_samples, s.emitters, s.host_waits,
+                 wall_timer.elapsed_ms());
   }
   last_frame_stats_ = frame_stats_;
   frame_stats_ = rt::FrameStats();

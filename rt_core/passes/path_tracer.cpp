@@ -206,6 +206,7 @@ void PathTracer::build_scene_setup(const TraceScene& scene, TextureCache* textur
   setup.emitters.clear();
   setup.clip_planes.clear();
   setup.instance_bounds.clear();
+  setup.sky.clear();
   setup.scene_bounds = EyeBounds();
   setup.triangles = 0;
   // (content version, sampler) -> slot + 1: the version names the images only, and one frame
@@ -286,7 +287,9 @@ void PathTracer::build_scene_setup(const TraceScene& scene, TextureCache* textur
                     0u, 0u)});
 
     setup.instance_bounds.push_back(bounds);
-    setup.scene_bounds.extend(bounds);
+    setup.sky.push_back(instance.sky ? 1 : 0);
+    // The sky box is no part of the world's extent (which sizes lights and AO).
+    if (!instance.sky) setup.scene_bounds.extend(bounds);
     setup.triangles += entry->triangle_count;
   }
 }
@@ -370,8 +373,13 @@ void PathTracer::trace(const TraceScene& scene, const TraceTargets& targets, Fra
                              glm::radians(settings_.light_angular_radius_deg)};
   const LightSetup light_setup =
       setup_lights(scene.lights, scene_.instance_bounds, scene_.scene_bounds, light_size);
-  for (size_t i = 0; i < scene_.tlas_instances.size(); ++i)
-    scene_.tlas_instances[i].mask = light_setup.instance_masks[i] & 0xFFu;
+  bool any_sky = false;
+  for (size_t i = 0; i < scene_.tlas_instances.size(); ++i) {
+    // Sky instances are seen by the sky lookup of rays that miss the world only.
+    scene_.tlas_instances[i].mask =
+        scene_.sky[i] ? GLPT_MASK_SKY : light_setup.instance_masks[i] & 0xFFu;
+    any_sky = any_sky || scene_.sky[i];
+  }
   sort_instances_spatially(scene_);
   upload(*device_, instance_table_, scene_.instance_table);
   upload(*device_, lights_, light_setup.lights);
@@ -400,7 +408,7 @@ void PathTracer::trace(const TraceScene& scene, const TraceTargets& targets, Fra
   const float half_sin = std::sin(0.5f * angle);
   uniforms.params =
       glm::vec4(settings_.ao_radius, std::cos(angle), 2.0f * half_sin * half_sin, scene.pixel_spread);
-  uniforms.options = glm::uvec4(options_bits(settings_),
+  uniforms.options = glm::uvec4(options_bits(settings_) | (any_sky ? GLPT_OPTION_SKY : 0u),
                                 static_cast<uint32_t>(settings_.light_choice), emitter_count, 0u);
   uniforms.environment = scene.clear_color;
   frame_uniforms_.write(&uniforms, sizeof uniforms);

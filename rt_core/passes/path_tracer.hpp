@@ -91,6 +91,7 @@ class PathTracer {
     std::vector<gpu::GpuEmitter> emitters;
     std::vector<gpu::GpuClipPlanes> clip_planes;  // one per instance with user clip planes
     std::vector<EyeBounds> instance_bounds;
+    std::vector<uint8_t> sky;  // per instance: 1 for the sky (TLAS mask GLPT_MASK_SKY only)
     EyeBounds scene_bounds;
     uint64_t triangles = 0;
   };

@@ -69,10 +69,14 @@ inline constexpr uint8_t kPerVertexSecondaryColor = 2;
 // Content hashes of a draw's vertex data, so equal draws in different frames have equal keys.
 // `geometry` covers what decides the shape (mode, source, per_vertex, positions, indices,
 // primitives): recolouring never changes it, so an acceleration structure is reused.
-// `attributes` covers everything else.
+// `attributes` covers everything else. The bounds come with them (computed in the same pass, and
+// as reusable): the object-space box of the positions with w > 0 (after the divide by w); empty
+// (min > max) when there is none.
 struct VertexKeys {
   uint64_t geometry = 0;
   uint64_t attributes = 0;
+  glm::vec3 bounds_min{1.0f}, bounds_max{-1.0f};
+  bool bounded() const { return bounds_min.x <= bounds_max.x; }
 };
 
 // VertexData's cache of its keys and content id. A copy or move starts without them: the copy

@@ -1,3 +1,6 @@
+#include <cmath>
+#include <limits>
+
 #include "common/content_hash.hpp"
 #include "rt_core/record/frame_record.hpp"
 
@@ -22,7 +25,19 @@ const VertexKeys& VertexData::keys() const {
   attributes.add(edge_flag);
   attributes.add(material);
 
-  cached_keys.keys = {geometry.value(), attributes.value()};
+  glm::vec3 low(std::numeric_limits<float>::infinity()), high(-low);
+  for (const glm::vec4& p : position) {
+    if (!(p.w > 0.0f)) continue;
+    const glm::vec3 q = p.w == 1.0f ? glm::vec3(p) : glm::vec3(p) / p.w;
+    if (!std::isfinite(q.x) || !std::isfinite(q.y) || !std::isfinite(q.z)) continue;
+    low = glm::min(low, q);
+    high = glm::max(high, q);
+  }
+  cached_keys.keys = {geometry.value(), attributes.value(), glm::vec3(1.0f), glm::vec3(-1.0f)};
+  if (low.x <= high.x) {
+    cached_keys.keys.bounds_min = low;
+    cached_keys.keys.bounds_max = high;
+  }
   cached_keys.valid = true;
   return cached_keys.keys;
 }

@@ -262,16 +262,18 @@ class Batcher {
   Batcher(std::vector<Instance>& instances, const KnownGeometry& known, rec::Decomposed& scratch)
       : instances_(instances), known_(known), scratch_(scratch) {}
 
-  void add(const rec::Draw& draw, const rec::StateSnapshot& state) {
+  void add(const rec::Draw& draw, const rec::StateSnapshot& state, bool sky = false) {
     const rec::TransformState& transform = *state.transform;
     const bool projective = is_projective(transform.modelview);
     const glm::mat4 modelview = projective ? glm::mat4(1.0f) : transform.modelview;
     const TracedSurface surface = surface_texture_of(state);
     if (open_ && (std::memcmp(&modelview, &open_modelview_, sizeof modelview) != 0 ||
-                  !same_light_set(*state.lighting, *open_lighting_) || !(surface == open_surface_)))
+                  !same_light_set(*state.lighting, *open_lighting_) ||
+                  !(surface == open_surface_) || sky != open_sky_))
       close();
     if (!open_) {
       open_ = true;
+      open_sky_ = sky;
       open_modelview_ = modelview;
       open_surface_ = surface;
       open_lighting_ = state.lighting;
@@ -320,7 +322,8 @@ class Batcher {
       for (const OpenDraw& d : draws_) append_triangles(*d.draw, *d.state, *geometry);
       if (geometry->positions.empty()) return;
     }
-    instances_.push_back({std::move(geometry), open_modelview_, open_state_, open_surface_});
+    instances_.push_back(
+        {std::move(geometry), open_modelview_, open_state_, open_surface_, open_sky_});
     open_lighting_.reset();
     open_surface_ = TracedSurface();
   }
@@ -385,6 +388,7 @@ class Batcher {
   const KnownGeometry& known_;
   rec::Decomposed& scratch_;
   bool open_ = false;
+  bool open_sky_ = false;
   std::vector<OpenDraw> draws_;
   glm::mat4 open_modelview_{1.0f};
   std::shared_ptr<const rec::LightingState> open_lighting_;
@@ -484,6 +488,63 @@ DrawClass classify_draw(const rec::Draw& draw, const rec::StateSnapshot& state,
   return DrawClass::kTraced;
 }
 
+namespace {
+
+// A draw's eye-space box: its vertex data's object-space box under the modelview. False when it
+// has no bounds or the modelview is projective.
+bool eye_bounds_of(const rec::Draw& draw, const rec::StateSnapshot& state, EyeBounds& bounds) {
+  const rec::VertexKeys& keys = draw.vertices->keys();
+  if (!keys.bounded() || is_projective(state.transform->modelview)) return false;
+  bounds = EyeBounds::transformed(keys.bounds_min, keys.bounds_max, state.transform->modelview);
+  return !bounds.empty() && std::isfinite(bounds.diagonal());
+}
+
+bool holds_the_eye(const EyeBounds& b) {
+  return b.min.x < 0.0f && b.min.y < 0.0f && b.min.z < 0.0f && b.max.x > 0.0f &&
+         b.max.y > 0.0f && b.max.z > 0.0f;
+}
+
+// A box around the eye whose centre is within 10 % of its half size of the eye on every axis:
+// what drawing a box with the camera's translation removed makes.
+bool centred_on_the_eye(const EyeBounds& b) {
+  const glm::vec3 centre = 0.5f * (b.min + b.max), half = 0.5f * (b.max - b.min);
+  return holds_the_eye(b) && glm::all(glm::lessThanEqual(glm::abs(centre), 0.1f * half));
+}
+
+}  // namespace
+
+void find_sky(const rec::FrameRecord& record, std::vector<DrawClass>& classes) {
+  // The run of unlit draws without depth writes or test before the first traced draw (their
+  // union must hold the eye: six faces of a box each do not), and draws at the far plane.
+  std::vector<size_t> run;
+  EyeBounds run_bounds;
+  bool world_started = false;
+  for (size_t i = 0; i < record.commands.size() && i < classes.size(); ++i) {
+    if (classes[i] != DrawClass::kTraced) continue;
+    const rec::Draw& draw = std::get<rec::Draw>(record.commands[i]);
+    const rec::StateSnapshot& state = record.states[draw.state];
+    const rec::TransformState& transform = *state.transform;
+    if (transform.depth_near == 1.0f && transform.depth_far == 1.0f) {
+      classes[i] = DrawClass::kSky;
+      continue;
+    }
+    if (world_started) continue;
+    const rec::FragmentOpsState& ops = state.raster->ops;
+    EyeBounds bounds;
+    const bool unlit_with_bounds = !state.lighting->enabled && eye_bounds_of(draw, state, bounds);
+    if (unlit_with_bounds && (!ops.depth_write || !ops.depth_test)) {
+      run.push_back(i);
+      run_bounds.extend(bounds);
+    } else if (unlit_with_bounds && centred_on_the_eye(bounds)) {
+      classes[i] = DrawClass::kSky;
+    } else {
+      world_started = true;
+    }
+  }
+  if (!run.empty() && holds_the_eye(run_bounds))
+    for (size_t i : run) classes[i] = DrawClass::kSky;
+}
+
 void build_trace_scene(const rec::FrameRecord& record, const rec::DrawableConfig& drawable,
                        SceneBuild& out, const SceneOptions& options) {
   out.scene = TraceScene();
@@ -492,6 +553,7 @@ void build_trace_scene(const rec::FrameRecord& record, const rec::DrawableConfig
   out.gbuffer_pass.clear();
   out.after_trace.clear();
   out.any_traced = false;
+  out.any_sky = false;
   TraceScene& scene = out.scene;
   scene.width = drawable.width;
   scene.height = drawable.height;
@@ -505,16 +567,22 @@ void build_trace_scene(const rec::FrameRecord& record, const rec::DrawableConfig
   rec::Decomposed scratch;
   Batcher batcher(scene.instances, options.known_geometry, scratch);
   std::vector<uint8_t> state_used(record.states.size(), 0);
+  for (size_t i = 0; i < record.commands.size(); ++i)
+    if (const auto* draw = std::get_if<rec::Draw>(&record.commands[i]))
+      out.classes[i] = classify_draw(*draw, record.states[draw->state], camera, drawable);
+  find_sky(record, out.classes);
   for (size_t i = 0; i < record.commands.size(); ++i) {
     const rec::Command& command = record.commands[i];
     const auto* draw = std::get_if<rec::Draw>(&command);
-    if (draw != nullptr) {
-      const rec::StateSnapshot& state = record.states[draw->state];
-      out.classes[i] = classify_draw(*draw, state, camera, drawable);
-    }
     if (const auto* clear = std::get_if<rec::Clear>(&command);
         clear != nullptr && !out.any_traced && (clear->mask & GL_COLOR_BUFFER_BIT) != 0)
       scene.clear_color = clear->color;
+    if (draw != nullptr && out.classes[i] == DrawClass::kSky) {
+      // Drawn by raster mode where GL draws it, and held for the rays that miss the world.
+      out.any_sky = true;
+      state_used[draw->state] = 1;
+      batcher.add(*draw, record.states[draw->state], /*sky=*/true);
+    }
     if (draw == nullptr || out.classes[i] != DrawClass::kTraced) {
       // Clears act on the G-buffer in its pass; everything else before the first traced draw is
       // drawn first, the rest after the trace.

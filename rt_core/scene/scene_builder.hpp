@@ -6,6 +6,12 @@
 //   traced        triangles (filled on both faces) under the main camera, not blended, no logic
 //                 op, writing all colour channels to a colour buffer. Drawn into the G-buffer by
 //                 the raster pipelines and lit by the trace pass.
+//   sky           would be traced, but is the sky (find_sky): drawn at the far plane
+//                 (glDepthRange(1, 1)), or unlit, before every traced draw, around the camera
+//                 (its eye-space box holds the eye) and either without depth writes or depth test
+//                 (a run of such draws together: a sky box of six faces) or centred on the
+//                 camera (within 10 % of its half size). Rays do not hit it (a sky box traced
+//                 blocks every shadow and bounce ray); raster mode draws it where it lies.
 //   every other   points, lines, unfilled polygons, draws under another projection or viewport
 //                 (HUD, 2-D overlays, a second view), blended or logic-op draws (they read the
 //                 colour under them), draws with colour writes masked: raster mode draws them.
@@ -41,6 +47,7 @@ enum class DrawClass : uint8_t {
   kBlended,       // blending or a logic op
   kMaskedColor,   // some colour channel masked, or no colour buffer drawn to
   kOtherCamera,   // another projection or viewport than the main camera's
+  kSky,           // the sky around the camera, drawn by raster mode (find_sky)
 };
 
 // The class of one draw, given the main camera (`main_projection`, `main_viewport`) and the
@@ -54,6 +61,10 @@ MainCamera find_main_camera(const rec::FrameRecord& record, const rec::DrawableC
 DrawClass classify_draw(const rec::Draw& draw, const rec::StateSnapshot& state,
                         const MainCamera& camera, const rec::DrawableConfig& drawable);
 
+// Turns the classes of the record's sky draws from kTraced into kSky (`classes`: per command,
+// as classify_draw gives them).
+void find_sky(const rec::FrameRecord& record, std::vector<DrawClass>& classes);
+
 struct SceneBuild {
   TraceScene scene;
   std::vector<DrawClass> classes;    // per command (kNotTriangles for non-draws)
@@ -61,6 +72,7 @@ struct SceneBuild {
   std::vector<size_t> gbuffer_pass;  // commands of pass 1, in record order
   std::vector<size_t> after_trace;   // commands of pass 3, in record order
   bool any_traced = false;
+  bool any_sky = false;  // some draw is kSky (the scene's instances include it)
 };
 
 // Whether the tracer already holds the acceleration structure and shading data of a geometry

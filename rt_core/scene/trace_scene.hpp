@@ -108,6 +108,9 @@ struct Instance {
   // The record state whose lights light this geometry where bounce rays hit it.
   uint32_t state = 0;
   TracedSurface surface;
+  // The sky (DrawClass::kSky): not seen by the world's rays, only looked up, from the eye, by
+  // rays that miss the world (the sky is drawn around the camera).
+  bool sky = false;
 };
 
 // A GL light in eye space, with its GL parameters (already transformed by the modelview that was

@@ -41,10 +41,11 @@ void confirm_if_visible(rayQueryEXT query) {
     rayQueryConfirmIntersectionEXT(query);
 }
 
-bool trace_closest(vec3 origin, vec3 direction, float t_max, out Hit hit) {
+// The closest hit on the instances `mask` selects (GLPT_MASK_VISIBLE: the world; GLPT_MASK_SKY:
+// the sky).
+bool trace_closest(vec3 origin, vec3 direction, float t_max, uint mask, out Hit hit) {
   rayQueryEXT query;
-  rayQueryInitializeEXT(query, scene, gl_RayFlagsNoneEXT, GLPT_MASK_VISIBLE, origin, 0.0,
-                        direction, t_max);
+  rayQueryInitializeEXT(query, scene, gl_RayFlagsNoneEXT, mask, origin, 0.0, direction, t_max);
   while (rayQueryProceedEXT(query)) confirm_if_visible(query);
   if (rayQueryGetIntersectionTypeEXT(query, true) != gl_RayQueryCommittedIntersectionTriangleEXT)
     return false;

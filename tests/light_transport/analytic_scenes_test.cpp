@@ -700,6 +700,58 @@ TEST(LightTransport, BounceRaysSeeEveryTextureTargetUnitAndCoordinateGeneration)
   }
 }
 
+// ---- the sky -------------------------------------------------------------------------------------
+
+TEST(LightTransport, TheSkyLightsWhatItSurroundsAndBlocksNoSun) {
+  // A sky box around the camera (unlit, uniform colour c, drawn first without depth writes: the
+  // sky class) over a floor of albedo 0.8 lit by nothing else: every bounce ray from the floor
+  // goes up and finds the sky, so the floor reflects 0.8 c exactly, sample by sample. With a sun
+  // straight above (diffuse 0.5) the floor adds GL's 0.8 x 0.5: the sky box, not being world
+  // geometry, casts no shadow. (Traced as world, as before the sky class, the box shadowed the
+  // sun and reflected nothing: a black floor.)
+  const glm::vec3 sky(0.25f, 0.5f, 0.75f);
+  auto scene = [&](bool sun) {
+    return [&, sun] {
+      camera();
+      glDisable(GL_LIGHTING);
+      glDepthMask(GL_FALSE);
+      glColor3f(sky.r, sky.g, sky.b);
+      const float h = 20.0f;
+      quad({-h, -h, -h}, {h, -h, -h}, {h, h, -h}, {-h, h, -h});
+      quad({-h, -h, h}, {-h, h, h}, {h, h, h}, {h, -h, h});
+      quad({-h, -h, -h}, {-h, h, -h}, {-h, h, h}, {-h, -h, h});
+      quad({h, -h, -h}, {h, -h, h}, {h, h, h}, {h, h, -h});
+      quad({-h, -h, -h}, {-h, -h, h}, {h, -h, h}, {h, -h, -h});
+      quad({-h, h, -h}, {h, h, -h}, {h, h, h}, {-h, h, h});
+      glDepthMask(GL_TRUE);
+      material(glm::vec3(0.8f));
+      if (sun) {
+        const float up[] = {0, 1, 0, 0}, half[] = {0.5f, 0.5f, 0.5f, 1};
+        glLightfv(GL_LIGHT0, GL_POSITION, up);
+        glLightfv(GL_LIGHT0, GL_DIFFUSE, half);
+        glEnable(GL_LIGHT0);
+      }
+      quad({-3, -1, -2}, {3, -1, -2}, {3, -1, -8}, {-3, -1, -8});  // floor, facing +y
+    };
+  };
+  const Settings settings = path({{"GLPT_SPP", "4"}, {"GLPT_BOUNCES", "1"}, {"GLPT_AO", "0"}});
+  auto floor_mean = [](const Image& image, int channel) {
+    double sum = 0;
+    for (int y = 4; y < 14; ++y)
+      for (int x = 20; x < 44; ++x) sum += image.at(x, y, channel);
+    return sum / 240.0;
+  };
+  const Image lit_by_sky = render(settings, scene(false), 2, "sky");
+  const Image with_sun = render(settings, scene(true), 2, "sky_and_sun");
+  for (int c = 0; c < 3; ++c) {
+    const std::string channel = "channel " + std::to_string(c);
+    EXPECT_EQ(lit_by_sky.at(32, 60, c), std::lround(sky[c] * 255.0f)) << "the sky as GL draws it";
+    expect_close(floor_mean(lit_by_sky, c), 0.8 * sky[c] * 255.0, 0.01, 1.0, "sky-lit floor, " + channel);
+    expect_close(floor_mean(with_sun, c), std::min(1.0, 0.8 * 0.5 + 0.8 * sky[c]) * 255.0, 0.01,
+                 1.0, "sky- and sun-lit floor, " + channel);
+  }
+}
+
 // ---- many lights -------------------------------------------------------------------------------
 
 // A floor of 10 x 10 tiles, each its own draw lit by 8 of 100 positional lights: tile i by the

@@ -646,6 +646,70 @@ TEST(ClassifyDraws, TracesOpaqueFilledTrianglesUnderTheMainCameraOnly) {
   EXPECT_EQ(build.after_trace, (std::vector<size_t>{2, 3, 4, 5, 6, 7, 8, 9}));
 }
 
+// The six faces of the axis-aligned box [lo, hi], one quad draw each (or one draw of all six).
+std::vector<glm::vec3> box_faces(glm::vec3 lo, glm::vec3 hi) {
+  std::vector<glm::vec3> corners;
+  for (int axis = 0; axis < 3; ++axis)
+    for (float side : {lo[axis], hi[axis]}) {
+      const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+      for (auto [a, b] : {std::pair{0, 0}, {1, 0}, {1, 1}, {0, 1}}) {
+        glm::vec3 p;
+        p[axis] = side;
+        p[u] = a ? hi[u] : lo[u];
+        p[v] = b ? hi[v] : lo[v];
+        corners.push_back(p);
+      }
+    }
+  return corners;
+}
+
+TEST(ClassifyDraws, TheSkyAroundTheCameraIsNotTracedAndTheWorldIs) {
+  RecordBuilder b(16, 16);
+  b.transform.projection = glm::perspective(1.0f, 1.0f, 0.1f, 100.0f);
+  b.clear(glm::vec4(0));
+  // A sky box of six faces, unlit, without depth writes, before the world: no face holds the
+  // eye, all six do.
+  b.lighting.enabled = false;
+  b.raster.ops.depth_test = true;
+  b.raster.ops.depth_write = false;
+  const std::vector<glm::vec3> sky = box_faces(glm::vec3(-50.0f), glm::vec3(50.0f));
+  for (size_t face = 0; face < 6; ++face)
+    b.draw(GL_QUADS, {sky.begin() + 4 * face, sky.begin() + 4 * face + 4}, {0, 0, 1}, glm::vec4(0.5f));
+  b.raster.ops.depth_write = true;
+  b.directional_light(0, {0, 1, 0});
+  b.quad({-4, -1, -2}, {8, 0, 0}, {0, 0, -8}, glm::vec4(1));  // 7: the lit floor: traced
+  b.lighting.enabled = false;
+  b.transform.depth_near = b.transform.depth_far = 1.0f;  // 8: at the far plane: sky
+  b.quad({-40, -40, -40}, {80, 0, 0}, {0, 80, 0}, glm::vec4(0.3f));
+  b.transform.depth_near = 0.0f;
+  b.quad({-1, -1, -3}, {2, 0, 0}, {0, 2, 0}, glm::vec4(1));  // 9: unlit world: traced
+  SceneBuild build;
+  build_trace_scene(b.record, b.drawable, build);
+  std::vector<DrawClass> expected = {DrawClass::kNotTriangles};
+  expected.insert(expected.end(), 6, DrawClass::kSky);
+  expected.insert(expected.end(), {DrawClass::kTraced, DrawClass::kSky, DrawClass::kTraced});
+  EXPECT_EQ(build.classes, expected);
+  // The sky is drawn first by raster mode, the far-plane one after the trace.
+  EXPECT_EQ(build.gbuffer_pass, (std::vector<size_t>{0, 1, 2, 3, 4, 5, 6, 7, 9}));
+  EXPECT_EQ(build.after_trace, (std::vector<size_t>{8}));
+
+  // Not sky: an unlit ground drawn first without depth writes (below the eye, it does not hold
+  // it), then an unlit room around the eye with depth writes (not centred on it); a box centred
+  // on the eye with depth writes, drawn before them, is.
+  RecordBuilder n(16, 16);
+  n.transform.projection = b.transform.projection;
+  n.lighting.enabled = false;
+  n.raster.ops.depth_test = true;
+  n.draw(GL_QUADS, box_faces(glm::vec3(-30.0f), glm::vec3(30.0f)), {0, 0, 1}, glm::vec4(0.5f));
+  n.raster.ops.depth_write = false;
+  n.quad({-4, -1, -1}, {8, 0, 0}, {0, 0, -8}, glm::vec4(1));
+  n.raster.ops.depth_write = true;
+  n.draw(GL_QUADS, box_faces({-2, -1, -9}, {6, 3, 1}), {0, 0, 1}, glm::vec4(0.5f));
+  build_trace_scene(n.record, n.drawable, build);
+  EXPECT_EQ(build.classes,
+            (std::vector<DrawClass>{DrawClass::kSky, DrawClass::kTraced, DrawClass::kTraced}));
+}
+
 TEST(SceneBuilder, ProjectiveModelviewsGoToTheBlasInEyeSpace) {
   RecordBuilder b(16, 16);
   b.transform.projection = glm::perspective(1.0f, 1.0f, 0.1f, 10.0f);
