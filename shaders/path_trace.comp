@@ -401,8 +401,12 @@ Channels trace_path(Surface first, inout uint rng) {
     path_length += hit.t;
     s = load_surface(hit, direction, path_length * frame.params.w);
     if (sky_hit) {
-      // The sky's radiance is the colour GL draws it with (unlit, textured).
-      add_to_channel(c, first_lobe, false, throughput * s.diffuse_gl);
+      // The sky's radiance is the colour GL draws it with (unlit, textured). The sky is the world
+      // around the scene GL's ambient term stands for, and that term is the diffuse reflection
+      // at the primary vertex (docs/light-transport.md): there the sky is not counted again.
+      // Reflections see it, and so do later vertices, where ambient is never added.
+      if (depth > 0u || lobe == GLPT_LOBE_SPECULAR)
+        add_to_channel(c, first_lobe, false, throughput * s.diffuse_gl);
       break;
     }
     to_viewer = -direction;

@@ -702,20 +702,25 @@ TEST(LightTransport, BounceRaysSeeEveryTextureTargetUnitAndCoordinateGeneration)
 
 // ---- the sky -------------------------------------------------------------------------------------
 
-TEST(LightTransport, TheSkyLightsWhatItSurroundsAndBlocksNoSun) {
+TEST(LightTransport, TheSkyIsSeenInReflectionsAndBlocksNoSun) {
   // A sky box around the camera (unlit, uniform colour c, drawn first without depth writes: the
-  // sky class) over a floor of albedo 0.8 lit by nothing else: every bounce ray from the floor
-  // goes up and finds the sky, so the floor reflects 0.8 c exactly, sample by sample. With a sun
-  // straight above (diffuse 0.5) the floor adds GL's 0.8 x 0.5: the sky box, not being world
-  // geometry, casts no shadow. (Traced as world, as before the sky class, the box shadowed the
-  // sun and reflected nothing: a black floor.)
+  // sky class) over a floor. A diffuse floor (albedo 0.8) under a sun straight above (diffuse
+  // 0.5) is GL's 0.8 x 0.5 exactly, sample by sample: the sky box, not being world geometry,
+  // casts no shadow, and the diffuse light of the surroundings at the primary vertex is GL's
+  // ambient term (0 here), not counted again from the sky. A mirror-like floor (specular 1,
+  // shininess 128, no diffuse) under a white sky reflects it at GL's lobe reflectance (8 / 130:
+  // 15.7 / 255, less a few per cent of single-scattering loss). Traced as world, as before the
+  // sky class, the box shadowed the sun and reflected nothing: a black floor both times.
   const glm::vec3 sky(0.25f, 0.5f, 0.75f);
-  auto scene = [&](bool sun) {
-    return [&, sun] {
+  auto scene = [&](bool mirror) {
+    return [&, mirror] {
       camera();
       glDisable(GL_LIGHTING);
       glDepthMask(GL_FALSE);
-      glColor3f(sky.r, sky.g, sky.b);
+      if (mirror)
+        glColor3f(1.0f, 1.0f, 1.0f);
+      else
+        glColor3f(sky.r, sky.g, sky.b);
       const float h = 20.0f;
       quad({-h, -h, -h}, {h, -h, -h}, {h, h, -h}, {-h, h, -h});
       quad({-h, -h, h}, {-h, h, h}, {h, h, h}, {h, -h, h});
@@ -724,8 +729,10 @@ TEST(LightTransport, TheSkyLightsWhatItSurroundsAndBlocksNoSun) {
       quad({-h, -h, -h}, {-h, -h, h}, {h, -h, h}, {h, -h, -h});
       quad({-h, h, -h}, {h, h, -h}, {h, h, h}, {-h, h, h});
       glDepthMask(GL_TRUE);
-      material(glm::vec3(0.8f));
-      if (sun) {
+      if (mirror) {
+        material(glm::vec3(0.0f), glm::vec3(0.0f), glm::vec3(0.0f), glm::vec3(1.0f), 128.0f);
+      } else {
+        material(glm::vec3(0.8f));
         const float up[] = {0, 1, 0, 0}, half[] = {0.5f, 0.5f, 0.5f, 1};
         glLightfv(GL_LIGHT0, GL_POSITION, up);
         glLightfv(GL_LIGHT0, GL_DIFFUSE, half);
@@ -734,21 +741,23 @@ TEST(LightTransport, TheSkyLightsWhatItSurroundsAndBlocksNoSun) {
       quad({-3, -1, -2}, {3, -1, -2}, {3, -1, -8}, {-3, -1, -8});  // floor, facing +y
     };
   };
-  const Settings settings = path({{"GLPT_SPP", "4"}, {"GLPT_BOUNCES", "1"}, {"GLPT_AO", "0"}});
+  const Settings settings = path({{"GLPT_SPP", "16"}, {"GLPT_BOUNCES", "1"}, {"GLPT_AO", "0"}});
   auto floor_mean = [](const Image& image, int channel) {
     double sum = 0;
     for (int y = 4; y < 14; ++y)
       for (int x = 20; x < 44; ++x) sum += image.at(x, y, channel);
     return sum / 240.0;
   };
-  const Image lit_by_sky = render(settings, scene(false), 2, "sky");
-  const Image with_sun = render(settings, scene(true), 2, "sky_and_sun");
+  const Image sunlit = render(settings, scene(false), 2, "sky_and_sun");
+  const Image mirror = render(settings, scene(true), 2, "sky_in_a_mirror");
   for (int c = 0; c < 3; ++c) {
     const std::string channel = "channel " + std::to_string(c);
-    EXPECT_EQ(lit_by_sky.at(32, 60, c), std::lround(sky[c] * 255.0f)) << "the sky as GL draws it";
-    expect_close(floor_mean(lit_by_sky, c), 0.8 * sky[c] * 255.0, 0.01, 1.0, "sky-lit floor, " + channel);
-    expect_close(floor_mean(with_sun, c), std::min(1.0, 0.8 * 0.5 + 0.8 * sky[c]) * 255.0, 0.01,
-                 1.0, "sky- and sun-lit floor, " + channel);
+    EXPECT_EQ(sunlit.at(32, 60, c), std::lround(sky[c] * 255.0f)) << "the sky as GL draws it";
+    expect_close(floor_mean(sunlit, c), 0.8 * 0.5 * 255.0, 0.01, 1.0, "sunlit floor, " + channel);
+    const double reflected = floor_mean(mirror, c);
+    std::printf("mirror floor under a white sky, %s: %.2f\n", channel.c_str(), reflected);
+    EXPECT_GE(reflected, 12.0) << "the mirror reflects the sky, " << channel;
+    EXPECT_LE(reflected, 15.7 + 1.5) << "never more than the lobe's reflectance, " << channel;
   }
 }
 
