@@ -44,6 +44,8 @@ class OcclusionQueries {
   // After the execute's last submission completed: adds each query's samples to `out` (one
   // entry per query, those without samples included).
   void collect(std::vector<QuerySamples>& out);
+  // Whether this execute's submissions count into any query slot (collect must wait for them).
+  bool counted_any() const { return !slot_query_.empty(); }
 
  private:
   VulkanDevice& device_;

@@ -395,7 +395,10 @@ void RasterRenderer::execute(const rec::FrameRecord& record, DrawableBuffers& bu
     }
   } while (position < commands->size());
   uploads_ticket_ = ticket;
-  if (queries || (end && (end->front_rgba || end->present_to))) device_->wait(ticket);
+  // The host reads query results only where a draw counted into a query (the shim always asks
+  // for them), and the frame's pixels only where it copies them itself.
+  if ((queries && queries_.counted_any()) || (end && (end->front_rgba || end->present_to)))
+    device_->wait(ticket);
   if (queries) queries_.collect(*queries);
   const size_t pixel_count = size_t{buffers_->config.width} * buffers_->config.height;
   if (end && end->front_rgba) {
