@@ -206,9 +206,18 @@ BlasPrepareStats BlasCache::prepare(std::span<const Geometry* const> geometries,
     device_.as_functions().cmd_build(cmd, static_cast<uint32_t>(infos.size()), infos.data(),
                                      range_pointers.data());
   });
-  for (PendingBuild& build : pending) {
-    memory_bytes_ += entry_bytes(*build.entry);
-    entries_.emplace(build.shape_hash, std::move(build.entry));
+  // The builds run on the device after this returns; `pending` owns what they write into until
+  // the cache does. Should the hand-over throw (out of memory), the entries still in `pending`
+  // go with it: the builds must be complete first.
+  try {
+    for (PendingBuild& build : pending) {
+      const size_t bytes = entry_bytes(*build.entry);
+      entries_.emplace(build.shape_hash, std::move(build.entry));
+      memory_bytes_ += bytes;
+    }
+  } catch (...) {
+    device_.wait(last_build_);
+    throw;
   }
   stats.builds = static_cast<uint32_t>(pending.size());
   return stats;

@@ -40,7 +40,9 @@ void OcclusionQueries::begin_record(const rec::FrameRecord& record,
   slots_reserved_ = static_cast<uint32_t>(
       std::count_if(commands.begin(), commands.end(), [&](size_t i) { return query_of(i) != 0; }));
   if (slots_reserved_ <= capacity_) return;
-  // Grown geometrically; the old pool is idle (every submission was waited for).
+  // Grown geometrically. An earlier execute's submission may still be using the old pool (the
+  // passes of a frame are not waited for): it must be done before the pool goes.
+  device_.wait_all();
   const uint32_t capacity = std::max({slots_reserved_, capacity_ * 2, 64u});
   auto info = make_info<VkQueryPoolCreateInfo>(VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO);
   info.queryType = VK_QUERY_TYPE_OCCLUSION;
