@@ -37,7 +37,8 @@ class PathTracePass {
 
   // Points the descriptor set at `resources` and records the dispatch over width x height
   // pixels. Rewriting the set every frame is cheap and means buffers may be re-created freely;
-  // it is safe because the previous use of the set has completed (every submission is waited).
+  // it is safe because the previous use of the set has completed (the tracer waits for its
+  // previous trace before recording the next).
   void record(VkCommandBuffer cmd, const PathTraceResources& resources, uint32_t width,
               uint32_t height) const;
 
