@@ -8,6 +8,7 @@
 #include "common/content_hash.hpp"
 #include "rt_core/raster/pipeline_key.hpp"
 #include "rt_core/record/decompose.hpp"
+#include "rt_core/record/texgen.hpp"
 #include "rt_core/scene/light_setup.hpp"
 
 namespace glpt::rt {
@@ -179,54 +180,16 @@ glm::vec3 eye_normal_of(const rec::VertexData& v, uint32_t src,
 }
 
 // Unit `u`'s coordinates of vertex `src` as GL computes them per vertex (GL 1.5 2.11.4): texgen
-// (object- and eye-linear, sphere, reflection and normal maps; the eye-space vectors the last
-// three use are the camera's, so they are known here, once per vertex, as GL computes them),
-// then the texture matrix. A bounce hit interpolates them as GL's rasterizer does.
+// (object- and eye-linear, and sphere, reflection and normal maps, whose eye-space vectors are
+// the camera's, so they are known here, once per vertex, as GL computes them), then the texture
+// matrix. A bounce hit interpolates them as GL's rasterizer does.
 glm::vec4 texcoord_of(const rec::VertexData& v, uint32_t src, size_t u,
                       const rec::TextureUnitState& unit, const rec::TransformState& transform) {
   glm::vec4 tc = rec::attribute_at(v.tex_coord[u], src, glm::vec4(0, 0, 0, 1));
   if (unit.texgen_mask != 0) {
     const glm::vec4 object = v.position[src];
-    const glm::vec4 eye = transform.modelview * object;
-    glm::vec3 normal(0.0f), reflected(0.0f);
-    const bool needs_normal =
-        std::any_of(unit.texgen.begin(), unit.texgen.end(), [](const rec::TexGen& g) {
-          return g.mode == GL_SPHERE_MAP || g.mode == GL_REFLECTION_MAP || g.mode == GL_NORMAL_MAP;
-        });
-    if (needs_normal) {
-      normal = eye_normal_of(v, src, transform);
-      const glm::vec3 position = eye.w != 0.0f ? glm::vec3(eye) / eye.w : glm::vec3(eye);
-      const float length = glm::length(position);
-      const glm::vec3 towards = length > 0.0f ? position / length : glm::vec3(0.0f);
-      reflected = towards - 2.0f * glm::dot(normal, towards) * normal;
-    }
-    for (int c = 0; c < 4; ++c) {
-      if ((unit.texgen_mask & (1u << c)) == 0) continue;
-      const rec::TexGen& gen = unit.texgen[c];
-      switch (gen.mode) {
-        case GL_OBJECT_LINEAR:
-          tc[c] = glm::dot(gen.object_plane, object);
-          break;
-        case GL_EYE_LINEAR:
-          tc[c] = glm::dot(gen.eye_plane, eye);
-          break;
-        case GL_SPHERE_MAP: {
-          const float m = 2.0f * std::sqrt(reflected.x * reflected.x + reflected.y * reflected.y +
-                                           (reflected.z + 1.0f) * (reflected.z + 1.0f));
-          // GL allows sphere maps for s and t only; r and q keep their coordinate.
-          if (c < 2) tc[c] = m > 0.0f ? reflected[c] / m + 0.5f : 0.5f;
-          break;
-        }
-        case GL_REFLECTION_MAP:
-          if (c < 3) tc[c] = reflected[c];
-          break;
-        case GL_NORMAL_MAP:
-          if (c < 3) tc[c] = normal[c];
-          break;
-        default:
-          break;
-      }
-    }
+    tc = rec::generate_tex_coord(unit.texgen_mask, unit.texgen, object, transform.modelview * object,
+                                 eye_normal_of(v, src, transform), tc);
   }
   return unit.matrix * tc;
 }
