@@ -21,6 +21,10 @@ struct FrameStats {
   // Samples per pixel in the image now shown.
   uint32_t accumulated_samples = 0;
   uint32_t draws = 0;  // Draw commands executed
+  // Path-traced mode, per class (docs/classification.md): draws traced (G-buffer and rays), of
+  // the sky, and drawn by raster mode only (blended, lines, overlays...); TLAS instances built
+  // from them (world and sky).
+  uint32_t traced_draws = 0, sky_draws = 0, raster_draws = 0, instances = 0;
   // Draws whose vertices were already on the GPU from an earlier record (resident geometry).
   uint32_t resident_draws = 0;
   uint32_t pipelines_created = 0;  // raster pipelines compiled for this record (0 once warm)
@@ -45,6 +49,10 @@ struct FrameStats {
     emitters = s.emitters;
     accumulated_samples = s.accumulated_samples;
     draws += s.draws;
+    traced_draws += s.traced_draws;
+    sky_draws += s.sky_draws;
+    raster_draws += s.raster_draws;
+    instances += s.instances;
     resident_draws += s.resident_draws;
     pipelines_created += s.pipelines_created;
     inexpressible += s.inexpressible;

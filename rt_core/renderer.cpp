@@ -6,6 +6,7 @@
 #include <cstring>
 #include <exception>
 #include <mutex>
+#include <variant>
 
 #include "rt_core/passes/gbuffer.hpp"
 #include "rt_core/passes/path_tracer.hpp"
@@ -77,6 +78,18 @@ class Renderer::Impl {
   }
 
  private:
+  // The draws of each class in scene_ (built from `record`) and its instances.
+  void count_classes(const rec::FrameRecord& record, FrameStats& stats) const {
+    for (size_t i = 0; i < record.commands.size() && i < scene_.classes.size(); ++i) {
+      if (!std::holds_alternative<rec::Draw>(record.commands[i])) continue;
+      const DrawClass cls = scene_.classes[i];
+      ++(cls == DrawClass::kTraced ? stats.traced_draws
+         : cls == DrawClass::kSky  ? stats.sky_draws
+                                   : stats.raster_draws);
+    }
+    stats.instances = static_cast<uint32_t>(scene_.scene.instances.size());
+  }
+
   // One frame's passes, submitted in order; execute waits for them.
   void run_frame(const rec::FrameRecord& record, DrawableBuffers& buffers,
                  const rec::DrawableConfig& drawable, FrameStats& stats, const FrameEnd* end,
@@ -94,6 +107,7 @@ class Renderer::Impl {
       return tracer_->holds_geometry(shape, shading);
     };
     build_trace_scene(record, drawable, scene_, scene_options);
+    count_classes(record, stats);
     if (!scene_.any_traced || drawable.width == 0 || drawable.height == 0) {
       // Nothing traced (e.g. the rest of a frame after a glReadPixels): raster mode. The
       // accumulation stays valid for the next frame with the same signature.

@@ -142,7 +142,8 @@ void FrameOutput::end_frame(const rec::FrameRecord& record, const rec::DrawableC
                  "total_ms=%.2f draws=%u resident_draws=%u pipelines_created=%u inexpressible=%u "
                  "triangles=%" PRIu64 " rays=%" PRIu64
                  " mrays_per_s=%.3f blas_builds=%u blas_reused=%u spp=%u non_finite=%" PRIu64
-                 " emitters=%u host_waits=%u wall_ms=%.2f\n",
+                 " emitters=%u host_waits=%u wall_ms=%.2f traced_draws=%u sky_draws=%u"
+                 " raster_draws=%u instances=%u\n",
                  frame_index_, width, height, frame_ms, record_ms_, s.upload_ms, s.raster_ms,
                  s.blas_ms, s.tlas_ms, s.trace_ms, s.readback_ms, present_ms,
                  record_ms_ + s.upload_ms + s.raster_ms + s.blas_ms + s.tlas_ms + s.trace_ms +
@@ -150,7 +151,8 @@ void FrameOutput::end_frame(const rec::FrameRecord& record, const rec::DrawableC
                  s.draws, s.resident_draws, s.pipelines_created, s.inexpressible, s.triangles,
                  s.rays, trace_s > 0 ? s.rays / trace_s / 1e6 : 0.0, s.blas_builds, s.blas_reused,
                  s.accumulated_samples, s.non_finite_samples, s.emitters, s.host_waits,
-                 wall_timer.elapsed_ms());
+                 wall_timer.elapsed_ms(), s.traced_draws, s.sky_draws, s.raster_draws,
+                 s.instances);
   }
   last_frame_stats_ = frame_stats_;
   frame_stats_ = rt::FrameStats();

@@ -713,6 +713,29 @@ TEST(ClassifyDraws, TheSkyAroundTheCameraIsNotTracedAndTheWorldIs) {
             (std::vector<DrawClass>{DrawClass::kSky, DrawClass::kTraced, DrawClass::kTraced}));
 }
 
+TEST_F(RenderTest, StatsCountTheDrawsOfEachClass) {
+  // A sky box of six faces, two traced quads (one geometry), a blended quad and a line.
+  RecordBuilder b = base_frame();
+  b.lighting.enabled = false;
+  b.raster.ops.depth_write = false;
+  const std::vector<glm::vec3> sky = box_faces(glm::vec3(-50.0f), glm::vec3(50.0f));
+  for (size_t face = 0; face < 6; ++face)
+    b.draw(GL_QUADS, {sky.begin() + 4 * face, sky.begin() + 4 * face + 4}, {0, 0, 1}, glm::vec4(0.5f));
+  b.raster.ops.depth_write = true;
+  b.directional_light(0, {0, 0, 1});
+  b.quad({-1, -1, -4}, {1, 0, 0}, {0, 1, 0}, glm::vec4(1));
+  b.quad({0, 0, -4}, {1, 0, 0}, {0, 1, 0}, glm::vec4(1));
+  b.raster.ops.blend = true;
+  b.quad({-1, -1, -3}, {2, 0, 0}, {0, 2, 0}, glm::vec4(1, 1, 1, 0.5f));
+  b.raster.ops.blend = false;
+  b.draw(GL_LINES, {{0, 0, -3}, {1, 1, -3}}, {0, 0, 1}, glm::vec4(1));
+  const Image image = render(b);
+  EXPECT_EQ(image.stats.traced_draws, 2u);
+  EXPECT_EQ(image.stats.sky_draws, 6u);
+  EXPECT_EQ(image.stats.raster_draws, 2u);
+  EXPECT_EQ(image.stats.instances, 2u) << "the world's two quads in one instance, the sky in one";
+}
+
 TEST(SceneBuilder, ProjectiveModelviewsGoToTheBlasInEyeSpace) {
   RecordBuilder b(16, 16);
   b.transform.projection = glm::perspective(1.0f, 1.0f, 0.1f, 10.0f);
