@@ -10,9 +10,9 @@
 namespace glpt {
 namespace {
 
-// ---- Mesa's vector macros (src/mesa/main/macros.h, src/mesa/math/m_xform.h) -------------------
+// Mesa's vector macros: rt_core/record/mesa_vector.hpp
 
-float dot3(const glm::vec3& a, const glm::vec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+using rec::dot3;
 
 bool is_spot(const rec::Light& light) { return light.spot_cutoff != 180.0f; }
 bool is_positional(const rec::Light& light) { return light.position.w != 0.0f; }
@@ -65,15 +65,6 @@ glm::vec3 transform_normal(const glm::vec3& n, const glm::mat4& m) {
   glm::vec3 q;
   for (int c = 0; c < 3; ++c) q[c] = n.x * m[c][0] + n.y * m[c][1] + n.z * m[c][2];
   return q;
-}
-
-glm::vec3 normalize3(glm::vec3 v) {
-  float len = dot3(v, v);
-  if (len != 0.0f) {
-    len = 1.0f / std::sqrt(len);
-    v *= len;
-  }
-  return v;
 }
 
 bool need_eye_coordinates(const Context& ctx, const rec::TexturingState& texturing) {

@@ -8,6 +8,7 @@
 #include <glm/glm.hpp>
 
 #include "rt_core/record/gl_state.hpp"
+#include "rt_core/record/mesa_vector.hpp"
 
 namespace glpt {
 
@@ -18,8 +19,8 @@ struct TextureUnit;
 // is the inverse transpose applied to n).
 glm::vec3 transform_normal(const glm::vec3& n, const glm::mat4& m);
 
-// NORMALIZE_3FV: scaled by the reciprocal of the length; a zero vector stays zero.
-glm::vec3 normalize3(glm::vec3 v);
+// NORMALIZE_3FV (rt_core/record/mesa_vector.hpp).
+using rec::normalize3;
 
 // Mesa's ctx->_NeedEyeCoords: whether lighting and texture generation run in eye space (else
 // lights are moved into object space, which Mesa does while the modelview preserves lengths).

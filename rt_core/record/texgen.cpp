@@ -3,26 +3,9 @@
 #include <cmath>
 
 #include "gl/gl_enums.h"
+#include "rt_core/record/mesa_vector.hpp"
 
 namespace glpt::rec {
-namespace {
-
-// Mesa's vector macros (src/mesa/main/macros.h): the order of the float operations is Mesa's,
-// which the front end's CPU paths match bit for bit.
-float dot3(const glm::vec3& a, const glm::vec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-float dot4(const glm::vec4& a, const glm::vec4& b) {
-  return a.x * b.x + a.y * b.y + a.z * b.z + a.w * b.w;
-}
-glm::vec3 normalize3(glm::vec3 v) {
-  float len = dot3(v, v);
-  if (len != 0.0f) {
-    len = 1.0f / std::sqrt(len);
-    v *= len;
-  }
-  return v;
-}
-
-}  // namespace
 
 glm::vec4 generate_tex_coord(uint8_t mask, const std::array<TexGen, 4>& texgen,
                              const glm::vec4& object, const glm::vec4& eye, const glm::vec3& normal,
