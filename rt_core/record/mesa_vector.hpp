@@ -8,7 +8,9 @@
 
 namespace glpt::rec {
 
-inline float dot3(const glm::vec3& a, const glm::vec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+inline float dot3(const glm::vec3& a, const glm::vec3& b) {
+  return a.x * b.x + a.y * b.y + a.z * b.z;
+}
 inline float dot4(const glm::vec4& a, const glm::vec4& b) {
   return a.x * b.x + a.y * b.y + a.z * b.z + a.w * b.w;
 }
