@@ -1,6 +1,7 @@
 // What one executed frame record cost, per stage (GLPT_STATS=1 prints it).
 #pragma once
 
+#include <array>
 #include <cstdint>
 
 namespace glpt::rt {
@@ -11,7 +12,11 @@ struct FrameStats {
   // their sum is not the frame's wall-clock time.
   double upload_ms = 0, blas_ms = 0, tlas_ms = 0, trace_ms = 0, readback_ms = 0;
   double raster_ms = 0;  // raster pipelines (raster mode, and overlays in path-traced mode)
+  // Host time of classification and identity matching (scene/classify.hpp), when classified.
+  double classify_ms = 0;
   uint32_t blas_builds = 0, blas_reused = 0;
+  // TLAS builds, and updates in place (the same instances with new transforms).
+  uint32_t tlas_builds = 0, tlas_updates = 0;
   // `rays`: rays actually traced this frame (primary + shadow + bounce), counted on the GPU.
   uint64_t triangles = 0, rays = 0;
   // Path samples whose radiance was NaN or infinite: dropped (not averaged in, not shown).
@@ -25,6 +30,9 @@ struct FrameStats {
   // the sky, and drawn by raster mode only (blended, lines, overlays...); TLAS instances built
   // from them (world and sky).
   uint32_t traced_draws = 0, sky_draws = 0, raster_draws = 0, instances = 0;
+  // Draws (and pixel commands) of each DrawKind (scene/classify.hpp), when classified
+  // (path-traced mode, or GLPT_CLASSIFY_LOG): indexed by the kind's value.
+  std::array<uint32_t, 14> kind_draws{};
   // Draws whose vertices were already on the GPU from an earlier record (resident geometry).
   uint32_t resident_draws = 0;
   uint32_t pipelines_created = 0;  // raster pipelines compiled for this record (0 once warm)
@@ -41,8 +49,11 @@ struct FrameStats {
     trace_ms += s.trace_ms;
     readback_ms += s.readback_ms;
     raster_ms += s.raster_ms;
+    classify_ms += s.classify_ms;
     blas_builds += s.blas_builds;
     blas_reused += s.blas_reused;
+    tlas_builds += s.tlas_builds;
+    tlas_updates += s.tlas_updates;
     triangles += s.triangles;
     rays += s.rays;
     non_finite_samples += s.non_finite_samples;
@@ -53,6 +64,7 @@ struct FrameStats {
     sky_draws += s.sky_draws;
     raster_draws += s.raster_draws;
     instances += s.instances;
+    for (size_t k = 0; k < kind_draws.size(); ++k) kind_draws[k] += s.kind_draws[k];
     resident_draws += s.resident_draws;
     pipelines_created += s.pipelines_created;
     inexpressible += s.inexpressible;

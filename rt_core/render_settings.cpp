@@ -118,6 +118,9 @@ RenderSettings parse_render_settings(const std::function<const char*(const char*
   apply(
       "GLPT_REFERENCE", settings.reference_samples,
       [](const char* text) { return parse_uint(text, 0, kMaxReference); }, "0..65536");
+  apply("GLPT_CLASSIFY_DEBUG", settings.classify_debug, parse_bool, "0 or 1");
+  if (const char* path = lookup("GLPT_CLASSIFY_LOG"); path != nullptr && *path != '\0')
+    settings.classify_log = path;
 
   if (warning != nullptr) {
     warning->clear();

@@ -65,6 +65,11 @@ struct RenderSettings {
   // Angular radius of directional GL lights (soft shadows); GLPT_LIGHT_SIZE_DEG. Also sets the
   // default size of positional lights (light_radius).
   float light_angular_radius_deg = 1.0f;
+  // GLPT_CLASSIFY_LOG=FILE: every classified draw of every frame appended to FILE as a JSON
+  // line (scene/classify_log.hpp), in either mode. Empty: off.
+  std::string classify_log;
+  // GLPT_CLASSIFY_DEBUG=1: each draw class tinted in the image (docs/classification.md).
+  bool classify_debug = false;
   // GLPT_VALIDATION=1 enables VK_LAYER_KHRONOS_validation if present.
   bool validation = false;
 

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <exception>
@@ -11,6 +13,9 @@
 #include "rt_core/passes/gbuffer.hpp"
 #include "rt_core/passes/path_tracer.hpp"
 #include "rt_core/raster/raster_renderer.hpp"
+#include "rt_core/scene/classify.hpp"
+#include "rt_core/scene/classify_debug.hpp"
+#include "rt_core/scene/classify_log.hpp"
 #include "rt_core/scene/frame_signature.hpp"
 #include "rt_core/scene/scene_builder.hpp"
 #include "rt_core/vk/vk_device.hpp"
@@ -40,7 +45,16 @@ class Renderer::Impl {
       : settings_(settings),
         device_(device),
         raster_(std::move(device)),
-        tracer_(std::move(tracer)) {}
+        tracer_(std::move(tracer)) {
+    if (!settings_.classify_log.empty()) {
+      std::string error;
+      log_ = std::make_unique<ClassifyLog>(settings_.classify_log, &error);
+      if (!log_->is_open()) {
+        std::fprintf(stderr, "glpt: %s\n", error.c_str());  // drawing goes on without it
+        log_.reset();
+      }
+    }
+  }
 
   RenderMode mode() const { return settings_.mode; }
   const std::string& device_name() const { return device_->name(); }
@@ -67,9 +81,31 @@ class Renderer::Impl {
       }
     };
     const uint64_t waits_before = device_->host_waits();
+    classified_ = false;
+    if (log_ || settings_.classify_debug ||
+        (settings_.mode == RenderMode::kPathTraced && tracer_)) {
+      const auto start = std::chrono::steady_clock::now();
+      classify_frame(record, drawable, &identities_of(buffers), classification_);
+      stats.classify_ms +=
+          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+              .count();
+      classified_ = true;
+      if (log_) log_->write(classification_);
+      for (const CommandLabel& label : classification_.labels)
+        if (label.kind != DrawKind::kNone) ++stats.kind_draws[static_cast<size_t>(label.kind)];
+    }
+    if (end != nullptr) {  // the frame ends with this record: what follows is the next frame
+      identities_of(buffers).end_frame();
+      if (log_) log_->end_frame();
+    }
     {
       const FrameEndWait frame_end{*device_};
-      run_frame(record, buffers, drawable, stats, end, queries);
+      if (classified_ && settings_.classify_debug) {
+        tint_by_class(record, classification_, debug_record_);
+        run_frame(debug_record_, buffers, drawable, stats, end, queries);
+      } else {
+        run_frame(record, buffers, drawable, stats, end, queries);
+      }
     }
     stats.host_waits = static_cast<uint32_t>(device_->host_waits() - waits_before);
     raster_.end_frame(stats);
@@ -78,11 +114,30 @@ class Renderer::Impl {
   }
 
  private:
+  // Identities follow the draws of one drawable (another window's draws are other objects).
+  // A few drawables are tracked; the least recently drawn to is forgotten first.
+  DrawIdentities& identities_of(const DrawableBuffers& buffers) {
+    ++identity_clock_;
+    for (TrackedDrawable& t : identities_)
+      if (t.buffers == &buffers) {
+        t.last_used = identity_clock_;
+        return t.identities;
+      }
+    if (identities_.size() >= kTrackedDrawables)
+      identities_.erase(std::min_element(identities_.begin(), identities_.end(),
+                                         [](const TrackedDrawable& a, const TrackedDrawable& b) {
+                                           return a.last_used < b.last_used;
+                                         }));
+    identities_.push_back({&buffers, identity_clock_, DrawIdentities()});
+    return identities_.back().identities;
+  }
+
   // The draws of each class in scene_ (built from `record`) and its instances.
   void count_classes(const rec::FrameRecord& record, FrameStats& stats) const {
     for (size_t i = 0; i < record.commands.size() && i < scene_.classes.size(); ++i) {
       if (!std::holds_alternative<rec::Draw>(record.commands[i])) continue;
       const DrawClass cls = scene_.classes[i];
+      if (cls == DrawClass::kShadow) continue;  // not drawn (kind_draws counts them)
       ++(cls == DrawClass::kTraced ? stats.traced_draws
          : cls == DrawClass::kSky  ? stats.sky_draws
                                    : stats.raster_draws);
@@ -103,6 +158,7 @@ class Renderer::Impl {
     // the colour buffers, then the other draws are rasterized over the result.
     SceneOptions scene_options;
     scene_options.default_light = settings_.default_light;
+    scene_options.classification = classified_ ? &classification_ : nullptr;
     scene_options.known_geometry = [this](uint64_t shape, uint64_t shading) {
       return tracer_->holds_geometry(shape, shading);
     };
@@ -161,6 +217,18 @@ class Renderer::Impl {
   std::unique_ptr<PathTracer> tracer_;  // null in raster mode or without ray queries
   SceneBuild scene_;
   GBuffer gbuffer_;
+  struct TrackedDrawable {
+    const DrawableBuffers* buffers;
+    uint64_t last_used;
+    DrawIdentities identities;
+  };
+  static constexpr size_t kTrackedDrawables = 8;
+  std::vector<TrackedDrawable> identities_;
+  uint64_t identity_clock_ = 0;
+  FrameClassification classification_;
+  bool classified_ = false;           // classification_ is this record's
+  std::unique_ptr<ClassifyLog> log_;  // GLPT_CLASSIFY_LOG; null: off
+  rec::FrameRecord debug_record_;     // GLPT_CLASSIFY_DEBUG: the record tinted by class
 };
 
 Renderer::Renderer(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}

@@ -6,10 +6,27 @@
 #include <filesystem>
 #include <mutex>
 #include <set>
+#include <string>
 
 #include "common/image_io.hpp"
+#include "rt_core/scene/classify.hpp"
 
 namespace glpt {
+namespace {
+
+// "static:12,overlay:3": the frame's draws per class (none: "-").
+std::string kind_counts(const rt::FrameStats& s) {
+  std::string out;
+  for (size_t k = 1; k < s.kind_draws.size(); ++k) {
+    if (s.kind_draws[k] == 0) continue;
+    if (!out.empty()) out += ',';
+    out += rt::draw_kind_name(static_cast<rt::DrawKind>(k));
+    out += ':' + std::to_string(s.kind_draws[k]);
+  }
+  return out.empty() ? "-" : out;
+}
+
+}  // namespace
 
 OutputSettings OutputSettings::from_environment() {
   OutputSettings s;
@@ -25,6 +42,10 @@ OutputSettings OutputSettings::from_environment() {
   }
   if (const char* stats = std::getenv("GLPT_STATS"); stats && *stats && *stats != '0')
     s.stats = true;
+  if (const char* file = std::getenv("GLPT_STATS_FILE"); file && *file) {
+    s.stats = true;
+    s.stats_file = file;
+  }
   return s;
 }
 
@@ -135,7 +156,16 @@ void FrameOutput::end_frame(const rec::FrameRecord& record, const rec::DrawableC
   if (settings_.stats) {
     const rt::FrameStats& s = frame_stats_;
     const double trace_s = s.trace_ms / 1000.0;
-    std::fprintf(stderr,
+    if (!settings_.stats_file.empty() && !stats_out_ && !stats_file_failed_) {
+      stats_out_.reset(std::fopen(settings_.stats_file.c_str(), "a"));
+      if (!stats_out_) {
+        stats_file_failed_ = true;
+        std::fprintf(stderr, "glpt: GLPT_STATS_FILE: cannot open %s: writing to stderr\n",
+                     settings_.stats_file.c_str());
+      }
+    }
+    std::FILE* out = stats_out_ ? stats_out_.get() : stderr;
+    std::fprintf(out,
                  "glpt: frame=%" PRIu64
                  " size=%ux%u frame_ms=%.2f capture_ms=%.2f upload_ms=%.2f raster_ms=%.2f "
                  "blas_ms=%.2f tlas_ms=%.2f trace_ms=%.2f readback_ms=%.2f present_ms=%.2f "
@@ -143,7 +173,8 @@ void FrameOutput::end_frame(const rec::FrameRecord& record, const rec::DrawableC
                  "triangles=%" PRIu64 " rays=%" PRIu64
                  " mrays_per_s=%.3f blas_builds=%u blas_reused=%u spp=%u non_finite=%" PRIu64
                  " emitters=%u host_waits=%u wall_ms=%.2f traced_draws=%u sky_draws=%u"
-                 " raster_draws=%u instances=%u\n",
+                 " raster_draws=%u instances=%u tlas_builds=%u tlas_updates=%u classify_ms=%.3f"
+                 " classes=%s\n",
                  frame_index_, width, height, frame_ms, record_ms_, s.upload_ms, s.raster_ms,
                  s.blas_ms, s.tlas_ms, s.trace_ms, s.readback_ms, present_ms,
                  record_ms_ + s.upload_ms + s.raster_ms + s.blas_ms + s.tlas_ms + s.trace_ms +
@@ -151,8 +182,9 @@ void FrameOutput::end_frame(const rec::FrameRecord& record, const rec::DrawableC
                  s.draws, s.resident_draws, s.pipelines_created, s.inexpressible, s.triangles,
                  s.rays, trace_s > 0 ? s.rays / trace_s / 1e6 : 0.0, s.blas_builds, s.blas_reused,
                  s.accumulated_samples, s.non_finite_samples, s.emitters, s.host_waits,
-                 wall_timer.elapsed_ms(), s.traced_draws, s.sky_draws, s.raster_draws,
-                 s.instances);
+                 wall_timer.elapsed_ms(), s.traced_draws, s.sky_draws, s.raster_draws, s.instances,
+                 s.tlas_builds, s.tlas_updates, s.classify_ms, kind_counts(s).c_str());
+    if (stats_out_) std::fflush(stats_out_.get());
   }
   last_frame_stats_ = frame_stats_;
   frame_stats_ = rt::FrameStats();

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <cstdio>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -51,6 +52,7 @@ struct OutputSettings {
   std::string png_dir;     // GLPT_OUTPUT: write frames as DIR/frame_NNNNNN.png
   uint32_t png_every = 1;  // GLPT_OUTPUT_EVERY: every Nth frame
   bool stats = false;      // GLPT_STATS=1: one line per frame on stderr
+  std::string stats_file;  // GLPT_STATS_FILE=FILE: those lines appended to FILE instead
   static OutputSettings from_environment();
 };
 
@@ -109,6 +111,11 @@ class FrameOutput {
   bool failure_reported_ = false;
   bool png_failure_reported_ = false;
   Stopwatch since_last_frame_;
+  struct FileCloser {
+    void operator()(std::FILE* f) const { std::fclose(f); }
+  };
+  std::unique_ptr<std::FILE, FileCloser> stats_out_;  // GLPT_STATS_FILE, opened at first use
+  bool stats_file_failed_ = false;
 };
 
 }  // namespace glpt

@@ -100,6 +100,7 @@ void merge(rec::Bitmap& into, const rec::Bitmap& b) {
   for (uint32_t r = 0; r < b.height; ++r)
     for (uint32_t c = 0; c < b.width; ++c)
       into.bits[size_t(dy + r) * width + size_t(dx + c)] |= b.bits[size_t{r} * b.width + c];
+  into.calls += b.calls;
 }
 
 }  // namespace

@@ -51,6 +51,13 @@ constexpr std::array kFlags = {
                 "with --output: only every Nth frame"},
     QualityFlag{"--stats", "GLPT_STATS", FlagValue::kNone, "1",
                 "one line per frame on stderr: timings, draws, rays, BLAS builds"},
+    QualityFlag{"--stats-file", "GLPT_STATS_FILE", FlagValue::kText, "FILE",
+                "the --stats lines appended to FILE instead of stderr"},
+    QualityFlag{"--classify-log", "GLPT_CLASSIFY_LOG", FlagValue::kText, "FILE",
+                "append every draw's class and identity to FILE, one JSON line each "
+                "(docs/classification.md)"},
+    QualityFlag{"--classify-debug", "GLPT_CLASSIFY_DEBUG", FlagValue::kNone, "1",
+                "tint every draw by its class (palette in docs/classification.md)"},
     QualityFlag{"--validation", "GLPT_VALIDATION", FlagValue::kNone, "1",
                 "enable the Khronos Vulkan validation layer"},
     QualityFlag{"--vk-device", "GLPT_VK_DEVICE", FlagValue::kText, "SUBSTR",

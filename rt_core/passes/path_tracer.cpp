@@ -336,15 +336,23 @@ uint32_t PathTracer::finish_emitters(std::vector<gpu::GpuEmitter>& emitters) {
 
 void PathTracer::sort_instances_spatially(SceneSetup& setup) {
   if (setup.tlas_instances.size() < 3) return;
-  std::vector<glm::vec3> centres;
-  centres.reserve(setup.instance_bounds.size());
-  for (const EyeBounds& bounds : setup.instance_bounds) {
-    centres.push_back(bounds.empty() ? glm::vec3(0.0f) : (bounds.min + bounds.max) * 0.5f);
+  bool same = sorted_references_.size() == setup.tlas_instances.size() &&
+              sorted_order_.size() == setup.tlas_instances.size();
+  for (size_t i = 0; same && i < setup.tlas_instances.size(); ++i)
+    same = sorted_references_[i] == setup.tlas_instances[i].accelerationStructureReference;
+  if (!same) {
+    std::vector<glm::vec3> centres;
+    centres.reserve(setup.instance_bounds.size());
+    for (const EyeBounds& bounds : setup.instance_bounds)
+      centres.push_back(bounds.empty() ? glm::vec3(0.0f) : (bounds.min + bounds.max) * 0.5f);
+    sorted_order_ = morton_order_points(centres).permutation;
+    sorted_references_.clear();
+    for (const VkAccelerationStructureInstanceKHR& instance : setup.tlas_instances)
+      sorted_references_.push_back(instance.accelerationStructureReference);
   }
-  const MortonOrder order = morton_order_points(centres);
   std::vector<VkAccelerationStructureInstanceKHR> sorted;
   sorted.reserve(setup.tlas_instances.size());
-  for (uint32_t index : order.permutation) sorted.push_back(setup.tlas_instances[index]);
+  for (uint32_t index : sorted_order_) sorted.push_back(setup.tlas_instances[index]);
   setup.tlas_instances = std::move(sorted);
 }
 
@@ -419,7 +427,9 @@ void PathTracer::trace(const TraceScene& scene, const TraceTargets& targets, Fra
   // ---- TLAS: the instance list follows from the signature, so an unchanged frame reuses it
   if (!same_scene_ || !tlas_valid_ || !tlas_.handle()) {
     tlas_valid_ = false;
-    unreported_.push_back({tlas_.build(scene_.tlas_instances), &FrameStats::tlas_ms});
+    bool updated = false;
+    unreported_.push_back({tlas_.build(scene_.tlas_instances, &updated), &FrameStats::tlas_ms});
+    ++(updated ? stats.tlas_updates : stats.tlas_builds);
     tlas_valid_ = true;
   }
 

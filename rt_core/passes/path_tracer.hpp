@@ -103,7 +103,11 @@ class PathTracer {
   // lavapipe's TLAS builder, like its BLAS builder, splits the instance *index* range, and GL
   // draw order is not spatial: put instances in Morton order of their bounds' centres. The
   // instance table order (instanceCustomIndex) is unaffected.
-  static void sort_instances_spatially(SceneSetup& setup);
+  //
+  // Orders the TLAS instances along a Morton curve of their centres (a better tree from
+  // lavapipe's builder). The same instances as last frame (the same BLASes in the same record
+  // order) keep last frame's order, so the TLAS can be updated in place rather than rebuilt.
+  void sort_instances_spatially(SceneSetup& setup);
   // Appends an instance's emissive triangles in eye space (their power in p1.w for now); returns
   // the index of the first + 1 (GpuInstance::tables.x), 0 when it has none or the table is
   // full (GLPT_MAX_EMITTERS: then bounces alone find its light).
@@ -144,6 +148,9 @@ class PathTracer {
   // Submissions of this frame not yet reported: their device time goes to the member of
   // FrameStats named here.
   std::vector<std::pair<VulkanDevice::Ticket, double FrameStats::*>> unreported_;
+  // sort_instances_spatially's last input (each instance's BLAS, record order) and its order.
+  std::vector<uint64_t> sorted_references_;
+  std::vector<uint32_t> sorted_order_;
   VulkanDevice::Ticket trace_ticket_ = 0;               // the last trace submission
   bool counters_read_ = true;                           // its counters_ are in counted_ already
   uint64_t counted_rays_ = 0, counted_non_finite_ = 0;  // of this frame's completed traces

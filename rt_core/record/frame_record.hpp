@@ -188,6 +188,9 @@ struct Bitmap {
   glm::vec2 origin{0.0f};  // window position of the bitmap's lower-left corner
   uint32_t width = 0, height = 0;
   std::vector<uint8_t> bits;  // width * height, 0 or 1, rows bottom to top (unpacked)
+  // The program's glBitmap calls this covers: Mesa's bitmap cache merges consecutive ones (text)
+  // into one (gl_shim/pixels/bitmap_cache.cpp).
+  uint32_t calls = 1;
 };
 
 enum class PixelKind : uint8_t { kColor, kDepth, kStencil };

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstring>
 #include <map>
+#include <span>
 
 #include "common/content_hash.hpp"
 #include "rt_core/raster/pipeline_key.hpp"
@@ -13,54 +14,6 @@
 
 namespace glpt::rt {
 namespace {
-
-// A camera: where a draw lands on screen. Ordered by raw bits (exact comparison).
-struct Camera {
-  glm::mat4 projection;
-  std::array<int32_t, 4> viewport;
-  bool operator<(const Camera& o) const {
-    if (int c = std::memcmp(&viewport, &o.viewport, sizeof viewport)) return c < 0;
-    return std::memcmp(&projection, &o.projection, sizeof projection) < 0;
-  }
-};
-
-Camera camera_of(const rec::StateSnapshot& s) {
-  return {s.transform->projection, s.transform->viewport};
-}
-
-bool same_camera(const Camera& a, const Camera& b) { return !(a < b) && !(b < a); }
-
-// GL's perspective projections have a last row other than (0, 0, 0, 1).
-bool is_perspective(const glm::mat4& projection) {
-  return projection[0][3] != 0.0f || projection[1][3] != 0.0f || projection[2][3] != 0.0f ||
-         projection[3][3] != 1.0f;
-}
-
-// A modelview whose bottom row is not (0, 0, 0, 1) (planar shadow matrices): an affine TLAS
-// instance transform cannot hold it.
-bool is_projective(const glm::mat4& modelview) {
-  return modelview[0][3] != 0.0f || modelview[1][3] != 0.0f || modelview[2][3] != 0.0f ||
-         modelview[3][3] != 1.0f;
-}
-
-// Everything about a draw that makes it traceable except its camera.
-DrawClass classify_ignoring_camera(const rec::Draw& draw, const rec::StateSnapshot& state,
-                                   const rec::DrawableConfig& drawable) {
-  if (!draw.vertices ||
-      rec::primitive_class(draw.vertices->mode) != rec::PrimitiveClass::kTriangles)
-    return DrawClass::kNotTriangles;
-  const rec::PrimitiveState& primitive = state.raster->primitive;
-  if (primitive.polygon_mode_front != GL_FILL || primitive.polygon_mode_back != GL_FILL)
-    return DrawClass::kUnfilled;
-  const rec::FragmentOpsState& ops = state.raster->ops;
-  if (ops.blend || ops.color_logic_op) return DrawClass::kBlended;
-  const bool all_channels =
-      ops.color_write[0] && ops.color_write[1] && ops.color_write[2] && ops.color_write[3];
-  if (!all_channels ||
-      resolve_draw_buffer(ops.draw_buffer, drawable.double_buffered) == ColorTargets::kNone)
-    return DrawClass::kMaskedColor;
-  return DrawClass::kTraced;
-}
 
 ColorSource color_source_of(uint32_t mode) {
   switch (mode) {
@@ -220,16 +173,30 @@ void add_material_state(ContentHash& hash, const rec::LightingState& lighting,
 // identity. A batch's identity (shape and shading hashes) comes from its draws' content keys
 // alone; only a batch the tracer does not already hold (`known`) is decomposed into triangles,
 // so unchanged geometry is not decomposed, copied or hashed again frame after frame.
+//
+// A modulating later pass over the same triangles (a lightmap, a detail texture: FoldedPass) is
+// folded into the draw for the rays: its unit-0 texture becomes a further texture unit of the
+// surface (after the draw's own, GL_MODULATE), with the pass's coordinates, so a bounce sees the
+// lightmapped surface as the same lightmap through ARB_multitexture would show it. The pass
+// itself is still drawn by raster mode over the traced pixels (what the camera sees is GL's).
+struct FoldedPass {
+  const rec::Draw* draw = nullptr;
+  const rec::StateSnapshot* state = nullptr;
+};
+
 class Batcher {
  public:
   Batcher(std::vector<Instance>& instances, const KnownGeometry& known, rec::Decomposed& scratch)
       : instances_(instances), known_(known), scratch_(scratch) {}
 
-  void add(const rec::Draw& draw, const rec::StateSnapshot& state, bool sky = false) {
+  void add(const rec::Draw& draw, const rec::StateSnapshot& state, bool sky = false,
+           std::span<const FoldedPass> passes = {}) {
     const rec::TransformState& transform = *state.transform;
-    const bool projective = is_projective(transform.modelview);
+    const bool projective = is_projective_modelview(transform.modelview);
     const glm::mat4 modelview = projective ? glm::mat4(1.0f) : transform.modelview;
-    const TracedSurface surface = surface_texture_of(state);
+    TracedSurface surface = surface_texture_of(state);
+    std::array<FoldedPass, TracedSurface::kUnits> folded{};
+    fold(draw, passes, surface, folded);
     if (open_ && (std::memcmp(&modelview, &open_modelview_, sizeof modelview) != 0 ||
                   !same_light_set(*state.lighting, *open_lighting_) ||
                   !(surface == open_surface_) || sky != open_sky_))
@@ -248,6 +215,17 @@ class Batcher {
     const rec::VertexData& v = *draw.vertices;
     const bool flat = state.raster->primitive.shade_model == GL_FLAT;
     const rec::VertexKeys& keys = v.keys();
+    for (size_t u = 0; u < TracedSurface::kUnits; ++u) {
+      if (!folded[u].draw) continue;
+      // The folded coordinates: the pass's vertices and unit-0 state.
+      const rec::TextureUnitState& unit = folded[u].state->texturing->units[0];
+      const uint64_t attributes = folded[u].draw->vertices->keys().attributes;
+      shading_.add_bytes(&u, sizeof u);
+      shading_.add_bytes(&attributes, sizeof attributes);
+      shading_.add_bytes(&unit.texgen_mask, sizeof unit.texgen_mask);
+      shading_.add_bytes(&unit.matrix, sizeof unit.matrix);
+      if (unit.texgen_mask != 0) shading_.add_bytes(&unit.texgen, sizeof unit.texgen);
+    }
     shape_.add_bytes(&keys.geometry, sizeof keys.geometry);
     shading_.add_bytes(&keys.attributes, sizeof keys.attributes);
     shading_.add_bytes(&flat, sizeof flat);
@@ -270,7 +248,7 @@ class Batcher {
       shape_.add_bytes(&transform.modelview, sizeof transform.modelview);
       shading_.add_bytes(&transform.modelview, sizeof transform.modelview);
     }
-    draws_.push_back({&draw, &state});
+    draws_.push_back({&draw, &state, folded});
   }
 
   void close() {
@@ -282,7 +260,7 @@ class Batcher {
     if (known_ && known_(geometry->shape_hash, geometry->shading_hash)) {
       geometry->resident = true;
     } else {
-      for (const OpenDraw& d : draws_) append_triangles(*d.draw, *d.state, *geometry);
+      for (const OpenDraw& d : draws_) append_triangles(d, *geometry);
       if (geometry->positions.empty()) return;
     }
     instances_.push_back(
@@ -292,9 +270,36 @@ class Batcher {
   }
 
  private:
-  void append_triangles(const rec::Draw& draw, const rec::StateSnapshot& state, Geometry& g) {
+  // Folds `passes` into the surface's free texture units after its last used one.
+  static void fold(const rec::Draw& draw, std::span<const FoldedPass> passes,
+                   TracedSurface& surface, std::array<FoldedPass, TracedSurface::kUnits>& folded) {
+    size_t next = 0;
+    for (size_t u = 0; u < TracedSurface::kUnits; ++u)
+      if (surface.units[u].texture) next = u + 1;
+    for (const FoldedPass& pass : passes) {
+      if (next >= TracedSurface::kUnits) break;
+      const rec::TextureUnitState& unit = pass.state->texturing->units[0];
+      if (unit.target == 0 || !unit.texture || unit.texture->sampler.compare_mode != GL_NONE ||
+          pass.draw->vertices->vertex_count() != draw.vertices->vertex_count())
+        continue;
+      surface.units[next].texture = unit.texture;
+      surface.units[next].env_mode = GL_MODULATE;
+      surface.units[next].lod_bias = unit.env.lod_bias;
+      folded[next++] = pass;
+    }
+  }
+
+  struct OpenDraw {
+    const rec::Draw* draw;
+    const rec::StateSnapshot* state;
+    std::array<FoldedPass, TracedSurface::kUnits> folded;
+  };
+
+  void append_triangles(const OpenDraw& open, Geometry& g) {
+    const rec::Draw& draw = *open.draw;
+    const rec::StateSnapshot& state = *open.state;
     const rec::TransformState& transform = *state.transform;
-    const bool projective = is_projective(transform.modelview);
+    const bool projective = is_projective_modelview(transform.modelview);
     const rec::VertexData& v = *draw.vertices;
     scratch_.clear();
     rec::decompose(v, scratch_);
@@ -332,20 +337,20 @@ class Batcher {
         g.normals.push_back(projective ? normal_matrix * normal : normal);
         g.colors.push_back(rec::attribute_at(v.color, src, kDefaultColor));
         // Texture coordinates are not flat-shaded: they follow each vertex.
-        for (size_t u = 0; u < TracedSurface::kUnits; ++u)
-          if (surface.units[u].texture)
+        for (size_t u = 0; u < TracedSurface::kUnits; ++u) {
+          if (const FoldedPass& pass = open.folded[u]; pass.draw)
+            g.texcoords[u].push_back(texcoord_of(*pass.draw->vertices, t.v[k], 0,
+                                                 pass.state->texturing->units[0],
+                                                 *pass.state->transform));
+          else if (surface.units[u].texture)
             g.texcoords[u].push_back(
                 texcoord_of(v, t.v[k], u, state.texturing->units[u], transform));
+        }
       }
       g.material_ids.push_back(v.material.empty() ? shared_material
                                                   : material_pair(v.material[provoking]));
     }
   }
-
-  struct OpenDraw {
-    const rec::Draw* draw;
-    const rec::StateSnapshot* state;
-  };
 
   std::vector<Instance>& instances_;
   const KnownGeometry& known_;
@@ -416,102 +421,16 @@ glm::vec4 viewer_of_projection(const glm::mat4& projection) {
   return glm::vec4(glm::vec3(direction), 0.0f);
 }
 
-MainCamera find_main_camera(const rec::FrameRecord& record, const rec::DrawableConfig& drawable) {
-  std::map<Camera, uint64_t> triangles_per_camera;
-  for (const rec::Command& command : record.commands) {
-    const auto* draw = std::get_if<rec::Draw>(&command);
-    if (draw == nullptr) continue;
-    const rec::StateSnapshot& state = record.states[draw->state];
-    if (classify_ignoring_camera(*draw, state, drawable) != DrawClass::kTraced) continue;
-    triangles_per_camera[camera_of(state)] += draw->vertices->vertex_count();
-  }
-  MainCamera main;
-  uint64_t most = 0;
-  bool perspective = false;
-  for (const auto& [camera, count] : triangles_per_camera) {
-    const bool candidate_perspective = is_perspective(camera.projection);
-    if (perspective && !candidate_perspective) continue;
-    if ((candidate_perspective && !perspective) || count > most) {
-      most = count;
-      perspective = candidate_perspective;
-      main.projection = camera.projection;
-      main.viewport = camera.viewport;
-      main.valid = true;
-    }
-  }
-  return main;
-}
-
-DrawClass classify_draw(const rec::Draw& draw, const rec::StateSnapshot& state,
-                        const MainCamera& camera, const rec::DrawableConfig& drawable) {
-  const DrawClass cls = classify_ignoring_camera(draw, state, drawable);
-  if (cls != DrawClass::kTraced) return cls;
-  if (!camera.valid || !same_camera(camera_of(state), {camera.projection, camera.viewport}))
-    return DrawClass::kOtherCamera;
-  return DrawClass::kTraced;
-}
-
-namespace {
-
-// A draw's eye-space box: its vertex data's object-space box under the modelview. False when it
-// has no bounds or the modelview is projective.
-bool eye_bounds_of(const rec::Draw& draw, const rec::StateSnapshot& state, EyeBounds& bounds) {
-  const rec::VertexKeys& keys = draw.vertices->keys();
-  if (!keys.bounded() || is_projective(state.transform->modelview)) return false;
-  bounds = EyeBounds::transformed(keys.bounds_min, keys.bounds_max, state.transform->modelview);
-  return !bounds.empty() && std::isfinite(bounds.diagonal());
-}
-
-bool holds_the_eye(const EyeBounds& b) {
-  return b.min.x < 0.0f && b.min.y < 0.0f && b.min.z < 0.0f && b.max.x > 0.0f &&
-         b.max.y > 0.0f && b.max.z > 0.0f;
-}
-
-// A box around the eye whose centre is within 10 % of its half size of the eye on every axis:
-// what drawing a box with the camera's translation removed makes.
-bool centred_on_the_eye(const EyeBounds& b) {
-  const glm::vec3 centre = 0.5f * (b.min + b.max), half = 0.5f * (b.max - b.min);
-  return holds_the_eye(b) && glm::all(glm::lessThanEqual(glm::abs(centre), 0.1f * half));
-}
-
-}  // namespace
-
-void find_sky(const rec::FrameRecord& record, std::vector<DrawClass>& classes) {
-  // The run of unlit draws without depth writes or test before the first traced draw (their
-  // union must hold the eye: six faces of a box each do not), and draws at the far plane.
-  std::vector<size_t> run;
-  EyeBounds run_bounds;
-  bool world_started = false;
-  for (size_t i = 0; i < record.commands.size() && i < classes.size(); ++i) {
-    if (classes[i] != DrawClass::kTraced) continue;
-    const rec::Draw& draw = std::get<rec::Draw>(record.commands[i]);
-    const rec::StateSnapshot& state = record.states[draw.state];
-    const rec::TransformState& transform = *state.transform;
-    if (transform.depth_near == 1.0f && transform.depth_far == 1.0f) {
-      classes[i] = DrawClass::kSky;
-      continue;
-    }
-    if (world_started) continue;
-    const rec::FragmentOpsState& ops = state.raster->ops;
-    EyeBounds bounds;
-    const bool unlit_with_bounds = !state.lighting->enabled && eye_bounds_of(draw, state, bounds);
-    if (unlit_with_bounds && (!ops.depth_write || !ops.depth_test)) {
-      run.push_back(i);
-      run_bounds.extend(bounds);
-    } else if (unlit_with_bounds && centred_on_the_eye(bounds)) {
-      classes[i] = DrawClass::kSky;
-    } else {
-      world_started = true;
-    }
-  }
-  if (!run.empty() && holds_the_eye(run_bounds))
-    for (size_t i : run) classes[i] = DrawClass::kSky;
-}
-
 void build_trace_scene(const rec::FrameRecord& record, const rec::DrawableConfig& drawable,
                        SceneBuild& out, const SceneOptions& options) {
   out.scene = TraceScene();
-  out.classes.assign(record.commands.size(), DrawClass::kNotTriangles);
+  FrameClassification own;
+  const FrameClassification* classification = options.classification;
+  if (classification == nullptr) {
+    classify_frame(record, drawable, nullptr, own);
+    classification = &own;
+  }
+  out.classes = classification->classes;
   out.traced.assign(record.commands.size(), 0);
   out.gbuffer_pass.clear();
   out.after_trace.clear();
@@ -522,18 +441,21 @@ void build_trace_scene(const rec::FrameRecord& record, const rec::DrawableConfig
   scene.height = drawable.height;
   scene.states.resize(record.states.size());
 
-  const MainCamera camera = find_main_camera(record, drawable);
-  if (camera.valid && is_perspective(camera.projection) && camera.viewport[3] > 0 &&
+  const MainCamera& camera = classification->camera;
+  if (camera.valid && is_perspective_projection(camera.projection) && camera.viewport[3] > 0 &&
       camera.projection[1][1] != 0.0f)
     scene.pixel_spread =
         std::abs(2.0f / (camera.projection[1][1] * static_cast<float>(camera.viewport[3])));
+  // Modulating passes folded into the traced draws they redraw (classify.hpp, folds_onto).
+  std::vector<std::vector<size_t>> passes_onto(record.commands.size());
+  for (size_t i = 0; i < classification->labels.size() && i < record.commands.size(); ++i)
+    if (const uint32_t onto = classification->labels[i].folds_onto;
+        onto != 0 && onto - 1 < record.commands.size())
+      passes_onto[onto - 1].push_back(i);
+  std::vector<FoldedPass> folded;
   rec::Decomposed scratch;
   Batcher batcher(scene.instances, options.known_geometry, scratch);
   std::vector<uint8_t> state_used(record.states.size(), 0);
-  for (size_t i = 0; i < record.commands.size(); ++i)
-    if (const auto* draw = std::get_if<rec::Draw>(&record.commands[i]))
-      out.classes[i] = classify_draw(*draw, record.states[draw->state], camera, drawable);
-  find_sky(record, out.classes);
   for (size_t i = 0; i < record.commands.size(); ++i) {
     const rec::Command& command = record.commands[i];
     const auto* draw = std::get_if<rec::Draw>(&command);
@@ -546,6 +468,8 @@ void build_trace_scene(const rec::FrameRecord& record, const rec::DrawableConfig
       state_used[draw->state] = 1;
       batcher.add(*draw, record.states[draw->state], /*sky=*/true);
     }
+    // Fake shadows are not drawn: the tracer's shadows are real.
+    if (draw != nullptr && out.classes[i] == DrawClass::kShadow) continue;
     if (draw == nullptr || out.classes[i] != DrawClass::kTraced) {
       // Clears act on the G-buffer in its pass; everything else before the first traced draw is
       // drawn first, the rest after the trace.
@@ -561,7 +485,12 @@ void build_trace_scene(const rec::FrameRecord& record, const rec::DrawableConfig
     out.traced[i] = 1;
     out.gbuffer_pass.push_back(i);
     state_used[draw->state] = 1;
-    batcher.add(*draw, state);
+    folded.clear();
+    for (size_t pass : passes_onto[i]) {
+      const rec::Draw& pass_draw = std::get<rec::Draw>(record.commands[pass]);
+      folded.push_back({&pass_draw, &record.states[pass_draw.state]});
+    }
+    batcher.add(*draw, state, /*sky=*/false, folded);
   }
   batcher.close();
 

@@ -1,23 +1,10 @@
-// Path-traced mode's view of a frame record: which draws are traced (classify_draw), the order in
+// Path-traced mode's view of a frame record: the order in
 // which the record's commands run around the trace (the passes), and the tracer's scene
 // (TraceScene: triangles for secondary rays, lights and per-state data).
 //
-// Classification, per draw, until the classification issue lands:
-//   traced        triangles (filled on both faces) under the main camera, not blended, no logic
-//                 op, writing all colour channels to a colour buffer. Drawn into the G-buffer by
-//                 the raster pipelines and lit by the trace pass.
-//   sky           would be traced, but is the sky (find_sky): drawn at the far plane
-//                 (glDepthRange(1, 1)), or unlit, before every traced draw, around the camera
-//                 (its eye-space box holds the eye) and either without depth writes or depth test
-//                 (a run of such draws together: a sky box of six faces) or centred on the
-//                 camera (within 10 % of its half size). Rays do not hit it (a sky box traced
-//                 blocks every shadow and bounce ray); raster mode draws it where it lies.
-//   every other   points, lines, unfilled polygons, draws under another projection or viewport
-//                 (HUD, 2-D overlays, a second view), blended or logic-op draws (they read the
-//                 colour under them), draws with colour writes masked: raster mode draws them.
-// The main camera is the projection and viewport under which the most triangles of otherwise
-// traceable draws are drawn, preferring perspective projections (the 3-D view) over parallel
-// ones (a HUD of many quads must not take the camera from a small 3-D scene).
+// Which draws are traced comes from classify.hpp (classify_frame; docs/classification.md): traced
+// draws are drawn into the G-buffer and lit by the trace pass, sky draws are held for the rays
+// that miss, fake shadows are not drawn, everything else is drawn by raster mode.
 //
 // Passes, in order:
 //   1. G-buffer pass (`gbuffer_pass`): the record's commands up to the first traced draw as raster
@@ -36,34 +23,10 @@
 #include <vector>
 
 #include "rt_core/record/frame_record.hpp"
+#include "rt_core/scene/classify.hpp"
 #include "rt_core/scene/trace_scene.hpp"
 
 namespace glpt::rt {
-
-enum class DrawClass : uint8_t {
-  kTraced,
-  kNotTriangles,  // points, lines
-  kUnfilled,      // GL_LINE / GL_POINT polygon mode
-  kBlended,       // blending or a logic op
-  kMaskedColor,   // some colour channel masked, or no colour buffer drawn to
-  kOtherCamera,   // another projection or viewport than the main camera's
-  kSky,           // the sky around the camera, drawn by raster mode (find_sky)
-};
-
-// The class of one draw, given the main camera (`main_projection`, `main_viewport`) and the
-// drawable. Draws under the main camera and traceable otherwise are kTraced.
-struct MainCamera {
-  glm::mat4 projection{1.0f};
-  std::array<int32_t, 4> viewport{0, 0, 0, 0};
-  bool valid = false;
-};
-MainCamera find_main_camera(const rec::FrameRecord& record, const rec::DrawableConfig& drawable);
-DrawClass classify_draw(const rec::Draw& draw, const rec::StateSnapshot& state,
-                        const MainCamera& camera, const rec::DrawableConfig& drawable);
-
-// Turns the classes of the record's sky draws from kTraced into kSky (`classes`: per command,
-// as classify_draw gives them).
-void find_sky(const rec::FrameRecord& record, std::vector<DrawClass>& classes);
 
 struct SceneBuild {
   TraceScene scene;
@@ -84,6 +47,8 @@ struct SceneOptions {
   // default it is lit by GL's ambient and emission alone, as GL lights it.
   bool default_light = false;
   KnownGeometry known_geometry;  // empty: every geometry is decomposed
+  // The frame's classification (classify_frame, with identities); null: classified here without.
+  const FrameClassification* classification = nullptr;
 };
 
 void build_trace_scene(const rec::FrameRecord& record, const rec::DrawableConfig& drawable,

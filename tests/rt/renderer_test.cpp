@@ -638,12 +638,11 @@ TEST(ClassifyDraws, TracesOpaqueFilledTrianglesUnderTheMainCameraOnly) {
 
   SceneBuild build;
   build_trace_scene(b.record, b.drawable, build);
-  const std::vector<DrawClass> expected = {DrawClass::kNotTriangles,  // the clear
-                                           DrawClass::kTraced,       DrawClass::kBlended,
-                                           DrawClass::kNotTriangles, DrawClass::kUnfilled,
-                                           DrawClass::kMaskedColor,  DrawClass::kOtherCamera,
-                                           DrawClass::kOtherCamera,  DrawClass::kOtherCamera,
-                                           DrawClass::kOtherCamera,  DrawClass::kTraced};
+  const std::vector<DrawClass> expected = {
+      DrawClass::kNotTriangles,  // the clear
+      DrawClass::kTraced,       DrawClass::kBlended, DrawClass::kNotTriangles, DrawClass::kUnfilled,
+      DrawClass::kMaskedColor,  DrawClass::kOverlay, DrawClass::kOverlay,      DrawClass::kOverlay,
+      DrawClass::kOverlay,      DrawClass::kTraced};
   EXPECT_EQ(build.classes, expected);
   EXPECT_EQ(build.gbuffer_pass, (std::vector<size_t>{0, 1, 10}));
   EXPECT_EQ(build.after_trace, (std::vector<size_t>{2, 3, 4, 5, 6, 7, 8, 9}));
