@@ -32,7 +32,10 @@ def summarize(log_path):
             line = line.strip()
             if not line:
                 continue
-            e = json.loads(line)
+            try:
+                e = json.loads(line)
+            except json.JSONDecodeError:
+                continue  # a program killed mid-line (older glpt builds)
             frames.setdefault(e["frame"], []).append(e)
     calls = collections.Counter()
     churn_new = churn_total = 0

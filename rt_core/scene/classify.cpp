@@ -593,12 +593,14 @@ void classify_frame(const rec::FrameRecord& record, const rec::DrawableConfig& d
     }
     // The depth test off after a depth-tested world: drawn over it (a crosshair, a HUD in 3-D).
     // A program that never tests depth draws its world that way: that stays the world.
-    // Parallel projections are 2-D over a perspective world; a program without one (2-D, or
-    // orthographic 3-D) has its world under its main parallel camera.
-    const bool main_parallel_camera =
+    // Parallel projections are 2-D over a perspective world. A program without one has its
+    // world under its main parallel camera when it is 3-D (orthographic, depth-tested or lit);
+    // a menu screen of unlit quads without the depth test is 2-D.
+    const bool parallel_world =
         out.camera.valid && !is_perspective_projection(out.camera.projection) &&
-        same_camera(camera_of(state), {out.camera.projection, out.camera.viewport});
-    if ((!perspective && !main_parallel_camera) || (!ops.depth_test && world_depth_tested)) {
+        same_camera(camera_of(state), {out.camera.projection, out.camera.viewport}) &&
+        (ops.depth_test || state.lighting->enabled);
+    if ((!perspective && !parallel_world) || (!ops.depth_test && world_depth_tested)) {
       set(DrawKind::kOverlay,
           cls == DrawClass::kTraced || cls == DrawClass::kOtherCamera ? DrawClass::kOverlay : cls);
       continue;

@@ -297,6 +297,36 @@ TEST(PathTracedGl, ClipPlanesCutTracedSurfacesWhereMesaDoes) {
       ASSERT_EQ(background(traced.at(x, y)), background(rasterized.at(x, y))) << x << "," << y;
 }
 
+TEST(PathTracedGl, ClassifyDebugTintsEachDrawByItsClass) {
+  // GLPT_CLASSIFY_DEBUG=1: half of each fragment is its class's colour (docs/classification.md):
+  // a white unlit quad in the 3-D view is static (blue 0.2, 0.4, 1), a white HUD quad in glOrtho
+  // is an overlay (white): (1 + 0.2) / 2 = 0.6, (1 + 0.4) / 2 = 0.7, 1.
+  auto scene = [] {
+    camera_3d();
+    glColor3f(1, 1, 1);
+    quad(-2, -2, 2, 2, -5);
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glOrtho(0, kSize, 0, kSize, -1, 1);
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+    glDisable(GL_DEPTH_TEST);
+    glRecti(0, 0, 8, 8);
+  };
+  for (const char* mode : {"raster", "path"}) {
+    ::setenv("GLPT_CLASSIFY_DEBUG", "1", 1);
+    const Image tinted = render(mode, scene);
+    ::unsetenv("GLPT_CLASSIFY_DEBUG");
+    const Image plain = render(mode, scene);
+    EXPECT_EQ(plain.at(32, 32), (Rgba{255, 255, 255, 255})) << mode;
+    const Rgba quad_pixel = tinted.at(32, 32);
+    EXPECT_NEAR(quad_pixel.r, 0.6 * 255, 3) << mode << " " << quad_pixel;
+    EXPECT_NEAR(quad_pixel.g, 0.7 * 255, 3) << mode << " " << quad_pixel;
+    EXPECT_EQ(quad_pixel.b, 255) << mode;
+    EXPECT_EQ(tinted.at(4, 4), (Rgba{255, 255, 255, 255})) << mode << ": the HUD is white";
+  }
+}
+
 TEST(PathTracedGl, LinesAreDepthTestedAgainstTheTracedSurfaces) {
   // A lit quad at z = -5, a line in front of it and one behind it: only the front one shows.
   Image image = render("path", [] {

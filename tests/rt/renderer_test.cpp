@@ -481,10 +481,12 @@ TEST_F(RenderTest, StopsAtMaxAccumulatedAndCanDisableAccumulation) {
 }
 
 // An unlit white quad whose left edge is at x = 20.7 under a pixel-exact orthographic camera:
-// pixel column 20 is 30 % covered.
+// pixel column 20 is 30 % covered. Depth-tested: a 3-D scene in parallel projection (unlit and
+// without the depth test it would be a 2-D overlay, which is not traced).
 RecordBuilder partly_covered_pixel() {
   RecordBuilder b(kSize, kSize);
   b.transform.projection = glm::ortho(0.0f, float(kSize), 0.0f, float(kSize), -1.0f, 1.0f);
+  b.raster.ops.depth_test = true;
   b.clear(glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
   b.quad({20.7f, 10, 0}, {20, 0, 0}, {0, 20, 0}, glm::vec4(1.0f));
   return b;
@@ -525,9 +527,11 @@ TEST_F(RenderTest, ReferenceRendersItsSamplesEveryFrameFromScratch) {
 TEST_F(RenderTest, AccumulationAntiAliasesEdgesAndKeepsInteriorsExact) {
   // An unlit quad whose left edge crosses pixel column 20 at its middle: every frame's G-buffer
   // is jittered by a sub-pixel offset, so the edge pixel converges to a mix of quad and
-  // background while interior pixels stay exactly the quad's colour.
+  // background while interior pixels stay exactly the quad's colour. Depth-tested: 3-D in
+  // parallel projection, not a 2-D overlay.
   RecordBuilder b(kSize, kSize);
   b.transform.projection = glm::ortho(0.0f, float(kSize), 0.0f, float(kSize), -1.0f, 1.0f);
+  b.raster.ops.depth_test = true;
   b.clear(glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
   b.quad({20.5f, 10, 0}, {20, 0, 0}, {0, 20, 0}, glm::vec4(1.0f));
   Image image;
@@ -710,6 +714,39 @@ TEST(ClassifyDraws, TheSkyAroundTheCameraIsNotTracedAndTheWorldIs) {
   build_trace_scene(n.record, n.drawable, build);
   EXPECT_EQ(build.classes,
             (std::vector<DrawClass>{DrawClass::kSky, DrawClass::kTraced, DrawClass::kTraced}));
+}
+
+TEST_F(RenderTest, AStillSceneBuildsNothingAfterItsFirstFrameAndACameraMoveNoBlas) {
+  // Docs/classification.md, "model only what a scene requires": the same frame again builds no
+  // BLAS and no TLAS; the camera moving (every modelview changes) builds no BLAS, only a new or
+  // updated TLAS, and the world stays static.
+  RecordBuilder b = base_frame();
+  b.directional_light(0, {0, 0, 1});
+  for (int k = 0; k < 3; ++k) b.quad({-2.0f + 1.5f * k, -1, -4}, {1, 0, 0}, {0, 1, 0}, glm::vec4(1));
+  const std::shared_ptr<DrawableBuffers> buffers = create_drawable_buffers();
+  const FrameEnd end;  // each execute ends a frame
+  auto frame = [&](const RecordBuilder& record) {
+    FrameStats stats;
+    std::string error;
+    EXPECT_TRUE(renderer_->execute(record.record, *buffers, record.drawable, stats, &error, &end))
+        << error;
+    return stats;
+  };
+  const FrameStats first = frame(b);
+  EXPECT_GE(first.blas_builds, 1u);
+  const FrameStats again = frame(b);
+  EXPECT_EQ(again.blas_builds, 0u);
+  EXPECT_EQ(again.tlas_builds + again.tlas_updates, 0u);
+  EXPECT_EQ(again.kind_draws[static_cast<size_t>(DrawKind::kStatic)], 3u);
+  RecordBuilder moved = base_frame();
+  moved.directional_light(0, {0, 0, 1});
+  moved.transform.modelview = glm::translate(glm::mat4(1.0f), glm::vec3(0.2f, 0.1f, 0.0f));
+  for (int k = 0; k < 3; ++k)
+    moved.quad({-2.0f + 1.5f * k, -1, -4}, {1, 0, 0}, {0, 1, 0}, glm::vec4(1));
+  const FrameStats after_move = frame(moved);
+  EXPECT_EQ(after_move.blas_builds, 0u);
+  EXPECT_EQ(after_move.tlas_builds + after_move.tlas_updates, 1u);
+  EXPECT_EQ(after_move.kind_draws[static_cast<size_t>(DrawKind::kStatic)], 3u);
 }
 
 TEST_F(RenderTest, StatsCountTheDrawsOfEachClass) {
