@@ -138,7 +138,7 @@ class Renderer::Impl {
       if (!std::holds_alternative<rec::Draw>(record.commands[i])) continue;
       const DrawClass cls = scene_.classes[i];
       if (cls == DrawClass::kShadow) continue;  // not drawn (kind_draws counts them)
-      ++(cls == DrawClass::kTraced ? stats.traced_draws
+      ++(cls == DrawClass::kTraced || cls == DrawClass::kViewmodel ? stats.traced_draws
          : cls == DrawClass::kSky  ? stats.sky_draws
                                    : stats.raster_draws);
     }

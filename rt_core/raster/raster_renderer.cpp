@@ -135,7 +135,19 @@ void RasterRenderer::execute(const rec::FrameRecord& record, DrawableBuffers& bu
     if (std::holds_alternative<rec::Clear>(record.commands[i])) ++quad_clears;
   const size_t pixel_states = begin_pixel_commands(record, *commands);
   std::vector<gpu::RasterState> states(state_count + quad_clears + pixel_states + 1);
+  // Only the states this execute's commands use (path-traced mode's pass after the trace draws a
+  // few overlays of a record of thousands of states).
+  std::vector<uint8_t> used(state_count, commands->size() == record.commands.size() ? 1 : 0);
+  if (commands->size() != record.commands.size())
+    for (size_t i : *commands)
+      std::visit(
+          [&](const auto& command) {
+            if constexpr (requires { command.state; })
+              if (command.state < state_count) used[command.state] = 1;
+          },
+          record.commands[i]);
   for (size_t i = 0; i < state_count; ++i) {
+    if (!used[i]) continue;
     pack_state_uniforms(record.states[i], states[i]);
     states[i].drawable = glm::uvec4(drawable.width, drawable.height, 0, 0);
   }

@@ -619,7 +619,10 @@ void classify_frame(const rec::FrameRecord& record, const rec::DrawableConfig& d
     const bool own_projection = !same_matrix(transform.projection, out.camera.projection);
     if (!blended && world_started && out.camera.valid && same_viewport &&
         (own_depth_range || (own_projection && depth_cleared_in_world))) {
-      set(DrawKind::kViewmodel, DrawClass::kViewmodel);
+      // Traced in its own depth range and projection when it could be traced at all.
+      set(DrawKind::kViewmodel,
+          cls == DrawClass::kTraced || cls == DrawClass::kOtherCamera ? DrawClass::kViewmodel
+                                                                      : cls);
       continue;
     }
     const rec::PrimitiveState& primitive = state.raster->primitive;

@@ -30,7 +30,8 @@ enum class DrawClass : uint8_t {
   kSky,           // the sky around the camera, drawn by raster mode (find_sky)
   kOverlay,       // 2-D: parallel projections, or the depth test off after the world
   kShadow,        // a fake shadow: not drawn in path-traced mode
-  kViewmodel,     // first-person geometry in its own depth range or projection
+  kViewmodel,     // first-person geometry in its own depth range or projection: traced (into the
+                  // G-buffer, lit by rays) but not in the TLAS, so it casts no shadow on the world
 };
 
 enum class DrawKind : uint8_t {

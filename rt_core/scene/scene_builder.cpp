@@ -470,7 +470,8 @@ void build_trace_scene(const rec::FrameRecord& record, const rec::DrawableConfig
     }
     // Fake shadows are not drawn: the tracer's shadows are real.
     if (draw != nullptr && out.classes[i] == DrawClass::kShadow) continue;
-    if (draw == nullptr || out.classes[i] != DrawClass::kTraced) {
+    const bool viewmodel = out.classes[i] == DrawClass::kViewmodel;
+    if (draw == nullptr || (out.classes[i] != DrawClass::kTraced && !viewmodel)) {
       // Clears act on the G-buffer in its pass; everything else before the first traced draw is
       // drawn first, the rest after the trace.
       if (!out.any_traced || std::holds_alternative<rec::Clear>(command))
@@ -485,6 +486,9 @@ void build_trace_scene(const rec::FrameRecord& record, const rec::DrawableConfig
     out.traced[i] = 1;
     out.gbuffer_pass.push_back(i);
     state_used[draw->state] = 1;
+    // A view model is drawn into the G-buffer in its own depth range and projection and lit by
+    // rays, but is no geometry for them: it casts no shadow on the world (nor on itself).
+    if (viewmodel) continue;
     folded.clear();
     for (size_t pass : passes_onto[i]) {
       const rec::Draw& pass_draw = std::get<rec::Draw>(record.commands[pass]);

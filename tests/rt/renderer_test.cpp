@@ -749,6 +749,30 @@ TEST_F(RenderTest, AStillSceneBuildsNothingAfterItsFirstFrameAndACameraMoveNoBla
   EXPECT_EQ(after_move.kind_draws[static_cast<size_t>(DrawKind::kStatic)], 3u);
 }
 
+TEST_F(RenderTest, AViewModelIsTracedInItsDepthRangeAndCastsNoShadowOnTheWorld) {
+  // A white wall lit from the upper right and, drawn after it in glDepthRange(0, 0.1), a white
+  // view-model quad between the wall and the light's direction: were it geometry for rays, its
+  // shadow would fall on the wall around (-2, 0, -6). It is traced (lit like the wall: the same
+  // normal and light) but not in the TLAS, so that part of the wall is as bright as its mirror
+  // image (2, 0, -6).
+  RecordBuilder b = base_frame();
+  b.directional_light(0, {0.5f, 0.0f, 1.0f});
+  b.quad({-4, -3, -6}, {8, 0, 0}, {0, 6, 0}, glm::vec4(1));
+  b.transform.depth_far = 0.1f;
+  b.quad({-0.5f, -0.5f, -2}, {1, 0, 0}, {0, 1, 0}, glm::vec4(1));
+  const Image image = render(b);
+  EXPECT_EQ(image.stats.traced_draws, 2u);
+  EXPECT_EQ(image.stats.instances, 1u) << "the view model is no TLAS instance";
+  EXPECT_EQ(image.stats.kind_draws[static_cast<size_t>(DrawKind::kViewmodel)], 1u);
+  const glm::ivec2 shadowed = project(b, {-2, 0, -6}), mirror = project(b, {2, 0, -6});
+  const glm::ivec2 model = project(b, {0, 0, -2});
+  EXPECT_NEAR(image.at(shadowed.x, shadowed.y).r, image.at(mirror.x, mirror.y).r, 4)
+      << image.at(shadowed.x, shadowed.y) << " vs " << image.at(mirror.x, mirror.y);
+  EXPECT_NEAR(image.at(model.x, model.y).r, image.at(mirror.x, mirror.y).r, 4)
+      << image.at(model.x, model.y);
+  EXPECT_GT(image.at(model.x, model.y).r, 100);
+}
+
 TEST_F(RenderTest, StatsCountTheDrawsOfEachClass) {
   // A sky box of six faces, two traced quads (one geometry), a blended quad and a line.
   RecordBuilder b = base_frame();
