@@ -15,6 +15,9 @@ struct FrameStats {
   // Host time of classification and identity matching (scene/classify.hpp), when classified.
   double classify_ms = 0;
   uint32_t blas_builds = 0, blas_reused = 0;
+  // Bytes written into GPU-visible memory: state uniforms, vertices, pixels, textures, BLAS
+  // inputs and shading data, instance tables, TLAS instances.
+  uint64_t upload_bytes = 0;
   // TLAS builds, and updates in place (the same instances with new transforms).
   uint32_t tlas_builds = 0, tlas_updates = 0;
   // `rays`: rays actually traced this frame (primary + shadow + bounce), counted on the GPU.
@@ -52,6 +55,7 @@ struct FrameStats {
     classify_ms += s.classify_ms;
     blas_builds += s.blas_builds;
     blas_reused += s.blas_reused;
+    upload_bytes += s.upload_bytes;
     tlas_builds += s.tlas_builds;
     tlas_updates += s.tlas_updates;
     triangles += s.triangles;

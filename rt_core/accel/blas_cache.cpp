@@ -151,6 +151,7 @@ BlasPrepareStats BlasCache::prepare(std::span<const Geometry* const> geometries,
     build.shape_hash = geometry->shape_hash;
     build.entry = create_entry(*geometry, build);
     build.entry->last_used_frame = frame_number;
+    stats.upload_bytes += build.entry->positions.size();
     shapes[geometry->shape_hash] = build.entry.get();
   }
   // Shading data needs only the shape's triangle order, known before the BLAS is built.
@@ -166,6 +167,7 @@ BlasPrepareStats BlasCache::prepare(std::span<const Geometry* const> geometries,
         create_shading(*geometry, *shapes.at(geometry->shape_hash));
     entry->last_used_frame = frame_number;
     memory_bytes_ += entry->data.size();
+    stats.upload_bytes += entry->data.size();
     shading_.emplace(key, std::move(entry));
     ++stats.shading_uploads;
   }

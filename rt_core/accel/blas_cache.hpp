@@ -50,6 +50,7 @@ struct BlasPrepareStats {
   uint32_t builds = 0;
   uint32_t reused = 0;
   uint32_t shading_uploads = 0;
+  uint64_t upload_bytes = 0;  // BLAS inputs (positions) and shading data written
 };
 
 class BlasCache {

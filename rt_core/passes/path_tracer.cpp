@@ -86,11 +86,13 @@ gpu::GpuTraceState pack_state(const TraceState& state) {
 }
 
 // Writes `values` into `buffer` (at least one element, so a buffer always exists to bind).
+// Returns the bytes written.
 template <typename T>
-void upload(const VulkanDevice& device, GpuBuffer& buffer, const std::vector<T>& values) {
+size_t upload(const VulkanDevice& device, GpuBuffer& buffer, const std::vector<T>& values) {
   ensure_capacity(device, buffer, std::max<size_t>(values.size(), 1) * sizeof(T),
                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   buffer.write(values.data(), values.size() * sizeof(T));
+  return values.size() * sizeof(T);
 }
 
 }  // namespace
@@ -371,6 +373,7 @@ void PathTracer::trace(const TraceScene& scene, const TraceTargets& targets, Fra
   const BlasPrepareStats blas = blas_cache_.prepare(geometries, frame_number_);
   stats.blas_builds = blas.builds;
   stats.blas_reused = blas.reused;
+  stats.upload_bytes += blas.upload_bytes;
   if (blas.build_ticket != 0) unreported_.push_back({blas.build_ticket, &FrameStats::blas_ms});
 
   // ---- per-frame tables
@@ -389,16 +392,16 @@ void PathTracer::trace(const TraceScene& scene, const TraceTargets& targets, Fra
     any_sky = any_sky || scene_.sky[i];
   }
   sort_instances_spatially(scene_);
-  upload(*device_, instance_table_, scene_.instance_table);
-  upload(*device_, lights_, light_setup.lights);
+  stats.upload_bytes += upload(*device_, instance_table_, scene_.instance_table);
+  stats.upload_bytes += upload(*device_, lights_, light_setup.lights);
   const uint32_t emitter_count = finish_emitters(scene_.emitters);
-  upload(*device_, emitters_, scene_.emitters);
-  upload(*device_, clip_planes_, scene_.clip_planes);
+  stats.upload_bytes += upload(*device_, emitters_, scene_.emitters);
+  stats.upload_bytes += upload(*device_, clip_planes_, scene_.clip_planes);
   stats.emitters = emitter_count;
   std::vector<gpu::GpuTraceState> states;
   states.reserve(scene.states.size());
   for (const TraceState& state : scene.states) states.push_back(pack_state(state));
-  upload(*device_, states_, states);
+  stats.upload_bytes += upload(*device_, states_, states);
 
   const size_t pixel_count = size_t{scene.width} * scene.height;
   ensure_capacity(*device_, accumulation_, 2 * pixel_count * sizeof(glm::vec4),
@@ -428,6 +431,7 @@ void PathTracer::trace(const TraceScene& scene, const TraceTargets& targets, Fra
   if (!same_scene_ || !tlas_valid_ || !tlas_.handle()) {
     tlas_valid_ = false;
     bool updated = false;
+    stats.upload_bytes += scene_.tlas_instances.size() * sizeof(VkAccelerationStructureInstanceKHR);
     unreported_.push_back({tlas_.build(scene_.tlas_instances, &updated), &FrameStats::tlas_ms});
     ++(updated ? stats.tlas_updates : stats.tlas_builds);
     tlas_valid_ = true;

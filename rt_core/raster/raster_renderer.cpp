@@ -156,7 +156,7 @@ void RasterRenderer::execute(const rec::FrameRecord& record, DrawableBuffers& bu
   for (const rec::StateSnapshot& s : record.states)
     for (const rec::TextureUnitState& unit : s.texturing->units)
       if (unit.target != 0 && unit.texture) textures.push_back(unit.texture.get());
-  textures_.prepare(textures, frame_);
+  stats.upload_bytes += textures_.prepare(textures, frame_);
 
   Recording r;
   r.record = &record;
@@ -341,6 +341,8 @@ void RasterRenderer::execute(const rec::FrameRecord& record, DrawableBuffers& bu
                       VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   arena.write_to(static_cast<uint8_t*>(vertices_.mapped()));
   upload_pixels();
+  stats.upload_bytes += states_bytes + arena.size() + pixel_words_.size() * sizeof(uint32_t) +
+                        resident_.take_uploaded_bytes();
   stats.upload_ms += timer.elapsed_ms();
 
   present_ = end && end->present_to ? imported_host_image(*end->present_to) : nullptr;

@@ -51,6 +51,7 @@ ResidentGeometry::Entry* ResidentGeometry::use(const VulkanDevice& device,
   size = entry.index_offset + vertices.indices.size() * sizeof(uint32_t);
   entry.buffer = GpuBuffer::create(
       device, size, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+  uploaded_bytes_ += size;
   auto* bytes = static_cast<uint8_t*>(entry.buffer.mapped());
   for_each_attribute(vertices, [&](uint32_t location, const auto& values, VkDeviceSize) {
     if (!values.empty())

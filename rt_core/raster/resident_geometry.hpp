@@ -13,6 +13,7 @@
 #include <array>
 #include <cstdint>
 #include <unordered_map>
+#include <utility>
 
 #include "raster_types.h"
 #include "rt_core/record/decompose.hpp"
@@ -55,8 +56,11 @@ class ResidentGeometry {
   // must be done with them (RasterRenderer waits for each execute's submission).
   void release_unused(uint64_t execute);
   size_t size() const { return entries_.size(); }
+  // Bytes copied into new entries since the last call.
+  size_t take_uploaded_bytes() { return std::exchange(uploaded_bytes_, 0); }
 
  private:
+  size_t uploaded_bytes_ = 0;
   std::unordered_map<uint64_t, Entry> entries_;  // by content_id
   std::unordered_map<uint64_t, uint64_t> seen_;  // content_id -> execute that last drew it
 };

@@ -98,8 +98,8 @@ int32_t base_level_of(const rec::TextureObjectSnapshot& t) {
 
 }  // namespace
 
-void TextureCache::prepare(const std::vector<const rec::TextureObjectSnapshot*>& textures,
-                           uint64_t frame) {
+size_t TextureCache::prepare(const std::vector<const rec::TextureObjectSnapshot*>& textures,
+                             uint64_t frame) {
   struct Upload {
     const rec::TextureObjectSnapshot* texture;
     GpuImage* image;
@@ -143,7 +143,7 @@ void TextureCache::prepare(const std::vector<const rec::TextureObjectSnapshot*>&
           staging_bytes += (level->texels.size() + 15) & ~size_t{15};
         }
   }
-  if (uploads.empty()) return;
+  if (uploads.empty()) return 0;
   ensure_capacity(device_, staging_, staging_bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
   std::vector<VkBufferImageCopy> copies;
   size_t offset = 0;
@@ -177,6 +177,7 @@ void TextureCache::prepare(const std::vector<const rec::TextureObjectSnapshot*>&
                                static_cast<uint32_t>(copies.size()), copies.data());
     }
   });
+  return staging_bytes;
 }
 
 VkImageView TextureCache::view(const rec::TextureObjectSnapshot& texture) const {

@@ -24,7 +24,8 @@ class TextureCache {
 
   // Makes sure every texture in `textures` has an image, uploading new ones with one submission.
   // The image holds the texture's levels base_level..last_level as its levels 0..n-1.
-  void prepare(const std::vector<const rec::TextureObjectSnapshot*>& textures, uint64_t frame);
+  // Returns the bytes of texels uploaded.
+  size_t prepare(const std::vector<const rec::TextureObjectSnapshot*>& textures, uint64_t frame);
   // The image view of a prepared texture (null if it could not be made, e.g. zero size).
   VkImageView view(const rec::TextureObjectSnapshot& texture) const;
   // The sampler of `texture` on a unit with GL_TEXTURE_LOD_BIAS `unit_lod_bias`

@@ -736,6 +736,9 @@ TEST_F(RenderTest, AStillSceneBuildsNothingAfterItsFirstFrameAndACameraMoveNoBla
   EXPECT_GE(first.blas_builds, 1u);
   const FrameStats again = frame(b);
   EXPECT_EQ(again.blas_builds, 0u);
+  // The BLAS inputs and shading data are not uploaded again (state uniforms and vertices are).
+  EXPECT_GT(again.upload_bytes, 0u);
+  EXPECT_LT(again.upload_bytes, first.upload_bytes);
   EXPECT_EQ(again.tlas_builds + again.tlas_updates, 0u);
   EXPECT_EQ(again.kind_draws[static_cast<size_t>(DrawKind::kStatic)], 3u);
   RecordBuilder moved = base_frame();
