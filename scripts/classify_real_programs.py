@@ -20,6 +20,8 @@ import subprocess
 import sys
 import tempfile
 
+from xscreensaver_table import start_xvfb  # the same private Xvfb
+
 HACK_DIR = "/usr/libexec/xscreensaver"
 KINDS = ["static", "moving", "deforming", "blended", "particles", "multipass", "decal", "overlay",
          "sky", "shadow", "viewmodel", "lines", "hidden"]
@@ -51,20 +53,6 @@ def summarize(log_path):
     total = sum(calls.values())
     return dict(frames=len(frames), calls=total, per_class=calls,
                 churn=(churn_new / churn_total) if churn_total else 0.0)
-
-
-def start_xvfb():
-    read_fd, write_fd = os.pipe()
-    xvfb = subprocess.Popen(["Xvfb", "-displayfd", str(write_fd), "-screen", "0", "1024x768x24",
-                             "-nolisten", "tcp"], pass_fds=(write_fd,),
-                            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    os.close(write_fd)
-    with os.fdopen(read_fd) as f:
-        display = f.readline().strip()
-    if not display:
-        xvfb.kill()
-        raise RuntimeError("Xvfb did not start")
-    return xvfb, ":" + display
 
 
 def run_hack(hack, display, libgl, seconds, mode, log):
@@ -117,7 +105,7 @@ def main():
     work = tempfile.mkdtemp(prefix="glpt-classify-")
     hacks = args.hacks.split()
     if hacks:
-        xvfb, display = start_xvfb()
+        xvfb, display = start_xvfb("1024x768")
         try:
             for hack in hacks:
                 log = os.path.join(work, hack + ".jsonl")
