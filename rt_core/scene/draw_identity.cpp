@@ -206,7 +206,42 @@ void DrawIdentities::estimate_camera_motion(std::span<const DrawFingerprint> dra
   }
 }
 
+void DrawIdentities::forget_all() noexcept {
+  previous_.clear();
+  previous_taken_.clear();
+  previous_by_geometry_.clear();
+  previous_by_exact_.clear();
+  previous_by_look_.clear();
+  current_.clear();
+  lost_.clear();
+  lost_by_geometry_.clear();
+  lost_by_look_.clear();
+  camera_motion_.clear();
+}
+
+// An allocation failing half-way would leave the indices pointing past the vectors they index:
+// forgetting everything is the consistent state to fall back to.
 void DrawIdentities::match(std::span<const DrawFingerprint> draws, std::vector<DrawIdentity>& out) {
+  try {
+    match_unguarded(draws, out);
+  } catch (...) {
+    forget_all();
+    throw;
+  }
+}
+
+void DrawIdentities::end_frame() {
+  try {
+    end_frame_unguarded();
+  } catch (...) {
+    forget_all();
+    ++frame_;
+    throw;
+  }
+}
+
+void DrawIdentities::match_unguarded(std::span<const DrawFingerprint> draws,
+                                     std::vector<DrawIdentity>& out) {
   out.assign(draws.size(), DrawIdentity());
   std::vector<Entry> now;
   now.reserve(draws.size());
@@ -334,7 +369,7 @@ void DrawIdentities::match(std::span<const DrawFingerprint> draws, std::vector<D
   }
 }
 
-void DrawIdentities::end_frame() {
+void DrawIdentities::end_frame_unguarded() {
   // Last frame's draws not seen in this one are lost (kept a while: culled objects come back).
   for (size_t p = 0; p < previous_.size(); ++p)
     if (!previous_taken_[p]) lost_.push_back(std::move(previous_[p]));

@@ -75,6 +75,8 @@ class DrawIdentities {
   void match(std::span<const DrawFingerprint> draws, std::vector<DrawIdentity>& out);
   // The draws matched since the last call become the previous frame.
   void end_frame();
+  // Both give the basic guarantee: when they throw (std::bad_alloc), every draw tracked so far is
+  // forgotten (the next frame's draws get new ids), ids already given are never given again.
 
   // The eye-space motion of the world under `camera` (DrawFingerprint::camera) from the previous
   // frame to this one (identity: the camera did not move), as estimated by the last match.
@@ -97,6 +99,9 @@ class DrawIdentities {
   float relative_distance(const Entry& before, const Entry& now) const;
   float relative_distance(const Entry& before, const Entry& now, const glm::mat4& motion) const;
   bool same_place(const Entry& before, const Entry& now) const;
+  void match_unguarded(std::span<const DrawFingerprint> draws, std::vector<DrawIdentity>& out);
+  void end_frame_unguarded();
+  void forget_all() noexcept;
 
   Limits limits_;
   std::vector<Entry> previous_;
