@@ -111,8 +111,8 @@ class GlptBackend final : public Backend {
       for (size_t i = 3; i < image->rgba.size(); i += 4) image->rgba[i] = 255;
       if (ctx->output) {
         const rt::FrameStats& s = ctx->output->last_frame_stats();
-        last_render_ms_ =
-            s.upload_ms + s.raster_ms + s.blas_ms + s.tlas_ms + s.trace_ms + s.readback_ms;
+        last_render_ms_ = s.upload_ms + s.raster_ms + s.blas_ms + s.tlas_ms + s.trace_ms +
+                          s.denoise_ms + s.composite_ms + s.readback_ms;
       }
     }
     return true;

@@ -12,6 +12,10 @@ struct FrameStats {
   // their sum is not the frame's wall-clock time.
   double upload_ms = 0, blas_ms = 0, tlas_ms = 0, trace_ms = 0, readback_ms = 0;
   double raster_ms = 0;  // raster pipelines (raster mode, and overlays in path-traced mode)
+  // Path-traced mode: the denoiser's passes, and the composite pass (in trace_ms when the
+  // denoiser did not run: trace and composite are then one submission).
+  double denoise_ms = 0, composite_ms = 0;
+  uint32_t denoised = 0;  // frames (records) whose samples the denoiser filtered
   // Host time of classification and identity matching (scene/classify.hpp), when classified.
   double classify_ms = 0;
   uint32_t blas_builds = 0, blas_reused = 0;
@@ -52,6 +56,9 @@ struct FrameStats {
     trace_ms += s.trace_ms;
     readback_ms += s.readback_ms;
     raster_ms += s.raster_ms;
+    denoise_ms += s.denoise_ms;
+    composite_ms += s.composite_ms;
+    denoised += s.denoised;
     classify_ms += s.classify_ms;
     blas_builds += s.blas_builds;
     blas_reused += s.blas_reused;

@@ -119,6 +119,35 @@ RenderSettings parse_render_settings(const std::function<const char*(const char*
       "GLPT_REFERENCE", settings.reference_samples,
       [](const char* text) { return parse_uint(text, 0, kMaxReference); }, "0..65536");
   apply("GLPT_CLASSIFY_DEBUG", settings.classify_debug, parse_bool, "0 or 1");
+  DenoiseSettings& denoise = settings.denoise;
+  apply(
+      "GLPT_DENOISER", denoise.denoiser,
+      [](const char* text) -> std::optional<Denoiser> {
+        if (std::strcmp(text, "svgf") == 0) return Denoiser::kSvgf;
+        if (std::strcmp(text, "off") == 0) return Denoiser::kOff;
+        return std::nullopt;
+      },
+      "svgf or off");
+  apply(
+      "GLPT_DENOISE_ITERATIONS", denoise.iterations,
+      [](const char* text) { return parse_uint(text, 0, 10); }, "0..10");
+  auto fraction = [](const char* text) { return parse_float(text, 0.01f, 1.0f); };
+  apply("GLPT_DENOISE_ALPHA", denoise.alpha, fraction, "0.01..1");
+  apply("GLPT_DENOISE_MOMENTS_ALPHA", denoise.moments_alpha, fraction, "0.01..1");
+  apply("GLPT_DENOISE_FAST_ALPHA", denoise.fast_alpha, fraction, "0.01..1");
+  apply(
+      "GLPT_DENOISE_CLAMP", denoise.fast_clamp,
+      [](const char* text) { return parse_float(text, 0.0f, 100.0f); }, "0..100");
+  auto sigma = [](const char* text) { return parse_float(text, 1.0e-3f, 1.0e4f); };
+  apply("GLPT_DENOISE_SIGMA_DEPTH", denoise.sigma_depth, sigma, "0.001..10000");
+  apply("GLPT_DENOISE_SIGMA_NORMAL", denoise.sigma_normal, sigma, "0.001..10000");
+  apply("GLPT_DENOISE_SIGMA_LUMINANCE", denoise.sigma_luminance, sigma, "0.001..10000");
+  apply(
+      "GLPT_DENOISE_KERNEL", denoise.kernel_radius,
+      [](const char* text) { return parse_uint(text, 1, 2); }, "1 (3x3) or 2 (5x5)");
+  apply(
+      "GLPT_DENOISE_UNTIL", denoise.until_samples,
+      [](const char* text) { return parse_uint(text, 0, kMaxAccumulated); }, "0..16777216");
   if (const char* path = lookup("GLPT_CLASSIFY_LOG"); path != nullptr && *path != '\0')
     settings.classify_log = path;
 

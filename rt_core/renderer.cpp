@@ -139,8 +139,8 @@ class Renderer::Impl {
       const DrawClass cls = scene_.classes[i];
       if (cls == DrawClass::kShadow) continue;  // not drawn (kind_draws counts them)
       ++(cls == DrawClass::kTraced || cls == DrawClass::kViewmodel ? stats.traced_draws
-         : cls == DrawClass::kSky  ? stats.sky_draws
-                                   : stats.raster_draws);
+         : cls == DrawClass::kSky                                  ? stats.sky_draws
+                                                                   : stats.raster_draws);
     }
     stats.instances = static_cast<uint32_t>(scene_.scene.instances.size());
   }
@@ -188,9 +188,9 @@ class Renderer::Impl {
         raster_.execute(record, buffers, drawable, stats, &scene_.gbuffer_pass, nullptr, &targets,
                         queries);
         // The colour buffers exist once the raster renderer has drawn into them.
-        const TraceTargets trace_targets{&gbuffer_, &raster_.textures(),
-                                         raster_.color_image(true).view(),
-                                         raster_.color_image(!drawable.double_buffered).view()};
+        const TraceTargets trace_targets{
+            &gbuffer_, &raster_.textures(), raster_.color_image(true).view(),
+            raster_.color_image(!drawable.double_buffered).view(), &buffers};
         tracer_->trace(scene_.scene, trace_targets, traced);
         last = !tracer_->next_reference_pass(&next_jitter);
         if (!last && queries != nullptr) *queries = counted_before;  // the last pass counts

@@ -1,6 +1,6 @@
 #version 460
-// Composite pass of path-traced mode: the radiance channels of the trace pass (or of the
-// denoiser, later) become GL's colour buffer. Per pixel this frame covered:
+// Composite pass of path-traced mode: the radiance channels of the trace pass (and of the
+// denoiser, when it ran) become GL's colour buffer. Per pixel this frame covered:
 //   colour = fog(albedo * (direct + indirect) + specular + emission)
 // with the albedo and emission from the G-buffer and GL's fog of the pixel's draw; unlit pixels
 // show the G-buffer's colour (times their ambient visibility under GLPT_UNLIT=ao). The colours
@@ -8,6 +8,12 @@
 // under sub-pixel jitter) show what the colour buffer holds there (the clears and raster draws
 // of this frame), which is how partially covered edge pixels blend. The result is clamped to
 // [0, 1] and written into the colour buffer(s) the pixel's draw writes.
+//
+// When the denoiser ran (DenoiseUniforms image.z GLPT_DN_ACTIVE), a pixel it filtered shows the
+// frame composited from its channels instead, mixed with the accumulated average by params.w
+// (how far accumulation has come towards GLPT_DENOISE_UNTIL samples, from which on the average
+// alone is shown). The accumulation always sums the raw samples: it converges to the unbiased
+// image, whatever the denoiser did on the way.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_shader_image_load_formatted : require
 
@@ -42,6 +48,12 @@ layout(set = 0, binding = GLPT_CO_BINDING_CHANNELS + GLPT_CHANNEL_INDIRECT_DIFFU
     uniform readonly image2D channel_indirect;
 layout(set = 0, binding = GLPT_CO_BINDING_CHANNELS + GLPT_CHANNEL_SPECULAR, rgba32f)
     uniform readonly image2D channel_specular;
+layout(std430, set = 0, binding = GLPT_CO_BINDING_DENOISED) readonly buffer Denoised {
+  vec4 denoised[];  // the denoiser's work slots (shared_types.h, GLPT_DN_BINDING_WORK)
+};
+layout(std140, set = 0, binding = GLPT_CO_BINDING_DENOISE) uniform DenoiseBlock {
+  DenoiseUniforms dn;
+};
 // The colour buffers are BGRA8: no format qualifier (the view's format converts).
 layout(set = 0, binding = GLPT_CO_BINDING_FRONT) uniform image2D front_buffer;
 layout(set = 0, binding = GLPT_CO_BINDING_BACK) uniform image2D back_buffer;
@@ -56,31 +68,34 @@ vec3 apply_fog(uint state, float fog_coordinate, vec3 radiance) {
   return mix(states[state].fog_color.rgb, radiance, clamp(f, 0.0, 1.0));
 }
 
-// This frame's colour of a pixel the G-buffer covers (rgb) and its alpha.
-vec4 composite(ivec2 pixel, uvec4 surface) {
+// This frame's colour of a pixel the G-buffer covers (rgb) and its alpha, from the radiance of
+// the channels `light` (GLPT_CHANNEL_* order).
+vec4 composite(ivec2 pixel, uvec4 surface, vec3 light[GLPT_CHANNELS]) {
   uvec4 m0 = imageLoad(gbuffer_material0, pixel);
   if ((surface.w & GLPT_GBUFFER_LIT) == 0u) {
     vec4 color = unpackUnorm4x8(m0.x);
     if ((frame.options.x & GLPT_OPTION_UNLIT_AO) != 0u)
-      color.rgb *= imageLoad(channel_indirect, pixel).r;
+      color.rgb *= light[GLPT_CHANNEL_INDIRECT_DIFFUSE].r;
     return color;
   }
   GBufferMaterial m = gbuffer_material(surface, m0, imageLoad(gbuffer_material1, pixel));
-  vec3 diffuse_light = imageLoad(channel_direct, pixel).rgb + imageLoad(channel_indirect, pixel).rgb;
-  vec3 radiance = gbuffer_albedo(m) * diffuse_light + imageLoad(channel_specular, pixel).rgb +
-                  m.emission;
+  vec3 diffuse_light = light[GLPT_CHANNEL_DIRECT_DIFFUSE] + light[GLPT_CHANNEL_INDIRECT_DIFFUSE];
+  vec3 radiance = gbuffer_albedo(m) * diffuse_light + light[GLPT_CHANNEL_SPECULAR] + m.emission;
   float fog_coordinate = imageLoad(gbuffer_position, pixel).w;
   return vec4(apply_fog(surface.x - 1u, fog_coordinate, radiance), m.diffuse.a);
 }
 
 // Writes the pixel's average over all accumulated samples into the colour buffers `targets`:
 // `sum` holds the covered samples (`covered` of the `total`); the others show what the colour
-// buffer holds.
-void write_average(ivec2 pixel, uint targets, vec4 sum, float covered, float total) {
+// buffer holds. With denoised_weight < 1 the average is mixed with `denoised` (this frame's
+// denoised colour) by it.
+void write_average(ivec2 pixel, uint targets, vec4 sum, float covered, float total,
+                   vec4 denoised, float denoised_weight) {
   for (uint t = 0u; t < 2u; ++t) {
     if ((targets & (1u << t)) == 0u) continue;
     vec4 background = t == 0u ? imageLoad(front_buffer, pixel) : imageLoad(back_buffer, pixel);
     vec4 color = clamp((sum + (total - covered) * background) / total, 0.0, 1.0);
+    if (denoised_weight < 1.0) color = mix(clamp(denoised, 0.0, 1.0), color, denoised_weight);
     if (t == 0u)
       imageStore(front_buffer, pixel, color);
     else
@@ -98,7 +113,24 @@ void main() {
   float traced = imageLoad(channel_direct, pixel).a;
   bool covered = surface.x != 0u && traced > 0.0;
   uint samples = frame.sampling.y;
-  vec4 sum = covered ? composite(pixel, surface) * traced : vec4(0.0);
+  vec3 raw[GLPT_CHANNELS] = vec3[GLPT_CHANNELS](imageLoad(channel_direct, pixel).rgb,
+                                                imageLoad(channel_indirect, pixel).rgb,
+                                                imageLoad(channel_specular, pixel).rgb);
+  vec4 sum = covered ? composite(pixel, surface, raw) * traced : vec4(0.0);
+  // The denoiser filtered what it calls shaded (svgf_temporal.comp): covered pixels, lit ones or
+  // any under GLPT_UNLIT=ao; its result is in the slot of its last iteration.
+  vec4 denoised_color = vec4(0.0);
+  float denoised_weight = 1.0;
+  bool lit = (surface.w & GLPT_GBUFFER_LIT) != 0u;
+  if ((dn.image.z & GLPT_DN_ACTIVE) != 0u && covered &&
+      (lit || (dn.image.z & GLPT_DN_UNLIT_AO) != 0u)) {
+    uint slot = dn.image.w == 0u ? 0u : 1u + (dn.image.w - 1u) % 2u;
+    uint base = (slot * frame.image.x * frame.image.y + pixel_index) * 3u;
+    vec3 light[GLPT_CHANNELS] = vec3[GLPT_CHANNELS](denoised[base].rgb, denoised[base + 1u].rgb,
+                                                    denoised[base + 2u].rgb);
+    denoised_color = composite(pixel, surface, light);
+    denoised_weight = clamp(dn.params.w, 0.0, 1.0);
+  }
   float count = covered ? traced : 0.0;
   float total = surface.x != 0u ? traced : float(samples);
   if (frame.sampling.x != 0u) {
@@ -113,6 +145,6 @@ void main() {
   }
   if (count > 0.0 && total > 0.0) {
     uint targets = surface.x != 0u ? states[surface.x - 1u].info.z : frame.image.z;
-    write_average(pixel, targets, sum, count, total);
+    write_average(pixel, targets, sum, count, total, denoised_color, denoised_weight);
   }
 }

@@ -28,9 +28,9 @@ using mat4 = glm::mat4;
 #define GLPT_PT_BINDING_GBUFFER 7    // 4 storage images (gbuffer_layout.h), bindings 7..10
 #define GLPT_PT_BINDING_CHANNELS 11  // GLPT_CHANNELS storage images (below), bindings 11..13
 #define GLPT_PT_BINDING_TEXTURES 14  // sampler2D[GLPT_TRACE_TEXTURES]: traced draws' 2-D textures
-#define GLPT_PT_BINDING_CLIP_PLANES 15  // GpuClipPlanes[]: the user clip planes of traced draws
-#define GLPT_PT_BINDING_TEXTURES_1D 16  // sampler1D[GLPT_TRACE_TEXTURES_OTHER]
-#define GLPT_PT_BINDING_TEXTURES_3D 17  // sampler3D[GLPT_TRACE_TEXTURES_OTHER]
+#define GLPT_PT_BINDING_CLIP_PLANES 15    // GpuClipPlanes[]: the user clip planes of traced draws
+#define GLPT_PT_BINDING_TEXTURES_1D 16    // sampler1D[GLPT_TRACE_TEXTURES_OTHER]
+#define GLPT_PT_BINDING_TEXTURES_3D 17    // sampler3D[GLPT_TRACE_TEXTURES_OTHER]
 #define GLPT_PT_BINDING_TEXTURES_CUBE 18  // samplerCube[GLPT_TRACE_TEXTURES_OTHER]
 
 // Emissive triangles next-event estimation samples in one frame (docs/light-transport.md); the
@@ -60,6 +60,28 @@ using mat4 = glm::mat4;
 #define GLPT_CO_BINDING_CHANNELS 7      // the channels, bindings 7..9
 #define GLPT_CO_BINDING_FRONT 10        // colour buffers: storage images, read and written
 #define GLPT_CO_BINDING_BACK 11
+#define GLPT_CO_BINDING_DENOISED 12  // vec4[3 * pixels]: the denoiser's output (or a dummy)
+#define GLPT_CO_BINDING_DENOISE 13   // uniform DenoiseUniforms
+
+// svgf_temporal.comp and svgf_atrous.comp (rt_core/passes/svgf_denoiser.hpp), set 0. Per pixel
+// p (row-major, GL window rows: row 0 at the bottom):
+#define GLPT_DN_BINDING_UNIFORMS 0  // uniform DenoiseUniforms
+#define GLPT_DN_BINDING_STATES 1    // GpuStateHistory[], one per record state
+#define GLPT_DN_BINDING_POSITION 2  // G-buffer POSITION
+#define GLPT_DN_BINDING_SURFACE 3   // G-buffer SURFACE
+#define GLPT_DN_BINDING_CHANNELS 4  // the trace pass's channels, bindings 4..6
+#define GLPT_DN_BINDING_GUIDE 7     // DenoiseGuide[p] of this frame
+#define GLPT_DN_BINDING_GUIDE_PREVIOUS 8
+#define GLPT_DN_BINDING_HISTORY 9  // DenoiseHistory[p] of this frame
+#define GLPT_DN_BINDING_HISTORY_PREVIOUS 10
+// vec4[3 slots][p][3 channels]: slot 0 the temporally integrated colour, 1 and 2 the a-trous
+// iterations' ping-pong; rgb: radiance, a: its luminance variance.
+#define GLPT_DN_BINDING_WORK 11
+#define GLPT_DN_SLOTS 3
+// DenoiseUniforms::image.z flags
+#define GLPT_DN_HISTORY_VALID 1u  // the previous frame's guide and history belong to this size
+#define GLPT_DN_UNLIT_AO 2u       // unlit pixels carry AO in the indirect channel: denoise it
+#define GLPT_DN_ACTIVE 4u         // composite: the denoiser ran this frame, show its result
 
 // ---- radiance channels -----------------------------------------------------------------------
 // What the trace pass writes per pixel (RGBA32F, this frame's samples averaged; linear HDR
@@ -103,8 +125,8 @@ struct GpuPosition {
 // Shading data of one vertex, in the same order as the GpuPosition array of its shape. Colours
 // stay full float so an unlit surface reproduces GL's 8-bit rounding of the same value exactly.
 struct ShadingVertex {
-  vec4 normal;    // xyz: normal as given (not necessarily unit length); w: material index (float)
-  vec4 color;     // GL current colour
+  vec4 normal;  // xyz: normal as given (not necessarily unit length); w: material index (float)
+  vec4 color;   // GL current colour
   // Each texture unit's coordinates after texgen and the texture matrix (s, t, r, q); (0, 0, 0, 1)
   // for units rays do not sample
   vec4 texcoords[GLPT_TRACE_UNITS];
@@ -155,9 +177,9 @@ struct GpuClipPlanes {
 // GL's emission is radiance leaving both faces; next-event estimation picks a triangle in
 // proportion to its power (area x emitted luminance), then a point uniformly on it.
 struct GpuEmitter {
-  vec4 p0;  // w: the cumulative probability of the emitters up to and including this one
-  vec4 p1;  // w: the probability of choosing this one
-  vec4 p2;  // w: area
+  vec4 p0;         // w: the cumulative probability of the emitters up to and including this one
+  vec4 p1;         // w: the probability of choosing this one
+  vec4 p2;         // w: area
   vec4 emission0;  // rgb: the emission at each vertex (interpolated over the triangle); a: unused
   vec4 emission1;
   vec4 emission2;
@@ -188,8 +210,8 @@ struct GpuTraceState {
 };
 
 // GpuTraceState::info.w
-#define GLPT_STATE_LOCAL_VIEWER 1u  // GL_LIGHT_MODEL_LOCAL_VIEWER
-#define GLPT_STATE_TWO_SIDE 2u      // GL_LIGHT_MODEL_TWO_SIDE
+#define GLPT_STATE_LOCAL_VIEWER 1u       // GL_LIGHT_MODEL_LOCAL_VIEWER
+#define GLPT_STATE_TWO_SIDE 2u           // GL_LIGHT_MODEL_TWO_SIDE
 #define GLPT_STATE_SEPARATE_SPECULAR 4u  // GL_SEPARATE_SPECULAR_COLOR (specular not textured)
 
 // FrameUniforms::options.x: what the trace pass models (render_settings.hpp)
@@ -219,7 +241,48 @@ struct FrameUniforms {
   // x: GLPT_OPTION_* bits, y: GLPT_LIGHT_CHOICE_*, z: emitters in the emitter table (0: none
   // emits), w: unused
   uvec4 options;
-  vec4 environment;   // rgb: radiance of rays that miss (GLPT_OPTION_ENVIRONMENT), a: unused
+  vec4 environment;  // rgb: radiance of rays that miss (GLPT_OPTION_ENVIRONMENT), a: unused
+};
+
+// The denoiser's view of one record state (TraceState's history fields).
+struct GpuStateHistory {
+  mat4 to_previous_eye;      // this frame's eye space -> the previous frame's
+  mat4 previous_projection;  // the previous frame's projection
+  vec4 viewport;             // x, y, width, height (GL window pixels)
+  // x: history id (0: no traced draw, 1: no identity), y: 1 when the matrices are valid
+  uvec4 info;
+};
+
+// Per pixel of the denoiser's G-buffer copy: what the next frame's reprojection tests taps on.
+struct DenoiseGuide {
+  vec4 eye;    // xyz: eye-space position; w: 0 for no denoised surface here
+  uvec4 meta;  // x: history id, y: history length (frames), z: packed shading normal, w: unused
+};
+
+// Per pixel and channel c: colour[c] rgb = the temporally filtered colour (the a-trous filter's
+// first iteration, fed back as in the SVGF paper), a = first luminance moment; fast[c] rgb = a
+// short exponential average of the raw colour (the clamp against stale light), a = second moment.
+struct DenoiseHistory {
+  vec4 colour[3];
+  vec4 fast[3];
+};
+
+struct DenoiseUniforms {
+  // x, y: image size, z: GLPT_DN_* flags, w: a-trous iterations
+  uvec4 image;
+  // x: colour alpha, y: moments alpha, z: fast-history alpha, w: fast-clamp width in standard
+  // deviations (0: off)
+  vec4 temporal;
+  // x: sigma depth, y: sigma normal (exponent), z: sigma luminance, w: kernel radius (1: 3x3,
+  // 2: 5x5)
+  vec4 sigmas;
+  // x: angle one pixel spans (perspective main camera), y: pixel size in eye units (parallel),
+  // z: history length a clamped history falls back to, w: composite: weight of the accumulated
+  // mean against the denoised frame (1: accumulation alone)
+  vec4 params;
+  // xy: this frame's sub-pixel jitter (removed from the reprojection), z: 1 when the composite
+  // reads the denoised colour, w: unused
+  vec4 jitter;
 };
 
 struct GpuCounters {
@@ -238,6 +301,10 @@ static_assert(sizeof(GpuLight) == 112);
 static_assert(sizeof(GpuTraceState) == 112);
 static_assert(sizeof(FrameUniforms) == 80);
 static_assert(sizeof(GpuCounters) == 16);
+static_assert(sizeof(GpuStateHistory) == 160);
+static_assert(sizeof(DenoiseGuide) == 32);
+static_assert(sizeof(DenoiseHistory) == 96);
+static_assert(sizeof(DenoiseUniforms) == 80);
 }  // namespace glpt::rt::gpu
 #endif
 

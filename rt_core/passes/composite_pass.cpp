@@ -21,6 +21,8 @@ constexpr VkDescriptorSetLayoutBinding kBindings[] = {
     compute_binding(GLPT_CO_BINDING_CHANNELS + 2, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
     compute_binding(GLPT_CO_BINDING_FRONT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
     compute_binding(GLPT_CO_BINDING_BACK, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
+    compute_binding(GLPT_CO_BINDING_DENOISED, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
+    compute_binding(GLPT_CO_BINDING_DENOISE, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER),
 };
 static_assert(GLPT_GBUFFER_ATTACHMENTS == 4 && GLPT_CHANNELS == 3);
 
@@ -29,12 +31,15 @@ static_assert(GLPT_GBUFFER_ATTACHMENTS == 4 && GLPT_CHANNELS == 3);
 CompositePass::CompositePass(const VulkanDevice& device)
     : device_(device), pipeline_(device, composite_spv, kBindings) {}
 
-void CompositePass::record(VkCommandBuffer cmd, const CompositeResources& resources,
-                           uint32_t width, uint32_t height) const {
+void CompositePass::record(VkCommandBuffer cmd, const CompositeResources& resources, uint32_t width,
+                           uint32_t height) const {
   const VkDescriptorSet set = pipeline_.descriptor_set();
   const VkDescriptorBufferInfo frame{resources.frame->handle(), 0, sizeof(gpu::FrameUniforms)};
   const VkDescriptorBufferInfo states{resources.states->handle(), 0, VK_WHOLE_SIZE};
   const VkDescriptorBufferInfo accumulation{resources.accumulation->handle(), 0, VK_WHOLE_SIZE};
+  const VkDescriptorBufferInfo denoised{resources.denoised->handle(), 0, VK_WHOLE_SIZE};
+  const VkDescriptorBufferInfo denoise{resources.denoise_uniforms->handle(), 0,
+                                       sizeof(gpu::DenoiseUniforms)};
   VkDescriptorImageInfo images[GLPT_GBUFFER_ATTACHMENTS + GLPT_CHANNELS + 2];
   for (uint32_t i = 0; i < GLPT_GBUFFER_ATTACHMENTS; ++i)
     images[i] = general_image_info(resources.gbuffer[i]);
@@ -55,6 +60,8 @@ void CompositePass::record(VkCommandBuffer cmd, const CompositeResources& resour
       storage_image_write(set, GLPT_CO_BINDING_CHANNELS + 2, &images[6]),
       storage_image_write(set, GLPT_CO_BINDING_FRONT, &images[7]),
       storage_image_write(set, GLPT_CO_BINDING_BACK, &images[8]),
+      storage_buffer_write(set, GLPT_CO_BINDING_DENOISED, &denoised),
+      uniform_buffer_write(set, GLPT_CO_BINDING_DENOISE, &denoise),
   };
   pipeline_.update_and_dispatch(device_.handle(), cmd, writes, width, height);
 }

@@ -18,6 +18,8 @@ struct CompositeResources {
   const GpuBuffer* accumulation = nullptr;  // vec4[2 * width * height]
   std::array<VkImageView, 4> gbuffer{};
   std::array<VkImageView, GLPT_CHANNELS> channels{};
+  const GpuBuffer* denoised = nullptr;          // the denoiser's work slots (any buffer when off)
+  const GpuBuffer* denoise_uniforms = nullptr;  // gpu::DenoiseUniforms (flags 0: not denoised)
   VkImageView front = VK_NULL_HANDLE;  // colour buffers (the same view twice when the drawable
   VkImageView back = VK_NULL_HANDLE;   // is single-buffered)
 };

@@ -12,6 +12,7 @@
 #include <unordered_map>
 
 #include "common/stopwatch.hpp"
+#include "gbuffer_layout.h"
 #include "rt_core/accel/morton_sort.hpp"
 #include "rt_core/raster/sampler_setup.hpp"
 #include "rt_core/vk/gpu_buffer.hpp"
@@ -103,7 +104,10 @@ PathTracer::PathTracer(const RenderSettings& settings, std::shared_ptr<VulkanDev
       blas_cache_(*device_),
       tlas_(*device_),
       trace_pass_(*device_),
-      composite_pass_(*device_) {
+      composite_pass_(*device_),
+      denoiser_(*device_) {
+  denoise_uniforms_ =
+      GpuBuffer::create(*device_, sizeof(gpu::DenoiseUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
   frame_uniforms_ =
       GpuBuffer::create(*device_, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
   counters_ =
@@ -139,6 +143,7 @@ void PathTracer::forget_previous_frame() noexcept {
   accumulated_passes_ = 0;
   frame_samples_ = 0;
   tlas_valid_ = false;
+  denoiser_.forget_history();
 }
 
 void PathTracer::start_independent_frame(uint64_t frame_index) noexcept {
@@ -170,7 +175,8 @@ glm::vec2 PathTracer::begin_frame(FrameSignature signature) {
   }
   previous_signature_ = std::move(signature);
   frame_samples_ = samples_of_next_pass();
-  return jitter_of_next_pass();
+  frame_jitter_ = jitter_of_next_pass();
+  return frame_jitter_;
 }
 
 bool PathTracer::next_reference_pass(glm::vec2* jitter) {
@@ -178,8 +184,51 @@ bool PathTracer::next_reference_pass(glm::vec2* jitter) {
   frame_samples_ = samples_of_next_pass();
   if (frame_samples_ == 0) return false;
   same_scene_ = true;  // the same record again: the TLAS stays
-  *jitter = jitter_of_next_pass();
+  *jitter = frame_jitter_ = jitter_of_next_pass();
   return true;
+}
+
+bool PathTracer::denoises_this_frame() const {
+  const DenoiseSettings& d = settings_.denoise;
+  return d.denoiser == Denoiser::kSvgf && settings_.reference_samples == 0 && frame_samples_ > 0 &&
+         accumulated_samples_ < d.until_samples;
+}
+
+void PathTracer::write_denoise_inputs(const TraceScene& scene, bool denoise, bool history_valid,
+                                      FrameStats& stats) {
+  const DenoiseSettings& d = settings_.denoise;
+  gpu::DenoiseUniforms uniforms{};
+  if (denoise) {
+    uint32_t flags = GLPT_DN_ACTIVE;
+    if (history_valid) flags |= GLPT_DN_HISTORY_VALID;
+    if (settings_.unlit == UnlitPolicy::kAo) flags |= GLPT_DN_UNLIT_AO;
+    uniforms.image = glm::uvec4(scene.width, scene.height, flags, d.iterations);
+    uniforms.temporal = glm::vec4(d.alpha, d.moments_alpha, d.fast_alpha, d.fast_clamp);
+    uniforms.sigmas = glm::vec4(d.sigma_depth, d.sigma_normal, d.sigma_luminance,
+                                static_cast<float>(d.kernel_radius));
+    // A history that was clamped counts as this many frames long.
+    constexpr float kClampedHistoryLength = 4.0f;
+    // The accumulated average takes over linearly as it approaches GLPT_DENOISE_UNTIL samples.
+    const float accumulated_weight =
+        d.until_samples > 0
+            ? static_cast<float>(accumulated_samples_) / static_cast<float>(d.until_samples)
+            : 1.0f;
+    uniforms.params = glm::vec4(scene.pixel_spread, scene.pixel_size_parallel,
+                                kClampedHistoryLength, accumulated_weight);
+    uniforms.jitter = glm::vec4(frame_jitter_, 0.0f, 0.0f);
+    std::vector<gpu::GpuStateHistory> histories(std::max<size_t>(scene.states.size(), 1));
+    for (size_t i = 0; i < scene.states.size(); ++i) {
+      const TraceState& state = scene.states[i];
+      gpu::GpuStateHistory& h = histories[i];
+      h.to_previous_eye = state.to_previous_eye;
+      h.previous_projection = state.previous_projection;
+      h.viewport =
+          glm::vec4(state.viewport[0], state.viewport[1], state.viewport[2], state.viewport[3]);
+      h.info = glm::uvec4(state.history_id, state.has_previous ? 1u : 0u, 0u, 0u);
+    }
+    stats.upload_bytes += upload(*device_, state_histories_, histories);
+  }
+  denoise_uniforms_.write(&uniforms, sizeof uniforms);
 }
 
 void PathTracer::ensure_channels(uint32_t width, uint32_t height) {
@@ -256,10 +305,10 @@ void PathTracer::build_scene_setup(const TraceScene& scene, TextureCache* textur
     tlas_instance.instanceShaderBindingTableRecordOffset = 0;
     // Alpha-tested and clipped draws are not opaque: the queries' candidate loops test each
     // hit's alpha and clip planes.
-    tlas_instance.flags = VK_GEOMETRY_INSTANCE_TRIANGLE_FACING_CULL_DISABLE_BIT_KHR |
-                          (instance.surface.tests_candidates()
-                               ? VK_GEOMETRY_INSTANCE_FORCE_NO_OPAQUE_BIT_KHR
-                               : VK_GEOMETRY_INSTANCE_FORCE_OPAQUE_BIT_KHR);
+    tlas_instance.flags =
+        VK_GEOMETRY_INSTANCE_TRIANGLE_FACING_CULL_DISABLE_BIT_KHR |
+        (instance.surface.tests_candidates() ? VK_GEOMETRY_INSTANCE_FORCE_NO_OPAQUE_BIT_KHR
+                                             : VK_GEOMETRY_INSTANCE_FORCE_OPAQUE_BIT_KHR);
     tlas_instance.accelerationStructureReference = entry->blas_address;
     setup.tlas_instances.push_back(tlas_instance);
 
@@ -297,7 +346,8 @@ void PathTracer::build_scene_setup(const TraceScene& scene, TextureCache* textur
 }
 
 uint32_t PathTracer::add_emitters(std::span<const EmitterTriangle> triangles,
-                                  const glm::mat4& modelview, std::vector<gpu::GpuEmitter>& emitters) {
+                                  const glm::mat4& modelview,
+                                  std::vector<gpu::GpuEmitter>& emitters) {
   if (triangles.empty() || emitters.size() + triangles.size() > GLPT_MAX_EMITTERS) return 0;
   const uint32_t first = static_cast<uint32_t>(emitters.size());
   for (const EmitterTriangle& triangle : triangles) {
@@ -306,7 +356,8 @@ uint32_t PathTracer::add_emitters(std::span<const EmitterTriangle> triangles,
     for (int corner = 0; corner < 3; ++corner)
       p[corner] = glm::vec3(modelview * glm::vec4(triangle.positions[corner], 1.0f));
     const float area = 0.5f * glm::length(glm::cross(p[1] - p[0], p[2] - p[0]));
-    const glm::vec3 mean = (triangle.emission[0] + triangle.emission[1] + triangle.emission[2]) / 3.0f;
+    const glm::vec3 mean =
+        (triangle.emission[0] + triangle.emission[1] + triangle.emission[2]) / 3.0f;
     float power = area * glm::dot(mean, glm::vec3(0.2126f, 0.7152f, 0.0722f));  // luminance
     // Degenerate or non-finite triangles are never chosen (power 0) and have no density.
     if (!std::isfinite(power) || !(area > 0.0f)) power = 0.0f;
@@ -409,16 +460,16 @@ void PathTracer::trace(const TraceScene& scene, const TraceTargets& targets, Fra
   ensure_channels(scene.width, scene.height);
   gpu::FrameUniforms uniforms{};
   // The seed changes every frame so accumulated frames (and restarted ones) see new samples.
-  uniforms.image = glm::uvec4(scene.width, scene.height, scene.default_targets,
-                              static_cast<uint32_t>(
-                                  (seeded_by_frame_index_ ? seed_frame_index_ : frame_number_) *
-                                  0x9E3779B9u));
+  uniforms.image =
+      glm::uvec4(scene.width, scene.height, scene.default_targets,
+                 static_cast<uint32_t>(
+                     (seeded_by_frame_index_ ? seed_frame_index_ : frame_number_) * 0x9E3779B9u));
   uniforms.sampling = glm::uvec4(accumulated_samples_, frame_samples_, settings_.bounces,
                                  accumulated_samples_ + frame_samples_);
   const float angle = glm::radians(settings_.light_angular_radius_deg);
   const float half_sin = std::sin(0.5f * angle);
-  uniforms.params =
-      glm::vec4(settings_.ao_radius, std::cos(angle), 2.0f * half_sin * half_sin, scene.pixel_spread);
+  uniforms.params = glm::vec4(settings_.ao_radius, std::cos(angle), 2.0f * half_sin * half_sin,
+                              scene.pixel_spread);
   uniforms.options = glm::uvec4(options_bits(settings_) | (any_sky ? GLPT_OPTION_SKY : 0u),
                                 static_cast<uint32_t>(settings_.light_choice), emitter_count, 0u);
   uniforms.environment = scene.clear_color;
@@ -437,8 +488,14 @@ void PathTracer::trace(const TraceScene& scene, const TraceTargets& targets, Fra
     tlas_valid_ = true;
   }
 
+  const bool denoise = denoises_this_frame();
+  bool history_valid = false;
+  if (denoise) history_valid = denoiser_.prepare(scene.width, scene.height, targets.history_owner);
+  write_denoise_inputs(scene, denoise, history_valid, stats);
+
   // ---- trace, then composite, in one submission (also when no sample is left to add: the
-  // composite pass writes the accumulated image)
+  // composite pass writes the accumulated image); with the denoiser between them, three
+  // submissions, each timed on its own
   PathTraceResources trace;
   trace.scene = tlas_.handle();
   trace.instances = &instance_table_;
@@ -468,20 +525,51 @@ void PathTracer::trace(const TraceScene& scene, const TraceTargets& targets, Fra
   composite.accumulation = &accumulation_;
   for (int a = 0; a < GLPT_GBUFFER_ATTACHMENTS; ++a)
     trace.gbuffer[a] = composite.gbuffer[a] = targets.gbuffer->image(a).view();
-  for (int c = 0; c < GLPT_CHANNELS; ++c) trace.channels[c] = composite.channels[c] = channels_[c].view();
+  for (int c = 0; c < GLPT_CHANNELS; ++c)
+    trace.channels[c] = composite.channels[c] = channels_[c].view();
   composite.front = targets.front;
   composite.back = targets.back;
-  trace_ticket_ = device_->submit([&](VkCommandBuffer cmd) {
-    trace_pass_.record(cmd, trace, scene.width, scene.height);
-    // The composite pass reads the channels the trace pass wrote.
-    VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER, nullptr, VK_ACCESS_SHADER_WRITE_BIT,
-                            VK_ACCESS_SHADER_READ_BIT};
+  composite.denoised = denoise ? &denoiser_.work() : &accumulation_;
+  composite.denoise_uniforms = &denoise_uniforms_;
+  // Each pass reads what the one before wrote (also across submissions: a barrier's first scope
+  // covers earlier submissions to the queue).
+  auto barrier = [](VkCommandBuffer cmd) {
+    VkMemoryBarrier memory{VK_STRUCTURE_TYPE_MEMORY_BARRIER, nullptr, VK_ACCESS_SHADER_WRITE_BIT,
+                           VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT};
     vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                         VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &barrier, 0, nullptr, 0,
+                         VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &memory, 0, nullptr, 0,
                          nullptr);
-    composite_pass_.record(cmd, composite, scene.width, scene.height);
-  });
-  unreported_.push_back({trace_ticket_, &FrameStats::trace_ms});
+  };
+  if (!denoise) {
+    trace_ticket_ = device_->submit([&](VkCommandBuffer cmd) {
+      trace_pass_.record(cmd, trace, scene.width, scene.height);
+      barrier(cmd);
+      composite_pass_.record(cmd, composite, scene.width, scene.height);
+    });
+    unreported_.push_back({trace_ticket_, &FrameStats::trace_ms});
+  } else {
+    DenoiseResources resources;
+    resources.uniforms = &denoise_uniforms_;
+    resources.states = &state_histories_;
+    resources.position = targets.gbuffer->image(GLPT_GBUFFER_POSITION).view();
+    resources.surface = targets.gbuffer->image(GLPT_GBUFFER_SURFACE).view();
+    for (int c = 0; c < GLPT_CHANNELS; ++c) resources.channels[c] = channels_[c].view();
+    unreported_.push_back({device_->submit([&](VkCommandBuffer cmd) {
+                             trace_pass_.record(cmd, trace, scene.width, scene.height);
+                           }),
+                           &FrameStats::trace_ms});
+    unreported_.push_back({device_->submit([&](VkCommandBuffer cmd) {
+                             barrier(cmd);
+                             denoiser_.record(cmd, resources, settings_.denoise.iterations);
+                           }),
+                           &FrameStats::denoise_ms});
+    trace_ticket_ = device_->submit([&](VkCommandBuffer cmd) {
+      barrier(cmd);
+      composite_pass_.record(cmd, composite, scene.width, scene.height);
+    });
+    unreported_.push_back({trace_ticket_, &FrameStats::composite_ms});
+    stats.denoised = 1;
+  }
   counters_read_ = false;
   accumulated_samples_ += frame_samples_;
   if (frame_samples_ > 0) ++accumulated_passes_;

@@ -19,6 +19,7 @@
 #include "rt_core/passes/composite_pass.hpp"
 #include "rt_core/passes/gbuffer.hpp"
 #include "rt_core/passes/path_trace_pass.hpp"
+#include "rt_core/passes/svgf_denoiser.hpp"
 #include "rt_core/raster/texture_cache.hpp"
 #include "rt_core/render_settings.hpp"
 #include "rt_core/scene/frame_signature.hpp"
@@ -36,6 +37,8 @@ struct TraceTargets {
   TextureCache* textures = nullptr;
   VkImageView front = VK_NULL_HANDLE;  // colour buffers (front twice when single-buffered)
   VkImageView back = VK_NULL_HANDLE;
+  // Whose frame this is (the drawable): the denoiser's history belongs to one.
+  const void* history_owner = nullptr;
 };
 
 class PathTracer {
@@ -96,6 +99,13 @@ class PathTracer {
     uint64_t triangles = 0;
   };
   void build_scene_setup(const TraceScene& scene, TextureCache* textures, SceneSetup& setup) const;
+  // Whether this frame's samples are denoised: SVGF on, samples to add, no reference, and the
+  // accumulation (if any) not yet at GLPT_DENOISE_UNTIL.
+  bool denoises_this_frame() const;
+  // Writes the denoiser's uniforms (flags 0 when `denoise` is false: the composite shows the
+  // raw samples) and, when denoising, the per-state histories of `scene`.
+  void write_denoise_inputs(const TraceScene& scene, bool denoise, bool history_valid,
+                            FrameStats& stats);
   void ensure_channels(uint32_t width, uint32_t height);
   // The samples per pixel of the next pass: GLPT_SPP, or a reference's share.
   uint32_t samples_of_next_pass() const;
@@ -124,6 +134,10 @@ class PathTracer {
   Tlas tlas_;
   PathTracePass trace_pass_;
   CompositePass composite_pass_;
+  SvgfDenoiser denoiser_;
+  GpuBuffer denoise_uniforms_;
+  GpuBuffer state_histories_;
+  glm::vec2 frame_jitter_{0.0f};                  // of the G-buffer pass the next trace reads
   std::array<GpuImage, GLPT_CHANNELS> channels_;  // this frame's radiance (trace -> composite)
   uint32_t channels_width_ = 0, channels_height_ = 0;
   GpuBuffer frame_uniforms_;

@@ -483,7 +483,9 @@ void classify_frame(const rec::FrameRecord& record, const rec::DrawableConfig& d
   }
   out.identities.assign(out.prints.size(), DrawIdentity());
   if (identities != nullptr) identities->match(out.prints, out.identities);
+  out.identity_of.assign(n, -1);
   for (size_t k = 0; k < printed.size(); ++k) {
+    out.identity_of[printed[k]] = static_cast<int32_t>(k);
     CommandLabel& label = out.labels[printed[k]];
     label.id = out.identities[k].id;
     label.calls = 1;
@@ -620,9 +622,9 @@ void classify_frame(const rec::FrameRecord& record, const rec::DrawableConfig& d
     if (!blended && world_started && out.camera.valid && same_viewport &&
         (own_depth_range || (own_projection && depth_cleared_in_world))) {
       // Traced in its own depth range and projection when it could be traced at all.
-      set(DrawKind::kViewmodel,
-          cls == DrawClass::kTraced || cls == DrawClass::kOtherCamera ? DrawClass::kViewmodel
-                                                                      : cls);
+      set(DrawKind::kViewmodel, cls == DrawClass::kTraced || cls == DrawClass::kOtherCamera
+                                    ? DrawClass::kViewmodel
+                                    : cls);
       continue;
     }
     const rec::PrimitiveState& primitive = state.raster->primitive;

@@ -76,7 +76,8 @@ struct FrameClassification {
   MainCamera camera;
   std::vector<DrawClass> classes;        // per command (kNotTriangles for non-draws)
   std::vector<CommandLabel> labels;      // per command
-  std::vector<DrawIdentity> identities;  // scratch
+  std::vector<DrawIdentity> identities;  // per fingerprinted command (see identity_of)
+  std::vector<int32_t> identity_of;      // per command: its index in identities, -1: none
   std::vector<DrawFingerprint> prints;   // scratch
 };
 

@@ -91,6 +91,7 @@ DrawFingerprint fingerprint_of(const rec::Draw& draw, const rec::StateSnapshot& 
   camera.add_bytes(&state.transform->viewport, sizeof state.transform->viewport);
   print.camera = camera.value();
   print.modelview = state.transform->modelview;
+  print.projection = state.transform->projection;
   print.bounded = keys.bounded();
   if (print.bounded) {
     print.object_min = keys.bounds_min;
@@ -307,7 +308,8 @@ void DrawIdentities::match_unguarded(std::span<const DrawFingerprint> draws,
   for (size_t i = 0; i < draws.size(); ++i) {
     if (pairs[i] < 0) continue;
     const Entry& before = previous_[static_cast<size_t>(pairs[i])];
-    out[i] = {before.id, same_place(before, now[i]) ? DrawMotion::kStatic : DrawMotion::kMoving};
+    out[i] = {before.id, same_place(before, now[i]) ? DrawMotion::kStatic : DrawMotion::kMoving,
+              true, before.print.modelview, before.print.projection};
   }
 
   // 2. Same topology and appearance, new positions: the nearest within its size.
@@ -329,7 +331,9 @@ void DrawIdentities::match_unguarded(std::span<const DrawFingerprint> draws,
     }
     if (partner < 0) continue;
     previous_taken_[static_cast<size_t>(partner)] = 1;
-    out[i] = {previous_[static_cast<size_t>(partner)].id, DrawMotion::kDeforming};
+    const Entry& before = previous_[static_cast<size_t>(partner)];
+    out[i] = {before.id, DrawMotion::kDeforming, true, before.print.modelview,
+              before.print.projection};
   }
 
   // 3. Draws seen before the last frame: by geometry (the nearest), else by look within their
@@ -357,13 +361,13 @@ void DrawIdentities::match_unguarded(std::span<const DrawFingerprint> draws,
     if (found < 0)
       consider(lost_by_look_, draws[i].topology ^ draws[i].appearance, kSameObjectDistance);
     if (found < 0) continue;
-    out[i] = {lost_[static_cast<size_t>(found)].id, DrawMotion::kNew};
+    out[i].id = lost_[static_cast<size_t>(found)].id;
     lost_[static_cast<size_t>(found)].id = 0;  // taken: erased at end_frame
   }
 
   // 4. New ids.
   for (size_t i = 0; i < draws.size(); ++i) {
-    if (out[i].id == 0) out[i] = {next_id_++, DrawMotion::kNew};
+    if (out[i].id == 0) out[i].id = next_id_++;
     now[i].id = out[i].id;
     current_.push_back(std::move(now[i]));
   }

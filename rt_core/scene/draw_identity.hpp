@@ -50,6 +50,7 @@ struct DrawFingerprint {
   uint64_t appearance = 0;  // textures bound, blending, lighting and material, faces drawn
   uint64_t camera = 0;      // projection and viewport: each view has its own camera motion
   glm::mat4 modelview{1.0f};
+  glm::mat4 projection{1.0f};  // where the draw's pixels were (the denoiser's reprojection)
   glm::vec3 object_min{0.0f}, object_max{0.0f};  // object-space box (bounded only)
   bool bounded = false;
 };
@@ -58,6 +59,11 @@ DrawFingerprint fingerprint_of(const rec::Draw& draw, const rec::StateSnapshot& 
 struct DrawIdentity {
   uint64_t id = 0;  // stable while the draw exists; ids are never reused
   DrawMotion motion = DrawMotion::kNew;
+  // Matched to a draw of the previous frame (kStatic, kMoving, kDeforming): its transforms, from
+  // which the denoiser finds where this draw's surfaces were on screen.
+  bool has_previous = false;
+  glm::mat4 previous_modelview{1.0f};
+  glm::mat4 previous_projection{1.0f};
 };
 
 class DrawIdentities {

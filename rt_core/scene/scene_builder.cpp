@@ -67,9 +67,9 @@ Light light_of(const rec::Light& l) {
 // a batch of draws shares the lights of its instance.
 bool same_light_set(const rec::LightingState& a, const rec::LightingState& b) {
   if (&a == &b) return true;
-  if (a.enabled != b.enabled || a.light_mask != b.light_mask || a.model_ambient != b.model_ambient ||
-      a.two_side != b.two_side || a.local_viewer != b.local_viewer ||
-      a.separate_specular != b.separate_specular)
+  if (a.enabled != b.enabled || a.light_mask != b.light_mask ||
+      a.model_ambient != b.model_ambient || a.two_side != b.two_side ||
+      a.local_viewer != b.local_viewer || a.separate_specular != b.separate_specular)
     return false;
   for (int l = 0; l < rec::kMaxLights; ++l)
     if ((a.light_mask & (1u << l)) && !(a.lights[l] == b.lights[l])) return false;
@@ -140,8 +140,9 @@ glm::vec4 texcoord_of(const rec::VertexData& v, uint32_t src, size_t u,
   glm::vec4 tc = rec::attribute_at(v.tex_coord[u], src, glm::vec4(0, 0, 0, 1));
   if (unit.texgen_mask != 0) {
     const glm::vec4 object = v.position[src];
-    tc = rec::generate_tex_coord(unit.texgen_mask, unit.texgen, object, transform.modelview * object,
-                                 eye_normal_of(v, src, transform), tc);
+    tc =
+        rec::generate_tex_coord(unit.texgen_mask, unit.texgen, object, transform.modelview * object,
+                                eye_normal_of(v, src, transform), tc);
   }
   return unit.matrix * tc;
 }
@@ -390,6 +391,30 @@ uint32_t light_index(std::vector<Light>& lights, const Light& light) {
   return static_cast<uint32_t>(lights.size() - 1);
 }
 
+// The denoiser's history of a state (TraceState::history_id and the previous transforms) from
+// its first traced draw's identity (null: none).
+void set_history(const rec::StateSnapshot& state, const DrawIdentity* identity, TraceState& t) {
+  const rec::TransformState& transform = *state.transform;
+  t.viewport = transform.viewport;
+  // Ids fold to 32 bits; 1 is a traced state without identity (no history across frames), so a
+  // folded id is at least 2.
+  t.history_id = 1;
+  if (identity == nullptr || identity->id == 0) return;
+  t.history_id = static_cast<uint32_t>(identity->id ^ (identity->id >> 32));
+  if (t.history_id < 2) t.history_id += 2;
+  if (!identity->has_previous) return;
+  const glm::dmat4 current(transform.modelview);
+  const double det = glm::determinant(current);
+  if (!std::isfinite(det) || std::abs(det) < 1e-12) return;
+  const glm::mat4 to_previous(glm::dmat4(identity->previous_modelview) * glm::inverse(current));
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r)
+      if (!std::isfinite(to_previous[c][r])) return;
+  t.has_previous = true;
+  t.to_previous_eye = to_previous;
+  t.previous_projection = identity->previous_projection;
+}
+
 }  // namespace
 
 glm::vec4 viewer_of_projection(const glm::mat4& projection) {
@@ -445,6 +470,9 @@ void build_trace_scene(const rec::FrameRecord& record, const rec::DrawableConfig
       camera.projection[1][1] != 0.0f)
     scene.pixel_spread =
         std::abs(2.0f / (camera.projection[1][1] * static_cast<float>(camera.viewport[3])));
+  else if (camera.valid && camera.viewport[3] > 0 && camera.projection[1][1] != 0.0f)
+    scene.pixel_size_parallel =
+        std::abs(2.0f / (camera.projection[1][1] * static_cast<float>(camera.viewport[3])));
   // Modulating passes folded into the traced draws they redraw (classify.hpp, folds_onto).
   std::vector<std::vector<size_t>> passes_onto(record.commands.size());
   for (size_t i = 0; i < classification->labels.size() && i < record.commands.size(); ++i)
@@ -485,6 +513,12 @@ void build_trace_scene(const rec::FrameRecord& record, const rec::DrawableConfig
     out.traced[i] = 1;
     out.gbuffer_pass.push_back(i);
     state_used[draw->state] = 1;
+    if (scene.states[draw->state].history_id == 0) {
+      const int32_t k =
+          i < classification->identity_of.size() ? classification->identity_of[i] : -1;
+      set_history(state, k >= 0 ? &classification->identities[static_cast<size_t>(k)] : nullptr,
+                  scene.states[draw->state]);
+    }
     // A view model is drawn into the G-buffer in its own depth range and projection and lit by
     // rays, but is no geometry for them: it casts no shadow on the world (nor on itself).
     if (viewmodel) continue;

@@ -51,8 +51,8 @@ struct Material {
 // transform), whose instance transform is then the identity.
 struct Geometry {
   std::vector<glm::vec3> positions;
-  std::vector<glm::vec3> normals;      // not necessarily unit length
-  std::vector<glm::vec4> colors;       // current colour per vertex (used per color_source)
+  std::vector<glm::vec3> normals;  // not necessarily unit length
+  std::vector<glm::vec4> colors;   // current colour per vertex (used per color_source)
   // Each texture unit's coordinates per vertex after texgen and the texture matrix (empty when
   // the geometry's draws have no texture on that unit).
   std::array<std::vector<glm::vec4>, rec::kMaxTextureUnits> texcoords;
@@ -89,7 +89,7 @@ struct TracedUnit {
 struct TracedSurface {
   static constexpr size_t kUnits = rec::kMaxTextureUnits;
   std::array<TracedUnit, kUnits> units;
-  uint32_t alpha_func = 0;        // GL alpha test function, 0 when the alpha test is off
+  uint32_t alpha_func = 0;  // GL alpha test function, 0 when the alpha test is off
   float alpha_ref = 0.0f;
   // The enabled GL_CLIP_PLANEi in eye space, packed (the first clip_plane_count are used, the
   // rest stay zero so equal clipping compares equal).
@@ -148,6 +148,18 @@ struct TraceState {
   // GL_LIGHT_MODEL_COLOR_CONTROL is GL_SEPARATE_SPECULAR_COLOR: specular is added after
   // texturing (GL_SINGLE_COLOR: the texture environment applies to it too).
   bool separate_specular = false;
+  // What the denoiser needs to find the state's pixels in the previous frame
+  // (shaders/svgf_temporal.comp), from the identity of its first traced draw: history_id names
+  // the object (a history is only taken from pixels of the same id); 0 for states with no traced
+  // draw. With has_previous, to_previous_eye maps this frame's eye space to the previous frame's
+  // (previous modelview x inverse of this one: a static object under a moving camera follows the
+  // camera, a moving object its own motion), where previous_projection and viewport place it on
+  // screen.
+  uint32_t history_id = 0;
+  bool has_previous = false;
+  glm::mat4 to_previous_eye{1.0f};
+  glm::mat4 previous_projection{1.0f};
+  std::array<int32_t, 4> viewport{0, 0, 0, 0};
 };
 
 struct TraceScene {
@@ -166,6 +178,9 @@ struct TraceScene {
   // The angle one pixel spans at the main camera (0 for parallel projections): the spread of the
   // ray cones that choose texture levels at bounce hits.
   float pixel_spread = 0.0f;
+  // The size of one pixel in eye-space units under a parallel main camera (0 for perspective):
+  // the denoiser's depth tolerance.
+  float pixel_size_parallel = 0.0f;
 };
 
 }  // namespace glpt::rt

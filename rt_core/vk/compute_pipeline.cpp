@@ -10,7 +10,8 @@
 namespace glpt::rt {
 
 ComputePipeline::ComputePipeline(const VulkanDevice& device, std::span<const uint32_t> spirv,
-                                 std::span<const VkDescriptorSetLayoutBinding> bindings) {
+                                 std::span<const VkDescriptorSetLayoutBinding> bindings,
+                                 uint32_t push_constant_bytes) {
   VkDevice vk_device = device.handle();
 
   auto set_layout_info = make_info<VkDescriptorSetLayoutCreateInfo>(
@@ -25,6 +26,11 @@ ComputePipeline::ComputePipeline(const VulkanDevice& device, std::span<const uin
       make_info<VkPipelineLayoutCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO);
   layout_info.setLayoutCount = 1;
   layout_info.pSetLayouts = &set_layout;
+  const VkPushConstantRange push_range{VK_SHADER_STAGE_COMPUTE_BIT, 0, push_constant_bytes};
+  if (push_constant_bytes > 0) {
+    layout_info.pushConstantRangeCount = 1;
+    layout_info.pPushConstantRanges = &push_range;
+  }
   VkPipelineLayout layout = VK_NULL_HANDLE;
   GLPT_VK_CHECK(vkCreatePipelineLayout(vk_device, &layout_info, nullptr, &layout));
   layout_ = vk::PipelineLayout(layout, {vk_device});
@@ -77,6 +83,22 @@ void ComputePipeline::update_and_dispatch(VkDevice device, VkCommandBuffer cmd,
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_.get());
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.get(), 0, 1,
                           &descriptor_set_, 0, nullptr);
+  vkCmdDispatch(cmd, (width + GLPT_TILE_SIZE - 1) / GLPT_TILE_SIZE,
+                (height + GLPT_TILE_SIZE - 1) / GLPT_TILE_SIZE, 1);
+}
+
+void ComputePipeline::update(VkDevice device, std::span<const VkWriteDescriptorSet> writes) const {
+  vkUpdateDescriptorSets(device, static_cast<uint32_t>(writes.size()), writes.data(), 0, nullptr);
+}
+
+void ComputePipeline::dispatch(VkCommandBuffer cmd, const void* push_constants, uint32_t push_bytes,
+                               uint32_t width, uint32_t height) const {
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_.get());
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.get(), 0, 1,
+                          &descriptor_set_, 0, nullptr);
+  if (push_bytes > 0)
+    vkCmdPushConstants(cmd, layout_.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0, push_bytes,
+                       push_constants);
   vkCmdDispatch(cmd, (width + GLPT_TILE_SIZE - 1) / GLPT_TILE_SIZE,
                 (height + GLPT_TILE_SIZE - 1) / GLPT_TILE_SIZE, 1);
 }

@@ -12,9 +12,11 @@ namespace glpt::rt {
 
 class ComputePipeline {
  public:
-  // `bindings` are all compute-stage bindings of set 0. Throws VulkanError.
+  // `bindings` are all compute-stage bindings of set 0; `push_constant_bytes` of push constants
+  // (0: none). Throws VulkanError.
   ComputePipeline(const VulkanDevice& device, std::span<const uint32_t> spirv,
-                  std::span<const VkDescriptorSetLayoutBinding> bindings);
+                  std::span<const VkDescriptorSetLayoutBinding> bindings,
+                  uint32_t push_constant_bytes = 0);
 
   VkPipeline pipeline() const { return pipeline_.get(); }
   VkPipelineLayout layout() const { return layout_.get(); }
@@ -25,6 +27,11 @@ class ComputePipeline {
   void update_and_dispatch(VkDevice device, VkCommandBuffer cmd,
                            std::span<const VkWriteDescriptorSet> writes, uint32_t width,
                            uint32_t height) const;
+  // The same in steps, for passes dispatched several times with other push constants: write the
+  // set once, then bind and dispatch (with push) per iteration.
+  void update(VkDevice device, std::span<const VkWriteDescriptorSet> writes) const;
+  void dispatch(VkCommandBuffer cmd, const void* push_constants, uint32_t push_bytes,
+                uint32_t width, uint32_t height) const;
 
  private:
   vk::DescriptorSetLayout set_layout_;

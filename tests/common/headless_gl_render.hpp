@@ -47,7 +47,8 @@ inline std::vector<uint8_t> render_headless(int size, const Settings& settings,
   }
   glReadPixels(0, 0, size, size, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
   EXPECT_EQ(glGetError(), GLenum{GL_NO_ERROR});
-  if (stats != nullptr) *stats = context->output ? context->output->last_frame_stats() : rt::FrameStats{};
+  if (stats != nullptr)
+    *stats = context->output ? context->output->last_frame_stats() : rt::FrameStats{};
   if (const char* dir = std::getenv("GLPT_TEST_IMAGES")) {
     const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
     const std::string path = std::string(dir) + "/" + test->name() + "_" + tag + ".png";
@@ -57,6 +58,35 @@ inline std::vector<uint8_t> render_headless(int size, const Settings& settings,
   context.reset();
   for (const auto& [name, value] : settings) ::unsetenv(name);
   return rgba;
+}
+
+// Draws `scene(frame)` for frame = 0 .. frames - 1 (each ended by glFinish) on one fresh
+// single-buffered size x size context with `settings` and reads every frame back (rows from the
+// bottom): for what changes from frame to frame (the denoiser's history, accumulation).
+// `stats`, if given, gets each frame's costs and counts.
+inline std::vector<std::vector<uint8_t>> render_headless_frames(
+    int size, const Settings& settings, const std::function<void(int)>& scene, int frames,
+    std::vector<rt::FrameStats>* stats = nullptr) {
+  for (const auto& [name, value] : settings) ::setenv(name, value.c_str(), 1);
+  rec::DrawableConfig config;
+  config.double_buffered = false;
+  auto target = std::make_unique<HeadlessTarget>(size, size, config);
+  auto context = std::make_unique<Context>(nullptr);
+  make_current_headless(*context, *target);
+  std::vector<std::vector<uint8_t>> images;
+  for (int frame = 0; frame < frames; ++frame) {
+    scene(frame);
+    glFinish();
+    std::vector<uint8_t>& rgba = images.emplace_back(size_t(size) * size_t(size) * 4);
+    glReadPixels(0, 0, size, size, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+    if (stats != nullptr)
+      stats->push_back(context->output ? context->output->last_frame_stats() : rt::FrameStats{});
+  }
+  EXPECT_EQ(glGetError(), GLenum{GL_NO_ERROR});
+  set_current_context(nullptr);
+  context.reset();
+  for (const auto& [name, value] : settings) ::unsetenv(name);
+  return images;
 }
 
 }  // namespace glpt::test

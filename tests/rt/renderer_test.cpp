@@ -62,6 +62,9 @@ std::unique_ptr<Renderer> make_renderer(RenderSettings settings, std::string* er
   settings.mode = RenderMode::kPathTraced;
   // GLPT_VALIDATION=1 in the environment runs these tests under the validation layer.
   settings.validation = RenderSettings::from_environment().validation;
+  // These tests check what the tracer computes per pixel; the denoiser has its own
+  // (tests/denoiser).
+  settings.denoise.denoiser = Denoiser::kOff;
   return Renderer::create(settings, error);
 }
 
@@ -180,7 +183,8 @@ TEST_F(RenderTest, PassesOfAFrameFollowEachOtherWithoutTheHostWaiting) {
     FrameStats stats;
     // As the shim asks: with room for occlusion query results (none counted here).
     std::vector<QuerySamples> queries;
-    ASSERT_TRUE(renderer_->execute(b.record, *buffers, b.drawable, stats, &error, nullptr, &queries))
+    ASSERT_TRUE(
+        renderer_->execute(b.record, *buffers, b.drawable, stats, &error, nullptr, &queries))
         << error;
     EXPECT_GE(stats.blas_builds, 1u) << "frame " << frame;
     EXPECT_GT(stats.rays, 0u) << "frame " << frame << ": counted once the frame completed";
@@ -680,7 +684,8 @@ TEST(ClassifyDraws, TheSkyAroundTheCameraIsNotTracedAndTheWorldIs) {
   b.raster.ops.depth_write = false;
   const std::vector<glm::vec3> sky = box_faces(glm::vec3(-50.0f), glm::vec3(50.0f));
   for (size_t face = 0; face < 6; ++face)
-    b.draw(GL_QUADS, {sky.begin() + 4 * face, sky.begin() + 4 * face + 4}, {0, 0, 1}, glm::vec4(0.5f));
+    b.draw(GL_QUADS, {sky.begin() + 4 * face, sky.begin() + 4 * face + 4}, {0, 0, 1},
+           glm::vec4(0.5f));
   b.raster.ops.depth_write = true;
   b.directional_light(0, {0, 1, 0});
   b.quad({-4, -1, -2}, {8, 0, 0}, {0, 0, -8}, glm::vec4(1));  // 7: the lit floor: traced
@@ -722,7 +727,8 @@ TEST_F(RenderTest, AStillSceneBuildsNothingAfterItsFirstFrameAndACameraMoveNoBla
   // updated TLAS, and the world stays static.
   RecordBuilder b = base_frame();
   b.directional_light(0, {0, 0, 1});
-  for (int k = 0; k < 3; ++k) b.quad({-2.0f + 1.5f * k, -1, -4}, {1, 0, 0}, {0, 1, 0}, glm::vec4(1));
+  for (int k = 0; k < 3; ++k)
+    b.quad({-2.0f + 1.5f * k, -1, -4}, {1, 0, 0}, {0, 1, 0}, glm::vec4(1));
   const std::shared_ptr<DrawableBuffers> buffers = create_drawable_buffers();
   const FrameEnd end;  // each execute ends a frame
   auto frame = [&](const RecordBuilder& record) {
@@ -783,7 +789,8 @@ TEST_F(RenderTest, StatsCountTheDrawsOfEachClass) {
   b.raster.ops.depth_write = false;
   const std::vector<glm::vec3> sky = box_faces(glm::vec3(-50.0f), glm::vec3(50.0f));
   for (size_t face = 0; face < 6; ++face)
-    b.draw(GL_QUADS, {sky.begin() + 4 * face, sky.begin() + 4 * face + 4}, {0, 0, 1}, glm::vec4(0.5f));
+    b.draw(GL_QUADS, {sky.begin() + 4 * face, sky.begin() + 4 * face + 4}, {0, 0, 1},
+           glm::vec4(0.5f));
   b.raster.ops.depth_write = true;
   b.directional_light(0, {0, 0, 1});
   b.quad({-1, -1, -4}, {1, 0, 0}, {0, 1, 0}, glm::vec4(1));

@@ -1,0 +1,59 @@
+// SVGF (Schied et al., "Spatiotemporal Variance-Guided Filtering", HPG 2017) over the trace
+// pass's three radiance channels: temporal accumulation with reprojection through each draw's
+// previous transforms (shaders/svgf_temporal.comp), then an edge-avoiding a-trous wavelet filter
+// guided by the variance (shaders/svgf_atrous.comp). The composite pass multiplies the albedo
+// back in. docs/denoiser.md has the parameters, the measurements and what differs from the paper.
+//
+// The history (guides and colour/moment histories of the last frame) belongs to one drawable:
+// `prepare` is told whose frame comes, and a new size or owner starts without history.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <memory>
+
+#include "rt_core/vk/compute_pipeline.hpp"
+#include "rt_core/vk/gpu_buffer.hpp"
+#include "rt_core/vk/vk_device.hpp"
+
+namespace glpt::rt {
+
+struct DenoiseResources {
+  const GpuBuffer* uniforms = nullptr;    // gpu::DenoiseUniforms
+  const GpuBuffer* states = nullptr;      // gpu::GpuStateHistory[], per record state
+  VkImageView position = VK_NULL_HANDLE;  // G-buffer POSITION and SURFACE
+  VkImageView surface = VK_NULL_HANDLE;
+  std::array<VkImageView, 3> channels{};  // the raw channels (GLPT_CHANNELS)
+};
+
+class SvgfDenoiser {
+ public:
+  explicit SvgfDenoiser(const VulkanDevice& device) : device_(device) {}
+  SvgfDenoiser(const SvgfDenoiser&) = delete;
+  SvgfDenoiser& operator=(const SvgfDenoiser&) = delete;
+
+  // Sizes the buffers for a width x height frame of `owner`'s (any pointer naming the drawable)
+  // and compiles the passes on first use. Returns whether the previous frame's history can be
+  // reprojected (same size and owner, not forgotten). Throws VulkanError.
+  bool prepare(uint32_t width, uint32_t height, const void* owner);
+  // Records the temporal pass and `iterations` a-trous iterations; the result is in work() at
+  // slot 0 (no iteration) or 1 + (iterations - 1) % 2. This frame's history becomes the
+  // previous one for the next record.
+  void record(VkCommandBuffer cmd, const DenoiseResources& resources, uint32_t iterations);
+  const GpuBuffer& work() const { return work_; }
+  // The next frame starts without history (a failure, a cut the caller knows of).
+  void forget_history() noexcept { history_valid_ = false; }
+
+ private:
+  const VulkanDevice& device_;
+  // Compiled on first use: programs that never denoise never pay for them.
+  std::unique_ptr<ComputePipeline> temporal_, atrous_;
+  std::array<GpuBuffer, 2> guides_, histories_;  // by parity: [parity_] is this frame's
+  GpuBuffer work_;
+  uint32_t width_ = 0, height_ = 0;
+  const void* owner_ = nullptr;
+  bool history_valid_ = false;
+  uint32_t parity_ = 0;
+};
+
+}  // namespace glpt::rt

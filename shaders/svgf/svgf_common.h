@@ -1,0 +1,54 @@
+// What both SVGF passes (svgf_temporal.comp, svgf_atrous.comp) bind and share: the G-buffer, the
+// raw channels, the guides and histories of this and the previous frame, and the work slots
+// (shared_types.h, GLPT_DN_BINDING_*). Schied et al., "Spatiotemporal Variance-Guided Filtering",
+// HPG 2017; docs/denoiser.md says what glpt does differently and why.
+#ifndef GLPT_SHADERS_SVGF_COMMON_H
+#define GLPT_SHADERS_SVGF_COMMON_H
+
+#include "gbuffer_layout.h"
+#include "shared_types.h"
+
+layout(local_size_x = GLPT_TILE_SIZE, local_size_y = GLPT_TILE_SIZE) in;
+
+layout(std140, set = 0, binding = GLPT_DN_BINDING_UNIFORMS) uniform DenoiseBlock {
+  DenoiseUniforms dn;
+};
+layout(std430, set = 0, binding = GLPT_DN_BINDING_STATES) readonly buffer StateHistories {
+  GpuStateHistory state_histories[];
+};
+layout(set = 0, binding = GLPT_DN_BINDING_POSITION, rgba32f) uniform readonly image2D gbuffer_position;
+layout(set = 0, binding = GLPT_DN_BINDING_SURFACE, rgba32ui) uniform readonly uimage2D gbuffer_surface;
+layout(set = 0, binding = GLPT_DN_BINDING_CHANNELS + 0, rgba32f) uniform readonly image2D raw_channel0;
+layout(set = 0, binding = GLPT_DN_BINDING_CHANNELS + 1, rgba32f) uniform readonly image2D raw_channel1;
+layout(set = 0, binding = GLPT_DN_BINDING_CHANNELS + 2, rgba32f) uniform readonly image2D raw_channel2;
+layout(std430, set = 0, binding = GLPT_DN_BINDING_GUIDE) buffer Guide { DenoiseGuide guide[]; };
+layout(std430, set = 0, binding = GLPT_DN_BINDING_GUIDE_PREVIOUS) readonly buffer PreviousGuide {
+  DenoiseGuide previous_guide[];
+};
+layout(std430, set = 0, binding = GLPT_DN_BINDING_HISTORY) buffer History {
+  DenoiseHistory history[];
+};
+layout(std430, set = 0, binding = GLPT_DN_BINDING_HISTORY_PREVIOUS) readonly buffer PreviousHistory {
+  DenoiseHistory previous_history[];
+};
+layout(std430, set = 0, binding = GLPT_DN_BINDING_WORK) buffer Work { vec4 work[]; };
+
+float luminance(vec3 c) { return dot(c, vec3(0.2126, 0.7152, 0.0722)); }
+
+uint pixel_index(ivec2 p) { return uint(p.y) * dn.image.x + uint(p.x); }
+// work[] index of channel c of pixel p in slot s.
+uint work_index(uint slot, uint p, uint c) {
+  return (slot * dn.image.x * dn.image.y + p) * 3u + c;
+}
+
+vec3 raw_channel(ivec2 p, uint c) {
+  return c == 0u ? imageLoad(raw_channel0, p).rgb
+                 : c == 1u ? imageLoad(raw_channel1, p).rgb : imageLoad(raw_channel2, p).rgb;
+}
+
+// The size of one pixel at eye-space position `eye`: what depth tolerances scale with.
+float pixel_footprint(vec3 eye) {
+  return max(dn.params.y, dn.params.x * abs(eye.z)) + 1e-6 * length(eye);
+}
+
+#endif  // GLPT_SHADERS_SVGF_COMMON_H

@@ -1,0 +1,235 @@
+#version 460
+// SVGF, step 1 (Schied et al. 2017, section 4.1): temporal accumulation per channel. Each pixel
+// the tracer shaded is reprojected into the previous frame through its record state's previous
+// transforms (GpuStateHistory: the draw's identity, so a still world under a moving camera keeps
+// its history); the four bilinear taps there are kept only where they show the same object (id),
+// a normal within ~25 degrees and a point within two pixels of the surface's plane (else a 3x3
+// box around the reprojected point, as the paper's fallback; else no history). Colour and the
+// first two luminance moments are exponential averages (alpha, or 1/length while the history is
+// short). Against stale light (a light switched, a moving shadow or highlight), the history is
+// clamped to a fast average of the raw colour (alpha 0.5) plus or minus a few standard deviations
+// of its noise, and a clamped history is shortened so the next frames weigh new samples more
+// (docs/denoiser.md, "No stale light"). Variance: from the moments, or estimated spatially where
+// the history is under four frames long.
+//
+// Writes work slot 0 (colour + variance: the a-trous filter's input), this frame's history
+// (colour = the integrated colour until the first a-trous iteration overwrites it) and guide.
+#extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_shader_image_load_formatted : require
+
+#include "svgf/svgf_common.h"
+
+// Whether the tracer shaded the pixel with samples the denoiser should filter.
+bool shaded(ivec2 q, out uvec4 surface) {
+  surface = imageLoad(gbuffer_surface, q);
+  if (surface.x == 0u || !(imageLoad(raw_channel0, q).a > 0.0)) return false;
+  return (surface.w & GLPT_GBUFFER_LIT) != 0u || (dn.image.z & GLPT_DN_UNLIT_AO) != 0u;
+}
+
+// Whether the previous frame's pixel q shows the point `previous_eye` (the current pixel's
+// surface point in the previous eye space) of object `id` with normal `previous_normal`.
+bool tap_matches(ivec2 q, uint id, vec3 previous_eye, vec3 previous_normal, float tolerance) {
+  if (q.x < 0 || q.y < 0 || q.x >= int(dn.image.x) || q.y >= int(dn.image.y)) return false;
+  DenoiseGuide g = previous_guide[pixel_index(q)];
+  if (g.eye.w == 0.0 || g.meta.x != id) return false;
+  if (dot(previous_normal, gbuffer_unpack_normal(g.meta.z)) < 0.9) return false;
+  return abs(dot(previous_normal, g.eye.xyz - previous_eye)) <= tolerance;
+}
+
+void main() {
+  ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+  if (pixel.x >= int(dn.image.x) || pixel.y >= int(dn.image.y)) return;
+  uint p = pixel_index(pixel);
+  uvec4 surface;
+  if (!shaded(pixel, surface)) {
+    guide[p] = DenoiseGuide(vec4(0.0), uvec4(0u));
+    return;
+  }
+  vec3 eye = imageLoad(gbuffer_position, pixel).xyz;
+  vec3 normal = gbuffer_unpack_normal(surface.y);
+  GpuStateHistory sh = state_histories[surface.x - 1u];
+  uint id = sh.info.x;
+
+  // ---- reprojection into the previous frame
+  vec3 previous_colour[3] = vec3[3](vec3(0.0), vec3(0.0), vec3(0.0));
+  vec3 previous_fast[3] = vec3[3](vec3(0.0), vec3(0.0), vec3(0.0));
+  vec2 previous_moments[3] = vec2[3](vec2(0.0), vec2(0.0), vec2(0.0));
+  float previous_length = 0.0, weight_sum = 0.0;
+  if ((dn.image.z & GLPT_DN_HISTORY_VALID) != 0u && sh.info.y != 0u && id > 1u) {
+    vec4 previous_eye = sh.to_previous_eye * vec4(eye, 1.0);
+    vec4 clip = sh.previous_projection * previous_eye;
+    // Normals go through the inverse transpose (a motion may scale).
+    vec3 previous_normal = normalize(transpose(inverse(mat3(sh.to_previous_eye))) * normal);
+    if (clip.w > 0.0 && !any(isnan(previous_normal))) {
+      previous_eye.xyz /= previous_eye.w;
+      vec2 window = (clip.xy / clip.w * 0.5 + 0.5) * sh.viewport.zw + sh.viewport.xy;
+      // Pixel centres are at +0.5; this frame's sub-pixel jitter is no motion.
+      vec2 position = window - 0.5 - dn.jitter.xy;
+      ivec2 base = ivec2(floor(position));
+      vec2 f = position - vec2(base);
+      float tolerance = 2.0 * pixel_footprint(previous_eye.xyz);
+      float weights[4] = float[4]((1.0 - f.x) * (1.0 - f.y), f.x * (1.0 - f.y), (1.0 - f.x) * f.y,
+                                  f.x * f.y);
+      ivec2 taps[9];
+      float tap_weights[9];
+      uint count = 0u;
+      for (int t = 0; t < 4; ++t) {
+        ivec2 q = base + ivec2(t & 1, t >> 1);
+        if (weights[t] > 0.0 && tap_matches(q, id, previous_eye.xyz, previous_normal, tolerance)) {
+          taps[count] = q;
+          tap_weights[count++] = weights[t];
+        }
+      }
+      if (count == 0u) {
+        ivec2 centre = ivec2(floor(position + 0.5));
+        for (int dy = -1; dy <= 1; ++dy)
+          for (int dx = -1; dx <= 1; ++dx) {
+            ivec2 q = centre + ivec2(dx, dy);
+            if (tap_matches(q, id, previous_eye.xyz, previous_normal, tolerance)) {
+              taps[count] = q;
+              tap_weights[count++] = 1.0;
+            }
+          }
+      }
+      for (uint t = 0u; t < count; ++t) {
+        uint q = pixel_index(taps[t]);
+        float w = tap_weights[t];
+        weight_sum += w;
+        previous_length += w * float(previous_guide[q].meta.y);
+        for (uint c = 0u; c < 3u; ++c) {
+          vec4 colour = previous_history[q].colour[c];
+          vec4 fast = previous_history[q].fast[c];
+          previous_colour[c] += w * colour.rgb;
+          previous_fast[c] += w * fast.rgb;
+          previous_moments[c] += w * vec2(colour.a, fast.a);
+        }
+      }
+    }
+  }
+  bool has_history = weight_sum > 1e-4;
+  float history_length = 1.0;
+  if (has_history) {
+    float inverse_weight = 1.0 / weight_sum;
+    history_length = min(floor(previous_length * inverse_weight + 0.5) + 1.0, 255.0);
+    for (uint c = 0u; c < 3u; ++c) {
+      previous_colour[c] *= inverse_weight;
+      previous_fast[c] *= inverse_weight;
+      previous_moments[c] *= inverse_weight;
+    }
+  }
+
+  // ---- accumulation per channel
+  float fast_alpha = dn.temporal.z;
+  // The standard deviation of an exponential average of alpha a over noise of deviation s is
+  // s * sqrt(a / (2 - a)).
+  float fast_spread = sqrt(fast_alpha / (2.0 - fast_alpha));
+  bool clamped_any = false;
+  // The noise the clamp allows for: the spread of this frame's raw luminance over the 3x3
+  // pixels around (a temporal estimate would count the very step the clamp is to find).
+  float noise_sigma[3] = float[3](0.0, 0.0, 0.0);
+  if (has_history && dn.temporal.w > 0.0) {
+    vec2 sums[3] = vec2[3](vec2(0.0), vec2(0.0), vec2(0.0));
+    float count = 0.0;
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx) {
+        ivec2 q = pixel + ivec2(dx, dy);
+        if (q.x < 0 || q.y < 0 || q.x >= int(dn.image.x) || q.y >= int(dn.image.y)) continue;
+        // Any traced sample counts (no G-buffer read: this runs for every pixel every frame).
+        vec4 direct = imageLoad(raw_channel0, q);
+        if (!(direct.a > 0.0)) continue;
+        count += 1.0;
+        float l0 = luminance(direct.rgb), l1 = luminance(imageLoad(raw_channel1, q).rgb),
+              l2 = luminance(imageLoad(raw_channel2, q).rgb);
+        sums[0] += vec2(l0, l0 * l0);
+        sums[1] += vec2(l1, l1 * l1);
+        sums[2] += vec2(l2, l2 * l2);
+      }
+    for (uint c = 0u; c < 3u; ++c) {
+      vec2 m = sums[c] / max(count, 1.0);
+      noise_sigma[c] = sqrt(max(m.y - m.x * m.x, 0.0));
+    }
+  }
+  float variances[3];
+  vec3 colours[3];
+  for (uint c = 0u; c < 3u; ++c) {
+    vec3 raw = raw_channel(pixel, c);
+    float l = luminance(raw);
+    vec3 colour = raw, fast = raw;
+    vec2 moments = vec2(l, l * l);
+    if (has_history) {
+      vec3 slow = previous_colour[c];
+      vec2 slow_moments = previous_moments[c];
+      fast = mix(previous_fast[c], raw, fast_alpha);
+      float alpha = max(dn.temporal.x, 1.0 / history_length);
+      float moments_alpha = max(dn.temporal.y, 1.0 / history_length);
+      bool clamped = false;
+      if (dn.temporal.w > 0.0) {
+        // In luminance (what the moments measure): the history moves towards the fast average
+        // until its luminance is within the window.
+        float sigma = noise_sigma[c];
+        float fast_l = luminance(fast), slow_l = luminance(slow);
+        float width = dn.temporal.w * sigma * fast_spread + 0.02 * max(fast_l, 0.0);
+        if (abs(slow_l - fast_l) > width) {
+          float t = 1.0 - width / abs(slow_l - fast_l);  // in (0, 1]
+          vec3 kept = mix(slow, fast, t);
+          // Stale light: the history jumps to the fast average's range and counts as short;
+          // its moments move with it, keeping their variance.
+          float variance = max(slow_moments.y - slow_moments.x * slow_moments.x, 0.0);
+          float m1 = luminance(kept);
+          float short_alpha = 1.0 / dn.params.z;
+          colour = mix(kept, raw, max(alpha, short_alpha));
+          moments = mix(vec2(m1, variance + m1 * m1), vec2(l, l * l),
+                        max(moments_alpha, short_alpha));
+          clamped = true;
+        }
+      }
+      if (!clamped) {
+        colour = mix(slow, raw, alpha);
+        moments = mix(slow_moments, vec2(l, l * l), moments_alpha);
+      }
+      clamped_any = clamped_any || clamped;
+    }
+    // Nothing non-finite is kept (the tracer drops such samples; this guards the history).
+    if (any(isnan(colour)) || any(isinf(colour)) || any(isnan(moments)) || any(isinf(moments))) {
+      colour = vec3(0.0);
+      moments = vec2(0.0);
+    }
+    colours[c] = colour;
+    variances[c] = max(moments.y - moments.x * moments.x, 0.0);
+    history[p].colour[c] = vec4(colour, moments.x);
+    history[p].fast[c] = vec4(fast, moments.y);
+  }
+  if (clamped_any) history_length = min(history_length, dn.params.z);
+
+  // ---- variance: spatial where the history is short (the paper's 7x7 bilateral estimate; 5x5
+  // here, weighted by normal and plane distance)
+  if (history_length < 4.0) {
+    vec2 sums[3] = vec2[3](vec2(0.0), vec2(0.0), vec2(0.0));
+    float total = 0.0;
+    float tolerance = 2.0 * pixel_footprint(eye);
+    for (int dy = -2; dy <= 2; ++dy)
+      for (int dx = -2; dx <= 2; ++dx) {
+        ivec2 q = pixel + ivec2(dx, dy);
+        if (q.x < 0 || q.y < 0 || q.x >= int(dn.image.x) || q.y >= int(dn.image.y)) continue;
+        uvec4 s;
+        if (!shaded(q, s)) continue;
+        vec3 qe = imageLoad(gbuffer_position, q).xyz;
+        float distance = abs(dot(normal, qe - eye));
+        float w = exp(-distance / (tolerance * max(length(vec2(dx, dy)), 1.0))) *
+                  pow(max(dot(normal, gbuffer_unpack_normal(s.y)), 0.0), 32.0);
+        if (!(w > 0.0)) continue;
+        total += w;
+        for (uint c = 0u; c < 3u; ++c) {
+          float l = luminance(raw_channel(q, c));
+          sums[c] += w * vec2(l, l * l);
+        }
+      }
+    if (total > 0.0)
+      for (uint c = 0u; c < 3u; ++c) {
+        vec2 m = sums[c] / total;
+        variances[c] = max(m.y - m.x * m.x, 0.0);
+      }
+  }
+  for (uint c = 0u; c < 3u; ++c) work[work_index(0u, p, c)] = vec4(colours[c], variances[c]);
+  guide[p] = DenoiseGuide(vec4(eye, 1.0), uvec4(id, uint(history_length), surface.y, 0u));
+}
