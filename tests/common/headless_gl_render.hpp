@@ -22,9 +22,38 @@
 
 namespace glpt::test {
 
-// GLPT_* variables for one render, set while its context exists (a context reads them when it
-// creates its renderer).
+// GLPT_* variables for one render, set while its context exists.
 using Settings = std::vector<std::pair<const char*, std::string>>;
+
+// A fresh single-buffered size x size headless context, current while it exists, with the
+// GLPT_* `settings` set in the environment (a context reads them when it creates its renderer).
+class HeadlessSession {
+ public:
+  HeadlessSession(int size, const Settings& settings) : settings_(settings) {
+    for (const auto& [name, value] : settings_) ::setenv(name, value.c_str(), 1);
+    rec::DrawableConfig config;
+    config.double_buffered = false;
+    target_ = std::make_unique<HeadlessTarget>(size, size, config);
+    context_ = std::make_unique<Context>(nullptr);
+    make_current_headless(*context_, *target_);
+  }
+  ~HeadlessSession() {
+    set_current_context(nullptr);
+    context_.reset();
+    for (const auto& [name, value] : settings_) ::unsetenv(name);
+  }
+  HeadlessSession(const HeadlessSession&) = delete;
+  HeadlessSession& operator=(const HeadlessSession&) = delete;
+  // The last frame's costs and counts (GLPT_STATS' numbers).
+  rt::FrameStats last_frame_stats() const {
+    return context_->output ? context_->output->last_frame_stats() : rt::FrameStats{};
+  }
+
+ private:
+  Settings settings_;
+  std::unique_ptr<HeadlessTarget> target_;
+  std::unique_ptr<Context> context_;
+};
 
 // Draws `scene` `frames` times (each ended by glFinish) on a fresh single-buffered size x size
 // context with `settings`, and returns the last frame as RGBA8 rows from the bottom (GL's
@@ -34,12 +63,7 @@ inline std::vector<uint8_t> render_headless(int size, const Settings& settings,
                                             const std::function<void()>& scene, int frames,
                                             const std::string& tag,
                                             rt::FrameStats* stats = nullptr) {
-  for (const auto& [name, value] : settings) ::setenv(name, value.c_str(), 1);
-  rec::DrawableConfig config;
-  config.double_buffered = false;
-  auto target = std::make_unique<HeadlessTarget>(size, size, config);
-  auto context = std::make_unique<Context>(nullptr);
-  make_current_headless(*context, *target);
+  HeadlessSession session(size, settings);
   std::vector<uint8_t> rgba(size_t(size) * size_t(size) * 4);
   for (int frame = 0; frame < frames; ++frame) {
     scene();
@@ -47,16 +71,12 @@ inline std::vector<uint8_t> render_headless(int size, const Settings& settings,
   }
   glReadPixels(0, 0, size, size, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
   EXPECT_EQ(glGetError(), GLenum{GL_NO_ERROR});
-  if (stats != nullptr)
-    *stats = context->output ? context->output->last_frame_stats() : rt::FrameStats{};
+  if (stats != nullptr) *stats = session.last_frame_stats();
   if (const char* dir = std::getenv("GLPT_TEST_IMAGES")) {
     const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
     const std::string path = std::string(dir) + "/" + test->name() + "_" + tag + ".png";
     write_png_rgba8(path, size, size, rgba.data(), true, nullptr);
   }
-  set_current_context(nullptr);
-  context.reset();
-  for (const auto& [name, value] : settings) ::unsetenv(name);
   return rgba;
 }
 
@@ -67,25 +87,16 @@ inline std::vector<uint8_t> render_headless(int size, const Settings& settings,
 inline std::vector<std::vector<uint8_t>> render_headless_frames(
     int size, const Settings& settings, const std::function<void(int)>& scene, int frames,
     std::vector<rt::FrameStats>* stats = nullptr) {
-  for (const auto& [name, value] : settings) ::setenv(name, value.c_str(), 1);
-  rec::DrawableConfig config;
-  config.double_buffered = false;
-  auto target = std::make_unique<HeadlessTarget>(size, size, config);
-  auto context = std::make_unique<Context>(nullptr);
-  make_current_headless(*context, *target);
+  HeadlessSession session(size, settings);
   std::vector<std::vector<uint8_t>> images;
   for (int frame = 0; frame < frames; ++frame) {
     scene(frame);
     glFinish();
     std::vector<uint8_t>& rgba = images.emplace_back(size_t(size) * size_t(size) * 4);
     glReadPixels(0, 0, size, size, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
-    if (stats != nullptr)
-      stats->push_back(context->output ? context->output->last_frame_stats() : rt::FrameStats{});
+    if (stats != nullptr) stats->push_back(session.last_frame_stats());
   }
   EXPECT_EQ(glGetError(), GLenum{GL_NO_ERROR});
-  set_current_context(nullptr);
-  context.reset();
-  for (const auto& [name, value] : settings) ::unsetenv(name);
   return images;
 }
 

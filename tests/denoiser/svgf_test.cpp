@@ -11,14 +11,16 @@
 #include <string>
 #include <vector>
 
+#include "../common/gl_scene.hpp"
 #include "../common/headless_gl_render.hpp"
 #include "common/image_io.hpp"
+#include "flip.hpp"
 #include "gl/gl_enums.h"
 #include "gl_shim/gl_entry_decls.h"
-#include "flip.hpp"
 
 namespace {
 
+using glpt::test::quad;
 using glpt::test::Settings;
 using Frames = std::vector<std::vector<uint8_t>>;
 
@@ -49,14 +51,6 @@ void material(glm::vec3 diffuse) {
   glMaterialfv(GL_FRONT_AND_BACK, GL_SPECULAR, black);
 }
 
-void quad(glm::vec3 p0, glm::vec3 p1, glm::vec3 p2, glm::vec3 p3) {
-  const glm::vec3 n = glm::normalize(glm::cross(p1 - p0, p3 - p0));
-  glBegin(GL_QUADS);
-  glNormal3f(n.x, n.y, n.z);
-  for (const glm::vec3& p : {p0, p1, p2, p3}) glVertex3f(p.x, p.y, p.z);
-  glEnd();
-}
-
 void box(glm::vec3 lo, glm::vec3 hi) {
   const glm::vec3 a = lo, b = hi;
   quad({a.x, b.y, a.z}, {a.x, b.y, b.z}, {b.x, b.y, b.z}, {b.x, b.y, a.z});  // top
@@ -77,29 +71,10 @@ void draw_scene(const SceneOptions& o) {
   glEnable(GL_LIGHTING);
   const float ambient[] = {0, 0, 0, 1};
   glLightModelfv(GL_LIGHT_MODEL_AMBIENT, ambient);
-  const float position[] = {1.5f, 3.0f, 1.0f, 1.0f};
-  const float colour[] = {9.0f, 9.0f, 9.0f, 1.0f};
-  const float black[] = {0, 0, 0, 1};
-  glLightfv(GL_LIGHT0, GL_POSITION, position);
-  glLightfv(GL_LIGHT0, GL_DIFFUSE, colour);
-  glLightfv(GL_LIGHT0, GL_SPECULAR, black);
-  glLightfv(GL_LIGHT0, GL_AMBIENT, black);
-  glLightf(GL_LIGHT0, GL_CONSTANT_ATTENUATION, 0.0f);
-  glLightf(GL_LIGHT0, GL_QUADRATIC_ATTENUATION, 1.0f);
-  if (o.light_on)
-    glEnable(GL_LIGHT0);
-  else
-    glDisable(GL_LIGHT0);
+  glpt::test::inverse_square_light(GL_LIGHT0, {1.5f, 3.0f, 1.0f}, glm::vec3(9.0f));
+  if (!o.light_on) glDisable(GL_LIGHT0);
   // A second, dim light that stays on, so switching the first leaves a lit scene.
-  const float position1[] = {-2.0f, 2.5f, 2.0f, 1.0f};
-  const float colour1[] = {2.0f, 2.0f, 2.0f, 1.0f};
-  glLightfv(GL_LIGHT1, GL_POSITION, position1);
-  glLightfv(GL_LIGHT1, GL_DIFFUSE, colour1);
-  glLightfv(GL_LIGHT1, GL_SPECULAR, black);
-  glLightfv(GL_LIGHT1, GL_AMBIENT, black);
-  glLightf(GL_LIGHT1, GL_CONSTANT_ATTENUATION, 0.0f);
-  glLightf(GL_LIGHT1, GL_QUADRATIC_ATTENUATION, 1.0f);
-  glEnable(GL_LIGHT1);
+  glpt::test::inverse_square_light(GL_LIGHT1, {-2.0f, 2.5f, 2.0f}, glm::vec3(2.0f));
   material({0.7f, 0.7f, 0.7f});
   // The floor in tiles: separate draws, as programs draw levels.
   for (int i = -3; i < 3; ++i)
@@ -150,8 +125,8 @@ glpt::diff::FlipResult flip(const std::vector<uint8_t>& image, const std::vector
   glpt::diff::FlipResult result;
   std::string error;
   const glpt::diff::Rgb8View a{kSize, kSize, 4, ref.data()}, b{kSize, kSize, 4, image.data()};
-  EXPECT_TRUE(glpt::diff::compute_flip(a, b, glpt::diff::default_pixels_per_degree(), &result,
-                                       &error))
+  EXPECT_TRUE(
+      glpt::diff::compute_flip(a, b, glpt::diff::default_pixels_per_degree(), &result, &error))
       << error;
   return result;
 }
@@ -189,8 +164,8 @@ std::vector<uint8_t> edge_mask(const std::vector<uint8_t>& ref) {
 void keep(const std::string& tag, const std::vector<uint8_t>& rgba) {
   if (const char* dir = std::getenv("GLPT_TEST_IMAGES")) {
     const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
-    glpt::write_png_rgba8(std::string(dir) + "/" + test->name() + "_" + tag + ".png", kSize,
-                          kSize, rgba.data(), true, nullptr);
+    glpt::write_png_rgba8(std::string(dir) + "/" + test->name() + "_" + tag + ".png", kSize, kSize,
+                          rgba.data(), true, nullptr);
   }
 }
 
@@ -230,10 +205,11 @@ TEST(Svgf, StillSceneAtOneSampleHasAFifthOfTheRawRelMseAndHardlyFlickers) {
   const std::vector<uint8_t> edges = edge_mask(ref);
   const double edge_denoised = masked_flip(flip(denoised.back(), ref), edges),
                edge_raw = masked_flip(flip(raw.back(), ref), edges);
-  std::printf("still: relMSE raw %.5f denoised %.5f (%.1fx); FLIP raw %.4f denoised %.4f (%.1fx); "
-              "edge FLIP raw %.4f denoised %.4f\n",
-              mse_raw, mse_denoised, mse_raw / mse_denoised, flip_raw, flip_denoised,
-              flip_raw / flip_denoised, edge_raw, edge_denoised);
+  std::printf(
+      "still: relMSE raw %.5f denoised %.5f (%.1fx); FLIP raw %.4f denoised %.4f (%.1fx); "
+      "edge FLIP raw %.4f denoised %.4f\n",
+      mse_raw, mse_denoised, mse_raw / mse_denoised, flip_raw, flip_denoised,
+      flip_raw / flip_denoised, edge_raw, edge_denoised);
   EXPECT_LE(mse_denoised * 5.0, mse_raw);
   // FLIP: the reference is anti-aliased (jittered samples), a 1-sample frame samples pixel
   // centres; the converged centre-sampled image alone is this far from it, a floor no denoiser
@@ -266,18 +242,18 @@ TEST(Svgf, MovingCameraKeepsItsHistoryAndHasAFifthOfTheRawRelMse) {
   std::vector<glpt::rt::FrameStats> stats;
   const Frames denoised = render(with(kOneSample, {}), frames, at, &stats);
   std::vector<glpt::rt::FrameStats> raw_stats;
-  const Frames raw =
-      render(with(kOneSample, {{"GLPT_DENOISER", "off"}}), frames, at, &raw_stats);
+  const Frames raw = render(with(kOneSample, {{"GLPT_DENOISER", "off"}}), frames, at, &raw_stats);
   keep("reference", ref);
   keep("denoised", denoised.back());
   keep("raw", raw.back());
   const double mse_denoised = rel_mse(denoised.back(), ref), mse_raw = rel_mse(raw.back(), ref);
   const double flip_denoised = flip(denoised.back(), ref).mean,
                flip_raw = flip(raw.back(), ref).mean;
-  std::printf("moving camera: relMSE raw %.5f denoised %.5f (%.1fx); FLIP raw %.4f denoised "
-              "%.4f (%.1fx)\n",
-              mse_raw, mse_denoised, mse_raw / mse_denoised, flip_raw, flip_denoised,
-              flip_raw / flip_denoised);
+  std::printf(
+      "moving camera: relMSE raw %.5f denoised %.5f (%.1fx); FLIP raw %.4f denoised "
+      "%.4f (%.1fx)\n",
+      mse_raw, mse_denoised, mse_raw / mse_denoised, flip_raw, flip_denoised,
+      flip_raw / flip_denoised);
   EXPECT_LE(mse_denoised * 5.0, mse_raw);
   EXPECT_LE(flip_denoised * 1.4, flip_raw);  // see the still scene's test for FLIP's floor
   ASSERT_EQ(stats.size(), raw_stats.size());
@@ -320,15 +296,15 @@ TEST(Svgf, ALightSwitchedOffLeavesNoStaleLightAfterFourFrames) {
   const Frames clamped = render(with(kOneSample, {}), frames, at);
   const Frames plain = render(with(kOneSample, {{"GLPT_DENOISE_CLAMP", "0"}}), frames, at);
   // The steady level: the same denoiser on a scene that never had the light.
-  const Frames steady_frames =
-      render(with(kOneSample, {}), frames, [&](int) { return off; });
+  const Frames steady_frames = render(with(kOneSample, {}), frames, [&](int) { return off; });
   const double steady = rel_mse(steady_frames.back(), ref);
   const double stale = rel_mse(clamped[size_t(change) - 1], ref);
   const int recovered = frames_to_recover(clamped, change, ref, steady, stale);
   const int recovered_plain = frames_to_recover(plain, change, ref, steady, stale);
-  std::printf("light off: steady relMSE %.5f, stale %.3f; recovered after %d frames (clamp) and "
-              "%d (fixed alpha)\n",
-              steady, stale, recovered, recovered_plain);
+  std::printf(
+      "light off: steady relMSE %.5f, stale %.3f; recovered after %d frames (clamp) and "
+      "%d (fixed alpha)\n",
+      steady, stale, recovered, recovered_plain);
   EXPECT_LE(recovered, 4);
   EXPECT_GT(recovered_plain, recovered);
 }
@@ -369,8 +345,8 @@ TEST(Svgf, DisoccludedFloorRecoversWithinEightFrames) {
   const double steady = rel_mse(steady_frames.back(), ref);
   const double stale = rel_mse(denoised[size_t(change) - 1], ref);
   const int recovered = frames_to_recover(denoised, change, ref, steady, stale);
-  std::printf("disocclusion: steady relMSE %.5f, stale %.3f; recovered after %d frames\n",
-              steady, stale, recovered);
+  std::printf("disocclusion: steady relMSE %.5f, stale %.3f; recovered after %d frames\n", steady,
+              stale, recovered);
   EXPECT_LE(recovered, 8);
   // And no trail of the box where it was (stale history would keep its colour there).
   EXPECT_LE(rel_mse(denoised.back(), ref), 1.5 * steady);
@@ -381,8 +357,8 @@ TEST(Svgf, StillImagesConvergeToTheAccumulatedAverageAndTheDenoiserStops) {
   // shown: the image equals the one without denoiser, and the denoiser no longer runs.
   std::vector<glpt::rt::FrameStats> stats;
   const SceneOptions still;
-  const Frames denoised = render(path({{"GLPT_DENOISE_UNTIL", "8"}}), 10,
-                                 [&](int) { return still; }, &stats);
+  const Frames denoised = render(
+      path({{"GLPT_DENOISE_UNTIL", "8"}}), 10, [&](int) { return still; }, &stats);
   const Frames raw = render(path({{"GLPT_DENOISER", "off"}}), 10, [&](int) { return still; });
   EXPECT_EQ(stats.front().denoised, 1u);
   EXPECT_EQ(stats.back().denoised, 0u);

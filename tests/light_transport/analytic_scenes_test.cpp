@@ -16,11 +16,15 @@
 #include <utility>
 #include <vector>
 
+#include "../common/gl_scene.hpp"
+#include "../common/headless_gl_render.hpp"
 #include "gl/gl_enums.h"
 #include "gl_shim/gl_entry_decls.h"
-#include "../common/headless_gl_render.hpp"
 
 namespace {
+
+using glpt::test::inverse_square_light;
+using glpt::test::quad;
 
 constexpr int kSize = 64;
 // camera(): a 60-degree frustum, x and y in [-kHalf, kHalf] * distance.
@@ -84,15 +88,6 @@ void material(glm::vec3 diffuse, glm::vec3 emission = glm::vec3(0.0f),
   glMaterialf(GL_FRONT_AND_BACK, GL_SHININESS, shininess);
 }
 
-// A quad with corners p0..p3 (counter-clockwise seen from where `normal` points).
-void quad(glm::vec3 p0, glm::vec3 p1, glm::vec3 p2, glm::vec3 p3) {
-  const glm::vec3 n = glm::normalize(glm::cross(p1 - p0, p3 - p0));
-  glBegin(GL_QUADS);
-  glNormal3f(n.x, n.y, n.z);
-  for (const glm::vec3& p : {p0, p1, p2, p3}) glVertex3f(p.x, p.y, p.z);
-  glEnd();
-}
-
 // The plane z = `z` facing +z, split into n x n quads over [-extent, extent]^2.
 void facing_plane(float z, float extent, int n = 4) {
   const float step = 2 * extent / n;
@@ -107,21 +102,6 @@ void facing_plane(float z, float extent, int n = 4) {
 glm::vec3 on_plane(int px, int py, float z) {
   const float nx = (px + 0.5f) / kSize * 2 - 1, ny = (py + 0.5f) / kSize * 2 - 1;
   return {nx * kHalf * -z, ny * kHalf * -z, z};
-}
-
-// A positional light of diffuse colour `color` at `position` with GL's inverse-square
-// attenuation alone: a physical point (or sphere) light.
-void inverse_square_light(GLenum light, glm::vec3 position, glm::vec3 color) {
-  const float p[] = {position.x, position.y, position.z, 1};
-  const float c[] = {color.r, color.g, color.b, 1};
-  const float black[] = {0, 0, 0, 1};
-  glLightfv(light, GL_POSITION, p);
-  glLightfv(light, GL_DIFFUSE, c);
-  glLightfv(light, GL_SPECULAR, black);
-  glLightfv(light, GL_AMBIENT, black);
-  glLightf(light, GL_CONSTANT_ATTENUATION, 0.0f);
-  glLightf(light, GL_QUADRATIC_ATTENUATION, 1.0f);
-  glEnable(light);
 }
 
 // |measured - expected| <= relative * expected + steps (8-bit values).
@@ -178,10 +158,10 @@ TEST(LightTransport, EachBounceAddsLessThanTheOneBefore) {
   };
   std::vector<double> means;
   for (int bounces = 0; bounces <= 3; ++bounces) {
-    const Image image =
-        render(path({{"GLPT_BOUNCES", std::to_string(bounces)}, {"GLPT_SPP", "32"},
-                     {"GLPT_LIGHT_RADIUS", "0"}}),
-               scene, 4, ("bounces" + std::to_string(bounces)).c_str());
+    const Image image = render(path({{"GLPT_BOUNCES", std::to_string(bounces)},
+                                     {"GLPT_SPP", "32"},
+                                     {"GLPT_LIGHT_RADIUS", "0"}}),
+                               scene, 4, ("bounces" + std::to_string(bounces)).c_str());
     means.push_back(image.mean());
   }
   for (size_t k = 1; k < means.size(); ++k) EXPECT_GT(means[k], means[k - 1]) << k;
@@ -211,8 +191,8 @@ void plane_under_light() {
 }
 
 TEST(LightTransport, LambertianPlaneUnderAPointLight) {
-  const Image image =
-      render(path({{"GLPT_LIGHT_RADIUS", "0"}, {"GLPT_BOUNCES", "0"}}), plane_under_light, 1, "point");
+  const Image image = render(path({{"GLPT_LIGHT_RADIUS", "0"}, {"GLPT_BOUNCES", "0"}}),
+                             plane_under_light, 1, "point");
   for (int y = 1; y < kSize; y += 6)
     for (int x = 1; x < kSize; x += 6)
       expect_close(image.at(x, y), 255 * plane_radiance(x, y), 0.01, 1.0,
@@ -220,9 +200,9 @@ TEST(LightTransport, LambertianPlaneUnderAPointLight) {
 }
 
 TEST(LightTransport, LambertianPlaneUnderASphereLight) {
-  const Image image = render(
-      path({{"GLPT_LIGHT_RADIUS", "0.6"}, {"GLPT_BOUNCES", "0"}, {"GLPT_SPP", "64"}}),
-      plane_under_light, 4, "sphere");
+  const Image image =
+      render(path({{"GLPT_LIGHT_RADIUS", "0.6"}, {"GLPT_BOUNCES", "0"}, {"GLPT_SPP", "64"}}),
+             plane_under_light, 4, "sphere");
   for (int y = 1; y < kSize; y += 6)
     for (int x = 1; x < kSize; x += 6)
       expect_close(image.at(x, y), 255 * plane_radiance(x, y), 0.01, 1.5,
@@ -341,8 +321,8 @@ TEST(LightTransport, EmissiveSurfaceLightsAPlaneAsItsFormFactorSays) {
   constexpr int kBlock = 6;
   for (const char* bounces : {"0", "1"}) {
     const Image image =
-        render(path({{"GLPT_BOUNCES", bounces}, {"GLPT_SPP", "128"}}),
-               plane_under_emissive_square, 8, (std::string("bounces") + bounces).c_str());
+        render(path({{"GLPT_BOUNCES", bounces}, {"GLPT_SPP", "128"}}), plane_under_emissive_square,
+               8, (std::string("bounces") + bounces).c_str());
     int checked = 0;
     for (int by = 0; by + kBlock <= kSize; by += kBlock)
       for (int bx = 0; bx + kBlock <= kSize; bx += kBlock) {
@@ -359,8 +339,8 @@ TEST(LightTransport, EmissiveSurfaceLightsAPlaneAsItsFormFactorSays) {
         ++checked;
         constexpr double kPixels = kBlock * kBlock;
         expect_close(measured / kPixels, expected / kPixels, 0.025, 1.0,
-                     std::string("bounces ") + bounces + ", block at " + std::to_string(bx) +
-                         "," + std::to_string(by));
+                     std::string("bounces ") + bounces + ", block at " + std::to_string(bx) + "," +
+                         std::to_string(by));
       }
     EXPECT_GT(checked, 50);
   }
@@ -415,14 +395,16 @@ TEST(LightTransport, MirrorLikeSurfaceReflectsAStripePattern) {
   EXPECT_NEAR(all, 0.5 * 15.7, 1.5);
 }
 
-// ---- textures in rays ----------------------------------------------------------------------------
+// ---- textures in rays
+// ----------------------------------------------------------------------------
 
 // A 2 x 1 RGBA texture (nearest filtering) of the two colours, modulating.
 void bind_two_texel_texture(const uint8_t left[4], const uint8_t right[4]) {
   GLuint texture = 0;
   glGenTextures(1, &texture);
   glBindTexture(GL_TEXTURE_2D, texture);
-  const uint8_t texels[8] = {left[0], left[1], left[2], left[3], right[0], right[1], right[2], right[3]};
+  const uint8_t texels[8] = {left[0],  left[1],  left[2],  left[3],
+                             right[0], right[1], right[2], right[3]};
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 2, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels);
@@ -477,7 +459,8 @@ TEST(LightTransport, AlphaTestedQuadCastsTheShadowOfItsCutOut) {
       glDisable(GL_TEXTURE_2D);
     };
   };
-  const Settings settings = path({{"GLPT_LIGHT_RADIUS", "0"}, {"GLPT_BOUNCES", "0"}, {"GLPT_AO", "0"}});
+  const Settings settings =
+      path({{"GLPT_LIGHT_RADIUS", "0"}, {"GLPT_BOUNCES", "0"}, {"GLPT_AO", "0"}});
   const Image cut = render(settings, scene(true), 1, "alpha_test");
   const Image solid = render(settings, scene(false), 1, "solid");
   // Floor pixels in the left half's shadow but outside the quad's own image (x = -1.85).
@@ -487,7 +470,8 @@ TEST(LightTransport, AlphaTestedQuadCastsTheShadowOfItsCutOut) {
   // Floor seen through the cut-out at x = +1: lit; under the solid quad it was in shadow.
   const int lit_x = 43;
   ASSERT_GT(on_plane(lit_x, y, -5.0f).x, 0.8f);
-  expect_close(cut.at(lit_x, y), unoccluded_floor(lit_x, y), 0.02, 2.0, "floor through the cut-out");
+  expect_close(cut.at(lit_x, y), unoccluded_floor(lit_x, y), 0.02, 2.0,
+               "floor through the cut-out");
   // The solid (not alpha-tested) quad shadows the floor there too.
   EXPECT_LT(solid.at(shadow_x, y), 10);
 }
@@ -505,7 +489,8 @@ TEST(LightTransport, ClippedAwayPartsCastNoShadow) {
       glDisable(GL_CLIP_PLANE2);
     };
   };
-  const Settings settings = path({{"GLPT_LIGHT_RADIUS", "0"}, {"GLPT_BOUNCES", "0"}, {"GLPT_AO", "0"}});
+  const Settings settings =
+      path({{"GLPT_LIGHT_RADIUS", "0"}, {"GLPT_BOUNCES", "0"}, {"GLPT_AO", "0"}});
   const Image cut = render(settings, scene(true), 1, "clipped");
   const Image whole = render(settings, scene(false), 1, "whole");
   // Floor pixels in the shadows of the two halves, outside the quad's own image (x = -+1.85).
@@ -530,7 +515,8 @@ TEST(LightTransport, BounceRaysSeeTheTexturesOfWhatTheyHit) {
     return [red] {
       camera();
       material(glm::vec3(0.8f));
-      const float down[] = {-0.6f, 1.0f, 0.3f, 0.0f}, white[] = {1, 1, 1, 1};  // lights the wall's face too
+      const float down[] = {-0.6f, 1.0f, 0.3f, 0.0f},
+                  white[] = {1, 1, 1, 1};  // lights the wall's face too
       glLightfv(GL_LIGHT0, GL_POSITION, down);
       glLightfv(GL_LIGHT0, GL_DIFFUSE, white);
       glEnable(GL_LIGHT0);
@@ -700,7 +686,8 @@ TEST(LightTransport, BounceRaysSeeEveryTextureTargetUnitAndCoordinateGeneration)
   }
 }
 
-// ---- the sky -------------------------------------------------------------------------------------
+// ---- the sky
+// -------------------------------------------------------------------------------------
 
 TEST(LightTransport, TheSkyIsSeenInReflectionsAndBlocksNoSun) {
   // A sky box around the camera (unlit, uniform colour c, drawn first without depth writes: the
@@ -809,9 +796,10 @@ TEST(LightTransport, HundredLightsConvergeToLoopingOverAllWithLessNoiseThanUnifo
   // noisy than choosing uniformly.
   const double error_contribution = mean_squared_difference(contribution, reference);
   const double error_uniform = mean_squared_difference(uniform, reference);
-  std::printf("100 lights, 4 spp: mean squared error %.2f (by contribution) vs %.2f (uniform), "
-              "ratio %.2f\n",
-              error_contribution, error_uniform, error_uniform / error_contribution);
+  std::printf(
+      "100 lights, 4 spp: mean squared error %.2f (by contribution) vs %.2f (uniform), "
+      "ratio %.2f\n",
+      error_contribution, error_uniform, error_uniform / error_contribution);
   EXPECT_LT(error_contribution, 0.5 * error_uniform);
 }
 
@@ -901,9 +889,9 @@ double psnr(const Image& a, const Image& b) {
 
 TEST(LightTransport, WithoutShadowsBouncesAndAoThePathTracerIsGlsLighting) {
   const Image gl = render({{"GLPT_MODE", "raster"}}, lit_sphere, 1, "raster");
-  const Image parity = render(
-      path({{"GLPT_SHADOWS", "0"}, {"GLPT_BOUNCES", "0"}, {"GLPT_AO", "0"}}), lit_sphere, 1,
-      "parity");
+  const Image parity =
+      render(path({{"GLPT_SHADOWS", "0"}, {"GLPT_BOUNCES", "0"}, {"GLPT_AO", "0"}}), lit_sphere, 1,
+             "parity");
   const double db = psnr(gl, parity);
   std::printf("GL parity: PSNR %.1f dB against raster mode (= Mesa)\n", db);
   EXPECT_GT(db, 40.0);
@@ -915,9 +903,8 @@ TEST(LightTransport, GlParityHoldsForTexturedSurfacesUnderBothColourControls) {
   for (GLenum control : {GLenum(GL_SINGLE_COLOR), GLenum(GL_SEPARATE_SPECULAR_COLOR)}) {
     auto scene = [control] { lit_sphere_with(true, control); };
     const Image gl = render({{"GLPT_MODE", "raster"}}, scene, 1, "raster");
-    const Image parity =
-        render(path({{"GLPT_SHADOWS", "0"}, {"GLPT_BOUNCES", "0"}, {"GLPT_AO", "0"}}), scene, 1,
-               "parity");
+    const Image parity = render(
+        path({{"GLPT_SHADOWS", "0"}, {"GLPT_BOUNCES", "0"}, {"GLPT_AO", "0"}}), scene, 1, "parity");
     const double db = psnr(gl, parity);
     std::printf("textured GL parity (%s): PSNR %.1f dB against raster mode\n",
                 control == GL_SINGLE_COLOR ? "GL_SINGLE_COLOR" : "GL_SEPARATE_SPECULAR_COLOR", db);
