@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <glm/glm.hpp>
 #include <string>
 #include <vector>
@@ -273,14 +274,33 @@ TEST(Svgf, MovingCameraKeepsItsHistoryAndHasAFifthOfTheRawRelMse) {
 // square falls under 1 % after about ten frames (the figure for it).
 int frames_to_recover(const Frames& frames, int change, const std::vector<uint8_t>& ref,
                       double steady, double stale) {
-  if (std::getenv("SVGF_TRACE")) {
-    for (int f = change - 2; f < int(frames.size()); ++f)
-      std::printf(" %.5f", rel_mse(frames[size_t(f)], ref));
-    std::printf("\n");
-  }
   for (int f = change; f < int(frames.size()); ++f)
     if (rel_mse(frames[size_t(f)], ref) <= steady + 0.01 * stale) return f - change + 1;
   return int(frames.size()) - change + 1;
+}
+
+// A scene that changes at frame `change` (`at` gives each frame's state), denoised with the
+// default settings, against the final state's reference; its steady level is the same denoiser
+// on the final state throughout, its stale error the error of the frame before the change.
+struct Change {
+  int change = 0;
+  Frames frames;
+  std::vector<uint8_t> ref;
+  double steady = 0.0, stale = 0.0;
+
+  int recovered(const Frames& f) const { return frames_to_recover(f, change, ref, steady, stale); }
+};
+
+Change measure_change(int change, int frames, const std::function<SceneOptions(int)>& at) {
+  Change c;
+  c.change = change;
+  const SceneOptions final_state = at(frames - 1);
+  c.ref = reference(final_state);
+  c.frames = render(with(kOneSample, {}), frames, at);
+  c.steady =
+      rel_mse(render(with(kOneSample, {}), frames, [&](int) { return final_state; }).back(), c.ref);
+  c.stale = rel_mse(c.frames[size_t(change) - 1], c.ref);
+  return c;
 }
 
 TEST(Svgf, ALightSwitchedOffLeavesNoStaleLightAfterFourFrames) {
@@ -290,64 +310,42 @@ TEST(Svgf, ALightSwitchedOffLeavesNoStaleLightAfterFourFrames) {
     o.light_on = frame < change;
     return o;
   };
-  SceneOptions off;
-  off.light_on = false;
-  const std::vector<uint8_t> ref = reference(off);
-  const Frames clamped = render(with(kOneSample, {}), frames, at);
+  const Change c = measure_change(change, frames, at);
   const Frames plain = render(with(kOneSample, {{"GLPT_DENOISE_CLAMP", "0"}}), frames, at);
-  // The steady level: the same denoiser on a scene that never had the light.
-  const Frames steady_frames = render(with(kOneSample, {}), frames, [&](int) { return off; });
-  const double steady = rel_mse(steady_frames.back(), ref);
-  const double stale = rel_mse(clamped[size_t(change) - 1], ref);
-  const int recovered = frames_to_recover(clamped, change, ref, steady, stale);
-  const int recovered_plain = frames_to_recover(plain, change, ref, steady, stale);
+  const int recovered = c.recovered(c.frames), recovered_plain = c.recovered(plain);
   std::printf(
       "light off: steady relMSE %.5f, stale %.3f; recovered after %d frames (clamp) and "
       "%d (fixed alpha)\n",
-      steady, stale, recovered, recovered_plain);
+      c.steady, c.stale, recovered, recovered_plain);
   EXPECT_LE(recovered, 4);
   EXPECT_GT(recovered_plain, recovered);
 }
 
 TEST(Svgf, ALightSwitchedOnIsSeenWithinFourFrames) {
-  const int change = 12, frames = 26;
-  auto at = [&](int frame) {
+  const Change c = measure_change(12, 26, [&](int frame) {
     SceneOptions o;
-    o.light_on = frame >= change;
+    o.light_on = frame >= 12;
     return o;
-  };
-  const std::vector<uint8_t> ref = reference(SceneOptions{});
-  const Frames clamped = render(with(kOneSample, {}), frames, at);
-  const Frames steady_frames =
-      render(with(kOneSample, {}), frames, [&](int) { return SceneOptions{}; });
-  const double steady = rel_mse(steady_frames.back(), ref);
-  const double stale = rel_mse(clamped[size_t(change) - 1], ref);
-  const int recovered = frames_to_recover(clamped, change, ref, steady, stale);
-  std::printf("light on: steady relMSE %.5f, stale %.3f; recovered after %d frames\n", steady,
-              stale, recovered);
+  });
+  const int recovered = c.recovered(c.frames);
+  std::printf("light on: steady relMSE %.5f, stale %.3f; recovered after %d frames\n", c.steady,
+              c.stale, recovered);
   EXPECT_LE(recovered, 4);
 }
 
 TEST(Svgf, DisoccludedFloorRecoversWithinEightFrames) {
   // The box jumps aside: the floor it covered has no history.
-  const int change = 10, frames = 22;
-  auto at = [&](int frame) {
+  const Change c = measure_change(10, 22, [&](int frame) {
     SceneOptions o;
-    o.box_x = frame < change ? 0.0f : 1.4f;
+    o.box_x = frame < 10 ? 0.0f : 1.4f;
     return o;
-  };
-  const std::vector<uint8_t> ref = reference(at(frames - 1));
-  const Frames denoised = render(with(kOneSample, {}), frames, at);
-  const Frames steady_frames =
-      render(with(kOneSample, {}), frames, [&](int) { return at(frames - 1); });
-  const double steady = rel_mse(steady_frames.back(), ref);
-  const double stale = rel_mse(denoised[size_t(change) - 1], ref);
-  const int recovered = frames_to_recover(denoised, change, ref, steady, stale);
-  std::printf("disocclusion: steady relMSE %.5f, stale %.3f; recovered after %d frames\n", steady,
-              stale, recovered);
+  });
+  const int recovered = c.recovered(c.frames);
+  std::printf("disocclusion: steady relMSE %.5f, stale %.3f; recovered after %d frames\n", c.steady,
+              c.stale, recovered);
   EXPECT_LE(recovered, 8);
   // And no trail of the box where it was (stale history would keep its colour there).
-  EXPECT_LE(rel_mse(denoised.back(), ref), 1.5 * steady);
+  EXPECT_LE(rel_mse(c.frames.back(), c.ref), 1.5 * c.steady);
 }
 
 TEST(Svgf, StillImagesConvergeToTheAccumulatedAverageAndTheDenoiserStops) {
