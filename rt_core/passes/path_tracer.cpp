@@ -217,7 +217,8 @@ void PathTracer::write_denoise_inputs(const TraceScene& scene, bool denoise, boo
     uniforms.params = glm::vec4(scene.pixel_spread, scene.pixel_size_parallel,
                                 kClampedHistoryLength, accumulated_weight);
     uniforms.jitter = glm::vec4(frame_jitter_, 0.0f, 0.0f);
-    std::vector<gpu::GpuStateHistory> histories(std::max<size_t>(scene.states.size(), 1));
+    std::vector<gpu::GpuStateHistory>& histories = state_history_table_;
+    histories.assign(std::max<size_t>(scene.states.size(), 1), gpu::GpuStateHistory{});
     for (size_t i = 0; i < scene.states.size(); ++i) {
       const TraceState& state = scene.states[i];
       gpu::GpuStateHistory& h = histories[i];

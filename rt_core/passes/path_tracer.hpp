@@ -137,6 +137,7 @@ class PathTracer {
   SvgfDenoiser denoiser_;
   GpuBuffer denoise_uniforms_;
   GpuBuffer state_histories_;
+  std::vector<gpu::GpuStateHistory> state_history_table_;  // kept to reuse its capacity
   glm::vec2 frame_jitter_{0.0f};                  // of the G-buffer pass the next trace reads
   std::array<GpuImage, GLPT_CHANNELS> channels_;  // this frame's radiance (trace -> composite)
   uint32_t channels_width_ = 0, channels_height_ = 0;
