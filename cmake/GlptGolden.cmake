@@ -10,8 +10,13 @@
 # Updating the goldens (after a deliberate change; review the new images before committing):
 #   GLPT_UPDATE_GOLDENS=1 ctest --test-dir build -L golden
 # Each test then writes its frames into its golden directory instead of comparing.
+#
+# In glpt's own tree and in another project alike: after find_package(glpt) (which includes this
+# module), glpt's executables are the targets glpt::glpt and glpt::glpt-replay, and the script
+# that runs a test lies next to this file.
 set(GLPT_GOLDEN_DIR "${PROJECT_SOURCE_DIR}/tests/golden/images" CACHE PATH
     "Where glpt_add_golden_test keeps committed golden images (one directory per test)")
+set(_GLPT_GOLDEN_SCRIPT "${CMAKE_CURRENT_LIST_DIR}/golden_test.sh")
 
 function(glpt_add_golden_test name trace frames threshold)
   cmake_parse_arguments(GOLDEN "" "MODE" "ARGS" ${ARGN})
@@ -19,8 +24,9 @@ function(glpt_add_golden_test name trace frames threshold)
     set(GOLDEN_MODE raster)
   endif()
   add_test(NAME ${name}
-           COMMAND ${PROJECT_SOURCE_DIR}/tests/golden/golden_test.sh
-                   $<TARGET_FILE:glpt-replay> $<TARGET_FILE:glpt> ${trace} ${frames} ${threshold}
+           COMMAND ${_GLPT_GOLDEN_SCRIPT}
+                   $<TARGET_FILE:glpt::glpt-replay> $<TARGET_FILE:glpt::glpt> ${trace} ${frames}
+                   ${threshold}
                    ${GLPT_GOLDEN_DIR}/${name} ${CMAKE_CURRENT_BINARY_DIR}/golden/${name}
                    ${GOLDEN_MODE} ${GOLDEN_ARGS})
   set_tests_properties(${name} PROPERTIES LABELS "golden" TIMEOUT 300 ENVIRONMENT "GLPT_QUIET=1")

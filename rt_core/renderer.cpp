@@ -238,13 +238,7 @@ std::unique_ptr<Renderer> Renderer::create(const RenderSettings& settings, std::
                                            std::string* notice) {
   std::unique_ptr<Renderer> renderer;
   guarded("cannot create the Vulkan renderer", error, [&] {
-    DeviceOptions options;
-    options.validation = settings.validation;
-    if (const char* filter = std::getenv("GLPT_VK_DEVICE")) options.name_filter = filter;
-    if (const char* hide = std::getenv("GLPT_VK_NO_RAY_QUERY"); hide && *hide && *hide != '0')
-      options.hide_ray_query = true;
-    if (const char* sync = std::getenv("GLPT_VK_SYNC"); sync && *sync && *sync != '0')
-      options.sync_submissions = true;
+    const DeviceOptions options = DeviceOptions::from_environment(settings.validation);
     std::shared_ptr<VulkanDevice> device = VulkanDevice::shared(options);
     RenderSettings effective = settings;
     std::unique_ptr<PathTracer> tracer;
@@ -258,7 +252,7 @@ std::unique_ptr<Renderer> Renderer::create(const RenderSettings& settings, std::
         if (notice != nullptr)
           *notice = "glpt: " + device->name() + " has no ray queries (lacks " +
                     device->ray_query_missing() + "): drawing in raster mode. " +
-                    vulkan_install_hint();
+                    vulkan_install_hint() + " (" + kDoctorHint + ")";
       }
     }
     renderer.reset(new Renderer(std::make_unique<Impl>(effective, device, std::move(tracer))));

@@ -11,7 +11,7 @@ SUDO=""
 export DEBIAN_FRONTEND=noninteractive
 
 stamp=/var/lib/glpt-setup.stamp
-want_version=7  # bump when the package list below changes
+want_version=8  # bump when the package list below changes
 if [ -f "$stamp" ] && [ "$(cat "$stamp")" = "$want_version" ] && [ "${GLPT_SETUP_FORCE:-0}" != 1 ]; then
   echo "setup: packages already installed (rm $stamp or GLPT_SETUP_FORCE=1 to re-run)"
   exit 0
@@ -43,7 +43,8 @@ fi
 $SUDO apt-get update -q
 
 # Build tools and libraries.
-build_pkgs=(cmake ninja-build g++ pkg-config python3 clang-format
+build_pkgs=(cmake ninja-build g++ clang pkg-config python3 clang-format
+            dpkg-dev bash-completion  # cpack's dependency scan (dpkg-shlibdeps), the completion test
             khronos-api libvulkan-dev glslang-tools libglm-dev
             libx11-dev libxcb1-dev libxcb-shm0-dev libpng-dev zlib1g-dev libgtest-dev
             libsnappy-dev libbrotli-dev  # apitrace's trace containers (replay/trace)

@@ -472,6 +472,12 @@ vec4 sample_unit(uint u) {
   uint config = unit_config(u);
   uint target = config & 7u;
   vec4 tc = v_texcoord[u];
+  if ((config & GLPT_UNIT_COORD_REPLACE) != 0u) {
+    // Vulkan's point coordinate has t = 0 on the framebuffer's row 0, which is GL's bottom row
+    // here: GL's default origin, GL_UPPER_LEFT, is its mirror.
+    float t = (kFlags & GLPT_FS_SPRITE_LOWER_LEFT) != 0u ? gl_PointCoord.y : 1.0 - gl_PointCoord.y;
+    tc = vec4(gl_PointCoord.x, t, 0.0, 1.0);
+  }
   vec3 projected = tc.xyz / tc.w;
   if ((config & GLPT_UNIT_RECT) != 0u) {
     projected.x = normalized_rect_coord(projected.x, S.tex_size[u].x);

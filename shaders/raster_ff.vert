@@ -264,20 +264,28 @@ void main() {
       size *= inversesqrt(a.x + a.y * d + a.z * d * d);
     }
     size = clamp(size, S.point_size.y, S.point_size.z);
-    // GL's aliased points (GL 1.5 3.3) as llvmpipe rasterizes them: the size rounds to an integer
-    // (halves down), the square is centred on floor(x) + 0.5 for odd sizes and on floor(x + 0.5)
-    // for even ones, and a point whose centre is outside the view volume is not drawn.
-    float width = max(1.0, ceil(size - 0.5));
-    bool outside = any(greaterThan(abs(clip.xy), vec2(clip.w)));
-    vec2 ndc = clip.xy / clip.w;
-    vec2 window = (ndc * 0.5 + 0.5) * S.viewport.zw + S.viewport.xy;
-    window = floor(window * 256.0 + 0.5) / 256.0;  // llvmpipe's fixed-point vertex positions
-    bool odd = mod(width, 2.0) == 1.0;
-    vec2 centre = odd ? floor(window) + 0.5 : floor(window + 0.5);
-    vec2 snapped_ndc = (centre - S.viewport.xy) / S.viewport.zw * 2.0 - 1.0;
-    clip.xy = snapped_ndc * clip.w;
-    if (outside) clip = vec4(2.0, 2.0, 2.0, 1.0);  // beyond the view volume: culled
-    gl_PointSize = width;
+    if (has(GLPT_VS_POINT_SPRITE)) {
+      // Sprites are squares of the exact size centred on the exact position, as llvmpipe
+      // rasterizes points whose size is not rounded (and as Vulkan rasterizes every point).
+      if (any(greaterThan(abs(clip.xy), vec2(clip.w)))) clip = vec4(2.0, 2.0, 2.0, 1.0);
+      gl_PointSize = size;
+    } else {
+      // GL's aliased points (GL 1.5 3.3) as llvmpipe rasterizes them: the size rounds to an
+      // integer (halves down), the square is centred on floor(x) + 0.5 for odd sizes and on
+      // floor(x + 0.5) for even ones, and a point whose centre is outside the view volume is not
+      // drawn.
+      float width = max(1.0, ceil(size - 0.5));
+      bool outside = any(greaterThan(abs(clip.xy), vec2(clip.w)));
+      vec2 ndc = clip.xy / clip.w;
+      vec2 window = (ndc * 0.5 + 0.5) * S.viewport.zw + S.viewport.xy;
+      window = floor(window * 256.0 + 0.5) / 256.0;  // llvmpipe's fixed-point vertex positions
+      bool odd = mod(width, 2.0) == 1.0;
+      vec2 centre = odd ? floor(window) + 0.5 : floor(window + 0.5);
+      vec2 snapped_ndc = (centre - S.viewport.xy) / S.viewport.zw * 2.0 - 1.0;
+      clip.xy = snapped_ndc * clip.w;
+      if (outside) clip = vec4(2.0, 2.0, 2.0, 1.0);  // beyond the view volume: culled
+      gl_PointSize = width;
+    }
   }
 #if GLPT_GBUFFER
   // Homogeneous, so a projective modelview (planar shadows) interpolates correctly; the fragment

@@ -92,6 +92,7 @@ using mat4 = glm::mat4;
 #define GLPT_VS_LINES 256u             // line primitives: exact view clipping (clip distances)
 #define GLPT_VS_FOG_COORD_SOURCE 512u  // fog coordinate from glFogCoord, not eye distance
 #define GLPT_VS_NEEDS_EYE 1024u        // eye position needed (fog, texgen, clip planes, lights)
+#define GLPT_VS_POINT_SPRITE 2048u     // ARB_point_sprite: the size unrounded, the centre unsnapped
 // bit i: GL_LIGHTi enabled; bit 8 + i: it is positional (w != 0); bit 16 + i: it is a spotlight.
 // The kinds select the shader's code per light, as Mesa's fixed-function program is generated for
 // the enabled lights' kinds (both branches of a test on a value read per draw run for every
@@ -115,6 +116,7 @@ using mat4 = glm::mat4;
 #define GLPT_UNFILLED_CULL_BACK 4u   // other face's pass); likewise back-facing ones
 #define GLPT_UNFILLED_OFFSET 8u      // polygon offset enabled for this mode
 #define GLPT_UNFILLED_FLAT 16u       // GL_FLAT: the provoking vertex's colours
+#define GLPT_UNFILLED_SPRITE 32u     // GL_POINT mode with ARB_point_sprite: the size unrounded
 // Fragment stage
 // per unit (10..13): bits 0-2 target (0 off, 1 1D, 2 2D, 3 3D, 4 cube), bits 3-5 env mode
 // (0 modulate, 1 decal, 2 blend, 3 replace, 4 add, 5 combine), bits 6-8 base format (0 RGBA,
@@ -128,6 +130,8 @@ using mat4 = glm::mat4;
 // A rectangle texture (ARB_texture_rectangle) on the 2D binding: s, t are in texels and the
 // shader normalizes them
 #define GLPT_UNIT_RECT 0x8000u
+// ARB_point_sprite's GL_COORD_REPLACE: (s, t, 0, 1) from the position in the sprite
+#define GLPT_UNIT_COORD_REPLACE 0x10000u
 // per unit (14..17): combine rgb function (bits 0-3), alpha function (4-7), rgb sources (8-16,
 // 3 bits each), alpha sources (17-25), rgb operands (26-31, 2 bits each)
 #define GLPT_SC_COMBINE0 14
@@ -138,6 +142,7 @@ using mat4 = glm::mat4;
 #define GLPT_FS_COLOR_SUM 2u  // add the secondary colour after texturing
 #define GLPT_FS_POLYGON_STIPPLE 4u
 #define GLPT_FS_CLEAR 8u  // the clear pipeline: output the clear colour only
+#define GLPT_FS_SPRITE_LOWER_LEFT 16u  // GL_POINT_SPRITE_COORD_ORIGIN GL_LOWER_LEFT: t = 0 below
 // bits 8-10: alpha test function (0 off, else GL_NEVER + n - 0x200 + 1); bits 12-13: fog mode
 // (0 off, 1 linear, 2 exp, 3 exp2)
 #define GLPT_SC_FS_ALPHA_FOG 23

@@ -94,7 +94,9 @@ void emit(uint i, bool back, uint colour_from, float window_offset) {
   }
   for (; slot < 8; ++slot) gl_ClipDistance[slot] = 1.0;
   float size = clamp(S.point_size.x, S.point_size.y, S.point_size.z);
-  gl_PointSize = max(1.0, ceil(size - 0.5));
+  // Sprites are squares of the exact size (as llvmpipe draws points it does not round); aliased
+  // points round the size to an integer, halves down.
+  gl_PointSize = (kUnfilled & GLPT_UNFILLED_SPRITE) != 0u ? size : max(1.0, ceil(size - 0.5));
   EmitVertex();
 }
 

@@ -78,13 +78,19 @@ GL_ENUM_ONLY_EXTENSIONS = [
     "GL_EXT_texture_lod_bias", "GL_ARB_texture_border_clamp", "GL_ARB_texture_mirrored_repeat",
     "GL_NV_texgen_reflection", "GL_EXT_stencil_wrap", "GL_ARB_depth_texture",
     "GL_ARB_texture_rectangle", "GL_EXT_texture_env_dot3", "GL_ARB_texture_env_dot3",
-    "GL_EXT_packed_depth_stencil",
+    "GL_EXT_packed_depth_stencil", "GL_ARB_point_sprite",
 ]
 
 # Single enums of later versions that glpt answers because state dumpers ask every context for
 # them (apitrace's glretrace -D sizes its per-texture-unit loop with these GL 2.0 limits).
 GL_TOOL_QUERY_ENUMS = [
     "GL_MAX_TEXTURE_COORDS", "GL_MAX_TEXTURE_IMAGE_UNITS", "GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS",
+]
+# GL 2.0's spellings of ARB_point_sprite, and the sprite origin GL 2.0 added to it (programs of the
+# time set it through glPointParameteri; Mesa accepts it in every compatibility context).
+GL_2_0_POINT_SPRITE_ENUMS = [
+    "GL_POINT_SPRITE", "GL_COORD_REPLACE", "GL_POINT_SPRITE_COORD_ORIGIN", "GL_LOWER_LEFT",
+    "GL_UPPER_LEFT",
 ]
 
 # What glGetString(GL_EXTENSIONS) advertises: the extensions GL 1.1-1.5 made core (programs of
@@ -95,7 +101,7 @@ GL_TOOL_QUERY_ENUMS = [
 # GL 1.4 blend subset is implemented).
 ADVERTISED_GL_EXTENSIONS = [
     "GL_ARB_depth_texture", "GL_ARB_multisample", "GL_ARB_multitexture", "GL_ARB_occlusion_query",
-    "GL_ARB_point_parameters",
+    "GL_ARB_point_parameters", "GL_ARB_point_sprite",
     "GL_ARB_shadow", "GL_ARB_texture_border_clamp", "GL_ARB_texture_compression",
     "GL_ARB_texture_cube_map", "GL_ARB_texture_env_add", "GL_ARB_texture_env_combine",
     "GL_ARB_texture_env_crossbar", "GL_ARB_texture_env_dot3", "GL_ARB_texture_mirrored_repeat",
@@ -818,7 +824,7 @@ def main():
     gl = ET.parse(args.gl_xml).getroot()
     commands = parse_commands(gl)
     names, enum_names = collect(gl, "gl", GL_FEATURES, GL_EXTENSIONS, GL_ENUM_ONLY_EXTENSIONS)
-    enum_names += [e for e in GL_TOOL_QUERY_ENUMS if e not in enum_names]
+    enum_names += [e for e in GL_TOOL_QUERY_ENUMS + GL_2_0_POINT_SPRITE_ENUMS if e not in enum_names]
     # Aliased core commands must exist for their aliases to use them.
     for n in list(names):
         a = alias_of(commands[n])

@@ -78,6 +78,7 @@ constexpr GLenum kEnableCaps[] = {
     GL_MAP2_VERTEX_4,
     GL_NORMALIZE,
     GL_POINT_SMOOTH,
+    GL_POINT_SPRITE,
     GL_POLYGON_OFFSET_POINT,
     GL_POLYGON_OFFSET_LINE,
     GL_POLYGON_OFFSET_FILL,
@@ -318,6 +319,9 @@ void restore_point(Context& ctx, const AttribFrame& f) {
   p.point_size_max = s.point_size_max;
   p.point_fade_threshold = s.point_fade_threshold;
   p.point_distance_attenuation = s.point_distance_attenuation;
+  p.point_sprite = s.point_sprite;
+  p.point_coord_replace = s.point_coord_replace;
+  p.point_sprite_coord_origin = s.point_sprite_coord_origin;
 }
 
 void restore_line(Context& ctx, const AttribFrame& f) {

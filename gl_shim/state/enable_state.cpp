@@ -96,6 +96,8 @@ bool* flag_field(Context& ctx, GLenum cap) {
       return &p.line_stipple;
     case GL_POINT_SMOOTH:
       return &p.point_smooth;
+    case GL_POINT_SPRITE:
+      return &p.point_sprite;
     case GL_FOG:
       return &ctx.raster.fog.enabled;
     case GL_COLOR_SUM:

@@ -60,6 +60,9 @@ bool lookup_primitive(const rec::PrimitiveState& p, GLenum pname, Value* out) {
     case GL_POINT_DISTANCE_ATTENUATION:
       *out = vec(&p.point_distance_attenuation.x, 3);
       return true;
+    case GL_POINT_SPRITE_COORD_ORIGIN:
+      *out = query::ints({double(p.point_sprite_coord_origin)});
+      return true;
     case GL_LINE_WIDTH:
       *out = number(p.line_width);
       return true;

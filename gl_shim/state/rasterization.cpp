@@ -32,6 +32,13 @@ void point_parameter(Context& ctx, GLenum pname, const float* values) {
     case GL_POINT_DISTANCE_ATTENUATION:
       p.point_distance_attenuation = {values[0], values[1], values[2]};
       return;
+    case GL_POINT_SPRITE_COORD_ORIGIN: {
+      const GLenum origin = values[0] >= 0.0f && values[0] < 4.0e9f ? GLenum(values[0]) : 0u;
+      if (origin != GL_LOWER_LEFT && origin != GL_UPPER_LEFT)
+        return record_error(ctx, GL_INVALID_VALUE);  // as Mesa: a value, not an enum, error
+      p.point_sprite_coord_origin = origin;
+      return;
+    }
     default:
       record_error(ctx, GL_INVALID_ENUM);
   }

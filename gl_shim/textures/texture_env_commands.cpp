@@ -126,7 +126,19 @@ float* env_scale_field(rec::TexEnv& env, GLenum pname) {
   return nullptr;
 }
 
+// ARB_point_sprite: glTexEnv(GL_POINT_SPRITE, GL_COORD_REPLACE, GL_TRUE / GL_FALSE) for the
+// active unit. Mesa keeps the bits as point state; any other value is GL_INVALID_VALUE there.
+void point_sprite_env(Context& ctx, GLenum pname, const ParamValues& p) {
+  if (pname != GL_COORD_REPLACE) return record_error(ctx, GL_INVALID_ENUM);
+  const GLint value = p.as_int_truncated(0);
+  if (value != GL_TRUE && value != GL_FALSE) return record_error(ctx, GL_INVALID_VALUE);
+  uint8_t& bits = ctx.raster.primitive.point_coord_replace;
+  const auto bit = static_cast<uint8_t>(1u << ctx.textures.active);
+  bits = value == GL_TRUE ? uint8_t(bits | bit) : uint8_t(bits & ~bit);
+}
+
 void tex_env(Context& ctx, GLenum target, GLenum pname, const ParamValues& p, bool vector) {
+  if (target == GL_POINT_SPRITE) return point_sprite_env(ctx, pname, p);
   rec::TexEnv& env = ctx.textures.active_unit().env;
   if (target == GL_TEXTURE_FILTER_CONTROL) {
     if (pname != GL_TEXTURE_LOD_BIAS) return record_error(ctx, GL_INVALID_ENUM);
@@ -161,6 +173,15 @@ bool get_tex_env(Context& ctx, GLenum target, GLenum pname, Put&& put) {
   rec::TexEnv& env = ctx.textures.active_unit().env;
   if (target == GL_TEXTURE_FILTER_CONTROL && pname == GL_TEXTURE_LOD_BIAS) {
     put(0, env.lod_bias, false);
+    return true;
+  }
+  if (target == GL_POINT_SPRITE) {
+    if (pname != GL_COORD_REPLACE) {
+      record_error(ctx, GL_INVALID_ENUM);
+      return false;
+    }
+    put(0, (ctx.raster.primitive.point_coord_replace >> ctx.textures.active) & 1u ? 1.0f : 0.0f,
+        false);
     return true;
   }
   if (target != GL_TEXTURE_ENV) {

@@ -33,6 +33,9 @@ int diff_main(std::span<const std::string> args);
 // The same, with its output streams given (for tests).
 int diff_main(std::span<const std::string> args, std::ostream& out, std::ostream& err);
 
+std::string doctor_help();
+int doctor_main(std::span<const std::string> args);
+
 // True for "-h" and "--help".
 bool is_help_flag(std::string_view arg);
 

@@ -1,10 +1,13 @@
 // `glpt run`, `glpt record` and `glpt replay`: each starts another program.
+#include <dlfcn.h>
+
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
 #include <vector>
 
 #include "commands.hpp"
+#include "common/device_survey.hpp"
 #include "process.hpp"
 #include "quality_flags.hpp"
 
@@ -101,8 +104,10 @@ std::string run_help() {
          "  --lib PATH  the libGL.so.1 to preload (default: found next to glpt: the build\n"
          "              tree's gl_shim/libGL.so.1, or PREFIX/lib/glpt/libGL.so.1)\n"
          "\n"
-         "exit status: PROGRAM's; 2 for a bad command line or no libGL.so.1 found, 126/127\n"
-         "when PROGRAM cannot be started / is not found.\n"
+         "exit status: PROGRAM's; 2 for a bad command line or no libGL.so.1 found (or one\n"
+         "that cannot be loaded), 126/127 when PROGRAM cannot be started / is not found.\n"
+         "Where path tracing is not possible, glpt draws in raster mode and says why once;\n"
+         "`glpt doctor` says what the machine lacks.\n"
          "\n"
          "example: glpt run --spp 4 --output /tmp/frames -- glxgears\n";
 }
@@ -131,6 +136,14 @@ int run_main(std::span<const std::string> args) {
     }
   } else if (!is_regular_file(lib)) {
     std::fprintf(stderr, "glpt run: --lib %s: no such file\n", lib.c_str());
+    return kExitUsage;
+  }
+  // A library the dynamic linker cannot load (a missing Vulkan loader, say) would be skipped with
+  // a warning, and the program would run on the system's libGL as if nothing were wrong.
+  if (dlopen(lib.c_str(), RTLD_LAZY | RTLD_LOCAL) == nullptr) {
+    const char* why = dlerror();
+    std::fprintf(stderr, "glpt run: %s cannot be loaded (%s); %s\n", lib.c_str(),
+                 why != nullptr ? why : "unknown error", kDoctorHint);
     return kExitUsage;
   }
   // glpt's library goes first, ahead of any preloads the user already has.

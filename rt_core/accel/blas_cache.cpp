@@ -262,7 +262,9 @@ void BlasCache::evict_unused(uint64_t frame_number) {
     if (entry->last_used_frame < frame_number) by_age.emplace_back(entry->last_used_frame, hash);
   }
   std::sort(by_age.begin(), by_age.end());
-  for (const auto& [last_used, hash] : by_age) {
+  for (const auto& aged : by_age) {
+    // Not a structured binding: Clang 14 cannot capture one in the lambda below (P1091, Clang 16).
+    const auto hash = aged.second;
     if (memory_bytes_ <= kMemoryBudgetBytes) break;
     auto found = entries_.find(hash);
     memory_bytes_ -= entry_bytes(*found->second);

@@ -332,10 +332,14 @@ DrawSetup make_draw_setup(const rec::StateSnapshot& state, const DrawContext& co
   }
   if (transform.normalize) vs |= GLPT_VS_NORMALIZE;
   if (transform.rescale_normal) vs |= GLPT_VS_RESCALE_NORMAL;
+  // Point sprites (GL 2.0 3.3.1) apply to every point rasterized: GL_POINTS, and polygons drawn
+  // in GL_POINT mode (raster_unfilled.geom), as Mesa draws them.
+  const bool sprites = (points || (triangles && mode == GL_POINT)) && prim.point_sprite;
   if (points) {
     vs |= GLPT_VS_POINTS;
     if (prim.point_distance_attenuation != glm::vec3(1.0f, 0.0f, 0.0f))
       vs |= GLPT_VS_POINT_ATTENUATION;
+    if (sprites) vs |= GLPT_VS_POINT_SPRITE;
   }
   if (lines) vs |= GLPT_VS_LINES;
   bool needs_eye =
@@ -369,6 +373,7 @@ DrawSetup make_draw_setup(const rec::StateSnapshot& state, const DrawContext& co
     if (sampling.compare) config |= GLPT_UNIT_COMPARE;
     if (tex.texel_format == rec::TexelFormat::kDepth32f) config |= GLPT_UNIT_DEPTH;
     if (unit.target == GL_TEXTURE_RECTANGLE_ARB) config |= GLPT_UNIT_RECT;
+    if (sprites && (prim.point_coord_replace >> u) & 1u) config |= GLPT_UNIT_COORD_REPLACE;
     sc[GLPT_SC_UNIT0 + u] = config;
     if (env.mode == GL_COMBINE) {
       uint32_t combine =
@@ -398,6 +403,7 @@ DrawSetup make_draw_setup(const rec::StateSnapshot& state, const DrawContext& co
   // it is the vertex's and only added while GL_COLOR_SUM is enabled.
   if (lighting.enabled ? lighting.separate_specular : ops.color_sum) fs |= GLPT_FS_COLOR_SUM;
   if (triangles && mode == GL_FILL && prim.polygon_stipple) fs |= GLPT_FS_POLYGON_STIPPLE;
+  if (sprites && prim.point_sprite_coord_origin == GL_LOWER_LEFT) fs |= GLPT_FS_SPRITE_LOWER_LEFT;
   sc[GLPT_SC_FS_FLAGS] = fs;
   uint32_t alpha_fog = 0;
   if (ops.alpha_test && ops.alpha_func >= GL_NEVER && ops.alpha_func <= GL_ALWAYS)
@@ -418,6 +424,7 @@ DrawSetup make_draw_setup(const rec::StateSnapshot& state, const DrawContext& co
     if (cull & VK_CULL_MODE_BACK_BIT) u |= GLPT_UNFILLED_CULL_BACK;
     if (mode == GL_LINE ? prim.offset_line : prim.offset_point) u |= GLPT_UNFILLED_OFFSET;
     if (prim.shade_model == GL_FLAT) u |= GLPT_UNFILLED_FLAT;
+    if (sprites) u |= GLPT_UNFILLED_SPRITE;
     sc[GLPT_SC_UNFILLED] = u;
   }
 
@@ -491,7 +498,8 @@ DrawSetup make_draw_setup(const rec::StateSnapshot& state, const DrawContext& co
   // (Polygons are smoothed by the rule of the mode they are rasterized in: GL 1.5 3.5.6.)
   const bool as_points = points || (triangles && mode == GL_POINT);
   const bool filled = triangles && mode == GL_FILL;
-  if ((as_points && prim.point_smooth) || (filled && prim.polygon_smooth) ||
+  // (Sprites are squares: GL_POINT_SMOOTH does not apply to them, GL 2.0 3.3.1.)
+  if ((as_points && prim.point_smooth && !sprites) || (filled && prim.polygon_smooth) ||
       (as_lines && prim.line_smooth))
     setup.approximated = true;
   return setup;

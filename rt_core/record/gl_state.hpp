@@ -184,6 +184,13 @@ struct PrimitiveState {
   float point_size_max = 1.0e30f;  // clamped to the implementation's range when used
   float point_fade_threshold = 1.0f;
   glm::vec3 point_distance_attenuation{1.0f, 0.0f, 0.0f};
+  // ARB_point_sprite (GL 2.0 3.3.1): points drawn as textured squares. Bit u: unit u's texture
+  // coordinates are replaced by the sprite's (glTexEnv(GL_POINT_SPRITE, GL_COORD_REPLACE)); like
+  // Mesa this is point state (GL_POINT_BIT), not texture environment. GL_UPPER_LEFT or
+  // GL_LOWER_LEFT: where t = 0 lies (GL 2.0's glPointParameter(GL_POINT_SPRITE_COORD_ORIGIN)).
+  bool point_sprite = false;
+  uint8_t point_coord_replace = 0;
+  uint32_t point_sprite_coord_origin = GL_UPPER_LEFT;
 
   bool operator==(const PrimitiveState&) const = default;
 

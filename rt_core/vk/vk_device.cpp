@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <new>
 #include <vector>
@@ -60,6 +61,9 @@ struct Candidate {
   std::vector<std::string> missing;            // for raster (and anything at all): empty = usable
   std::vector<std::string> missing_ray_query;  // empty: path tracing possible
   bool geometry_shader = false;
+  bool storage_image_read = false, storage_image_write = false;  // ...WithoutFormat
+  uint32_t api_version = 0;
+  std::string driver;                 // driverName and driverInfo, where the driver reports them
   bool external_host_memory = false;  // VK_EXT_external_memory_host: zero-copy presenting
   bool smooth_lines = false, stippled_smooth_lines = false;
   bool precise_occlusion_queries = false;
@@ -83,6 +87,7 @@ Candidate evaluate(VkPhysicalDevice device) {
   vkGetPhysicalDeviceProperties(device, &properties);
   candidate.name = properties.deviceName;
   candidate.type = properties.deviceType;
+  candidate.api_version = properties.apiVersion;
   if (properties.apiVersion < VK_API_VERSION_1_3) candidate.missing.push_back("Vulkan 1.3");
 
   uint32_t count = 0;
@@ -139,6 +144,8 @@ Candidate evaluate(VkPhysicalDevice device) {
   need(border.customBorderColorWithoutFormat, "customBorderColorWithoutFormat");
   // Geometry shaders draw GL's unfilled polygons with edge flags; they also need point sizes.
   candidate.geometry_shader = core.geometryShader && core.shaderTessellationAndGeometryPointSize;
+  candidate.storage_image_read = core.shaderStorageImageReadWithoutFormat;
+  candidate.storage_image_write = core.shaderStorageImageWriteWithoutFormat;
   // Smooth lines are only used where stippled smooth lines exist too (GL stipples either kind).
   candidate.smooth_lines = lines.smoothLines && lines.stippledSmoothLines;
   candidate.stippled_smooth_lines = lines.stippledSmoothLines;
@@ -163,9 +170,13 @@ Candidate evaluate(VkPhysicalDevice device) {
   // The path tracer counts rays with subgroupAdd.
   auto subgroup = make_info<VkPhysicalDeviceSubgroupProperties>(
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES);
+  auto driver = make_info<VkPhysicalDeviceDriverProperties>(
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES, &subgroup);
   auto properties2 = make_info<VkPhysicalDeviceProperties2>(
-      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &subgroup);
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &driver);
   vkGetPhysicalDeviceProperties2(device, &properties2);
+  candidate.driver = driver.driverName;
+  if (driver.driverInfo[0] != '\0') candidate.driver += std::string(" ") + driver.driverInfo;
   if (!(subgroup.supportedStages & VK_SHADER_STAGE_COMPUTE_BIT) ||
       !(subgroup.supportedOperations & VK_SUBGROUP_FEATURE_ARITHMETIC_BIT)) {
     candidate.missing_ray_query.push_back("subgroup arithmetic in compute shaders");
@@ -225,12 +236,103 @@ const Candidate& choose(const std::vector<Candidate>& candidates, const std::str
   } else {
     message = "no usable Vulkan device (" +
               (reasons.empty() ? std::string("no Vulkan devices found") : join(reasons, "; ")) +
-              "). " + kInstallHint;
+              "). " + kInstallHint + " (" + kDoctorHint + ")";
   }
   throw DeviceUnavailable("glpt: " + message);
 }
 
+std::string version_text(uint32_t version) {
+  return std::to_string(VK_API_VERSION_MAJOR(version)) + "." +
+         std::to_string(VK_API_VERSION_MINOR(version)) + "." +
+         std::to_string(VK_API_VERSION_PATCH(version));
+}
+
+const char* device_type_name(VkPhysicalDeviceType type) {
+  switch (type) {
+    case VK_PHYSICAL_DEVICE_TYPE_CPU:
+      return "cpu";
+    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU:
+      return "discrete GPU";
+    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU:
+      return "integrated GPU";
+    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU:
+      return "virtual GPU";
+    default:
+      return "other";
+  }
+}
+
+// GLPT_VK_NO_RAY_QUERY: every device is judged as lacking ray queries.
+void hide_ray_queries(std::vector<Candidate>& candidates) {
+  for (Candidate& c : candidates)
+    c.missing_ray_query.push_back("ray queries: hidden by GLPT_VK_NO_RAY_QUERY");
+}
+
 }  // namespace
+
+DeviceOptions DeviceOptions::from_environment(bool validation) {
+  DeviceOptions options;
+  options.validation = validation;
+  if (const char* filter = std::getenv("GLPT_VK_DEVICE")) options.name_filter = filter;
+  if (const char* hide = std::getenv("GLPT_VK_NO_RAY_QUERY"); hide && *hide && *hide != '0')
+    options.hide_ray_query = true;
+  if (const char* sync = std::getenv("GLPT_VK_SYNC"); sync && *sync && *sync != '0')
+    options.sync_submissions = true;
+  return options;
+}
+
+DeviceSurvey survey_devices(const DeviceOptions& options) {
+  DeviceSurvey survey;
+  uint32_t loader_version = VK_API_VERSION_1_0;
+  if (vkEnumerateInstanceVersion(&loader_version) == VK_SUCCESS)
+    survey.loader_version = version_text(loader_version);
+  survey.validation_layer = has_layer(kValidationLayer);
+
+  auto application = make_info<VkApplicationInfo>(VK_STRUCTURE_TYPE_APPLICATION_INFO);
+  application.pApplicationName = "glpt doctor";
+  application.apiVersion = VK_API_VERSION_1_3;
+  auto instance_info = make_info<VkInstanceCreateInfo>(VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO);
+  instance_info.pApplicationInfo = &application;
+  VkInstance raw_instance = VK_NULL_HANDLE;
+  if (const VkResult result = vkCreateInstance(&instance_info, nullptr, &raw_instance);
+      result != VK_SUCCESS) {
+    survey.instance_error = "cannot create a Vulkan instance (" + vk_result_name(result) + ")";
+    return survey;
+  }
+  const vk::Instance instance(raw_instance, {});
+
+  uint32_t count = 0;
+  std::vector<VkPhysicalDevice> physical_devices;
+  if (vkEnumeratePhysicalDevices(raw_instance, &count, nullptr) == VK_SUCCESS) {
+    physical_devices.resize(count);
+    if (vkEnumeratePhysicalDevices(raw_instance, &count, physical_devices.data()) != VK_SUCCESS)
+      physical_devices.clear();
+    physical_devices.resize(std::min<size_t>(count, physical_devices.size()));
+  }
+  std::vector<Candidate> candidates;
+  for (VkPhysicalDevice device : physical_devices) candidates.push_back(evaluate(device));
+  if (options.hide_ray_query) hide_ray_queries(candidates);
+  const Candidate* chosen = nullptr;
+  try {
+    chosen = &choose(candidates, options.name_filter);
+  } catch (const DeviceUnavailable& e) {
+    survey.choice_error = e.what();
+  }
+  for (const Candidate& c : candidates) {
+    DeviceSurvey::Device& device = survey.devices.emplace_back();
+    device.name = c.name;
+    device.type = device_type_name(c.type);
+    device.driver = c.driver;
+    device.api_version = version_text(c.api_version);
+    device.missing = c.missing;
+    device.missing_ray_query = c.missing_ray_query;
+    device.geometry_shader = c.geometry_shader;
+    device.storage_image_read = c.storage_image_read;
+    device.storage_image_write = c.storage_image_write;
+    device.chosen = &c == chosen;
+  }
+  return survey;
+}
 
 VKAPI_ATTR VkBool32 VKAPI_CALL VulkanDevice::on_validation_message(
     VkDebugUtilsMessageSeverityFlagBitsEXT severity, VkDebugUtilsMessageTypeFlagsEXT,
@@ -306,7 +408,7 @@ std::unique_ptr<VulkanDevice> VulkanDevice::create(const DeviceOptions& options)
   if (result != VK_SUCCESS) {
     throw DeviceUnavailable("glpt: no usable Vulkan device: cannot create a Vulkan instance (" +
                             vk_result_name(result) + "), is a Vulkan driver installed? " +
-                            kInstallHint);
+                            kInstallHint + " (" + kDoctorHint + ")");
   }
   self->instance_ = vk::Instance(instance, {});
 
@@ -329,9 +431,7 @@ std::unique_ptr<VulkanDevice> VulkanDevice::create(const DeviceOptions& options)
   GLPT_VK_CHECK(vkEnumeratePhysicalDevices(instance, &count, physical_devices.data()));
   std::vector<Candidate> candidates;
   for (VkPhysicalDevice device : physical_devices) candidates.push_back(evaluate(device));
-  if (options.hide_ray_query)
-    for (Candidate& c : candidates)
-      c.missing_ray_query.push_back("ray queries: hidden by GLPT_VK_NO_RAY_QUERY");
+  if (options.hide_ray_query) hide_ray_queries(candidates);
   const Candidate& chosen = choose(candidates, options.name_filter);
   self->physical_device_ = chosen.device;
   self->sync_submissions_ = options.sync_submissions;

@@ -15,6 +15,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "common/device_survey.hpp"
 #include "rt_core/vk/vk_raii.hpp"
 
 namespace glpt::rt {
@@ -42,7 +43,14 @@ struct DeviceOptions {
   // problem shows by going away with it.
   bool sync_submissions = false;
   bool operator==(const DeviceOptions&) const = default;
+  // GLPT_VK_DEVICE, GLPT_VK_NO_RAY_QUERY and GLPT_VK_SYNC, as every renderer reads them.
+  static DeviceOptions from_environment(bool validation);
 };
+
+// Every Vulkan device as glpt judges it, without creating one: what `glpt doctor` reports. The
+// judgement is VulkanDevice::create's own (the same requirements and the same ranking), so the
+// doctor cannot disagree with what a renderer would do.
+DeviceSurvey survey_devices(const DeviceOptions& options);
 
 // Entry points of VK_KHR_acceleration_structure: the loader does not export them, they come from
 // vkGetDeviceProcAddr.

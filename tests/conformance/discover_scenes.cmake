@@ -2,7 +2,7 @@
 # the Mesa runner is built (see CMakeLists.txt). Inputs: MESA_RUNNER, GLPT_RUNNER (may be empty),
 # IMGCOMPARE, RUN_SCENE, OUT_DIR, WITH_GLPT (register the glpt-vs-Mesa image tests), WITH_STATE
 # (and the state tests), PENDING (pending.txt: scenes whose image test is expected to fail),
-# OUTPUT.
+# PATH_MODE (path_mode.txt: scenes also compared with Mesa in path-traced mode), OUTPUT.
 cmake_policy(VERSION 3.25)
 execute_process(COMMAND ${MESA_RUNNER} --list
                 OUTPUT_VARIABLE listing
@@ -11,14 +11,21 @@ execute_process(COMMAND ${MESA_RUNNER} --list
 if(NOT status EQUAL 0)
   message(FATAL_ERROR "${MESA_RUNNER} --list failed (${status}):\n${list_error}")
 endif()
-set(pending_scenes "")
-if(EXISTS "${PENDING}")
-  file(STRINGS "${PENDING}" pending_lines REGEX "^[a-z0-9_]+ ")
-  foreach(line IN LISTS pending_lines)
-    string(REGEX MATCH "^[a-z0-9_]+" name "${line}")
-    list(APPEND pending_scenes "${name}")
-  endforeach()
-endif()
+# The scene names that start the lines of FILE (a name, then its reason or nothing; lines
+# starting with '#' are comments), into OUT.
+function(read_scene_names file out)
+  set(names "")
+  if(EXISTS "${file}")
+    file(STRINGS "${file}" lines REGEX "^[a-z0-9_]+")
+    foreach(line IN LISTS lines)
+      string(REGEX MATCH "^[a-z0-9_]+" name "${line}")
+      list(APPEND names "${name}")
+    endforeach()
+  endif()
+  set(${out} "${names}" PARENT_SCOPE)
+endfunction()
+read_scene_names("${PENDING}" pending_scenes)
+read_scene_names("${PATH_MODE}" path_scenes)
 # Reasons are free text: their semicolons would split CMake lists.
 string(REPLACE ";" "," listing "${listing}")
 string(REPLACE "\n" ";" lines "${listing}")
@@ -48,6 +55,13 @@ foreach(line IN LISTS lines)
       "\"${OUT_DIR}/image/${scene}\" \"${MESA_RUNNER}\" \"${GLPT_RUNNER}\" \"${IMGCOMPARE}\" "
       "${max_diff} ${min_fraction})\n"
       "set_tests_properties(conformance.${scene} PROPERTIES ${image_properties} TIMEOUT 60)\n")
+    if(scene IN_LIST path_scenes)
+      string(APPEND text
+        "add_test(conformance_path.${scene} \"${RUN_SCENE}\" image-path \"${scene}\" "
+        "\"${OUT_DIR}/path/${scene}\" \"${MESA_RUNNER}\" \"${GLPT_RUNNER}\" \"${IMGCOMPARE}\" "
+        "${max_diff} ${min_fraction})\n"
+        "set_tests_properties(conformance_path.${scene} PROPERTIES LABELS conformance TIMEOUT 60)\n")
+    endif()
   endif()
   # A pending scene's state is compared once it leaves pending.txt (until then it may fail either
   # way, and an expected failure cannot say which query).

@@ -49,7 +49,9 @@ class GlptBackend final : public glpt::conformance::Backend {
 int main(int argc, char** argv) {
   // The conformance suite measures raster mode (Mesa-exact rasterization), not the path tracer.
   // Set before the first GL call: glpt reads it when it creates a context's renderer.
-  setenv("GLPT_MODE", "raster", 1);
+  // GLPT_CONFORMANCE_MODE=path renders the scenes path-traced instead, to look at by hand.
+  const char* mode = std::getenv("GLPT_CONFORMANCE_MODE");
+  setenv("GLPT_MODE", mode != nullptr && std::string_view(mode) == "path" ? "path" : "raster", 1);
   GlptBackend backend;
   return glpt::conformance::run_main(argc, argv, backend);
 }

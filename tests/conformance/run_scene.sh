@@ -6,6 +6,9 @@
 #   run_scene.sh image SCENE OUT MESA GLPT IMGCOMPARE MAX_DIFF MIN_FRACTION
 #       Mesa and glpt render SCENE; glpt's image must be within the scene's tolerance of Mesa's.
 #       On failure OUT/glpt/SCENE.diff.png shows where (see README.md).
+#   run_scene.sh image-path SCENE OUT MESA GLPT IMGCOMPARE MAX_DIFF MIN_FRACTION
+#       The same with glpt in path-traced mode (GLPT_CONFORMANCE_MODE=path): for the scenes
+#       path_mode.txt lists, whose draws path-traced mode rasterizes as raster mode does.
 #   run_scene.sh state SCENE OUT MESA GLPT IMGCOMPARE
 #       Mesa and glpt render SCENE; their GL state dumps must agree (but for the deliberate
 #       differences state_known.txt lists with their reasons).
@@ -44,6 +47,13 @@ case "$mode" in
     scene=$1 out=$2 mesa=$3 glpt=$4 imgcompare=$5 max_diff=$6 min_fraction=$7
     render "$mesa" "$scene" "$out/mesa"
     render "$glpt" "$scene" "$out/glpt"
+    "$imgcompare" within "$out/mesa/$scene.png" "$out/glpt/$scene.png" \
+      --max-diff "$max_diff" --min-fraction "$min_fraction"
+    ;;
+  image-path)
+    scene=$1 out=$2 mesa=$3 glpt=$4 imgcompare=$5 max_diff=$6 min_fraction=$7
+    render "$mesa" "$scene" "$out/mesa"
+    GLPT_CONFORMANCE_MODE=path GLPT_STATS=1 render "$glpt" "$scene" "$out/glpt"
     "$imgcompare" within "$out/mesa/$scene.png" "$out/glpt/$scene.png" \
       --max-diff "$max_diff" --min-fraction "$min_fraction"
     ;;

@@ -94,6 +94,7 @@ const Pname kStatePnames[] = {
     P(GL_POINT_SIZE_MAX, 1),
     P(GL_POINT_FADE_THRESHOLD_SIZE, 1),
     P(GL_POINT_DISTANCE_ATTENUATION, 3),
+    P(GL_POINT_SPRITE_COORD_ORIGIN, 1),
     P(GL_LINE_WIDTH, 1),
     P(GL_LINE_STIPPLE_PATTERN, 1),
     P(GL_LINE_STIPPLE_REPEAT, 1),
@@ -340,6 +341,7 @@ const Pname kCapabilities[] = {
     P(GL_LIGHT6, 1),
     P(GL_LIGHT7, 1),
     P(GL_POINT_SMOOTH, 1),
+    P(GL_POINT_SPRITE, 1),
     P(GL_LINE_SMOOTH, 1),
     P(GL_LINE_STIPPLE, 1),
     P(GL_CULL_FACE, 1),
@@ -614,6 +616,9 @@ void dump_texture_unit(JsonObject& out, const std::string& prefix) {
   for (const Pname& p : kTexEnvParams) {
     record_fv_iv(out, prefix, "glGetTexEnv", env, p, glGetTexEnvfv, glGetTexEnviv);
   }
+  const Pname sprite{GL_POINT_SPRITE, "GL_POINT_SPRITE", 0};
+  const Pname coord_replace{GL_COORD_REPLACE, "GL_COORD_REPLACE", 1};
+  record_fv_iv(out, prefix, "glGetTexEnv", sprite, coord_replace, glGetTexEnvfv, glGetTexEnviv);
   record<GLfloat>(
       out, prefix + call("glGetTexEnvfv", "GL_TEXTURE_FILTER_CONTROL", "GL_TEXTURE_LOD_BIAS"), 1,
       [&](GLfloat* v) { glGetTexEnvfv(GL_TEXTURE_FILTER_CONTROL, GL_TEXTURE_LOD_BIAS, v); },

@@ -11,6 +11,7 @@
 
 #include "commands.hpp"
 #include "quality_flags.hpp"
+#include "shell.hpp"
 #include "temp_dir.hpp"
 
 namespace glpt::cli {
@@ -18,25 +19,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Result {
-  int status = -1;
-  std::string out;  // stdout and stderr together
-};
-
-// Runs `command` with /bin/sh; returns its exit status and output.
-Result shell(const std::string& command) {
-  Result r;
-  FILE* p = popen((command + " 2>&1").c_str(), "r");
-  if (p == nullptr) return r;
-  char buf[4096];
-  size_t n;
-  while ((n = fread(buf, 1, sizeof buf, p)) > 0) r.out.append(buf, n);
-  const int status = pclose(p);
-  r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
-
 const std::string kGlpt = GLPT_CLI_EXE;
+// A shared library that loads and does nothing (tests/diff/fake_preload.c).
+const std::string kFakeLib = GLPT_FAKE_PRELOAD;
 
 class Cli : public ::testing::Test {
  protected:
@@ -121,9 +106,9 @@ TEST(QualityFlags, RejectsBadValues) {
 }
 
 TEST_F(Cli, RunSetsTheEnvironmentAndPassesTheExitStatusThrough) {
-  // Any file will do as the preloaded library here: the loader warns and ignores a non-ELF one.
+  // Any library that loads will do here.
   const std::string lib = dir_ + "/libGL.so.1";
-  std::ofstream(lib) << "not a library";
+  fs::copy_file(kFakeLib, lib);
   const std::string probe = dir_ + "/probe.sh";
   script(probe,
          "echo \"spp=$GLPT_SPP mode=$GLPT_MODE acc=$GLPT_ACCUMULATE preload=$LD_PRELOAD "
@@ -141,7 +126,7 @@ TEST_F(Cli, RunSetsTheEnvironmentAndPassesTheExitStatusThrough) {
 
 TEST_F(Cli, RunErrors) {
   const std::string lib = dir_ + "/libGL.so.1";
-  std::ofstream(lib) << "x";
+  fs::copy_file(kFakeLib, lib);
   EXPECT_EQ(shell(kGlpt + " run --spp x --lib " + lib + " -- true").status, 2);
   EXPECT_EQ(shell(kGlpt + " run --lib " + lib).status, 2);  // no program
   EXPECT_EQ(shell(kGlpt + " run --lib " + dir_ + "/absent.so -- true").status, 2);
@@ -151,12 +136,23 @@ TEST_F(Cli, RunErrors) {
   EXPECT_NE(missing.out.find("no_such_program"), std::string::npos) << missing.out;
 }
 
+// The dynamic linker skips a preload it cannot load with a warning, and the program would run on
+// the system's libGL as if nothing were wrong: glpt run refuses, and says what to do.
+TEST_F(Cli, RunRefusesALibraryThatCannotBeLoaded) {
+  const std::string lib = dir_ + "/libGL.so.1";
+  std::ofstream(lib) << "not a library";
+  const Result r = shell(kGlpt + " run --lib " + lib + " -- true");
+  EXPECT_EQ(r.status, 2) << r.out;
+  EXPECT_NE(r.out.find("cannot be loaded"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("glpt doctor"), std::string::npos) << r.out;
+}
+
 TEST_F(Cli, RunFindsTheLibraryNextToGlpt) {
   // Build tree: BUILD/replay/glpt and BUILD/gl_shim/libGL.so.1.
   fs::create_directories(dir_ + "/build/replay");
   fs::create_directories(dir_ + "/build/gl_shim");
   EXPECT_EQ(find_glpt_library(dir_ + "/build/replay"), "");
-  std::ofstream(dir_ + "/build/gl_shim/libGL.so.1") << "x";
+  fs::copy_file(kFakeLib, dir_ + "/build/gl_shim/libGL.so.1");
   EXPECT_EQ(find_glpt_library(dir_ + "/build/replay"),
             dir_ + "/build/replay/../gl_shim/libGL.so.1");
   // Installed: PREFIX/bin/glpt and PREFIX/lib/glpt/libGL.so.1.

@@ -63,7 +63,8 @@ static int parse_args(int argc, char** argv, struct options* o) {
   o->light[0] = 5.0f;
   o->light[1] = 5.0f;
   o->light[2] = 10.0f;
-  for (int i = 1; i < argc; ++i) {
+  /* Each option takes a value: two arguments per step. */
+  for (int i = 1; i < argc; i += 2) {
     const char* a = argv[i];
     const char* v = i + 1 < argc ? argv[i + 1] : NULL;
     if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
@@ -111,7 +112,6 @@ static int parse_args(int argc, char** argv, struct options* o) {
       fprintf(stderr, "gearsdet: unknown option '%s'\n", a);
       return 0;
     }
-    ++i;
   }
   return 1;
 }

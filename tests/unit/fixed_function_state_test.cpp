@@ -12,9 +12,7 @@ namespace {
 constexpr GLint kIntMax = std::numeric_limits<GLint>::max();
 // GL 2.0 enums, which GL 1.5 does not accept.
 constexpr GLenum kBlendEquationAlpha = 0x883D;
-constexpr GLenum kPointSprite = 0x8861;
-constexpr GLenum kPointSpriteCoordOrigin = 0x8CA0;
-constexpr GLint kLowerLeft = 0x8CA3;
+constexpr GLenum kCurrentProgram = 0x8B8D;  // GL 2.0 shader state: glpt has none
 
 std::vector<float> floats(GLenum pname, int n) {
   std::vector<float> v(16, -777.0f);
@@ -126,7 +124,7 @@ TEST_F(GlTest, UnknownPnameIsInvalidEnumAndWritesNothing) {
   EXPECT_EQ(error(), GLenum{GL_INVALID_ENUM});
   glGetFloatv(kBlendEquationAlpha, &f);
   EXPECT_EQ(error(), GLenum{GL_INVALID_ENUM});
-  glGetBooleanv(kPointSprite, &b);
+  glGetBooleanv(kCurrentProgram, &b);
   EXPECT_EQ(error(), GLenum{GL_INVALID_ENUM});
   glGetDoublev(0, &d);
   EXPECT_EQ(error(), GLenum{GL_INVALID_ENUM});
@@ -458,8 +456,15 @@ TEST_F(GlTest, PointSizeAndParameters) {
   EXPECT_EQ(floats(GL_POINT_DISTANCE_ATTENUATION, 3), (std::vector<float>{2, 0, 0}));
   EXPECT_EQ(error(), GLenum{GL_NO_ERROR});
 
-  glPointParameteri(kPointSpriteCoordOrigin, kLowerLeft);
-  EXPECT_EQ(error(), GLenum{GL_INVALID_ENUM});
+  // ARB_point_sprite's origin, as GL 2.0 added it: two values, others GL_INVALID_VALUE (Mesa).
+  glPointParameteri(GL_POINT_SPRITE_COORD_ORIGIN, GL_LOWER_LEFT);
+  EXPECT_EQ(error(), GLenum{GL_NO_ERROR});
+  EXPECT_EQ(ctx_.raster.primitive.point_sprite_coord_origin, GLenum{GL_LOWER_LEFT});
+  glPointParameterf(GL_POINT_SPRITE_COORD_ORIGIN, 0x8CA3);  // GL_STENCIL_BACK_REF
+  EXPECT_EQ(error(), GLenum{GL_INVALID_VALUE});
+  glPointParameterf(GL_POINT_SPRITE_COORD_ORIGIN, std::nanf(""));
+  EXPECT_EQ(error(), GLenum{GL_INVALID_VALUE});
+  EXPECT_EQ(ctx_.raster.primitive.point_sprite_coord_origin, GLenum{GL_LOWER_LEFT});
   glPointParameterfv(GL_POINT_SIZE_MIN, nullptr);  // ignored, no crash
   EXPECT_EQ(error(), GLenum{GL_NO_ERROR});
 }

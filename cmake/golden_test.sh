@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # golden_test.sh GLPT_REPLAY GLPT TRACE FRAMES THRESHOLD GOLDEN_DIR WORK_DIR MODE [REPLAY ARGS...]
 #
-# The command behind glpt_add_golden_test (cmake/GlptGolden.cmake): replays TRACE's frames FRAMES
+# The command behind glpt_add_golden_test (GlptGolden.cmake, installed beside it): replays TRACE's frames FRAMES
 # in MODE into WORK_DIR/frames and compares them with GOLDEN_DIR by `glpt diff --threshold`.
 # With GLPT_UPDATE_GOLDENS=1 the replayed frames replace GOLDEN_DIR's instead.
 set -euo pipefail
