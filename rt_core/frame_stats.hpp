@@ -18,7 +18,8 @@ struct FrameStats {
   uint32_t denoised = 0;  // frames (records) whose samples the denoiser filtered
   // Host time of classification and identity matching (scene/classify.hpp), when classified.
   double classify_ms = 0;
-  uint32_t blas_builds = 0, blas_reused = 0;
+  // BLASes built, refit in place to a deformed shape (BlasCache), and reused unchanged.
+  uint32_t blas_builds = 0, blas_refits = 0, blas_reused = 0;
   // Bytes written into GPU-visible memory: state uniforms, vertices, pixels, textures, BLAS
   // inputs and shading data, instance tables, TLAS instances.
   uint64_t upload_bytes = 0;
@@ -61,6 +62,7 @@ struct FrameStats {
     denoised += s.denoised;
     classify_ms += s.classify_ms;
     blas_builds += s.blas_builds;
+    blas_refits += s.blas_refits;
     blas_reused += s.blas_reused;
     upload_bytes += s.upload_bytes;
     tlas_builds += s.tlas_builds;

@@ -85,6 +85,9 @@ struct RenderSettings {
   // GLPT_REFERENCE=N: every frame is rendered with N samples per pixel (jittered over the pixel),
   // from scratch: the ground truth for accuracy measurements. 0: off.
   uint32_t reference_samples = 0;
+  // A deforming object's BLAS refit to its new positions (BlasCache); GLPT_BLAS_REFIT=0 builds
+  // each new shape anew (for measurements).
+  bool blas_refit = true;
   // Average with previous frames while the frame is unchanged; GLPT_ACCUMULATE=0 disables.
   bool accumulate = true;
   // Stop adding samples once a pixel has this many; GLPT_MAX_SPP.

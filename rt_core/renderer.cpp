@@ -128,7 +128,9 @@ class Renderer::Impl {
                                          [](const TrackedDrawable& a, const TrackedDrawable& b) {
                                            return a.last_used < b.last_used;
                                          }));
-    identities_.push_back({&buffers, identity_clock_, DrawIdentities()});
+    // Each drawable's ids in a range of 2^40 of their own (a trillion draws each).
+    const uint64_t first_id = (identity_ranges_++ << 40) + 1;
+    identities_.push_back({&buffers, identity_clock_, DrawIdentities({}, first_id)});
     return identities_.back().identities;
   }
 
@@ -225,6 +227,7 @@ class Renderer::Impl {
   static constexpr size_t kTrackedDrawables = 8;
   std::vector<TrackedDrawable> identities_;
   uint64_t identity_clock_ = 0;
+  uint64_t identity_ranges_ = 0;  // id ranges given to drawables so far
   FrameClassification classification_;
   bool classified_ = false;           // classification_ is this record's
   std::unique_ptr<ClassifyLog> log_;  // GLPT_CLASSIFY_LOG; null: off

@@ -40,6 +40,8 @@ constexpr std::array kFlags = {
                 "render every frame with N samples per pixel from scratch (ground truth)"},
     QualityFlag{"--no-accumulate", "GLPT_ACCUMULATE", FlagValue::kNone, "0",
                 "do not average frames while nothing changes"},
+    QualityFlag{"--no-blas-refit", "GLPT_BLAS_REFIT", FlagValue::kNone, "0",
+                "build a deforming object's BLAS anew every frame instead of refitting it"},
     QualityFlag{"--max-spp", "GLPT_MAX_SPP", FlagValue::kCount, "N",
                 "stop accumulating at N samples per pixel"},
     QualityFlag{"--light-size-deg", "GLPT_LIGHT_SIZE_DEG", FlagValue::kNumber, "D",

@@ -33,16 +33,63 @@ uint64_t shading_key(uint64_t shape_hash, uint64_t shading_hash) {
 
 }  // namespace
 
-// What one build needs between creating the entry and recording the build command.
+// What one build or refit needs between creating (or finding) the entry and recording the
+// command.
 struct BlasCache::PendingBuild {
   uint64_t shape_hash = 0;
-  std::unique_ptr<BlasEntry> entry;
+  std::unique_ptr<BlasEntry> entry;  // a new entry, or a refit one taken out of the cache
+  bool refit = false;
   VkAccelerationStructureGeometryKHR geometry = make_info<VkAccelerationStructureGeometryKHR>(
       VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR);
   VkDeviceSize scratch_size = 0;
 };
 
-std::unique_ptr<BlasEntry> BlasCache::create_entry(const Geometry& geometry,
+namespace {
+
+struct Bounds {
+  glm::vec3 min{0.0f}, max{0.0f};
+  float area() const {
+    const glm::vec3 d = max - min;
+    return 2.0f * (d.x * d.y + d.y * d.z + d.z * d.x);
+  }
+};
+
+// The box of the finite positions (empty: a zero box at the origin).
+Bounds bounds_of(std::span<const glm::vec3> positions) {
+  glm::vec3 low(std::numeric_limits<float>::max()), high(std::numeric_limits<float>::lowest());
+  for (const glm::vec3& p : positions) {
+    if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z)) {
+      low = glm::min(low, p);
+      high = glm::max(high, p);
+    }
+  }
+  if (low.x > high.x) return {};
+  return {low, high};
+}
+
+// The build input of a non-indexed triangle soup read straight from `entry`'s positions.
+void describe_triangles(const BlasEntry& entry, VkAccelerationStructureGeometryKHR& geometry) {
+  geometry.geometryType = VK_GEOMETRY_TYPE_TRIANGLES_KHR;
+  geometry.flags = VK_GEOMETRY_OPAQUE_BIT_KHR;
+  auto& triangles = geometry.geometry.triangles;
+  triangles.sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_TRIANGLES_DATA_KHR;
+  triangles.vertexFormat = VK_FORMAT_R32G32B32_SFLOAT;
+  triangles.vertexData.deviceAddress = entry.positions_address;
+  triangles.vertexStride = sizeof(gpu::GpuPosition);
+  triangles.maxVertex = 3 * entry.triangle_count - 1;
+  triangles.indexType = VK_INDEX_TYPE_NONE_KHR;
+}
+
+VkBuildAccelerationStructureFlagsKHR build_flags(const BlasEntry& entry) {
+  VkBuildAccelerationStructureFlagsKHR flags =
+      VK_BUILD_ACCELERATION_STRUCTURE_PREFER_FAST_TRACE_BIT_KHR;
+  if (entry.updatable) flags |= VK_BUILD_ACCELERATION_STRUCTURE_ALLOW_UPDATE_BIT_KHR;
+  return flags;
+}
+
+}  // namespace
+
+std::unique_ptr<BlasEntry> BlasCache::create_entry(const Geometry& geometry, bool updatable,
                                                    PendingBuild& build) const {
   auto entry = std::make_unique<BlasEntry>();
   const size_t triangle_count = geometry.triangle_count();
@@ -51,6 +98,7 @@ std::unique_ptr<BlasEntry> BlasCache::create_entry(const Geometry& geometry,
   MortonOrder order = morton_order_triangles(positions);
   entry->triangle_order = std::move(order.permutation);
   entry->triangle_count = static_cast<uint32_t>(triangle_count);
+  entry->updatable = updatable;
 
   const VkDeviceSize position_bytes = 3 * triangle_count * sizeof(gpu::GpuPosition);
   entry->positions =
@@ -61,30 +109,15 @@ std::unique_ptr<BlasEntry> BlasCache::create_entry(const Geometry& geometry,
                  {entry->positions.as<gpu::GpuPosition>(), 3 * triangle_count});
   entry->positions_address = entry->positions.address();
 
-  glm::vec3 low(std::numeric_limits<float>::max()), high(std::numeric_limits<float>::lowest());
-  for (const glm::vec3& p : positions) {
-    if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z)) {
-      low = glm::min(low, p);
-      high = glm::max(high, p);
-    }
-  }
-  if (low.x <= high.x) {
-    entry->bounds_min = low;
-    entry->bounds_max = high;
-  }
-  // A non-indexed triangle soup read straight from the positions.
-  build.geometry.geometryType = VK_GEOMETRY_TYPE_TRIANGLES_KHR;
-  build.geometry.flags = VK_GEOMETRY_OPAQUE_BIT_KHR;
-  auto& triangles = build.geometry.geometry.triangles;
-  triangles.sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_TRIANGLES_DATA_KHR;
-  triangles.vertexFormat = VK_FORMAT_R32G32B32_SFLOAT;
-  triangles.vertexData.deviceAddress = entry->positions_address;
-  triangles.vertexStride = sizeof(gpu::GpuPosition);
-  triangles.maxVertex = static_cast<uint32_t>(3 * triangle_count - 1);
-  triangles.indexType = VK_INDEX_TYPE_NONE_KHR;
+  const Bounds bounds = bounds_of(positions);
+  entry->bounds_min = bounds.min;
+  entry->bounds_max = bounds.max;
+  entry->built_area = bounds.area();
+  describe_triangles(*entry, build.geometry);
 
   auto info =
       acceleration_build_info(VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR, &build.geometry);
+  info.flags = build_flags(*entry);
   const uint32_t primitive_count = entry->triangle_count;
   auto sizes = make_info<VkAccelerationStructureBuildSizesInfoKHR>(
       VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_SIZES_INFO_KHR);
@@ -92,6 +125,7 @@ std::unique_ptr<BlasEntry> BlasCache::create_entry(const Geometry& geometry,
   as.get_build_sizes(device_.handle(), VK_ACCELERATION_STRUCTURE_BUILD_TYPE_DEVICE_KHR, &info,
                      &primitive_count, &sizes);
   build.scratch_size = sizes.buildScratchSize;
+  entry->update_scratch_size = updatable ? sizes.updateScratchSize : 0;
 
   entry->storage = GpuBuffer::create(device_, sizes.accelerationStructureSize,
                                      VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_STORAGE_BIT_KHR);
@@ -108,6 +142,23 @@ std::unique_ptr<BlasEntry> BlasCache::create_entry(const Geometry& geometry,
   address_info.accelerationStructure = blas;
   entry->blas_address = as.get_device_address(device_.handle(), &address_info);
   return entry;
+}
+
+std::unordered_map<uint64_t, std::unique_ptr<BlasEntry>>::iterator BlasCache::refit_source(
+    const Geometry& geometry, uint64_t frame_number) {
+  if (!refit_allowed_ || geometry.lineage == 0) return entries_.end();
+  const auto shape = lineage_shapes_.find(geometry.lineage);
+  if (shape == lineage_shapes_.end() || shape->second == geometry.shape_hash) return entries_.end();
+  const auto found = entries_.find(shape->second);
+  if (found == entries_.end()) return entries_.end();
+  const BlasEntry& entry = *found->second;
+  // Used this frame (by another draw of that shape, or already refit): it must stay as it is.
+  if (!entry.updatable || entry.last_used_frame == frame_number ||
+      entry.triangle_count != geometry.triangle_count() || entry.refits + 1 > kMaxRefits)
+    return entries_.end();
+  const Bounds bounds = bounds_of({geometry.positions.data(), 3 * geometry.triangle_count()});
+  if (!(bounds.area() <= kMaxAreaGrowth * entry.built_area)) return entries_.end();
+  return found;
 }
 
 std::unique_ptr<ShadingEntry> BlasCache::create_shading(const Geometry& geometry,
@@ -137,34 +188,69 @@ BlasPrepareStats BlasCache::prepare(std::span<const Geometry* const> geometries,
   std::vector<PendingBuild> pending;
   pending.reserve(geometries.size());  // PendingBuild::geometry is pointed to: no reallocation
   std::unordered_map<uint64_t, const BlasEntry*> shapes;  // this frame's, built or found
+  auto wanted = [](const Geometry* geometry) {
+    return geometry != nullptr && (geometry->triangle_count() > 0 || geometry->resident);
+  };
+  // Shapes held already are marked used first, so a refit never takes one this frame needs.
+  std::vector<const Geometry*> missing;
   for (const Geometry* geometry : geometries) {
-    if (geometry == nullptr || (geometry->triangle_count() == 0 && !geometry->resident)) continue;
-    if (shapes.count(geometry->shape_hash)) continue;
+    if (!wanted(geometry) || shapes.count(geometry->shape_hash)) continue;
     if (auto found = entries_.find(geometry->shape_hash); found != entries_.end()) {
       found->second->last_used_frame = frame_number;
       shapes[geometry->shape_hash] = found->second.get();
       ++stats.reused;
-      continue;
+    } else if (!geometry->resident) {  // resident but not held: drawn without it this frame
+      shapes[geometry->shape_hash] = nullptr;
+      missing.push_back(geometry);
     }
-    if (geometry->resident) continue;  // not held after all: drawn without it this frame
+  }
+  // Refit entries leave the cache until their command is submitted (their old shape is gone);
+  // should anything below throw, they are dropped with `pending`, never kept half-updated.
+  for (const Geometry* geometry : missing) {
     PendingBuild& build = pending.emplace_back();
     build.shape_hash = geometry->shape_hash;
-    build.entry = create_entry(*geometry, build);
+    const std::span<const glm::vec3> positions(geometry->positions.data(),
+                                               3 * geometry->triangle_count());
+    if (auto source = refit_source(*geometry, frame_number); source != entries_.end()) {
+      build.refit = true;
+      build.entry = std::move(source->second);
+      memory_bytes_ -= entry_bytes(*build.entry);
+      entries_.erase(source);
+      BlasEntry& entry = *build.entry;
+      pack_positions(*geometry, entry.triangle_order,
+                     {entry.positions.as<gpu::GpuPosition>(), 3 * size_t{entry.triangle_count}});
+      const Bounds bounds = bounds_of(positions);
+      entry.bounds_min = bounds.min;
+      entry.bounds_max = bounds.max;
+      ++entry.refits;
+      describe_triangles(entry, build.geometry);
+      build.scratch_size = entry.update_scratch_size;
+    } else {
+      // A lineage seen with another shape before deforms: its new BLAS is built refittable.
+      const auto previous =
+          geometry->lineage != 0 ? lineage_shapes_.find(geometry->lineage) : lineage_shapes_.end();
+      const bool deforms =
+          previous != lineage_shapes_.end() && previous->second != geometry->shape_hash;
+      build.entry = create_entry(*geometry, refit_allowed_ && deforms, build);
+    }
     build.entry->last_used_frame = frame_number;
     stats.upload_bytes += build.entry->positions.size();
     shapes[geometry->shape_hash] = build.entry.get();
   }
+  for (const Geometry* geometry : geometries)
+    if (wanted(geometry) && geometry->lineage != 0)
+      lineage_shapes_[geometry->lineage] = geometry->shape_hash;
   // Shading data needs only the shape's triangle order, known before the BLAS is built.
   for (const Geometry* geometry : geometries) {
-    if (geometry == nullptr || (geometry->triangle_count() == 0 && !geometry->resident)) continue;
+    if (!wanted(geometry)) continue;
     const uint64_t key = shading_key(geometry->shape_hash, geometry->shading_hash);
     if (auto found = shading_.find(key); found != shading_.end()) {
       found->second->last_used_frame = frame_number;
       continue;
     }
-    if (geometry->resident || !shapes.count(geometry->shape_hash)) continue;
-    std::unique_ptr<ShadingEntry> entry =
-        create_shading(*geometry, *shapes.at(geometry->shape_hash));
+    const auto shape = shapes.find(geometry->shape_hash);
+    if (geometry->resident || shape == shapes.end() || shape->second == nullptr) continue;
+    std::unique_ptr<ShadingEntry> entry = create_shading(*geometry, *shape->second);
     entry->last_used_frame = frame_number;
     memory_bytes_ += entry->data.size();
     stats.upload_bytes += entry->data.size();
@@ -174,7 +260,8 @@ BlasPrepareStats BlasCache::prepare(std::span<const Geometry* const> geometries,
   stats.upload_ms = timer.elapsed_ms();
   if (pending.empty()) return stats;
 
-  // All builds go into one vkCmdBuildAccelerationStructuresKHR, each with its own scratch range.
+  // All builds and refits go into one vkCmdBuildAccelerationStructuresKHR, each with its own
+  // scratch range.
   const VkDeviceSize alignment = device_.scratch_alignment();
   device_.wait(last_build_);  // its scratch_ is reused (or replaced) here
   VkDeviceSize scratch_total = 0;
@@ -189,14 +276,15 @@ BlasPrepareStats BlasCache::prepare(std::span<const Geometry* const> geometries,
   VkDeviceAddress scratch_address = align_up(scratch_.address(), alignment);
   for (PendingBuild& build : pending) {
     VkAccelerationStructureBuildGeometryInfoKHR& info = infos.emplace_back();
-    info = make_info<VkAccelerationStructureBuildGeometryInfoKHR>(
-        VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_GEOMETRY_INFO_KHR);
-    info.type = VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR;
-    info.flags = VK_BUILD_ACCELERATION_STRUCTURE_PREFER_FAST_TRACE_BIT_KHR;
-    info.mode = VK_BUILD_ACCELERATION_STRUCTURE_MODE_BUILD_KHR;
+    info =
+        acceleration_build_info(VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR, &build.geometry);
+    info.flags = build_flags(*build.entry);
     info.dstAccelerationStructure = build.entry->blas.get();
-    info.geometryCount = 1;
-    info.pGeometries = &build.geometry;
+    if (build.refit) {
+      // In place, as the specification allows for updates.
+      info.mode = VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR;
+      info.srcAccelerationStructure = build.entry->blas.get();
+    }
     info.scratchData.deviceAddress = scratch_address;
     scratch_address += align_up(build.scratch_size, alignment);
     ranges.push_back({build.entry->triangle_count, 0, 0, 0});
@@ -214,6 +302,7 @@ BlasPrepareStats BlasCache::prepare(std::span<const Geometry* const> geometries,
   try {
     for (PendingBuild& build : pending) {
       const size_t bytes = entry_bytes(*build.entry);
+      (build.refit ? stats.refits : stats.builds) += 1;
       entries_.emplace(build.shape_hash, std::move(build.entry));
       memory_bytes_ += bytes;
     }
@@ -221,7 +310,6 @@ BlasPrepareStats BlasCache::prepare(std::span<const Geometry* const> geometries,
     device_.wait(last_build_);
     throw;
   }
-  stats.builds = static_cast<uint32_t>(pending.size());
   return stats;
 }
 
@@ -231,7 +319,8 @@ const BlasEntry* BlasCache::find(uint64_t shape_hash) const {
 }
 
 bool BlasCache::holds(uint64_t shape_hash, uint64_t shading_hash) const {
-  return entries_.count(shape_hash) != 0 && shading_.count(shading_key(shape_hash, shading_hash)) != 0;
+  return entries_.count(shape_hash) != 0 &&
+         shading_.count(shading_key(shape_hash, shading_hash)) != 0;
 }
 
 const ShadingEntry* BlasCache::find_shading(uint64_t shape_hash, uint64_t shading_hash) const {
@@ -255,6 +344,8 @@ void BlasCache::evict_unused(uint64_t frame_number) {
     memory_bytes_ -= item.second->data.size();
     return true;
   });
+  std::erase_if(lineage_shapes_,
+                [&](const auto& item) { return entries_.count(item.second) == 0; });
   if (memory_bytes_ <= kMemoryBudgetBytes) return;
 
   std::vector<std::pair<uint64_t, uint64_t>> by_age;  // (last used frame, shape hash)

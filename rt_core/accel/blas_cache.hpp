@@ -1,7 +1,9 @@
 // Bottom-level acceleration structures, one per distinct shape (Geometry::shape_hash), built once
 // and reused across frames, and the shading data of each (shape, shading) pair in the same sorted
 // order. Recolouring a shape (new colours, normals or materials) uploads new shading data and
-// reuses the BLAS.
+// reuses the BLAS. A deforming object (the same draws, Geometry::lineage, with new positions of
+// as many triangles) refits its previous shape's BLAS in place instead of building a new one,
+// until the refit tree has degraded (BlasCache::kMaxRefits, kMaxAreaGrowth).
 #pragma once
 
 #include <cstdint>
@@ -30,6 +32,12 @@ struct BlasEntry {
   uint32_t triangle_count = 0;
   glm::vec3 bounds_min{0.0f}, bounds_max{0.0f};  // object space, finite vertices only
   uint64_t last_used_frame = 0;
+  // Built with VK_BUILD_ACCELERATION_STRUCTURE_ALLOW_UPDATE_BIT_KHR (its lineage has deformed
+  // before): it can be refit to new positions of the same triangles.
+  bool updatable = false;
+  VkDeviceSize update_scratch_size = 0;
+  uint32_t refits = 0;      // since it was built
+  float built_area = 0.0f;  // surface area of its bounds when built
 };
 
 struct ShadingEntry {
@@ -48,6 +56,7 @@ struct BlasPrepareStats {
   // The builds' submission (0: none), not waited for: the trace submitted after it sees them.
   VulkanDevice::Ticket build_ticket = 0;
   uint32_t builds = 0;
+  uint32_t refits = 0;  // BLASes updated in place to a deformed shape (counted apart from builds)
   uint32_t reused = 0;
   uint32_t shading_uploads = 0;
   uint64_t upload_bytes = 0;  // BLAS inputs (positions) and shading data written
@@ -63,11 +72,23 @@ class BlasCache {
   // otherwise keep 60 frames' worth of it.
   static constexpr VkDeviceSize kMemoryBudgetBytes = VkDeviceSize{512} << 20;
 
+  // A BLAS is refit at most this many times in a row, and only while its bounds' surface area
+  // stays within kMaxAreaGrowth of the area it was built for; then it is built anew (a refit
+  // keeps the tree of the first shape: boxes grow as the triangles move apart and rays visit
+  // more of them). Measured in docs/classification.md ("Deforming geometry").
+  static constexpr uint32_t kMaxRefits = 16;
+  static constexpr float kMaxAreaGrowth = 1.5f;
+
   explicit BlasCache(VulkanDevice& device) : device_(device) {}
+  // GLPT_BLAS_REFIT=0: every deformed shape is built anew (for A/B measurements).
+  void allow_refit(bool allow) { refit_allowed_ = allow; }
 
   // Makes sure every geometry (with at least one triangle) has a BLAS entry for its shape and a
   // shading entry for its shading, building all missing BLASes in one submission. Duplicates
-  // count once. Resident geometries (no arrays) only mark their entries used. Throws VulkanError; entries whose build did not complete are not kept.
+  // count once. Resident geometries (no arrays) only mark their entries used. A geometry whose
+  // lineage had another shape in an earlier frame refits that shape's BLAS when it is unused
+  // this frame, has as many triangles and may still be refit. Throws VulkanError; entries whose
+  // build did not complete are not kept.
   BlasPrepareStats prepare(std::span<const Geometry* const> geometries, uint64_t frame_number);
 
   const BlasEntry* find(uint64_t shape_hash) const;
@@ -82,16 +103,24 @@ class BlasCache {
 
  private:
   struct PendingBuild;
-  std::unique_ptr<BlasEntry> create_entry(const Geometry& geometry, PendingBuild& build) const;
+  std::unique_ptr<BlasEntry> create_entry(const Geometry& geometry, bool updatable,
+                                          PendingBuild& build) const;
+  // The entry of the shape `geometry`'s lineage had before, when it can be refit to `geometry`
+  // this frame; else entries_.end().
+  std::unordered_map<uint64_t, std::unique_ptr<BlasEntry>>::iterator refit_source(
+      const Geometry& geometry, uint64_t frame_number);
   std::unique_ptr<ShadingEntry> create_shading(const Geometry& geometry,
                                                const BlasEntry& shape) const;
 
   VulkanDevice& device_;
   std::unordered_map<uint64_t, std::unique_ptr<BlasEntry>> entries_;
   std::unordered_map<uint64_t, std::unique_ptr<ShadingEntry>> shading_;  // by shading_key()
-  GpuBuffer scratch_;              // shared by all builds; only one batch is in flight at a time
+  GpuBuffer scratch_;  // shared by all builds; only one batch is in flight at a time
   VulkanDevice::Ticket last_build_ = 0;  // the batch that last used scratch_
-  VkDeviceSize memory_bytes_ = 0;  // bytes of every entry's buffers
+  VkDeviceSize memory_bytes_ = 0;        // bytes of every entry's buffers
+  // Each lineage's latest shape (bounded by the entries: dropped with its shape).
+  std::unordered_map<uint64_t, uint64_t> lineage_shapes_;
+  bool refit_allowed_ = true;
 };
 
 }  // namespace glpt::rt

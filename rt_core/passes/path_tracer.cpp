@@ -106,6 +106,7 @@ PathTracer::PathTracer(const RenderSettings& settings, std::shared_ptr<VulkanDev
       trace_pass_(*device_),
       composite_pass_(*device_),
       denoiser_(*device_) {
+  blas_cache_.allow_refit(settings_.blas_refit);
   denoise_uniforms_ =
       GpuBuffer::create(*device_, sizeof(gpu::DenoiseUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
   frame_uniforms_ =
@@ -425,6 +426,7 @@ void PathTracer::trace(const TraceScene& scene, const TraceTargets& targets, Fra
   for (const Instance& instance : scene.instances) geometries.push_back(instance.geometry.get());
   const BlasPrepareStats blas = blas_cache_.prepare(geometries, frame_number_);
   stats.blas_builds = blas.builds;
+  stats.blas_refits = blas.refits;
   stats.blas_reused = blas.reused;
   stats.upload_bytes += blas.upload_bytes;
   if (blas.build_ticket != 0) unreported_.push_back({blas.build_ticket, &FrameStats::blas_ms});

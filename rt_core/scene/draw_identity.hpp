@@ -74,6 +74,9 @@ class DrawIdentities {
   };
   DrawIdentities() = default;
   explicit DrawIdentities(const Limits& limits) : limits_(limits) {}
+  // Ids start at `first_id`: the renderer gives each drawable's identities a range of their own,
+  // so what is keyed by id across drawables (BLAS lineages) never confuses two windows' draws.
+  DrawIdentities(const Limits& limits, uint64_t first_id) : limits_(limits), next_id_(first_id) {}
 
   // Matches the draws of one record (`draws`, in GL order) against the previous frame's. A frame
   // may come in several records (a glReadPixels in the middle): they all match against the frame

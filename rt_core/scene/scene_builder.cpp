@@ -189,7 +189,8 @@ class Batcher {
   Batcher(std::vector<Instance>& instances, const KnownGeometry& known, rec::Decomposed& scratch)
       : instances_(instances), known_(known), scratch_(scratch) {}
 
-  void add(const rec::Draw& draw, const rec::StateSnapshot& state, bool sky = false,
+  // `id`: the draw's stable identity (0: none).
+  void add(const rec::Draw& draw, const rec::StateSnapshot& state, uint64_t id, bool sky = false,
            std::span<const FoldedPass> passes = {}) {
     const rec::TransformState& transform = *state.transform;
     const bool projective = is_projective_modelview(transform.modelview);
@@ -210,8 +211,12 @@ class Batcher {
       open_state_ = draw.state;
       shape_ = ContentHash();
       shading_ = ContentHash();
+      lineage_ = ContentHash();
+      untracked_ = false;
       draws_.clear();
     }
+    lineage_.add_bytes(&id, sizeof id);
+    untracked_ = untracked_ || id == 0;
     const rec::VertexData& v = *draw.vertices;
     const bool flat = state.raster->primitive.shade_model == GL_FLAT;
     const rec::VertexKeys& keys = v.keys();
@@ -257,6 +262,7 @@ class Batcher {
     auto geometry = std::make_shared<Geometry>();
     geometry->shape_hash = shape_.value();
     geometry->shading_hash = shading_.value();
+    geometry->lineage = untracked_ ? 0 : lineage_.value();
     if (known_ && known_(geometry->shape_hash, geometry->shading_hash)) {
       geometry->resident = true;
     } else {
@@ -362,7 +368,8 @@ class Batcher {
   std::shared_ptr<const rec::LightingState> open_lighting_;
   TracedSurface open_surface_;
   uint32_t open_state_ = 0;
-  ContentHash shape_, shading_;
+  ContentHash shape_, shading_, lineage_;
+  bool untracked_ = false;  // a draw of the open batch has no identity
 };
 
 uint32_t fog_mode_of(const rec::FogState& fog) {
@@ -480,6 +487,11 @@ void build_trace_scene(const rec::FrameRecord& record, const rec::DrawableConfig
         onto != 0 && onto - 1 < record.commands.size())
       passes_onto[onto - 1].push_back(i);
   std::vector<FoldedPass> folded;
+  auto identity_id = [&](size_t command) -> uint64_t {
+    const int32_t k =
+        command < classification->identity_of.size() ? classification->identity_of[command] : -1;
+    return k >= 0 ? classification->identities[static_cast<size_t>(k)].id : 0;
+  };
   rec::Decomposed scratch;
   Batcher batcher(scene.instances, options.known_geometry, scratch);
   std::vector<uint8_t> state_used(record.states.size(), 0);
@@ -493,7 +505,7 @@ void build_trace_scene(const rec::FrameRecord& record, const rec::DrawableConfig
       // Drawn by raster mode where GL draws it, and held for the rays that miss the world.
       out.any_sky = true;
       state_used[draw->state] = 1;
-      batcher.add(*draw, record.states[draw->state], /*sky=*/true);
+      batcher.add(*draw, record.states[draw->state], identity_id(i), /*sky=*/true);
     }
     // Fake shadows are not drawn: the tracer's shadows are real.
     if (draw != nullptr && out.classes[i] == DrawClass::kShadow) continue;
@@ -527,7 +539,7 @@ void build_trace_scene(const rec::FrameRecord& record, const rec::DrawableConfig
       const rec::Draw& pass_draw = std::get<rec::Draw>(record.commands[pass]);
       folded.push_back({&pass_draw, &record.states[pass_draw.state]});
     }
-    batcher.add(*draw, state, /*sky=*/false, folded);
+    batcher.add(*draw, state, identity_id(i), /*sky=*/false, folded);
   }
   batcher.close();
 

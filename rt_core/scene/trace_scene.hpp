@@ -64,6 +64,11 @@ struct Geometry {
   uint64_t shape_hash = 0;
   // Identity of the shading data (normals, colours, materials) of that shape.
   uint64_t shading_hash = 0;
+  // The stable identities of the draws it is made of (draw_identity.hpp), hashed; 0 when one of
+  // them has none. The same object in the previous frame had the same lineage, so a deformed
+  // shape (a new shape_hash, the same triangle count) refits that frame's BLAS instead of
+  // building one (BlasCache::prepare).
+  uint64_t lineage = 0;
   // The arrays are left empty because the tracer holds this shape and shading already (found by
   // their hashes, scene_builder.hpp: KnownGeometry).
   bool resident = false;

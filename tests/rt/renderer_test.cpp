@@ -758,6 +758,74 @@ TEST_F(RenderTest, AStillSceneBuildsNothingAfterItsFirstFrameAndACameraMoveNoBla
   EXPECT_EQ(after_move.kind_draws[static_cast<size_t>(DrawKind::kStatic)], 3u);
 }
 
+TEST_F(RenderTest, ADeformingMeshRefitsItsBlasAndItsShadowFollowsIt) {
+  // A wall lit from the right front and, under a modelview of its own, an occluder mesh (two
+  // triangles) whose vertices move up every frame: the same topology with new positions, a
+  // deforming draw. Its second shape is built refittable, every later one refits that BLAS in
+  // place (no build), and its shadow on the wall follows it: the pixels it shades now are dark,
+  // those it shaded a frame earlier lit again. Refit or built anew (GLPT_BLAS_REFIT=0), the
+  // frames are the same.
+  // Two new renderers, so both see the same random numbers frame by frame.
+  RenderSettings settings;
+  std::string error;
+  std::unique_ptr<Renderer> refitting = make_renderer(settings, &error);
+  ASSERT_NE(refitting, nullptr) << error;
+  settings.blas_refit = false;
+  std::unique_ptr<Renderer> rebuilding = make_renderer(settings, &error);
+  ASSERT_NE(rebuilding, nullptr) << error;
+  const FrameEnd end;
+  const std::shared_ptr<DrawableBuffers> refit_buffers = create_drawable_buffers();
+  const std::shared_ptr<DrawableBuffers> rebuild_buffers = create_drawable_buffers();
+  auto frame = [&](Renderer& renderer, DrawableBuffers& buffers, float lift) {
+    RecordBuilder b = base_frame();
+    b.directional_light(0, {1, 0, 1});
+    b.quad({-4, -3, -6}, {8, 0, 0}, {0, 6, 0}, glm::vec4(1));
+    b.transform.modelview = glm::translate(glm::mat4(1.0f), glm::vec3(1.0f, 0.0f, -4.0f));
+    const glm::vec3 low(-0.5f, -1.5f + lift, 0.0f);
+    b.draw(GL_TRIANGLES,
+           {low, low + glm::vec3(1, 0, 0), low + glm::vec3(1, 1, 0), low, low + glm::vec3(1, 1, 0),
+            low + glm::vec3(0, 1, 0)},
+           {0, 0, 1}, glm::vec4(1));
+    Image image;
+    EXPECT_TRUE(renderer.execute(b.record, buffers, b.drawable, image.stats, &error, &end))
+        << error;
+    EXPECT_TRUE(renderer.read_color(buffers, GL_FRONT, 0, 0, kSize, kSize, image.rgba, &error))
+        << error;
+    return std::pair{image, b};
+  };
+  // The wall point in the shadow of the occluder's centre (x 1, y: its middle) along the light.
+  auto shadow_pixel = [&](const RecordBuilder& b, float lift) {
+    return project(b, glm::vec3(-1.0f, -1.0f + lift, -6.0f));
+  };
+  for (int k = 0; k < 6; ++k) {
+    const float lift = 0.4f * static_cast<float>(k);
+    const auto [image, b] = frame(*refitting, *refit_buffers, lift);
+    const auto rebuilt = frame(*rebuilding, *rebuild_buffers, lift).first;
+    SCOPED_TRACE("frame " + std::to_string(k));
+    if (k == 0) {
+      EXPECT_EQ(image.stats.blas_builds, 2u);
+    } else if (k == 1) {
+      EXPECT_EQ(image.stats.blas_builds, 1u);  // the second shape: refittable
+    } else {
+      EXPECT_EQ(image.stats.blas_builds, 0u);
+      EXPECT_EQ(image.stats.blas_refits, 1u);
+      EXPECT_EQ(rebuilt.stats.blas_refits, 0u);
+      EXPECT_EQ(rebuilt.stats.blas_builds, 1u);
+    }
+    if (k >= 1) {
+      EXPECT_EQ(image.stats.kind_draws[static_cast<size_t>(DrawKind::kDeforming)], 1u);
+    }
+    const glm::ivec2 now = shadow_pixel(b, lift);
+    const glm::ivec2 before = shadow_pixel(b, lift - 1.0f);  // a whole occluder height lower
+    EXPECT_LT(image.at(now.x, now.y).luminance(), 60) << image.at(now.x, now.y);
+    EXPECT_GT(image.at(before.x, before.y).luminance(), 300) << image.at(before.x, before.y);
+    int max_difference = 0;
+    for (size_t i = 0; i < image.rgba.size(); ++i)
+      max_difference = std::max(max_difference, std::abs(int(image.rgba[i]) - rebuilt.rgba[i]));
+    EXPECT_EQ(max_difference, 0);
+  }
+}
+
 TEST_F(RenderTest, AViewModelIsTracedInItsDepthRangeAndCastsNoShadowOnTheWorld) {
   // A white wall lit from the upper right and, drawn after it in glDepthRange(0, 0.1), a white
   // view-model quad between the wall and the light's direction: were it geometry for rays, its
