@@ -31,7 +31,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-enum { LBL_WIDTH = 160, LBL_HEIGHT = 120, LBL_MAX_LABELS_PER_FRAME = 512, LBL_MAX_KEY = 64 };
+enum { LBL_WIDTH = 160, LBL_HEIGHT = 120, LBL_MAX_LABELS_PER_FRAME = 2048, LBL_MAX_KEY = 64 };
 
 #define LBL_PI 3.14159265358979323846f
 
