@@ -50,8 +50,14 @@ bool Context::list_executes_while_compiling() const {
 void set_current_context(Context* ctx) { t_current_context = ctx; }
 
 void flush_before_release(Context& ctx) {
-  // (A context whose frames are not rendered, glpt-replay's other shards, has nothing to show.)
-  if (ctx.target == nullptr || !ctx.render_frame_ends) return;
+  if (ctx.target == nullptr) return;
+  if (!ctx.render_frame_ends) {
+    // glpt-replay's skipped frames: what this context holds and has recorded was drawn on this
+    // drawable, and a later frame may build on it: it is rendered there before the context
+    // leaves it (nothing is shown).
+    if (ctx.skipped_frames.held() > 0 || !ctx.recorder.empty()) execute_record(ctx);
+    return;
+  }
   flush_bitmap_cache(ctx);
   if (ctx.recorder.empty()) return;  // (a front-buffer frame would otherwise present again)
   impl::glFinish(ctx);
@@ -130,6 +136,27 @@ void start_new_record(Context& ctx) {
   if (ctx.assembly.inside) ctx.assembly.state = ctx.snapshots.capture(ctx, ctx.recorder.record());
 }
 
+// Renders a record of glpt-replay's skipped frames (DeferredFrames) on the current drawable;
+// needs ensure_output.
+DeferredFrames::Execute render_held(Context& ctx) {
+  return [&ctx](const rec::FrameRecord& record, bool swap, uint64_t frame) {
+    // Rendered as a whole replay renders that frame: from the same start, seeded by its index.
+    ctx.output->renderer().start_independent_frame(frame);
+    std::vector<rt::QuerySamples> samples;
+    const bool ok =
+        ctx.output->execute(record, *ctx.target, current_drawable(ctx), 0.0, &samples, swap);
+    count_query_samples(ctx.queries, samples);
+    return ok;
+  };
+}
+
+// The sealed record is about to be rendered: glpt-replay's held frames go first where it builds
+// on them, and then this frame starts again from the same start (as a whole replay renders it).
+void render_held_before(Context& ctx, const rec::DrawableConfig& drawable, bool swap) {
+  if (ctx.skipped_frames.before_render(ctx.recorder.record(), drawable, swap, render_held(ctx)))
+    ctx.output->renderer().start_independent_frame(ctx.replay_frame);
+}
+
 }  // namespace
 
 bool execute_record(Context& ctx) {
@@ -143,6 +170,7 @@ bool execute_record(Context& ctx) {
   }
   const rec::DrawableConfig drawable = current_drawable(ctx);
   ctx.recorder.seal();
+  render_held_before(ctx, drawable, /*swap=*/false);
   bool ok = true;
   std::vector<rt::QuerySamples> samples;
   if (!ctx.recorder.empty() || drawable != ctx.output->drawable())
@@ -162,6 +190,11 @@ void note_frame_content(Context& ctx) {
 void end_frame(Context& ctx, bool swap) {
   if (!ctx.render_frame_ends) {
     ctx.recorder.seal();
+    if (ensure_output(ctx)) {
+      const size_t bytes = ctx.recorder.vertex_bytes();
+      ctx.skipped_frames.skip(std::move(ctx.recorder.record()), current_drawable(ctx), swap,
+                              ctx.replay_frame, bytes, render_held(ctx));
+    }
     start_new_record(ctx);
     return;
   }
@@ -177,6 +210,7 @@ void end_frame(Context& ctx, bool swap) {
     return;
   }
   ctx.recorder.seal();
+  render_held_before(ctx, current_drawable(ctx), swap);
   std::vector<rt::QuerySamples> samples;
   ctx.output->end_frame(ctx.recorder.record(), current_drawable(ctx),
                         ctx.recording_since.elapsed_ms(), *ctx.target, swap, &samples);

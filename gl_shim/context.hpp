@@ -17,6 +17,7 @@
 #include "gl_shim/display_lists/display_lists.hpp"
 #include "gl_shim/evaluators/evaluator_state.hpp"
 #include "gl_shim/frame/clear_fallback.hpp"
+#include "gl_shim/frame/deferred_frames.hpp"
 #include "gl_shim/frame/frame_output.hpp"
 #include "gl_shim/frame/frame_recorder.hpp"
 #include "gl_shim/frame/state_snapshot.hpp"
@@ -108,9 +109,15 @@ class Context {
   bool renderer_unavailable = false;      // creation failed: reported once, never retried
   void* window_system_context = nullptr;  // the GLX/EGL context wrapping this one
   WindowSystem window_system = WindowSystem::kNone;  // which API window_system_context is of
-  // false: end_frame drops the frame's record instead of rendering it (glpt-replay's shards
-  // replay every frame's state but render only their own frames).
+  // Replayed by glpt-replay: what the program reads back goes nowhere (the trace holds what it
+  // did next), so glReadPixels renders and answers nothing and glFinish waits for nothing.
+  bool replayed = false;
+  // false: a frame's end renders nothing (glpt-replay's shards replay every frame's state but
+  // render only their own frames): its record is held in skipped_frames, rendered only when a
+  // later frame builds on its pixels.
   bool render_frame_ends = true;
+  DeferredFrames skipped_frames;
+  uint64_t replay_frame = 0;  // glpt-replay's index of the frame being replayed
   // Without a renderer (renderer_unavailable): frames show the last clear colour.
   std::unique_ptr<ClearFallback> clear_fallback;
 
@@ -151,7 +158,8 @@ void note_frame_content(Context& ctx);
 
 // The end of a frame (swap, or glFlush/glFinish on a single-buffered drawable): executes the
 // record, then presents and writes PNG/stats (FrameOutput::end_frame). With
-// ctx.render_frame_ends false, drops the record instead (nothing is executed or presented).
+// ctx.render_frame_ends false, holds the record in ctx.skipped_frames instead (nothing is
+// presented).
 void end_frame(Context& ctx, bool swap);
 
 }  // namespace glpt

@@ -44,7 +44,9 @@ class Backend {
   // end): what varies per frame (path tracing's random numbers) is seeded by the index and
   // nothing carries over from earlier frames, so a frame's pixels do not depend on which frames
   // were rendered before it. Everything the frame renders, reads within it included, follows.
-  virtual void begin_frame(uint64_t /*frame_index*/) {}
+  // `render` false: a frame no one looks at (another shard's): the backend may skip rendering
+  // it, and what it reads goes nowhere.
+  virtual void begin_frame(uint64_t /*frame_index*/, bool /*render*/) {}
   // The end of the current context's frame: a swap (`swap`) or the glFlush/glFinish call
   // `flush` of a single-buffered surface (called through the backend). `render` false: a frame
   // no one looks at (another shard's), which the backend may skip rendering; otherwise the

@@ -39,6 +39,7 @@ class GlptBackend final : public Backend {
     // at the start, and frames can be seeded before they render.
     context->output = FrameOutput::create(*context->render_group, error);
     if (!context->output) return nullptr;
+    context->replayed = true;
     Context* handle = context.get();
     contexts_.push_back(std::move(context));
     return handle;
@@ -85,9 +86,14 @@ class GlptBackend final : public Backend {
       if (target.get() == ctx->target) target->resize(width, height);
   }
 
-  void begin_frame(uint64_t frame_index) override {
+  void begin_frame(uint64_t frame_index, bool render) override {
     Context* ctx = current_context();
-    if (ctx != nullptr && ctx->output) ctx->output->renderer().start_independent_frame(frame_index);
+    if (ctx == nullptr) return;
+    // Skipped frames are held unrendered (gl_shim/frame/deferred_frames.hpp) from their start:
+    // their glFinish, glReadPixels and frame end render nothing unless a later frame needs it.
+    ctx->render_frame_ends = render;
+    ctx->replay_frame = frame_index;
+    if (ctx->output) ctx->output->renderer().start_independent_frame(frame_index);
   }
 
   bool end_frame(bool swap, GlProc flush, bool render, FrameImage* image,
@@ -103,7 +109,6 @@ class GlptBackend final : public Backend {
       glpt::end_frame(*ctx, /*swap=*/true);
     else if (flush != nullptr)
       flush();
-    ctx->render_frame_ends = true;
     if (render && target != nullptr && target->presented_frames() != presented && image) {
       ctx->target->query_size(&image->width, &image->height);
       image->rgba = target->presented();

@@ -147,7 +147,7 @@ bool Replayer::end_frame(bool swap, GlProc flush, std::string* error) {
   const bool render = want_frame_(frame);
   FrameImage image;
   const bool ended = backend_.end_frame(swap, flush, render, render ? &image : nullptr, error);
-  backend_.begin_frame(counts_.frames);
+  backend_.begin_frame(counts_.frames, want_frame_(counts_.frames));
   if (!ended) return false;
   if (!render) return true;
   ++counts_.frames_rendered;

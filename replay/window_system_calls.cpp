@@ -134,7 +134,7 @@ bool Replayer::make_current(uint64_t surface, uint64_t context, std::string* err
   if (!backend_.make_current(it->second.handle, surface, s->second.width, s->second.height,
                              s->second.double_buffered, error))
     return false;
-  backend_.begin_frame(counts_.frames);
+  backend_.begin_frame(counts_.frames, want_frame_(counts_.frames));
   return true;
 }
 

@@ -13,11 +13,13 @@ trap 'rm -rf "$work"' EXIT
 deb=$(ls "$work"/package/glpt_*.deb)
 dpkg-deb -f "$deb" Depends | grep -q "mesa-vulkan-drivers (>= 24.1)" ||
   { echo "test_package: the package does not depend on lavapipe with ray queries" >&2; exit 1; }
-if dpkg -s glpt >/dev/null 2>&1; then
+# A package removed earlier (apt-get remove) leaves "config-files" behind: only an installed one
+# belongs to somebody else.
+if [ "$(dpkg-query -W -f='${db:Status-Status}' glpt 2>/dev/null)" = installed ]; then
   echo "test_package: a glpt package is installed already; not touching it" >&2
   exit 1
 fi
-trap 'apt-get remove -y -q glpt >/dev/null 2>&1 || true; rm -rf "$work"' EXIT
+trap 'apt-get purge -y -q glpt >/dev/null 2>&1 || true; rm -rf "$work"' EXIT
 apt-get install -y -q "$deb" >"$work/apt.log" || { cat "$work/apt.log" >&2; exit 1; }
 cd "$work"
 [ "$(command -v glpt)" = /usr/bin/glpt ] || { echo "test_package: glpt is not /usr/bin/glpt" >&2; exit 1; }

@@ -104,13 +104,17 @@ void FrameOutput::report_failure(const std::string& error) {
 
 bool FrameOutput::execute(const rec::FrameRecord& record, WindowTarget& target,
                           const rec::DrawableConfig& drawable, double record_ms,
-                          std::vector<rt::QuerySamples>* queries) {
+                          std::vector<rt::QuerySamples>* queries, bool swap) {
   std::string error;
   rt::FrameStats stats;
   drawable_ = drawable;
   record_ms_ += record_ms;
   std::lock_guard lock(target.mutex());
-  if (!renderer_->execute(record, target.buffers(), drawable, stats, &error, nullptr, queries)) {
+  // A swap without an image: a frame glpt-replay skipped, rendered because a later one builds
+  // on it (deferred_frames.hpp).
+  const rt::FrameEnd end{true, nullptr, nullptr};
+  if (!renderer_->execute(record, target.buffers(), drawable, stats, &error, swap ? &end : nullptr,
+                          queries)) {
     report_failure(error);
     return false;
   }

@@ -82,7 +82,7 @@ class FrameOutput {
   // (rt::Renderer::execute).
   bool execute(const rec::FrameRecord& record, WindowTarget& target,
                const rec::DrawableConfig& drawable, double record_ms,
-               std::vector<rt::QuerySamples>* queries = nullptr);
+               std::vector<rt::QuerySamples>* queries = nullptr, bool swap = false);
   // End of a frame: a swap (double-buffered) or glFlush/glFinish of a single-buffered drawable.
   // Executes the rest of the frame's record, swaps if asked (all in one submission), shows the
   // front buffer in `target`, writes the PNG and prints the frame's statistics.

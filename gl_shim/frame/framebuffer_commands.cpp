@@ -258,7 +258,7 @@ void glFinish(Context& ctx) {
   // Rendering is synchronous: finishing means the recorded commands are executed.
   if (draws_to_front(ctx))
     end_frame(ctx, /*swap=*/false);
-  else
+  else if (!ctx.replayed)  // a replay (glpt-replay) has nothing to wait for
     execute_record(ctx);
 }
 

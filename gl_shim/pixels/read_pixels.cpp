@@ -70,6 +70,9 @@ void glReadPixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height,
   if (!layout.valid()) return record_error(ctx, GL_INVALID_VALUE);
   // Without a pixel pack buffer (GL 2.1) a null pointer has nowhere to go: nothing is read.
   if (shape.groups() == 0 || pixels == nullptr) return;
+  // Replayed by glpt-replay: what the program read goes nowhere (the trace holds what it did
+  // next), so nothing is rendered to answer it.
+  if (ctx.replayed) return;
   if (kind_of_format == PixelClass::kDepthStencil) {
     return or_out_of_memory(ctx, [&] {
       read_depth_stencil(ctx, x, y,

@@ -179,8 +179,11 @@ bool lookup_fragment_ops(const Context& ctx, GLenum pname, Value* out) {
     case GL_BLEND_DST_ALPHA:
       *out = enums({o.blend_dst_alpha});
       return true;
-    case GL_BLEND_EQUATION:  // GL 1.5 has one equation for colour and alpha
+    case GL_BLEND_EQUATION:  // also EXT_blend_equation_separate's GL_BLEND_EQUATION_RGB_EXT
       *out = enums({o.blend_equation_rgb});
+      return true;
+    case GL_BLEND_EQUATION_ALPHA_EXT:
+      *out = enums({o.blend_equation_alpha});
       return true;
     case GL_BLEND_COLOR:
       *out = vec(&o.blend_color.x, 4, Kind::kColor);

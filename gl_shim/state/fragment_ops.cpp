@@ -129,6 +129,15 @@ void glBlendEquation(Context& ctx, GLenum mode) {
   ctx.raster.ops.blend_equation_alpha = mode;
 }
 
+// EXT_blend_equation_separate (GL 2.0's glBlendEquationSeparate): both modes are checked before
+// either is set, as Mesa does.
+void glBlendEquationSeparate(Context& ctx, GLenum mode_rgb, GLenum mode_alpha) {
+  if (!is_blend_equation(mode_rgb) || !is_blend_equation(mode_alpha))
+    return record_error(ctx, GL_INVALID_ENUM);
+  ctx.raster.ops.blend_equation_rgb = mode_rgb;
+  ctx.raster.ops.blend_equation_alpha = mode_alpha;
+}
+
 void glBlendColor(Context& ctx, GLfloat r, GLfloat g, GLfloat b, GLfloat a) {
   ctx.raster.ops.blend_color = {clamp_to(r, 0.0f, 1.0f), clamp_to(g, 0.0f, 1.0f),
                                 clamp_to(b, 0.0f, 1.0f), clamp_to(a, 0.0f, 1.0f)};

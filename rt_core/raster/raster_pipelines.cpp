@@ -56,28 +56,11 @@ vk::ShaderModule make_module(VkDevice device, std::span<const uint32_t> spirv) {
   return vk::ShaderModule(module, {device});
 }
 
-std::string pipeline_cache_path(const std::string& device_name) {
-  std::filesystem::path dir;
-  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg)
-    dir = xdg;
-  else if (const char* home = std::getenv("HOME"); home && *home)
-    dir = std::filesystem::path(home) / ".cache";
-  else
-    return {};
-  std::string name = "pipelines-";
-  for (char c : device_name) name += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
-  return (dir / "glpt" / (name + ".bin")).string();
-}
-
-std::vector<char> read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return {};
-  return std::vector<char>(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
-
 }  // namespace
 
-RasterPipelines::RasterPipelines(const VulkanDevice& device) : device_(device) {
+RasterPipelines::RasterPipelines(const VulkanDevice& device)
+    : device_(device),
+      cache_file_(PipelineCacheFile::default_path(device.name()), device.properties()) {
   VkDevice dev = device.handle();
   // Set 0: the per-state uniforms and one combined image sampler per unit and texture kind,
   // written with push descriptors per draw.
@@ -144,14 +127,16 @@ RasterPipelines::RasterPipelines(const VulkanDevice& device) : device_(device) {
     gbuffer_fragment_flat_ = make_module(dev, raster_gbuffer_flat_frag_spv);
   }
 
-  cache_path_ = pipeline_cache_path(device.name());
-  std::vector<char> data = cache_path_.empty() ? std::vector<char>() : read_file(cache_path_);
+  std::string message;
+  std::vector<char> data = cache_file_.load(&message);
+  if (!message.empty()) std::fprintf(stderr, "glpt: %s\n", message.c_str());
   auto cache_info =
       make_info<VkPipelineCacheCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_CACHE_CREATE_INFO);
   cache_info.initialDataSize = data.size();
   cache_info.pInitialData = data.empty() ? nullptr : data.data();
   VkPipelineCache cache = VK_NULL_HANDLE;
-  // A stale or corrupt cache file is the driver's to reject; start empty then.
+  // The file's header and hash were checked (pipeline_cache_file.hpp); should the driver still
+  // refuse the data, start empty.
   if (vkCreatePipelineCache(dev, &cache_info, nullptr, &cache) != VK_SUCCESS) {
     cache_info.initialDataSize = 0;
     cache_info.pInitialData = nullptr;
@@ -161,26 +146,57 @@ RasterPipelines::RasterPipelines(const VulkanDevice& device) : device_(device) {
 }
 
 RasterPipelines::~RasterPipelines() {
-  if (cache_path_.empty() || !cache_) return;
+  if (cache_file_.path().empty() || !cache_) return;
   size_t size = 0;
   if (vkGetPipelineCacheData(device_.handle(), cache_.get(), &size, nullptr) != VK_SUCCESS) return;
   std::vector<char> data(size);
   if (vkGetPipelineCacheData(device_.handle(), cache_.get(), &size, data.data()) != VK_SUCCESS)
     return;
-  // Written to a temporary name and renamed, so concurrent processes never read half a file.
-  std::error_code ec;
-  std::filesystem::create_directories(std::filesystem::path(cache_path_).parent_path(), ec);
-  const std::string temporary = cache_path_ + "." + std::to_string(::getpid()) + ".tmp";
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    if (!out) return;
-    out.write(data.data(), static_cast<std::streamsize>(size));
-  }
-  std::filesystem::rename(temporary, cache_path_, ec);
-  if (ec) std::filesystem::remove(temporary, ec);
+  data.resize(size);
+  std::string message;
+  if (!cache_file_.save(data, &message)) std::fprintf(stderr, "glpt: %s\n", message.c_str());
 }
 
-VkPipeline RasterPipelines::get(const PipelineKey& key, bool* created) {
+PipelineKey RasterPipelines::pipeline_of(const PipelineKey& key) const {
+  if (device_.dynamic_blend() == nullptr) return key;
+  // Set per draw (RasterRenderer::bind): no part of the pipeline.
+  PipelineKey shared = key;
+  shared.blend = 0;
+  shared.blend_src_rgb = shared.blend_dst_rgb = shared.blend_src_alpha = shared.blend_dst_alpha = 0;
+  shared.blend_op_rgb = shared.blend_op_alpha = 0;
+  shared.logic_op_enable = shared.logic_op = 0;
+  shared.color_write_mask = 0;
+  return shared;
+}
+
+void RasterPipelines::set_blend_state(VkCommandBuffer cmd, const PipelineKey& key) const {
+  const VulkanDevice::DynamicBlendFunctions* blend = device_.dynamic_blend();
+  if (blend == nullptr) return;
+  std::array<VkBool32, GLPT_GBUFFER_ATTACHMENTS> enables{};
+  std::array<VkColorBlendEquationEXT, GLPT_GBUFFER_ATTACHMENTS> equations{};
+  std::array<VkColorComponentFlags, GLPT_GBUFFER_ATTACHMENTS> masks{};
+  for (size_t i = 0; i < GLPT_GBUFFER_ATTACHMENTS; ++i) {
+    // The G-buffer's attachments are written whole, unblended (as create() makes them).
+    enables[i] = key.gbuffer ? VK_FALSE : key.blend;
+    equations[i] = {static_cast<VkBlendFactor>(key.blend_src_rgb),
+                    static_cast<VkBlendFactor>(key.blend_dst_rgb),
+                    static_cast<VkBlendOp>(key.blend_op_rgb),
+                    static_cast<VkBlendFactor>(key.blend_src_alpha),
+                    static_cast<VkBlendFactor>(key.blend_dst_alpha),
+                    static_cast<VkBlendOp>(key.blend_op_alpha)};
+    if (key.gbuffer) equations[i] = {};
+    masks[i] = key.gbuffer ? 0xFu : key.color_write_mask;
+  }
+  const uint32_t count = key.attachments;
+  blend->set_enable(cmd, 0, count, enables.data());
+  blend->set_equation(cmd, 0, count, equations.data());
+  blend->set_write_mask(cmd, 0, count, masks.data());
+  blend->set_logic_op_enable(cmd, key.logic_op_enable && !key.gbuffer);
+  blend->set_logic_op(cmd, static_cast<VkLogicOp>(key.logic_op));
+}
+
+VkPipeline RasterPipelines::get(const PipelineKey& full_key, bool* created) {
+  const PipelineKey key = pipeline_of(full_key);
   auto it = pipelines_.find(key);
   if (it != pipelines_.end()) {
     if (created) *created = false;
@@ -333,7 +349,8 @@ VkPipeline RasterPipelines::create(const PipelineKey& key) {
   color_blend.attachmentCount = key.attachments;
   color_blend.pAttachments = blends.data();
 
-  const VkDynamicState dynamic_states[] = {
+  const bool blend_dynamic = device_.dynamic_blend() != nullptr;
+  std::vector<VkDynamicState> dynamic_states = {
       VK_DYNAMIC_STATE_VIEWPORT,
       VK_DYNAMIC_STATE_SCISSOR,
       VK_DYNAMIC_STATE_LINE_WIDTH,
@@ -353,10 +370,17 @@ VkPipeline RasterPipelines::create(const PipelineKey& key) {
       VK_DYNAMIC_STATE_VERTEX_INPUT_BINDING_STRIDE,
       VK_DYNAMIC_STATE_LINE_STIPPLE_EXT,
   };
+  if (blend_dynamic) {
+    dynamic_states.insert(
+        dynamic_states.end(),
+        {VK_DYNAMIC_STATE_COLOR_BLEND_ENABLE_EXT, VK_DYNAMIC_STATE_COLOR_BLEND_EQUATION_EXT,
+         VK_DYNAMIC_STATE_COLOR_WRITE_MASK_EXT, VK_DYNAMIC_STATE_LOGIC_OP_ENABLE_EXT,
+         VK_DYNAMIC_STATE_LOGIC_OP_EXT});
+  }
   auto dynamic = make_info<VkPipelineDynamicStateCreateInfo>(
       VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO);
-  dynamic.dynamicStateCount = static_cast<uint32_t>(std::size(dynamic_states));
-  dynamic.pDynamicStates = dynamic_states;
+  dynamic.dynamicStateCount = static_cast<uint32_t>(dynamic_states.size());
+  dynamic.pDynamicStates = dynamic_states.data();
 
   const std::array<VkFormat, 2> color_formats{kColorFormat, kColorFormat};
   auto rendering =

@@ -1,7 +1,7 @@
 // The fixed-function raster pipelines: one VkPipeline per PipelineKey, compiled on first use and
 // kept (no pipeline is compiled per draw once a program's states have been seen). Compiled
 // pipelines also go to a VkPipelineCache that is loaded from and saved to disk
-// ($XDG_CACHE_HOME/glpt or ~/.cache/glpt), so a program's second run compiles nothing either.
+// (pipeline_cache_file.hpp), so a program's second run compiles nothing either.
 #pragma once
 
 #include <vulkan/vulkan.h>
@@ -10,6 +10,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "rt_core/raster/pipeline_cache_file.hpp"
 #include "rt_core/raster/pipeline_key.hpp"
 #include "rt_core/vk/vk_device.hpp"
 #include "rt_core/vk/vk_raii.hpp"
@@ -29,7 +30,12 @@ class RasterPipelines {
   RasterPipelines& operator=(const RasterPipelines&) = delete;
 
   // The pipeline for `key`, compiled now if it is new (`created` says so). Throws VulkanError.
+  // Where the device sets blend state per draw, one pipeline serves every blend, colour mask and
+  // logic op state of a key: then set_blend_state must follow each bind, and before each draw
+  // whose key's blend state differs from the last one set.
   VkPipeline get(const PipelineKey& key, bool* created);
+  void set_blend_state(VkCommandBuffer cmd, const PipelineKey& key) const;
+  bool blend_is_dynamic() const { return device_.dynamic_blend() != nullptr; }
 
   VkPipelineLayout layout() const { return layout_.get(); }
   VkDescriptorSetLayout set_layout() const { return set_layout_.get(); }
@@ -38,6 +44,8 @@ class RasterPipelines {
 
  private:
   VkPipeline create(const PipelineKey& key);
+  // `key` without what is set per draw.
+  PipelineKey pipeline_of(const PipelineKey& key) const;
 
   const VulkanDevice& device_;
   vk::DescriptorSetLayout set_layout_;
@@ -55,8 +63,8 @@ class RasterPipelines {
   vk::ShaderModule gbuffer_vertex_, gbuffer_vertex_clip_, gbuffer_geometry_, gbuffer_geometry_clip_;
   vk::ShaderModule gbuffer_fragment_smooth_, gbuffer_fragment_flat_;
   VkShaderStageFlags push_stages_ = 0;
+  PipelineCacheFile cache_file_;
   vk::PipelineCache cache_;
-  std::string cache_path_;
   std::unordered_map<PipelineKey, vk::Pipeline, PipelineKeyHash> pipelines_;
 };
 

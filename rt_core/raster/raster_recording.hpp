@@ -144,6 +144,9 @@ struct RasterRenderer::Recording {
   // Dynamic state last set in this command buffer.
   bool dynamic_valid = false;
   DynamicDrawState dynamic;
+  // The key whose blend state was last set (RasterPipelines::set_blend_state), when valid.
+  bool blend_valid = false;
+  PipelineKey blend_key;
   VkViewport viewport{};
   VkRect2D scissor{};
   const GBufferTargets* gbuffer = nullptr;  // path-traced mode's G-buffer pass

@@ -17,6 +17,16 @@
 namespace glpt::rt {
 namespace {
 
+// Two keys set the same per-draw blend state (RasterPipelines::set_blend_state).
+bool same_blend(const PipelineKey& a, const PipelineKey& b) {
+  return a.gbuffer == b.gbuffer && a.attachments == b.attachments && a.blend == b.blend &&
+         a.blend_src_rgb == b.blend_src_rgb && a.blend_dst_rgb == b.blend_dst_rgb &&
+         a.blend_src_alpha == b.blend_src_alpha && a.blend_dst_alpha == b.blend_dst_alpha &&
+         a.blend_op_rgb == b.blend_op_rgb && a.blend_op_alpha == b.blend_op_alpha &&
+         a.logic_op_enable == b.logic_op_enable && a.logic_op == b.logic_op &&
+         a.color_write_mask == b.color_write_mask;
+}
+
 constexpr uint32_t kRestartIndex = 0xFFFFFFFFu;
 
 template <typename T>
@@ -364,6 +374,7 @@ void RasterRenderer::execute(const rec::FrameRecord& record, DrawableBuffers& bu
       r.bound_pipeline = VK_NULL_HANDLE;
       r.descriptors_pushed = false;
       r.dynamic_valid = false;
+      r.blend_valid = false;
       if (position == 0) queries_.reset_slots(cmd);
       if (gbuffer && position == 0) {
         // Nothing is traced where no traced draw lands: the SURFACE attachment starts at 0.
@@ -518,6 +529,11 @@ void RasterRenderer::bind(Recording& r, const PipelineKey& key,
   if (pipeline != r.bound_pipeline) {
     vkCmdBindPipeline(r.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
     r.bound_pipeline = pipeline;
+  }
+  if (pipelines_.blend_is_dynamic() && (!r.blend_valid || !same_blend(key, r.blend_key))) {
+    pipelines_.set_blend_state(r.cmd, key);
+    r.blend_key = key;
+    r.blend_valid = true;
   }
   // Descriptors: the states buffer and, per unit, the texture of the unit's target (every other
   // binding holds a dummy). Pushed only when they change.

@@ -37,6 +37,11 @@ constexpr const char* kRasterDeviceExtensions[] = {
 };
 // Path tracing. VK_KHR_deferred_host_operations is required by VK_KHR_acceleration_structure
 // even though all builds run on the queue.
+// Blend state set per draw (optional: without it each blend state is a pipeline of its own).
+constexpr const char* kDynamicBlendDeviceExtensions[] = {
+    VK_EXT_EXTENDED_DYNAMIC_STATE_2_EXTENSION_NAME,
+    VK_EXT_EXTENDED_DYNAMIC_STATE_3_EXTENSION_NAME,
+};
 constexpr const char* kRayQueryDeviceExtensions[] = {
     VK_KHR_ACCELERATION_STRUCTURE_EXTENSION_NAME,
     VK_KHR_RAY_QUERY_EXTENSION_NAME,
@@ -67,6 +72,9 @@ struct Candidate {
   bool external_host_memory = false;  // VK_EXT_external_memory_host: zero-copy presenting
   bool smooth_lines = false, stippled_smooth_lines = false;
   bool precise_occlusion_queries = false;
+  // VK_EXT_extended_dynamic_state3's blend enable, equation, write mask and logic op enable, and
+  // _2's logic op: blend state set per draw.
+  bool dynamic_blend = false;
 };
 
 template <size_t N>
@@ -100,15 +108,24 @@ Candidate evaluate(VkPhysicalDevice device) {
       std::any_of(extensions.begin(), extensions.end(), [](const VkExtensionProperties& e) {
         return std::strcmp(e.extensionName, VK_EXT_EXTERNAL_MEMORY_HOST_EXTENSION_NAME) == 0;
       });
+  std::vector<std::string> no_dynamic_blend;
+  require_extensions(extensions, kDynamicBlendDeviceExtensions, no_dynamic_blend);
   if (!candidate.missing.empty()) return candidate;  // feature structs may not be understood
 
+  auto dynamic3 = make_info<VkPhysicalDeviceExtendedDynamicState3FeaturesEXT>(
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_EXTENDED_DYNAMIC_STATE_3_FEATURES_EXT);
+  auto dynamic2 = make_info<VkPhysicalDeviceExtendedDynamicState2FeaturesEXT>(
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_EXTENDED_DYNAMIC_STATE_2_FEATURES_EXT, &dynamic3);
   auto ray_query = make_info<VkPhysicalDeviceRayQueryFeaturesKHR>(
-      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_QUERY_FEATURES_KHR);
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_QUERY_FEATURES_KHR,
+      no_dynamic_blend.empty() ? static_cast<void*>(&dynamic2) : nullptr);
   auto acceleration = make_info<VkPhysicalDeviceAccelerationStructureFeaturesKHR>(
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_FEATURES_KHR, &ray_query);
   auto provoking = make_info<VkPhysicalDeviceProvokingVertexFeaturesEXT>(
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROVOKING_VERTEX_FEATURES_EXT,
-      candidate.missing_ray_query.empty() ? static_cast<void*>(&acceleration) : nullptr);
+      candidate.missing_ray_query.empty()
+          ? static_cast<void*>(&acceleration)
+          : (no_dynamic_blend.empty() ? static_cast<void*>(&dynamic2) : nullptr));
   auto lines = make_info<VkPhysicalDeviceLineRasterizationFeaturesEXT>(
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_LINE_RASTERIZATION_FEATURES_EXT, &provoking);
   auto depth_clip = make_info<VkPhysicalDeviceDepthClipControlFeaturesEXT>(
@@ -151,6 +168,11 @@ Candidate evaluate(VkPhysicalDevice device) {
   candidate.stippled_smooth_lines = lines.stippledSmoothLines;
   // GL's occlusion queries count samples; without this feature Vulkan may only count 0 or not 0.
   candidate.precise_occlusion_queries = core.occlusionQueryPrecise;
+  candidate.dynamic_blend = no_dynamic_blend.empty() && dynamic2.extendedDynamicState2LogicOp &&
+                            dynamic3.extendedDynamicState3ColorBlendEnable &&
+                            dynamic3.extendedDynamicState3ColorBlendEquation &&
+                            dynamic3.extendedDynamicState3ColorWriteMask &&
+                            dynamic3.extendedDynamicState3LogicOpEnable;
   if (candidate.missing_ray_query.empty()) {
     if (!acceleration.accelerationStructure)
       candidate.missing_ray_query.push_back("accelerationStructure");
@@ -278,6 +300,8 @@ DeviceOptions DeviceOptions::from_environment(bool validation) {
     options.hide_ray_query = true;
   if (const char* sync = std::getenv("GLPT_VK_SYNC"); sync && *sync && *sync != '0')
     options.sync_submissions = true;
+  if (const char* hide = std::getenv("GLPT_VK_NO_DYNAMIC_BLEND"); hide && *hide && *hide != '0')
+    options.hide_dynamic_blend = true;
   return options;
 }
 
@@ -444,6 +468,7 @@ std::unique_ptr<VulkanDevice> VulkanDevice::create(const DeviceOptions& options)
       chosen.missing_ray_query.empty() ? &as_properties : nullptr);
   vkGetPhysicalDeviceProperties2(chosen.device, &properties);
   self->limits_ = properties.properties.limits;
+  self->properties_ = properties.properties;
   self->scratch_alignment_ =
       std::max<VkDeviceSize>(as_properties.minAccelerationStructureScratchOffsetAlignment, 1);
   vkGetPhysicalDeviceMemoryProperties(chosen.device, &self->memory_properties_);
@@ -452,15 +477,26 @@ std::unique_ptr<VulkanDevice> VulkanDevice::create(const DeviceOptions& options)
   self->ray_query_ = chosen.missing_ray_query.empty();
   self->ray_query_missing_ = join(chosen.missing_ray_query, ", ");
   self->geometry_shader_ = chosen.geometry_shader;
+  const bool dynamic_blend = chosen.dynamic_blend && !options.hide_dynamic_blend;
+  auto dynamic3 = make_info<VkPhysicalDeviceExtendedDynamicState3FeaturesEXT>(
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_EXTENDED_DYNAMIC_STATE_3_FEATURES_EXT);
+  dynamic3.extendedDynamicState3ColorBlendEnable = VK_TRUE;
+  dynamic3.extendedDynamicState3ColorBlendEquation = VK_TRUE;
+  dynamic3.extendedDynamicState3ColorWriteMask = VK_TRUE;
+  dynamic3.extendedDynamicState3LogicOpEnable = VK_TRUE;
+  auto dynamic2 = make_info<VkPhysicalDeviceExtendedDynamicState2FeaturesEXT>(
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_EXTENDED_DYNAMIC_STATE_2_FEATURES_EXT, &dynamic3);
+  dynamic2.extendedDynamicState2LogicOp = VK_TRUE;
+  void* const dynamic_chain = dynamic_blend ? static_cast<void*>(&dynamic2) : nullptr;
   auto ray_query = make_info<VkPhysicalDeviceRayQueryFeaturesKHR>(
-      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_QUERY_FEATURES_KHR);
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_QUERY_FEATURES_KHR, dynamic_chain);
   ray_query.rayQuery = VK_TRUE;
   auto acceleration = make_info<VkPhysicalDeviceAccelerationStructureFeaturesKHR>(
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_FEATURES_KHR, &ray_query);
   acceleration.accelerationStructure = VK_TRUE;
   auto provoking = make_info<VkPhysicalDeviceProvokingVertexFeaturesEXT>(
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROVOKING_VERTEX_FEATURES_EXT,
-      self->ray_query_ ? static_cast<void*>(&acceleration) : nullptr);
+      self->ray_query_ ? static_cast<void*>(&acceleration) : dynamic_chain);
   provoking.provokingVertexLast = VK_TRUE;
   auto lines = make_info<VkPhysicalDeviceLineRasterizationFeaturesEXT>(
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_LINE_RASTERIZATION_FEATURES_EXT, &provoking);
@@ -519,6 +555,10 @@ std::unique_ptr<VulkanDevice> VulkanDevice::create(const DeviceOptions& options)
     device_extensions.insert(device_extensions.end(), std::begin(kRayQueryDeviceExtensions),
                              std::end(kRayQueryDeviceExtensions));
   }
+  if (dynamic_blend) {
+    device_extensions.insert(device_extensions.end(), std::begin(kDynamicBlendDeviceExtensions),
+                             std::end(kDynamicBlendDeviceExtensions));
+  }
 
   float priority = 1.0f;
   auto queue_info = make_info<VkDeviceQueueCreateInfo>(VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO);
@@ -544,6 +584,18 @@ std::unique_ptr<VulkanDevice> VulkanDevice::create(const DeviceOptions& options)
       throw VulkanError(std::string("vkGetDeviceProcAddr(") + name + ") failed");
     return function;
   };
+  if (dynamic_blend) {
+    auto& blend = self->dynamic_blend_;
+    blend.set_enable =
+        reinterpret_cast<PFN_vkCmdSetColorBlendEnableEXT>(load("vkCmdSetColorBlendEnableEXT"));
+    blend.set_equation =
+        reinterpret_cast<PFN_vkCmdSetColorBlendEquationEXT>(load("vkCmdSetColorBlendEquationEXT"));
+    blend.set_write_mask =
+        reinterpret_cast<PFN_vkCmdSetColorWriteMaskEXT>(load("vkCmdSetColorWriteMaskEXT"));
+    blend.set_logic_op_enable =
+        reinterpret_cast<PFN_vkCmdSetLogicOpEnableEXT>(load("vkCmdSetLogicOpEnableEXT"));
+    blend.set_logic_op = reinterpret_cast<PFN_vkCmdSetLogicOpEXT>(load("vkCmdSetLogicOpEXT"));
+  }
   if (self->ray_query_) {
     auto& as = self->as_functions_;
     as.create = reinterpret_cast<PFN_vkCreateAccelerationStructureKHR>(

@@ -42,6 +42,10 @@ struct DeviceOptions {
   // frame overlapped: what that overlap gains is measured against it, and a synchronization
   // problem shows by going away with it.
   bool sync_submissions = false;
+  // Treat the device as lacking dynamic blend state (GLPT_VK_NO_DYNAMIC_BLEND=1): every blend,
+  // colour mask and logic op state its own pipeline, as on devices without
+  // VK_EXT_extended_dynamic_state3 (for A/B measurements and to test that path).
+  bool hide_dynamic_blend = false;
   bool operator==(const DeviceOptions&) const = default;
   // GLPT_VK_DEVICE, GLPT_VK_NO_RAY_QUERY and GLPT_VK_SYNC, as every renderer reads them.
   static DeviceOptions from_environment(bool validation);
@@ -86,6 +90,19 @@ class VulkanDevice {
   const std::string& ray_query_missing() const { return ray_query_missing_; }
   bool has_geometry_shader() const { return geometry_shader_; }
   bool has_smooth_lines() const { return smooth_lines_; }
+  // Blend enable, equations and factors, colour write masks and the logic op set per draw
+  // (VK_EXT_extended_dynamic_state3 and _2's logic op): one pipeline serves every blend state.
+  // Null where the device lacks them.
+  struct DynamicBlendFunctions {
+    PFN_vkCmdSetColorBlendEnableEXT set_enable = nullptr;
+    PFN_vkCmdSetColorBlendEquationEXT set_equation = nullptr;
+    PFN_vkCmdSetColorWriteMaskEXT set_write_mask = nullptr;
+    PFN_vkCmdSetLogicOpEnableEXT set_logic_op_enable = nullptr;
+    PFN_vkCmdSetLogicOpEXT set_logic_op = nullptr;
+  };
+  const DynamicBlendFunctions* dynamic_blend() const {
+    return dynamic_blend_.set_enable != nullptr ? &dynamic_blend_ : nullptr;
+  }
   // occlusionQueryPrecise: occlusion queries count samples (else only zero / not zero).
   bool has_precise_occlusion_queries() const { return precise_occlusion_queries_; }
   // Host memory (an X shared-memory segment) can be imported as a buffer, with this alignment.
@@ -94,6 +111,8 @@ class VulkanDevice {
   const AccelerationStructureFunctions& as_functions() const { return as_functions_; }
   const std::string& name() const { return name_; }
   const VkPhysicalDeviceLimits& limits() const { return limits_; }
+  // Vendor, device and driver ids and the pipeline cache UUID: what a pipeline cache is valid for.
+  const VkPhysicalDeviceProperties& properties() const { return properties_; }
   VkDeviceSize scratch_alignment() const { return scratch_alignment_; }
 
   // A memory type in `type_bits` with all `required` flags, preferring one that also has
@@ -163,6 +182,7 @@ class VulkanDevice {
   Ticket last_ticket_ = 0;
   std::atomic<uint64_t> host_waits_ = 0;
   bool sync_submissions_ = false;
+  DynamicBlendFunctions dynamic_blend_;
   Ticket completed_ticket_ = 0;           // every ticket up to it has completed
   std::map<Ticket, double> finished_ms_;  // device times not yet taken (the newest only)
   void complete_locked(SubmissionSlot& slot);
@@ -179,6 +199,7 @@ class VulkanDevice {
   AccelerationStructureFunctions as_functions_;
   std::string name_;
   VkPhysicalDeviceLimits limits_{};
+  VkPhysicalDeviceProperties properties_{};
   VkPhysicalDeviceMemoryProperties memory_properties_{};
   VkDeviceSize scratch_alignment_ = 1;
 };

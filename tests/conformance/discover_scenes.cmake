@@ -2,7 +2,8 @@
 # the Mesa runner is built (see CMakeLists.txt). Inputs: MESA_RUNNER, GLPT_RUNNER (may be empty),
 # IMGCOMPARE, RUN_SCENE, OUT_DIR, WITH_GLPT (register the glpt-vs-Mesa image tests), WITH_STATE
 # (and the state tests), PENDING (pending.txt: scenes whose image test is expected to fail),
-# PATH_MODE (path_mode.txt: scenes also compared with Mesa in path-traced mode), OUTPUT.
+# PATH_MODE (path_mode.txt: scenes also compared with Mesa in path-traced mode), STATIC_BLEND
+# (static_blend.txt: scenes also compared with blend state in pipelines), OUTPUT.
 cmake_policy(VERSION 3.25)
 execute_process(COMMAND ${MESA_RUNNER} --list
                 OUTPUT_VARIABLE listing
@@ -26,6 +27,7 @@ function(read_scene_names file out)
 endfunction()
 read_scene_names("${PENDING}" pending_scenes)
 read_scene_names("${PATH_MODE}" path_scenes)
+read_scene_names("${STATIC_BLEND}" static_blend_scenes)
 # Reasons are free text: their semicolons would split CMake lists.
 string(REPLACE ";" "," listing "${listing}")
 string(REPLACE "\n" ";" lines "${listing}")
@@ -61,6 +63,14 @@ foreach(line IN LISTS lines)
         "\"${OUT_DIR}/path/${scene}\" \"${MESA_RUNNER}\" \"${GLPT_RUNNER}\" \"${IMGCOMPARE}\" "
         "${max_diff} ${min_fraction})\n"
         "set_tests_properties(conformance_path.${scene} PROPERTIES LABELS conformance TIMEOUT 60)\n")
+    endif()
+    if(scene IN_LIST static_blend_scenes)
+      string(APPEND text
+        "add_test(conformance_static_blend.${scene} \"${RUN_SCENE}\" image \"${scene}\" "
+        "\"${OUT_DIR}/static_blend/${scene}\" \"${MESA_RUNNER}\" \"${GLPT_RUNNER}\" "
+        "\"${IMGCOMPARE}\" ${max_diff} ${min_fraction})\n"
+        "set_tests_properties(conformance_static_blend.${scene} PROPERTIES LABELS conformance "
+        "ENVIRONMENT GLPT_VK_NO_DYNAMIC_BLEND=1 TIMEOUT 60)\n")
     endif()
   endif()
   # A pending scene's state is compared once it leaves pending.txt (until then it may fail either

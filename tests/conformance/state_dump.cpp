@@ -124,6 +124,7 @@ const Pname kStatePnames[] = {
     P(GL_BLEND_DST_RGB, 1),
     P(GL_BLEND_DST_ALPHA, 1),
     P(GL_BLEND_EQUATION, 1),
+    P(GL_BLEND_EQUATION_ALPHA_EXT, 1),
     P(GL_BLEND_COLOR, 4),
     P(GL_LOGIC_OP_MODE, 1),
     // 6.20 framebuffer control

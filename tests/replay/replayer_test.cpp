@@ -12,6 +12,7 @@
 
 #include "gl/gl_enums.h"
 #include "gl/glx_enums.h"
+#include "gl_shim/context.hpp"
 #include "gl_shim/dispatch.hpp"
 #include "replay/backend.hpp"
 #include "tests/replay/call_builder.hpp"
@@ -348,6 +349,14 @@ void lit_scene(Session& s, CallBuilder& b) {
   s.replay(b.call("glLightfv", {enumv(GL_LIGHT0), enumv(GL_POSITION), reals({1, 4, 0, 1})}));
 }
 
+// A read back and glFinish in the middle of a frame.
+void s_read_and_finish(Session& s, CallBuilder& b) {
+  static std::array<uint8_t, 4> sink;
+  s.replay(b.call("glReadPixels", {sint(0), sint(0), sint(1), sint(1), enumv(GL_RGBA),
+                                   enumv(GL_UNSIGNED_BYTE), blob(sink.data(), sink.size())}));
+  s.replay(b.call("glFinish", {}));
+}
+
 void lit_frame(Session& s, CallBuilder& b) {
   s.replay(b.call("glClear", {uintv(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT)}));
   s.replay(b.call("glBegin", {enumv(GL_QUADS)}));
@@ -386,6 +395,74 @@ TEST(ReplayShards, PathTracedFramesDoNotDependOnTheFramesRenderedBefore) {
   EXPECT_TRUE(shard.frames[1].rgba == whole.frames[1].rgba);
   EXPECT_TRUE(shard.frames[3].rgba == whole.frames[3].rgba);
   EXPECT_EQ(shard.replayer().counts().frames_rendered, 2u);
+}
+
+// A frame that draws one more quad over the last without clearing (a program that builds its
+// image over frames), ending with glFinish before its swap as xscreensaver's hacks do.
+void accumulating_frame(Session& s, CallBuilder& b, int f) {
+  if (f == 0) {
+    s.replay(b.call("glClearColor", {real(0), real(0), real(0.5), real(1)}));
+    s.replay(b.call("glClear", {uintv(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT)}));
+  }
+  s.replay(b.call("glColor3f", {real(0.2 * f), real(1 - 0.15 * f), real(0.3)}));
+  s.replay(b.call("glBegin", {enumv(GL_QUADS)}));
+  const double x = -3.5 + 1.1 * f, y = -1.0 + 0.3 * f;
+  for (const auto& [dx, dy] :
+       std::vector<std::array<double, 2>>{{0, 0}, {1.5, 0}, {1.5, 1.5}, {0, 1.5}})
+    s.replay(b.call("glVertex3f", {real(x + dx), real(y + dy), real(-6)}));
+  s.replay(b.call("glEnd", {}));
+  s.replay(b.call("glFinish", {}));
+  s.replay(b.call("glXSwapBuffers", {pointer(1), uintv(4)}));
+}
+
+// Shards skip the frames other shards write: frames a later frame builds on are rendered first,
+// so a program that never clears still gets exactly the frames one whole replay gets.
+TEST(ReplayShards, AProgramThatDoesNotClearGetsTheSkippedFramesItBuildsOn) {
+  for (const char* mode : {"raster", "path"}) {
+    SCOPED_TRACE(mode);
+    setenv("GLPT_MODE", mode, 1);
+    setenv("GLPT_ACCUMULATE", "0", 1);
+    CallBuilder whole_calls, shard_calls;
+    Session whole("glpt");
+    Session shard("glpt", [](uint64_t f) { return f % 3 == 2; });
+    lit_scene(whole, whole_calls);
+    for (int f = 0; f < 6; ++f) accumulating_frame(whole, whole_calls, f);
+    lit_scene(shard, shard_calls);
+    for (int f = 0; f < 6; ++f) accumulating_frame(shard, shard_calls, f);
+    ASSERT_EQ(whole.frames.size(), 6u);
+    ASSERT_EQ(shard.frames.size(), 2u);
+    EXPECT_TRUE(shard.frames[2].rgba == whole.frames[2].rgba);
+    EXPECT_TRUE(shard.frames[5].rgba == whole.frames[5].rgba);
+    // Every skipped frame was needed: rendered, none dropped.
+    const glpt::Context* context = glpt::current_context();
+    ASSERT_NE(context, nullptr);
+    EXPECT_EQ(context->skipped_frames.rendered(), 4u);
+    EXPECT_EQ(context->skipped_frames.dropped(), 0u);
+  }
+  setenv("GLPT_MODE", "raster", 1);
+  unsetenv("GLPT_ACCUMULATE");
+}
+
+// Frames that a later frame clears away are never rendered: a shard costs their recording.
+TEST(ReplayShards, SkippedFramesThatTheNextFrameClearsAwayAreNotRendered) {
+  setenv("GLPT_MODE", "path", 1);
+  setenv("GLPT_ACCUMULATE", "0", 1);
+  CallBuilder calls;
+  Session shard("glpt", [](uint64_t f) { return f == 5; });
+  lit_scene(shard, calls);
+  for (int f = 0; f < 6; ++f) {
+    // glFinish and glReadPixels inside the frame: a replay has no reader to answer.
+    s_read_and_finish(shard, calls);
+    lit_frame(shard, calls);
+  }
+  setenv("GLPT_MODE", "raster", 1);
+  unsetenv("GLPT_ACCUMULATE");
+  ASSERT_EQ(shard.frames.size(), 1u);
+  const glpt::Context* context = glpt::current_context();
+  ASSERT_NE(context, nullptr);
+  EXPECT_EQ(context->skipped_frames.rendered(), 0u);
+  EXPECT_EQ(context->skipped_frames.dropped(), 5u);
+  EXPECT_EQ(context->output->last_frame_stats().draws, 1u);  // frame 5's one glBegin/glEnd
 }
 
 }  // namespace

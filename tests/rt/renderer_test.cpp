@@ -984,6 +984,43 @@ TEST(ClassifyDraws, ViewerOfAProjection) {
   EXPECT_EQ(moved.w, 1.0f);
 }
 
+// Raster mode: blend equations and factors, colour masks and logic ops are set per draw where
+// the device can (VK_EXT_extended_dynamic_state3): a program walking through them compiles one
+// pipeline, not one per state (GLPT_VK_NO_DYNAMIC_BLEND=1: one per state, as before).
+TEST(RenderDeviceSelection, BlendStatesShareOnePipelineWhereTheDeviceSetsThemPerDraw) {
+  auto pipelines_for_blend_states = [](bool hide_dynamic_blend) -> uint32_t {
+    if (hide_dynamic_blend) ::setenv("GLPT_VK_NO_DYNAMIC_BLEND", "1", 1);
+    RenderSettings settings;
+    settings.mode = RenderMode::kRaster;
+    std::string error;
+    std::unique_ptr<Renderer> renderer = Renderer::create(settings, &error);
+    ::unsetenv("GLPT_VK_NO_DYNAMIC_BLEND");
+    EXPECT_NE(renderer, nullptr) << error;
+    if (renderer == nullptr) return 0;
+    RecordBuilder b(16, 16);
+    b.clear(glm::vec4(0.5f));
+    b.raster.ops.blend = true;
+    const uint32_t factors[] = {GL_ONE, GL_SRC_ALPHA, GL_DST_COLOR, GL_ONE_MINUS_SRC_ALPHA};
+    for (uint32_t factor : factors) {
+      b.raster.ops.blend_src_rgb = b.raster.ops.blend_src_alpha = factor;
+      b.quad({-1, -1, 0}, {2, 0, 0}, {0, 2, 0}, glm::vec4(0.2f, 0.4f, 0.6f, 0.5f));
+    }
+    b.raster.ops.blend = false;
+    b.raster.ops.color_write = {true, false, true, true};
+    b.quad({-1, -1, 0}, {1, 0, 0}, {0, 1, 0}, glm::vec4(1.0f));
+    b.raster.ops.color_logic_op = true;
+    b.raster.ops.logic_op = GL_XOR;
+    b.quad({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, glm::vec4(1.0f));
+    FrameStats stats;
+    const std::shared_ptr<DrawableBuffers> buffers = create_drawable_buffers();
+    EXPECT_TRUE(renderer->execute(b.record, *buffers, b.drawable, stats, &error)) << error;
+    return stats.pipelines_created;
+  };
+  // The clear is a transfer; the six draws differ only in blend, mask and logic op state.
+  EXPECT_EQ(pipelines_for_blend_states(false), 1u);
+  EXPECT_EQ(pipelines_for_blend_states(true), 6u);
+}
+
 TEST(RenderDeviceSelection, UnknownDeviceNameGivesAClearError) {
   ::setenv("GLPT_VK_DEVICE", "no-such-device-xyz", 1);
   std::string error;

@@ -183,6 +183,22 @@ TEST_F(GlTest, BlendEquationSetsBothEquations) {
   EXPECT_EQ(int1(GL_BLEND_EQUATION), GL_FUNC_ADD);
 }
 
+TEST_F(GlTest, BlendEquationSeparateSetsEachEquationAndChecksBoth) {
+  glBlendEquationSeparateEXT(GL_FUNC_SUBTRACT, GL_MAX);
+  EXPECT_EQ(error(), GLenum{GL_NO_ERROR});
+  EXPECT_EQ(int1(GL_BLEND_EQUATION_RGB_EXT), GL_FUNC_SUBTRACT);
+  EXPECT_EQ(int1(GL_BLEND_EQUATION_ALPHA_EXT), GL_MAX);
+  // One invalid mode: GL_INVALID_ENUM and neither changes.
+  glBlendEquationSeparateEXT(GL_FUNC_ADD, GL_LOGIC_OP);
+  EXPECT_EQ(error(), GLenum{GL_INVALID_ENUM});
+  glBlendEquationSeparateEXT(GL_ZERO, GL_FUNC_ADD);
+  EXPECT_EQ(error(), GLenum{GL_INVALID_ENUM});
+  EXPECT_EQ(int1(GL_BLEND_EQUATION), GL_FUNC_SUBTRACT);
+  EXPECT_EQ(int1(GL_BLEND_EQUATION_ALPHA_EXT), GL_MAX);
+  glBlendEquation(GL_MIN);  // sets both
+  EXPECT_EQ(int1(GL_BLEND_EQUATION_ALPHA_EXT), GL_MIN);
+}
+
 TEST_F(GlTest, BlendColorIsClampedAndReadsAsColourIntegers) {
   glBlendColor(2.0f, -1.0f, 0.5f, 0.2f);
   EXPECT_EQ(floats(GL_BLEND_COLOR, 4), (std::vector<float>{1.0f, 0.0f, 0.5f, 0.2f}));

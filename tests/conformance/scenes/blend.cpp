@@ -146,6 +146,30 @@ GLPT_SCENE(blend_func_separate, 64, 64) {
   }
 }
 
+// Separate RGB and alpha equations (EXT_blend_equation_separate): each panel blends colour with
+// one equation and alpha with another, factors ONE, ONE; alpha is in the image. The last panel
+// sets an invalid pair, which changes nothing (GL_INVALID_ENUM).
+GLPT_SCENE(blend_equation_separate, 128, 64) {
+  clear(0.1f, 0.1f, 0.1f, 1.0f);
+  ortho_pixels(128, 64);
+  const GLenum pairs[8][2] = {{GL_FUNC_ADD, GL_FUNC_SUBTRACT},
+                              {GL_FUNC_SUBTRACT, GL_FUNC_ADD},
+                              {GL_FUNC_ADD, GL_FUNC_REVERSE_SUBTRACT},
+                              {GL_FUNC_REVERSE_SUBTRACT, GL_MAX},
+                              {GL_MIN, GL_FUNC_ADD},
+                              {GL_MAX, GL_MIN},
+                              {GL_FUNC_SUBTRACT, GL_FUNC_REVERSE_SUBTRACT},
+                              {GL_FUNC_ADD, GL_ZERO}};
+  for (int i = 0; i < 8; ++i) {
+    const float x = 32.0f * static_cast<float>(i % 4), y = i < 4 ? 32.0f : 0.0f;
+    destination(x, y);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_ONE, GL_ONE);
+    glBlendEquationSeparate(pairs[i][0], pairs[i][1]);  // the EXT entry point's GL 2.0 name
+    source(x, y);
+  }
+}
+
 // All sixteen logic ops (GL 1.5 4.1.10): destination stripes one way, source stripes the other,
 // values with distinct bit patterns.
 GLPT_SCENE(logic_op_all, 128, 128) {
