@@ -141,7 +141,7 @@ void start_new_record(Context& ctx) {
 DeferredFrames::Execute render_held(Context& ctx) {
   return [&ctx](const rec::FrameRecord& record, bool swap, uint64_t frame) {
     // Rendered as a whole replay renders that frame: from the same start, seeded by its index.
-    ctx.output->renderer().start_independent_frame(frame);
+    ctx.output->renderer().start_independent_frame(frame, ctx.replay_history_window);
     std::vector<rt::QuerySamples> samples;
     const bool ok =
         ctx.output->execute(record, *ctx.target, current_drawable(ctx), 0.0, &samples, swap);
@@ -151,10 +151,13 @@ DeferredFrames::Execute render_held(Context& ctx) {
 }
 
 // The sealed record is about to be rendered: glpt-replay's held frames go first where it builds
-// on them, and then this frame starts again from the same start (as a whole replay renders it).
+// on them, and then this frame starts (or goes on) from the start a whole replay gives it. The
+// frame starts here, when its first record renders, not when it begins: held frames before it
+// must render on the history of the frames before them.
 void render_held_before(Context& ctx, const rec::DrawableConfig& drawable, bool swap) {
-  if (ctx.skipped_frames.before_render(ctx.recorder.record(), drawable, swap, render_held(ctx)))
-    ctx.output->renderer().start_independent_frame(ctx.replay_frame);
+  ctx.skipped_frames.before_render(ctx.recorder.record(), drawable, swap, render_held(ctx));
+  if (ctx.replayed)
+    ctx.output->renderer().start_independent_frame(ctx.replay_frame, ctx.replay_history_window);
 }
 
 }  // namespace

@@ -118,6 +118,9 @@ class Context {
   bool render_frame_ends = true;
   DeferredFrames skipped_frames;
   uint64_t replay_frame = 0;  // glpt-replay's index of the frame being replayed
+  // glpt-replay's history window: a frame builds on the path tracer's history of the frames
+  // before it in its window of this many frames (rt::Renderer::start_independent_frame).
+  uint32_t replay_history_window = 1;
   // Without a renderer (renderer_unavailable): frames show the last clear colour.
   std::unique_ptr<ClearFallback> clear_fallback;
 

@@ -47,6 +47,9 @@ class Backend {
   // `render` false: a frame no one looks at (another shard's): the backend may skip rendering
   // it, and what it reads goes nowhere.
   virtual void begin_frame(uint64_t /*frame_index*/, bool /*render*/) {}
+  // A frame builds on the history (denoiser, accumulation) of the frames before it in its window
+  // of `frames` frames (0, W, 2W... start windows), and on nothing else; 1: on nothing.
+  virtual void set_history_window(uint32_t /*frames*/) {}
   // The end of the current context's frame: a swap (`swap`) or the glFlush/glFinish call
   // `flush` of a single-buffered surface (called through the backend). `render` false: a frame
   // no one looks at (another shard's), which the backend may skip rendering; otherwise the

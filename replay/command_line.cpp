@@ -20,8 +20,14 @@ const char* const kUsage =
     "                       index from 0; the same names for every backend)\n"
     "  --frames LIST        frames to write, e.g. 10,20-30 (default: all)\n"
     "  --every N            only frames whose index is a multiple of N\n"
-    "  --shard I/N          render only the chosen frames f with f % N == I, replaying the\n"
-    "                       state of all; N shards write exactly the frames of one replay\n"
+    "  --shard I/N          write only the chosen frames of every Nth history window (the\n"
+    "                       windows w with w % N == I), replaying the state of all; N shards\n"
+    "                       write exactly the frames of one replay\n"
+    "  --history W          frames build on the denoiser's and accumulation's history of the\n"
+    "                       frames before them in their window of W frames (0..W-1, W..2W-1,\n"
+    "                       ...): a written frame is rendered after those of its window before\n"
+    "                       it (default 8 in path-traced mode, 1 = none in raster mode and for\n"
+    "                       --backend mesa)\n"
     "  --backend glpt|mesa  glpt (default) or real Mesa through OSMesa (the reference images)\n"
     "  --device SUBSTR      Vulkan device by name (GLPT_VK_DEVICE; also --vk-device)\n"
     "  --window             show the frames in a window (keys: space pause/resume, n or Right\n"
@@ -33,10 +39,10 @@ const char* const kUsage =
     "glpt's settings, the same flags as `glpt run` (each sets the GLPT_* variable named):\n"
     "%QUALITY_FLAGS%"
     "\n"
-    "Every written frame is rendered from the same start (no accumulation across frames, its\n"
-    "random numbers seeded by its index), so it does not depend on which frames were rendered\n"
-    "before it. The per-frame lines go to stdout; progress and the closing summary (calls glpt\n"
-    "does not implement, calls the replayer does not know) to stderr.\n"
+    "Every written frame is rendered from the same start (the history of the frames before it\n"
+    "in its window, its random numbers seeded by its index), so it does not depend on which\n"
+    "frames were rendered before. The per-frame lines go to stdout; progress and the closing\n"
+    "summary (calls glpt does not implement, calls the replayer does not know) to stderr.\n"
     "\n"
     "exit status: 0 ok, 1 replay failed (no renderer, cannot write PNG), 2 bad usage,\n"
     "3 bad trace (cannot be read, or corrupt: the frames before the damage are written)\n";
@@ -48,19 +54,20 @@ struct Flag {
 };
 
 constexpr Flag kFlags[] = {
-    {"--out", nullptr, true},
-    {"--frames", nullptr, true},
-    {"--every", nullptr, true},
-    {"--shard", nullptr, true},
-    {"--backend", nullptr, true},
-    {"--quiet", nullptr, false},
-    {"--window", nullptr, false},
-    {"--paused", nullptr, false},
-    {"--help", nullptr, false},
-    {"--device", "GLPT_VK_DEVICE", true},
+    {"--out", nullptr, true},    {"--frames", nullptr, true},          {"--every", nullptr, true},
+    {"--shard", nullptr, true},  {"--history", nullptr, true},         {"--backend", nullptr, true},
+    {"--quiet", nullptr, false}, {"--window", nullptr, false},         {"--paused", nullptr, false},
+    {"--help", nullptr, false},  {"--device", "GLPT_VK_DEVICE", true},
 };
 
 }  // namespace
+
+uint32_t history_window_of(const Options& options, const char* mode) {
+  if (options.history_window != 0) return options.history_window;
+  if (options.backend == "mesa" || (mode != nullptr && std::string_view(mode) == "raster"))
+    return 1;
+  return kDefaultHistoryWindow;
+}
 
 std::string usage() {
   std::string text = kUsage;
@@ -82,8 +89,7 @@ bool parse_command_line(int argc, const char* const* argv, Options* options, std
       cli::EnvSettings quality;
       switch (cli::parse_quality_flag(args, &index, &quality, error)) {
         case cli::FlagParse::kParsed:
-          options->environment.insert(options->environment.end(), quality.begin(),
-                                      quality.end());
+          options->environment.insert(options->environment.end(), quality.begin(), quality.end());
           i = static_cast<int>(index) - 1;
           continue;
         case cli::FlagParse::kError:
@@ -142,6 +148,16 @@ bool parse_command_line(int argc, const char* const* argv, Options* options, std
       options->frames.set_every(every);
     } else if (arg == "--shard") {
       if (!options->frames.parse_shard(value, error)) return false;
+    } else if (arg == "--history") {
+      uint32_t frames = 0;
+      const auto [end, ec] = std::from_chars(value.data(), value.data() + value.size(), frames);
+      if (ec != std::errc() || end != value.data() + value.size() || frames == 0 ||
+          frames > kMaxHistoryWindow) {
+        *error = "--history: want a whole number from 1 to " + std::to_string(kMaxHistoryWindow) +
+                 ", got \"" + value + "\"";
+        return false;
+      }
+      options->history_window = frames;
     } else if (arg == "--backend") {
       if (value != "glpt" && value != "mesa") {
         *error = "--backend: want glpt or mesa, got \"" + value + "\"";

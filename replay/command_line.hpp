@@ -26,9 +26,19 @@ struct Options {
   bool window = false;  // --window: show the frames in a window
   bool paused = false;  // --paused: the window starts paused
   bool help = false;
+  uint32_t history_window = 0;  // --history; 0: the default of the mode (history_window_of)
   // GLPT_* variables the quality flags set for the glpt backend (--mode -> GLPT_MODE, ...).
   std::vector<std::pair<std::string, std::string>> environment;
 };
+
+// --history's bounds and its default in path-traced mode: SVGF's history (alpha 0.2) has most
+// of its weight within 8 frames; a written frame costs up to W - 1 more rendered before it.
+constexpr uint32_t kMaxHistoryWindow = 1024;
+constexpr uint32_t kDefaultHistoryWindow = 8;
+
+// The history window a replay uses: --history, else 1 for --backend mesa and raster mode
+// (`mode`: GLPT_MODE as the replay sees it, may be null), else kDefaultHistoryWindow.
+uint32_t history_window_of(const Options& options, const char* mode);
 
 // The --help text (with the quality flags' table, replay/cli/quality_flags.hpp).
 std::string usage();

@@ -61,6 +61,13 @@ bool FrameSelection::chosen(uint64_t frame) const {
   return false;
 }
 
+bool FrameSelection::rendered(uint64_t frame) const {
+  const uint64_t window_end = (frame / history_window_ + 1) * history_window_;  // exclusive
+  for (uint64_t f = frame; f < window_end; ++f)
+    if (written(f)) return true;
+  return false;
+}
+
 uint64_t FrameSelection::last_chosen() const {
   if (ranges_.empty()) return UINT64_MAX;
   uint64_t last = 0;

@@ -93,8 +93,10 @@ class GlptBackend final : public Backend {
     // their glFinish, glReadPixels and frame end render nothing unless a later frame needs it.
     ctx->render_frame_ends = render;
     ctx->replay_frame = frame_index;
-    if (ctx->output) ctx->output->renderer().start_independent_frame(frame_index);
+    ctx->replay_history_window = history_window_;
   }
+
+  void set_history_window(uint32_t frames) override { history_window_ = frames; }
 
   bool end_frame(bool swap, GlProc flush, bool render, FrameImage* image,
                  std::string* /*error*/) override {
@@ -144,6 +146,7 @@ class GlptBackend final : public Backend {
   std::map<uint64_t, std::unique_ptr<HeadlessTarget>> surfaces_;
   std::map<std::string, uint64_t> unimplemented_;
   double last_render_ms_ = 0;
+  uint32_t history_window_ = 1;
 };
 
 }  // namespace

@@ -72,14 +72,16 @@ std::unique_ptr<WindowView> open_window(std::string* error) {
 }
 #endif
 
-int run(const Options& options) {
+int run(Options options) {
   // The quality flags reach glpt's renderer as its environment variables. Replay never
-  // accumulates across frames (each written frame starts afresh; see --help), and writes the
-  // PNGs itself, so glpt's own GLPT_OUTPUT stays off.
+  // accumulates samples across frames (a frame's history is the denoiser's, within its window;
+  // see --help), and writes the PNGs itself, so glpt's own GLPT_OUTPUT stays off.
   for (const auto& [variable, value] : options.environment)
     setenv(variable.c_str(), value.c_str(), 1);
   setenv("GLPT_ACCUMULATE", "0", 1);
   unsetenv("GLPT_OUTPUT");
+  const uint32_t history_window = history_window_of(options, std::getenv("GLPT_MODE"));
+  options.frames.set_history_window(history_window);
 
   std::string error;
   std::unique_ptr<trace::TraceReader> reader = trace::TraceReader::open(options.trace, error);
@@ -108,6 +110,7 @@ int run(const Options& options) {
     std::fprintf(stderr, "glpt-replay: %s\n", error.c_str());
     return kExitReplayFailed;
   }
+  backend->set_history_window(history_window);
 
   const Stopwatch total;
   Stopwatch since_frame, since_progress;
@@ -140,7 +143,8 @@ int run(const Options& options) {
     return true;
   };
   Replayer replayer(
-      *backend, [&](uint64_t f) { return options.frames.rendered(f); }, frame_done);
+      *backend, [&](uint64_t f) { return options.frames.rendered(f); }, frame_done,
+      [&](uint64_t f) { return options.frames.written(f); });
 
   trace::Call call;
   int status = kExitOk;

@@ -28,9 +28,11 @@ bool is_marker(const std::string& name) {
 
 }  // namespace
 
-Replayer::Replayer(Backend& backend, WantFrame want_frame, FrameDone frame_done)
+Replayer::Replayer(Backend& backend, WantFrame want_frame, FrameDone frame_done,
+                   WantFrame write_frame)
     : backend_(backend),
       want_frame_(std::move(want_frame)),
+      write_frame_(write_frame ? std::move(write_frame) : want_frame_),
       frame_done_(std::move(frame_done)),
       gl_(&resolve_through, &backend) {
   flush_ = backend_.resolve("glFlush");
@@ -145,12 +147,14 @@ bool Replayer::end_frame(bool swap, GlProc flush, std::string* error) {
   const uint64_t frame = counts_.frames++;
   if (contexts_.find(current_context_) == contexts_.end()) return true;
   const bool render = want_frame_(frame);
+  const bool write = render && write_frame_(frame);
   FrameImage image;
-  const bool ended = backend_.end_frame(swap, flush, render, render ? &image : nullptr, error);
+  const bool ended = backend_.end_frame(swap, flush, render, write ? &image : nullptr, error);
   backend_.begin_frame(counts_.frames, want_frame_(counts_.frames));
   if (!ended) return false;
   if (!render) return true;
   ++counts_.frames_rendered;
+  if (!write) return true;
   if (image.rgba.empty()) return true;  // nothing presented (no drawable, renderer failed)
   return frame_done_(frame, image, error);
 }

@@ -34,12 +34,15 @@ struct ReplayCounts {
 class Replayer {
  public:
   // Which frames to render (by index from 0, in trace order); the others replay their state
-  // only. `frame_done` receives each rendered frame's image (false + message stops the replay).
+  // only. `frame_done` receives the image of each rendered frame that `write_frame` wants (all
+  // of them without it; the others are rendered for the history of later ones); false +
+  // message stops the replay.
   using WantFrame = std::function<bool(uint64_t frame)>;
   using FrameDone =
       std::function<bool(uint64_t frame, const FrameImage& image, std::string* error)>;
 
-  Replayer(Backend& backend, WantFrame want_frame, FrameDone frame_done);
+  Replayer(Backend& backend, WantFrame want_frame, FrameDone frame_done,
+           WantFrame write_frame = nullptr);
   ~Replayer();
 
   // Replays one call. False + message on a failure that ends the replay (a backend failure,
@@ -77,6 +80,7 @@ class Replayer {
 
   Backend& backend_;
   WantFrame want_frame_;
+  WantFrame write_frame_;
   FrameDone frame_done_;
   GlFunctions gl_;
   ReplayCounts counts_;

@@ -59,8 +59,8 @@ class Renderer::Impl {
   RenderMode mode() const { return settings_.mode; }
   const std::string& device_name() const { return device_->name(); }
   RasterRenderer& raster() { return raster_; }
-  void start_independent_frame(uint64_t frame_index) {
-    if (tracer_) tracer_->start_independent_frame(frame_index);
+  void start_independent_frame(uint64_t frame_index, uint32_t history_window) {
+    if (tracer_) tracer_->start_independent_frame(frame_index, history_window);
   }
 
   // Throws on failure (Renderer::execute turns that into false + message).
@@ -308,9 +308,9 @@ bool Renderer::swap_buffers(DrawableBuffers& buffers, std::string* error) {
   });
 }
 
-void Renderer::start_independent_frame(uint64_t frame_index) {
+void Renderer::start_independent_frame(uint64_t frame_index, uint32_t history_window) {
   std::lock_guard lock(impl_->mutex);
-  impl_->start_independent_frame(frame_index);
+  impl_->start_independent_frame(frame_index, history_window);
 }
 
 uint64_t new_host_image_generation() {

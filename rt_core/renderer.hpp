@@ -91,9 +91,11 @@ class Renderer {
   // contents, and the back buffer keeps them (Mesa's software swap does the same).
   bool swap_buffers(DrawableBuffers& buffers, std::string* error);
 
-  // The next frame depends on no earlier one (glpt-replay's shards): path-traced accumulation
-  // restarts and its random sequence is seeded by `frame_index`. Raster mode has no such state.
-  void start_independent_frame(uint64_t frame_index);
+  // glpt-replay's frame `frame_index` starts: path tracing seeds its random sequence by the index
+  // and keeps its history (denoiser, accumulation) only from the frame before it within the same
+  // window of `history_window` frames (PathTracer::start_independent_frame), so the frame's
+  // pixels depend only on the frames of its window before it. Raster mode has no such state.
+  void start_independent_frame(uint64_t frame_index, uint32_t history_window);
 
  private:
   class Impl;

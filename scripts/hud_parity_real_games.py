@@ -5,16 +5,22 @@
 (--classify-debug) and glpt's path-traced mode (defaults) - and, per frame, finds the pixels
 whose colour comes from an overlay draw alone (tinted white: (raster + 255) / 2 within 2 levels)
 and from the sky alone (tinted light blue), and counts how many of them the path-traced frame
-has exactly as Mesa has them. Blended HUD edges over the world are not counted (the world under
-them is traced: it differs by design). Prints a markdown table per trace.
+has exactly as Mesa has them, and exactly as glpt's raster mode has them (where raster mode
+itself differs from Mesa, path tracing must leave the pixel as raster mode draws it). Blended HUD
+edges over the world are not counted (the world under them is traced: it differs by design).
+Prints a markdown table per trace, with the lowest PSNR of raster mode against Mesa over the
+frames (inf: identical).
 
-  scripts/hud_parity_real_games.py --trace NAME=FILE [--trace ...] [--frames LIST]
-                                   [--replay PATH] [--work DIR] [--out FILE]
+  scripts/hud_parity_real_games.py --trace NAME=FILE [--trace ...] [--frames LIST] [--every N]
+                                   [--replay PATH] [--work DIR] [--reuse] [--out FILE]
+
+--reuse: compare the images an earlier run left in --work instead of replaying.
 
 --frames: glpt-replay's frame list (default 0-299 with --every 20). Needs a built glpt-replay
 (default build/replay/glpt-replay) with OSMesa.
 """
 import argparse
+import math
 import os
 import subprocess
 import sys
@@ -53,7 +59,7 @@ def compare_frame(paths):
     size = (w, h)
     stats = {}
     for kind, tint in TINTS.items():
-        pixels = equal = 0
+        pixels = equal = equal_raster = 0
         worst = 0
         for i in range(0, len(images["raster"]), 3):
             if not owned(images["raster"], images["debug"], tint, i):
@@ -61,10 +67,17 @@ def compare_frame(paths):
             pixels += 1
             diff = max(abs(images["path"][i + c] - images["mesa"][i + c]) for c in range(3))
             equal += diff == 0
+            equal_raster += images["path"][i:i + 3] == images["raster"][i:i + 3]
             worst = max(worst, diff)
-        stats[kind] = (pixels, equal, worst)
-    raster_equal = images["raster"] == images["mesa"]
-    return size, stats, raster_equal
+        stats[kind] = (pixels, equal, equal_raster, worst)
+    return size, stats, psnr(images["raster"], images["mesa"])
+
+
+def psnr(a, b):
+    squares = sum((x - y) * (x - y) for x, y in zip(a, b))
+    if squares == 0:
+        return math.inf
+    return 10.0 * math.log10(255.0 * 255.0 * len(a) / squares)
 
 
 def main():
@@ -76,13 +89,15 @@ def main():
     parser.add_argument("--replay", default=os.path.join(here, "..", "build", "replay",
                                                          "glpt-replay"))
     parser.add_argument("--work", default=None)
+    parser.add_argument("--reuse", action="store_true")
     parser.add_argument("--out", default=None, help="also write the table to FILE")
     args = parser.parse_args()
     work = args.work or tempfile.mkdtemp(prefix="glpt-hud.")
     lines = ["command: " + " ".join([os.path.relpath(sys.argv[0])] + sys.argv[1:]), "",
-             "| program | frames | raster = Mesa | overlay pixels | path = Mesa there | max diff "
-             "| sky pixels | path = Mesa there | max diff |",
-             "|---|---|---|---|---|---|---|---|---|"]
+             "| program | frames | raster vs Mesa, lowest PSNR | overlay pixels | path = Mesa there "
+             "| path = raster there | max diff to Mesa | sky pixels | path = Mesa there "
+             "| path = raster there | max diff to Mesa |",
+             "|---|---|---|---|---|---|---|---|---|---|---|"]
     print(lines[0], flush=True)
     for spec in args.trace:
         name, _, trace = spec.partition("=")
@@ -92,31 +107,35 @@ def main():
         runs = {"mesa": ["--backend", "mesa"], "raster": ["--mode", "raster"],
                 "debug": ["--mode", "raster", "--classify-debug"], "path": ["--mode", "path"]}
         for kind, extra in runs.items():
+            if args.reuse and os.path.isdir(dirs[kind]):
+                continue
             print(f"  {name}: replaying ({kind})", file=sys.stderr, flush=True)
             replay(args.replay, trace, dirs[kind], args.frames, args.every, extra)
         frames = sorted(f for f in os.listdir(dirs["mesa"]) if f.endswith(".png"))
-        totals = {k: [0, 0, 0] for k in TINTS}
-        raster_equal = 0
+        totals = {k: [0, 0, 0, 0] for k in TINTS}
+        lowest_psnr = math.inf
         for frame in frames:
             paths = {k: os.path.join(d, frame) for k, d in dirs.items()}
             if not all(os.path.isfile(p) for p in paths.values()):
                 sys.exit(f"hud_parity: {frame} missing in one of {work}/{name}/*")
-            _, stats, same = compare_frame(paths)
-            raster_equal += same
-            for kind, (pixels, equal, worst) in stats.items():
+            _, stats, raster_psnr = compare_frame(paths)
+            lowest_psnr = min(lowest_psnr, raster_psnr)
+            for kind, (pixels, equal, equal_raster, worst) in stats.items():
                 totals[kind][0] += pixels
                 totals[kind][1] += equal
-                totals[kind][2] = max(totals[kind][2], worst)
+                totals[kind][2] += equal_raster
+                totals[kind][3] = max(totals[kind][3], worst)
             print(f"  {name} {frame}: overlay {stats['overlay'][1]}/{stats['overlay'][0]} "
                   f"sky {stats['sky'][1]}/{stats['sky'][0]}", file=sys.stderr, flush=True)
 
         def share(kind):
-            pixels, equal, worst = totals[kind]
+            pixels, equal, equal_raster, worst = totals[kind]
             if pixels == 0:
-                return "0 | - | -"
-            return f"{pixels} | {100.0 * equal / pixels:.2f} % | {worst}"
+                return "0 | - | - | -"
+            return (f"{pixels} | {100.0 * equal / pixels:.2f} % | "
+                    f"{100.0 * equal_raster / pixels:.2f} % | {worst}")
 
-        lines.append(f"| {name} | {len(frames)} | {raster_equal} of {len(frames)} | "
+        lines.append(f"| {name} | {len(frames)} | {lowest_psnr:.1f} dB | "
                      f"{share('overlay')} | {share('sky')} |")
         print(lines[-1], flush=True)
     print(f"images: {work}", file=sys.stderr)

@@ -147,8 +147,11 @@ void PathTracer::forget_previous_frame() noexcept {
   denoiser_.forget_history();
 }
 
-void PathTracer::start_independent_frame(uint64_t frame_index) noexcept {
-  forget_previous_frame();
+void PathTracer::start_independent_frame(uint64_t frame_index, uint32_t history_window) noexcept {
+  if (seeded_by_frame_index_ && frame_index == seed_frame_index_) return;  // the same frame
+  const bool continues = seeded_by_frame_index_ && history_window > 1 &&
+                         frame_index == seed_frame_index_ + 1 && frame_index % history_window != 0;
+  if (!continues) forget_previous_frame();
   seeded_by_frame_index_ = true;
   seed_frame_index_ = frame_index;
 }

@@ -73,11 +73,13 @@ class PathTracer {
   bool holds_geometry(uint64_t shape_hash, uint64_t shading_hash) const {
     return blas_cache_.holds(shape_hash, shading_hash);
   }
-  // A frame that must not depend on the frames rendered before it (glpt-replay's shards render
-  // every nth frame and must give the same pixels as a whole replay): accumulation restarts and
-  // the random sequence of this and the following records is seeded by `frame_index` instead of
-  // the tracer's own count of frames.
-  void start_independent_frame(uint64_t frame_index) noexcept;
+  // glpt-replay's frame `frame_index` starts (its shards must give the same pixels as a whole
+  // replay): the random sequence of this and the following records is seeded by `frame_index`
+  // instead of the tracer's own count of frames, and the frame builds on the history (denoiser,
+  // accumulation) of the frames before it only within its window of `history_window` frames
+  // (windows start at frame 0, W, 2W...; 0 or 1: every frame starts afresh) and only when the
+  // frame before it was the last one started. Starting the same frame again changes nothing.
+  void start_independent_frame(uint64_t frame_index, uint32_t history_window) noexcept;
 
  private:
   PathTracer(const RenderSettings& settings, std::shared_ptr<VulkanDevice> device);

@@ -48,6 +48,23 @@ TEST(FrameSelection, ShardsSplitTheChosenFramesByIndex) {
     EXPECT_FALSE(s.parse_shard(bad, &error)) << bad;
 }
 
+TEST(FrameSelection, HistoryWindowsGoWholeToOneShardWithTheFramesBeforeAWrittenOne) {
+  FrameSelection s;
+  std::string error;
+  ASSERT_TRUE(s.parse_frames("2,5,9-10,13", &error)) << error;
+  ASSERT_TRUE(s.parse_shard("1/2", &error)) << error;
+  s.set_history_window(4);
+  std::vector<uint64_t> written, rendered;
+  for (uint64_t f = 0; f < 20; ++f) {
+    if (s.written(f)) written.push_back(f);
+    if (s.rendered(f)) rendered.push_back(f);
+  }
+  // Windows 1 (4-7) and 3 (12-15) are shard 1's; frames after the last written one of a window
+  // are not rendered.
+  EXPECT_EQ(written, (std::vector<uint64_t>{5, 13}));
+  EXPECT_EQ(rendered, (std::vector<uint64_t>{4, 5, 12, 13}));
+}
+
 TEST(CommandLine, QualityFlagsBecomeTheRenderersVariables) {
   Options o;
   std::string error;
@@ -62,8 +79,8 @@ TEST(CommandLine, QualityFlagsBecomeTheRenderersVariables) {
 
   // The same table as `glpt run`: the light-transport knobs and the reference.
   Options knobs;
-  ASSERT_TRUE(parse({"--shadows", "0", "--bounces", "0", "--ao=0", "--reference", "256",
-                     "--unlit", "ao", "--quiet", "x.trace"},
+  ASSERT_TRUE(parse({"--shadows", "0", "--bounces", "0", "--ao=0", "--reference", "256", "--unlit",
+                     "ao", "--quiet", "x.trace"},
                     &knobs, &error))
       << error;
   EXPECT_TRUE(knobs.quiet);  // glpt-replay's own --quiet, not GLPT_QUIET
@@ -73,6 +90,19 @@ TEST(CommandLine, QualityFlagsBecomeTheRenderersVariables) {
                                     {"GLPT_REFERENCE", "256"},
                                     {"GLPT_UNLIT", "ao"}}));
   EXPECT_NE(glpt::replay::usage().find("--reference N"), std::string::npos);
+
+  // The history window: --history, else none for raster mode and Mesa, else the default.
+  using glpt::replay::history_window_of;
+  Options window;
+  ASSERT_TRUE(parse({"--history", "3", "x.trace"}, &window, &error)) << error;
+  EXPECT_EQ(history_window_of(window, "raster"), 3u);
+  Options plain;
+  ASSERT_TRUE(parse({"x.trace"}, &plain, &error)) << error;
+  EXPECT_EQ(history_window_of(plain, "raster"), 1u);
+  EXPECT_EQ(history_window_of(plain, nullptr), glpt::replay::kDefaultHistoryWindow);
+  Options mesa;
+  ASSERT_TRUE(parse({"--backend", "mesa", "x.trace"}, &mesa, &error)) << error;
+  EXPECT_EQ(history_window_of(mesa, "path"), 1u);
   EXPECT_EQ(glpt::replay::usage().find("%QUALITY_FLAGS%"), std::string::npos);
 }
 
@@ -86,6 +116,8 @@ TEST(CommandLine, BadUsageIsRejected) {
       {"--every", "0", "a.trace"},
       {"--frames", "x", "a.trace"},
       {"--shard", "2/2", "a.trace"},
+      {"--history", "0", "a.trace"},
+      {"--history", "1025", "a.trace"},
       {"--bogus", "a.trace"},
       {"a.trace", "--out"},  // missing value
       {"--quiet=1", "a.trace"},

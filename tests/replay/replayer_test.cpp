@@ -15,6 +15,7 @@
 #include "gl_shim/context.hpp"
 #include "gl_shim/dispatch.hpp"
 #include "replay/backend.hpp"
+#include "replay/frame_selection.hpp"
 #include "tests/replay/call_builder.hpp"
 
 namespace {
@@ -30,17 +31,24 @@ constexpr uint64_t kDisplay = 0x5500, kVisual = 0x5600, kContext = 0x1000, kWind
 // A backend and a replayer that keeps every rendered frame.
 class Session {
  public:
-  explicit Session(const std::string& backend, Replayer::WantFrame want = nullptr) {
+  // `want`: the frames rendered (all without it); `write`: those of them kept in `frames` (all
+  // rendered ones without it); `history_window`: Backend::set_history_window.
+  explicit Session(const std::string& backend, Replayer::WantFrame want = nullptr,
+                   Replayer::WantFrame write = nullptr, uint32_t history_window = 1) {
     std::string error;
     backend_ = backend == "mesa" ? glpt::replay::create_mesa_backend(&error)
                                  : glpt::replay::create_glpt_backend(&error);
     EXPECT_TRUE(backend_) << error;
+    if (!backend_) return;
+    backend_->set_history_window(history_window);
     if (!want) want = [](uint64_t) { return true; };
     replayer_ = std::make_unique<Replayer>(
-        *backend_, std::move(want), [this](uint64_t frame, const FrameImage& image, std::string*) {
+        *backend_, std::move(want),
+        [this](uint64_t frame, const FrameImage& image, std::string*) {
           frames[frame] = image;
           return true;
-        });
+        },
+        std::move(write));
   }
   void replay(const trace::Call& call) {
     std::string error;
@@ -395,6 +403,63 @@ TEST(ReplayShards, PathTracedFramesDoNotDependOnTheFramesRenderedBefore) {
   EXPECT_TRUE(shard.frames[1].rgba == whole.frames[1].rgba);
   EXPECT_TRUE(shard.frames[3].rgba == whole.frames[3].rgba);
   EXPECT_EQ(shard.replayer().counts().frames_rendered, 2u);
+}
+
+// lit_frame with the card moved by `f` tenths of a unit: the denoiser reprojects its history.
+void moving_lit_frame(Session& s, CallBuilder& b, int f) {
+  s.replay(b.call("glClear", {uintv(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT)}));
+  s.replay(b.call("glBegin", {enumv(GL_QUADS)}));
+  s.replay(b.call("glNormal3f", {real(0), real(1), real(0)}));
+  const double x = 0.1 * f;
+  for (const auto& [vx, vy, vz] : std::vector<std::array<double, 3>>{{-4, -1, -2},
+                                                                     {4, -1, -2},
+                                                                     {4, -1, -9},
+                                                                     {-4, -1, -9},
+                                                                     {x - 0.5, 0, -3.5},
+                                                                     {x + 0.5, 0, -3.5},
+                                                                     {x + 0.5, 0, -4.5},
+                                                                     {x - 0.5, 0, -4.5}})
+    s.replay(b.call("glVertex3f", {real(vx), real(vy), real(vz)}));
+  s.replay(b.call("glEnd", {}));
+  s.replay(b.call("glXSwapBuffers", {pointer(1), uintv(4)}));
+}
+
+// With a history window, a frame builds on the denoiser's history of the frames of its window
+// before it: a shard takes whole windows and renders the frames of a written frame's window
+// before it, and writes exactly the frames one whole replay writes.
+TEST(ReplayShards, FramesBuildOnTheHistoryOfTheirWindowAndShardsStillEqualOneReplay) {
+  setenv("GLPT_MODE", "path", 1);
+  setenv("GLPT_ACCUMULATE", "0", 1);
+  constexpr uint32_t kWindow = 4;
+  glpt::replay::FrameSelection selection;
+  std::string error;
+  ASSERT_TRUE(selection.parse_shard("1/2", &error)) << error;
+  ASSERT_TRUE(selection.parse_frames("2,6,9-10", &error)) << error;
+  selection.set_history_window(kWindow);
+  CallBuilder whole_calls, shard_calls, independent_calls;
+  Session whole("glpt", nullptr, nullptr, kWindow);
+  Session shard(
+      "glpt", [&](uint64_t f) { return selection.rendered(f); },
+      [&](uint64_t f) { return selection.written(f); }, kWindow);
+  Session independent("glpt");  // a window of 1: every frame starts afresh
+  for (Session* s : {&whole, &shard, &independent}) {
+    CallBuilder& b = s == &whole ? whole_calls : s == &shard ? shard_calls : independent_calls;
+    lit_scene(*s, b);
+    for (int f = 0; f < 12; ++f) moving_lit_frame(*s, b, f);
+  }
+  setenv("GLPT_MODE", "raster", 1);
+  unsetenv("GLPT_ACCUMULATE");
+  ASSERT_EQ(whole.frames.size(), 12u);
+  if (whole.frames[4].rgba == whole.frames[5].rgba)
+    GTEST_SKIP() << "frames differ by nothing random: no path tracing here";
+  // Shard 1 of 2 takes windows 1 (frames 4-7) and 3: it writes frame 6, rendering 4 and 5 for
+  // its history; frames 2, 9 and 10 are shard 0's.
+  ASSERT_EQ(shard.frames.size(), 1u);
+  EXPECT_TRUE(shard.frames[6].rgba == whole.frames[6].rgba);
+  EXPECT_EQ(shard.replayer().counts().frames_rendered, 3u);
+  // The history shows: frame 6 after 4 and 5 is not frame 6 alone; a window's first frame is.
+  EXPECT_FALSE(whole.frames[6].rgba == independent.frames[6].rgba);
+  EXPECT_TRUE(whole.frames[4].rgba == independent.frames[4].rgba);
 }
 
 // A frame that draws one more quad over the last without clearing (a program that builds its

@@ -11,7 +11,7 @@ namespace {
 
 constexpr GLint kIntMax = std::numeric_limits<GLint>::max();
 // GL 2.0 enums, which GL 1.5 does not accept.
-constexpr GLenum kBlendEquationAlpha = 0x883D;
+constexpr GLenum kMaxDrawBuffers = 0x8824;  // GL 2.0 draw buffers: glpt has one
 constexpr GLenum kCurrentProgram = 0x8B8D;  // GL 2.0 shader state: glpt has none
 
 std::vector<float> floats(GLenum pname, int n) {
@@ -122,7 +122,7 @@ TEST_F(GlTest, UnknownPnameIsInvalidEnumAndWritesNothing) {
   GLdouble d = 5;
   glGetIntegerv(0x1234, &i);
   EXPECT_EQ(error(), GLenum{GL_INVALID_ENUM});
-  glGetFloatv(kBlendEquationAlpha, &f);
+  glGetFloatv(kMaxDrawBuffers, &f);
   EXPECT_EQ(error(), GLenum{GL_INVALID_ENUM});
   glGetBooleanv(kCurrentProgram, &b);
   EXPECT_EQ(error(), GLenum{GL_INVALID_ENUM});
