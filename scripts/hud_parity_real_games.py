@@ -60,16 +60,19 @@ def compare_frame(paths):
     stats = {}
     for kind, tint in TINTS.items():
         pixels = equal = equal_raster = 0
-        worst = 0
+        worst = worst_raster = 0
         for i in range(0, len(images["raster"]), 3):
             if not owned(images["raster"], images["debug"], tint, i):
                 continue
             pixels += 1
             diff = max(abs(images["path"][i + c] - images["mesa"][i + c]) for c in range(3))
             equal += diff == 0
-            equal_raster += images["path"][i:i + 3] == images["raster"][i:i + 3]
+            diff_raster = max(abs(images["path"][i + c] - images["raster"][i + c])
+                              for c in range(3))
+            equal_raster += diff_raster == 0
             worst = max(worst, diff)
-        stats[kind] = (pixels, equal, equal_raster, worst)
+            worst_raster = max(worst_raster, diff_raster)
+        stats[kind] = (pixels, equal, equal_raster, worst, worst_raster)
     return size, stats, psnr(images["raster"], images["mesa"])
 
 
@@ -95,8 +98,8 @@ def main():
     work = args.work or tempfile.mkdtemp(prefix="glpt-hud.")
     lines = ["command: " + " ".join([os.path.relpath(sys.argv[0])] + sys.argv[1:]), "",
              "| program | frames | raster vs Mesa, lowest PSNR | overlay pixels | path = Mesa there "
-             "| path = raster there | max diff to Mesa | sky pixels | path = Mesa there "
-             "| path = raster there | max diff to Mesa |",
+             "| path = raster there | max diff to Mesa, to raster | sky pixels | path = Mesa there "
+             "| path = raster there | max diff to Mesa, to raster |",
              "|---|---|---|---|---|---|---|---|---|---|---|"]
     print(lines[0], flush=True)
     for spec in args.trace:
@@ -112,7 +115,7 @@ def main():
             print(f"  {name}: replaying ({kind})", file=sys.stderr, flush=True)
             replay(args.replay, trace, dirs[kind], args.frames, args.every, extra)
         frames = sorted(f for f in os.listdir(dirs["mesa"]) if f.endswith(".png"))
-        totals = {k: [0, 0, 0, 0] for k in TINTS}
+        totals = {k: [0, 0, 0, 0, 0] for k in TINTS}
         lowest_psnr = math.inf
         for frame in frames:
             paths = {k: os.path.join(d, frame) for k, d in dirs.items()}
@@ -120,20 +123,21 @@ def main():
                 sys.exit(f"hud_parity: {frame} missing in one of {work}/{name}/*")
             _, stats, raster_psnr = compare_frame(paths)
             lowest_psnr = min(lowest_psnr, raster_psnr)
-            for kind, (pixels, equal, equal_raster, worst) in stats.items():
+            for kind, (pixels, equal, equal_raster, worst, worst_raster) in stats.items():
                 totals[kind][0] += pixels
                 totals[kind][1] += equal
                 totals[kind][2] += equal_raster
                 totals[kind][3] = max(totals[kind][3], worst)
+                totals[kind][4] = max(totals[kind][4], worst_raster)
             print(f"  {name} {frame}: overlay {stats['overlay'][1]}/{stats['overlay'][0]} "
                   f"sky {stats['sky'][1]}/{stats['sky'][0]}", file=sys.stderr, flush=True)
 
         def share(kind):
-            pixels, equal, equal_raster, worst = totals[kind]
+            pixels, equal, equal_raster, worst, worst_raster = totals[kind]
             if pixels == 0:
                 return "0 | - | - | -"
             return (f"{pixels} | {100.0 * equal / pixels:.2f} % | "
-                    f"{100.0 * equal_raster / pixels:.2f} % | {worst}")
+                    f"{100.0 * equal_raster / pixels:.2f} % | {worst}, {worst_raster}")
 
         lines.append(f"| {name} | {len(frames)} | {lowest_psnr:.1f} dB | "
                      f"{share('overlay')} | {share('sky')} |")
