@@ -495,6 +495,15 @@ vec4 sample_unit(uint u) {
       if (u == 2u) return textureLod(u_tex1d_2, c.x, lod);
       return textureLod(u_tex1d_3, c.x, lod);
     }
+    if (target == 2u && (S.tex_mode[u].y & GLPT_TEX_ANISOTROPIC) != 0u) {
+      // gallivm filters anisotropically only from implicit derivatives (explicit lods and
+      // gradients sample isotropically): lavapipe's own, whose quad rows are not Mesa's
+      // (quad_derivatives), so on a grazing surface about 1% of pixels pick other texels.
+      if (u == 0u) return texture(u_tex2d_0, c.xy);
+      if (u == 1u) return texture(u_tex2d_1, c.xy);
+      if (u == 2u) return texture(u_tex2d_2, c.xy);
+      return texture(u_tex2d_3, c.xy);
+    }
     if (target == 2u) {
       if (u == 0u) return textureLod(u_tex2d_0, c.xy, lod);
       if (u == 1u) return textureLod(u_tex2d_1, c.xy, lod);

@@ -241,6 +241,9 @@ struct RasterState {
 #define GLPT_TEX_APPLY_MIN_LOD 32u
 #define GLPT_TEX_APPLY_MAX_LOD 64u
 #define GLPT_TEX_MIN_MAX_LOD_EQUAL 128u
+// EXT_texture_filter_anisotropic on the unit's sampler: the lookup takes implicit derivatives (the
+// only ones gallivm filters anisotropically) instead of Mesa's explicit lod.
+#define GLPT_TEX_ANISOTROPIC 256u
 
 struct RasterPushConstants {
   uvec4 indices;  // x: state index, y: first edge-mask word of an unfilled draw

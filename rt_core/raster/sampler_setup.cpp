@@ -130,6 +130,8 @@ SamplerSetup make_sampler_setup(const rec::TextureObjectSnapshot& t, float unit_
     out.max_lod = std::clamp(s.max_lod, out.min_lod, 0.25f);
   }
   out.border = border_color_of(s.border_color, t.base_format, t.texel_format);
+  const float anisotropy = std::floor(s.max_anisotropy);
+  if (anisotropy > 1.0f) out.max_anisotropy = anisotropy;
   return out;
 }
 
@@ -155,6 +157,7 @@ void pack_texture_unit(const rec::TextureUnitState& unit, int u, gpu::RasterStat
   if (sh.mip_filter == 1) flags |= GLPT_TEX_MIP_NEAREST;
   if (sh.mip_filter == 2) flags |= GLPT_TEX_MIP_LINEAR;
   if (bias != 0.0f) flags |= GLPT_TEX_LOD_BIAS;
+  if (setup.max_anisotropy > 1.0f) flags |= GLPT_TEX_ANISOTROPIC;
   if (sh.mip_filter != 0 || sh.min_linear != sh.mag_linear) {
     if (min_lod == max_lod) {
       flags |= GLPT_TEX_MIN_MAX_LOD_EQUAL;

@@ -43,6 +43,10 @@ struct SamplerSetup {
   VkSamplerAddressMode address[3] = {VK_SAMPLER_ADDRESS_MODE_REPEAT, VK_SAMPLER_ADDRESS_MODE_REPEAT,
                                      VK_SAMPLER_ADDRESS_MODE_REPEAT};
   float min_lod = 0.0f, max_lod = 0.0f, lod_bias = 0.0f;
+  // EXT_texture_filter_anisotropic: above 1, the most texels gallivm's anisotropic filter takes
+  // along the axis of anisotropy; st/mesa passes the whole part of GL_TEXTURE_MAX_ANISOTROPY_EXT
+  // (st_convert_sampler), so 1.9 filters isotropically. 0: off.
+  float max_anisotropy = 0.0f;
   // The border colour as the sampler returns it: in the texel layout of rec::TexelFormat
   // (st_translate_color's per-base-format mapping) and clamped to the format's range.
   glm::vec4 border{0.0f};

@@ -37,7 +37,7 @@ size_t TextureCache::SamplerKeyHash::operator()(const SamplerSetup& key) const {
                             key.address[0], key.address[1], key.address[2]};
   h.add_bytes(enums, sizeof enums);
   const float values[] = {key.min_lod,  key.max_lod,  key.lod_bias, key.border.r,
-                          key.border.g, key.border.b, key.border.a};
+                          key.border.g, key.border.b, key.border.a, key.max_anisotropy};
   h.add_bytes(values, sizeof values);
   return static_cast<size_t>(h.value());
 }
@@ -204,6 +204,10 @@ VkSampler TextureCache::sampler(const rec::TextureObjectSnapshot& texture, float
   info.mipLodBias = key.lod_bias;
   info.minLod = key.min_lod;
   info.maxLod = key.max_lod;
+  if (key.max_anisotropy > 1.0f && device_.max_sampler_anisotropy() > 1.0f) {
+    info.anisotropyEnable = VK_TRUE;
+    info.maxAnisotropy = std::min(key.max_anisotropy, device_.max_sampler_anisotropy());
+  }
   info.borderColor = VK_BORDER_COLOR_FLOAT_CUSTOM_EXT;
   VkSampler sampler = VK_NULL_HANDLE;
   GLPT_VK_CHECK(vkCreateSampler(device_.handle(), &info, nullptr, &sampler));

@@ -33,6 +33,20 @@ bool same_matrix(const glm::mat4& a, const glm::mat4& b) {
   return std::memcmp(&a, &b, sizeof a) == 0;
 }
 
+// Whether a draw's fragments mix with what is under them. Programs often leave GL_BLEND on and
+// draw their opaque world with GL_ONE, GL_ZERO (colour and alpha, GL_FUNC_ADD or
+// GL_FUNC_SUBTRACT), or a colour logic op of GL_COPY: that writes the fragment as it is.
+bool mixes_with_destination(const rec::FragmentOpsState& ops) {
+  const auto replaces = [](uint32_t equation, uint32_t source, uint32_t destination) {
+    return (equation == GL_FUNC_ADD || equation == GL_FUNC_SUBTRACT) && source == GL_ONE &&
+           destination == GL_ZERO;
+  };
+  if (ops.color_logic_op) return ops.logic_op != GL_COPY;
+  return ops.blend &&
+         !(replaces(ops.blend_equation_rgb, ops.blend_src_rgb, ops.blend_dst_rgb) &&
+           replaces(ops.blend_equation_alpha, ops.blend_src_alpha, ops.blend_dst_alpha));
+}
+
 // Everything about a draw that makes it traceable except its camera.
 DrawClass classify_ignoring_camera(const rec::Draw& draw, const rec::StateSnapshot& state,
                                    const rec::DrawableConfig& drawable) {
@@ -43,7 +57,7 @@ DrawClass classify_ignoring_camera(const rec::Draw& draw, const rec::StateSnapsh
   if (primitive.polygon_mode_front != GL_FILL || primitive.polygon_mode_back != GL_FILL)
     return DrawClass::kUnfilled;
   const rec::FragmentOpsState& ops = state.raster->ops;
-  if (ops.blend || ops.color_logic_op) return DrawClass::kBlended;
+  if (mixes_with_destination(ops)) return DrawClass::kBlended;
   const bool all_channels =
       ops.color_write[0] && ops.color_write[1] && ops.color_write[2] && ops.color_write[3];
   if (!all_channels ||
@@ -510,7 +524,7 @@ void classify_frame(const rec::FrameRecord& record, const rec::DrawableConfig& d
       if (draw == nullptr) continue;
       const rec::StateSnapshot& state = record.states[draw->state];
       const rec::VertexData& v = *draw->vertices;
-      const bool blended = state.raster->ops.blend;
+      const bool blended = mixes_with_destination(state.raster->ops);
       bool candidate = false;
       size_t count = 0;
       if (blended && is_perspective_projection(state.transform->projection)) {
@@ -568,7 +582,7 @@ void classify_frame(const rec::FrameRecord& record, const rec::DrawableConfig& d
     DrawClass& cls = out.classes[i];
     const bool triangles = rec::primitive_class(v.mode) == rec::PrimitiveClass::kTriangles;
     const bool perspective = is_perspective_projection(transform.projection);
-    const bool blended = ops.blend || ops.color_logic_op;
+    const bool blended = mixes_with_destination(ops);
     auto set = [&](DrawKind kind, DrawClass render) {
       label.kind = kind;
       cls = render;

@@ -89,6 +89,9 @@ class VulkanDevice {
   bool has_ray_query() const { return ray_query_; }
   const std::string& ray_query_missing() const { return ray_query_missing_; }
   bool has_geometry_shader() const { return geometry_shader_; }
+  // maxSamplerAnisotropy where samplerAnisotropy is enabled, else 0 (EXT_texture_filter_anisotropic
+  // then filters isotropically).
+  float max_sampler_anisotropy() const { return max_sampler_anisotropy_; }
   bool has_smooth_lines() const { return smooth_lines_; }
   // Blend enable, equations and factors, colour write masks and the logic op set per draw
   // (VK_EXT_extended_dynamic_state3 and _2's logic op): one pipeline serves every blend state.
@@ -191,6 +194,7 @@ class VulkanDevice {
   bool ray_query_ = false;
   std::string ray_query_missing_;
   bool geometry_shader_ = false;
+  float max_sampler_anisotropy_ = 0.0f;
   bool smooth_lines_ = false;
   bool precise_occlusion_queries_ = false;
   bool external_host_memory_ = false;

@@ -327,4 +327,40 @@ GLPT_SCENE(texture_sampling_mipmapped_clamp_bias, 64, 64) {
   receding_floor(-1, 0, 2, 6);
 }
 
+// EXT_texture_filter_anisotropic: a floor receding at a grazing angle, trilinear with at most 4
+// texels along the axis of anisotropy (as trigger-rally sets every texture), Mesa sampling it
+// with gallivm's anisotropic filter, as lavapipe does.
+GLPT_SCENE_TOLERANCE(texture_sampling_anisotropic, 64, 64,
+                     glpt::conformance::relaxed(0.985, 2,
+                                                "gallivm filters anisotropically from implicit "
+                                                "derivatives only, and lavapipe's take other "
+                                                "quad rows than llvmpipe's under GL: about 1% "
+                                                "of a grazing floor's pixels differ")) {
+  clear(0.3f, 0.5f, 0.7f);
+  new_texture(GL_TEXTURE_2D, GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR);
+  coloured_levels(GL_TEXTURE_2D, 32);
+  glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY_EXT, 4.0f);
+  glEnable(GL_TEXTURE_2D);
+  receding_floor(0, 0, 6, 12);
+}
+
+// Anisotropy 2.5 (Mesa keeps the whole part: 2) on a mipmapped nearest texture, and 16.
+GLPT_SCENE(texture_sampling_anisotropic_nearest, 64, 64) {
+  clear(0.3f, 0.5f, 0.7f);
+  new_texture(GL_TEXTURE_2D, GL_NEAREST_MIPMAP_NEAREST, GL_NEAREST);
+  coloured_levels(GL_TEXTURE_2D, 32);
+  glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY_EXT, 2.5f);
+  glEnable(GL_TEXTURE_2D);
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(0, 0, 32, 64);
+  receding_floor(0, 0, 6, 12);
+  glLoadIdentity();
+  glScissor(32, 0, 32, 64);
+  new_texture(GL_TEXTURE_2D, GL_LINEAR_MIPMAP_NEAREST, GL_LINEAR);
+  coloured_levels(GL_TEXTURE_2D, 32);
+  glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY_EXT, 16.0f);
+  receding_floor(0, 0, 6, 12);
+  glDisable(GL_SCISSOR_TEST);
+}
+
 }  // namespace
