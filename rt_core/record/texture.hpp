@@ -7,6 +7,7 @@
 #pragma once
 
 #include <array>
+#include <atomic>
 #include <cstdint>
 #include <glm/glm.hpp>
 #include <memory>
@@ -41,6 +42,20 @@ constexpr uint32_t texel_bytes(TexelFormat format) {
   return 4;
 }
 
+// A fact about an image's texels worked out on first use and kept with it (the image never
+// changes); a copy, which may be changed, starts without it.
+class CachedTexelFact {
+ public:
+  enum : uint8_t { kUnknown = 0, kFalse = 1, kTrue = 2 };
+  CachedTexelFact() = default;
+  CachedTexelFact(const CachedTexelFact&) {}
+  CachedTexelFact& operator=(const CachedTexelFact&) {
+    value.store(kUnknown, std::memory_order_relaxed);
+    return *this;
+  }
+  mutable std::atomic<uint8_t> value{kUnknown};
+};
+
 // One mipmap level of one face. GL texture borders are not stored: Mesa strips them when the
 // image is specified (its gallium drivers have no borders), and glpt does the same so both
 // sample the same texels.
@@ -57,6 +72,8 @@ struct TextureImage {
   // of `texels`, which hold the depth values. Only glGetTexImage reads them (sampling a
   // depth-stencil texture samples its depth); empty for every other format.
   std::vector<uint8_t> stencil;
+  // Whether every texel's alpha is 1 (rt::texels_are_opaque).
+  CachedTexelFact alpha_is_one;
 };
 
 struct SamplerState {

@@ -8,6 +8,7 @@
 #include "common/content_hash.hpp"
 #include "rt_core/raster/pipeline_key.hpp"
 #include "rt_core/record/decompose.hpp"
+#include "rt_core/scene/fragment_opacity.hpp"
 #include "rt_core/scene/light_setup.hpp"
 
 namespace glpt::rt {
@@ -47,6 +48,15 @@ bool mixes_with_destination(const rec::FragmentOpsState& ops) {
            replaces(ops.blend_equation_alpha, ops.blend_src_alpha, ops.blend_dst_alpha));
 }
 
+// Whether a draw shows what is under it: it mixes with the destination, and not merely through
+// blending of fragments that are all opaque (fragment_opacity.hpp).
+bool blends_visibly(const rec::Draw& draw, const rec::StateSnapshot& state) {
+  const rec::FragmentOpsState& ops = state.raster->ops;
+  if (!mixes_with_destination(ops)) return false;
+  if (ops.color_logic_op) return true;
+  return !(blending_keeps_an_opaque_fragment(ops) && fragments_are_opaque(draw, state));
+}
+
 // Everything about a draw that makes it traceable except its camera.
 DrawClass classify_ignoring_camera(const rec::Draw& draw, const rec::StateSnapshot& state,
                                    const rec::DrawableConfig& drawable) {
@@ -57,7 +67,7 @@ DrawClass classify_ignoring_camera(const rec::Draw& draw, const rec::StateSnapsh
   if (primitive.polygon_mode_front != GL_FILL || primitive.polygon_mode_back != GL_FILL)
     return DrawClass::kUnfilled;
   const rec::FragmentOpsState& ops = state.raster->ops;
-  if (mixes_with_destination(ops)) return DrawClass::kBlended;
+  if (blends_visibly(draw, state)) return DrawClass::kBlended;
   const bool all_channels =
       ops.color_write[0] && ops.color_write[1] && ops.color_write[2] && ops.color_write[3];
   if (!all_channels ||
@@ -524,7 +534,7 @@ void classify_frame(const rec::FrameRecord& record, const rec::DrawableConfig& d
       if (draw == nullptr) continue;
       const rec::StateSnapshot& state = record.states[draw->state];
       const rec::VertexData& v = *draw->vertices;
-      const bool blended = mixes_with_destination(state.raster->ops);
+      const bool blended = blends_visibly(*draw, state);
       bool candidate = false;
       size_t count = 0;
       if (blended && is_perspective_projection(state.transform->projection)) {
@@ -582,7 +592,7 @@ void classify_frame(const rec::FrameRecord& record, const rec::DrawableConfig& d
     DrawClass& cls = out.classes[i];
     const bool triangles = rec::primitive_class(v.mode) == rec::PrimitiveClass::kTriangles;
     const bool perspective = is_perspective_projection(transform.projection);
-    const bool blended = mixes_with_destination(ops);
+    const bool blended = blends_visibly(*draw, state);
     auto set = [&](DrawKind kind, DrawClass render) {
       label.kind = kind;
       cls = render;

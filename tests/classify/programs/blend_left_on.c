@@ -1,17 +1,36 @@
-/* blend_left_on: a program that never disables GL_BLEND (as trigger-rally does): its opaque
- * world is drawn with glBlendFunc(GL_ONE, GL_ZERO), which writes every fragment as it is, and a
- * crate with a colour logic op of GL_COPY (the same); its one translucent pane with
- * GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA; a glow with GL_ONE, GL_ONE (additive: it mixes). The
- * camera pans.
+/* blend_left_on: a program that never disables GL_BLEND (as trigger-rally and torcs do): its
+ * opaque world is drawn with glBlendFunc(GL_ONE, GL_ZERO), which writes every fragment as it is,
+ * and a crate with a colour logic op of GL_COPY (the same). Under GL_SRC_ALPHA,
+ * GL_ONE_MINUS_SRC_ALPHA: a lit barrel (material alpha 1) and a box textured with an RGBA
+ * checker whose texels all have alpha 255, modulated by a colour of alpha 1 (opaque: drawn as
+ * they are); a fence textured with a checker of opaque and clear texels, a box lit with a
+ * material of alpha 0.5, and a translucent pane (they show what is behind them); a glow with
+ * GL_ONE, GL_ONE (additive: it mixes). The camera pans.
  *
- * Labels: ground, two pillars and the crate `static`; the pane and the glow `blended`.
+ * Labels: ground, two pillars, the crate, the barrel and the textured box `static`; the fence,
+ * the glass box, the pane and the glow `blended`.
  */
 #include "../label_harness.h"
+
+static GLuint opaque_checker, fence_checker;
 
 static void setup(void) {
   glClearColor(0.5f, 0.6f, 0.75f, 1.0f);
   glEnable(GL_DEPTH_TEST);
-  glEnable(GL_BLEND);  /* and never off */
+  glEnable(GL_BLEND); /* and never off */
+  const GLubyte brown[4] = {150, 100, 50, 255}, tan[4] = {200, 170, 120, 255};
+  const GLubyte wire[4] = {90, 90, 90, 255}, hole[4] = {0, 0, 0, 0};
+  opaque_checker = lbl_checker_texture(16, 4, brown, tan);
+  fence_checker = lbl_checker_texture(16, 2, wire, hole);
+  glBindTexture(GL_TEXTURE_2D, 0);
+}
+
+static void box_at(const char* cls, const char* name, float x, float z, float h) {
+  glPushMatrix();
+  glTranslatef(x, h, z);
+  label(cls, name);
+  lbl_box(h, h, h);
+  glPopMatrix();
 }
 
 static void frame(int f) {
@@ -41,7 +60,26 @@ static void frame(int f) {
   lbl_box(0.4f, 0.4f, 0.4f);
   glPopMatrix();
   glDisable(GL_COLOR_LOGIC_OP);
+
+  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  const GLfloat solid[4] = {0.3f, 0.5f, 0.3f, 1.0f}, glass[4] = {0.6f, 0.8f, 0.9f, 0.5f};
+  glDisable(GL_COLOR_MATERIAL); /* the materials' own alpha, not the current colour's */
+  glMaterialfv(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE, solid);
+  box_at("static", "barrel", -1.5f, 1.5f, 0.35f);
+  glMaterialfv(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE, glass);
+  box_at("blended", "glass_box", 1.8f, 1.8f, 0.3f);
+  glEnable(GL_COLOR_MATERIAL);
   glDisable(GL_LIGHTING);
+  glEnable(GL_TEXTURE_2D);
+  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+  glColor4f(1.0f, 1.0f, 1.0f, 1.0f);
+  glBindTexture(GL_TEXTURE_2D, opaque_checker);
+  box_at("static", "textured_box", -0.6f, 2.5f, 0.3f);
+  glBindTexture(GL_TEXTURE_2D, fence_checker);
+  label("blended", "fence");
+  lbl_quad_xy(-4.0f, 0.0f, -1.0f, 1.2f, -1.0f);
+  glBindTexture(GL_TEXTURE_2D, 0);
+  glDisable(GL_TEXTURE_2D);
 
   glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
   glDepthMask(GL_FALSE);

@@ -1,0 +1,28 @@
+// Whether a draw's fragments are opaque whatever blending is on: programs of the GL 1.x era
+// often leave GL_BLEND enabled with GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA and draw opaque
+// surfaces through it, with an alpha of 1 in every vertex colour, material and texel. Such a
+// draw writes each fragment as it is, so path-traced mode traces it like an unblended one.
+#pragma once
+
+#include "rt_core/record/frame_record.hpp"
+#include "rt_core/record/texture.hpp"
+
+namespace glpt::rt {
+
+// Whether blending with `ops` writes a fragment of alpha 1 unchanged (colour and alpha): source
+// factor GL_ONE or GL_SRC_ALPHA (GL_SRC_ALPHA_SATURATE too for alpha), destination factor GL_ZERO
+// or GL_ONE_MINUS_SRC_ALPHA, equation GL_FUNC_ADD or GL_FUNC_SUBTRACT. Blending off: true.
+bool blending_keeps_an_opaque_fragment(const rec::FragmentOpsState& ops);
+
+// Whether every fragment `draw` produces has alpha 1 before blending: its primary alpha (vertex
+// colours, or with lighting the materials' diffuse alpha or the tracked vertex colours) and what
+// each enabled texture unit makes of it (the texture's texels, its environment). Conservative:
+// false wherever it cannot tell (GL_BLEND and GL_INTENSITY environments, combine functions other
+// than GL_REPLACE and GL_MODULATE, depth textures).
+bool fragments_are_opaque(const rec::Draw& draw, const rec::StateSnapshot& state);
+
+// Whether every texel of levels base..last of every face of `texture` has alpha 1. Computed once
+// per image and kept (images never change).
+bool texels_are_opaque(const rec::TextureObjectSnapshot& texture);
+
+}  // namespace glpt::rt
