@@ -627,8 +627,10 @@ TEST(ClassifyDraws, TracesOpaqueFilledTrianglesUnderTheMainCameraOnly) {
   b.transform.projection = glm::perspective(1.0f, 1.0f, 0.1f, 10.0f);
   b.clear(glm::vec4(0));
   b.quad({-1, -1, -3}, {2, 0, 0}, {0, 2, 0}, glm::vec4(1));  // 0 -> traced
-  b.raster.ops.blend = true;
-  b.quad({-1, -1, -3}, {2, 0, 0}, {0, 2, 0}, glm::vec4(1));  // blended
+  b.raster.ops.blend = true;  // GL's default factors (GL_ONE, GL_ZERO) would not mix
+  b.raster.ops.blend_src_rgb = b.raster.ops.blend_src_alpha = GL_SRC_ALPHA;
+  b.raster.ops.blend_dst_rgb = b.raster.ops.blend_dst_alpha = GL_ONE_MINUS_SRC_ALPHA;
+  b.quad({-1, -1, -3}, {2, 0, 0}, {0, 2, 0}, glm::vec4(1, 1, 1, 0.5f));  // blended (alpha 0.5)
   b.raster.ops.blend = false;
   b.draw(GL_LINES, {{0, 0, -3}, {1, 1, -3}}, {0, 0, 1}, glm::vec4(1));  // lines
   b.raster.primitive.polygon_mode_back = GL_LINE;
@@ -864,6 +866,11 @@ TEST_F(RenderTest, StatsCountTheDrawsOfEachClass) {
   b.quad({-1, -1, -4}, {1, 0, 0}, {0, 1, 0}, glm::vec4(1));
   b.quad({0, 0, -4}, {1, 0, 0}, {0, 1, 0}, glm::vec4(1));
   b.raster.ops.blend = true;
+  b.raster.ops.blend_src_rgb = b.raster.ops.blend_src_alpha = GL_SRC_ALPHA;
+  b.raster.ops.blend_dst_rgb = b.raster.ops.blend_dst_alpha = GL_ONE_MINUS_SRC_ALPHA;
+  // Unlit: its colour's alpha 0.5 reaches blending (lit, the material's alpha 1 would, and the
+  // quad would be opaque).
+  b.lighting.enabled = false;
   b.quad({-1, -1, -3}, {2, 0, 0}, {0, 2, 0}, glm::vec4(1, 1, 1, 0.5f));
   b.raster.ops.blend = false;
   b.draw(GL_LINES, {{0, 0, -3}, {1, 1, -3}}, {0, 0, 1}, glm::vec4(1));
