@@ -23,13 +23,21 @@ for f in bin/glpt bin/glpt-replay lib/glpt/libGL.so.1 lib/glpt/libEGL.so.1 \
 done
 # Nothing installed may point into the build tree (an RPATH, a shader path). Debug information
 # names the compile directory by design (RelWithDebInfo, Debug): it is read by debuggers only,
-# so ELF files are checked with their debug sections stripped.
+# so ELF files are checked with their debug sections stripped. Sanitizer builds also keep the
+# name of every instrumented source file outside the debug sections (ASan's global descriptors,
+# UBSan's source locations): for the sources generated into the build tree those name it too,
+# and like debug information they are only printed in reports, so names of source files
+# (*.c, *.cpp, *.h, ...) are not counted.
 names_build_tree() {
   local f=$1 copy=$work/stripped
   if [ "$(head -c4 "$f" | od -An -c | tr -d ' ')" = '177ELF' ]; then
-    objcopy --strip-debug "$f" "$copy" && f=$copy
+    objcopy --strip-debug "$f" "$copy"
+    local named
+    named=$(strings -a "$copy" | grep -F -- "$build" | grep -Ev '\.(c|cc|cpp|cxx|h|hh|hpp|inc)$' || true)
+    [ -n "$named" ]
+  else
+    grep -q -- "$build" "$f"
   fi
-  grep -q -- "$build" "$f"
 }
 leaks=()
 while IFS= read -r -d '' f; do

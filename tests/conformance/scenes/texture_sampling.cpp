@@ -364,3 +364,56 @@ GLPT_SCENE(texture_sampling_anisotropic_nearest, 64, 64) {
 }
 
 }  // namespace
+
+namespace {
+// `size` x `size` texels of fine detail and alpha stripes, with every mip level given.
+void detailed_levels(int size) {
+  for (int level = 0, s = size; s >= 1; ++level, s /= 2) {
+    std::vector<uint8_t> texels(static_cast<size_t>(s) * s * 4);
+    for (int y = 0; y < s; ++y)
+      for (int x = 0; x < s; ++x) {
+        const unsigned h = (static_cast<unsigned>(x * 7 + y * 13 + level * 5) * 2654435761u) >> 24;
+        uint8_t* t = &texels[(static_cast<size_t>(y) * s + x) * 4];
+        t[0] = t[1] = t[2] = static_cast<uint8_t>(h);
+        t[3] = static_cast<uint8_t>(((x / 3 + y / 5) & 1) ? 255 : 40);
+      }
+    glTexImage2D(GL_TEXTURE_2D, level, GL_RGBA8, s, s, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels.data());
+  }
+}
+}  // namespace
+
+// A glyph atlas as trigger-rally's HUD draws it (its numbers: a 1024x1024 atlas with its own mip
+// levels, trilinear, anisotropy 4, cells of 1/12 x 1/8 minified about 4.3 times under glOrtho in
+// a 640x480 viewport whose top row is the window's), blended over the clear colour.
+GLPT_SCENE(texture_sampling_minified_atlas_anisotropic, 256, 192) {
+  clear(0.3f, 0.5f, 0.7f);
+  new_texture(GL_TEXTURE_2D, GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR);
+  glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY_EXT, 4.0f);
+  detailed_levels(1024);
+  glEnable(GL_TEXTURE_2D);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  glViewport(0, -288, 640, 480);
+  glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
+  glOrtho(-1.333333333333333, 1.333333333333333, -1, 1, -1, 1);
+  glMatrixMode(GL_MODELVIEW);
+  glLoadIdentity();
+  glTranslatef(-1.266667f, 0.89f, 0);
+  glScalef(0.125f, 0.125f, 1);
+  glTranslatef(0, -1, 0);
+  for (int i = 0; i < 4; ++i) {
+    glBegin(GL_TRIANGLE_STRIP);
+    glTexCoord2f(0.3333333f, 0.375f);
+    glVertex2f(0, 0);
+    glTexCoord2f(0.4166667f, 0.375f);
+    glVertex2f(0.6666667f, 0);
+    glTexCoord2f(0.3333333f, 0.5f);
+    glVertex2f(0, 1);
+    glTexCoord2f(0.4166667f, 0.5f);
+    glVertex2f(0.6666667f, 1);
+    glEnd();
+    glTranslatef(0.6666667f, 0, 0);
+  }
+  glDisable(GL_BLEND);
+}
