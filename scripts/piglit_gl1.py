@@ -29,7 +29,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 GL1_GROUPS = r"^spec@!opengl 1\.[0-5]@"
 # piglit's groups for the extensions glpt advertises beyond GL 1.5's core (`--groups extensions`,
 # docs/piglit-extensions.md).
-EXTENSION_GROUPS = (r"^spec@(arb_point_sprite|arb_point_parameters|ext_stencil_wrap|"
+EXTENSION_GROUPS = (r"^spec@((arb_point_sprite|arb_point_parameters|ext_stencil_wrap|"
                     r"ext_texture_lod_bias|ext_packed_depth_stencil|arb_texture_env_crossbar|"
                     r"arb_texture_env_combine|ext_texture_env_combine|ext_blend_func_separate|"
                     r"ext_fog_coord|ext_secondary_color|arb_window_pos|arb_transpose_matrix|"
@@ -37,7 +37,9 @@ EXTENSION_GROUPS = (r"^spec@(arb_point_sprite|arb_point_parameters|ext_stencil_w
                     r"arb_texture_border_clamp|arb_texture_mirrored_repeat|arb_depth_texture|"
                     r"arb_shadow|arb_texture_cube_map|ext_blend_minmax|ext_blend_subtract|"
                     r"ext_blend_color|arb_occlusion_query|arb_vertex_buffer_object|"
-                    r"ext_compiled_vertex_array|ext_draw_range_elements|ext_multi_draw_arrays)@")
+                    r"ext_compiled_vertex_array|ext_draw_range_elements|ext_multi_draw_arrays)@|"
+                    # ARB_texture_non_power_of_two has no group of its own.
+                    r"!opengl 2\.0@tex3d-npot$)")
 
 
 def list_tests(groups, pattern):

@@ -105,6 +105,7 @@ ADVERTISED_GL_EXTENSIONS = [
     "GL_ARB_shadow", "GL_ARB_texture_border_clamp", "GL_ARB_texture_compression",
     "GL_ARB_texture_cube_map", "GL_ARB_texture_env_add", "GL_ARB_texture_env_combine",
     "GL_ARB_texture_env_crossbar", "GL_ARB_texture_env_dot3", "GL_ARB_texture_mirrored_repeat",
+    "GL_ARB_texture_non_power_of_two",
     "GL_ARB_texture_rectangle",
     "GL_ARB_transpose_matrix", "GL_ARB_vertex_buffer_object", "GL_ARB_window_pos",
     "GL_EXT_bgra", "GL_EXT_blend_color", "GL_EXT_blend_equation_separate",
