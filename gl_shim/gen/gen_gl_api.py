@@ -66,7 +66,7 @@ GL_EXTENSIONS = [
     "GL_EXT_blend_func_separate", "GL_EXT_blend_equation_separate", "GL_EXT_polygon_offset",
     "GL_EXT_texture3D", "GL_EXT_subtexture", "GL_EXT_copy_texture", "GL_EXT_compiled_vertex_array",
     "GL_EXT_draw_range_elements", "GL_EXT_multi_draw_arrays", "GL_EXT_fog_coord",
-    "GL_EXT_secondary_color", "GL_EXT_point_parameters",
+    "GL_EXT_secondary_color", "GL_EXT_point_parameters", "GL_EXT_stencil_two_side",
 ]
 # Enums only (these extensions add no commands, or only enums matter).
 GL_ENUM_ONLY_EXTENSIONS = [
@@ -115,7 +115,7 @@ ADVERTISED_GL_EXTENSIONS = [
     "GL_EXT_multi_draw_arrays", "GL_EXT_packed_depth_stencil", "GL_EXT_packed_pixels",
     "GL_EXT_point_parameters",
     "GL_EXT_rescale_normal", "GL_EXT_secondary_color", "GL_EXT_separate_specular_color",
-    "GL_EXT_shadow_funcs", "GL_EXT_stencil_wrap", "GL_EXT_subtexture", "GL_EXT_texture",
+    "GL_EXT_shadow_funcs", "GL_EXT_stencil_two_side", "GL_EXT_stencil_wrap", "GL_EXT_subtexture", "GL_EXT_texture",
     "GL_EXT_texture3D", "GL_EXT_texture_env_add", "GL_EXT_texture_env_combine",
     "GL_EXT_texture_env_dot3", "GL_EXT_texture_filter_anisotropic", "GL_EXT_texture_lod_bias",
     "GL_EXT_texture_object",

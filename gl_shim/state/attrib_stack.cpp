@@ -87,6 +87,7 @@ constexpr GLenum kEnableCaps[] = {
     GL_RESCALE_NORMAL,
     GL_SCISSOR_TEST,
     GL_STENCIL_TEST,
+    GL_STENCIL_TEST_TWO_SIDE_EXT,
     GL_MULTISAMPLE,
     GL_SAMPLE_ALPHA_TO_COVERAGE,
     GL_SAMPLE_ALPHA_TO_ONE,
@@ -291,6 +292,11 @@ void restore_stencil_buffer(Context& ctx, const AttribFrame& f) {
   o.stencil_depth_fail = s.stencil_depth_fail;
   o.stencil_depth_pass = s.stencil_depth_pass;
   o.stencil_write_mask = s.stencil_write_mask;
+  // EXT_stencil_two_side keeps its enable, the face selector and the back face in this group
+  // too, as Mesa does.
+  o.stencil_two_side = s.stencil_two_side;
+  o.stencil_back_selected = s.stencil_back_selected;
+  o.back_stencil = s.back_stencil;
   ctx.framebuffer.clear_stencil = f.framebuffer.clear_stencil;
 }
 

@@ -24,30 +24,18 @@ struct Cap {
 // subset's capabilities (colour tables, convolution, histogram, minmax) are not among them: Mesa
 // does not expose ARB_imaging and answers GL_INVALID_ENUM for them, as glpt does.
 constexpr Cap kCapList[] = {
-    {GL_INDEX_LOGIC_OP, false},
-    {GL_AUTO_NORMAL, false},
-    {GL_MAP1_COLOR_4, false},
-    {GL_MAP1_INDEX, false},
-    {GL_MAP1_NORMAL, false},
-    {GL_MAP1_TEXTURE_COORD_1, false},
-    {GL_MAP1_TEXTURE_COORD_2, false},
-    {GL_MAP1_TEXTURE_COORD_3, false},
-    {GL_MAP1_TEXTURE_COORD_4, false},
-    {GL_MAP1_VERTEX_3, false},
-    {GL_MAP1_VERTEX_4, false},
-    {GL_MAP2_COLOR_4, false},
-    {GL_MAP2_INDEX, false},
-    {GL_MAP2_NORMAL, false},
-    {GL_MAP2_TEXTURE_COORD_1, false},
-    {GL_MAP2_TEXTURE_COORD_2, false},
-    {GL_MAP2_TEXTURE_COORD_3, false},
-    {GL_MAP2_TEXTURE_COORD_4, false},
-    {GL_MAP2_VERTEX_3, false},
-    {GL_MAP2_VERTEX_4, false},
-    {GL_MULTISAMPLE, true},
-    {GL_SAMPLE_ALPHA_TO_COVERAGE, false},
-    {GL_SAMPLE_ALPHA_TO_ONE, false},
-    {GL_SAMPLE_COVERAGE, false},
+    {GL_INDEX_LOGIC_OP, false},       {GL_AUTO_NORMAL, false},
+    {GL_MAP1_COLOR_4, false},         {GL_MAP1_INDEX, false},
+    {GL_MAP1_NORMAL, false},          {GL_MAP1_TEXTURE_COORD_1, false},
+    {GL_MAP1_TEXTURE_COORD_2, false}, {GL_MAP1_TEXTURE_COORD_3, false},
+    {GL_MAP1_TEXTURE_COORD_4, false}, {GL_MAP1_VERTEX_3, false},
+    {GL_MAP1_VERTEX_4, false},        {GL_MAP2_COLOR_4, false},
+    {GL_MAP2_INDEX, false},           {GL_MAP2_NORMAL, false},
+    {GL_MAP2_TEXTURE_COORD_1, false}, {GL_MAP2_TEXTURE_COORD_2, false},
+    {GL_MAP2_TEXTURE_COORD_3, false}, {GL_MAP2_TEXTURE_COORD_4, false},
+    {GL_MAP2_VERTEX_3, false},        {GL_MAP2_VERTEX_4, false},
+    {GL_MULTISAMPLE, true},           {GL_SAMPLE_ALPHA_TO_COVERAGE, false},
+    {GL_SAMPLE_ALPHA_TO_ONE, false},  {GL_SAMPLE_COVERAGE, false},
 };
 constexpr auto kCaps = [] {
   std::array<Cap, std::size(kCapList)> caps{};
@@ -108,6 +96,8 @@ bool* flag_field(Context& ctx, GLenum cap) {
       return &f.alpha_test;
     case GL_STENCIL_TEST:
       return &f.stencil_test;
+    case GL_STENCIL_TEST_TWO_SIDE_EXT:
+      return &f.stencil_two_side;
     case GL_DEPTH_TEST:
       return &f.depth_test;
     case GL_BLEND:

@@ -137,6 +137,8 @@ bool lookup_fog(const Context& ctx, GLenum pname, Value* out) {
 // Per-fragment operations and framebuffer control (tables 6.19-6.21).
 bool lookup_fragment_ops(const Context& ctx, GLenum pname, Value* out) {
   const rec::FragmentOpsState& o = ctx.raster.ops;
+  const rec::StencilFaceState stencil =
+      o.stencil_back_selected ? o.back_stencil : o.front_stencil();
   switch (pname) {
     case GL_ALPHA_TEST_FUNC:
       *out = enums({o.alpha_func});
@@ -144,26 +146,29 @@ bool lookup_fragment_ops(const Context& ctx, GLenum pname, Value* out) {
     case GL_ALPHA_TEST_REF:  // an alpha value: integers get the colour mapping
       *out = number(o.alpha_ref, Kind::kColor);
       return true;
-    case GL_STENCIL_FUNC:
-      *out = enums({o.stencil_func});
+    case GL_STENCIL_FUNC:  // of the face EXT_stencil_two_side selects, as in Mesa
+      *out = enums({stencil.func});
       return true;
     case GL_STENCIL_REF:  // clamped to the stencil buffer's range when queried, as in Mesa
-      *out = number(std::clamp(o.stencil_ref, 0, (1 << kStencilBits) - 1), Kind::kInt);
+      *out = number(std::clamp(stencil.ref, 0, (1 << kStencilBits) - 1), Kind::kInt);
       return true;
     case GL_STENCIL_VALUE_MASK:  // unsigned: integer queries saturate at 2^31 - 1
-      *out = number(o.stencil_value_mask, Kind::kInt);
+      *out = number(stencil.value_mask, Kind::kInt);
       return true;
     case GL_STENCIL_WRITEMASK:
-      *out = number(o.stencil_write_mask, Kind::kInt);
+      *out = number(stencil.write_mask, Kind::kInt);
       return true;
     case GL_STENCIL_FAIL:
-      *out = enums({o.stencil_fail});
+      *out = enums({stencil.fail});
       return true;
     case GL_STENCIL_PASS_DEPTH_FAIL:
-      *out = enums({o.stencil_depth_fail});
+      *out = enums({stencil.depth_fail});
       return true;
     case GL_STENCIL_PASS_DEPTH_PASS:
-      *out = enums({o.stencil_depth_pass});
+      *out = enums({stencil.depth_pass});
+      return true;
+    case GL_ACTIVE_STENCIL_FACE_EXT:
+      *out = enums({o.stencil_back_selected ? GLenum{GL_BACK} : GLenum{GL_FRONT}});
       return true;
     case GL_BLEND_SRC:
     case GL_BLEND_SRC_RGB:

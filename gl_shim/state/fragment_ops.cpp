@@ -97,22 +97,47 @@ void glAlphaFunc(Context& ctx, GLenum func, GLfloat ref) {
 
 // The reference value is stored as given; GL clamps it to [0, 2^s - 1] (s: the stencil buffer's
 // bits) when it is used and when it is queried.
+// With EXT_stencil_two_side's back face selected, glStencilFunc/Op/Mask set the back face's state
+// only; otherwise the front face's (which back faces also use while two-sided stencil is off).
 void glStencilFunc(Context& ctx, GLenum func, GLint ref, GLuint mask) {
   if (!is_comparison(func)) return record_error(ctx, GL_INVALID_ENUM);
-  ctx.raster.ops.stencil_func = func;
-  ctx.raster.ops.stencil_ref = ref;
-  ctx.raster.ops.stencil_value_mask = mask;
+  rec::FragmentOpsState& ops = ctx.raster.ops;
+  if (ops.stencil_back_selected) {
+    ops.back_stencil.func = func;
+    ops.back_stencil.ref = ref;
+    ops.back_stencil.value_mask = mask;
+    return;
+  }
+  ops.stencil_func = func;
+  ops.stencil_ref = ref;
+  ops.stencil_value_mask = mask;
 }
 
 void glStencilOp(Context& ctx, GLenum fail, GLenum zfail, GLenum zpass) {
   if (!is_stencil_op(fail) || !is_stencil_op(zfail) || !is_stencil_op(zpass))
     return record_error(ctx, GL_INVALID_ENUM);
-  ctx.raster.ops.stencil_fail = fail;
-  ctx.raster.ops.stencil_depth_fail = zfail;
-  ctx.raster.ops.stencil_depth_pass = zpass;
+  rec::FragmentOpsState& ops = ctx.raster.ops;
+  if (ops.stencil_back_selected) {
+    ops.back_stencil.fail = fail;
+    ops.back_stencil.depth_fail = zfail;
+    ops.back_stencil.depth_pass = zpass;
+    return;
+  }
+  ops.stencil_fail = fail;
+  ops.stencil_depth_fail = zfail;
+  ops.stencil_depth_pass = zpass;
 }
 
-void glStencilMask(Context& ctx, GLuint mask) { ctx.raster.ops.stencil_write_mask = mask; }
+void glStencilMask(Context& ctx, GLuint mask) {
+  rec::FragmentOpsState& ops = ctx.raster.ops;
+  (ops.stencil_back_selected ? ops.back_stencil.write_mask : ops.stencil_write_mask) = mask;
+}
+
+// EXT_stencil_two_side: which face glStencilFunc/Op/Mask set and stencil queries report.
+void glActiveStencilFaceEXT(Context& ctx, GLenum face) {
+  if (face != GL_FRONT && face != GL_BACK) return record_error(ctx, GL_INVALID_ENUM);
+  ctx.raster.ops.stencil_back_selected = face == GL_BACK;
+}
 
 void glBlendFunc(Context& ctx, GLenum sfactor, GLenum dfactor) {
   blend_func(ctx, sfactor, dfactor, sfactor, dfactor);

@@ -482,6 +482,21 @@ DrawSetup make_draw_setup(const rec::StateSnapshot& state, const DrawContext& co
   d.stencil_write_mask = ops.stencil_write_mask & stencil_max;
   d.stencil_reference = static_cast<uint32_t>(
       std::clamp<int32_t>(ops.stencil_ref, 0, static_cast<int32_t>(stencil_max)));
+  // Only polygons have a back face (points, lines and pixel rectangles are front-facing in GL as
+  // in Vulkan). Unfilled polygons are expanded into their edges by the geometry stage, whose
+  // triangles do not keep the polygon's facing: they use the front face's state.
+  if (ops.stencil_two_side && triangles && !unfilled) {
+    const rec::StencilFaceState& back = ops.back_stencil;
+    d.separate_back_stencil = true;
+    d.back_stencil.fail = stencil_op(back.fail);
+    d.back_stencil.depth_fail = stencil_op(back.depth_fail);
+    d.back_stencil.pass = stencil_op(back.depth_pass);
+    d.back_stencil.compare = compare_op(back.func);
+    d.back_stencil.compare_mask = back.value_mask & stencil_max;
+    d.back_stencil.write_mask = back.write_mask & stencil_max;
+    d.back_stencil.reference =
+        static_cast<uint32_t>(std::clamp<int32_t>(back.ref, 0, static_cast<int32_t>(stencil_max)));
+  }
   if (triangles && !unfilled) {
     d.depth_bias = mode == GL_FILL   ? prim.offset_fill
                    : mode == GL_LINE ? prim.offset_line

@@ -51,6 +51,15 @@ struct PipelineKeyHash {
   size_t operator()(const PipelineKey& key) const;
 };
 
+// One face's stencil state, as Vulkan takes it.
+struct StencilFaceOps {
+  VkStencilOp fail = VK_STENCIL_OP_KEEP, depth_fail = VK_STENCIL_OP_KEEP, pass = VK_STENCIL_OP_KEEP;
+  VkCompareOp compare = VK_COMPARE_OP_ALWAYS;
+  uint32_t compare_mask = 0xFF, write_mask = 0xFF, reference = 0;
+
+  bool operator==(const StencilFaceOps&) const = default;
+};
+
 // Per-draw state that is dynamic in every pipeline.
 struct DynamicDrawState {
   VkCullModeFlags cull = VK_CULL_MODE_NONE;
@@ -62,6 +71,10 @@ struct DynamicDrawState {
               stencil_pass = VK_STENCIL_OP_KEEP;
   VkCompareOp stencil_compare = VK_COMPARE_OP_ALWAYS;
   uint32_t stencil_compare_mask = 0xFF, stencil_write_mask = 0xFF, stencil_reference = 0;
+  // EXT_stencil_two_side: back-facing polygons use back_stencil; otherwise both faces use the
+  // fields above.
+  bool separate_back_stencil = false;
+  StencilFaceOps back_stencil;
   bool depth_bias = false;
   float depth_bias_constant = 0.0f, depth_bias_slope = 0.0f;
   float line_width = 1.0f;

@@ -608,16 +608,36 @@ void RasterRenderer::set_dynamic_state(Recording& r, const DynamicDrawState& d,
   if (all || d.depth_write != o.depth_write) vkCmdSetDepthWriteEnable(cmd, d.depth_write);
   if (all || d.depth_compare != o.depth_compare) vkCmdSetDepthCompareOp(cmd, d.depth_compare);
   if (all || d.stencil_test != o.stencil_test) vkCmdSetStencilTestEnable(cmd, d.stencil_test);
-  if (all || d.stencil_fail != o.stencil_fail || d.stencil_pass != o.stencil_pass ||
+  // Both faces at once unless EXT_stencil_two_side gives back faces their own state; a change
+  // between the two sets the front face's state on both again.
+  const bool split = d.separate_back_stencil;
+  const bool split_changed = all || split != o.separate_back_stencil;
+  const VkStencilFaceFlags front =
+      split ? VK_STENCIL_FACE_FRONT_BIT : VK_STENCIL_FACE_FRONT_AND_BACK;
+  if (split_changed || d.stencil_fail != o.stencil_fail || d.stencil_pass != o.stencil_pass ||
       d.stencil_depth_fail != o.stencil_depth_fail || d.stencil_compare != o.stencil_compare)
-    vkCmdSetStencilOp(cmd, VK_STENCIL_FACE_FRONT_AND_BACK, d.stencil_fail, d.stencil_pass,
-                      d.stencil_depth_fail, d.stencil_compare);
-  if (all || d.stencil_compare_mask != o.stencil_compare_mask)
-    vkCmdSetStencilCompareMask(cmd, VK_STENCIL_FACE_FRONT_AND_BACK, d.stencil_compare_mask);
-  if (all || d.stencil_write_mask != o.stencil_write_mask)
-    vkCmdSetStencilWriteMask(cmd, VK_STENCIL_FACE_FRONT_AND_BACK, d.stencil_write_mask);
-  if (all || d.stencil_reference != o.stencil_reference)
-    vkCmdSetStencilReference(cmd, VK_STENCIL_FACE_FRONT_AND_BACK, d.stencil_reference);
+    vkCmdSetStencilOp(cmd, front, d.stencil_fail, d.stencil_pass, d.stencil_depth_fail,
+                      d.stencil_compare);
+  if (split_changed || d.stencil_compare_mask != o.stencil_compare_mask)
+    vkCmdSetStencilCompareMask(cmd, front, d.stencil_compare_mask);
+  if (split_changed || d.stencil_write_mask != o.stencil_write_mask)
+    vkCmdSetStencilWriteMask(cmd, front, d.stencil_write_mask);
+  if (split_changed || d.stencil_reference != o.stencil_reference)
+    vkCmdSetStencilReference(cmd, front, d.stencil_reference);
+  if (split) {
+    const StencilFaceOps& b = d.back_stencil;
+    const StencilFaceOps& ob = o.back_stencil;
+    const VkStencilFaceFlags back = VK_STENCIL_FACE_BACK_BIT;
+    if (split_changed || b.fail != ob.fail || b.pass != ob.pass || b.depth_fail != ob.depth_fail ||
+        b.compare != ob.compare)
+      vkCmdSetStencilOp(cmd, back, b.fail, b.pass, b.depth_fail, b.compare);
+    if (split_changed || b.compare_mask != ob.compare_mask)
+      vkCmdSetStencilCompareMask(cmd, back, b.compare_mask);
+    if (split_changed || b.write_mask != ob.write_mask)
+      vkCmdSetStencilWriteMask(cmd, back, b.write_mask);
+    if (split_changed || b.reference != ob.reference)
+      vkCmdSetStencilReference(cmd, back, b.reference);
+  }
   if (all || d.depth_bias != o.depth_bias) vkCmdSetDepthBiasEnable(cmd, d.depth_bias);
   if (all || d.depth_bias_constant != o.depth_bias_constant ||
       d.depth_bias_slope != o.depth_bias_slope)

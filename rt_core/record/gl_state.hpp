@@ -211,6 +211,17 @@ struct FogState {
   bool operator==(const FogState&) const = default;
 };
 
+// One face's stencil test and operations (EXT_stencil_two_side's back face).
+struct StencilFaceState {
+  uint32_t func = GL_ALWAYS;
+  int32_t ref = 0;
+  uint32_t value_mask = 0xFFu;
+  uint32_t fail = GL_KEEP, depth_fail = GL_KEEP, depth_pass = GL_KEEP;
+  uint32_t write_mask = 0xFFu;
+
+  bool operator==(const StencilFaceState&) const = default;
+};
+
 struct FragmentOpsState {
   bool color_sum = false;  // GL_COLOR_SUM: add the secondary colour while lighting is off
   bool scissor_test = false;
@@ -224,6 +235,13 @@ struct FragmentOpsState {
   uint32_t stencil_value_mask = 0xFFFFFFFFu;
   uint32_t stencil_fail = GL_KEEP, stencil_depth_fail = GL_KEEP, stencil_depth_pass = GL_KEEP;
   uint32_t stencil_write_mask = 0xFFFFFFFFu;
+  // EXT_stencil_two_side: while stencil_two_side is enabled, back-facing polygons are tested and
+  // counted with back_stencil instead of the fields above. stencil_back_selected
+  // (GL_ACTIVE_STENCIL_FACE_EXT is GL_BACK) only routes glStencilFunc/Op/Mask to back_stencil;
+  // with GL_FRONT selected they set the fields above (Mesa's faces 0 and 2).
+  bool stencil_two_side = false;
+  bool stencil_back_selected = false;
+  StencilFaceState back_stencil;
   bool depth_test = false;
   uint32_t depth_func = GL_LESS;
   bool depth_write = true;
@@ -238,6 +256,15 @@ struct FragmentOpsState {
   bool dither = true;
   uint32_t draw_buffer = GL_BACK;  // resolved against the drawable when executed
   uint32_t read_buffer = GL_BACK;  // source of glCopyPixels and glAccum
+
+  StencilFaceState front_stencil() const {
+    return {stencil_func,       stencil_ref,        stencil_value_mask, stencil_fail,
+            stencil_depth_fail, stencil_depth_pass, stencil_write_mask};
+  }
+  // The state back-facing polygons use.
+  StencilFaceState back_face_stencil() const {
+    return stencil_two_side ? back_stencil : front_stencil();
+  }
 
   bool operator==(const FragmentOpsState&) const = default;
 };

@@ -115,10 +115,12 @@ bool counts_stencil(uint32_t op) {
 }
 
 // A shadow volume pass: no colour written, the stencil counting where the volume's faces pass
-// or fail the depth test.
+// or fail the depth test (with EXT_stencil_two_side, front and back faces in one pass).
 bool is_shadow_volume(const rec::FragmentOpsState& ops, const rec::DrawableConfig& drawable) {
-  return !writes_color(ops, drawable) && ops.stencil_test &&
-         (counts_stencil(ops.stencil_depth_pass) || counts_stencil(ops.stencil_depth_fail));
+  if (writes_color(ops, drawable) || !ops.stencil_test) return false;
+  const rec::StencilFaceState back = ops.back_face_stencil();
+  return counts_stencil(ops.stencil_depth_pass) || counts_stencil(ops.stencil_depth_fail) ||
+         counts_stencil(back.depth_pass) || counts_stencil(back.depth_fail);
 }
 
 // A modelview that flattens geometry onto a plane: the planar shadow matrix, singular (for a

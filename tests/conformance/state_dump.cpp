@@ -118,6 +118,7 @@ const Pname kStatePnames[] = {
     P(GL_STENCIL_FAIL, 1),
     P(GL_STENCIL_PASS_DEPTH_FAIL, 1),
     P(GL_STENCIL_PASS_DEPTH_PASS, 1),
+    P(GL_ACTIVE_STENCIL_FACE_EXT, 1),  // EXT_stencil_two_side: the face the rows above show
     P(GL_DEPTH_FUNC, 1),
     P(GL_BLEND_SRC_RGB, 1),
     P(GL_BLEND_SRC_ALPHA, 1),
@@ -358,6 +359,7 @@ const Pname kCapabilities[] = {
     P(GL_SCISSOR_TEST, 1),
     P(GL_ALPHA_TEST, 1),
     P(GL_STENCIL_TEST, 1),
+    P(GL_STENCIL_TEST_TWO_SIDE_EXT, 1),
     P(GL_DEPTH_TEST, 1),
     P(GL_BLEND, 1),
     P(GL_DITHER, 1),

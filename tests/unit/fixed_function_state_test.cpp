@@ -199,6 +199,47 @@ TEST_F(GlTest, BlendEquationSeparateSetsEachEquationAndChecksBoth) {
   EXPECT_EQ(int1(GL_BLEND_EQUATION_ALPHA_EXT), GL_MIN);
 }
 
+// EXT_stencil_two_side, as Mesa keeps it: the selected face takes glStencilFunc/Op/Mask and is the
+// one queried; the selector is compiled into display lists and saved with the stencil group.
+TEST_F(GlTest, StencilTwoSideSelectsTheFaceThatIsSetAndQueried) {
+  EXPECT_EQ(int1(GL_ACTIVE_STENCIL_FACE_EXT), GL_FRONT);
+  EXPECT_FALSE(glIsEnabled(GL_STENCIL_TEST_TWO_SIDE_EXT));
+  glActiveStencilFaceEXT(GL_BACK);
+  glStencilFunc(GL_LESS, 7, 0x3C);
+  glStencilOp(GL_INCR_WRAP, GL_DECR_WRAP, GL_INVERT);
+  glStencilMask(0x0F);
+  EXPECT_EQ(error(), GLenum{GL_NO_ERROR});
+  EXPECT_EQ(int1(GL_ACTIVE_STENCIL_FACE_EXT), GL_BACK);
+  EXPECT_EQ(int1(GL_STENCIL_FUNC), GL_LESS);
+  EXPECT_EQ(int1(GL_STENCIL_REF), 7);
+  EXPECT_EQ(int1(GL_STENCIL_VALUE_MASK), 0x3C);
+  EXPECT_EQ(int1(GL_STENCIL_FAIL), GL_INCR_WRAP);
+  EXPECT_EQ(int1(GL_STENCIL_PASS_DEPTH_FAIL), GL_DECR_WRAP);
+  EXPECT_EQ(int1(GL_STENCIL_PASS_DEPTH_PASS), GL_INVERT);
+  EXPECT_EQ(int1(GL_STENCIL_WRITEMASK), 0x0F);
+  glActiveStencilFaceEXT(GL_FRONT);  // the front face kept its initial state
+  EXPECT_EQ(int1(GL_STENCIL_FUNC), GL_ALWAYS);
+  EXPECT_EQ(int1(GL_STENCIL_WRITEMASK), 0xFF);
+  glActiveStencilFaceEXT(GL_FRONT_AND_BACK);
+  EXPECT_EQ(error(), GLenum{GL_INVALID_ENUM});
+  EXPECT_EQ(int1(GL_ACTIVE_STENCIL_FACE_EXT), GL_FRONT);
+
+  glPushAttrib(GL_STENCIL_BUFFER_BIT);
+  glEnable(GL_STENCIL_TEST_TWO_SIDE_EXT);
+  const GLuint list = glGenLists(1);
+  glNewList(list, GL_COMPILE);
+  glActiveStencilFaceEXT(GL_BACK);
+  glEndList();
+  EXPECT_EQ(int1(GL_ACTIVE_STENCIL_FACE_EXT), GL_FRONT);
+  glCallList(list);
+  EXPECT_EQ(int1(GL_ACTIVE_STENCIL_FACE_EXT), GL_BACK);
+  EXPECT_TRUE(glIsEnabled(GL_STENCIL_TEST_TWO_SIDE_EXT));
+  glPopAttrib();
+  EXPECT_EQ(int1(GL_ACTIVE_STENCIL_FACE_EXT), GL_FRONT);
+  EXPECT_FALSE(glIsEnabled(GL_STENCIL_TEST_TWO_SIDE_EXT));
+  EXPECT_EQ(error(), GLenum{GL_NO_ERROR});
+}
+
 TEST_F(GlTest, BlendColorIsClampedAndReadsAsColourIntegers) {
   glBlendColor(2.0f, -1.0f, 0.5f, 0.2f);
   EXPECT_EQ(floats(GL_BLEND_COLOR, 4), (std::vector<float>{1.0f, 0.0f, 0.5f, 0.2f}));

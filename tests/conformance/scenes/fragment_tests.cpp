@@ -355,4 +355,137 @@ GLPT_SCENE(depth_intersecting_boxes, 64, 64) {
   cube(1);
 }
 
+// EXT_stencil_two_side. Triangles wound counter-clockwise (front) and clockwise (back) over
+// stencil 1: front faces REPLACE with 2 through write mask 0x0F, back faces INCR_WRAP twice where
+// they overlap and pass only where 3 is GEQUAL the stencil through value mask 0x03, so the
+// panels show which face used which function, reference, masks and operations. A line and a
+// point (always front-facing) and a glRect (front-facing here) use the front face's state, and
+// with two-sided stencil disabled again back faces use it too (the right column).
+void wound_triangle(bool counter_clockwise, float x, float y, float size) {
+  glBegin(GL_TRIANGLES);
+  glVertex2f(x, y);
+  if (counter_clockwise) {
+    glVertex2f(x + size, y);
+    glVertex2f(x, y + size);
+  } else {
+    glVertex2f(x, y + size);
+    glVertex2f(x + size, y);
+  }
+  glEnd();
+}
+
+GLPT_SCENE(stencil_two_side_faces, 64, 64) {
+  clear(0.4f, 0.4f, 0.4f);
+  glClearStencil(1);
+  glClear(GL_STENCIL_BUFFER_BIT);
+  ortho_pixels(64, 64);
+  glEnable(GL_STENCIL_TEST);
+  glEnable(GL_STENCIL_TEST_TWO_SIDE_EXT);
+  glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  active_stencil_face(GL_BACK);
+  glStencilFunc(GL_GEQUAL, 3, 0x03);
+  glStencilOp(GL_ZERO, GL_KEEP, GL_INCR_WRAP);
+  glStencilMask(0xFF);
+  active_stencil_face(GL_FRONT);
+  glStencilFunc(GL_ALWAYS, 2, 0xFF);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+  glStencilMask(0x0F);
+  wound_triangle(true, 2, 2, 20);
+  wound_triangle(false, 2, 24, 20);
+  wound_triangle(false, 5, 27, 20);   // overlaps the last: 1 -> 2 -> 3 there
+  wound_triangle(false, 8, 30, 20);   // a third time: 3 passes (3 >= 3) -> 4
+  wound_triangle(false, 11, 33, 20);  // 4 & 3 = 0 passes too -> 5 where all four overlap
+  glBegin(GL_LINES);
+  glVertex2f(24, 4.5f);
+  glVertex2f(40, 4.5f);
+  glEnd();
+  glPointSize(4);
+  glBegin(GL_POINTS);
+  glVertex2f(30, 12);
+  glEnd();
+  glDisable(GL_STENCIL_TEST_TWO_SIDE_EXT);
+  glRectf(44, 2, 62, 10);
+  wound_triangle(false, 42, 24, 20);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glStencilMask(0xFF);
+  show_stencil_values(64, 64);
+  // Leave the back face selected so the state dump shows the back face's values.
+  active_stencil_face(GL_BACK);
+  glStencilFunc(GL_GEQUAL, 300, 0x1F);
+}
+
+// A z-fail shadow volume drawn in one pass with two-sided stencil, as the games that used the
+// extension drew them (culling off, back faces INCR_WRAP and front faces DECR_WRAP on depth
+// fail): a box standing on a floor casts the volume of an extruded quad, and the floor is
+// darkened where the stencil is not zero. glPushAttrib/glPopAttrib of GL_STENCIL_BUFFER_BIT and
+// GL_ENABLE_BIT restore the enable and the selected face.
+GLPT_SCENE(stencil_two_side_shadow_volume, 64, 64) {
+  clear(0.1f, 0.1f, 0.2f);
+  glClearStencil(0);
+  glClear(GL_STENCIL_BUFFER_BIT);
+  perspective(50.0, 1.0, 0.5, 20.0);
+  glTranslatef(0, -0.8f, -5);
+  glRotatef(25, 1, 0, 0);
+  glEnable(GL_DEPTH_TEST);
+  glColor3f(0.8f, 0.75f, 0.6f);
+  glBegin(GL_QUADS);  // the floor, y = 0
+  glVertex3f(-3, 0, 3);
+  glVertex3f(3, 0, 3);
+  glVertex3f(3, 0, -3);
+  glVertex3f(-3, 0, -3);
+  glEnd();
+  glPushMatrix();
+  glTranslatef(-0.6f, 0.5f, 0.4f);
+  glColor3f(0.3f, 0.6f, 0.9f);
+  cube(0.5f);
+  glPopMatrix();
+
+  glPushAttrib(GL_STENCIL_BUFFER_BIT | GL_ENABLE_BIT | GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  glDepthMask(GL_FALSE);
+  glDisable(GL_CULL_FACE);
+  glEnable(GL_STENCIL_TEST);
+  glEnable(GL_STENCIL_TEST_TWO_SIDE_EXT);
+  active_stencil_face(GL_BACK);
+  glStencilOp(GL_KEEP, GL_INCR_WRAP, GL_KEEP);
+  glStencilFunc(GL_ALWAYS, 0, 0xFF);
+  active_stencil_face(GL_FRONT);
+  glStencilOp(GL_KEEP, GL_DECR_WRAP, GL_KEEP);
+  glStencilFunc(GL_ALWAYS, 0, 0xFF);
+  // A closed prism: the box's top face extruded away from a light at the upper left, down
+  // through the floor.
+  const float top[4][3] = {
+      {-1.1f, 1.0f, 0.9f}, {-0.1f, 1.0f, 0.9f}, {-0.1f, 1.0f, -0.1f}, {-1.1f, 1.0f, -0.1f}};
+  float bottom[4][3];
+  for (int i = 0; i < 4; ++i) {
+    bottom[i][0] = top[i][0] + 2.2f;
+    bottom[i][1] = -1.0f;
+    bottom[i][2] = top[i][2] - 0.4f;
+  }
+  glBegin(GL_QUADS);
+  for (int i = 0; i < 4; ++i) {
+    const int j = (i + 1) % 4;
+    glVertex3fv(top[i]);
+    glVertex3fv(bottom[i]);
+    glVertex3fv(bottom[j]);
+    glVertex3fv(top[j]);
+  }
+  for (int i = 3; i >= 0; --i) glVertex3fv(top[i]);
+  for (int i = 0; i < 4; ++i) glVertex3fv(bottom[i]);
+  glEnd();
+  glPopAttrib();
+
+  glEnable(GL_STENCIL_TEST);
+  glStencilFunc(GL_NOTEQUAL, 0, 0xFF);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+  glDisable(GL_DEPTH_TEST);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  ortho_pixels(64, 64);
+  glColor4f(0, 0, 0, 0.6f);
+  glRectf(0, 0, 64, 64);
+  glDisable(GL_BLEND);
+  glDisable(GL_STENCIL_TEST);
+}
+
 }  // namespace

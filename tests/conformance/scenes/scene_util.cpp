@@ -1,6 +1,10 @@
 #include "scene_util.hpp"
 
+#include <dlfcn.h>
+
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 
 namespace glpt::conformance::util {
 namespace {
@@ -312,6 +316,23 @@ void bitmap_text(const char* text) {
       glBitmap(5, 7, 0, 0, 6, 0, bottom_up);
     }
   }
+}
+
+// glpt's runner links glpt statically (the symbol is there, but not in the dynamic table); Mesa's
+// runner has OSMesa, whose library does not export it.
+#pragma weak glActiveStencilFaceEXT
+void active_stencil_face(GLenum face) {
+  using Fn = void (*)(GLenum);
+  static const Fn fn = [] {
+    const char* name = "glActiveStencilFaceEXT";
+    if (Fn linked = &glActiveStencilFaceEXT; linked != nullptr) return linked;
+    using GetProc = void* (*)(const char*);
+    if (void* osmesa = dlsym(RTLD_DEFAULT, "OSMesaGetProcAddress"))
+      if (void* found = reinterpret_cast<GetProc>(osmesa)(name)) return reinterpret_cast<Fn>(found);
+    std::fprintf(stderr, "scene: %s not found\n", name);
+    std::abort();
+  }();
+  fn(face);
 }
 
 }  // namespace glpt::conformance::util

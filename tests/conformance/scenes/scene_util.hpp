@@ -85,4 +85,8 @@ GLuint texture_2d(GLenum internal_format, int width, int height, const std::vect
 // characters draw nothing and do not advance.
 void bitmap_text(const char* text);
 
+// glActiveStencilFaceEXT (EXT_stencil_two_side), looked up by name: OSMesa exports only core
+// commands, extension ones through OSMesaGetProcAddress.
+void active_stencil_face(GLenum face);
+
 }  // namespace glpt::conformance::util
