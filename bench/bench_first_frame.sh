@@ -7,8 +7,8 @@
 # for S seconds (default 6), twice: first with an empty glpt pipeline cache (GLPT_CACHE_DIR) and
 # an empty Mesa shader cache (MESA_SHADER_CACHE_DIR: lavapipe compiles fragment-shader variants
 # into it at draw time), then again with both caches as the first run left them. Prints frame 0's
-# total_ms (recording to presented), raster_ms, wall_ms (since the context was created) and the
-# pipelines it created, per program and cache state. Programs: glxgears or the name of an
+# total_ms (recording to presented), raster_ms, wall_ms (how long the frame's end, the swap, held
+# the program) and the pipelines it created, per program and cache state. Programs: glxgears or the name of an
 # xscreensaver hack in /usr/libexec/xscreensaver. Not a test.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
