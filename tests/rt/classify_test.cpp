@@ -246,6 +246,28 @@ TEST(ClassifyKinds, FakeShadowsAreShadowsAndNotDrawnInPathTracedMode) {
                                              DrawClass::kShadow, DrawClass::kShadow}));
 }
 
+// EXT_stencil_two_side: a z-fail volume drawn in one pass whose back faces alone count (the
+// front faces keep) is a shadow volume; the same pass without two-sided stencil counts nothing and
+// is only a colourless draw.
+TEST(ClassifyKinds, ATwoSidedStencilVolumeIsAShadowWhicheverFaceCounts) {
+  RecordBuilder b = scene_builder();
+  b.transform.modelview = glm::translate(glm::mat4(1), glm::vec3(0, 0, -6));
+  b.quad({-3, -1, -3}, {6, 0, 0}, {0, 0, 6}, glm::vec4(1));
+  b.raster.ops.color_write = {false, false, false, false};
+  b.raster.ops.depth_write = false;
+  b.raster.ops.stencil_test = true;
+  b.raster.ops.stencil_two_side = true;
+  b.raster.ops.back_stencil.depth_fail = GL_INCR_WRAP;
+  cube(b);
+  b.raster.ops.stencil_two_side = false;
+  cube(b);
+  FrameClassification c;
+  classify_frame(b.record, b.drawable, nullptr, c);
+  std::vector<std::string> kinds;
+  for (const auto& label : c.labels) kinds.push_back(draw_kind_name(label.kind));
+  EXPECT_EQ(kinds, (std::vector<std::string>{"static", "shadow", "hidden"}));
+}
+
 TEST(ClassifyKinds, PassesDecalsParticlesOverlaysAndViewModels) {
   RecordBuilder b = scene_builder();
   b.clear(glm::vec4(0));
