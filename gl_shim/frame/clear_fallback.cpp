@@ -35,7 +35,8 @@ void ClearFallback::end_frame(const rec::FrameRecord& record, uint32_t width, ui
       for (int c = 0; c < 4; ++c) rgba[i + c] = static_cast<uint8_t>(bytes[c]);
     if (target != nullptr) target->present(rgba.data(), width, height);
     if (want_png)
-      write_frame_png(settings_, frame_index_, width, height, rgba, &png_failure_reported_);
+      write_frame_png(settings_, png_stream_, frame_index_, width, height, rgba,
+                      &png_failure_reported_);
   }
   ++frame_index_;
 }

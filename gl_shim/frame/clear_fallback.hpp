@@ -33,6 +33,7 @@ class ClearFallback {
   float depth_ = 1.0f;
   uint32_t stencil_ = 0;
   OutputSettings settings_;
+  PngStream png_stream_;
   uint64_t frame_index_ = 0;
   bool png_failure_reported_ = false;
 };

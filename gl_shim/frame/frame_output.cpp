@@ -68,10 +68,10 @@ void create_png_directory(OutputSettings& settings) {
   settings.png_dir.clear();
 }
 
-void write_frame_png(const OutputSettings& settings, uint64_t frame_index, uint32_t width,
-                     uint32_t height, std::vector<uint8_t>& rgba, bool* failure_reported) {
-  char name[64];
-  std::snprintf(name, sizeof name, "frame_%06" PRIu64 ".png", frame_index);
+void write_frame_png(const OutputSettings& settings, PngStream& stream, uint64_t frame_index,
+                     uint32_t width, uint32_t height, std::vector<uint8_t>& rgba,
+                     bool* failure_reported) {
+  const std::string name = stream.file_name(frame_index);
   // The PNG shows what the window shows: opaque. (glReadPixels still returns GL's alpha.)
   for (size_t i = 3; i < rgba.size(); i += 4) rgba[i] = 255;
   std::string error;
@@ -156,7 +156,8 @@ void FrameOutput::end_frame(const rec::FrameRecord& record, const rec::DrawableC
   const double present_ms = present_timer.elapsed_ms();
 
   if (have_image && !settings_.png_dir.empty() && frame_index_ % settings_.png_every == 0)
-    write_frame_png(settings_, frame_index_, width, height, image_, &png_failure_reported_);
+    write_frame_png(settings_, png_stream_, frame_index_, width, height, image_,
+                    &png_failure_reported_);
   if (settings_.stats) {
     const rt::FrameStats& s = frame_stats_;
     const double trace_s = s.trace_ms / 1000.0;

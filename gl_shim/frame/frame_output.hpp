@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "common/stopwatch.hpp"
+#include "gl_shim/frame/png_streams.hpp"
 #include "gl_shim/frame/render_group.hpp"
 #include "rt_core/frame_stats.hpp"
 #include "rt_core/record/frame_record.hpp"
@@ -49,7 +50,7 @@ class WindowTarget {
 };
 
 struct OutputSettings {
-  std::string png_dir;     // GLPT_OUTPUT: write frames as DIR/frame_NNNNNN.png
+  std::string png_dir;     // GLPT_OUTPUT: write frames as DIR/frame_NNNNNN.png (png_streams.hpp)
   uint32_t png_every = 1;  // GLPT_OUTPUT_EVERY: every Nth frame
   bool stats = false;      // GLPT_STATS=1: one line per frame on stderr
   std::string stats_file;  // GLPT_STATS_FILE=FILE: those lines appended to FILE instead
@@ -60,11 +61,12 @@ struct OutputSettings {
 // png_dir: an unwritable GLPT_OUTPUT is reported once, not at every frame, and the program runs
 // on without PNGs.
 void create_png_directory(OutputSettings& settings);
-// Writes frame `frame_index` (`rgba`: rows bottom to top, made opaque here, as the window shows
-// it) as settings.png_dir/frame_NNNNNN.png. A failure is reported on stderr the first time only
-// (*failure_reported).
-void write_frame_png(const OutputSettings& settings, uint64_t frame_index, uint32_t width,
-                     uint32_t height, std::vector<uint8_t>& rgba, bool* failure_reported);
+// Writes frame `frame_index` of `stream` (`rgba`: rows bottom to top, made opaque here, as the
+// window shows it) into settings.png_dir under the stream's name for it (frame_NNNNNN.png for
+// the first context). A failure is reported on stderr the first time only (*failure_reported).
+void write_frame_png(const OutputSettings& settings, PngStream& stream, uint64_t frame_index,
+                     uint32_t width, uint32_t height, std::vector<uint8_t>& rgba,
+                     bool* failure_reported);
 
 // Prints `message` (one line, on stderr) unless this process printed it already: what every
 // context of a program would say alike (no Vulkan device, no ray queries, an unusable
@@ -102,6 +104,7 @@ class FrameOutput {
 
   std::shared_ptr<rt::Renderer> renderer_;  // the share group's
   OutputSettings settings_;
+  PngStream png_stream_;
   rec::DrawableConfig drawable_{0, 0};
   std::vector<uint8_t> image_;  // the front buffer, for presenting
   rt::FrameStats frame_stats_;  // summed over the records of the frame

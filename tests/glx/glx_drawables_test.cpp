@@ -9,9 +9,15 @@
 #include <GL/gl.h>
 #include <GL/glx.h>
 #include "../common/x11_gl_test_util.hpp"
+#include "image_io.hpp"
 // clang-format on
 
+#include <unistd.h>
+
 #include <cstdint>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -368,6 +374,61 @@ TEST_F(GlxDrawables, TwoContextsTwoWindowsShareLists) {
   glXSwapBuffers(dpy_, a);
   EXPECT_EQ(x_pixel(a, 4, 4), 0xFF0000u);
   EXPECT_EQ(x_pixel(b, 4, 4), 0x00FF00u);
+}
+
+// Contexts writing PNGs into one GLPT_OUTPUT (gl_shim/frame/png_streams.hpp): two contexts
+// drawing at once write distinct files, and a context created after one was destroyed numbers on
+// after that one's frames instead of writing over them.
+TEST_F(GlxDrawables, ContextsWritingPngsIntoOneDirectoryNeverOverwriteEachOther) {
+  char dir_template[] = "/tmp/glpt-pngs-XXXXXX";
+  ASSERT_NE(mkdtemp(dir_template), nullptr);
+  const std::string dir = dir_template;
+  setenv("GLPT_OUTPUT", dir.c_str(), 1);
+  XVisualInfo* vi = visual({GLX_RGBA, GLX_DOUBLEBUFFER});
+  ASSERT_NE(vi, nullptr);
+  const Window a = unsynced_window(*vi, 8, 8);
+  const Window b = unsynced_window(*vi, 8, 8);
+  GLXContext first = glXCreateContext(dpy_, vi, nullptr, True);
+  GLXContext second = context(vi);
+  const auto frame = [&](Window w, GLXContext c, float r, float g, float bl) {
+    ASSERT_TRUE(glXMakeCurrent(dpy_, w, c));
+    glClearColor(r, g, bl, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glXSwapBuffers(dpy_, w);
+  };
+  for (int i = 0; i < 2; ++i) {
+    frame(a, first, 1, 0, 0);
+    frame(b, second, 0, 1, 0);
+  }
+  glXMakeCurrent(dpy_, None, nullptr);
+  glXDestroyContext(dpy_, first);
+  GLXContext third = context(vi);
+  XFree(vi);
+  frame(a, third, 0, 0, 1);
+  glXMakeCurrent(dpy_, None, nullptr);
+  unsetenv("GLPT_OUTPUT");
+
+  const std::vector<std::pair<std::string, uint32_t>> expected = {
+      {"frame_000000.png", 0xFF0000u},
+      {"frame_000001.png", 0xFF0000u},
+      {"ctx2_frame_000000.png", 0x00FF00u},
+      {"ctx2_frame_000001.png", 0x00FF00u},
+      {"frame_000002.png", 0x0000FFu}};
+  size_t files = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    (void)entry;
+    ++files;
+  }
+  EXPECT_EQ(files, expected.size());
+  for (const auto& [name, colour] : expected) {
+    glpt::ImageRGBA8 image;
+    std::string error;
+    ASSERT_TRUE(glpt::read_png_rgba8(dir + "/" + name, &image, &error)) << name << ": " << error;
+    const uint32_t pixel = uint32_t(image.pixels[0]) << 16 | uint32_t(image.pixels[1]) << 8 |
+                           uint32_t(image.pixels[2]);
+    EXPECT_EQ(pixel, colour) << name;
+  }
+  std::filesystem::remove_all(dir);
 }
 
 // GLX 1.4 3.3.7: make-current flushes the context it replaces, and the buffers are the
