@@ -384,7 +384,13 @@ void detailed_levels(int size) {
 
 // A glyph atlas as trigger-rally's HUD draws it (its numbers: a 1024x1024 atlas with its own mip
 // levels, trilinear, anisotropy 4, cells of 1/12 x 1/8 minified about 4.3 times under glOrtho in
-// a 640x480 viewport whose top row is the window's), blended over the clear colour.
+// a 640x480 viewport whose top row is the window's), blended over the clear colour under the game's
+// fog (exponential, at eye distance 0), culling and depth range. Measured:
+// 99.85 % of the pixels within 2/255 of Mesa, the rest up to 42 levels apart. gallivm filters
+// anisotropic textures with an elliptical weighted average whose footprint (floor and ceil of the
+// ellipse's box, a table index truncated from a quadratic form) turns on the last bits of the
+// coordinates and their derivatives; with anisotropy 1 the same scene equals Mesa exactly. This
+// is what keeps trigger-rally's HUD text from equalling Mesa's everywhere.
 GLPT_SCENE(texture_sampling_minified_atlas_anisotropic, 256, 192) {
   clear(0.3f, 0.5f, 0.7f);
   new_texture(GL_TEXTURE_2D, GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR);
@@ -393,6 +399,11 @@ GLPT_SCENE(texture_sampling_minified_atlas_anisotropic, 256, 192) {
   glEnable(GL_TEXTURE_2D);
   glEnable(GL_BLEND);
   glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  glEnable(GL_FOG);
+  glFogi(GL_FOG_MODE, GL_EXP);
+  glFogf(GL_FOG_DENSITY, 0.002f);
+  glEnable(GL_CULL_FACE);
+  glDepthRange(0, 0.999);
   glViewport(0, -288, 640, 480);
   glMatrixMode(GL_PROJECTION);
   glLoadIdentity();
