@@ -199,6 +199,14 @@ void release_current_locked() {
   collect(old->display);
 }
 
+// Renders what this thread's current context has recorded before a call takes the process-wide
+// lock to release it: a path-traced frame takes seconds, and no other thread's EGL call may wait
+// for it. Only this thread records into its current context, so nothing is added between this
+// and the release (whose own flush then finds nothing to render).
+void flush_current_outside_lock() {
+  if (EglContext* old = t_bound; old != nullptr) glpt::flush_before_release(old->gl);
+}
+
 EglDisplay* get_display(EGLenum platform, void* native, int screen) {
   std::lock_guard lock(objects_mutex());
   for (auto& d : displays())
@@ -826,6 +834,7 @@ GLPT_EXPORT EGLBoolean eglReleaseTexImage(EGLDisplay dpy, EGLSurface surface, EG
 GLPT_EXPORT EGLBoolean eglMakeCurrent(EGLDisplay dpy, EGLSurface draw, EGLSurface read,
                                       EGLContext ctx) {
   return egl_entry(EGLBoolean{EGL_FALSE}, [&]() -> EGLBoolean {
+    flush_current_outside_lock();
     std::lock_guard lock(objects_mutex());
     EglDisplay* d = find_display(dpy);
     if (d == nullptr) return fail(EGL_BAD_DISPLAY, EGL_FALSE);
@@ -1012,6 +1021,7 @@ GLPT_EXPORT EGLBoolean eglWaitNative(EGLint engine) {
 
 GLPT_EXPORT EGLBoolean eglReleaseThread(void) {
   return egl_entry(EGLBoolean{EGL_FALSE}, [&]() -> EGLBoolean {
+    flush_current_outside_lock();
     std::lock_guard lock(objects_mutex());
     release_current_locked();
     t_api = EGL_NONE;
