@@ -20,7 +20,11 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
 #include <cstring>
+#include <mutex>
 #include <thread>
 #include <vector>
 
@@ -482,6 +486,71 @@ TEST_F(Egl, WindowSurfaceFrameReachesReadPixels) {
   surface = eglCreateWindowSurface(egl_, config, win, nullptr);
   EXPECT_NE(surface, EGL_NO_SURFACE);
   EXPECT_TRUE(eglDestroySurface(egl_, surface));
+}
+
+// eglMakeCurrent renders the frame of the context it releases before it takes EGL's
+// process-wide lock: while that rendering waits (here: presenting a single-buffered surface to an
+// X server that another connection has grabbed), another thread's EGL calls go on. With the
+// rendering inside the lock, the other thread's call would wait for the ungrab.
+TEST_F(Egl, ReleasingAContextRendersOutsideEglsLock) {
+  EGLConfig config = choose(kWindowConfig);
+  Window win = make_window(config, 32, 32);
+  ASSERT_NE(win, 0u);
+  const EGLint single[] = {EGL_RENDER_BUFFER, EGL_SINGLE_BUFFER, EGL_NONE};
+  EGLSurface surface = eglCreateWindowSurface(egl_, config, win, single);
+  ASSERT_NE(surface, EGL_NO_SURFACE);
+  EGLContext ctx = eglCreateContext(egl_, config, EGL_NO_CONTEXT, nullptr);
+  ASSERT_NE(ctx, EGL_NO_CONTEXT);
+  Display* grabber = XOpenDisplay(nullptr);
+  ASSERT_NE(grabber, nullptr);
+
+  std::mutex mutex;
+  std::condition_variable changed;
+  bool recorded = false, grabbed = false, queried = false;
+  std::thread releaser([&] {
+    ASSERT_TRUE(eglMakeCurrent(egl_, surface, surface, ctx));
+    glClearColor(0, 1, 0, 1);
+    glClear(GL_COLOR_BUFFER_BIT);  // recorded, not yet rendered
+    {
+      std::unique_lock lock(mutex);
+      recorded = true;
+      changed.notify_all();
+      changed.wait(lock, [&] { return grabbed; });
+    }
+    eglMakeCurrent(egl_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);  // renders, presents
+  });
+  {
+    std::unique_lock lock(mutex);
+    changed.wait(lock, [&] { return recorded; });
+  }
+  XGrabServer(grabber);
+  XSync(grabber, False);
+  {
+    std::lock_guard lock(mutex);
+    grabbed = true;
+    changed.notify_all();
+  }
+  // Time for the release to reach the presentation, which waits for the ungrab.
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  std::thread querier([&] {
+    EXPECT_NE(eglQueryString(egl_, EGL_VENDOR), nullptr);
+    std::lock_guard lock(mutex);
+    queried = true;
+    changed.notify_all();
+  });
+  bool went_on = false;
+  {
+    std::unique_lock lock(mutex);
+    went_on = changed.wait_for(lock, std::chrono::seconds(10), [&] { return queried; });
+  }
+  XUngrabServer(grabber);
+  XSync(grabber, False);
+  querier.join();
+  releaser.join();
+  XCloseDisplay(grabber);
+  EXPECT_TRUE(went_on) << "another thread's eglQueryString waited for the released frame";
+  EXPECT_TRUE(eglDestroySurface(egl_, surface));
+  EXPECT_TRUE(eglDestroyContext(egl_, ctx));
 }
 
 // A forked child that exits without exec'ing runs the static destructors that tear glpt's EGL
