@@ -141,7 +141,7 @@ using mat4 = glm::mat4;
 #define GLPT_FS_TWO_SIDE 1u
 #define GLPT_FS_COLOR_SUM 2u  // add the secondary colour after texturing
 #define GLPT_FS_POLYGON_STIPPLE 4u
-#define GLPT_FS_CLEAR 8u  // the clear pipeline: output the clear colour only
+#define GLPT_FS_CLEAR 8u               // the clear pipeline: output the clear colour only
 #define GLPT_FS_SPRITE_LOWER_LEFT 16u  // GL_POINT_SPRITE_COORD_ORIGIN GL_LOWER_LEFT: t = 0 below
 // bits 8-10: alpha test function (0 off, else GL_NEVER + n - 0x200 + 1); bits 12-13: fog mode
 // (0 off, 1 linear, 2 exp, 3 exp2)

@@ -66,7 +66,7 @@ struct Candidate {
   std::vector<std::string> missing;            // for raster (and anything at all): empty = usable
   std::vector<std::string> missing_ray_query;  // empty: path tracing possible
   bool geometry_shader = false;
-  float max_sampler_anisotropy = 0.0f;  // 0: no samplerAnisotropy
+  float max_sampler_anisotropy = 0.0f;                           // 0: no samplerAnisotropy
   bool storage_image_read = false, storage_image_write = false;  // ...WithoutFormat
   uint32_t api_version = 0;
   std::string driver;                 // driverName and driverInfo, where the driver reports them
