@@ -75,6 +75,11 @@ struct DynamicDrawState {
   // fields above.
   bool separate_back_stencil = false;
   StencilFaceOps back_stencil;
+
+  StencilFaceOps front_stencil() const {
+    return {stencil_fail,         stencil_depth_fail, stencil_pass,     stencil_compare,
+            stencil_compare_mask, stencil_write_mask, stencil_reference};
+  }
   bool depth_bias = false;
   float depth_bias_constant = 0.0f, depth_bias_slope = 0.0f;
   float line_width = 1.0f;

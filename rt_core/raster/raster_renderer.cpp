@@ -612,32 +612,21 @@ void RasterRenderer::set_dynamic_state(Recording& r, const DynamicDrawState& d,
   // between the two sets the front face's state on both again.
   const bool split = d.separate_back_stencil;
   const bool split_changed = all || split != o.separate_back_stencil;
-  const VkStencilFaceFlags front =
-      split ? VK_STENCIL_FACE_FRONT_BIT : VK_STENCIL_FACE_FRONT_AND_BACK;
-  if (split_changed || d.stencil_fail != o.stencil_fail || d.stencil_pass != o.stencil_pass ||
-      d.stencil_depth_fail != o.stencil_depth_fail || d.stencil_compare != o.stencil_compare)
-    vkCmdSetStencilOp(cmd, front, d.stencil_fail, d.stencil_pass, d.stencil_depth_fail,
-                      d.stencil_compare);
-  if (split_changed || d.stencil_compare_mask != o.stencil_compare_mask)
-    vkCmdSetStencilCompareMask(cmd, front, d.stencil_compare_mask);
-  if (split_changed || d.stencil_write_mask != o.stencil_write_mask)
-    vkCmdSetStencilWriteMask(cmd, front, d.stencil_write_mask);
-  if (split_changed || d.stencil_reference != o.stencil_reference)
-    vkCmdSetStencilReference(cmd, front, d.stencil_reference);
-  if (split) {
-    const StencilFaceOps& b = d.back_stencil;
-    const StencilFaceOps& ob = o.back_stencil;
-    const VkStencilFaceFlags back = VK_STENCIL_FACE_BACK_BIT;
-    if (split_changed || b.fail != ob.fail || b.pass != ob.pass || b.depth_fail != ob.depth_fail ||
-        b.compare != ob.compare)
-      vkCmdSetStencilOp(cmd, back, b.fail, b.pass, b.depth_fail, b.compare);
-    if (split_changed || b.compare_mask != ob.compare_mask)
-      vkCmdSetStencilCompareMask(cmd, back, b.compare_mask);
-    if (split_changed || b.write_mask != ob.write_mask)
-      vkCmdSetStencilWriteMask(cmd, back, b.write_mask);
-    if (split_changed || b.reference != ob.reference)
-      vkCmdSetStencilReference(cmd, back, b.reference);
-  }
+  const auto set_stencil_face = [&](VkStencilFaceFlags face, const StencilFaceOps& now,
+                                    const StencilFaceOps& before) {
+    if (split_changed || now.fail != before.fail || now.pass != before.pass ||
+        now.depth_fail != before.depth_fail || now.compare != before.compare)
+      vkCmdSetStencilOp(cmd, face, now.fail, now.pass, now.depth_fail, now.compare);
+    if (split_changed || now.compare_mask != before.compare_mask)
+      vkCmdSetStencilCompareMask(cmd, face, now.compare_mask);
+    if (split_changed || now.write_mask != before.write_mask)
+      vkCmdSetStencilWriteMask(cmd, face, now.write_mask);
+    if (split_changed || now.reference != before.reference)
+      vkCmdSetStencilReference(cmd, face, now.reference);
+  };
+  set_stencil_face(split ? VK_STENCIL_FACE_FRONT_BIT : VK_STENCIL_FACE_FRONT_AND_BACK,
+                   d.front_stencil(), o.front_stencil());
+  if (split) set_stencil_face(VK_STENCIL_FACE_BACK_BIT, d.back_stencil, o.back_stencil);
   if (all || d.depth_bias != o.depth_bias) vkCmdSetDepthBiasEnable(cmd, d.depth_bias);
   if (all || d.depth_bias_constant != o.depth_bias_constant ||
       d.depth_bias_slope != o.depth_bias_slope)

@@ -141,6 +141,23 @@ void quad(float x0, float y0, float x1, float y1, float z) {
   glEnd();
 }
 
+void receding_floor(float s, float t) {
+  perspective(60.0, 1.0, 0.3, 30.0);
+  glTranslatef(0, -0.6f, -1.0f);
+  glRotatef(-75, 1, 0, 0);
+  glBegin(GL_QUADS);
+  glColor3f(1, 1, 1);
+  glTexCoord2f(0, 0);
+  glVertex3f(-2, -0.5f, 0);
+  glTexCoord2f(s, 0);
+  glVertex3f(2, -0.5f, 0);
+  glTexCoord2f(s, t);
+  glVertex3f(2, 12, 0);
+  glTexCoord2f(0, t);
+  glVertex3f(-2, 12, 0);
+  glEnd();
+}
+
 void textured_quad(float x0, float y0, float x1, float y1, float s0, float t0, float s1, float t1) {
   glBegin(GL_QUADS);
   glTexCoord2f(s0, t0);

@@ -42,6 +42,9 @@ void sphere(float radius, int slices, int stacks);
 void grid(float x0, float y0, float x1, float y1, int n);
 // An axis-aligned cube of half-size `h` with per-face normals and texture coordinates 0..1.
 void cube(float h);
+// A white floor receding from the viewer under a 60-degree perspective, texture coordinates
+// (0, 0)..(s, t): magnified in front, minified towards the horizon.
+void receding_floor(float s, float t);
 // A single quad with texture coordinates 0..1 (counter-clockwise from the bottom-left).
 void quad(float x0, float y0, float x1, float y1, float z = 0.0f);
 // A quad of x0..x1, y0..y1 (z = 0) with texture coordinates s0..s1, t0..t1.

@@ -11,22 +11,7 @@ using namespace glpt::conformance::util;
 
 // A floor receding from the viewer, texture repeated 6 times across: magnified in front,
 // minified towards the horizon.
-void textured_floor() {
-  perspective(60.0, 1.0, 0.3, 30.0);
-  glTranslatef(0, -0.6f, -1.0f);
-  glRotatef(-75, 1, 0, 0);
-  glBegin(GL_QUADS);
-  glColor3f(1, 1, 1);
-  glTexCoord2f(0, 0);
-  glVertex3f(-2, -0.5f, 0);
-  glTexCoord2f(6, 0);
-  glVertex3f(2, -0.5f, 0);
-  glTexCoord2f(6, 12);
-  glVertex3f(2, 12, 0);
-  glTexCoord2f(0, 12);
-  glVertex3f(-2, 12, 0);
-  glEnd();
-}
+void textured_floor() { receding_floor(6, 12); }
 
 std::vector<uint8_t> coloured_checker(int size) {
   std::vector<uint8_t> out =

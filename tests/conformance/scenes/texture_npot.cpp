@@ -41,24 +41,6 @@ void npot_wrap_scene(GLenum filter) {
 GLPT_SCENE(texture_npot_wrap_nearest, 96, 96) { npot_wrap_scene(GL_NEAREST); }
 GLPT_SCENE(texture_npot_wrap_linear, 96, 96) { npot_wrap_scene(GL_LINEAR); }
 
-// A floor receding from the viewer, texture coordinates (0..5, 0..9): every level of the chain.
-void receding_floor() {
-  perspective(60.0, 1.0, 0.3, 30.0);
-  glTranslatef(0, -0.6f, -1.0f);
-  glRotatef(-75, 1, 0, 0);
-  glBegin(GL_QUADS);
-  glColor3f(1, 1, 1);
-  glTexCoord2f(0, 0);
-  glVertex3f(-2, -0.5f, 0);
-  glTexCoord2f(5, 0);
-  glVertex3f(2, -0.5f, 0);
-  glTexCoord2f(5, 9);
-  glVertex3f(2, 12, 0);
-  glTexCoord2f(0, 9);
-  glVertex3f(-2, 12, 0);
-  glEnd();
-}
-
 // Every level of a 45x27 chain given by the program, each of its own colour scheme, so the
 // level each pixel picks shows.
 void npot_levels(GLenum format) {
@@ -83,7 +65,7 @@ GLPT_SCENE(texture_npot_mipmaps_trilinear, 64, 64) {
   new_texture(GL_TEXTURE_2D, GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR);
   npot_levels(GL_RGBA);
   glEnable(GL_TEXTURE_2D);
-  receding_floor();
+  receding_floor(5, 9);  // every level of the chain
 }
 
 GLPT_SCENE(texture_npot_mipmaps_nearest, 64, 64) {
@@ -92,7 +74,7 @@ GLPT_SCENE(texture_npot_mipmaps_nearest, 64, 64) {
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_MIRRORED_REPEAT);
   npot_levels(GL_RGB);
   glEnable(GL_TEXTURE_2D);
-  receding_floor();
+  receding_floor(5, 9);  // every level of the chain
 }
 
 // GL_GENERATE_MIPMAP on a 45x27 image: the reduced levels are the driver's own (odd sizes
@@ -105,7 +87,7 @@ GLPT_SCENE(texture_npot_generate_mipmap, 64, 64) {
   const std::vector<uint8_t> texels = npot_gradient(45, 27);
   glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 45, 27, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels.data());
   glEnable(GL_TEXTURE_2D);
-  receding_floor();
+  receding_floor(5, 9);  // every level of the chain
 }
 
 // 1D (13 texels, repeating) and 3D (5x3x7, a slice between layers) textures of odd sizes, and a
