@@ -101,6 +101,9 @@ RenderSettings parse_render_settings(const std::function<const char*(const char*
   apply(
       "GLPT_LIGHT_SIZE_DEG", settings.light_angular_radius_deg,
       [](const char* text) { return parse_float(text, 0.0f, 45.0f); }, "0..45 degrees");
+  apply(
+      "GLPT_SCALE", settings.trace_scale,
+      [](const char* text) { return parse_float(text, 0.25f, 1.0f); }, "0.25..1");
   apply("GLPT_VALIDATION", settings.validation, parse_bool, "0 or 1");
   apply("GLPT_SHADOWS", settings.shadows, parse_bool, "0 or 1");
   apply("GLPT_AO", settings.ambient_occlusion, parse_bool, "0 or 1");

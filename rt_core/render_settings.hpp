@@ -95,6 +95,13 @@ struct RenderSettings {
   // Angular radius of directional GL lights (soft shadows); GLPT_LIGHT_SIZE_DEG. Also sets the
   // default size of positional lights (light_radius).
   float light_angular_radius_deg = 1.0f;
+  // Fraction of the window's width and height the trace pass traces per frame; GLPT_SCALE,
+  // 0.25..1. Below 1 the pass traces one pixel per cell of a coarser grid (which pixel of its
+  // cell moves from frame to frame) and fills the others from traced neighbours on the same
+  // surface (joint bilateral upsampling guided by the full-resolution G-buffer), tracing a pixel
+  // itself where no neighbour matches. The G-buffer, and so edges and textures, stay at full
+  // resolution. Ignored by GLPT_REFERENCE.
+  float trace_scale = 1.0f;
   // GLPT_CLASSIFY_LOG=FILE: every classified draw of every frame appended to FILE as a JSON
   // line (scene/classify_log.hpp), in either mode. Empty: off.
   std::string classify_log;

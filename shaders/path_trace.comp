@@ -57,11 +57,14 @@ layout(set = 0, binding = GLPT_PT_BINDING_GBUFFER + GLPT_GBUFFER_MATERIAL0, rgba
 layout(set = 0, binding = GLPT_PT_BINDING_GBUFFER + GLPT_GBUFFER_MATERIAL1, rgba32ui)
     uniform readonly uimage2D gbuffer_material1;
 layout(set = 0, binding = GLPT_PT_BINDING_CHANNELS + GLPT_CHANNEL_DIRECT_DIFFUSE, rgba32f)
-    uniform writeonly image2D channel_direct;
+    uniform image2D channel_direct;
 layout(set = 0, binding = GLPT_PT_BINDING_CHANNELS + GLPT_CHANNEL_INDIRECT_DIFFUSE, rgba32f)
-    uniform writeonly image2D channel_indirect;
+    uniform image2D channel_indirect;
 layout(set = 0, binding = GLPT_PT_BINDING_CHANNELS + GLPT_CHANNEL_SPECULAR, rgba32f)
-    uniform writeonly image2D channel_specular;
+    uniform image2D channel_specular;
+layout(push_constant) uniform TracePassBlock {
+  uint trace_pass;  // GLPT_TRACE_PASS_*
+} push;
 layout(set = 0, binding = GLPT_PT_BINDING_TEXTURES) uniform sampler2D textures[GLPT_TRACE_TEXTURES];
 layout(set = 0, binding = GLPT_PT_BINDING_TEXTURES_1D)
     uniform sampler1D textures_1d[GLPT_TRACE_TEXTURES_OTHER];
@@ -416,10 +419,86 @@ Channels trace_path(Surface first, inout uint rng) {
 
 bool finite(vec3 v) { return !any(isnan(v)) && !any(isinf(v)); }
 
+// ---- GLPT_SCALE below 1: a coarse grid traced, the other pixels filled -----------------------
+
+// The cells of the coarse grid across the window.
+ivec2 grid_cells() { return ivec2(ceil(vec2(frame.image.xy) * frame.trace_grid.xy)); }
+
+// The pixel the grid pass traces for `cell` this frame: the cell covers [cell, cell + 1) / scale
+// of the window; trace_grid.zw moves the pixel within it from frame to frame, so accumulation and
+// the denoiser's history see every pixel traced in turn.
+ivec2 grid_pixel(ivec2 cell) {
+  ivec2 p = ivec2(floor((vec2(cell) + frame.trace_grid.zw) / frame.trace_grid.xy));
+  return min(p, ivec2(frame.image.xy) - 1);
+}
+
+// Fill pass: true when `pixel` needs no tracing of its own - the grid pass traced it, or it takes
+// this frame's radiance from traced pixels of the 3x3 cells around it that lie on the same
+// surface (the same record state and lighting, normals within 25 degrees, on the pixel's tangent
+// plane), weighted by a tent one cell wide (bilinear interpolation between the traced pixels
+// around it: exact for radiance that varies linearly; joint bilateral upsampling with the
+// full-resolution G-buffer as guide). The channels hold radiance with the
+// albedo divided out, so texture detail is not blurred. A pixel no neighbour matches (a thin
+// object, a silhouette) is traced.
+bool filled_from_grid(ivec2 pixel, uvec4 surface) {
+  ivec2 home = ivec2(floor((vec2(pixel) + 0.5) * frame.trace_grid.xy));
+  ivec2 cells = grid_cells();
+  bool fill = surface.x != 0u && frame.sampling.y > 0u &&
+              !(((surface.w & GLPT_GBUFFER_LIT) != 0u) && has_option(GLPT_OPTION_GL_PARITY)) &&
+              ((surface.w & GLPT_GBUFFER_LIT) != 0u || has_option(GLPT_OPTION_UNLIT_AO));
+  vec3 position = vec3(0.0), normal = vec3(0.0);
+  float footprint = 0.0;
+  if (fill) {
+    position = imageLoad(gbuffer_position, pixel).xyz;
+    normal = gbuffer_unpack_normal(surface.y);
+    footprint = frame.params.w * max(abs(position.z), 1e-20);
+  }
+  vec3 direct = vec3(0.0), indirect = vec3(0.0), specular = vec3(0.0);
+  float total = 0.0;
+  for (int dy = -1; dy <= 1; ++dy) {
+    for (int dx = -1; dx <= 1; ++dx) {
+      ivec2 cell = home + ivec2(dx, dy);
+      if (any(lessThan(cell, ivec2(0))) || any(greaterThanEqual(cell, cells))) continue;
+      ivec2 traced = grid_pixel(cell);
+      if (traced == pixel) return true;
+      if (!fill) continue;
+      uvec4 other = imageLoad(gbuffer_surface, traced);
+      if (other.x != surface.x || ((other.w ^ surface.w) & GLPT_GBUFFER_LIT) != 0u) continue;
+      float alike = dot(normal, gbuffer_unpack_normal(other.y));
+      if (alike < 0.9) continue;
+      vec3 offset = imageLoad(gbuffer_position, traced).xyz - position;
+      if (abs(dot(normal, offset)) > 0.1 * length(offset) + 2.0 * footprint) continue;
+      vec4 d = imageLoad(channel_direct, traced);
+      if (d.a <= 0.0) continue;
+      vec2 distance = abs(vec2(traced - pixel)) * frame.trace_grid.xy;
+      float w = max(1.0 - distance.x, 0.0) * max(1.0 - distance.y, 0.0);
+      if (w <= 0.0) continue;
+      direct += w * d.rgb;
+      indirect += w * imageLoad(channel_indirect, traced).rgb;
+      specular += w * imageLoad(channel_specular, traced).rgb;
+      total += w;
+    }
+  }
+  if (total <= 0.0) return false;
+  imageStore(channel_direct, pixel, vec4(direct / total, float(frame.sampling.y)));
+  imageStore(channel_indirect, pixel, vec4(indirect / total, 0.0));
+  imageStore(channel_specular, pixel, vec4(specular / total, 0.0));
+  return true;
+}
+
 void main() {
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
   uint dropped = 0u;
-  if (pixel.x < int(frame.image.x) && pixel.y < int(frame.image.y)) {
+  bool mine;
+  if (push.trace_pass == GLPT_TRACE_PASS_GRID) {
+    mine = all(lessThan(pixel, grid_cells()));
+    pixel = grid_pixel(pixel);
+  } else {
+    mine = pixel.x < int(frame.image.x) && pixel.y < int(frame.image.y);
+  }
+  if (mine && push.trace_pass == GLPT_TRACE_PASS_FILL)
+    mine = !filled_from_grid(pixel, imageLoad(gbuffer_surface, pixel));
+  if (mine) {
     uint pixel_index = uint(pixel.y) * frame.image.x + uint(pixel.x);
     uvec4 surface = imageLoad(gbuffer_surface, pixel);
     uint samples = frame.sampling.y;

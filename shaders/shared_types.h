@@ -52,6 +52,12 @@ using mat4 = glm::mat4;
 #define GLPT_TRACE_TARGET_CUBE 3u
 #define GLPT_TRACE_UNITS 4
 
+// path_trace.comp's push constant: which pixels a dispatch traces. GLPT_SCALE below 1 dispatches
+// the grid pass over the coarse grid, then the fill pass over the window.
+#define GLPT_TRACE_PASS_ALL 0u   // every pixel
+#define GLPT_TRACE_PASS_GRID 1u  // one pixel per cell of the coarse grid (trace_grid)
+#define GLPT_TRACE_PASS_FILL 2u  // the others: from traced neighbours, or traced where none fits
+
 // composite.comp, set 0
 #define GLPT_CO_BINDING_FRAME 0         // uniform FrameUniforms
 #define GLPT_CO_BINDING_STATES 1        // GpuTraceState[]
@@ -242,6 +248,9 @@ struct FrameUniforms {
   // emits), w: unused
   uvec4 options;
   vec4 environment;  // rgb: radiance of rays that miss (GLPT_OPTION_ENVIRONMENT), a: unused
+  // GLPT_SCALE below 1 (path_trace.comp's grid and fill passes): x, y: the coarse grid's cells
+  // per pixel (the scale), z, w: where in its cell this frame's traced pixel lies, [0, 1)
+  vec4 trace_grid;
 };
 
 // The denoiser's view of one record state (TraceState's history fields).
@@ -299,7 +308,7 @@ static_assert(sizeof(GpuEmitter) == 96);
 static_assert(sizeof(GpuClipPlanes) == 112);
 static_assert(sizeof(GpuLight) == 112);
 static_assert(sizeof(GpuTraceState) == 112);
-static_assert(sizeof(FrameUniforms) == 80);
+static_assert(sizeof(FrameUniforms) == 96);
 static_assert(sizeof(GpuCounters) == 16);
 static_assert(sizeof(GpuStateHistory) == 160);
 static_assert(sizeof(DenoiseGuide) == 32);

@@ -18,6 +18,9 @@ constexpr std::array kFlags = {
                 "samples per pixel per frame, 1..1024 (default 1)"},
     QualityFlag{"--bounces", "GLPT_BOUNCES", FlagValue::kCount, "N",
                 "bounces after the primary hit, 0..16 (default 1; 0 = direct light)"},
+    QualityFlag{"--scale", "GLPT_SCALE", FlagValue::kNumber, "S",
+                "trace S x S of the pixels per frame, 0.25..1 (default 1), the rest filled from "
+                "traced neighbours on the same surface"},
     QualityFlag{"--shadows", "GLPT_SHADOWS", FlagValue::kChoice, "0|1",
                 "shadow rays (default 1); --shadows 0 --ao 0 --bounces 0 is GL's own lighting"},
     QualityFlag{"--ao", "GLPT_AO", FlagValue::kChoice, "0|1",

@@ -40,10 +40,10 @@ static_assert(GLPT_GBUFFER_ATTACHMENTS == 4 && GLPT_CHANNELS == 3);
 }  // namespace
 
 PathTracePass::PathTracePass(const VulkanDevice& device)
-    : device_(device), pipeline_(device, path_trace_spv, kBindings) {}
+    : device_(device), pipeline_(device, path_trace_spv, kBindings, sizeof(uint32_t)) {}
 
 void PathTracePass::record(VkCommandBuffer cmd, const PathTraceResources& resources, uint32_t width,
-                           uint32_t height) const {
+                           uint32_t height, uint32_t grid_width, uint32_t grid_height) const {
   const VkDescriptorSet set = pipeline_.descriptor_set();
   auto scene_info = make_info<VkWriteDescriptorSetAccelerationStructureKHR>(
       VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET_ACCELERATION_STRUCTURE_KHR);
@@ -101,7 +101,21 @@ void PathTracePass::record(VkCommandBuffer cmd, const PathTraceResources& resour
       texture_write(GLPT_PT_BINDING_TEXTURES_3D, resources.textures_3d),
       texture_write(GLPT_PT_BINDING_TEXTURES_CUBE, resources.textures_cube),
   };
-  pipeline_.update_and_dispatch(device_.handle(), cmd, writes, width, height);
+  pipeline_.update(device_.handle(), writes);
+  if (grid_width >= width && grid_height >= height) {
+    const uint32_t pass = GLPT_TRACE_PASS_ALL;
+    pipeline_.dispatch(cmd, &pass, sizeof pass, width, height);
+    return;
+  }
+  const uint32_t grid_pass = GLPT_TRACE_PASS_GRID;
+  pipeline_.dispatch(cmd, &grid_pass, sizeof grid_pass, grid_width, grid_height);
+  // The fill pass reads the channels the grid pass wrote.
+  VkMemoryBarrier memory{VK_STRUCTURE_TYPE_MEMORY_BARRIER, nullptr, VK_ACCESS_SHADER_WRITE_BIT,
+                         VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT};
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                       VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &memory, 0, nullptr, 0, nullptr);
+  const uint32_t fill_pass = GLPT_TRACE_PASS_FILL;
+  pipeline_.dispatch(cmd, &fill_pass, sizeof fill_pass, width, height);
 }
 
 }  // namespace glpt::rt

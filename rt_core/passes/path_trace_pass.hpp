@@ -14,14 +14,14 @@ namespace glpt::rt {
 
 struct PathTraceResources {
   VkAccelerationStructureKHR scene = VK_NULL_HANDLE;
-  const GpuBuffer* instances = nullptr;  // gpu::GpuInstance[]
-  const GpuBuffer* lights = nullptr;     // gpu::GpuLight[]
-  const GpuBuffer* emitters = nullptr;   // gpu::GpuEmitter[]
-  const GpuBuffer* clip_planes = nullptr;  // gpu::GpuClipPlanes[]
-  const GpuBuffer* states = nullptr;     // gpu::GpuTraceState[]
-  const GpuBuffer* counters = nullptr;   // gpu::GpuCounters, zeroed by the caller
-  const GpuBuffer* frame = nullptr;      // gpu::FrameUniforms
-  std::array<VkImageView, 4> gbuffer{};  // gbuffer_layout.h attachments
+  const GpuBuffer* instances = nullptr;               // gpu::GpuInstance[]
+  const GpuBuffer* lights = nullptr;                  // gpu::GpuLight[]
+  const GpuBuffer* emitters = nullptr;                // gpu::GpuEmitter[]
+  const GpuBuffer* clip_planes = nullptr;             // gpu::GpuClipPlanes[]
+  const GpuBuffer* states = nullptr;                  // gpu::GpuTraceState[]
+  const GpuBuffer* counters = nullptr;                // gpu::GpuCounters, zeroed by the caller
+  const GpuBuffer* frame = nullptr;                   // gpu::FrameUniforms
+  std::array<VkImageView, 4> gbuffer{};               // gbuffer_layout.h attachments
   std::array<VkImageView, GLPT_CHANNELS> channels{};  // written
   // Combined image samplers of the texture tables, one per target (every entry valid: dummies
   // where unused).
@@ -35,12 +35,14 @@ class PathTracePass {
  public:
   explicit PathTracePass(const VulkanDevice& device);
 
-  // Points the descriptor set at `resources` and records the dispatch over width x height
-  // pixels. Rewriting the set every frame is cheap and means buffers may be re-created freely;
-  // it is safe because the previous use of the set has completed (the tracer waits for its
-  // previous trace before recording the next).
+  // Points the descriptor set at `resources` and records the dispatches over width x height
+  // pixels: one over every pixel, or, when `grid_width` x `grid_height` (the coarse grid of
+  // FrameUniforms::trace_grid) is smaller than the window, the grid pass over its cells and then
+  // the fill pass over the window. Rewriting the set every frame is cheap and means buffers may
+  // be re-created freely; it is safe because the previous use of the set has completed (the
+  // tracer waits for its previous trace before recording the next).
   void record(VkCommandBuffer cmd, const PathTraceResources& resources, uint32_t width,
-              uint32_t height) const;
+              uint32_t height, uint32_t grid_width, uint32_t grid_height) const;
 
  private:
   const VulkanDevice& device_;

@@ -43,6 +43,8 @@ RenderSettings sanitized(RenderSettings settings) {
   settings.max_accumulated = std::max(settings.max_accumulated, 1u);
   if (!std::isfinite(settings.light_angular_radius_deg)) settings.light_angular_radius_deg = 0.0f;
   settings.light_angular_radius_deg = std::clamp(settings.light_angular_radius_deg, 0.0f, 45.0f);
+  if (!(settings.trace_scale >= 0.25f)) settings.trace_scale = 0.25f;  // NaN too
+  settings.trace_scale = std::min(settings.trace_scale, 1.0f);
   return settings;
 }
 
@@ -480,6 +482,21 @@ void PathTracer::trace(const TraceScene& scene, const TraceTargets& targets, Fra
   uniforms.options = glm::uvec4(options_bits(settings_) | (any_sky ? GLPT_OPTION_SKY : 0u),
                                 static_cast<uint32_t>(settings_.light_choice), emitter_count, 0u);
   uniforms.environment = scene.clear_color;
+  // GLPT_SCALE: the coarse grid the trace pass traces (none for the reference, whose every
+  // pixel is traced); which pixel of each cell moves from frame to frame along a Halton sequence.
+  const float scale = settings_.reference_samples > 0 ? 1.0f : settings_.trace_scale;
+  const uint64_t grid_index = (seeded_by_frame_index_ ? seed_frame_index_ : frame_number_) + 1;
+  uniforms.trace_grid = glm::vec4(scale, scale, halton(static_cast<uint32_t>(grid_index), 2),
+                                  halton(static_cast<uint32_t>(grid_index), 3));
+  // One cell more than the shader counts (ceil of the same float product) keeps rounding on the
+  // safe side: the shader skips cells beyond its own count.
+  const uint32_t grid_width =
+      scale >= 1.0f ? scene.width
+                    : static_cast<uint32_t>(std::ceil(static_cast<float>(scene.width) * scale)) + 1;
+  const uint32_t grid_height =
+      scale >= 1.0f
+          ? scene.height
+          : static_cast<uint32_t>(std::ceil(static_cast<float>(scene.height) * scale)) + 1;
   frame_uniforms_.write(&uniforms, sizeof uniforms);
   const gpu::GpuCounters zero_counters{};
   counters_.write(&zero_counters, sizeof zero_counters);
@@ -549,7 +566,7 @@ void PathTracer::trace(const TraceScene& scene, const TraceTargets& targets, Fra
   };
   if (!denoise) {
     trace_ticket_ = device_->submit([&](VkCommandBuffer cmd) {
-      trace_pass_.record(cmd, trace, scene.width, scene.height);
+      trace_pass_.record(cmd, trace, scene.width, scene.height, grid_width, grid_height);
       barrier(cmd);
       composite_pass_.record(cmd, composite, scene.width, scene.height);
     });
@@ -562,7 +579,8 @@ void PathTracer::trace(const TraceScene& scene, const TraceTargets& targets, Fra
     resources.surface = targets.gbuffer->image(GLPT_GBUFFER_SURFACE).view();
     for (int c = 0; c < GLPT_CHANNELS; ++c) resources.channels[c] = channels_[c].view();
     unreported_.push_back({device_->submit([&](VkCommandBuffer cmd) {
-                             trace_pass_.record(cmd, trace, scene.width, scene.height);
+                             trace_pass_.record(cmd, trace, scene.width, scene.height, grid_width,
+                                                grid_height);
                            }),
                            &FrameStats::trace_ms});
     unreported_.push_back({device_->submit([&](VkCommandBuffer cmd) {

@@ -964,4 +964,71 @@ TEST(LightTransport, ANonFiniteSampleIsDroppedAndCountedNotShownAsBlack) {
     }
 }
 
+// ---- GLPT_SCALE ----------------------------------------------------------------------------------
+
+TEST(LightTransport, ATraceScaleOfAHalfTracesAQuarterOfThePixelsAndKeepsEdgesAndThinObjects) {
+  // The plane under a point light (direct light only: every sample is exact, so the images of the
+  // two scales differ only by what the fill pass makes of the untraced pixels), a square casting
+  // a sharp shadow twice its size onto the plane, and a bar a pixel or two high on its own plane:
+  // none of its pixels' neighbours on the grid lies on its surface, so the fill pass traces them.
+  auto scene = [] {
+    camera();
+    material(glm::vec3(1.0f));
+    inverse_square_light(GL_LIGHT0, {0.0f, 0.0f, -3.0f}, glm::vec3(3.0f));
+    facing_plane(-5.0f, 3.0f);
+    quad({-0.4f, -0.4f, -4.0f}, {0.4f, -0.4f, -4.0f}, {0.4f, 0.4f, -4.0f}, {-0.4f, 0.4f, -4.0f});
+    quad({-1.5f, -1.65f, -4.5f}, {1.5f, -1.65f, -4.5f}, {1.5f, -1.55f, -4.5f},
+         {-1.5f, -1.55f, -4.5f});
+  };
+  Settings settings = path({{"GLPT_LIGHT_RADIUS", "0"},
+                            {"GLPT_BOUNCES", "0"},
+                            {"GLPT_AO", "0"},
+                            {"GLPT_DENOISER", "off"}});
+  glpt::rt::FrameStats full_stats, half_stats;
+  const Image full = render(settings, scene, 1, "full", &full_stats);
+  settings.push_back({"GLPT_SCALE", "0.5"});
+  const Image half = render(settings, scene, 1, "half", &half_stats);
+  std::printf("rays: scale 1 %llu, scale 0.5 %llu\n",
+              static_cast<unsigned long long>(full_stats.rays),
+              static_cast<unsigned long long>(half_stats.rays));
+  ASSERT_GT(full_stats.rays, 0u);
+  // A quarter of the pixels, plus those the fill pass traces itself (the bar, silhouettes).
+  EXPECT_LT(static_cast<double>(half_stats.rays), 0.35 * static_cast<double>(full_stats.rays));
+  // Away from edges the fill pass interpolates a smooth field: within 1 % + 1 level. Edges (of
+  // geometry or shadow: pixels within 2 of a jump of 10 % in the scale-1 image) may move by up
+  // to a cell, and the last row and column extrapolate from one side.
+  auto jump = [&](int x, int y) {
+    for (int dy = -2; dy <= 2; ++dy)
+      for (int dx = -2; dx <= 2; ++dx) {
+        const int u = x + dx, v = y + dy;
+        if (u < 1 || v < 1 || u >= kSize || v >= kSize) continue;
+        for (const auto& [a, b] : {std::pair{full.at(u, v), full.at(u - 1, v)},
+                                  std::pair{full.at(u, v), full.at(u, v - 1)}})
+          if (std::abs(a - b) > 0.1 * std::max(a, b) + 2) return true;
+      }
+    return false;
+  };
+  int differing = 0, differing_smooth = 0, bar_pixels = 0;
+  for (int y = 0; y < kSize; ++y)
+    for (int x = 0; x < kSize; ++x) {
+      const int a = full.at(x, y), b = half.at(x, y);
+      if (std::abs(a - b) > 0.01 * a + 1) {
+        ++differing;
+        const bool border = x == 0 || y == 0 || x == kSize - 1 || y == kSize - 1;
+        if (!border && !jump(x, y)) ++differing_smooth;
+      }
+      // The bar: nearer than the plane, lit brighter; every one of its pixels as at scale 1.
+      const glm::vec3 p = on_plane(x, y, -4.5f);
+      if (p.y > -1.65f && p.y < -1.55f && std::abs(p.x) < 1.4f) {
+        ++bar_pixels;
+        expect_close(b, a, 0.01, 1.0, "bar pixel " + std::to_string(x) + "," + std::to_string(y));
+      }
+    }
+  std::printf("pixels beyond 1 %% + 1 level: %d of %d, %d of them away from edges\n", differing,
+              kSize * kSize, differing_smooth);
+  EXPECT_GT(bar_pixels, 20);
+  EXPECT_LE(differing_smooth, kSize * kSize / 200);
+  EXPECT_LE(differing, kSize * kSize / 20);
+}
+
 }  // namespace
