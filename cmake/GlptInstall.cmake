@@ -4,6 +4,7 @@
 #   P/lib/glpt/libGL.so.1, libEGL.so.1    private: never where they would replace the system's
 #   P/share/man/man1/glpt*.1              from the same text as --help (cmake/help_to_man.py)
 #   P/share/bash-completion/completions/glpt, glpt-replay
+#   P/share/glpt/pareto_plot.py           glpt tune's plot (python3-matplotlib)
 #   P/lib/cmake/glpt/                     find_package(glpt): glpt::glpt, glpt::glpt-replay,
 #                                         glpt::GL and glpt_add_golden_test
 #
@@ -41,6 +42,9 @@ install(FILES ${PROJECT_SOURCE_DIR}/replay/cli/glpt.bash-completion
 install(FILES ${PROJECT_SOURCE_DIR}/replay/cli/glpt.bash-completion
         DESTINATION share/bash-completion/completions RENAME glpt-replay)
 
+# `glpt tune`'s plot (python3-matplotlib, recommended by the package).
+install(PROGRAMS ${PROJECT_SOURCE_DIR}/replay/cli/pareto_plot.py DESTINATION share/glpt)
+
 # The CMake package.
 install(EXPORT glptTargets NAMESPACE glpt:: DESTINATION ${GLPT_INSTALL_CMAKEDIR})
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/glptConfig.cmake.in
@@ -74,6 +78,7 @@ set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 # libEGL.so.1 is glpt's own, next to libGL.so.1.
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS_PRIVATE_DIRS ${CMAKE_BINARY_DIR}/gl_shim)
 set(CPACK_DEBIAN_PACKAGE_DEPENDS "mesa-vulkan-drivers (>= 24.1)")
-set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "libosmesa6 (>= 24.1), apitrace, xvfb, xauth, bash-completion")
+set(CPACK_DEBIAN_PACKAGE_RECOMMENDS
+    "libosmesa6 (>= 24.1), apitrace, xvfb, xauth, bash-completion, python3-matplotlib")
 set(CPACK_DEBIAN_PACKAGE_SUGGESTS "vulkan-validationlayers")
 include(CPack)

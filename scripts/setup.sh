@@ -52,7 +52,9 @@ build_pkgs=(cmake ninja-build g++ clang pkg-config python3 clang-format
 # Running and testing: Xvfb, real programs (glxgears, xscreensaver's GL hacks, piglit's GL 1.x
 # tests), apitrace, Vulkan tools and validation layers.
 run_pkgs=(xvfb xauth mesa-utils x11-utils libgl-dev libegl-dev vulkan-tools vulkan-validationlayers
-          xscreensaver-gl xscreensaver-gl-extra piglit apitrace)
+          xscreensaver-gl xscreensaver-gl-extra piglit apitrace
+          python3-matplotlib  # glpt tune's and bench/bench_tradeoffs.sh's plots
+          libembree-dev)      # bench/ray_ceiling: Embree, the CPU's ray-tracing ceiling
 $SUDO apt-get install -y -q --no-install-recommends "${build_pkgs[@]}" "${run_pkgs[@]}"
 
 # Every Mesa package from backports: lavapipe with ray query, and real Mesa GL (GLX, EGL, OSMesa)

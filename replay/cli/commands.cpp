@@ -15,6 +15,8 @@ std::span<const Command> commands() {
       Command{"replay", "replay an apitrace trace through glpt (glpt-replay)", replay_help,
               replay_main},
       Command{"diff", "compare images: FLIP, PSNR, heat maps", diff_help, diff_with_std_streams},
+      Command{"tune", "measure every quality setting's time and error on a trace", tune_help,
+              tune_main},
       Command{"doctor", "check what glpt needs on this machine, and say what to install",
               doctor_help, doctor_main},
   };

@@ -33,6 +33,9 @@ int diff_main(std::span<const std::string> args);
 // The same, with its output streams given (for tests).
 int diff_main(std::span<const std::string> args, std::ostream& out, std::ostream& err);
 
+std::string tune_help();
+int tune_main(std::span<const std::string> args);
+
 std::string doctor_help();
 int doctor_main(std::span<const std::string> args);
 

@@ -20,4 +20,18 @@ double psnr_rgb8(const Rgb8View& a, const Rgb8View& b) {
   return 10.0 * std::log10(255.0 * 255.0 / mse);
 }
 
+double relmse_rgb8(const Rgb8View& test, const Rgb8View& reference) {
+  const size_t pixels = static_cast<size_t>(test.width) * test.height;
+  if (pixels == 0) return 0.0;
+  double sum = 0.0;
+  for (size_t i = 0; i < pixels; ++i) {
+    for (int c = 0; c < 3; ++c) {
+      const double t = test.pixels[i * test.channels + c] / 255.0;
+      const double r = reference.pixels[i * reference.channels + c] / 255.0;
+      sum += (t - r) * (t - r) / (r * r + 0.01);
+    }
+  }
+  return sum / (3.0 * static_cast<double>(pixels));
+}
+
 }  // namespace glpt::diff
