@@ -1,9 +1,11 @@
 /* lit_scene: a textured, lit GL 1.x scene for bench_light_transport.sh.
  *
- * usage: lit_scene [--lights N] [--triangles T] [--frames F] [--size WxH]
+ * usage: lit_scene [--lights N] [--triangles T] [--frames F] [--size WxH] [--pan DEG]
  *
  * A textured floor and a grid of 16 textured spheres (display lists, at least T triangles in all,
- * default 50 000) in a GLX window, drawn F times (default 12) with nothing changing, then exits.
+ * default 50 000) in a GLX window, drawn F times (default 12) with nothing changing, then exits;
+ * --pan DEG turns the camera by DEG degrees per frame about its vertical axis (a moving camera
+ * over a still world; default 0).
  * --lights N (default 1): N positional GL lights above the scene. GL allows 8 per state, so
  * with more than 8 each sphere is drawn with 8 of them (sphere i: lights i*7, i*7+1, ... mod N)
  * and the floor with the first 8: every light lights something, as in a scene of many lamps.
@@ -51,14 +53,17 @@ static void sphere(float radius, int rings, int segments) {
 
 int main(int argc, char** argv) {
   int lights = 1, triangles = 50000, frames = 12, width = 320, height = 240;
+  float pan = 0.0f; /* degrees the camera turns about its vertical axis per frame */
   for (int i = 1; i < argc; ++i) {
     if (!strcmp(argv[i], "--lights") && i + 1 < argc) lights = atoi(argv[++i]);
     else if (!strcmp(argv[i], "--triangles") && i + 1 < argc) triangles = atoi(argv[++i]);
     else if (!strcmp(argv[i], "--frames") && i + 1 < argc) frames = atoi(argv[++i]);
+    else if (!strcmp(argv[i], "--pan") && i + 1 < argc) pan = (float)atof(argv[++i]);
     else if (!strcmp(argv[i], "--size") && i + 1 < argc) {
       if (sscanf(argv[++i], "%dx%d", &width, &height) != 2) return 2;
     } else {
-      fprintf(stderr, "usage: lit_scene [--lights N] [--triangles T] [--frames F] [--size WxH]\n");
+      fprintf(stderr,
+              "usage: lit_scene [--lights N] [--triangles T] [--frames F] [--size WxH] [--pan DEG]\n");
       return 2;
     }
   }
@@ -123,6 +128,7 @@ int main(int argc, char** argv) {
     glMatrixMode(GL_MODELVIEW);
     glLoadIdentity();
     glRotatef(20.0f, 1, 0, 0);
+    glRotatef(pan * (float)frame, 0, 1, 0);
     glTranslatef(0, -2.0f, 0);
     glClearColor(0.1f, 0.1f, 0.15f, 1);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
