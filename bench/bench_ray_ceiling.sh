@@ -82,7 +82,8 @@ field() { tr ' ' '\n' | sed -n "s/^$1=//p"; }
 mesa=$(dpkg-query -W -f='${Version}' mesa-vulkan-drivers 2>/dev/null || echo unknown)
 echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'), mesa-vulkan-drivers $mesa"
 echo "command: $0 --frames $frames --size $size --rounds $rounds --reps $reps --scenes \"$scenes\""
-declare -A g=() rq=() flat=() em=() info=()
+ratio() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.4f", (b > 0 ? a / b : 0) }'; }
+declare -A g=() rq=() flat=() em=() g_rq=() g_em=() rq_em=() info=()
 for ((round = 0; round < rounds; ++round)); do
   for scene in $scenes; do
     dump=$work/$scene.dump
@@ -94,21 +95,25 @@ for ((round = 0; round < rounds; ++round)); do
     e=$(field embree_mrays <<<"$result")
     echo "round $round $scene: glpt $glpt_rate Mrays/s (median of $frames_counted frames) | ray query $r | flat $f | Embree $e"
     g[$scene]+="$glpt_rate " rq[$scene]+="$r " flat[$scene]+="$f " em[$scene]+="$e "
-    info[$scene]="$(field triangles <<<"$result") triangles, $(field instances <<<"$result") instances, $(field glpt_rays <<<"$result") glpt rays / $(field secondary_rays <<<"$result") microbenchmark rays"
+    # Ratios within a round: both sides saw the same machine load.
+    g_rq[$scene]+="$(ratio "$glpt_rate" "$r") " g_em[$scene]+="$(ratio "$glpt_rate" "$e") "
+    rq_em[$scene]+="$(ratio "$r" "$e") "
+    info[$scene]="$(field triangles <<<"$result") tris, $(field instances <<<"$result") inst, rays $(field glpt_rays <<<"$result")/$(field secondary_rays <<<"$result")"
   done
 done
 echo
-echo "Mrays/s, medians over $rounds rounds (glpt: inside the frame; others: the same scene's rays)"
-printf '| %-7s | %-58s | %8s | %9s | %8s | %9s | %8s | %10s | %9s |\n' scene "scene size" glpt \
-  "ray query" glpt/rq "rq (flat)" Embree glpt/Embree rq/Embree
-printf '|%s|\n' "---------|------------------------------------------------------------|----------|-----------|----------|-----------|----------|------------|-----------"
+echo "Mrays/s and ratios: medians over $rounds rounds (ratios taken within each round)."
+echo "glpt: inside the frame (rays / trace_ms); rq: bare ray query over glpt's TLAS; rq flat: one"
+echo "BLAS per mask; rays: glpt's frame / the microbenchmark's secondary rays"
+printf '| %-7s | %-38s | %7s | %7s | %7s | %7s | %7s | %11s | %9s |\n' scene "scene" glpt rq \
+  glpt/rq "rq flat" Embree glpt/Embree rq/Embree
+echo "|---------|----------------------------------------|---------|---------|---------|---------|---------|-------------|-----------|"
 for scene in $scenes; do
-  mg=$(median_of <<<"${g[$scene]}") mr=$(median_of <<<"${rq[$scene]}")
-  mf=$(median_of <<<"${flat[$scene]}") me=$(median_of <<<"${em[$scene]}")
-  printf '| %-7s | %-58s | %8.3f | %9.3f | %8.2f | %9.3f | %8.2f | %10.3f | %9.3f |\n' "$scene" \
-    "${info[$scene]}" "$mg" "$mr" "$(awk -v a="$mg" -v b="$mr" 'BEGIN{print b > 0 ? a / b : 0}')" \
-    "$mf" "$me" "$(awk -v a="$mg" -v b="$me" 'BEGIN{print b > 0 ? a / b : 0}')" \
-    "$(awk -v a="$mr" -v b="$me" 'BEGIN{print b > 0 ? a / b : 0}')"
+  printf '| %-7s | %-38s | %7.3f | %7.3f | %7.2f | %7.3f | %7.2f | %11.3f | %9.3f |\n' "$scene" \
+    "${info[$scene]}" "$(median_of <<<"${g[$scene]}")" "$(median_of <<<"${rq[$scene]}")" \
+    "$(median_of <<<"${g_rq[$scene]}")" "$(median_of <<<"${flat[$scene]}")" \
+    "$(median_of <<<"${em[$scene]}")" "$(median_of <<<"${g_em[$scene]}")" \
+    "$(median_of <<<"${rq_em[$scene]}")"
 done
 echo
 for scene in $scenes; do
