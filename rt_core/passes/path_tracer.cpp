@@ -498,6 +498,9 @@ void PathTracer::trace(const TraceScene& scene, const TraceTargets& targets, Fra
           ? scene.height
           : static_cast<uint32_t>(std::ceil(static_cast<float>(scene.height) * scale)) + 1;
   frame_uniforms_.write(&uniforms, sizeof uniforms);
+  if (frame_samples_ > 0 && scene_dump_.wanted())
+    scene_dump_.capture(scene, scene_.tlas_instances, blas_cache_, light_setup.lights, uniforms,
+                        frame_number_);
   const gpu::GpuCounters zero_counters{};
   counters_.write(&zero_counters, sizeof zero_counters);
   stats.upload_ms = blas.upload_ms + upload_timer.elapsed_ms();
@@ -618,6 +621,7 @@ void PathTracer::finish_frame(FrameStats& stats) {
   counted_rays_ = counted_non_finite_ = 0;
   for (const auto& [ticket, member] : unreported_) stats.*member += device_->take_device_ms(ticket);
   unreported_.clear();
+  scene_dump_.finish(stats);
   // Nothing pending uses a BLAS any more.
   blas_cache_.evict_unused(frame_number_);
 }

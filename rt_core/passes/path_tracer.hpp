@@ -24,6 +24,7 @@
 #include "rt_core/render_settings.hpp"
 #include "rt_core/scene/frame_signature.hpp"
 #include "rt_core/scene/light_setup.hpp"
+#include "rt_core/scene/scene_dump_capture.hpp"
 #include "rt_core/scene/trace_scene.hpp"
 #include "rt_core/vk/vk_device.hpp"
 
@@ -161,7 +162,8 @@ class PathTracer {
   uint64_t frame_number_ = 0;
   bool seeded_by_frame_index_ = false;  // start_independent_frame was called
   uint64_t seed_frame_index_ = 0;
-  SceneSetup scene_;  // kept to reuse its vectors' capacity
+  SceneSetup scene_;             // kept to reuse its vectors' capacity
+  SceneDumpCapture scene_dump_;  // GLPT_DUMP_SCENE
   // Submissions of this frame not yet reported: their device time goes to the member of
   // FrameStats named here.
   std::vector<std::pair<VulkanDevice::Ticket, double FrameStats::*>> unreported_;

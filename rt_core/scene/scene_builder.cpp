@@ -473,6 +473,9 @@ void build_trace_scene(const rec::FrameRecord& record, const rec::DrawableConfig
   scene.states.resize(record.states.size());
 
   const MainCamera& camera = classification->camera;
+  scene.camera_projection = camera.projection;
+  scene.camera_viewport = camera.viewport;
+  scene.camera_valid = camera.valid;
   if (camera.valid && is_perspective_projection(camera.projection) && camera.viewport[3] > 0 &&
       camera.projection[1][1] != 0.0f)
     scene.pixel_spread =

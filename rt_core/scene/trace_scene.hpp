@@ -186,6 +186,11 @@ struct TraceScene {
   // The size of one pixel in eye-space units under a parallel main camera (0 for perspective):
   // the denoiser's depth tolerance.
   float pixel_size_parallel = 0.0f;
+  // The main camera (classify.hpp: MainCamera) as found, for GLPT_DUMP_SCENE
+  // (scene_dump_capture.hpp); the tracer itself does not use it.
+  glm::mat4 camera_projection{1.0f};
+  std::array<int32_t, 4> camera_viewport{0, 0, 0, 0};
+  bool camera_valid = false;
 };
 
 }  // namespace glpt::rt
