@@ -964,7 +964,8 @@ TEST(LightTransport, ANonFiniteSampleIsDroppedAndCountedNotShownAsBlack) {
     }
 }
 
-// ---- GLPT_SCALE ----------------------------------------------------------------------------------
+// ---- GLPT_SCALE
+// ----------------------------------------------------------------------------------
 
 TEST(LightTransport, ATraceScaleOfAHalfTracesAQuarterOfThePixelsAndKeepsEdgesAndThinObjects) {
   // The plane under a point light (direct light only: every sample is exact, so the images of the
@@ -1003,7 +1004,7 @@ TEST(LightTransport, ATraceScaleOfAHalfTracesAQuarterOfThePixelsAndKeepsEdgesAnd
         const int u = x + dx, v = y + dy;
         if (u < 1 || v < 1 || u >= kSize || v >= kSize) continue;
         for (const auto& [a, b] : {std::pair{full.at(u, v), full.at(u - 1, v)},
-                                  std::pair{full.at(u, v), full.at(u, v - 1)}})
+                                   std::pair{full.at(u, v), full.at(u, v - 1)}})
           if (std::abs(a - b) > 0.1 * std::max(a, b) + 2) return true;
       }
     return false;

@@ -36,6 +36,7 @@ TEST(RenderSettings, ReadsValidValues) {
                                    {"GLPT_ACCUMULATE", "0"},
                                    {"GLPT_MAX_SPP", "64"},
                                    {"GLPT_LIGHT_SIZE_DEG", "2.5"},
+                                   {"GLPT_SCALE", "0.75"},
                                    {"GLPT_VALIDATION", "1"}},
                                   &warning);
   EXPECT_TRUE(warning.empty()) << warning;
@@ -44,6 +45,7 @@ TEST(RenderSettings, ReadsValidValues) {
   EXPECT_FALSE(settings.accumulate);
   EXPECT_EQ(settings.max_accumulated, 64u);
   EXPECT_EQ(settings.light_angular_radius_deg, 2.5f);
+  EXPECT_EQ(settings.trace_scale, 0.75f);
   EXPECT_TRUE(settings.validation);
 }
 
@@ -53,15 +55,17 @@ TEST(RenderSettings, BadValuesKeepDefaultsAndWarnOnce) {
                                    {"GLPT_BOUNCES", "-1"},
                                    {"GLPT_ACCUMULATE", "yes"},
                                    {"GLPT_MAX_SPP", "x"},
-                                   {"GLPT_LIGHT_SIZE_DEG", "nan"}},
+                                   {"GLPT_LIGHT_SIZE_DEG", "nan"},
+                                   {"GLPT_SCALE", "0.1"}},
                                   &warning);
   EXPECT_EQ(settings.samples_per_pixel, 1u);
   EXPECT_EQ(settings.bounces, 1u);
   EXPECT_TRUE(settings.accumulate);
   EXPECT_EQ(settings.max_accumulated, 4096u);
   EXPECT_EQ(settings.light_angular_radius_deg, 1.0f);
-  for (const char* name :
-       {"GLPT_SPP", "GLPT_BOUNCES", "GLPT_ACCUMULATE", "GLPT_MAX_SPP", "GLPT_LIGHT_SIZE_DEG"}) {
+  EXPECT_EQ(settings.trace_scale, 1.0f);
+  for (const char* name : {"GLPT_SPP", "GLPT_BOUNCES", "GLPT_ACCUMULATE", "GLPT_MAX_SPP",
+                           "GLPT_LIGHT_SIZE_DEG", "GLPT_SCALE"}) {
     EXPECT_NE(warning.find(name), std::string::npos) << name << " missing from: " << warning;
   }
   EXPECT_EQ(warning.find('\n'), std::string::npos);  // one line
