@@ -68,14 +68,22 @@ record() {
   [ -s "$trace" ] || { echo "bench_tradeoffs: recording $name failed (see $work/traces/$name.log)" >&2; exit 1; }
 }
 
-frames_of=()
 for scene in $scenes; do
   case $scene in
     glxgears)
-      gcc -shared -fPIC -O2 -o "$work/detclock.so" "$here/detclock.c"
-      # glxgears runs until stopped: 4 s on llvmpipe are hundreds of frames (the tune uses 32).
-      record glxgears env LD_PRELOAD="$work/detclock.so" DETCLOCK_STEP_US=2000 \
-        timeout -s INT 4 /usr/bin/glxgears -geometry 300x300
+      # glxgears runs until stopped: 2 s on llvmpipe are hundreds of frames (the tune uses 32).
+      # Its clock is detclock's, preloaded with apitrace's GLX wrapper (apitrace's launcher
+      # would replace LD_PRELOAD).
+      trace=$work/traces/glxgears.trace
+      if [ ! -s "$trace" ]; then
+        gcc -shared -fPIC -O2 -o "$work/detclock.so" "$here/detclock.c"
+        wrapper=$(ls /usr/lib/*/apitrace/wrappers/glxtrace.so 2>/dev/null | head -1)
+        [ -n "$wrapper" ] || { echo "bench_tradeoffs: apitrace's glxtrace.so not found" >&2; exit 2; }
+        echo "recording glxgears (detclock, $wrapper)"
+        LD_PRELOAD="$work/detclock.so:$wrapper" TRACE_FILE="$trace" DETCLOCK_STEP_US=2000 \
+          timeout -s INT 2 /usr/bin/glxgears -geometry 300x300 >"$work/traces/glxgears.log" 2>&1 || true
+        [ -s "$trace" ] || { echo "bench_tradeoffs: recording glxgears failed" >&2; exit 1; }
+      fi
       ;;
     lit_scene) record lit_scene "$lit_scene" --frames 40 --size 320x240 --pan 0.5 ;;
     lights100) record lights100 "$lit_scene" --frames 40 --size 320x240 --pan 0.5 --lights 100 ;;

@@ -196,7 +196,9 @@ bool PathTracer::next_reference_pass(glm::vec2* jitter) {
 
 bool PathTracer::denoises_this_frame() const {
   const DenoiseSettings& d = settings_.denoise;
-  return d.denoiser == Denoiser::kSvgf && settings_.reference_samples == 0 && frame_samples_ > 0 &&
+  // GL's lighting equation (GL parity) draws no random samples: there is no noise to filter.
+  return d.denoiser == Denoiser::kSvgf && !settings_.gl_parity() &&
+         settings_.reference_samples == 0 && frame_samples_ > 0 &&
          accumulated_samples_ < d.until_samples;
 }
 

@@ -361,6 +361,21 @@ TEST(Svgf, StillImagesConvergeToTheAccumulatedAverageAndTheDenoiserStops) {
   EXPECT_EQ(denoised.back(), raw.back());
 }
 
+TEST(Svgf, GlsOwnLightingHasNoNoiseAndIsNotDenoised) {
+  // GL parity (no shadows, bounces or AO) evaluates GL's equation once per pixel: the denoiser
+  // has nothing to filter, does not run, and the image is the one without it.
+  std::vector<glpt::rt::FrameStats> stats;
+  const SceneOptions still;
+  const Settings parity = {
+      {"GLPT_SHADOWS", "0"}, {"GLPT_BOUNCES", "0"}, {"GLPT_AO", "0"}, {"GLPT_ACCUMULATE", "0"}};
+  const Frames denoised = render(
+      with(parity, {}), 3, [&](int) { return still; }, &stats);
+  const Frames raw =
+      render(with(parity, {{"GLPT_DENOISER", "off"}}), 3, [&](int) { return still; });
+  for (const glpt::rt::FrameStats& s : stats) EXPECT_EQ(s.denoised, 0u);
+  EXPECT_EQ(denoised.back(), raw.back());
+}
+
 TEST(Svgf, ANewSizeAndACameraCutEveryFrameStartWithoutHistory) {
   // A new size every frame (a new drawable each time) and a cut every frame: no history may be
   // reused across them; each image shows the scene (not black, not a previous frame's pixels).
