@@ -41,19 +41,29 @@ std::vector<TunePoint> tune_grid(bool full, uint32_t history_window) {
     grid.push_back(point("denoise-kernel5x5", {{"--denoise-kernel", "2"}}));
     grid.push_back(point("no-shadows-no-ao", {{"--shadows", "0"}, {"--ao", "0"}}));
     // Samples x bounces x denoiser: where more samples stop paying for themselves.
-    for (const char* spp : {"1", "2", "4", "8"})
-      for (const char* b : {"0", "1", "2", "4"})
+    // Default values (1 sample, 1 bounce) are left out of a point's flags, so a combination
+    // that is already in the grid under its own name is not measured twice.
+    for (const std::string spp : {"1", "2", "4", "8"})
+      for (const std::string b : {"0", "1", "2", "4"})
         for (const bool denoise : {true, false}) {
-          if (std::string(b) == "1" && denoise) continue;  // spp points above
-          std::string name = std::string("spp") + spp + "-bounces" + b;
-          std::vector<std::pair<std::string, std::string>> flags = {{"--spp", spp},
-                                                                    {"--bounces", b}};
+          std::string name;
+          std::vector<std::pair<std::string, std::string>> flags;
+          if (spp != "1") {
+            name = "spp" + spp;
+            flags.emplace_back("--spp", spp);
+          }
+          if (b != "1") {
+            name += (name.empty() ? "bounces" : "-bounces") + b;
+            flags.emplace_back("--bounces", b);
+          }
           if (!denoise) {
-            name += "-raw";
+            name += name.empty() ? "raw" : "-raw";
             flags.emplace_back("--denoiser", "off");
           }
-          if (std::none_of(grid.begin(), grid.end(),
-                           [&](const TunePoint& p) { return p.flags == flags; }))
+          if (!flags.empty() && std::none_of(grid.begin(), grid.end(), [&](const TunePoint& p) {
+                return std::is_permutation(p.flags.begin(), p.flags.end(), flags.begin(),
+                                           flags.end());
+              }))
             grid.push_back(point(name, flags));
         }
     for (const char* s : {"0.5", "0.75"})

@@ -28,7 +28,7 @@ struct TunePoint {
 };
 
 // The sweep: `full` false is the reduced grid (each knob moved alone from the defaults, 15
-// points), true the full one (also samples x bounces x denoiser and more values of each knob).
+// points), true the full one (49: also samples x bounces x denoiser, more values of each knob).
 // Accumulation points are made for k in {2, 4, 8, ...} up to `history_window` frames.
 std::vector<TunePoint> tune_grid(bool full, uint32_t history_window);
 

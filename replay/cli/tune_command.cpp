@@ -507,7 +507,7 @@ std::string tune_help() {
          "                     history windows 1..--windows, so each follows a warm history)\n"
          "  --shard I/N        replay only shard I of N (glpt-replay's --shard), for splitting\n"
          "                     a long tune across machines\n"
-         "  --full             the full grid (~40 settings) instead of the reduced one (15)\n"
+         "  --full             the full grid (49 settings) instead of the reduced one (15)\n"
          "  --out DIR          where frames, the CSV and the plot go (default glpt-tune-NAME)\n"
          "  --reference N      samples per pixel of the reference (default 256)\n"
          "  --history W        frames of denoiser/accumulation history before each compared\n"

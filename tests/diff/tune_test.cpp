@@ -52,6 +52,13 @@ TEST(TuneGrid, EverySettingIsGlptsOwnFlagsAndNamedOnce) {
     EXPECT_TRUE(std::any_of(grid.begin(), grid.end(),
                             [](const TunePoint& p) { return p.accumulate_frames == 8; }));
     EXPECT_TRUE(names.count("default"));
+    // No setting is measured twice under two names (flags as a set, defaults left out).
+    std::set<std::set<std::pair<std::string, std::string>>> settings;
+    for (const TunePoint& p : grid) {
+      if (p.accumulate_frames != 0) continue;
+      EXPECT_TRUE(settings.insert({p.flags.begin(), p.flags.end()}).second)
+          << p.name << " repeats another setting";
+    }
   }
   EXPECT_EQ(tune_grid(false, 8).size(), 15u);
   EXPECT_GT(tune_grid(true, 8).size(), 30u);
