@@ -41,8 +41,10 @@ const char* const kUsage =
     "\n"
     "Every written frame is rendered from the same start (the history of the frames before it\n"
     "in its window, its random numbers seeded by its index), so it does not depend on which\n"
-    "frames were rendered before. The per-frame lines go to stdout; progress and the closing\n"
-    "summary (calls glpt does not implement, calls the replayer does not know) to stderr.\n"
+    "frames were rendered before. Frames are not averaged with earlier ones unless\n"
+    "GLPT_ACCUMULATE=1 is set: then unchanged frames accumulate within their window. The\n"
+    "per-frame lines go to stdout; progress and the closing summary (calls glpt does not\n"
+    "implement, calls the replayer does not know) to stderr.\n"
     "\n"
     "exit status: 0 ok, 1 replay failed (no renderer, cannot write PNG), 2 bad usage,\n"
     "3 bad trace (cannot be read, or corrupt: the frames before the damage are written)\n";

@@ -73,12 +73,14 @@ std::unique_ptr<WindowView> open_window(std::string* error) {
 #endif
 
 int run(Options options) {
-  // The quality flags reach glpt's renderer as its environment variables. Replay never
-  // accumulates samples across frames (a frame's history is the denoiser's, within its window;
-  // see --help), and writes the PNGs itself, so glpt's own GLPT_OUTPUT stays off.
+  // The quality flags reach glpt's renderer as its environment variables. Replay does not
+  // accumulate samples across frames (a frame's history is the denoiser's, within its window;
+  // see --help) unless GLPT_ACCUMULATE=1 is set: then unchanged frames accumulate within their
+  // window, which shards reproduce as they do the denoiser's history (glpt tune's accumulation
+  // points). It writes the PNGs itself, so glpt's own GLPT_OUTPUT stays off.
   for (const auto& [variable, value] : options.environment)
     setenv(variable.c_str(), value.c_str(), 1);
-  setenv("GLPT_ACCUMULATE", "0", 1);
+  setenv("GLPT_ACCUMULATE", "0", /*overwrite=*/0);
   unsetenv("GLPT_OUTPUT");
   const uint32_t history_window = history_window_of(options, std::getenv("GLPT_MODE"));
   options.frames.set_history_window(history_window);

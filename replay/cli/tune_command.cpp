@@ -263,10 +263,19 @@ class Tuner {
     return list;
   }
 
-  std::vector<std::string> replay_argv(const std::string& dir, uint32_t history) const {
-    std::vector<std::string> argv = {replay_,           o_.trace,    "--quiet",
-                                     "--out",           dir,         "--frames",
-                                     frames_argument(), "--history", std::to_string(history)};
+  // Accumulation points render with shorter history windows; they write every frame from the
+  // first compared frame's window on, so they render as many frames as the others do.
+  std::string accumulation_frames_argument() const {
+    const uint64_t first = *std::min_element(frames_.begin(), frames_.end());
+    const uint64_t last = *std::max_element(frames_.begin(), frames_.end());
+    return std::to_string(first / o_.history * o_.history) + "-" + std::to_string(last);
+  }
+
+  std::vector<std::string> replay_argv(const std::string& dir, uint32_t history,
+                                       const std::string& frames) const {
+    std::vector<std::string> argv = {replay_, o_.trace,    "--quiet",
+                                     "--out", dir,         "--frames",
+                                     frames,  "--history", std::to_string(history)};
     if (!o_.shard.empty()) {
       argv.push_back("--shard");
       argv.push_back(o_.shard);
@@ -285,7 +294,7 @@ class Tuner {
     env.emplace_back("GLPT_REFERENCE", std::to_string(o_.reference_samples));
     env.emplace_back("GLPT_QUIET", "1");
     const std::string log = dir + "/replay.log";
-    const int status = run_program(replay_argv(dir, 1), env, log);
+    const int status = run_program(replay_argv(dir, 1, frames_argument()), env, log);
     std::vector<uint64_t> present;
     for (const uint64_t f : frames_)
       if (is_regular_file(png_of(dir, f))) present.push_back(f);
@@ -325,9 +334,12 @@ class Tuner {
     for (auto& kv : tune_point_environment(point)) env.push_back(std::move(kv));
     env.emplace_back("GLPT_STATS_FILE", dir + "/stats.txt");
     env.emplace_back("GLPT_QUIET", "1");
-    const uint32_t history = point.accumulate_frames > 0 ? point.accumulate_frames : o_.history;
+    const bool accumulates = point.accumulate_frames > 0;
     const std::string log = dir + "/replay.log";
-    const int status = run_program(replay_argv(dir, history), env, log);
+    const int status =
+        run_program(replay_argv(dir, accumulates ? point.accumulate_frames : o_.history,
+                                accumulates ? accumulation_frames_argument() : frames_argument()),
+                    env, log);
     if (status != 0) {
       r.failure =
           "glpt-replay exited with " + std::to_string(status) + ": " + last_line(read_text(log));
@@ -339,7 +351,7 @@ class Tuner {
     for (std::string line; std::getline(stats, line);)
       if (auto values = parse_stats_line(line); !values.empty())
         frames.push_back(std::move(values));
-    const size_t warmup = frames.size() > history ? history : (frames.size() > 1 ? 1 : 0);
+    const size_t warmup = frames.size() > o_.history ? o_.history : (frames.size() > 1 ? 1 : 0);
     std::map<std::string, std::vector<double>> series;
     for (size_t i = warmup; i < frames.size(); ++i) {
       for (const char* key : {"total_ms", "raster_ms", "blas_ms", "tlas_ms", "trace_ms",
@@ -408,7 +420,13 @@ class Tuner {
                   r.name.c_str(), r.frame_ms, r.flip, r.relmse, r.psnr_db, r.pass_ms.at("trace_ms"),
                   r.pass_ms.at("denoise_ms"), r.mrays_per_s, r.flags.c_str());
     }
-    std::printf("(* on the Pareto front of time per frame against FLIP)\n");
+    std::printf("(* on the Pareto front of time per frame against FLIP)\n\nPareto front:\n");
+    std::printf("  %-18s %9s %8s %9s %8s  %s\n", "setting", "ms/frame", "FLIP", "relMSE", "PSNR dB",
+                "flags");
+    for (const TuneResult& r : results)
+      if (r.pareto)
+        std::printf("  %-18s %9.1f %8.4f %9.5f %8.2f  %s\n", r.name.c_str(), r.frame_ms, r.flip,
+                    r.relmse, r.psnr_db, r.flags.c_str());
   }
 
   void write_csv(const std::vector<TuneResult>& results) const {

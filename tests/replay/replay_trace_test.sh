@@ -6,7 +6,8 @@
 #       Real Mesa (--backend mesa) and glpt's raster mode replay TRACE: both write FRAMES frames
 #       with the same names, and raster mode's are within the conformance tolerance of Mesa's.
 #   replay_trace_test.sh shards REPLAY TRACE OUT N
-#       Path mode: N shards (--shard i/N) write byte-identical PNGs to those of one replay.
+#       Path mode: N shards (--shard i/N) write byte-identical PNGs to those of one replay; also
+#       with GLPT_ACCUMULATE=1, where the unchanged last frame accumulates two samples.
 #   replay_trace_test.sh damaged REPLAY TRACE OUT
 #       Damaged traces end with the bad-trace exit code (3) and a message, never a crash; a
 #       trace cut short replays what it holds (exit 0).
@@ -48,6 +49,19 @@ case "$mode" in
     }
     for f in $whole; do cmp "$out/whole/$f" "$out/shards/$f"; done
     echo "identical: $(echo $whole)"
+    # With GLPT_ACCUMULATE=1 unchanged frames accumulate within their history window (frames 1
+    # and 2 of the trace are the same: the last has two samples), and shards still reproduce it.
+    GLPT_ACCUMULATE=1 GLPT_STATS_FILE="$out/accumulate.stats" \
+      "$replay" --quiet --mode path --out "$out/accumulate" "$trace"
+    grep -q 'frame=2 .* spp=2 ' "$out/accumulate.stats" ||
+      { echo "no accumulation: $(cat "$out/accumulate.stats")"; exit 1; }
+    for ((i = 0; i < n; i++)); do
+      GLPT_ACCUMULATE=1 "$replay" --quiet --mode path --shard "$i/$n" --out "$out/accumulate_shards" "$trace"
+    done
+    for f in $whole; do cmp "$out/accumulate/$f" "$out/accumulate_shards/$f"; done
+    ! cmp -s "$out/whole/frame_000002.png" "$out/accumulate/frame_000002.png" ||
+      { echo "accumulation changed nothing"; exit 1; }
+    echo "accumulated and identical in shards"
     ;;
   damaged)
     replay=$1 trace=$2 out=$3
