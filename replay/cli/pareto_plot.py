@@ -40,9 +40,11 @@ def main(argv):
         front = sorted((x, y) for x, y, p in zip(xs, ys, on_front) if p)
         ax.plot([x for x, _ in front], [y for _, y in front], "o-", c="#d62728", ms=6,
                 label="Pareto front (FLIP)")
-        for r, x, y in zip(rows, xs, ys):
-            ax.annotate(r["setting"], (x, y), fontsize=7, xytext=(3, 3),
-                        textcoords="offset points")
+        # Every setting named when there are few; otherwise the front's only (the CSV has all).
+        for r, x, y, p in zip(rows, xs, ys, on_front):
+            if p or len(rows) <= 20:
+                ax.annotate(r["setting"], (x, y), fontsize=7 if p else 6, xytext=(3, 3),
+                            textcoords="offset points", color="black" if p else "#555555")
         ax.set_xscale("log")
         ax.set_yscale("log")
         ax.set_xlabel("ms per frame (median)")
