@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # bench_tradeoffs.sh [--work DIR] [--full] [--reference N] [--scenes "A B ..."]
-#                    [--game TRACE --game-frames LIST] [--report FILE]
+#                    [--game TRACE --game-frames LIST] [--game-full] [--resume] [--report FILE]
 #
 # The speed/accuracy trade of every quality knob, measured (docs/BENCHMARKS.md): `glpt tune` on
 # four recorded scenes, then bench/tradeoffs_report.py writes the tables, the Pareto fronts and
@@ -15,9 +15,12 @@
 #              its 3-D world, recorded by scripts/menu_parity_real_games.sh, if present)
 #
 #   --work DIR       traces and tune outputs (default /tmp/glpt-tradeoffs)
-#   --full           glpt tune's full grid (default: the reduced one, 15 settings)
+#   --full           glpt tune's full grid (49 settings; default: the reduced one, 15)
+#   --game-full      the full grid for the game too (at 640x480 its 8-sample settings take
+#                    minutes each: by default the game gets the reduced grid)
 #   --reference N    samples per pixel of the references (default 256)
 #   --scenes LIST    which scenes (default "glxgears lit_scene lights100 game")
+#   --resume         keep the results of scenes that have a tune.csv in DIR from an earlier run
 #   --report FILE    the Markdown written (default docs/BENCHMARKS.md)
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
@@ -29,6 +32,8 @@ reference=256
 scenes="glxgears lit_scene lights100 game"
 game=""
 game_frames=""
+game_full=""
+resume=""
 report=$repo/docs/BENCHMARKS.md
 while [ $# -gt 0 ]; do
   case $1 in
@@ -38,8 +43,10 @@ while [ $# -gt 0 ]; do
     --scenes) scenes=$2; shift 2 ;;
     --game) game=$2; shift 2 ;;
     --game-frames) game_frames=$2; shift 2 ;;
+    --game-full) game_full=--full; shift ;;
+    --resume) resume=1; shift ;;
     --report) report=$2; shift 2 ;;
-    -h|--help) sed -n '2,22p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,24p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "bench_tradeoffs: unknown argument '$1'" >&2; exit 2 ;;
   esac
 done
@@ -48,7 +55,7 @@ lit_scene=$build/bench/lit_scene
 [ -x "$glpt" ] && [ -x "$lit_scene" ] || { echo "bench_tradeoffs: build first (scripts/build.sh)" >&2; exit 2; }
 command -v apitrace >/dev/null || { echo "bench_tradeoffs: needs apitrace (Debian package)" >&2; exit 2; }
 mkdir -p "$work/traces"
-command_line="$0 --work $work ${full:+--full }--reference $reference --scenes \"$scenes\"${game:+ --game $game --game-frames $game_frames}"
+command_line="$0 --work $work ${full:+--full }${game_full:+--game-full }--reference $reference --scenes \"$scenes\"${game:+ --game $game --game-frames $game_frames}"
 
 display=:$((200 + RANDOM % 100))
 Xvfb "$display" -screen 0 1024x768x24 -nolisten tcp >/dev/null 2>&1 &
@@ -105,13 +112,20 @@ csvs=()
 for scene in $scenes; do
   trace=$work/traces/$scene.trace
   frames=()
+  grid=$full
   if [ "$scene" = game ]; then
     trace=$game
+    grid=$game_full
     [ -n "$game_frames" ] && frames=(--frames "$game_frames")
+  fi
+  if [ -n "$resume" ] && [ -s "$work/$scene/tune.csv" ]; then
+    echo "== $scene: kept from an earlier run ($work/$scene/tune.csv)"
+    csvs+=("$work/$scene/tune.csv")
+    continue
   fi
   echo "== $scene ($trace)"
   status=0
-  "$glpt" tune "$trace" $full --reference "$reference" --scene "$scene" --out "$work/$scene" \
+  "$glpt" tune "$trace" $grid --reference "$reference" --scene "$scene" --out "$work/$scene" \
     "${frames[@]}" | tee "$work/$scene.txt" || status=$?
   [ "$status" -eq 0 ] || echo "bench_tradeoffs: glpt tune on $scene exited with $status" >&2
   [ -f "$work/$scene/tune.csv" ] && csvs+=("$work/$scene/tune.csv")

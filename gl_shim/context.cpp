@@ -5,6 +5,7 @@
 #include <cstdlib>
 
 #include "gl/gl_enums.h"
+#include "gl_shim/dispatch.hpp"
 #include "gl_shim/frame/headless_target.hpp"
 #include "gl_shim/frame/heap_tuning.hpp"
 #include "gl_shim/gl_impl_decls.hpp"
@@ -179,6 +180,9 @@ bool execute_record(Context& ctx) {
   if (!ctx.recorder.empty() || drawable != ctx.output->drawable())
     ok = ctx.output->execute(ctx.recorder.record(), *ctx.target, drawable,
                              ctx.recording_since.elapsed_ms(), &samples);
+  // A render that failed (device memory, a lost device) loses the commands' effect: GL's
+  // error for "not enough memory left to execute the command" (GL 1.5 2.5), not silence.
+  if (!ok) record_error(ctx, GL_OUT_OF_MEMORY);
   start_new_record(ctx);
   count_query_samples(ctx.queries, samples);
   return ok;
@@ -215,8 +219,9 @@ void end_frame(Context& ctx, bool swap) {
   ctx.recorder.seal();
   render_held_before(ctx, current_drawable(ctx), swap);
   std::vector<rt::QuerySamples> samples;
-  ctx.output->end_frame(ctx.recorder.record(), current_drawable(ctx),
-                        ctx.recording_since.elapsed_ms(), *ctx.target, swap, &samples);
+  if (!ctx.output->end_frame(ctx.recorder.record(), current_drawable(ctx),
+                             ctx.recording_since.elapsed_ms(), *ctx.target, swap, &samples))
+    record_error(ctx, GL_OUT_OF_MEMORY);  // as in execute_record
   // Running totals, so a program killed mid-run (as screensavers are) still leaves them.
   if (ctx.output->stats_enabled()) {
     uint64_t unimplemented = 0;

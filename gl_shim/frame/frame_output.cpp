@@ -122,7 +122,7 @@ bool FrameOutput::execute(const rec::FrameRecord& record, WindowTarget& target,
   return true;
 }
 
-void FrameOutput::end_frame(const rec::FrameRecord& record, const rec::DrawableConfig& drawable,
+bool FrameOutput::end_frame(const rec::FrameRecord& record, const rec::DrawableConfig& drawable,
                             double record_ms, WindowTarget& target, bool swap,
                             std::vector<rt::QuerySamples>* queries) {
   const double frame_ms = since_last_frame_.elapsed_ms();
@@ -199,6 +199,7 @@ void FrameOutput::end_frame(const rec::FrameRecord& record, const rec::DrawableC
   record_ms_ = 0;
   ++frame_index_;
   since_last_frame_.restart();
+  return ok;
 }
 
 }  // namespace glpt

@@ -81,14 +81,15 @@ class FrameOutput {
 
   // Applies `record` to the buffers of `target`, whose configuration is `drawable`. `record_ms`:
   // time spent recording it. `queries`: the samples counted for its occlusion queries
-  // (rt::Renderer::execute).
+  // (rt::Renderer::execute). False when the render failed (the message went to stderr once).
   bool execute(const rec::FrameRecord& record, WindowTarget& target,
                const rec::DrawableConfig& drawable, double record_ms,
                std::vector<rt::QuerySamples>* queries = nullptr, bool swap = false);
   // End of a frame: a swap (double-buffered) or glFlush/glFinish of a single-buffered drawable.
   // Executes the rest of the frame's record, swaps if asked (all in one submission), shows the
-  // front buffer in `target`, writes the PNG and prints the frame's statistics.
-  void end_frame(const rec::FrameRecord& record, const rec::DrawableConfig& drawable,
+  // front buffer in `target`, writes the PNG and prints the frame's statistics. False when the
+  // render failed (nothing was shown; the message went to stderr once).
+  bool end_frame(const rec::FrameRecord& record, const rec::DrawableConfig& drawable,
                  double record_ms, WindowTarget& target, bool swap,
                  std::vector<rt::QuerySamples>* queries = nullptr);
 

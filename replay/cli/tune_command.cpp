@@ -264,11 +264,14 @@ class Tuner {
   }
 
   // Accumulation points render with shorter history windows; they write every frame from the
-  // first compared frame's window on, so they render as many frames as the others do.
+  // first compared frame's window on, so they render as many frames as the others do (unless
+  // the compared frames lie far apart: then those frames only).
   std::string accumulation_frames_argument() const {
-    const uint64_t first = *std::min_element(frames_.begin(), frames_.end());
+    const uint64_t first =
+        *std::min_element(frames_.begin(), frames_.end()) / o_.history * o_.history;
     const uint64_t last = *std::max_element(frames_.begin(), frames_.end());
-    return std::to_string(first / o_.history * o_.history) + "-" + std::to_string(last);
+    if (last - first + 1 > frames_.size() * o_.history) return frames_argument();
+    return std::to_string(first) + "-" + std::to_string(last);
   }
 
   std::vector<std::string> replay_argv(const std::string& dir, uint32_t history,

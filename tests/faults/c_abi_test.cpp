@@ -24,6 +24,7 @@
 // clang-format on
 
 #include <atomic>
+#include <cstdio>
 #include <cstdlib>
 #include <functional>
 #include <new>
@@ -414,6 +415,90 @@ TEST_F(CAbiEgl, AllocationFailureIsEglBadAllocAndTheFailureValue) {
 
 // GLX 1.4 3.3.7: glXDestroyContext of a context current on another thread deletes it once that
 // thread releases it; until then that thread keeps drawing with it.
+TEST_F(CAbi, ARenderThatFailsAtTheSwapIsGlOutOfMemoryAndTheNextFrameRenders) {
+  // Raster mode, 16x16: a frame whose N-th allocation during glXSwapBuffers fails, for every N
+  // the swap reaches. A render that fails is reported as GL_OUT_OF_MEMORY (GL 1.5 2.5), never
+  // lost silently or thrown; the next frame renders normally.
+  ::setenv("GLPT_MODE", "raster", 1);
+  const GLXFBConfig config = fbconfig();
+  ASSERT_NE(config, nullptr);
+  const Window win = window(config);
+  GLXContext ctx = glXCreateNewContext(dpy_, config, GLX_RGBA_TYPE, nullptr, True);
+  ASSERT_NE(ctx, nullptr);
+  ASSERT_TRUE(glXMakeCurrent(dpy_, win, ctx));
+  // Frame k: a square on blue, red for even k and green for odd k, so a frame that was not
+  // shown cannot pass for one that was.
+  int frame = 0;
+  const auto draw = [&frame] {
+    glClearColor(0.0f, 0.0f, 1.0f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glColor3f(frame % 2 == 0 ? 1.0f : 0.0f, frame % 2 == 0 ? 0.0f : 1.0f, 0.0f);
+    glRectf(-0.5f, -0.5f, 0.5f, 0.5f);
+  };
+  draw();
+  glXSwapBuffers(dpy_, win);  // the renderer exists before the sweep
+  ASSERT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  int out_of_memory = 0, absorbed = 0;
+  // The sweep arms the failure before `call`: the frame is drawn first, outside it.
+  draw();
+  const int failed = sweep_allocation_failures(
+      [&] {
+        glXSwapBuffers(dpy_, win);
+        t_allocations_until_failure = -1;  // the next frame is drawn with all its memory
+        ++frame;
+        draw();
+        return 0;
+      },
+      [&](int) {
+        t_allocations_until_failure = -1;
+        const GLenum error = glGetError();
+        XSync(dpy_, False);
+        if (!t_allocation_failed) {
+          EXPECT_EQ(error, static_cast<GLenum>(GL_NO_ERROR));
+          return false;
+        }
+        // A failure the swap could not absorb is GL_OUT_OF_MEMORY (or an X BadAlloc where
+        // glXSwapBuffers' own bookkeeping could not allocate); one it absorbed (a cache, a
+        // statistic) left no error only if the frame was shown: the red square is in front.
+        if (error == GL_NO_ERROR && g_x_errors.empty()) {
+          uint8_t shown[4] = {};
+          glReadBuffer(GL_FRONT);
+          glReadPixels(8, 8, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, shown);
+          glReadBuffer(GL_BACK);
+          // The swapped frame is the one before `frame`.
+          EXPECT_EQ(shown[0], frame % 2 == 1 ? 255 : 0) << "a failed swap that reported nothing";
+          EXPECT_EQ(shown[1], frame % 2 == 1 ? 0 : 255) << "a failed swap that reported nothing";
+          ++absorbed;
+        }
+        out_of_memory += error == GL_OUT_OF_MEMORY ? 1 : 0;
+        g_x_errors.clear();
+        return true;
+      });
+  EXPECT_GT(failed, 0);
+  EXPECT_GT(out_of_memory, 0);
+  // Memory is back: the frame renders, the red square on blue.
+  frame = 0;
+  draw();
+  glXSwapBuffers(dpy_, win);
+  draw();
+  glFinish();
+  uint8_t centre[4] = {}, corner[4] = {};
+  glReadBuffer(GL_BACK);
+  glReadPixels(8, 8, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, centre);
+  glReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, corner);
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  EXPECT_EQ(centre[0], 255);
+  EXPECT_EQ(centre[2], 0);
+  EXPECT_EQ(corner[2], 255);
+  std::printf(
+      "swaps with a failed allocation: %d, reported as GL_OUT_OF_MEMORY: %d, absorbed: %d\n",
+      failed, out_of_memory, absorbed);
+  glXMakeCurrent(dpy_, None, nullptr);
+  glXDestroyContext(dpy_, ctx);
+  XDestroyWindow(dpy_, win);
+  ::unsetenv("GLPT_MODE");
+}
+
 TEST_F(CAbi, GlxContextDestroyedWhileCurrentElsewhereIsDeletedWhenReleased) {
   const GLXFBConfig config = fbconfig();
   ASSERT_NE(config, nullptr);
