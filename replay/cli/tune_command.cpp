@@ -103,10 +103,12 @@ int run_program(const std::vector<std::string>& argv, const EnvSettings& env,
     if (std::none_of(env.begin(), env.end(), [&](const auto& kv) { return kv.first == name; }))
       environment.push_back(entry);
   }
-  for (const auto& [name, value] : env) {
-    // A later setting of a variable wins, as it does for glpt run's flags.
-    std::erase_if(environment, [&](const std::string& e) { return e.rfind(name + "=", 0) == 0; });
-    environment.push_back(name + "=" + value);
+  for (const auto& setting : env) {
+    // A later setting of a variable wins, as it does for glpt run's flags. (Not a structured
+    // binding: Clang 14 cannot capture one in the lambda.)
+    const std::string prefix = setting.first + "=";
+    std::erase_if(environment, [&](const std::string& e) { return e.rfind(prefix, 0) == 0; });
+    environment.push_back(prefix + setting.second);
   }
   std::vector<char*> c_env, c_argv;
   for (std::string& e : environment) c_env.push_back(e.data());
