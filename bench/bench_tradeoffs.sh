@@ -55,7 +55,7 @@ lit_scene=$build/bench/lit_scene
 [ -x "$glpt" ] && [ -x "$lit_scene" ] || { echo "bench_tradeoffs: build first (scripts/build.sh)" >&2; exit 2; }
 command -v apitrace >/dev/null || { echo "bench_tradeoffs: needs apitrace (Debian package)" >&2; exit 2; }
 mkdir -p "$work/traces"
-command_line="$0 --work $work ${full:+--full }${game_full:+--game-full }--reference $reference --scenes \"$scenes\"${game:+ --game $game --game-frames $game_frames}"
+command_line="$0 --work $work ${full:+--full }${game_full:+--game-full }--reference $reference --scenes \"$scenes\"${game:+ --game $game}${game_frames:+ --game-frames $game_frames}"
 
 display=:$((200 + RANDOM % 100))
 Xvfb "$display" -screen 0 1024x768x24 -nolisten tcp >/dev/null 2>&1 &

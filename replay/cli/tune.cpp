@@ -4,7 +4,9 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <numeric>
+#include <sstream>
 
 namespace glpt::cli {
 namespace {
@@ -179,6 +181,20 @@ std::map<std::string, double> parse_stats_line(std::string_view line) {
     values[std::string(field.substr(0, eq))] = number;
   }
   return values;
+}
+
+std::optional<uint64_t> frames_in_replay_log(const std::string& text) {
+  std::optional<uint64_t> frames;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("glpt-replay: ", 0) != 0) continue;
+    const size_t calls = line.find(" calls, ");
+    if (calls == std::string::npos) continue;
+    char* end = nullptr;
+    const unsigned long long count = std::strtoull(line.c_str() + calls + 8, &end, 10);
+    if (end != nullptr && std::strncmp(end, " frames", 7) == 0) frames = count;
+  }
+  return frames;
 }
 
 double median(std::vector<double> values) {

@@ -73,6 +73,11 @@ std::vector<size_t> closest_to_bound(std::span<const TuneResult> results, bool b
 // whose values are not numbers (size, classes) are left out. Empty for other lines.
 std::map<std::string, double> parse_stats_line(std::string_view line);
 
+// The frame count of glpt-replay's closing summary in its stderr `text` ("glpt-replay: 1422
+// calls, 3 frames, 3 rendered ..."; other lines start with "glpt-replay: " too). nullopt when
+// there is none (the replay did not get that far).
+std::optional<uint64_t> frames_in_replay_log(const std::string& text);
+
 // The median of `values` (0 for none).
 double median(std::vector<double> values);
 

@@ -147,18 +147,6 @@ std::string last_line(const std::string& text) {
   return last;
 }
 
-// glpt-replay's closing summary: "glpt-replay: 1422 calls, 3 frames, 3 rendered ...".
-std::optional<uint64_t> frames_in_log(const std::string& text) {
-  const size_t at = text.rfind("glpt-replay: ");
-  if (at == std::string::npos) return std::nullopt;
-  const size_t comma = text.find(", ", at);
-  if (comma == std::string::npos) return std::nullopt;
-  char* end = nullptr;
-  const unsigned long long frames = std::strtoull(text.c_str() + comma + 2, &end, 10);
-  if (end == nullptr || std::strncmp(end, " frames", 7) != 0) return std::nullopt;
-  return frames;
-}
-
 std::string png_of(const std::string& dir, uint64_t frame) {
   char name[32];
   std::snprintf(name, sizeof name, "/frame_%06llu.png", static_cast<unsigned long long>(frame));
@@ -244,7 +232,7 @@ class Tuner {
     const std::string log = o_.out + "/count.log";
     run_program({replay_, o_.trace, "--quiet", "--frames", "4000000000", "--out", o_.out},
                 {{"GLPT_MODE", "raster"}, {"GLPT_QUIET", "1"}}, log);
-    const std::optional<uint64_t> count = frames_in_log(read_text(log));
+    const std::optional<uint64_t> count = frames_in_replay_log(read_text(log));
     if (!count || *count == 0) {
       std::fprintf(stderr, "glpt tune: %s has no frames to measure (%s)\n", o_.trace.c_str(),
                    last_line(read_text(log)).c_str());
@@ -304,7 +292,7 @@ class Tuner {
     for (const uint64_t f : frames_)
       if (is_regular_file(png_of(dir, f))) present.push_back(f);
     if (present.empty()) {
-      const std::optional<uint64_t> count = frames_in_log(read_text(log));
+      const std::optional<uint64_t> count = frames_in_replay_log(read_text(log));
       std::fprintf(stderr, "glpt tune: the reference wrote none of frames %s (status %d%s%s): %s\n",
                    frames_argument().c_str(), status, count ? ", the trace has " : "",
                    count ? (std::to_string(*count) + " frames").c_str() : "",

@@ -133,6 +133,16 @@ TEST(TuneStats, ReadsTheNumbersOfAStatsLine) {
   EXPECT_DOUBLE_EQ(median({}), 0);
 }
 
+TEST(TuneStats, ReadsTheFrameCountOfGlptReplaysSummary) {
+  EXPECT_EQ(frames_in_replay_log("glpt-replay: 9017652 calls, 1838 frames, 0 rendered, in 88 s\n"
+                                 "glpt-replay: calls the replayer does not know:\n"
+                                 "glpt-replay: 36 GL calls without a current context skipped\n"),
+            1838u);
+  EXPECT_EQ(frames_in_replay_log("glpt-replay: 0 calls, 0 frames, 0 rendered\n"), 0u);
+  EXPECT_FALSE(frames_in_replay_log("glpt-replay: cannot open x.trace\n").has_value());
+  EXPECT_FALSE(frames_in_replay_log("").has_value());
+}
+
 TEST(RelMse, WeighsErrorsByTheReferencesBrightness) {
   const uint8_t black[3] = {0, 0, 0}, grey[3] = {51, 51, 51}, white[3] = {255, 255, 255};
   auto view = [](const uint8_t* p) { return diff::Rgb8View{1, 1, 3, p}; };
