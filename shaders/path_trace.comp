@@ -437,9 +437,9 @@ ivec2 grid_pixel(ivec2 cell) {
 // surface (the same record state and lighting, normals within 25 degrees, on the pixel's tangent
 // plane), weighted by a tent one cell wide (bilinear interpolation between the traced pixels
 // around it: exact for radiance that varies linearly; joint bilateral upsampling with the
-// full-resolution G-buffer as guide). The channels hold radiance with the
-// albedo divided out, so texture detail is not blurred. A pixel no neighbour matches (a thin
-// object, a silhouette) is traced.
+// full-resolution G-buffer as guide). The channels hold radiance with the albedo divided out,
+// so texture detail is not blurred. A pixel no neighbour matches (a thin object, a silhouette)
+// is traced.
 bool filled_from_grid(ivec2 pixel, uvec4 surface) {
   ivec2 home = ivec2(floor((vec2(pixel) + 0.5) * frame.trace_grid.xy));
   ivec2 cells = grid_cells();
