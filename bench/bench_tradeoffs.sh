@@ -11,8 +11,8 @@
 #   lit_scene  bench/lit_scene: 50,178 textured lit triangles, 320x240, the camera panning
 #              0.5 degrees per frame over a still world
 #   lights100  the same scene lit by 100 GL lights
-#   game       a recorded real game (--game TRACE --game-frames LIST; default: bzflag's menu over
-#              its 3-D world, recorded by scripts/menu_parity_real_games.sh, if present)
+#   game       a recorded real game (--game TRACE [--game-frames LIST]), e.g. bzflag recorded by
+#              scripts/record_real_games.sh (its first frames: a menu over the 3-D world)
 #
 #   --work DIR       traces and tune outputs (default /tmp/glpt-tradeoffs)
 #   --full           glpt tune's full grid (49 settings; default: the reduced one, 15)
@@ -96,7 +96,7 @@ for scene in $scenes; do
     lights100) record lights100 "$lit_scene" --frames 40 --size 320x240 --pan 0.5 --lights 100 ;;
     game)
       if [ -z "$game" ]; then
-        for candidate in "$work/traces/game.trace" /tmp/glpt-menus/bzflag.trace /tmp/games/bzflag.trace; do
+        for candidate in "$work/traces/game.trace" /tmp/games/bzflag.trace; do
           [ -s "$candidate" ] && { game=$candidate; break; }
         done
       fi
