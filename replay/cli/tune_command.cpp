@@ -29,6 +29,7 @@
 #include "process.hpp"
 #include "psnr.hpp"
 #include "quality_flags.hpp"
+#include "replay/frame_selection.hpp"
 #include "tune.hpp"
 
 extern char** environ;
@@ -578,11 +579,15 @@ int tune_main(std::span<const std::string> args) {
       (a == "--budget-ms" ? o.budget_ms : o.max_flip) = number;
     } else if (a == "--frames" || a == "--shard" || a == "--out" || a == "--scene") {
       if (!value(&v)) return kExitUsage;
+      // Checked as glpt-replay checks them, so every replay of the sweep accepts them.
+      replay::FrameSelection selection;
+      std::string error;
       if (a == "--frames") {
-        if (v.find_first_not_of("0123456789,-") != std::string::npos || parse_frame_list(v).empty())
+        if (!selection.parse_frames(v, &error) || parse_frame_list(v).empty())
           return bad("a frame list like 10,20-30");
         o.frames = v;
       } else if (a == "--shard") {
+        if (!selection.parse_shard(v, &error)) return bad("a shard I/N with 0 <= I < N");
         o.shard = v;
       } else {
         (a == "--out" ? o.out : o.scene) = v;

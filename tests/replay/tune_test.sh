@@ -64,4 +64,9 @@ done
 status=0
 "$glpt" tune "$trace" --budget-ms -3 >/dev/null 2>&1 || status=$?
 [[ $status -eq 2 ]] || fail "--budget-ms -3: exit $status, want 2"
+for bad_arguments in "--shard 3/2" "--frames 5-x"; do
+  status=0
+  "$glpt" tune "$trace" $bad_arguments >/dev/null 2>&1 || status=$?
+  [[ $status -eq 2 ]] || fail "$bad_arguments: exit $status, want 2"
+done
 echo "tune: ok"
