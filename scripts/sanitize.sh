@@ -8,7 +8,10 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${GLPT_BUILD_DIR:-$root/build-asan}
+# -O1 with line tables only: reports keep file and line, and the build takes less than half the
+# time of -O2 -g (measured on rt_core/scene/classify.cpp: 8.7 s against 20.0 s).
 cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" \
   -DGLPT_SANITIZE=address,undefined >/dev/null
 cmake --build "$build" -j "$(nproc)"
 runtime="$(gcc -print-file-name=libasan.so):$(gcc -print-file-name=libubsan.so)"
