@@ -28,6 +28,9 @@ const char* const kUsage =
     "                       ...): a written frame is rendered after those of its window before\n"
     "                       it (default 8 in path-traced mode, 1 = none in raster mode and for\n"
     "                       --backend mesa)\n"
+    "  --repeat N           replay the trace N times in this process, frame indices counting\n"
+    "                       on (each pass re-creates the trace's contexts): a long run from a\n"
+    "                       short trace (default 1)\n"
     "  --backend glpt|mesa  glpt (default) or real Mesa through OSMesa (the reference images)\n"
     "  --device SUBSTR      Vulkan device by name (GLPT_VK_DEVICE; also --vk-device)\n"
     "  --window             show the frames in a window (keys: space pause/resume, n or Right\n"
@@ -60,6 +63,7 @@ constexpr Flag kFlags[] = {
     {"--shard", nullptr, true},  {"--history", nullptr, true},         {"--backend", nullptr, true},
     {"--quiet", nullptr, false}, {"--window", nullptr, false},         {"--paused", nullptr, false},
     {"--help", nullptr, false},  {"--device", "GLPT_VK_DEVICE", true},
+    {"--repeat", nullptr, true},
 };
 
 }  // namespace
@@ -160,6 +164,16 @@ bool parse_command_line(int argc, const char* const* argv, Options* options, std
         return false;
       }
       options->history_window = frames;
+    } else if (arg == "--repeat") {
+      uint32_t passes = 0;
+      const auto [end, ec] = std::from_chars(value.data(), value.data() + value.size(), passes);
+      if (ec != std::errc() || end != value.data() + value.size() || passes == 0 ||
+          passes > kMaxRepeat) {
+        *error = "--repeat: want a whole number from 1 to " + std::to_string(kMaxRepeat) +
+                 ", got \"" + value + "\"";
+        return false;
+      }
+      options->repeat = passes;
     } else if (arg == "--backend") {
       if (value != "glpt" && value != "mesa") {
         *error = "--backend: want glpt or mesa, got \"" + value + "\"";

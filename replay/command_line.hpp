@@ -27,6 +27,9 @@ struct Options {
   bool paused = false;  // --paused: the window starts paused
   bool help = false;
   uint32_t history_window = 0;  // --history; 0: the default of the mode (history_window_of)
+  // --repeat N: the trace replayed N times in one process, frames numbered on (the soak,
+  // bench/soak.sh); each pass re-creates the trace's contexts, replacing the previous pass's.
+  uint32_t repeat = 1;
   // GLPT_* variables the quality flags set for the glpt backend (--mode -> GLPT_MODE, ...).
   std::vector<std::pair<std::string, std::string>> environment;
 };
@@ -35,6 +38,7 @@ struct Options {
 // of its weight within 8 frames; a written frame costs up to W - 1 more rendered before it.
 constexpr uint32_t kMaxHistoryWindow = 1024;
 constexpr uint32_t kDefaultHistoryWindow = 8;
+constexpr uint32_t kMaxRepeat = 100000;
 
 // The history window a replay uses: --history, else 1 for --backend mesa and raster mode
 // (`mode`: GLPT_MODE as the replay sees it, may be null), else kDefaultHistoryWindow.

@@ -150,8 +150,18 @@ int run(Options options) {
 
   trace::Call call;
   int status = kExitOk;
+  uint32_t passes_left = options.repeat - 1;
   while (true) {
     const trace::TraceReader::Status s = reader->next(call, error);
+    if (s == trace::TraceReader::Status::End && passes_left > 0) {
+      --passes_left;
+      if (!(reader = trace::TraceReader::open(options.trace, error))) {
+        std::fprintf(stderr, "glpt-replay: %s\n", error.c_str());
+        status = kExitBadTrace;
+        break;
+      }
+      continue;
+    }
     if (s == trace::TraceReader::Status::End) break;
     if (s == trace::TraceReader::Status::Error) {
       std::fprintf(stderr, "glpt-replay: %s\n", error.c_str());  // the reader names the file

@@ -8,8 +8,11 @@
 #include <set>
 #include <string>
 
+#include <unistd.h>
+
 #include "common/image_io.hpp"
 #include "rt_core/scene/classify.hpp"
+#include "rt_core/vk/vk_raii.hpp"
 
 namespace glpt {
 namespace {
@@ -24,6 +27,18 @@ std::string kind_counts(const rt::FrameStats& s) {
     out += ':' + std::to_string(s.kind_draws[k]);
   }
   return out.empty() ? "-" : out;
+}
+
+// The process's resident memory (VmRSS) in KiB, 0 if unknown: GLPT_STATS' rss_kb=, which the
+// soak (bench/soak.sh) follows over 10,000 frames.
+uint64_t resident_kilobytes() {
+  std::FILE* statm = std::fopen("/proc/self/statm", "r");
+  if (statm == nullptr) return 0;
+  unsigned long long size_pages = 0, resident_pages = 0;
+  const int n = std::fscanf(statm, "%llu %llu", &size_pages, &resident_pages);
+  std::fclose(statm);
+  if (n != 2) return 0;
+  return resident_pages * static_cast<uint64_t>(::sysconf(_SC_PAGESIZE)) / 1024;
 }
 
 }  // namespace
@@ -181,7 +196,7 @@ bool FrameOutput::end_frame(const rec::FrameRecord& record, const rec::DrawableC
         " emitters=%u host_waits=%u wall_ms=%.2f traced_draws=%u sky_draws=%u"
         " raster_draws=%u instances=%u tlas_builds=%u tlas_updates=%u upload_bytes=%" PRIu64
         " classify_ms=%.3f denoise_ms=%.2f composite_ms=%.2f denoised=%u"
-        " classes=%s\n",
+        " vk_objects=%" PRId64 " rss_kb=%" PRIu64 " classes=%s\n",
         frame_index_, width, height, frame_ms, record_ms_, s.upload_ms, s.raster_ms, s.blas_ms,
         s.tlas_ms, s.trace_ms, s.readback_ms, present_ms,
         record_ms_ + s.upload_ms + s.raster_ms + s.blas_ms + s.tlas_ms + s.trace_ms + s.denoise_ms +
@@ -191,7 +206,8 @@ bool FrameOutput::end_frame(const rec::FrameRecord& record, const rec::DrawableC
         s.accumulated_samples, s.non_finite_samples, s.emitters, s.host_waits,
         wall_timer.elapsed_ms(), s.traced_draws, s.sky_draws, s.raster_draws, s.instances,
         s.tlas_builds, s.tlas_updates, s.upload_bytes, s.classify_ms, s.denoise_ms, s.composite_ms,
-        s.denoised, kind_counts(s).c_str());
+        s.denoised, rt::vk::live_object_count().load(std::memory_order_relaxed),
+        resident_kilobytes(), kind_counts(s).c_str());
     if (stats_out_) std::fflush(stats_out_.get());
   }
   last_frame_stats_ = frame_stats_;

@@ -1,5 +1,6 @@
 #include "rt_core/vk/vk_device.hpp"
 
+#include <fcntl.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -305,6 +306,7 @@ DeviceOptions DeviceOptions::from_environment(bool validation) {
     options.sync_submissions = true;
   if (const char* hide = std::getenv("GLPT_VK_NO_DYNAMIC_BLEND"); hide && *hide && *hide != '0')
     options.hide_dynamic_blend = true;
+  if (const char* log = std::getenv("GLPT_VALIDATION_LOG")) options.validation_log = log;
   return options;
 }
 
@@ -361,6 +363,34 @@ DeviceSurvey survey_devices(const DeviceOptions& options) {
   return survey;
 }
 
+namespace {
+
+// One line per message: the process (pid and command), the level, the message's id and text.
+// One write() on an O_APPEND descriptor, so lines of concurrent test processes do not interleave.
+void append_validation_log(const std::string& path, const char* level,
+                           const VkDebugUtilsMessengerCallbackDataEXT* data) {
+  std::string program = "?";
+  if (FILE* cmdline = std::fopen("/proc/self/cmdline", "rb")) {
+    char buffer[256] = {};
+    const size_t n = std::fread(buffer, 1, sizeof buffer - 1, cmdline);
+    std::fclose(cmdline);
+    if (n > 0) program = buffer;  // argv[0]
+  }
+  std::string line = std::to_string(::getpid()) + " " + program + " [" + level + "] " +
+                     (data->pMessageIdName ? data->pMessageIdName : "-") + ": " +
+                     (data->pMessage ? data->pMessage : "");
+  for (char& c : line)
+    if (c == '\n') c = ' ';
+  line += '\n';
+  const int fd = ::open(path.c_str(), O_WRONLY | O_APPEND | O_CREAT | O_CLOEXEC, 0644);
+  if (fd < 0) return;  // the message is on stderr still
+  const ssize_t written = ::write(fd, line.data(), line.size());
+  (void)written;  // nothing more to do if the disk is full: stderr has the message
+  ::close(fd);
+}
+
+}  // namespace
+
 VKAPI_ATTR VkBool32 VKAPI_CALL VulkanDevice::on_validation_message(
     VkDebugUtilsMessageSeverityFlagBitsEXT severity, VkDebugUtilsMessageTypeFlagsEXT,
     const VkDebugUtilsMessengerCallbackDataEXT* data, void* user_data) {
@@ -369,6 +399,7 @@ VKAPI_ATTR VkBool32 VKAPI_CALL VulkanDevice::on_validation_message(
   const char* level =
       (severity & VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT) ? "error" : "warning";
   std::fprintf(stderr, "glpt: [vulkan validation %s] %s\n", level, data->pMessage);
+  if (!self->validation_log_.empty()) append_validation_log(self->validation_log_, level, data);
   return VK_FALSE;
 }
 
@@ -381,6 +412,7 @@ uint64_t VulkanDevice::devices_created() { return g_devices_created.load(); }
 std::unique_ptr<VulkanDevice> VulkanDevice::create(const DeviceOptions& options) {
   std::unique_ptr<VulkanDevice> self(new VulkanDevice());
   ++g_devices_created;
+  self->validation_log_ = options.validation_log;
 
   // ---- instance
   bool validation = options.validation && has_layer(kValidationLayer);

@@ -46,6 +46,10 @@ struct DeviceOptions {
   // colour mask and logic op state its own pipeline, as on devices without
   // VK_EXT_extended_dynamic_state3 (for A/B measurements and to test that path).
   bool hide_dynamic_blend = false;
+  // Also append every validation message, one line each, to this file (GLPT_VALIDATION_LOG):
+  // `scripts/test.sh --validation` collects the messages of every process of the test suite
+  // there, including programs whose stderr a test swallows or compares.
+  std::string validation_log;
   bool operator==(const DeviceOptions&) const = default;
   // GLPT_VK_DEVICE, GLPT_VK_NO_RAY_QUERY and GLPT_VK_SYNC, as every renderer reads them.
   static DeviceOptions from_environment(bool validation);
@@ -160,6 +164,7 @@ class VulkanDevice {
   // Written by the validation callback, which can run until the instance is gone: declared
   // first so it outlives every Vulkan object below.
   std::atomic<uint64_t> validation_messages_ = 0;
+  std::string validation_log_;  // DeviceOptions::validation_log; set before the instance
   // Declaration order is destruction order in reverse: everything device-level goes before the
   // device, the device before the messenger and instance.
   vk::Instance instance_;

@@ -5,15 +5,28 @@
 
 #include <vulkan/vulkan.h>
 
+#include <atomic>
+#include <cstdint>
 #include <utility>
 
 namespace glpt::rt::vk {
+
+// Vulkan objects alive in this process (every owner below counts its handle): a statistic for
+// GLPT_STATS (vk_objects=) and the soak (bench/soak.sh), where a count that grows frame after
+// frame is a leak. Relaxed: only the count matters, not its order with anything else.
+inline std::atomic<int64_t>& live_object_count() {
+  static std::atomic<int64_t> count{0};
+  return count;
+}
 
 template <typename Handle, typename Deleter>
 class Unique {
  public:
   Unique() = default;
-  Unique(Handle handle, Deleter deleter) : handle_(handle), deleter_(deleter) {}
+  Unique(Handle handle, Deleter deleter) : handle_(handle), deleter_(deleter) {
+    if (handle_ != Handle{VK_NULL_HANDLE})
+      live_object_count().fetch_add(1, std::memory_order_relaxed);
+  }
   Unique(const Unique&) = delete;
   Unique& operator=(const Unique&) = delete;
   Unique(Unique&& other) noexcept
@@ -29,7 +42,10 @@ class Unique {
   ~Unique() { reset(); }
 
   void reset() noexcept {
-    if (handle_ != Handle{VK_NULL_HANDLE}) deleter_(handle_);
+    if (handle_ != Handle{VK_NULL_HANDLE}) {
+      deleter_(handle_);
+      live_object_count().fetch_sub(1, std::memory_order_relaxed);
+    }
     handle_ = Handle{VK_NULL_HANDLE};
   }
   Handle get() const { return handle_; }

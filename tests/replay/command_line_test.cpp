@@ -104,6 +104,12 @@ TEST(CommandLine, QualityFlagsBecomeTheRenderersVariables) {
   ASSERT_TRUE(parse({"--backend", "mesa", "x.trace"}, &mesa, &error)) << error;
   EXPECT_EQ(history_window_of(mesa, "path"), 1u);
   EXPECT_EQ(glpt::replay::usage().find("%QUALITY_FLAGS%"), std::string::npos);
+
+  // --repeat: passes over the trace in one process (the soak's long runs).
+  Options repeated;
+  ASSERT_TRUE(parse({"--repeat", "4", "x.trace"}, &repeated, &error)) << error;
+  EXPECT_EQ(repeated.repeat, 4u);
+  EXPECT_EQ(plain.repeat, 1u);
 }
 
 TEST(CommandLine, BadUsageIsRejected) {
@@ -118,6 +124,8 @@ TEST(CommandLine, BadUsageIsRejected) {
       {"--shard", "2/2", "a.trace"},
       {"--history", "0", "a.trace"},
       {"--history", "1025", "a.trace"},
+      {"--repeat", "0", "a.trace"},
+      {"--repeat", "2x", "a.trace"},
       {"--bogus", "a.trace"},
       {"a.trace", "--out"},  // missing value
       {"--quiet=1", "a.trace"},

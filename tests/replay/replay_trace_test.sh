@@ -8,6 +8,11 @@
 #   replay_trace_test.sh shards REPLAY TRACE OUT N
 #       Path mode: N shards (--shard i/N) write byte-identical PNGs to those of one replay; also
 #       with GLPT_ACCUMULATE=1, where the unchanged last frame accumulates two samples.
+#   replay_trace_test.sh repeat REPLAY TRACE OUT FRAMES
+#       --repeat 3 in raster and path mode: 3 x FRAMES frames, as many Vulkan objects alive at
+#       the end of each pass (GLPT_STATS' vk_objects=: re-created contexts leak nothing), and in
+#       raster mode each pass's frames byte-identical to the first pass's (path-traced frames
+#       are seeded by their index, so they differ).
 #   replay_trace_test.sh damaged REPLAY TRACE OUT
 #       Damaged traces end with the bad-trace exit code (3) and a message, never a crash; a
 #       trace cut short replays what it holds (exit 0).
@@ -62,6 +67,29 @@ case "$mode" in
     ! cmp -s "$out/whole/frame_000002.png" "$out/accumulate/frame_000002.png" ||
       { echo "accumulation changed nothing"; exit 1; }
     echo "accumulated and identical in shards"
+    ;;
+  repeat)
+    replay=$1 trace=$2 out=$3 frames=$4
+    rm -rf "$out"
+    for mode in raster path; do
+      GLPT_STATS_FILE="$out/$mode.stats" \
+        "$replay" --quiet --mode "$mode" --repeat 3 --out "$out/$mode" "$trace"
+      count=$(find "$out/$mode" -name 'frame_*.png' | wc -l)
+      [[ $count -eq $((3 * frames)) ]] ||
+        { echo "$mode: $count frames, expected $((3 * frames))"; exit 1; }
+      for ((f = frames; f < 3 * frames; f++)); do
+        [[ $mode == raster ]] || break
+        cmp "$out/$mode/$(printf 'frame_%06d.png' $((f % frames)))" \
+          "$out/$mode/$(printf 'frame_%06d.png' "$f")"
+      done
+      objects=$(sed -n 's/.* vk_objects=\([0-9]*\) .*/\1/p' "$out/$mode.stats")
+      [[ $(wc -l <<<"$objects") -eq $((3 * frames)) ]] ||
+        { echo "$mode: no vk_objects per frame in $(head -2 "$out/$mode.stats")"; exit 1; }
+      ends=$(awk -v n="$frames" 'NR % n == 0' <<<"$objects" | sort -u)
+      [[ $(wc -l <<<"$ends") -eq 1 ]] ||
+        { echo "$mode: Vulkan objects at the end of each pass: $(echo $ends)"; exit 1; }
+      echo "$mode: $((3 * frames)) frames, $ends Vulkan objects after each pass"
+    done
     ;;
   damaged)
     replay=$1 trace=$2 out=$3
