@@ -78,7 +78,7 @@ GL_ENUM_ONLY_EXTENSIONS = [
     "GL_EXT_texture_lod_bias", "GL_ARB_texture_border_clamp", "GL_ARB_texture_mirrored_repeat",
     "GL_NV_texgen_reflection", "GL_EXT_stencil_wrap", "GL_ARB_depth_texture",
     "GL_ARB_texture_rectangle", "GL_EXT_texture_env_dot3", "GL_ARB_texture_env_dot3",
-    "GL_EXT_packed_depth_stencil", "GL_ARB_point_sprite",
+    "GL_EXT_packed_depth_stencil", "GL_ARB_point_sprite", "GL_EXT_texture_compression_s3tc",
 ]
 
 # Single enums of later versions that glpt answers because state dumpers ask every context for
@@ -116,7 +116,8 @@ ADVERTISED_GL_EXTENSIONS = [
     "GL_EXT_point_parameters",
     "GL_EXT_rescale_normal", "GL_EXT_secondary_color", "GL_EXT_separate_specular_color",
     "GL_EXT_shadow_funcs", "GL_EXT_stencil_two_side", "GL_EXT_stencil_wrap", "GL_EXT_subtexture", "GL_EXT_texture",
-    "GL_EXT_texture3D", "GL_EXT_texture_env_add", "GL_EXT_texture_env_combine",
+    "GL_EXT_texture3D", "GL_EXT_texture_compression_s3tc", "GL_EXT_texture_env_add",
+    "GL_EXT_texture_env_combine",
     "GL_EXT_texture_env_dot3", "GL_EXT_texture_filter_anisotropic", "GL_EXT_texture_lod_bias",
     "GL_EXT_texture_object",
     "GL_EXT_texture_rectangle",

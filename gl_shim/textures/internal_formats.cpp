@@ -30,6 +30,12 @@ constexpr InternalFormatInfo D(uint8_t d) { return {GL_DEPTH_COMPONENT, 0, 0, 0,
 // EXT_packed_depth_stencil: Mesa stores both GL_DEPTH_STENCIL_EXT and GL_DEPTH24_STENCIL8_EXT as
 // Z24S8.
 constexpr InternalFormatInfo DS() { return {GL_DEPTH_STENCIL_EXT, 0, 0, 0, 0, 0, 0, 24, 0, 8}; }
+// An S3TC format: Mesa reports 4 bits per component it has.
+constexpr InternalFormatInfo S3TC(GLenum base, uint8_t block_bytes) {
+  InternalFormatInfo info = base == GL_RGB ? RGB(4, 4, 4) : RGBA(4, 4, 4, 4);
+  info.block_bytes = block_bytes;
+  return info;
+}
 // A generic compressed format stored uncompressed, reported as `base`.
 constexpr InternalFormatInfo reported_as(InternalFormatInfo info, GLint base) {
   info.reported = base;
@@ -98,6 +104,10 @@ constexpr Entry kEntries[] = {
     {GL_COMPRESSED_INTENSITY, reported_as(I(8), GL_INTENSITY)},
     {GL_COMPRESSED_RGB, reported_as(RGB(8, 8, 8), GL_RGB)},
     {GL_COMPRESSED_RGBA, reported_as(RGBA(8, 8, 8, 8), GL_RGBA)},
+    {GL_COMPRESSED_RGB_S3TC_DXT1_EXT, S3TC(GL_RGB, 8)},
+    {GL_COMPRESSED_RGBA_S3TC_DXT1_EXT, S3TC(GL_RGBA, 8)},
+    {GL_COMPRESSED_RGBA_S3TC_DXT3_EXT, S3TC(GL_RGBA, 16)},
+    {GL_COMPRESSED_RGBA_S3TC_DXT5_EXT, S3TC(GL_RGBA, 16)},
 };
 
 constexpr auto kSorted = [] {
@@ -176,6 +186,10 @@ rec::TexelFormat InternalFormatInfo::texel_format() const {
 }
 
 uint8_t InternalFormatInfo::channel_bits(int channel) const {
+  if (block_bytes != 0) {
+    const uint8_t bits[4] = {red, green, blue, alpha};
+    return bits[channel] != 0 ? 8 : 0;
+  }
   switch (base_format) {
     case GL_LUMINANCE:
       return channel < 3 ? luminance : 0;

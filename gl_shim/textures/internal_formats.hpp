@@ -21,6 +21,10 @@ struct InternalFormatInfo {
   // uncompressed and reports as their base format.
   GLint reported = 0;
   uint8_t stencil = 0;  // GL_DEPTH_STENCIL_EXT: the stencil index's bits
+  // EXT_texture_compression_s3tc formats: bytes per 4x4 block (0: not compressed). The component
+  // sizes above are what Mesa reports for them (4 bits); the texels glpt samples are the blocks
+  // decoded to 8 bits per channel (channel_bits).
+  uint8_t block_bytes = 0;
 
   // GL_DEPTH_COMPONENT or GL_DEPTH_STENCIL_EXT: texels are depth values (the stencil indices of
   // depth-stencil images are kept beside them, rec::TextureImage::stencil).
@@ -29,7 +33,7 @@ struct InternalFormatInfo {
   }
   rec::TexelFormat texel_format() const;
   // Bits of the stored RGBA channels (luminance and intensity replicated into R, G, B (and A)).
-  // 0 for channels the base format fills with a constant.
+  // 0 for channels the base format fills with a constant. Compressed formats: 8 (decoded texels).
   uint8_t channel_bits(int channel) const;
 };
 

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "gl_shim/textures/internal_formats.hpp"
+#include "gl_shim/textures/s3tc.hpp"
 #include "gl_shim/textures/texel_codec.hpp"
 #include "gl_shim/textures/texture_object.hpp"
 
@@ -131,6 +132,16 @@ std::shared_ptr<rec::TextureImage> downsample(const rec::TextureImage& src,
         out += texel;
       }
     }
+  }
+  if (info.block_bytes != 0) {
+    // S3TC levels are compressed too, as Mesa's generated ones are (its software path
+    // decompresses, filters and compresses again): the texels sampled are the blocks decoded.
+    const GLenum f = GLenum(dst->internal_format);
+    dst->compressed.assign(s3tc::image_bytes(f, dst->width, dst->height, dst->depth), 0);
+    s3tc::encode_image(f, dst->texels.data(), dst->width, dst->height, dst->depth,
+                       dst->compressed.data());
+    s3tc::decode_image(f, dst->compressed.data(), dst->width, dst->height, dst->depth,
+                       dst->texels.data());
   }
   return dst;
 }

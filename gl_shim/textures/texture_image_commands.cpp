@@ -20,6 +20,7 @@
 #include "gl_shim/state/out_of_memory.hpp"
 #include "gl_shim/textures/internal_formats.hpp"
 #include "gl_shim/textures/mipmap_generation.hpp"
+#include "gl_shim/textures/s3tc.hpp"
 #include "gl_shim/textures/texel_codec.hpp"
 #include "gl_shim/textures/texture_targets.hpp"
 
@@ -265,6 +266,65 @@ void image_changed(TextureObject& object, const ImageTarget& t, GLint level) {
     generate_mipmaps(object, t.face);
 }
 
+// Mesa's _mesa_target_can_be_compressed for S3TC: 2-D images, cube faces and (Mesa 25 allows
+// it) 3-D images of 2-D block slices; no 1-D or rectangle images.
+bool s3tc_target(const ImageTarget& t) {
+  return t.slot == kSlot2D || t.slot == kSlotCube || t.slot == kSlot3D;
+}
+
+// EXT_texture_compression_s3tc: sub-images of compressed images start on block edges and cover
+// whole blocks, except where they reach the image's right or top edge (GL_INVALID_OPERATION).
+bool block_aligned(const rec::TextureImage& img, GLint xoff, GLint yoff, GLsizei w, GLsizei h) {
+  const auto fits = [](GLint off, GLsizei size, uint32_t extent) {
+    return off % 4 == 0 && (size % 4 == 0 || int64_t(off) + size == int64_t(extent));
+  };
+  return fits(xoff, w, img.width) && fits(yoff, h, img.height);
+}
+
+// The texels sampled from an S3TC image: its blocks decoded.
+void decode_compressed(rec::TextureImage& img) {
+  const GLenum f = GLenum(img.internal_format);
+  img.texels.assign(size_t(img.width) * img.height * img.depth * 4, 0);
+  s3tc::decode_image(f, img.compressed.data(), img.width, img.height, img.depth, img.texels.data());
+}
+
+// Mesa compresses the uncompressed texels given to an S3TC image (glTexImage, glTexSubImage,
+// glCopyTex*): the blocks covering x0..x1 x y0..y1 x z0..z1 (interior texel coordinates) are
+// encoded anew from `img.texels`, the others keep their bytes, and the texels are decoded again.
+void compress_region(rec::TextureImage& img, int64_t x0, int64_t y0, int64_t z0, int64_t x1,
+                     int64_t y1, int64_t z1) {
+  const GLenum f = GLenum(img.internal_format);
+  img.compressed.resize(s3tc::image_bytes(f, img.width, img.height, img.depth), 0);
+  x0 = std::max<int64_t>(x0, 0) / 4 * 4, y0 = std::max<int64_t>(y0, 0) / 4 * 4;
+  x1 = std::min<int64_t>(x1, img.width), y1 = std::min<int64_t>(y1, img.height);
+  z0 = std::max<int64_t>(z0, 0), z1 = std::min<int64_t>(z1, img.depth);
+  if (x1 > x0 && y1 > y0) {
+    const uint32_t bytes = s3tc::block_bytes(f), across = (img.width + 3) / 4,
+                   up = (img.height + 3) / 4;
+    for (int64_t z = z0; z < z1; ++z) {
+      for (int64_t by = y0; by < y1; by += 4) {
+        for (int64_t bx = x0; bx < x1; bx += 4) {
+          // One block: its texels (as many as lie inside the image) encoded on their own.
+          const uint32_t bw = uint32_t(std::min<int64_t>(4, img.width - bx)),
+                         bh = uint32_t(std::min<int64_t>(4, img.height - by));
+          uint8_t tile[4 * 4 * 4] = {};
+          for (uint32_t j = 0; j < bh; ++j)
+            std::memcpy(
+                tile + j * bw * 4,
+                img.texels.data() +
+                    ((size_t(z) * img.height + size_t(by) + j) * img.width + size_t(bx)) * 4,
+                size_t(bw) * 4);
+          s3tc::encode_image(
+              f, tile, bw, bh, 1,
+              img.compressed.data() +
+                  ((size_t(z) * up + size_t(by / 4)) * across + size_t(bx / 4)) * bytes);
+        }
+      }
+    }
+  }
+  decode_compressed(img);
+}
+
 void tex_image(Context& ctx, int dims, GLenum target, GLint level, GLint internal_format, GLsizei w,
                GLsizei h, GLsizei d, GLint border, GLenum format, GLenum type, const void* pixels) {
   flush_bitmap_cache(ctx);  // as Mesa's texture uploads and reads
@@ -278,6 +338,8 @@ void tex_image(Context& ctx, int dims, GLenum target, GLint level, GLint interna
     return record_error(ctx, e);
   const GLint sized = sized_format_for(internal_format, format, type);
   const InternalFormatInfo* info = stored_format_info(uint32_t(internal_format), uint32_t(sized));
+  if (info->block_bytes != 0 && !s3tc_target(*t)) return record_error(ctx, GL_INVALID_ENUM);
+  if (info->block_bytes != 0 && border != 0) return record_error(ctx, GL_INVALID_OPERATION);
   if (!formats_agree(*info, format)) return record_error(ctx, GL_INVALID_OPERATION);
   // Mesa's _mesa_legal_texture_base_format_for_target: no three-dimensional depth textures.
   if (info->is_depth() && t->slot == kSlot3D) return record_error(ctx, GL_INVALID_OPERATION);
@@ -307,6 +369,7 @@ void tex_image(Context& ctx, int dims, GLenum target, GLint level, GLint interna
                            inner, dims == 3, pixels);
     img->texels = std::move(contents.texels);
     img->stencil = std::move(contents.stencil);
+    if (info->block_bytes != 0) compress_region(*img, 0, 0, 0, img->width, img->height, img->depth);
     object.set_image(t->face, level, std::move(img));
     image_changed(object, *t, level);
   });
@@ -341,6 +404,8 @@ void tex_sub_image(Context& ctx, int dims, GLenum target, GLint level, GLint xof
     return record_error(ctx, GL_INVALID_OPERATION);
   if (!region_fits(*img, dims, xoff, yoff, zoff, w, h, d))
     return record_error(ctx, GL_INVALID_VALUE);
+  if (info->block_bytes != 0 && !block_aligned(*img, xoff, yoff, w, h))
+    return record_error(ctx, GL_INVALID_OPERATION);
   const ImageShape shape{w, h, d, format, type};
   if (shape.groups() == 0 || pixels == nullptr) return;
   if (!ClientImageLayout(ctx.framebuffer.unpack, shape, dims == 3).valid())
@@ -351,6 +416,9 @@ void tex_sub_image(Context& ctx, int dims, GLenum target, GLint level, GLint xof
         texels_from_client(ctx, *info, ctx.framebuffer.unpack, shape, dims == 3, pixels);
     write_region(object, *t, level, xoff, yoff, zoff, w, h, d, contents,
                  rec::texel_bytes(info->texel_format()));
+    if (info->block_bytes != 0)
+      compress_region(*object.image_for_update(t->face, level), xoff, yoff, zoff, int64_t(xoff) + w,
+                      int64_t(yoff) + h, int64_t(zoff) + d);
     image_changed(object, *t, level);
   });
 }
@@ -373,6 +441,8 @@ void copy_tex_image(Context& ctx, int dims, GLenum target, GLint level, GLenum i
   // GL 1.5 3.8.2: not 1..4. Mesa reports a bad internal format here as GL_INVALID_ENUM.
   const InternalFormatInfo* info = internal_format_info(GLint(internal_format));
   if (info == nullptr || internal_format <= 4) return record_error(ctx, GL_INVALID_ENUM);
+  if (info->block_bytes != 0 && !s3tc_target(*t)) return record_error(ctx, GL_INVALID_ENUM);
+  if (info->block_bytes != 0 && border != 0) return record_error(ctx, GL_INVALID_OPERATION);
   if (!legal_dimensions(*t, level, w, h, 1, border)) return record_error(ctx, GL_INVALID_VALUE);
   if (!framebuffer_has_source(ctx, *info))
     return record_error(ctx, GL_INVALID_OPERATION);  // nothing to copy depth (stencil) from
@@ -385,6 +455,7 @@ void copy_tex_image(Context& ctx, int dims, GLenum target, GLint level, GLenum i
                                 GLsizei(img->width), GLsizei(img->height));
     img->texels = std::move(contents.texels);
     img->stencil = std::move(contents.stencil);
+    if (info->block_bytes != 0) compress_region(*img, 0, 0, 0, img->width, img->height, 1);
     object.set_image(t->face, level, std::move(img));
     image_changed(object, *t, level);
   });
@@ -402,12 +473,17 @@ void copy_tex_sub_image(Context& ctx, int dims, GLenum target, GLint level, GLin
   const InternalFormatInfo* info = stored_format_info(img->internal_format, img->sized_format);
   if (info == nullptr) return;
   if (!framebuffer_has_source(ctx, *info)) return record_error(ctx, GL_INVALID_OPERATION);
+  if (info->block_bytes != 0 && !block_aligned(*img, xoff, yoff, w, h))
+    return record_error(ctx, GL_INVALID_OPERATION);
   if (w == 0 || h == 0) return;
   TextureObject& object = target_object(ctx, *t);
   or_out_of_memory(ctx, [&] {
     const ImageContents contents = texels_from_framebuffer(ctx, *info, x, y, w, h);
     write_region(object, *t, level, xoff, yoff, zoff, w, h, 1, contents,
                  rec::texel_bytes(info->texel_format()));
+    if (info->block_bytes != 0)
+      compress_region(*object.image_for_update(t->face, level), xoff, yoff, zoff, int64_t(xoff) + w,
+                      int64_t(yoff) + h, int64_t(zoff) + 1);
     image_changed(object, *t, level);
   });
 }
@@ -513,20 +589,97 @@ void get_tex_image(Context& ctx, GLenum target, GLint level, GLenum format, GLen
   });
 }
 
-// glCompressedTex*: glpt supports no specific compressed format (GL_NUM_COMPRESSED_TEXTURE_FORMATS
-// is 0, and the generic ones are not accepted by these commands, GL 1.5 3.8.3), so every call
-// that gets past the target and level checks is an error.
-void compressed_tex_image(Context& ctx, int dims, GLenum target, GLint level) {
+// Mesa's generic compressed formats (GL_COMPRESSED_ALPHA .. GL_COMPRESSED_RGBA): glTexImage
+// accepts them, the glCompressedTex* commands do not (GL_INVALID_ENUM, ARB_texture_compression).
+bool generic_compressed(GLenum f) { return f >= GL_COMPRESSED_ALPHA && f <= GL_COMPRESSED_RGBA; }
+
+// glCompressedTexImage1D/2D/3D (ARB_texture_compression, EXT_texture_compression_s3tc): the
+// blocks are kept as given and decoded for sampling. Errors in Mesa's order (measured with
+// OSMesa 25.0.7: compressed_texture_error_check).
+void compressed_tex_image(Context& ctx, int dims, GLenum target, GLint level, GLenum format,
+                          GLsizei w, GLsizei h, GLsizei d, GLint border, GLsizei image_size,
+                          const void* data) {
+  flush_bitmap_cache(ctx);  // as Mesa's texture uploads and reads
   const std::optional<ImageTarget> t = image_target(target, dims, ProxyTargets::kAccepted);
-  if (!t) return record_error(ctx, GL_INVALID_ENUM);
+  if (!t || !s3tc_target(*t) || !s3tc::is_s3tc(format)) return record_error(ctx, GL_INVALID_ENUM);
+  if (border != 0) return record_error(ctx, GL_INVALID_OPERATION);  // no format has borders
+  if (w < 0 || h < 0 || d < 0) return record_error(ctx, GL_INVALID_VALUE);
   if (level < 0 || level >= max_texture_levels(t->slot)) return record_error(ctx, GL_INVALID_VALUE);
-  record_error(ctx, GL_INVALID_ENUM);  // not a compressed internal format glpt supports
+  if (dims < 3) d = 1;
+  if (!legal_dimensions(*t, level, w, h, d, 0)) return record_error(ctx, GL_INVALID_VALUE);
+  if (image_size < 0 ||
+      size_t(image_size) != s3tc::image_bytes(format, uint32_t(w), uint32_t(h), uint32_t(d)))
+    return record_error(ctx, GL_INVALID_VALUE);  // "not consistent with the format" (ARB)
+  TextureObject& object = target_object(ctx, *t);
+  or_out_of_memory(ctx, [&] {
+    std::shared_ptr<rec::TextureImage> img = new_image(*t, GLint(format), w, h, d, 0);
+    if (!t->proxy) {
+      // Null data: defined contents are undefined (zero blocks decode to black).
+      img->compressed.assign(size_t(image_size), 0);
+      if (data != nullptr && image_size > 0)
+        std::memcpy(img->compressed.data(), data, size_t(image_size));
+      decode_compressed(*img);
+    }
+    object.set_image(t->face, level, std::move(img));
+    if (!t->proxy) image_changed(object, *t, level);
+  });
 }
 
-void compressed_tex_sub_image(Context& ctx, int dims, GLenum target, GLint level) {
+// glCompressedTexSubImage1D/2D/3D: whole blocks replaced in an image of the same format.
+void compressed_tex_sub_image(Context& ctx, int dims, GLenum target, GLint level, GLint xoff,
+                              GLint yoff, GLint zoff, GLsizei w, GLsizei h, GLsizei d,
+                              GLenum format, GLsizei image_size, const void* data) {
+  flush_bitmap_cache(ctx);  // as Mesa's texture uploads and reads
   const std::optional<ImageTarget> t = image_target(target, dims, ProxyTargets::kRejected);
-  if (!valid_sub_image_args(ctx, t, level, 0, 0, 0)) return;
-  record_error(ctx, GL_INVALID_OPERATION);  // no image is compressed
+  if (!t || !s3tc_target(*t)) return record_error(ctx, GL_INVALID_ENUM);
+  if (level < 0 || level >= max_texture_levels(t->slot)) return record_error(ctx, GL_INVALID_VALUE);
+  if (generic_compressed(format)) return record_error(ctx, GL_INVALID_ENUM);
+  const rec::TextureImage* img = target_object(ctx, *t).image(t->face, level);
+  // No image, or one of another format (uncompressed ones included): GL_INVALID_OPERATION.
+  if (img == nullptr || img->internal_format != format || !s3tc::is_s3tc(format))
+    return record_error(ctx, GL_INVALID_OPERATION);
+  if (dims < 3) zoff = 0, d = 1;
+  if (dims < 2) yoff = 0, h = 1;
+  if (w < 0 || h < 0 || d < 0) return record_error(ctx, GL_INVALID_VALUE);
+  if (!region_fits(*img, dims, xoff, yoff, zoff, w, h, d))
+    return record_error(ctx, GL_INVALID_VALUE);
+  if (!block_aligned(*img, xoff, yoff, w, h)) return record_error(ctx, GL_INVALID_OPERATION);
+  if (image_size < 0 ||
+      size_t(image_size) != s3tc::image_bytes(format, uint32_t(w), uint32_t(h), uint32_t(d)))
+    return record_error(ctx, GL_INVALID_VALUE);
+  if (w == 0 || h == 0 || d == 0 || data == nullptr) return;
+  TextureObject& object = target_object(ctx, *t);
+  or_out_of_memory(ctx, [&] {
+    rec::TextureImage* target_img = object.image_for_update(t->face, level);
+    const uint32_t bytes = s3tc::block_bytes(format), across = (target_img->width + 3) / 4,
+                   up = (target_img->height + 3) / 4;
+    const uint32_t src_across = (uint32_t(w) + 3) / 4, src_up = (uint32_t(h) + 3) / 4;
+    const auto* src = static_cast<const uint8_t*>(data);
+    for (uint32_t z = 0; z < uint32_t(d); ++z) {
+      for (uint32_t by = 0; by < src_up; ++by) {
+        const size_t to =
+            ((size_t(zoff) + z) * up + size_t(yoff / 4) + by) * across + size_t(xoff / 4);
+        std::memcpy(target_img->compressed.data() + to * bytes,
+                    src + ((size_t(z) * src_up + by) * src_across) * bytes,
+                    size_t(src_across) * bytes);
+      }
+    }
+    decode_compressed(*target_img);
+    image_changed(object, *t, level);
+  });
+}
+
+// glGetCompressedTexImage: the blocks byte for byte (GL 1.x has no compressed pack state).
+void get_compressed_tex_image(Context& ctx, GLenum target, GLint level, void* pixels) {
+  flush_bitmap_cache(ctx);  // as Mesa's texture uploads and reads
+  const std::optional<ImageTarget> t = image_target(target, 0, ProxyTargets::kRejected);
+  if (!t) return record_error(ctx, GL_INVALID_ENUM);
+  if (level < 0 || level >= max_texture_levels(t->slot)) return record_error(ctx, GL_INVALID_VALUE);
+  const rec::TextureImage* img = target_object(ctx, *t).image(t->face, level);
+  if (img == nullptr) return record_error(ctx, GL_INVALID_VALUE);  // Mesa: no image to read
+  if (!s3tc::is_s3tc(img->internal_format)) return record_error(ctx, GL_INVALID_OPERATION);
+  if (pixels != nullptr && !img->compressed.empty())
+    std::memcpy(pixels, img->compressed.data(), img->compressed.size());
 }
 
 }  // namespace
@@ -591,36 +744,42 @@ void glGetTexImage(Context& ctx, GLenum target, GLint level, GLenum format, GLen
   get_tex_image(ctx, target, level, format, type, pixels);
 }
 
-void glCompressedTexImage1D(Context& ctx, GLenum target, GLint level, GLenum, GLsizei, GLint,
-                            GLsizei, const void*) {
-  compressed_tex_image(ctx, 1, target, level);
+void glCompressedTexImage1D(Context& ctx, GLenum target, GLint level, GLenum internalformat,
+                            GLsizei width, GLint border, GLsizei imageSize, const void* data) {
+  compressed_tex_image(ctx, 1, target, level, internalformat, width, 1, 1, border, imageSize, data);
 }
-void glCompressedTexImage2D(Context& ctx, GLenum target, GLint level, GLenum, GLsizei, GLsizei,
-                            GLint, GLsizei, const void*) {
-  compressed_tex_image(ctx, 2, target, level);
+void glCompressedTexImage2D(Context& ctx, GLenum target, GLint level, GLenum internalformat,
+                            GLsizei width, GLsizei height, GLint border, GLsizei imageSize,
+                            const void* data) {
+  compressed_tex_image(ctx, 2, target, level, internalformat, width, height, 1, border, imageSize,
+                       data);
 }
-void glCompressedTexImage3D(Context& ctx, GLenum target, GLint level, GLenum, GLsizei, GLsizei,
-                            GLsizei, GLint, GLsizei, const void*) {
-  compressed_tex_image(ctx, 3, target, level);
+void glCompressedTexImage3D(Context& ctx, GLenum target, GLint level, GLenum internalformat,
+                            GLsizei width, GLsizei height, GLsizei depth, GLint border,
+                            GLsizei imageSize, const void* data) {
+  compressed_tex_image(ctx, 3, target, level, internalformat, width, height, depth, border,
+                       imageSize, data);
 }
-void glCompressedTexSubImage1D(Context& ctx, GLenum target, GLint level, GLint, GLsizei, GLenum,
-                               GLsizei, const void*) {
-  compressed_tex_sub_image(ctx, 1, target, level);
+void glCompressedTexSubImage1D(Context& ctx, GLenum target, GLint level, GLint xoffset,
+                               GLsizei width, GLenum format, GLsizei imageSize, const void* data) {
+  compressed_tex_sub_image(ctx, 1, target, level, xoffset, 0, 0, width, 1, 1, format, imageSize,
+                           data);
 }
-void glCompressedTexSubImage2D(Context& ctx, GLenum target, GLint level, GLint, GLint, GLsizei,
-                               GLsizei, GLenum, GLsizei, const void*) {
-  compressed_tex_sub_image(ctx, 2, target, level);
+void glCompressedTexSubImage2D(Context& ctx, GLenum target, GLint level, GLint xoffset,
+                               GLint yoffset, GLsizei width, GLsizei height, GLenum format,
+                               GLsizei imageSize, const void* data) {
+  compressed_tex_sub_image(ctx, 2, target, level, xoffset, yoffset, 0, width, height, 1, format,
+                           imageSize, data);
 }
-void glCompressedTexSubImage3D(Context& ctx, GLenum target, GLint level, GLint, GLint, GLint,
-                               GLsizei, GLsizei, GLsizei, GLenum, GLsizei, const void*) {
-  compressed_tex_sub_image(ctx, 3, target, level);
+void glCompressedTexSubImage3D(Context& ctx, GLenum target, GLint level, GLint xoffset,
+                               GLint yoffset, GLint zoffset, GLsizei width, GLsizei height,
+                               GLsizei depth, GLenum format, GLsizei imageSize, const void* data) {
+  compressed_tex_sub_image(ctx, 3, target, level, xoffset, yoffset, zoffset, width, height, depth,
+                           format, imageSize, data);
 }
 
-void glGetCompressedTexImage(Context& ctx, GLenum target, GLint level, void*) {
-  const std::optional<ImageTarget> t = image_target(target, 0, ProxyTargets::kRejected);
-  if (!t) return record_error(ctx, GL_INVALID_ENUM);
-  if (level < 0 || level >= max_texture_levels(t->slot)) return record_error(ctx, GL_INVALID_VALUE);
-  record_error(ctx, GL_INVALID_OPERATION);  // the image is not compressed (or not defined)
+void glGetCompressedTexImage(Context& ctx, GLenum target, GLint level, void* img) {
+  get_compressed_tex_image(ctx, target, level, img);
 }
 
 }  // namespace impl

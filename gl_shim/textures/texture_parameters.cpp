@@ -11,6 +11,7 @@
 #include "gl_shim/state/query_values.hpp"
 #include "gl_shim/state/value_conversions.hpp"
 #include "gl_shim/textures/internal_formats.hpp"
+#include "gl_shim/textures/s3tc.hpp"
 #include "gl_shim/textures/texture_targets.hpp"
 
 namespace glpt {
@@ -279,14 +280,18 @@ bool tex_level_parameter_value(Context& ctx, GLenum target, GLint level, GLenum 
       out = info ? info->stencil : 0;
       return true;
     case GL_TEXTURE_COMPRESSED:
-      out = 0;  // glpt stores every format uncompressed
+      // S3TC images, proxies included; the generic compressed formats are stored uncompressed.
+      out = requested != nullptr && requested->block_bytes != 0 ? 1 : 0;
       return true;
     case GL_TEXTURE_COMPRESSED_IMAGE_SIZE:
-      if (img != nullptr) {
-        record_error(ctx, GL_INVALID_OPERATION);  // not a compressed image
+      // Mesa answers only for a compressed image that is not a proxy; anything else (an
+      // undefined image too) is GL_INVALID_OPERATION.
+      if (requested == nullptr || requested->block_bytes == 0 || t->proxy) {
+        record_error(ctx, GL_INVALID_OPERATION);
         return false;
       }
-      out = 0;
+      out = GLint(
+          s3tc::image_bytes(GLenum(img->internal_format), img->width, img->height, img->depth));
       return true;
     default:
       record_error(ctx, GL_INVALID_ENUM);

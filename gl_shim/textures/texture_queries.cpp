@@ -70,11 +70,15 @@ bool lookup_texture_and_pixel_state(const Context& ctx, GLenum pname, query::Val
     case GL_MAX_PIXEL_MAP_TABLE:
       *out = ints({kMaxPixelMapTable});
       return true;
+    // The S3TC formats as Mesa lists them, in its order: desktop GL's list leaves out
+    // GL_COMPRESSED_RGBA_S3TC_DXT1_EXT (its 1-bit alpha makes it a poor general choice; Mesa
+    // lists it for GLES only). Mesa 25 also lists FXT1 and ETC2 formats, which glpt lacks.
     case GL_NUM_COMPRESSED_TEXTURE_FORMATS:
-      *out = ints({0});  // the generic compressed formats are stored uncompressed
+      *out = ints({3});
       return true;
     case GL_COMPRESSED_TEXTURE_FORMATS:
-      *out = ints({});
+      *out = ints({GL_COMPRESSED_RGB_S3TC_DXT1_EXT, GL_COMPRESSED_RGBA_S3TC_DXT3_EXT,
+                   GL_COMPRESSED_RGBA_S3TC_DXT5_EXT});
       return true;
     // Pixel store modes of 3-D images (the others are in queries.cpp).
     case GL_UNPACK_IMAGE_HEIGHT:

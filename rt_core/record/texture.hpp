@@ -68,6 +68,10 @@ struct TextureImage {
   // GL_RGBA16, GL_RGB from GL_UNSIGNED_SHORT_5_6_5 data is 5-6-5). 0: internal_format itself.
   uint32_t sized_format = 0;
   std::vector<uint8_t> texels;  // width * height * depth * texel_bytes, rows bottom to top
+  // S3TC images (EXT_texture_compression_s3tc): the blocks as given or encoded, which
+  // glGetCompressedTexImage returns; `texels` holds them decoded (RGBA8). Empty otherwise. The
+  // renderer reads only `texels`.
+  std::vector<uint8_t> compressed;
   // GL_DEPTH_STENCIL images (EXT_packed_depth_stencil): one stencil index per texel, in the order
   // of `texels`, which hold the depth values. Only glGetTexImage reads them (sampling a
   // depth-stencil texture samples its depth); empty for every other format.

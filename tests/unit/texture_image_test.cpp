@@ -1,7 +1,9 @@
 // glTexImage*, glTexSubImage*, glGetTexImage, glGetTexLevelParameter, proxies, borders, internal
 // formats, mipmap generation. Expected values are Mesa 25's (llvmpipe through OSMesa), measured
 // with throwaway programs, or computed by hand from GL 1.5.
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 #include "gl_shim/textures/texture_snapshot.hpp"
@@ -447,19 +449,191 @@ TEST_F(TexImageTest, LevelParameterQueriesOfUndefinedImagesAndErrors) {
   EXPECT_FLOAT_EQ(f, 1.0f);
 }
 
-TEST_F(TexImageTest, CompressedImagesAreNotSupported) {
-  const GLubyte data[8] = {};
-  glCompressedTexImage2D(GL_TEXTURE_2D, 0, GL_COMPRESSED_RGB, 4, 4, 0, 8, data);
-  EXPECT_EQ(glGetError(), GLenum{GL_INVALID_ENUM});
-  glCompressedTexImage2D(GL_TEXTURE_3D, 0, GL_COMPRESSED_RGB, 4, 4, 0, 8, data);
-  EXPECT_EQ(glGetError(), GLenum{GL_INVALID_ENUM});
-  glCompressedTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 4, 4, GL_RGB, 8, data);
+// EXT_texture_compression_s3tc. Expected texels, bytes and errors are OSMesa 25.0.7's.
+constexpr GLenum kDxt1Rgb = GL_COMPRESSED_RGB_S3TC_DXT1_EXT;
+constexpr GLenum kDxt1Rgba = GL_COMPRESSED_RGBA_S3TC_DXT1_EXT;
+constexpr GLenum kDxt3 = GL_COMPRESSED_RGBA_S3TC_DXT3_EXT;
+constexpr GLenum kDxt5 = GL_COMPRESSED_RGBA_S3TC_DXT5_EXT;
+
+// Red (0xF800) and blue (0x001F) end points; texel t takes index t % 4.
+constexpr GLubyte kFourColours[8] = {0x00, 0xF8, 0x1F, 0x00, 0xE4, 0xE4, 0xE4, 0xE4};
+constexpr GLubyte kThreeColours[8] = {0x1F, 0x00, 0x00, 0xF8, 0xE4, 0xE4, 0xE4, 0xE4};
+
+std::vector<GLubyte> first_texels(const std::vector<GLubyte>& rgba, int n) {
+  return {rgba.begin(), rgba.begin() + 4 * n};
+}
+
+TEST_F(TexImageTest, S3tcDecodesAsLlvmpipe) {
+  // The 1/3 and 2/3 colours round as gallivm's 85/256 and 170/256 weights do (Mesa's CPU decoder
+  // would give 85 and 170 blue), DXT1's 3-colour midpoint rounds up (128, not 127).
+  glCompressedTexImage2D(GL_TEXTURE_2D, 0, kDxt1Rgb, 4, 4, 0, 8, kFourColours);
+  EXPECT_EQ(
+      first_texels(rgba_bytes(0, 16), 4),
+      (std::vector<GLubyte>{255, 0, 0, 255, 0, 0, 255, 255, 170, 0, 84, 255, 85, 0, 169, 255}));
+  glCompressedTexImage2D(GL_TEXTURE_2D, 0, kDxt1Rgb, 4, 4, 0, 8, kThreeColours);
+  EXPECT_EQ(first_texels(rgba_bytes(0, 16), 4),
+            (std::vector<GLubyte>{0, 0, 255, 255, 255, 0, 0, 255, 128, 0, 128, 255, 0, 0, 0, 255}));
+  // Only DXT1 RGBA makes index 3 of a 3-colour block transparent.
+  glCompressedTexImage2D(GL_TEXTURE_2D, 0, kDxt1Rgba, 4, 4, 0, 8, kThreeColours);
+  EXPECT_EQ(first_texels(rgba_bytes(0, 16), 4),
+            (std::vector<GLubyte>{0, 0, 255, 255, 255, 0, 0, 255, 128, 0, 128, 255, 0, 0, 0, 0}));
+  // DXT5: texel t has alpha code t % 8. 8-alpha mode (255 > 0), then 6-alpha mode (0 <= 255).
+  GLubyte dxt5[16] = {255, 0};
+  uint64_t codes = 0;
+  for (int t = 0; t < 16; ++t) codes |= uint64_t(t % 8) << (3 * t);
+  for (int k = 0; k < 6; ++k) dxt5[2 + k] = GLubyte(codes >> (8 * k));
+  std::copy(kFourColours, kFourColours + 8, dxt5 + 8);
+  glCompressedTexImage2D(GL_TEXTURE_2D, 0, kDxt5, 4, 4, 0, 16, dxt5);
+  std::vector<GLubyte> alphas;
+  for (int t = 0; t < 8; ++t) alphas.push_back(rgba_bytes(0, 16)[size_t(4 * t + 3)]);
+  EXPECT_EQ(alphas, (std::vector<GLubyte>{255, 0, 219, 183, 146, 110, 73, 37}));
+  std::swap(dxt5[0], dxt5[1]);
+  glCompressedTexImage2D(GL_TEXTURE_2D, 0, kDxt5, 4, 4, 0, 16, dxt5);
+  alphas.clear();
+  for (int t = 0; t < 8; ++t) alphas.push_back(rgba_bytes(0, 16)[size_t(4 * t + 3)]);
+  EXPECT_EQ(alphas, (std::vector<GLubyte>{0, 255, 50, 101, 152, 203, 0, 255}));
+  EXPECT_EQ(glGetError(), GLenum{GL_NO_ERROR});
+}
+
+TEST_F(TexImageTest, S3tcImagesKeepTheirBlocksAndAnswerQueriesAsMesa) {
+  std::vector<GLubyte> data(64);
+  for (size_t k = 0; k < data.size(); ++k) data[k] = GLubyte(k * 37 + 11);
+  glCompressedTexImage2D(GL_TEXTURE_2D, 0, kDxt3, 13, 7, 0, 128, nullptr);  // sized: 4x2 blocks
+  EXPECT_EQ(glGetError(), GLenum{GL_NO_ERROR});
+  glCompressedTexImage2D(GL_TEXTURE_2D, 0, kDxt1Rgb, 13, 7, 0, 64, data.data());
+  EXPECT_EQ(level_parameter(GL_TEXTURE_INTERNAL_FORMAT), GLint(kDxt1Rgb));
+  EXPECT_EQ(level_parameter(GL_TEXTURE_COMPRESSED), 1);
+  EXPECT_EQ(level_parameter(GL_TEXTURE_COMPRESSED_IMAGE_SIZE), 64);
+  EXPECT_EQ(level_parameter(GL_TEXTURE_RED_SIZE), 4);
+  EXPECT_EQ(level_parameter(GL_TEXTURE_ALPHA_SIZE), 0);
+  EXPECT_EQ(level_parameter(GL_TEXTURE_WIDTH), 13);
+  std::vector<GLubyte> back(64, 0xEE);
+  glGetCompressedTexImage(GL_TEXTURE_2D, 0, back.data());
+  EXPECT_EQ(back, data);
+  // A sub-image reaching the right edge (one texel wide) replaces the last column of blocks.
+  const GLubyte column[16] = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16};
+  glCompressedTexSubImage2D(GL_TEXTURE_2D, 0, 12, 0, 1, 7, kDxt1Rgb, 16, column);
+  EXPECT_EQ(glGetError(), GLenum{GL_NO_ERROR});
+  glGetCompressedTexImage(GL_TEXTURE_2D, 0, back.data());
+  std::copy(column, column + 8, data.begin() + 24);
+  std::copy(column + 8, column + 16, data.begin() + 56);
+  EXPECT_EQ(back, data);
+  // The generic formats stay uncompressed; a proxy of an S3TC format is compressed but has no
+  // image size.
+  glTexImage2D(GL_PROXY_TEXTURE_2D, 0, GLint(kDxt5), 8, 8, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+  EXPECT_EQ(level_parameter(GL_TEXTURE_COMPRESSED, 0, GL_PROXY_TEXTURE_2D), 1);
+  EXPECT_EQ(level_parameter(GL_TEXTURE_INTERNAL_FORMAT, 0, GL_PROXY_TEXTURE_2D), GLint(kDxt5));
+  level_parameter(GL_TEXTURE_COMPRESSED_IMAGE_SIZE, 0, GL_PROXY_TEXTURE_2D);
   EXPECT_EQ(glGetError(), GLenum{GL_INVALID_OPERATION});
-  GLubyte out[8];
-  glGetCompressedTexImage(GL_TEXTURE_2D, 0, out);
+  level_parameter(GL_TEXTURE_COMPRESSED_IMAGE_SIZE, 1);  // undefined image
   EXPECT_EQ(glGetError(), GLenum{GL_INVALID_OPERATION});
-  glGetCompressedTexImage(GL_TEXTURE_2D, -1, out);
-  EXPECT_EQ(glGetError(), GLenum{GL_INVALID_VALUE});
+}
+
+TEST_F(TexImageTest, S3tcEncodesUncompressedDataAsMesa) {
+  // An 8x4 image: two blocks each, compressed by Mesa's encoder (libtxc_dxtn).
+  std::vector<GLubyte> image(8 * 4 * 4);
+  for (int y = 0; y < 4; ++y) {
+    for (int x = 0; x < 8; ++x) {
+      GLubyte* p = &image[size_t(y * 8 + x) * 4];
+      p[0] = GLubyte(x * 30 + y * 5), p[1] = GLubyte(200 - x * 20),
+      p[2] = GLubyte((x * y * 17) & 255);
+      p[3] = GLubyte(x < 4 ? y * 80 : (x * 37) & 255);
+    }
+  }
+  const std::vector<std::vector<GLubyte>> expected = {
+      {0x67, 0x5c, 0x42, 0x0e, 0x2d, 0x2d, 0x2d, 0x2d, 0x44, 0xc2, 0x9a, 0x8b, 0x0b, 0x2f, 0xbd,
+       0x05},
+      {0x40, 0x0e, 0x6a, 0x64, 0xff, 0xff, 0x68, 0x68, 0x9a, 0x8b, 0x44, 0xc2, 0xda, 0xe8, 0xe8,
+       0xd0},
+      {0x00, 0x00, 0x55, 0x55, 0xaa, 0xaa, 0xff, 0xff, 0x67, 0x5c, 0x42,
+       0x0e, 0x2d, 0x2d, 0x2d, 0x2d, 0xb9, 0x0d, 0xb9, 0x0d, 0xb9, 0x0d,
+       0xb9, 0x0d, 0x44, 0xc2, 0x9a, 0x8b, 0x0b, 0x2f, 0xbd, 0x05},
+      {0x58, 0xf8, 0xb6, 0x0d, 0x00, 0xdb, 0x96, 0x24, 0x67, 0x5c, 0x42,
+       0x0e, 0x2d, 0x2d, 0x2d, 0x2d, 0x98, 0xe2, 0x58, 0x8c, 0xc5, 0x58,
+       0x8c, 0xc5, 0x44, 0xc2, 0x9a, 0x8b, 0x0b, 0x2f, 0xbd, 0x05},
+  };
+  const GLenum formats[4] = {kDxt1Rgb, kDxt1Rgba, kDxt3, kDxt5};
+  for (int i = 0; i < 4; ++i) {
+    glTexImage2D(GL_TEXTURE_2D, 0, GLint(formats[i]), 8, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                 image.data());
+    std::vector<GLubyte> back(expected[size_t(i)].size(), 0xEE);
+    glGetCompressedTexImage(GL_TEXTURE_2D, 0, back.data());
+    EXPECT_EQ(back, expected[size_t(i)]) << "format " << std::hex << formats[i];
+  }
+  EXPECT_EQ(glGetError(), GLenum{GL_NO_ERROR});
+}
+
+TEST_F(TexImageTest, S3tcErrorsAreMesas) {
+  std::vector<GLubyte> data(512, 0x55), out(512);
+  const auto error = [] { return glGetError(); };
+  glCompressedTexImage2D(GL_TEXTURE_2D, 0, kDxt1Rgb, 8, 8, 0, 31, data.data());
+  EXPECT_EQ(error(), GLenum{GL_INVALID_VALUE});  // imageSize
+  glCompressedTexImage2D(GL_TEXTURE_2D, 0, kDxt1Rgb, 8, 8, 1, 32, data.data());
+  EXPECT_EQ(error(), GLenum{GL_INVALID_OPERATION});  // border
+  glCompressedTexImage2D(GL_TEXTURE_2D, 0, GL_COMPRESSED_RGB, 8, 8, 0, 32, data.data());
+  EXPECT_EQ(error(), GLenum{GL_INVALID_ENUM});  // generic format
+  glCompressedTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 8, 8, 0, 256, data.data());
+  EXPECT_EQ(error(), GLenum{GL_INVALID_ENUM});
+  glCompressedTexImage1D(GL_TEXTURE_1D, 0, kDxt1Rgb, 8, 0, 16, data.data());
+  EXPECT_EQ(error(), GLenum{GL_INVALID_ENUM});  // no 1-D S3TC images
+  glCompressedTexImage2D(GL_TEXTURE_CUBE_MAP, 0, kDxt1Rgb, 8, 8, 0, 32, data.data());
+  EXPECT_EQ(error(), GLenum{GL_INVALID_ENUM});
+  glCompressedTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X, 0, kDxt1Rgb, 8, 4, 0, 16, data.data());
+  EXPECT_EQ(error(), GLenum{GL_INVALID_VALUE});
+  glCompressedTexImage3D(GL_TEXTURE_3D, 0, kDxt1Rgb, 8, 8, 4, 0, 32, data.data());
+  EXPECT_EQ(error(), GLenum{GL_INVALID_VALUE});  // 3-D is allowed, 4 slices are 128 bytes
+  glCompressedTexImage3D(GL_TEXTURE_3D, 0, kDxt1Rgb, 8, 8, 4, 0, 128, data.data());
+  EXPECT_EQ(error(), GLenum{GL_NO_ERROR});
+  glTexImage1D(GL_TEXTURE_1D, 0, GLint(kDxt1Rgb), 8, 0, GL_RGBA, GL_UNSIGNED_BYTE, data.data());
+  EXPECT_EQ(error(), GLenum{GL_INVALID_ENUM});
+
+  glCompressedTexImage2D(GL_TEXTURE_2D, 0, kDxt1Rgb, 8, 8, 0, 32, data.data());
+  EXPECT_EQ(error(), GLenum{GL_NO_ERROR});
+  glCompressedTexSubImage2D(GL_TEXTURE_2D, 0, 2, 0, 4, 4, kDxt1Rgb, 8, data.data());
+  EXPECT_EQ(error(), GLenum{GL_INVALID_OPERATION});  // not on a block edge
+  glCompressedTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 2, 4, kDxt1Rgb, 8, data.data());
+  EXPECT_EQ(error(), GLenum{GL_INVALID_OPERATION});  // partial block inside the image
+  glCompressedTexSubImage2D(GL_TEXTURE_2D, 0, 4, 4, 8, 4, kDxt1Rgb, 16, data.data());
+  EXPECT_EQ(error(), GLenum{GL_INVALID_VALUE});  // beyond the image
+  glCompressedTexSubImage2D(GL_TEXTURE_2D, 0, 4, 4, 4, 4, kDxt1Rgb, 7, data.data());
+  EXPECT_EQ(error(), GLenum{GL_INVALID_VALUE});  // imageSize
+  glCompressedTexSubImage2D(GL_TEXTURE_2D, 0, 4, 4, 4, 4, kDxt1Rgba, 8, data.data());
+  EXPECT_EQ(error(), GLenum{GL_INVALID_OPERATION});  // another format
+  glCompressedTexSubImage2D(GL_TEXTURE_2D, 0, 4, 4, 4, 4, GL_COMPRESSED_RGB, 8, data.data());
+  EXPECT_EQ(error(), GLenum{GL_INVALID_ENUM});
+  glCompressedTexSubImage2D(GL_TEXTURE_2D, 1, 0, 0, 4, 4, kDxt1Rgb, 8, data.data());
+  EXPECT_EQ(error(), GLenum{GL_INVALID_OPERATION});  // undefined level
+  glCompressedTexSubImage2D(GL_PROXY_TEXTURE_2D, 0, 0, 0, 4, 4, kDxt1Rgb, 8, data.data());
+  EXPECT_EQ(error(), GLenum{GL_INVALID_ENUM});
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 2, 0, 4, 4, GL_RGBA, GL_UNSIGNED_BYTE, data.data());
+  EXPECT_EQ(error(), GLenum{GL_INVALID_OPERATION});
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 4, 4, 4, 4, GL_RGBA, GL_UNSIGNED_BYTE, data.data());
+  EXPECT_EQ(error(), GLenum{GL_NO_ERROR});
+  glGetCompressedTexImage(GL_TEXTURE_2D, 1, out.data());
+  EXPECT_EQ(error(), GLenum{GL_INVALID_VALUE});  // undefined image
+  glGetCompressedTexImage(GL_PROXY_TEXTURE_2D, 0, out.data());
+  EXPECT_EQ(error(), GLenum{GL_INVALID_ENUM});
+
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 8, 8, 0, GL_RGBA, GL_UNSIGNED_BYTE, data.data());
+  glCompressedTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 4, 4, kDxt1Rgb, 8, data.data());
+  EXPECT_EQ(error(), GLenum{GL_INVALID_OPERATION});  // not a compressed image
+  glGetCompressedTexImage(GL_TEXTURE_2D, 0, out.data());
+  EXPECT_EQ(error(), GLenum{GL_INVALID_OPERATION});
+  EXPECT_EQ(level_parameter(GL_TEXTURE_COMPRESSED), 0);
+}
+
+TEST_F(TexImageTest, S3tcCopiesAndGeneratedLevelsAreCompressed) {
+  glCopyTexImage2D(GL_TEXTURE_2D, 0, kDxt5, 0, 0, 5, 3, 0);
+  EXPECT_EQ(glGetError(), GLenum{GL_NO_ERROR});
+  EXPECT_EQ(level_parameter(GL_TEXTURE_COMPRESSED_IMAGE_SIZE), 32);
+  glCopyTexImage2D(GL_TEXTURE_2D, 0, kDxt5, 0, 0, 5, 3, 1);
+  EXPECT_EQ(glGetError(), GLenum{GL_INVALID_OPERATION});  // no borders
+  glTexParameteri(GL_TEXTURE_2D, GL_GENERATE_MIPMAP, GL_TRUE);
+  const std::vector<GLubyte> data(32, 0x3C);
+  glCompressedTexImage2D(GL_TEXTURE_2D, 0, kDxt1Rgb, 8, 8, 0, 32, data.data());
+  EXPECT_EQ(level_parameter(GL_TEXTURE_INTERNAL_FORMAT, 1), GLint(kDxt1Rgb));
+  EXPECT_EQ(level_parameter(GL_TEXTURE_COMPRESSED_IMAGE_SIZE, 1), 8);
+  EXPECT_EQ(level_parameter(GL_TEXTURE_WIDTH, 3), 1);
 }
 
 TEST_F(TexImageTest, DepthTexturesQuantizeToTheirBits) {

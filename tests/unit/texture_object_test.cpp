@@ -186,8 +186,14 @@ TEST_F(GlTest, TextureLimitsAreReported) {
   EXPECT_FLOAT_EQ(f, 16.0f);  // Mesa's value
   glGetFloatv(GL_MAX_TEXTURE_MAX_ANISOTROPY_EXT, &f);
   EXPECT_FLOAT_EQ(f, 16.0f);
+  // The S3TC formats Mesa lists for desktop GL (it leaves out DXT1 RGBA), in Mesa's order.
   glGetIntegerv(GL_NUM_COMPRESSED_TEXTURE_FORMATS, &v);
-  EXPECT_EQ(v, 0);
+  EXPECT_EQ(v, 3);
+  GLint formats[4] = {};
+  glGetIntegerv(GL_COMPRESSED_TEXTURE_FORMATS, formats);
+  EXPECT_EQ(formats[0], GL_COMPRESSED_RGB_S3TC_DXT1_EXT);
+  EXPECT_EQ(formats[1], GL_COMPRESSED_RGBA_S3TC_DXT3_EXT);
+  EXPECT_EQ(formats[2], GL_COMPRESSED_RGBA_S3TC_DXT5_EXT);
   EXPECT_EQ(glGetError(), GLenum{GL_NO_ERROR});
 }
 
