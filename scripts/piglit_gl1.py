@@ -37,7 +37,8 @@ EXTENSION_GROUPS = (r"^spec@((arb_point_sprite|arb_point_parameters|ext_stencil_
                     r"arb_texture_border_clamp|arb_texture_mirrored_repeat|arb_depth_texture|"
                     r"arb_shadow|arb_texture_cube_map|ext_blend_minmax|ext_blend_subtract|"
                     r"ext_blend_color|arb_occlusion_query|arb_vertex_buffer_object|"
-                    r"ext_compiled_vertex_array|ext_draw_range_elements|ext_multi_draw_arrays)@|"
+                    r"ext_compiled_vertex_array|ext_draw_range_elements|ext_multi_draw_arrays|"
+                    r"arb_texture_compression|ext_texture_compression_s3tc)@|"
                     # ARB_texture_non_power_of_two has no group of its own.
                     r"!opengl 2\.0@tex3d-npot$)")
 
@@ -77,6 +78,9 @@ KNOWN_DIFFERENCES = {
         "needs pixel buffer objects (GL 2.1) without asking for them: it binds "
         "GL_PIXEL_PACK_BUFFER (GL_INVALID_ENUM on GL 1.5) and passes glGetTexImage the buffer "
         "offsets 0, 4096, ... as pointers, which a GL without PBOs writes to as client memory",
+    "spec@ext_texture_compression_s3tc@getteximage-targets cube s3tc":
+        "the same test as arb_texture_cube_map's getteximage-targets cube with DXT5 images: "
+        "needs pixel buffer objects (GL 2.1) without asking for them",
 }
 
 BEYOND_GL15 = re.compile(r"OpenGL [2-9]|GLSL|requires (GL_\w+)|Function|requires (GLX_\w+)")
@@ -88,6 +92,9 @@ BEYOND_BY_SOURCE = {
         "needs a GL 3.0 context (made current without a drawable)",
     "glx@glx_arb_create_context@color-index render type with 3.0": "needs a GL 3.0 context",
     "glx@glx-multithread-clearbuffer": "needs GL 3.0 and GL_ARB_clear_buffer_object",
+    "spec@ext_texture_compression_s3tc@s3tc-errors_gles2": "needs an OpenGL ES 2.0 context",
+    "spec@ext_texture_compression_s3tc@s3tc-teximage_gles2": "needs an OpenGL ES 2.0 context",
+    "spec@ext_texture_compression_s3tc@s3tc-texsubimage_gles2": "needs an OpenGL ES 2.0 context",
 }
 
 

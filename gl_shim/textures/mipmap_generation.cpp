@@ -133,17 +133,48 @@ std::shared_ptr<rec::TextureImage> downsample(const rec::TextureImage& src,
       }
     }
   }
-  if (info.block_bytes != 0) {
-    // S3TC levels are compressed too, as Mesa's generated ones are (its software path
-    // decompresses, filters and compresses again): the texels sampled are the blocks decoded.
-    const GLenum f = GLenum(dst->internal_format);
-    dst->compressed.assign(s3tc::image_bytes(f, dst->width, dst->height, dst->depth), 0);
-    s3tc::encode_image(f, dst->texels.data(), dst->width, dst->height, dst->depth,
-                       dst->compressed.data());
-    s3tc::decode_image(f, dst->compressed.data(), dst->width, dst->height, dst->depth,
-                       dst->texels.data());
-  }
   return dst;
+}
+
+// Mesa generates the levels of a compressed texture in software (util_gen_mipmap cannot render
+// into a compressed format; generate_mipmap_compressed): the base level decoded (as llvmpipe
+// decodes it: measured, the CPU decoder's rounding gives other blocks), each level a 2x2 box of
+// the uncompressed level before it, truncated (_mesa_generate_mipmap_level's do_row; an odd last
+// row or column is dropped), then compressed by its encoder. The texels sampled are those blocks
+// decoded.
+void generate_s3tc_mipmaps(TextureObject& object, int face, const rec::TextureImage& base,
+                           int base_level, int top) {
+  const GLenum f = GLenum(base.internal_format);
+  const uint32_t border = base.border, internal_format = base.internal_format;
+  uint32_t w = base.width, h = base.height;
+  std::vector<uint8_t> src = base.texels;
+  for (int level = base_level + 1; level <= top; ++level) {
+    if (w == 1 && h == 1) break;
+    const uint32_t dw = std::max(1u, w / 2), dh = std::max(1u, h / 2);
+    const uint32_t col_step = w == dw ? 1 : 2, k0 = w == dw ? 0 : 1;
+    const bool two_rows = h > 1 && h > dh;
+    std::vector<uint8_t> dst(size_t(dw) * dh * 4);
+    for (uint32_t y = 0; y < dh; ++y) {
+      const uint8_t* a = src.data() + size_t(y) * (two_rows ? 2 : 1) * w * 4;
+      const uint8_t* b = two_rows ? a + size_t(w) * 4 : a;
+      for (uint32_t x = 0; x < dw; ++x) {
+        const size_t j = size_t(x) * col_step * 4, k = j + k0 * 4;
+        for (int c = 0; c < 4; ++c)
+          dst[(size_t(y) * dw + x) * 4 + c] =
+              uint8_t((a[j + c] + a[k + c] + b[j + c] + b[k + c]) / 4);
+      }
+    }
+    auto img = std::make_shared<rec::TextureImage>();
+    img->width = dw, img->height = dh, img->depth = 1;
+    img->border = border, img->internal_format = internal_format;
+    img->compressed.assign(s3tc::image_bytes(f, dw, dh, 1), 0);
+    s3tc::encode_image(f, dst.data(), dw, dh, 1, img->compressed.data());
+    img->texels.assign(dst.size(), 0);
+    s3tc::decode_image(f, img->compressed.data(), dw, dh, 1, img->texels.data());
+    object.set_image(face, level, std::move(img));
+    src = std::move(dst);
+    w = dw, h = dh;
+  }
 }
 
 }  // namespace
@@ -157,6 +188,8 @@ void generate_mipmaps(TextureObject& object, int face) {
   if (info == nullptr) return;
   const int top =
       std::min(object.sampler().max_level, max_texture_levels(texture_slot(object.target())) - 1);
+  if (info->block_bytes != 0 && base_image->depth == 1 && !base_image->compressed.empty())
+    return generate_s3tc_mipmaps(object, face, *base_image, base, top);
   // Each level is held by the object while the next is computed from it (set_image only
   // replaces levels above it).
   const rec::TextureImage* previous = base_image;

@@ -222,6 +222,37 @@ GLPT_SCENE(texture_s3tc_compressed_by_driver, 128, 128) {
   textured_quad(104, 4, 128, 124, 0, 0, 1, 1);
 }
 
+// GL_GENERATE_MIPMAP on compressed base levels: Mesa builds the levels in software from the base
+// level as its CPU decoder decodes it (2x2 boxes, truncated) and compresses each with its
+// encoder. A 32x32 DXT1 image of random blocks and a 48x24 DXT5 image compressed from a gradient,
+// each drawn at 1/2, 1/4, 1/8 and 1/16 of its size (one level each, texel centres on pixel
+// centres), alpha kept in the image.
+GLPT_SCENE(texture_s3tc_generated_mipmaps, 128, 64) {
+  clear(0.1f, 0.1f, 0.2f, 0.5f);
+  ortho_pixels(128, 64);
+  glEnable(GL_TEXTURE_2D);
+  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+  const GLuint random = new_texture(GL_TEXTURE_2D, GL_NEAREST_MIPMAP_NEAREST, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_GENERATE_MIPMAP, GL_TRUE);
+  compressed_2d(GL_TEXTURE_2D, 0, kDxt1Rgb, 32, 32, 3);
+  const GLuint smooth = new_texture(GL_TEXTURE_2D, GL_NEAREST_MIPMAP_NEAREST, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_GENERATE_MIPMAP, GL_TRUE);
+  const std::vector<uint8_t> image =
+      gradient(48, 24, Rgba8{250, 30, 30, 255}, Rgba8{30, 250, 60, 40}, Rgba8{40, 60, 250, 200},
+               Rgba8{250, 250, 250, 0}, 7);
+  glTexImage2D(GL_TEXTURE_2D, 0, static_cast<GLint>(kDxt5), 48, 24, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+               image.data());
+  float x = 2;
+  for (int k = 1; k <= 4; ++k) {
+    const float s = static_cast<float>(32 >> k);
+    glBindTexture(GL_TEXTURE_2D, random);
+    textured_quad(x, 2, x + s, 2 + s, 0, 0, 1, 1);
+    glBindTexture(GL_TEXTURE_2D, smooth);
+    textured_quad(x, 24, x + 1.5f * s, 24 + 0.75f * s, 0, 0, 1, 1);
+    x += 1.5f * s + 3;
+  }
+}
+
 // Cube map faces of DXT1 blocks (one format: faces of different formats leave the cube
 // incomplete), looked up by direction (texture coordinates are the directions to the six faces'
 // centres and edges).
