@@ -32,7 +32,9 @@ template <typename T>
 void get(const ListStream::Reader& r, const CompiledVertices& rec, ArrayKind kind,
          std::vector<T>& v) {
   v.resize(rec.count);
-  std::memcpy(v.data(), r.payload<T>(rec.offsets[int(kind)]), sizeof(T) * rec.count);
+  // An empty primitive has no storage to copy (memcpy's pointers must not be null even then).
+  if (rec.count > 0)
+    std::memcpy(v.data(), r.payload<T>(rec.offsets[int(kind)]), sizeof(T) * rec.count);
 }
 
 // Writes one record of `command` holding `v` (or only `error`).

@@ -1,5 +1,8 @@
 // glNewList, glEndList, glCallList(s), glGenLists, glDeleteLists, glIsList, glListBase
 // (GL 1.5 spec 5.4). Recording itself is generated (gl_entry_points.cpp).
+#include <cmath>
+#include <limits>
+
 #include "gl/gl_enums.h"
 #include "gl_shim/context.hpp"
 #include "gl_shim/dispatch.hpp"
@@ -62,8 +65,14 @@ GLuint list_name_at(const void* lists, GLenum type, GLsizei i) {
       return static_cast<GLuint>(static_cast<const GLint*>(lists)[i]);
     case GL_UNSIGNED_INT:
       return static_cast<const GLuint*>(lists)[i];
-    case GL_FLOAT:
-      return static_cast<GLuint>(static_cast<const GLfloat*>(lists)[i]);
+    case GL_FLOAT: {
+      // As Mesa: (GLint) value. A float no GLint holds (NaN, infinities, beyond 2^31) would be
+      // undefined to convert; it names what x86 converts it to, INT_MIN, as in Mesa there.
+      const GLfloat f = static_cast<const GLfloat*>(lists)[i];
+      return static_cast<GLuint>(std::isfinite(f) && std::fabs(f) < 2147483520.0f
+                                     ? static_cast<GLint>(f)
+                                     : std::numeric_limits<GLint>::min());
+    }
     case GL_2_BYTES:
       return (GLuint{b[2 * i]} << 8) | b[2 * i + 1];
     case GL_3_BYTES:

@@ -16,8 +16,13 @@ void ClearFallback::consume(const rec::FrameRecord& record) {
   for (const rec::Command& command : record.commands) {
     const auto* clear = std::get_if<rec::Clear>(&command);
     if (clear == nullptr) continue;
-    if (clear->mask & GL_COLOR_BUFFER_BIT)
-      color_ = glm::round(glm::clamp(clear->color, 0.0f, 1.0f) * 255.0f) / 255.0f;
+    if (clear->mask & GL_COLOR_BUFFER_BIT) {
+      // A NaN component (glClearColor keeps it; glm::clamp would too) clears to 0, as Vulkan's
+      // conversion to a UNORM buffer makes it for the renderer.
+      glm::vec4 c = clear->color;
+      for (int i = 0; i < 4; ++i) c[i] = std::isnan(c[i]) ? 0.0f : c[i];
+      color_ = glm::round(glm::clamp(c, 0.0f, 1.0f) * 255.0f) / 255.0f;
+    }
     if (clear->mask & GL_DEPTH_BUFFER_BIT) depth_ = static_cast<float>(clear->depth);
     if (clear->mask & GL_STENCIL_BUFFER_BIT)
       stencil_ = static_cast<uint32_t>(clear->stencil) & 0xFF;

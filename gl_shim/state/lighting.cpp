@@ -28,6 +28,14 @@ float color_component(T v) {
 }
 float plain_component(GLint v) { return static_cast<float>(v); }
 float plain_component(GLfloat v) { return v; }
+// An enum passed as a value, converted as Mesa does ((GLenum)(GLint) value). A float no GLint
+// holds (NaN, infinities, beyond 2^31) names no enum; converting it would be undefined.
+GLenum enum_component(GLint v) { return static_cast<GLenum>(v); }
+GLenum enum_component(GLfloat v) {
+  return std::isfinite(v) && std::fabs(v) < 2147483520.0f
+             ? static_cast<GLenum>(static_cast<GLint>(v))
+             : GLenum{0};
+}
 
 template <typename T>
 glm::vec4 color4(const T* p) {
@@ -121,7 +129,7 @@ void set_light_model(Context& ctx, GLenum pname, const T* p) {
       s.local_viewer = plain_component(p[0]) != 0;
       break;
     case GL_LIGHT_MODEL_COLOR_CONTROL: {
-      const auto v = static_cast<GLenum>(plain_component(p[0]));
+      const GLenum v = enum_component(p[0]);
       if (v != GL_SINGLE_COLOR && v != GL_SEPARATE_SPECULAR_COLOR)
         return record_error(ctx, GL_INVALID_ENUM);
       s.separate_specular = v == GL_SEPARATE_SPECULAR_COLOR;
