@@ -196,6 +196,16 @@ void generate_mipmaps(TextureObject& object, int face) {
   for (int level = base + 1; level <= top; ++level) {
     if (previous->width == 1 && previous->height == 1 && previous->depth == 1) break;
     std::shared_ptr<rec::TextureImage> next = downsample(*previous, *info);
+    if (info->block_bytes != 0) {
+      // 3-D S3TC images (Mesa's path for them is not modelled): filtered as uncompressed 3-D
+      // images are, then compressed, so that their levels keep blocks like every S3TC image.
+      const GLenum f = GLenum(next->internal_format);
+      next->compressed.assign(s3tc::image_bytes(f, next->width, next->height, next->depth), 0);
+      s3tc::encode_image(f, next->texels.data(), next->width, next->height, next->depth,
+                         next->compressed.data());
+      s3tc::decode_image(f, next->compressed.data(), next->width, next->height, next->depth,
+                         next->texels.data());
+    }
     previous = next.get();
     object.set_image(face, level, std::move(next));
   }

@@ -634,6 +634,18 @@ TEST_F(TexImageTest, S3tcCopiesAndGeneratedLevelsAreCompressed) {
   EXPECT_EQ(level_parameter(GL_TEXTURE_INTERNAL_FORMAT, 1), GLint(kDxt1Rgb));
   EXPECT_EQ(level_parameter(GL_TEXTURE_COMPRESSED_IMAGE_SIZE, 1), 8);
   EXPECT_EQ(level_parameter(GL_TEXTURE_WIDTH, 3), 1);
+  // 3-D images of block slices generate compressed levels too (Mesa: level 1 of 8x8x4 DXT1 is
+  // 4x4x2, 16 bytes).
+  glBindTexture(GL_TEXTURE_3D, 1);
+  glTexParameteri(GL_TEXTURE_3D, GL_GENERATE_MIPMAP, GL_TRUE);
+  const std::vector<GLubyte> slices(128, 0x3C);
+  glCompressedTexImage3D(GL_TEXTURE_3D, 0, kDxt1Rgb, 8, 8, 4, 0, 128, slices.data());
+  EXPECT_EQ(level_parameter(GL_TEXTURE_DEPTH, 1, GL_TEXTURE_3D), 2);
+  EXPECT_EQ(level_parameter(GL_TEXTURE_COMPRESSED_IMAGE_SIZE, 1, GL_TEXTURE_3D), 16);
+  std::vector<GLubyte> level1(16, 0xEE);
+  glGetCompressedTexImage(GL_TEXTURE_3D, 1, level1.data());
+  EXPECT_NE(level1, std::vector<GLubyte>(16, 0xEE));  // blocks were written
+  EXPECT_EQ(glGetError(), GLenum{GL_NO_ERROR});
 }
 
 TEST_F(TexImageTest, DepthTexturesQuantizeToTheirBits) {
