@@ -155,9 +155,15 @@ GLPT_SCENE(texture_s3tc_dxt5_mipmaps_nearest, 64, 64) {
 
 // Sizes that are not multiples of 4 (13x7, 5x3, 2x2, 1x1: the edge blocks' outer texels are not
 // part of the image) and glCompressedTexSubImage2D on them: aligned blocks inside, and the
-// partial blocks at the right and top edges, which the extension lets a sub-image cover.
+// partial blocks at the right and top edges, which the extension lets a sub-image cover. The
+// unpack modes set here do not apply to compressed data (GL 1.x has no compressed pack state).
 GLPT_SCENE(texture_s3tc_sub_images_odd_sizes, 128, 64) {
   clear(0.1f, 0.1f, 0.2f);
+  glPixelStorei(GL_UNPACK_ROW_LENGTH, 7);
+  glPixelStorei(GL_UNPACK_SKIP_ROWS, 2);
+  glPixelStorei(GL_UNPACK_SKIP_PIXELS, 3);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 8);
+  glPixelStorei(GL_UNPACK_LSB_FIRST, GL_TRUE);
   ortho_pixels(128, 64);
   glEnable(GL_TEXTURE_2D);
   glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
