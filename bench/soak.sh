@@ -72,8 +72,9 @@ for mode in $modes; do
       LD_PRELOAD="$libgl" "${command[@]}" >"$out/$program.$mode.log" 2>&1 &
     pid=$!
     while kill -0 "$pid" 2>/dev/null && [ "$(frames_in "$stats")" -lt "$frames" ]; do sleep 2; done
-    # with_xvfb.sh passes the signal on to the program and then stops its Xvfb.
-    kill -INT "$pid" 2>/dev/null || true
+    # The program (and the Xvfb) are with_xvfb.sh's children: stopping them ends it (it waits for
+    # its command before it handles a signal of its own).
+    pkill -TERM -P "$pid" 2>/dev/null || true
     wait "$pid" 2>/dev/null || true
     echo "soak: $program ($mode): $(frames_in "$stats") frames in $(($(date +%s) - start)) s"
     runs+=("$program.$mode=$stats")

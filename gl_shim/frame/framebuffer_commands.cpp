@@ -116,9 +116,13 @@ void glViewport(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height) {
   ctx.framebuffer.viewport_initialized = true;
 }
 
+// GL clamps the range to [0, 1]; a NaN becomes 0, as Mesa saturates it (checked against OSMesa:
+// glDepthRange(NaN, Inf) reads back 0 1), so no NaN reaches the viewport.
+static GLdouble saturate_depth(GLdouble v) { return v > 0.0 ? (v < 1.0 ? v : 1.0) : 0.0; }
+
 void glDepthRange(Context& ctx, GLdouble n, GLdouble f) {
-  ctx.framebuffer.depth_near = std::clamp(n, 0.0, 1.0);
-  ctx.framebuffer.depth_far = std::clamp(f, 0.0, 1.0);
+  ctx.framebuffer.depth_near = saturate_depth(n);
+  ctx.framebuffer.depth_far = saturate_depth(f);
 }
 
 void glScissor(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height) {

@@ -399,7 +399,12 @@ VKAPI_ATTR VkBool32 VKAPI_CALL VulkanDevice::on_validation_message(
   const char* level =
       (severity & VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT) ? "error" : "warning";
   std::fprintf(stderr, "glpt: [vulkan validation %s] %s\n", level, data->pMessage);
-  if (!self->validation_log_.empty()) append_validation_log(self->validation_log_, level, data);
+  // The loader's own messages (a missing driver: what faults.no-vulkan arranges on purpose) are
+  // about the installation, not about glpt's use of Vulkan: stderr only.
+  const bool from_loader =
+      data->pMessageIdName != nullptr && std::strcmp(data->pMessageIdName, "Loader Message") == 0;
+  if (!self->validation_log_.empty() && !from_loader)
+    append_validation_log(self->validation_log_, level, data);
   return VK_FALSE;
 }
 

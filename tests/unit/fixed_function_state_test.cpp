@@ -543,6 +543,21 @@ TEST_F(GlTest, StateCommandsAreInvalidBetweenBeginAndEnd) {
 // ---- query conversions
 // ---------------------------------------------------------------------------
 
+TEST_F(GlTest, DepthRangeSaturatesNanAndInfinityAsMesaDoes) {
+  // OSMesa 25 reads back glDepthRange(NaN, Inf) as (0, 1) and (-Inf, NaN) as (0, 0): a NaN
+  // never reaches the viewport (Vulkan requires minDepth and maxDepth in [0, 1]).
+  GLdouble range[2] = {-1, -1};
+  glDepthRange(std::nan(""), HUGE_VAL);
+  glGetDoublev(GL_DEPTH_RANGE, range);
+  EXPECT_EQ(range[0], 0.0);
+  EXPECT_EQ(range[1], 1.0);
+  glDepthRange(-HUGE_VAL, std::nan(""));
+  glGetDoublev(GL_DEPTH_RANGE, range);
+  EXPECT_EQ(range[0], 0.0);
+  EXPECT_EQ(range[1], 0.0);
+  EXPECT_EQ(glGetError(), GLenum{GL_NO_ERROR});
+}
+
 TEST_F(GlTest, QueriesConvertBetweenTypes) {
   // Colours (and normals, depth values) as integers: Mesa's mapping in (-1, 1].
   glClearColor(0.1f, 0.3f, 0.7f, 0.9f);
