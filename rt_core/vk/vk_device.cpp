@@ -403,8 +403,14 @@ VKAPI_ATTR VkBool32 VKAPI_CALL VulkanDevice::on_validation_message(
   // about the installation, not about glpt's use of Vulkan: stderr only.
   const bool from_loader =
       data->pMessageIdName != nullptr && std::strcmp(data->pMessageIdName, "Loader Message") == 0;
-  if (!self->validation_log_.empty() && !from_loader)
-    append_validation_log(self->validation_log_, level, data);
+  // No exception may leave the callback (it unwinds through the layer's C code): an allocation
+  // that fails here (faults.c_abi fails every allocation in turn) loses the log line only.
+  if (!self->validation_log_.empty() && !from_loader) {
+    try {
+      append_validation_log(self->validation_log_, level, data);
+    } catch (...) {
+    }
+  }
   return VK_FALSE;
 }
 
