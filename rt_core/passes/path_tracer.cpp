@@ -517,7 +517,7 @@ void PathTracer::trace(const TraceScene& scene, const TraceTargets& targets, Fra
     tlas_valid_ = true;
   }
 
-  const bool denoise = denoises_this_frame();
+  const bool denoise = denoises_this_frame() && denoiser_.fits(scene.width, scene.height);
   bool history_valid = false;
   if (denoise) history_valid = denoiser_.prepare(scene.width, scene.height, targets.history_owner);
   write_denoise_inputs(scene, denoise, history_valid, stats);

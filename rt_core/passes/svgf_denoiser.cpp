@@ -1,5 +1,7 @@
 #include "rt_core/passes/svgf_denoiser.hpp"
 
+#include <algorithm>
+
 #include "shared_types.h"
 #include "svgf_atrous_spv.h"    // generated from shaders/svgf_atrous.comp at build time
 #include "svgf_temporal_spv.h"  // generated from shaders/svgf_temporal.comp
@@ -28,6 +30,15 @@ struct IterationConstants {
 };
 
 }  // namespace
+
+bool SvgfDenoiser::fits(uint32_t width, uint32_t height) const {
+  const VkDeviceSize work = VkDeviceSize{width} * height * GLPT_DN_SLOTS * 3 * sizeof(gpu::vec4);
+  // The device's own limit where it allows more than 2 GiB. Below that, bindings beyond
+  // maxStorageBufferRange (lavapipe: 128 MiB) are kept as they were: they work up to 2 GiB.
+  const VkDeviceSize limit = std::max<VkDeviceSize>(
+      device_.properties().limits.maxStorageBufferRange, VkDeviceSize{0x7fffffff});
+  return work <= limit;
+}
 
 bool SvgfDenoiser::prepare(uint32_t width, uint32_t height, const void* owner) {
   if (!temporal_) {

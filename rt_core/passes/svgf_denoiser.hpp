@@ -36,6 +36,11 @@ class SvgfDenoiser {
   // and compiles the passes on first use. Returns whether the previous frame's history can be
   // reprojected (same size and owner, not forgotten). Throws VulkanError.
   bool prepare(uint32_t width, uint32_t height, const void* owner);
+  // Whether the device can filter a width x height frame: the passes bind the work buffer
+  // (GLPT_DN_SLOTS x 3 vec4 a pixel) whole, and past 2 GiB (4096 x 4096 needs 2.4 GB) lavapipe's
+  // 32-bit shader offsets wrap and the process crashes (tests/extremes). Larger frames are shown
+  // unfiltered, as under GLPT_DENOISER=off.
+  bool fits(uint32_t width, uint32_t height) const;
   // Records the temporal pass and `iterations` a-trous iterations; the result is in work() at
   // slot 0 (no iteration) or 1 + (iterations - 1) % 2. This frame's history becomes the
   // previous one for the next record.
