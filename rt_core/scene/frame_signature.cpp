@@ -5,9 +5,13 @@
 namespace glpt::rt {
 namespace {
 
+// Blocks equal by value, or bit for bit: a block holding a NaN (a matrix or light a program set
+// to NaN, which GL accepts) is never equal to itself by value, and a still frame drawn with it
+// would start its accumulation over every frame (tests/extremes). Equal bits are the same
+// state: members that point elsewhere (textures) are then the same pointers.
 template <typename Block>
 bool same_block(const std::shared_ptr<const Block>& a, const std::shared_ptr<const Block>& b) {
-  return a == b || (a && b && *a == *b);
+  return a == b || (a && b && (*a == *b || std::memcmp(a.get(), b.get(), sizeof(Block)) == 0));
 }
 
 const rec::StateSnapshot* state_of(const rec::FrameRecord& record, const rec::Command& command) {
