@@ -40,6 +40,12 @@ foreach(line IN LISTS lines)
   list(GET fields 0 scene)
   list(GET fields 3 max_diff)
   list(GET fields 4 min_fraction)
+  # The extremes scenes (scenes/extremes.cpp, tests/extremes/README.md) also carry the label
+  # extremes, so that `ctest -L extremes` runs them with the path-traced extremes tests.
+  set(extremes_label "")
+  if(scene MATCHES "^extremes_")
+    set(extremes_label ";extremes")
+  endif()
   string(APPEND text
     "add_test(conformance_harness.${scene} \"${RUN_SCENE}\" harness \"${scene}\" "
     "\"${OUT_DIR}/harness/${scene}\" \"${MESA_RUNNER}\" \"${IMGCOMPARE}\")\n"
@@ -48,9 +54,9 @@ foreach(line IN LISTS lines)
     # A pending scene (pending.txt) is expected to fail; once it matches Mesa its test fails,
     # and its line in pending.txt must go.
     if(scene IN_LIST pending_scenes)
-      set(image_properties "LABELS \"conformance;pending\" WILL_FAIL TRUE")
+      set(image_properties "LABELS \"conformance;pending${extremes_label}\" WILL_FAIL TRUE")
     else()
-      set(image_properties "LABELS conformance")
+      set(image_properties "LABELS \"conformance${extremes_label}\"")
     endif()
     string(APPEND text
       "add_test(conformance.${scene} \"${RUN_SCENE}\" image \"${scene}\" "
@@ -79,8 +85,8 @@ foreach(line IN LISTS lines)
     string(APPEND text
       "add_test(conformance_state.${scene} \"${RUN_SCENE}\" state \"${scene}\" "
       "\"${OUT_DIR}/state/${scene}\" \"${MESA_RUNNER}\" \"${GLPT_RUNNER}\" \"${IMGCOMPARE}\")\n"
-      "set_tests_properties(conformance_state.${scene} PROPERTIES LABELS conformance_state "
-      "TIMEOUT 60)\n")
+      "set_tests_properties(conformance_state.${scene} PROPERTIES LABELS "
+      "\"conformance_state${extremes_label}\" TIMEOUT 60)\n")
   endif()
 endforeach()
 file(WRITE ${OUTPUT} "${text}")
