@@ -29,6 +29,11 @@ struct FrameStats {
   uint64_t triangles = 0, rays = 0;
   // Path samples whose radiance was NaN or infinite: dropped (not averaged in, not shown).
   uint64_t non_finite_samples = 0;
+  // Bad input GL accepts and draws nothing of (Mesa alike): primitives dropped for a vertex
+  // position that is NaN or infinite, and draws under a modelview-projection with a NaN or an
+  // infinity (every clip coordinate of theirs is then non-finite, so clipping drops them all).
+  uint64_t non_finite_primitives = 0;
+  uint32_t non_finite_draws = 0;
   // Emissive triangles next-event estimation sampled (the frame's emitter table).
   uint32_t emitters = 0;
   // Samples per pixel in the image now shown.
@@ -70,6 +75,8 @@ struct FrameStats {
     triangles += s.triangles;
     rays += s.rays;
     non_finite_samples += s.non_finite_samples;
+    non_finite_primitives += s.non_finite_primitives;
+    non_finite_draws += s.non_finite_draws;
     emitters = s.emitters;
     accumulated_samples = s.accumulated_samples;
     draws += s.draws;

@@ -193,7 +193,8 @@ bool FrameOutput::end_frame(const rec::FrameRecord& record, const rec::DrawableC
         "total_ms=%.2f draws=%u resident_draws=%u pipelines_created=%u inexpressible=%u "
         "triangles=%" PRIu64 " rays=%" PRIu64
         " mrays_per_s=%.3f blas_builds=%u blas_refits=%u blas_reused=%u spp=%u non_finite=%" PRIu64
-        " emitters=%u host_waits=%u wall_ms=%.2f traced_draws=%u sky_draws=%u"
+        " non_finite_prims=%" PRIu64
+        " non_finite_draws=%u emitters=%u host_waits=%u wall_ms=%.2f traced_draws=%u sky_draws=%u"
         " raster_draws=%u instances=%u tlas_builds=%u tlas_updates=%u upload_bytes=%" PRIu64
         " classify_ms=%.3f denoise_ms=%.2f composite_ms=%.2f denoised=%u"
         " vk_objects=%" PRId64 " rss_kb=%" PRIu64 " classes=%s\n",
@@ -203,11 +204,12 @@ bool FrameOutput::end_frame(const rec::FrameRecord& record, const rec::DrawableC
             s.composite_ms + s.readback_ms + present_ms,
         s.draws, s.resident_draws, s.pipelines_created, s.inexpressible, s.triangles, s.rays,
         trace_s > 0 ? s.rays / trace_s / 1e6 : 0.0, s.blas_builds, s.blas_refits, s.blas_reused,
-        s.accumulated_samples, s.non_finite_samples, s.emitters, s.host_waits,
-        wall_timer.elapsed_ms(), s.traced_draws, s.sky_draws, s.raster_draws, s.instances,
-        s.tlas_builds, s.tlas_updates, s.upload_bytes, s.classify_ms, s.denoise_ms, s.composite_ms,
-        s.denoised, rt::vk::live_object_count().load(std::memory_order_relaxed),
-        resident_kilobytes(), kind_counts(s).c_str());
+        s.accumulated_samples, s.non_finite_samples, s.non_finite_primitives, s.non_finite_draws,
+        s.emitters, s.host_waits, wall_timer.elapsed_ms(), s.traced_draws, s.sky_draws,
+        s.raster_draws, s.instances, s.tlas_builds, s.tlas_updates, s.upload_bytes, s.classify_ms,
+        s.denoise_ms, s.composite_ms, s.denoised,
+        rt::vk::live_object_count().load(std::memory_order_relaxed), resident_kilobytes(),
+        kind_counts(s).c_str());
     if (stats_out_) std::fflush(stats_out_.get());
   }
   last_frame_stats_ = frame_stats_;

@@ -40,6 +40,10 @@ bool finite(const glm::vec4& v) {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && std::isfinite(v.w);
 }
 
+bool finite_matrix(const glm::mat4& m) {
+  return finite(m[0]) && finite(m[1]) && finite(m[2]) && finite(m[3]);
+}
+
 // Whether Mesa's triangles of `v` are its elements in order, three by three, all of them, with
 // finite positions: then the draw's own indices (or ascending ones) serve as the index list.
 bool in_vertex_order(const rec::VertexData& v, const std::vector<rec::DecomposedTriangle>& tris) {
@@ -250,6 +254,7 @@ void RasterRenderer::execute(const rec::FrameRecord& record, DrawableBuffers& bu
     const rec::PrimitiveClass cls = rec::primitive_class(v.mode);
     auto ok = [&](uint32_t vertex) { return finite(v.position[vertex]); };
     const rec::StateSnapshot& state = record.states[draw->state];
+    if (!finite_matrix(state.transform->modelview_projection)) ++stats.non_finite_draws;
     // Strips stay strips (one stipple pattern along each) unless Mesa draws them segment by
     // segment (display lists).
     if (cls == rec::PrimitiveClass::kLines && v.mode != GL_LINES &&
@@ -266,7 +271,10 @@ void RasterRenderer::execute(const rec::FrameRecord& record, DrawableBuffers& bu
         bool good = true;
         for (uint32_t k = 0; k < range.count; ++k)
           good = good && element(k) < v.vertex_count() && ok(element(k));
-        if (!good) continue;
+        if (!good) {
+          ++stats.non_finite_primitives;
+          continue;
+        }
         if (!indices.empty()) indices.push_back(kRestartIndex);
         for (uint32_t k = 0; k < range.count; ++k) indices.push_back(element(k));
         if (v.mode == GL_LINE_LOOP) indices.push_back(element(0));
@@ -311,12 +319,20 @@ void RasterRenderer::execute(const rec::FrameRecord& record, DrawableBuffers& bu
       rec::decompose(v, assembly, decomposed_);
       if (cls == rec::PrimitiveClass::kPoints) {
         g.topology = RasterTopology::kPoints;
-        for (uint32_t p : decomposed_.points)
-          if (ok(p)) indices.push_back(p);
+        for (uint32_t p : decomposed_.points) {
+          if (ok(p))
+            indices.push_back(p);
+          else
+            ++stats.non_finite_primitives;
+        }
       } else if (cls == rec::PrimitiveClass::kLines) {
         g.topology = RasterTopology::kLines;
-        for (const auto& l : decomposed_.lines)
-          if (ok(l.v[0]) && ok(l.v[1])) indices.insert(indices.end(), {l.v[0], l.v[1]});
+        for (const auto& l : decomposed_.lines) {
+          if (ok(l.v[0]) && ok(l.v[1]))
+            indices.insert(indices.end(), {l.v[0], l.v[1]});
+          else
+            ++stats.non_finite_primitives;
+        }
       } else {
         g.topology = RasterTopology::kTriangles;
         if (!unfilled && in_vertex_order(v, decomposed_.triangles)) {
@@ -328,7 +344,10 @@ void RasterRenderer::execute(const rec::FrameRecord& record, DrawableBuffers& bu
         }
         edge_masks.clear();
         for (const auto& t : decomposed_.triangles) {
-          if (!ok(t.v[0]) || !ok(t.v[1]) || !ok(t.v[2])) continue;
+          if (!ok(t.v[0]) || !ok(t.v[1]) || !ok(t.v[2])) {
+            ++stats.non_finite_primitives;
+            continue;
+          }
           indices.insert(indices.end(), {t.v[0], t.v[1], t.v[2]});
           edge_masks.push_back(t.boundary_edges);
         }

@@ -402,6 +402,13 @@ TEST(Extremes, NonFiniteGeometryIsDroppedInBothModes) {
     EXPECT_GT(within, 0.995) << mode;
     // A still frame with NaN in its matrices is still the same frame: it accumulates.
     EXPECT_EQ(bad_stats.accumulated_samples, clean_stats.accumulated_samples) << mode;
+    // Dropped and counted (GLPT_STATS' non_finite_prims and non_finite_draws): the two
+    // triangles with a NaN or an infinite vertex, the three quads under a non-finite modelview
+    // or projection.
+    EXPECT_EQ(clean_stats.non_finite_primitives, 0u) << mode;
+    EXPECT_EQ(clean_stats.non_finite_draws, 0u) << mode;
+    EXPECT_EQ(bad_stats.non_finite_primitives, 2u) << mode;
+    EXPECT_EQ(bad_stats.non_finite_draws, 3u) << mode;
   }
 }
 
