@@ -492,6 +492,58 @@ TEST(Extremes, NonFiniteNormalsAndLightsStayInTheirOwnPixels) {
   }
 }
 
+// The floor and sphere; with `extra`, zero-area triangles (a repeated vertex, collinear
+// vertices, all three the same, a zero normal) across the view and the sphere drawn a second time
+// over itself (the same triangles, the same material: coincident surfaces for the rays too).
+// GL draws nothing of the zero-area triangles, and the duplicate covers what the sphere covers.
+void floor_with_degenerate_and_duplicate_triangles(bool extra) {
+  floor_with_non_finite_geometry(false);
+  if (!extra) return;
+  material4(GL_DIFFUSE, 1.0f, 0.0f, 0.0f);
+  glBegin(GL_TRIANGLES);
+  glNormal3f(0, 0, 1);
+  glVertex3f(-2, -2, -4);
+  glVertex3f(2, 2, -4);
+  glVertex3f(-2, -2, -4);
+  glVertex3f(-2, -2, -4);
+  glVertex3f(0, 0, -4);
+  glVertex3f(2, 2, -4);
+  glVertex3f(0.5f, 0.5f, -4);
+  glVertex3f(0.5f, 0.5f, -4);
+  glVertex3f(0.5f, 0.5f, -4);
+  glNormal3f(0, 0, 0);
+  glVertex3f(-2, 1, -4);
+  glVertex3f(2, 1, -4);
+  glVertex3f(0, 1, -4);
+  glEnd();
+  material4(GL_DIFFUSE, 0.9f, 0.5f, 0.2f);
+  sphere_around(0.0, -0.6, -6.0, 0.9, 24, 12);
+}
+
+TEST(Extremes, DegenerateAndDuplicateTrianglesChangeNothing) {
+  for (const char* mode : {"raster", "path"}) {
+    const Settings settings = with_mode(mode, {{"GLPT_SPP", "4"}});
+    const Image clean = render(
+        48, settings, [] { floor_with_degenerate_and_duplicate_triangles(false); }, 3);
+    glpt::rt::FrameStats stats;
+    const Image extra = render(
+        48, settings, [] { floor_with_degenerate_and_duplicate_triangles(true); }, 3, &stats);
+    expect_opaque(extra, mode);
+    const double mad = mean_abs_diff(clean, extra);
+    std::printf("%s: degenerate and duplicate triangles: mean |diff| %.2f, %.2f%% within 2\n", mode,
+                mad, 100 * fraction_within(clean, extra, 2));
+    if (std::string(mode) == "raster") {
+      EXPECT_EQ(clean.rgba, extra.rgba);
+    } else {
+      // Other geometry in the acceleration structure: the same samples meet the same surfaces
+      // (the duplicate at the same distance), within the noise of 12 samples a pixel.
+      EXPECT_LT(mad, 1.0);
+      EXPECT_GT(fraction_within(clean, extra, 12), 0.97);
+      EXPECT_EQ(stats.non_finite_samples, 0u);
+    }
+  }
+}
+
 TEST(Extremes, NanParametersRaiseInvalidValueAndLeaveTheStateAlone) {
   // GL 1.5 2.1.1 leaves non-numbers unspecified; GL names GL_INVALID_VALUE for these
   // parameters outside their ranges. Mesa's range checks let NaN through into the state (its
