@@ -97,6 +97,8 @@ GUARDS = {
     "glDrawElements": "d.client_indices_fit()",
     "glDrawRangeElements": "d.client_indices_fit() && d.client_range_fits(start, end)",
     "glMultiDrawElements": "d.client_indices_fit()",
+    # ({last}: the last parameter, drawcount or EXT's primcount.)
+    "glMultiDrawArrays": "d.client_multi_draw_fits(first, count, {last})",
     # Display lists that call lists: a list calling itself twice asks for 2^64 calls (GL nests
     # 64 deep), a hang in any GL. While a list is compiled, at most one list call goes into it,
     # so nested lists are chains, never trees.
@@ -210,6 +212,7 @@ def main():
             lines.append(f"  {ctype} {p.name} = {expr};")
         guard = GUARDS.get(core(name))
         if guard:
+            guard = guard.replace("{last}", cmd.params[-1].name)
             lines.append(f"  if (!({guard})) return d.skip_unsafe_draw();")
         call = f"{name}({', '.join(p.name for p in cmd.params)})"
         lines.append(f"  d.returned({call});" if not cmd.returns_void else f"  {call};")

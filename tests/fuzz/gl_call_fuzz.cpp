@@ -251,6 +251,14 @@ class Decoder {
     // Indices in a buffer object are whatever bytes it holds.
     return ctx_.arrays.element_buffer == nullptr && client_pointers_fit();
   }
+  // glMultiDrawArrays: its firsts and counts are small_ints(), below kMaxVertices together; a
+  // negative first would read before the array.
+  bool client_multi_draw_fits(const GLint* first, const GLsizei* count, GLsizei drawcount) {
+    if (!reads_client_arrays()) return true;
+    for (GLsizei i = 0; i < drawcount; ++i)
+      if (count[i] > 0 && first[i] < 0) return false;
+    return client_pointers_fit();
+  }
   bool client_range_fits(GLuint start, GLuint end) {
     return !reads_client_arrays() || end < start || end < GLuint{kMaxVertices};
   }
