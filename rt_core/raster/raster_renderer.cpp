@@ -585,7 +585,14 @@ void RasterRenderer::bind(Recording& r, const PipelineKey& key,
   writes[0].descriptorCount = 1;
   writes[0].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
   writes[0].pBufferInfo = &states;
-  VkDescriptorBufferInfo edges{vertices_.handle(), 0, VK_WHOLE_SIZE};
+  // The shaders read edge flags and per-vertex materials through this binding, not the
+  // positions: the binding may not exceed maxStorageBufferRange (lavapipe: 128 MiB) even when a
+  // frame's vertices do (a million triangles: 144 MB). Edge-flag and material words placed past
+  // the limit in such a frame are out of the binding's reach and are not drawn right (known
+  // limitation; the million-triangle extreme has neither).
+  const VkDeviceSize edge_range =
+      std::min<VkDeviceSize>(vertices_.size(), device_->limits().maxStorageBufferRange);
+  VkDescriptorBufferInfo edges{vertices_.handle(), 0, edge_range};
   writes[1] = writes[0];
   writes[1].dstBinding = GLPT_RASTER_BINDING_EDGES;
   writes[1].pBufferInfo = &edges;
