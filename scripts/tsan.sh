@@ -16,5 +16,9 @@ cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DGLPT_SANITIZE=thread >/dev/null
 cmake --build "$build" -j "$(nproc)" --target glpt_threading_tests glpt_egl_tests glpt_glx_tests \
   glpt_c_abi_tests
+# A forked child that exits runs lavapipe's exit handler, which joins driver threads that only
+# the parent has: under ThreadSanitizer that join waits forever (without it, it returns). The
+# test exists for the parent's sake (ASan and the normal build run it).
+export GTEST_FILTER=${GTEST_FILTER:--Egl.ForkedChildExitingLeavesTheParentPresenting}
 export TSAN_OPTIONS=${TSAN_OPTIONS:-halt_on_error=1:second_deadlock_stack=1:suppressions=$root/tests/tsan.supp}
 ctest --test-dir "$build" --output-on-failure -j 2 --timeout 600 -L threading "$@"
