@@ -155,6 +155,8 @@ int run(Options options) {
     const trace::TraceReader::Status s = reader->next(call, error);
     if (s == trace::TraceReader::Status::End && passes_left > 0) {
       --passes_left;
+      replayer.forget_signatures();  // they die with the reader being replaced
+      reader.reset();
       if (!(reader = trace::TraceReader::open(options.trace, error))) {
         std::fprintf(stderr, "glpt-replay: %s\n", error.c_str());
         status = kExitBadTrace;

@@ -49,6 +49,10 @@ class Replayer {
   // the frame callback's).
   bool replay(const trace::Call& call, std::string* error);
   const ReplayCounts& counts() const { return counts_; }
+  // The dispatch entries are cached by the trace reader's function signatures, which live as
+  // long as their reader: a replay that opens the trace again (--repeat) calls this first, or a
+  // new signature allocated where an old one was would dispatch to the old one's command.
+  void forget_signatures() { entries_.clear(); }
 
   // The surface size glretrace starts a window with before glViewport grows it.
   static constexpr uint32_t kInitialSurfaceSize = 32;
