@@ -7,7 +7,8 @@
 //                                        division), w: fog coordinate
 //   1 SURFACE            R32G32B32A32UI  x: record state index + 1 (0: no traced surface here),
 //                                        y: shading normal, z: geometric normal (octahedral,
-//                                        2 x snorm16), w: flags (bits 0-15) | half(shininess) << 16
+//                                        2 x snorm16), w: flags (bits 0-7) | precision exponent
+//                                        (bits 8-15) | half(shininess) << 16
 //   2 MATERIAL0          R32G32B32A32UI  lit: half2 diffuse.rg, diffuse.ba, ambient.rg,
 //                                        (ambient.b, specular.r); unlit: x = the fragment's colour
 //                                        as unorm8 RGBA (exactly what raster mode would write)
@@ -27,6 +28,9 @@
 // SURFACE.w flags
 #define GLPT_GBUFFER_LIT 1u        // GL lighting was on: trace it; off: MATERIAL0.x is the colour
 #define GLPT_GBUFFER_BACK_FACE 2u  // two-sided lighting lit the back face (normal already flipped)
+// SURFACE.w bits 8-15: e, with 2^(e - 128) at least the eye-space magnitude of the terms the
+// position was computed from (object coordinates times the modelview, see offset_ray.h); 0: none.
+#define GLPT_GBUFFER_PRECISION_SHIFT 8u
 
 // Per-vertex outputs the G-buffer variants add after raster_ff.vert's own (locations 0-8).
 #define GLPT_GBUFFER_VARYING_EYE 9            // vec4: homogeneous eye-space position
@@ -37,6 +41,9 @@
 #define GLPT_GBUFFER_VARYING_CORNERS 12      // vec3[3]
 #define GLPT_GBUFFER_VARYING_CORNER_NORMALS 15  // vec3[3]
 #define GLPT_GBUFFER_VARYING_BARYCENTRIC 18  // vec2: weights of corners 1 and 2
+// float: the eye-space magnitude of the terms of the position (per vertex into the geometry
+// shader, the triangle's largest out of it, flat).
+#define GLPT_GBUFFER_VARYING_TERM_MAGNITUDE 19
 
 #ifndef __cplusplus
 // Octahedral unit-vector encoding (Cigolle et al. 2014) in two snorm16 values: about 1e-4
@@ -48,6 +55,16 @@ uint gbuffer_pack_normal(vec3 n) {
   vec2 p = n.xy * (1.0 / (abs(n.x) + abs(n.y) + abs(n.z)));
   if (n.z < 0.0) p = (1.0 - abs(p.yx)) * gbuffer_sign_not_zero(p);
   return packSnorm2x16(p);
+}
+// The precision exponent of SURFACE.w: rounded up, so the magnitude it gives back is never less.
+uint gbuffer_pack_precision(float magnitude) {
+  if (!(magnitude > 0.0)) return 0u;  // also NaN
+  int e = clamp(int(ceil(log2(min(magnitude, 3.0e38)))) + 128, 1, 255);
+  return uint(e) << GLPT_GBUFFER_PRECISION_SHIFT;
+}
+float gbuffer_unpack_precision(uint surface_w) {
+  uint e = (surface_w >> GLPT_GBUFFER_PRECISION_SHIFT) & 0xFFu;
+  return e == 0u ? 0.0 : exp2(float(int(e) - 128));
 }
 vec3 gbuffer_unpack_normal(uint bits) {
   vec2 p = unpackSnorm2x16(bits);

@@ -90,6 +90,7 @@ layout(location = GLPT_GBUFFER_VARYING_VERTEX_COLOR) INTERPOLATION in vec4 v_ver
 layout(location = GLPT_GBUFFER_VARYING_CORNERS) flat in vec3 v_corner[3];
 layout(location = GLPT_GBUFFER_VARYING_CORNER_NORMALS) flat in vec3 v_corner_normal[3];
 layout(location = GLPT_GBUFFER_VARYING_BARYCENTRIC) in vec2 v_barycentric;
+layout(location = GLPT_GBUFFER_VARYING_TERM_MAGNITUDE) flat in float v_term_magnitude;
 layout(location = GLPT_GBUFFER_POSITION) out vec4 o_position;
 layout(location = GLPT_GBUFFER_SURFACE) out uvec4 o_surface;
 layout(location = GLPT_GBUFFER_MATERIAL0) out uvec4 o_material0;
@@ -743,7 +744,7 @@ void write_gbuffer(vec4 color, bool back, vec4 texels[GLPT_RASTER_MAX_UNITS]) {
   vec3 shading = normalize_or(v_normal, vec3(0.0, 0.0, 1.0));
   vec3 geometric = normalize_or(cross(edge1, edge2), shading);
   o_position = vec4(p, v_fog);
-  uint flags = 0u;
+  uint flags = gbuffer_pack_precision(v_term_magnitude);
   if ((kVsFlags & GLPT_VS_LIGHTING) == 0u) {
     // Unlit: the exact colour raster mode writes; nothing to trace at this pixel.
     o_surface = uvec4(push.indices.x + 1u, gbuffer_pack_normal(shading),

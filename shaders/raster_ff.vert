@@ -58,6 +58,7 @@ layout(location = GLPT_RASTER_ATTR_TEXCOORD0 + 3) in vec4 a_texcoord3;
 layout(location = GLPT_GBUFFER_VARYING_EYE) out vec4 v_eye;
 layout(location = GLPT_GBUFFER_VARYING_NORMAL) out vec3 v_normal;
 layout(location = GLPT_GBUFFER_VARYING_VERTEX_COLOR) out vec4 v_vertex_color;
+layout(location = GLPT_GBUFFER_VARYING_TERM_MAGNITUDE) out float v_term_magnitude;
 #endif
 
 // Declared in full so the geometry shader (raster_unfilled.geom) can match the block exactly.
@@ -291,6 +292,12 @@ void main() {
   // Homogeneous, so a projective modelview (planar shadows) interpolates correctly; the fragment
   // shader divides.
   v_eye = transform(S.modelview, position);
+  // How coarse the eye-space position is: its float error scales with the terms of the product,
+  // not with the result (a vertex 1e5 from its object's origin under a modelview that brings it
+  // back near the eye is 1/128 coarse, as the BLAS holding the same coordinates). offset_ray.h.
+  vec4 terms = abs(S.modelview[0]) * abs(position.x) + abs(S.modelview[1]) * abs(position.y) +
+               abs(S.modelview[2]) * abs(position.z) + abs(S.modelview[3]) * abs(position.w);
+  v_term_magnitude = max(max(terms.x, terms.y), terms.z) / max(abs(v_eye.w), 1.0e-30);
   v_normal = normal;
   v_vertex_color = a_color;
   // Sub-pixel jitter of the projection (anti-aliasing by accumulation): push.indices.zw hold the

@@ -4,7 +4,8 @@
 // every fragment the whole triangle: its three eye-space corners and vertex normals (flat) and
 // the fragment's barycentric coordinates. The fragment shader derives the exact geometric normal
 // from the corners and moves secondary-ray origins onto the smooth surface the vertex normals
-// describe (Hanika's shadow-terminator fix), neither of which one vertex's data allows.
+// describe (Hanika's shadow-terminator fix), neither of which one vertex's data allows; and the
+// triangle's largest term magnitude (how coarse its positions are: offset_ray.h).
 //
 // Built twice: GLPT_CLIP 1 passes the user clip distances through.
 #extension GL_GOOGLE_include_directive : require
@@ -24,6 +25,7 @@ layout(location = 8) in float g_fog[];
 layout(location = GLPT_GBUFFER_VARYING_EYE) in vec4 g_eye[];
 layout(location = GLPT_GBUFFER_VARYING_NORMAL) in vec3 g_normal[];
 layout(location = GLPT_GBUFFER_VARYING_VERTEX_COLOR) in vec4 g_vertex_color[];
+layout(location = GLPT_GBUFFER_VARYING_TERM_MAGNITUDE) in float g_term_magnitude[];
 // The vertex shader's per-vertex block, member for member (Vulkan compares the blocks).
 in gl_PerVertex {
   vec4 gl_Position;
@@ -45,6 +47,7 @@ layout(location = GLPT_GBUFFER_VARYING_VERTEX_COLOR) out vec4 v_vertex_color;
 layout(location = GLPT_GBUFFER_VARYING_CORNERS) flat out vec3 v_corner[3];
 layout(location = GLPT_GBUFFER_VARYING_CORNER_NORMALS) flat out vec3 v_corner_normal[3];
 layout(location = GLPT_GBUFFER_VARYING_BARYCENTRIC) out vec2 v_barycentric;
+layout(location = GLPT_GBUFFER_VARYING_TERM_MAGNITUDE) flat out float v_term_magnitude;
 out gl_PerVertex {
   vec4 gl_Position;
 #if GLPT_CLIP
@@ -58,6 +61,7 @@ void main() {
     corners[i] = g_eye[i].xyz / g_eye[i].w;
     normals[i] = g_normal[i];
   }
+  float term_magnitude = max(max(g_term_magnitude[0], g_term_magnitude[1]), g_term_magnitude[2]);
   const vec2 barycentric[3] = vec2[3](vec2(0.0), vec2(1.0, 0.0), vec2(0.0, 1.0));
   for (int i = 0; i < 3; ++i) {
     gl_Position = gl_in[i].gl_Position;
@@ -76,6 +80,7 @@ void main() {
     v_corner = corners;
     v_corner_normal = normals;
     v_barycentric = barycentric[i];
+    v_term_magnitude = term_magnitude;
     EmitVertex();
   }
   EndPrimitive();

@@ -197,7 +197,7 @@ bool FrameOutput::end_frame(const rec::FrameRecord& record, const rec::DrawableC
         " non_finite_draws=%u emitters=%u host_waits=%u wall_ms=%.2f traced_draws=%u sky_draws=%u"
         " raster_draws=%u instances=%u tlas_builds=%u tlas_updates=%u upload_bytes=%" PRIu64
         " classify_ms=%.3f denoise_ms=%.2f composite_ms=%.2f denoised=%u"
-        " vk_objects=%" PRId64 " rss_kb=%" PRIu64 " classes=%s\n",
+        " vk_objects=%" PRId64 " rss_kb=%" PRIu64 " classes=%s vk_by_kind=%s\n",
         frame_index_, width, height, frame_ms, record_ms_, s.upload_ms, s.raster_ms, s.blas_ms,
         s.tlas_ms, s.trace_ms, s.readback_ms, present_ms,
         record_ms_ + s.upload_ms + s.raster_ms + s.blas_ms + s.tlas_ms + s.trace_ms + s.denoise_ms +
@@ -209,7 +209,7 @@ bool FrameOutput::end_frame(const rec::FrameRecord& record, const rec::DrawableC
         s.raster_draws, s.instances, s.tlas_builds, s.tlas_updates, s.upload_bytes, s.classify_ms,
         s.denoise_ms, s.composite_ms, s.denoised,
         rt::vk::live_object_count().load(std::memory_order_relaxed), resident_kilobytes(),
-        kind_counts(s).c_str());
+        kind_counts(s).c_str(), rt::vk::live_object_counts_text().c_str());
     if (stats_out_) std::fflush(stats_out_.get());
   }
   last_frame_stats_ = frame_stats_;

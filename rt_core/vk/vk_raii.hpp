@@ -5,8 +5,12 @@
 
 #include <vulkan/vulkan.h>
 
+#include <array>
 #include <atomic>
 #include <cstdint>
+#include <string>
+#include <tuple>
+#include <type_traits>
 #include <utility>
 
 namespace glpt::rt::vk {
@@ -19,13 +23,74 @@ inline std::atomic<int64_t>& live_object_count() {
   return count;
 }
 
+// The same count per kind of handle, so that a count that grows says what grows (the soak's
+// report names it). The kinds are the handle types the owners below are instantiated with.
+using ObjectKinds =
+    std::tuple<VkInstance, VkDevice, VkDebugUtilsMessengerEXT, VkAccelerationStructureKHR, VkBuffer,
+               VkDeviceMemory, VkCommandPool, VkDescriptorPool, VkDescriptorSetLayout, VkFence,
+               VkPipeline, VkPipelineLayout, VkShaderModule, VkImage, VkImageView, VkSampler,
+               VkPipelineCache, VkQueryPool>;
+template <typename Handle, std::size_t index = 0>
+constexpr std::size_t kind_index() {
+  if constexpr (index == std::tuple_size_v<ObjectKinds>)
+    return index;
+  else if constexpr (std::is_same_v<Handle, std::tuple_element_t<index, ObjectKinds>>)
+    return index;
+  else
+    return kind_index<Handle, index + 1>();
+}
+inline constexpr std::array<const char*, std::tuple_size_v<ObjectKinds>> kObjectKindNames = {
+    "instance",
+    "device",
+    "debug_messenger",
+    "acceleration_structure",
+    "buffer",
+    "memory",
+    "command_pool",
+    "descriptor_pool",
+    "descriptor_set_layout",
+    "fence",
+    "pipeline",
+    "pipeline_layout",
+    "shader_module",
+    "image",
+    "image_view",
+    "sampler",
+    "pipeline_cache",
+    "query_pool"};
+inline std::array<std::atomic<int64_t>, kObjectKindNames.size()>& live_object_counts_by_kind() {
+  static std::array<std::atomic<int64_t>, kObjectKindNames.size()> counts{};
+  return counts;
+}
+template <typename Handle>
+std::atomic<int64_t>& live_count_of() {
+  constexpr std::size_t index = kind_index<Handle>();
+  static_assert(index < kObjectKindNames.size(), "a Vulkan handle type without a kind name");
+  return live_object_counts_by_kind()[index];
+}
+// "buffer:12,memory:12,...": the kinds with objects alive, for GLPT_STATS (vk_by_kind=).
+inline std::string live_object_counts_text() {
+  std::string text;
+  for (std::size_t kind = 0; kind < kObjectKindNames.size(); ++kind) {
+    int64_t alive = live_object_counts_by_kind()[kind].load(std::memory_order_relaxed);
+    if (alive == 0) continue;
+    if (!text.empty()) text += ',';
+    text += kObjectKindNames[kind];
+    text += ':';
+    text += std::to_string(alive);
+  }
+  return text.empty() ? std::string("none") : text;
+}
+
 template <typename Handle, typename Deleter>
 class Unique {
  public:
   Unique() = default;
   Unique(Handle handle, Deleter deleter) : handle_(handle), deleter_(deleter) {
-    if (handle_ != Handle{VK_NULL_HANDLE})
+    if (handle_ != Handle{VK_NULL_HANDLE}) {
       live_object_count().fetch_add(1, std::memory_order_relaxed);
+      live_count_of<Handle>().fetch_add(1, std::memory_order_relaxed);
+    }
   }
   Unique(const Unique&) = delete;
   Unique& operator=(const Unique&) = delete;
@@ -45,6 +110,7 @@ class Unique {
     if (handle_ != Handle{VK_NULL_HANDLE}) {
       deleter_(handle_);
       live_object_count().fetch_sub(1, std::memory_order_relaxed);
+      live_count_of<Handle>().fetch_sub(1, std::memory_order_relaxed);
     }
     handle_ = Handle{VK_NULL_HANDLE};
   }

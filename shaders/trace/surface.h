@@ -80,7 +80,8 @@ Surface load_surface(Hit hit, vec3 ray_direction, float cone_width) {
                 w.z * min(0.0, dot(p_object - p2, u2)) * u2;
     p_shadow = p_object - lift;
   }
-  s.shadow_position = offset_ray_origin(hit.object_to_eye * vec4(p_shadow, 1.0), s.offset_normal);
+  s.shadow_position = offset_ray_origin(hit.object_to_eye * vec4(p_shadow, 1.0), s.offset_normal,
+                                        term_magnitude(hit.object_to_eye, p_shadow));
 
   // Interpolated relative to vertex 0, so a constant colour comes out bit-exact.
   vec3 color = v0.color.rgb + w.y * (v1.color.rgb - v0.color.rgb) +
@@ -162,7 +163,8 @@ Surface load_gbuffer_surface(ivec2 pixel, uvec4 surface) {
       dot(geometric, towards_viewer(s.state, s.position)) >= 0.0 ? geometric : -geometric;
   // The terminator fix applies where the vertex normals point to the side rays leave from.
   vec3 base = dot(m.lift, s.offset_normal) > 0.0 ? s.position + m.lift : s.position;
-  s.shadow_position = offset_ray_origin(base, s.offset_normal);
+  s.shadow_position =
+      offset_ray_origin(base, s.offset_normal, gbuffer_unpack_precision(surface.w));
   s.ambient = m.ambient;
   s.diffuse_gl = m.diffuse.rgb;
   s.specular_gl = m.specular;

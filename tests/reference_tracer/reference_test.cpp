@@ -271,15 +271,14 @@ TEST(Reference, CornerAtMicroScale) { expect_same_distribution(corner(1e-6f)); }
 TEST(Reference, CornerAtMegaScale) { expect_same_distribution(corner(1e6f)); }
 
 // The corner drawn 1e5 from the object-space origin (x + 1e5 is exact in float for these
-// coordinates), under a modelview that brings it back in front of the camera.
-// Disabled: glpt fails it (docs/light-transport.md, "Tests"). Rays meet the BLAS in object
-// space, where coordinates near 1e5 have float steps of 1/128, while secondary-ray origins are
-// moved off the surface by a few ulps of their eye-space position (about 1e-4 here). With
-// bounces off, the lit floor is darker and its 1-sample variance 20 times the reference's (block
-// (8,0) red 17.0 against 21.1, variance 69 against 3.7: shadow rays blocked at random); with
-// bounces, the floor behind the wall is lit through it (block (0,16) red 40.9 against 26.2). The
-// reference's values are those of the corner at the origin, which glpt matches.
-TEST(Reference, DISABLED_CornerFarFromTheOrigin) {
+// coordinates), under a modelview that brings it back in front of the camera. Rays meet the BLAS
+// in object space, where coordinates near 1e5 have float steps of 1/128: secondary-ray origins
+// must move off the surface by a step of that size, not by a few ulps of their eye-space
+// position (about 1e-4 here). Before they did (shaders/trace/offset_ray.h), the lit floor was
+// darker with 20 times the reference's 1-sample variance with bounces off (shadow rays blocked at
+// random), and with bounces the floor behind the wall was lit through it (block (0,16) red 40.9
+// against 26.2); a step too large leaks light the same way (16 steps: 11 of 48 blocks out).
+TEST(Reference, CornerFarFromTheOrigin) {
   expect_same_distribution(corner(1.0f, glm::vec3(1.0e5f, 0.0f, 0.0f)));
 }
 
