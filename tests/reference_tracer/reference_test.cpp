@@ -154,6 +154,32 @@ TEST(Reference, EmissiveSquareLightsAPlane) {
   expect_same_distribution(scene);
 }
 
+// The extremes suite's emissions against the reference: a square 1/1000 the size with 1e6 times
+// the radiance (about a third of the power above, from a sub-pixel emitter: next-event
+// estimation must find it, bounce rays that hit it must not turn into fireflies MIS does not
+// weigh down, and the camera pixels over it saturate as the composite clamps), and one a
+// million times dimmer than GL's unit emission beside a unit light (what it adds must not be lost
+// or amplified by the tone mapping: the images stay the light's alone to within rounding).
+TEST(Reference, TinyEmitterOfEmission1e6LightsAPlane) {
+  Scene scene = base_scene();
+  scene.trace.bounces = 1;
+  facing_plane(scene, -5.0f, 3.0f, diffuse(glm::vec3(0.75f)));
+  Material emitter;
+  emitter.emission = glm::vec3(1.0e6f);
+  const float h = 1.0e-3f;
+  scene.add_quad({-h, -h, -3.5f}, {-h, h, -3.5f}, {h, h, -3.5f}, {h, -h, -3.5f}, emitter);
+  expect_same_distribution(scene);
+}
+
+TEST(Reference, EmitterOfEmission1eMinus6BesideALight) {
+  Scene scene = plane_under_light(0.3f);
+  scene.trace.bounces = 1;
+  Material emitter;
+  emitter.emission = glm::vec3(1.0e-6f);
+  scene.add_quad({-1, -1, -4.5f}, {-1, 1, -4.5f}, {1, 1, -4.5f}, {1, -1, -4.5f}, emitter);
+  expect_same_distribution(scene);
+}
+
 // A floor and a red wall standing on it at x = -1 under a sphere light, with `scale` applied to
 // every length (the light's quadratic attenuation scaled to match, so the image is the same) and
 // the geometry placed at `offset` in object space under a modelview translating it back.
