@@ -41,8 +41,9 @@
 #define GLPT_GBUFFER_VARYING_CORNERS 12      // vec3[3]
 #define GLPT_GBUFFER_VARYING_CORNER_NORMALS 15  // vec3[3]
 #define GLPT_GBUFFER_VARYING_BARYCENTRIC 18  // vec2: weights of corners 1 and 2
-// float: the eye-space magnitude of the terms of the position (per vertex into the geometry
-// shader, the triangle's largest out of it, flat).
+// float: the eye-space magnitude of the terms of the position: per vertex into the geometry
+// shader as GLPT_GBUFFER_VARYING_NORMAL's fourth component (the geometry shader's inputs are
+// limited to 64 components, 16 locations, on lavapipe), the triangle's largest out of it (flat).
 #define GLPT_GBUFFER_VARYING_TERM_MAGNITUDE 19
 
 #ifndef __cplusplus

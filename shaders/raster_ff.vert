@@ -58,7 +58,7 @@ layout(location = GLPT_RASTER_ATTR_TEXCOORD0 + 3) in vec4 a_texcoord3;
 layout(location = GLPT_GBUFFER_VARYING_EYE) out vec4 v_eye;
 layout(location = GLPT_GBUFFER_VARYING_NORMAL) out vec3 v_normal;
 layout(location = GLPT_GBUFFER_VARYING_VERTEX_COLOR) out vec4 v_vertex_color;
-layout(location = GLPT_GBUFFER_VARYING_TERM_MAGNITUDE) out float v_term_magnitude;
+layout(location = GLPT_GBUFFER_VARYING_NORMAL, component = 3) out float v_term_magnitude;
 #endif
 
 // Declared in full so the geometry shader (raster_unfilled.geom) can match the block exactly.

@@ -25,7 +25,7 @@ layout(location = 8) in float g_fog[];
 layout(location = GLPT_GBUFFER_VARYING_EYE) in vec4 g_eye[];
 layout(location = GLPT_GBUFFER_VARYING_NORMAL) in vec3 g_normal[];
 layout(location = GLPT_GBUFFER_VARYING_VERTEX_COLOR) in vec4 g_vertex_color[];
-layout(location = GLPT_GBUFFER_VARYING_TERM_MAGNITUDE) in float g_term_magnitude[];
+layout(location = GLPT_GBUFFER_VARYING_NORMAL, component = 3) in float g_term_magnitude[];
 // The vertex shader's per-vertex block, member for member (Vulkan compares the blocks).
 in gl_PerVertex {
   vec4 gl_Position;
