@@ -29,11 +29,10 @@ layout(std140, set = 0, binding = GLPT_CO_BINDING_FRAME) uniform FrameBlock {
 layout(std430, set = 0, binding = GLPT_CO_BINDING_STATES) readonly buffer StateTable {
   GpuTraceState states[];
 };
-// Per pixel two vec4: [2i] rgb: sum of the covered samples' colour, a: sum of their alpha;
-// [2i + 1] x: how many samples were covered, y: how many samples there were.
-layout(std430, set = 0, binding = GLPT_CO_BINDING_ACCUMULATION) buffer Accumulation {
-  vec4 accumulation[];
-};
+// Per pixel, layer 0 rgb: sum of the covered samples' colour, a: sum of their alpha; layer 1
+// x: how many samples were covered, y: how many samples there were. An image, not a buffer: a
+// buffer binding is limited to maxStorageBufferRange (lavapipe: 128 MiB, 4 million pixels).
+layout(set = 0, binding = GLPT_CO_BINDING_ACCUMULATION, rgba32f) uniform image2DArray accumulation;
 layout(set = 0, binding = GLPT_CO_BINDING_GBUFFER + GLPT_GBUFFER_POSITION, rgba32f)
     uniform readonly image2D gbuffer_position;
 layout(set = 0, binding = GLPT_CO_BINDING_GBUFFER + GLPT_GBUFFER_SURFACE, rgba32ui)
@@ -48,9 +47,8 @@ layout(set = 0, binding = GLPT_CO_BINDING_CHANNELS + GLPT_CHANNEL_INDIRECT_DIFFU
     uniform readonly image2D channel_indirect;
 layout(set = 0, binding = GLPT_CO_BINDING_CHANNELS + GLPT_CHANNEL_SPECULAR, rgba32f)
     uniform readonly image2D channel_specular;
-layout(std430, set = 0, binding = GLPT_CO_BINDING_DENOISED) readonly buffer Denoised {
-  vec4 denoised[];  // the denoiser's work slots (shared_types.h, GLPT_DN_BINDING_WORK)
-};
+// The denoiser's work slots (shared_types.h, GLPT_DN_BINDING_WORK).
+layout(set = 0, binding = GLPT_CO_BINDING_DENOISED, rgba32f) uniform readonly image2DArray denoised;
 layout(std140, set = 0, binding = GLPT_CO_BINDING_DENOISE) uniform DenoiseBlock {
   DenoiseUniforms dn;
 };
@@ -106,7 +104,6 @@ void write_average(ivec2 pixel, uint targets, vec4 sum, float covered, float tot
 void main() {
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
   if (pixel.x >= int(frame.image.x) || pixel.y >= int(frame.image.y)) return;
-  uint pixel_index = uint(pixel.y) * frame.image.x + uint(pixel.x);
   uvec4 surface = imageLoad(gbuffer_surface, pixel);
   // Samples of this frame: covered ones the trace pass kept (it drops non-finite ones, which then
   // count nowhere), uncovered ones all of the frame's.
@@ -125,23 +122,24 @@ void main() {
   if ((dn.image.z & GLPT_DN_ACTIVE) != 0u && covered &&
       (lit || (dn.image.z & GLPT_DN_UNLIT_AO) != 0u)) {
     uint slot = dn.image.w == 0u ? 0u : 1u + (dn.image.w - 1u) % 2u;
-    uint base = (slot * frame.image.x * frame.image.y + pixel_index) * 3u;
-    vec3 light[GLPT_CHANNELS] = vec3[GLPT_CHANNELS](denoised[base].rgb, denoised[base + 1u].rgb,
-                                                    denoised[base + 2u].rgb);
+    int base = int(slot * 3u);
+    vec3 light[GLPT_CHANNELS] = vec3[GLPT_CHANNELS](imageLoad(denoised, ivec3(pixel, base)).rgb,
+                                                    imageLoad(denoised, ivec3(pixel, base + 1)).rgb,
+                                                    imageLoad(denoised, ivec3(pixel, base + 2)).rgb);
     denoised_color = composite(pixel, surface, light);
     denoised_weight = clamp(dn.params.w, 0.0, 1.0);
   }
   float count = covered ? traced : 0.0;
   float total = surface.x != 0u ? traced : float(samples);
   if (frame.sampling.x != 0u) {
-    sum += accumulation[2u * pixel_index];
-    vec4 counts = accumulation[2u * pixel_index + 1u];
+    sum += imageLoad(accumulation, ivec3(pixel, 0));
+    vec4 counts = imageLoad(accumulation, ivec3(pixel, 1));
     count += counts.x;
     total += counts.y;
   }
   if (samples > 0u) {
-    accumulation[2u * pixel_index] = sum;
-    accumulation[2u * pixel_index + 1u] = vec4(count, total, 0.0, 0.0);
+    imageStore(accumulation, ivec3(pixel, 0), sum);
+    imageStore(accumulation, ivec3(pixel, 1), vec4(count, total, 0.0, 0.0));
   }
   if (count > 0.0 && total > 0.0) {
     uint targets = surface.x != 0u ? states[surface.x - 1u].info.z : frame.image.z;

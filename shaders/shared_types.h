@@ -61,12 +61,12 @@ using mat4 = glm::mat4;
 // composite.comp, set 0
 #define GLPT_CO_BINDING_FRAME 0         // uniform FrameUniforms
 #define GLPT_CO_BINDING_STATES 1        // GpuTraceState[]
-#define GLPT_CO_BINDING_ACCUMULATION 2  // vec4[2 * width * height], see composite.comp
+#define GLPT_CO_BINDING_ACCUMULATION 2  // rgba32f array of 2 layers, see composite.comp
 #define GLPT_CO_BINDING_GBUFFER 3       // the G-buffer, bindings 3..6
 #define GLPT_CO_BINDING_CHANNELS 7      // the channels, bindings 7..9
 #define GLPT_CO_BINDING_FRONT 10        // colour buffers: storage images, read and written
 #define GLPT_CO_BINDING_BACK 11
-#define GLPT_CO_BINDING_DENOISED 12  // vec4[3 * pixels]: the denoiser's output (or a dummy)
+#define GLPT_CO_BINDING_DENOISED 12  // the denoiser's work image (GLPT_DN_BINDING_WORK) or a dummy
 #define GLPT_CO_BINDING_DENOISE 13   // uniform DenoiseUniforms
 
 // svgf_temporal.comp and svgf_atrous.comp (rt_core/passes/svgf_denoiser.hpp), set 0. Per pixel
@@ -76,14 +76,24 @@ using mat4 = glm::mat4;
 #define GLPT_DN_BINDING_POSITION 2  // G-buffer POSITION
 #define GLPT_DN_BINDING_SURFACE 3   // G-buffer SURFACE
 #define GLPT_DN_BINDING_CHANNELS 4  // the trace pass's channels, bindings 4..6
-#define GLPT_DN_BINDING_GUIDE 7     // DenoiseGuide[p] of this frame
-#define GLPT_DN_BINDING_GUIDE_PREVIOUS 8
-#define GLPT_DN_BINDING_HISTORY 9  // DenoiseHistory[p] of this frame
-#define GLPT_DN_BINDING_HISTORY_PREVIOUS 10
-// vec4[3 slots][p][3 channels]: slot 0 the temporally integrated colour, 1 and 2 the a-trous
-// iterations' ping-pong; rgb: radiance, a: its luminance variance.
-#define GLPT_DN_BINDING_WORK 11
+// Per-pixel data lives in storage images, not buffers: a buffer binding is limited to
+// maxStorageBufferRange (lavapipe: 128 MiB, 1.4 million pixels of history), an image only by its
+// size.
+#define GLPT_DN_BINDING_GUIDE 7  // this frame's DenoiseGuide: eye (rgba32f), meta (rgba32ui)
+#define GLPT_DN_BINDING_GUIDE_META 8
+#define GLPT_DN_BINDING_GUIDE_PREVIOUS 9
+#define GLPT_DN_BINDING_GUIDE_META_PREVIOUS 10
+// This frame's history: rgba32f array; per channel c, layer c: rgb the temporally filtered
+// colour (the a-trous filter's first iteration, fed back as in the SVGF paper), a the first
+// luminance moment; layer 3 + c: rgb a short exponential average of the raw colour (the clamp
+// against stale light), a the second moment.
+#define GLPT_DN_BINDING_HISTORY 11
+#define GLPT_DN_BINDING_HISTORY_PREVIOUS 12
+// rgba32f array, layer slot * 3 + channel: slot 0 the temporally integrated colour, 1 and 2 the
+// a-trous iterations' ping-pong; rgb: radiance, a: its luminance variance.
+#define GLPT_DN_BINDING_WORK 13
 #define GLPT_DN_SLOTS 3
+#define GLPT_DN_HISTORY_LAYERS 6
 // DenoiseUniforms::image.z flags
 #define GLPT_DN_HISTORY_VALID 1u  // the previous frame's guide and history belong to this size
 #define GLPT_DN_UNLIT_AO 2u       // unlit pixels carry AO in the indirect channel: denoise it
@@ -268,14 +278,6 @@ struct DenoiseGuide {
   uvec4 meta;  // x: history id, y: history length (frames), z: packed shading normal, w: unused
 };
 
-// Per pixel and channel c: colour[c] rgb = the temporally filtered colour (the a-trous filter's
-// first iteration, fed back as in the SVGF paper), a = first luminance moment; fast[c] rgb = a
-// short exponential average of the raw colour (the clamp against stale light), a = second moment.
-struct DenoiseHistory {
-  vec4 colour[3];
-  vec4 fast[3];
-};
-
 struct DenoiseUniforms {
   // x, y: image size, z: GLPT_DN_* flags, w: a-trous iterations
   uvec4 image;
@@ -312,7 +314,6 @@ static_assert(sizeof(FrameUniforms) == 96);
 static_assert(sizeof(GpuCounters) == 16);
 static_assert(sizeof(GpuStateHistory) == 160);
 static_assert(sizeof(DenoiseGuide) == 32);
-static_assert(sizeof(DenoiseHistory) == 96);
 static_assert(sizeof(DenoiseUniforms) == 80);
 }  // namespace glpt::rt::gpu
 #endif

@@ -30,8 +30,7 @@ bool inside(ivec2 q) {
 void main() {
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
   if (!inside(pixel)) return;
-  uint p = pixel_index(pixel);
-  DenoiseGuide centre = guide[p];
+  DenoiseGuide centre = load_guide(pixel);
   if (centre.eye.w == 0.0) return;  // not shaded by the tracer: nothing to filter
   vec3 x_p = centre.eye.xyz;
   vec3 n_p = gbuffer_unpack_normal(centre.meta.z);
@@ -43,7 +42,7 @@ void main() {
   vec4 centre_values[3];
   float luminance_p[3], sigma_l[3];
   for (uint c = 0u; c < 3u; ++c) {
-    centre_values[c] = work[work_index(iteration.input_slot, p, c)];
+    centre_values[c] = load_work(iteration.input_slot, pixel, c);
     luminance_p[c] = luminance(centre_values[c].rgb);
   }
   // The centre's variance through a 3x3 Gaussian (the paper's prefilter): one noisy variance
@@ -58,12 +57,11 @@ void main() {
     for (int dy = -1; dy <= 1; ++dy)
       for (int dx = -1; dx <= 1; ++dx) {
         ivec2 q = pixel + ivec2(dx, dy);
-        if (!inside(q) || guide[pixel_index(q)].eye.w == 0.0) continue;
+        if (!inside(q) || imageLoad(guide_eye, q).w == 0.0) continue;
         float w = (dx == 0 ? 0.5 : 0.25) * (dy == 0 ? 0.5 : 0.25);
-        uint qi = pixel_index(q);
-        sum += w * vec3(work[work_index(iteration.input_slot, qi, 0u)].a,
-                        work[work_index(iteration.input_slot, qi, 1u)].a,
-                        work[work_index(iteration.input_slot, qi, 2u)].a);
+        sum += w * vec3(load_work(iteration.input_slot, q, 0u).a,
+                        load_work(iteration.input_slot, q, 1u).a,
+                        load_work(iteration.input_slot, q, 2u).a);
         total += w;
       }
     vec3 variance = sum / max(total, 1e-6);
@@ -84,8 +82,7 @@ void main() {
       if (dx == 0 && dy == 0) continue;
       ivec2 q = pixel + ivec2(dx, dy) * step;
       if (!inside(q)) continue;
-      uint qi = pixel_index(q);
-      DenoiseGuide g = guide[qi];
+      DenoiseGuide g = load_guide(q);
       // Another object's light is no estimate of this one's, however close its plane (gears side
       // by side, a character against a wall at the same depth).
       if (g.eye.w == 0.0 || g.meta.x != centre.meta.x) continue;
@@ -95,7 +92,7 @@ void main() {
       if (!(geometry > 0.0)) continue;
       float h = kernel[abs(dx)] * kernel[abs(dy)] * geometry;
       for (uint c = 0u; c < 3u; ++c) {
-        vec4 value = work[work_index(iteration.input_slot, qi, c)];
+        vec4 value = load_work(iteration.input_slot, q, c);
         float w = h * exp(-abs(luminance(value.rgb) - luminance_p[c]) / sigma_l[c]);
         sums[c] += w * value.rgb;
         variance_sums[c] += w * w * value.a;
@@ -106,7 +103,10 @@ void main() {
     float inverse_weight = 1.0 / weight_sums[c];  // >= the centre's kernel weight
     vec4 result = vec4(sums[c] * inverse_weight,
                        variance_sums[c] * inverse_weight * inverse_weight);
-    work[work_index(iteration.output_slot, p, c)] = result;
-    if (iteration.feedback != 0u) history[p].colour[c].rgb = result.rgb;
+    store_work(iteration.output_slot, pixel, c, result);
+    if (iteration.feedback != 0u) {
+      vec4 colour = imageLoad(history, ivec3(pixel, c));
+      imageStore(history, ivec3(pixel, c), vec4(result.rgb, colour.a));
+    }
   }
 }

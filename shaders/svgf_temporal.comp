@@ -30,7 +30,7 @@ bool shaded(ivec2 q, out uvec4 surface) {
 // surface point in the previous eye space) of object `id` with normal `previous_normal`.
 bool tap_matches(ivec2 q, uint id, vec3 previous_eye, vec3 previous_normal, float tolerance) {
   if (q.x < 0 || q.y < 0 || q.x >= int(dn.image.x) || q.y >= int(dn.image.y)) return false;
-  DenoiseGuide g = previous_guide[pixel_index(q)];
+  DenoiseGuide g = load_previous_guide(q);
   if (g.eye.w == 0.0 || g.meta.x != id) return false;
   if (dot(previous_normal, gbuffer_unpack_normal(g.meta.z)) < 0.9) return false;
   return abs(dot(previous_normal, g.eye.xyz - previous_eye)) <= tolerance;
@@ -39,10 +39,9 @@ bool tap_matches(ivec2 q, uint id, vec3 previous_eye, vec3 previous_normal, floa
 void main() {
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
   if (pixel.x >= int(dn.image.x) || pixel.y >= int(dn.image.y)) return;
-  uint p = pixel_index(pixel);
   uvec4 surface;
   if (!shaded(pixel, surface)) {
-    guide[p] = DenoiseGuide(vec4(0.0), uvec4(0u));
+    store_guide(pixel, DenoiseGuide(vec4(0.0), uvec4(0u)));
     return;
   }
   vec3 eye = imageLoad(gbuffer_position, pixel).xyz;
@@ -92,13 +91,13 @@ void main() {
           }
       }
       for (uint t = 0u; t < count; ++t) {
-        uint q = pixel_index(taps[t]);
+        ivec2 q = taps[t];
         float w = tap_weights[t];
         weight_sum += w;
-        previous_length += w * float(previous_guide[q].meta.y);
+        previous_length += w * float(imageLoad(previous_guide_meta, q).y);
         for (uint c = 0u; c < 3u; ++c) {
-          vec4 colour = previous_history[q].colour[c];
-          vec4 fast = previous_history[q].fast[c];
+          vec4 colour = imageLoad(previous_history, ivec3(q, c));
+          vec4 fast = imageLoad(previous_history, ivec3(q, 3u + c));
           previous_colour[c] += w * colour.rgb;
           previous_fast[c] += w * fast.rgb;
           previous_moments[c] += w * vec2(colour.a, fast.a);
@@ -196,8 +195,8 @@ void main() {
     }
     colours[c] = colour;
     variances[c] = max(moments.y - moments.x * moments.x, 0.0);
-    history[p].colour[c] = vec4(colour, moments.x);
-    history[p].fast[c] = vec4(fast, moments.y);
+    imageStore(history, ivec3(pixel, c), vec4(colour, moments.x));
+    imageStore(history, ivec3(pixel, 3u + c), vec4(fast, moments.y));
   }
   if (clamped_any) history_length = min(history_length, dn.params.z);
 
@@ -230,6 +229,6 @@ void main() {
         variances[c] = max(m.y - m.x * m.x, 0.0);
       }
   }
-  for (uint c = 0u; c < 3u; ++c) work[work_index(0u, p, c)] = vec4(colours[c], variances[c]);
-  guide[p] = DenoiseGuide(vec4(eye, 1.0), uvec4(id, uint(history_length), surface.y, 0u));
+  for (uint c = 0u; c < 3u; ++c) store_work(0u, pixel, c, vec4(colours[c], variances[c]));
+  store_guide(pixel, DenoiseGuide(vec4(eye, 1.0), uvec4(id, uint(history_length), surface.y, 0u)));
 }

@@ -15,10 +15,10 @@ namespace glpt::rt {
 struct CompositeResources {
   const GpuBuffer* frame = nullptr;         // gpu::FrameUniforms
   const GpuBuffer* states = nullptr;        // gpu::GpuTraceState[]
-  const GpuBuffer* accumulation = nullptr;  // vec4[2 * width * height]
+  VkImageView accumulation = VK_NULL_HANDLE;  // rgba32f array, 2 layers (composite.comp)
   std::array<VkImageView, 4> gbuffer{};
   std::array<VkImageView, GLPT_CHANNELS> channels{};
-  const GpuBuffer* denoised = nullptr;          // the denoiser's work slots (any buffer when off)
+  VkImageView denoised = VK_NULL_HANDLE;  // the denoiser's work slots (any rgba32f array when off)
   const GpuBuffer* denoise_uniforms = nullptr;  // gpu::DenoiseUniforms (flags 0: not denoised)
   VkImageView front = VK_NULL_HANDLE;  // colour buffers (the same view twice when the drawable
   VkImageView back = VK_NULL_HANDLE;   // is single-buffered)

@@ -244,16 +244,21 @@ void PathTracer::write_denoise_inputs(const TraceScene& scene, bool denoise, boo
 void PathTracer::ensure_channels(uint32_t width, uint32_t height) {
   if (width == channels_width_ && height == channels_height_ && channels_[0]) return;
   for (GpuImage& image : channels_) image = GpuImage();
+  accumulation_ = GpuImage();
   channels_width_ = channels_height_ = 0;
-  for (GpuImage& image : channels_) {
-    GpuImageInfo info;
-    info.format = VK_FORMAT_R32G32B32A32_SFLOAT;
-    info.extent = {width, height, 1};
-    info.usage = VK_IMAGE_USAGE_STORAGE_BIT;
-    image = GpuImage::create(*device_, info);
-  }
+  GpuImageInfo info;
+  info.format = VK_FORMAT_R32G32B32A32_SFLOAT;
+  info.extent = {width, height, 1};
+  info.usage = VK_IMAGE_USAGE_STORAGE_BIT;
+  for (GpuImage& image : channels_) image = GpuImage::create(*device_, info);
+  // Sums and counts (composite.comp): what the composite finds there before the first frame of
+  // an accumulation is never read.
+  info.view_type = VK_IMAGE_VIEW_TYPE_2D_ARRAY;
+  info.layers = 2;
+  accumulation_ = GpuImage::create(*device_, info);
   device_->submit_and_wait([&](VkCommandBuffer cmd) {
     for (const GpuImage& image : channels_) image.initial_barrier(cmd);
+    accumulation_.initial_barrier(cmd);
   });
   channels_width_ = width;
   channels_height_ = height;
@@ -465,9 +470,6 @@ void PathTracer::trace(const TraceScene& scene, const TraceTargets& targets, Fra
   for (const TraceState& state : scene.states) states.push_back(pack_state(state));
   stats.upload_bytes += upload(*device_, states_, states);
 
-  const size_t pixel_count = size_t{scene.width} * scene.height;
-  ensure_capacity(*device_, accumulation_, 2 * pixel_count * sizeof(glm::vec4),
-                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   ensure_channels(scene.width, scene.height);
   gpu::FrameUniforms uniforms{};
   // The seed changes every frame so accumulated frames (and restarted ones) see new samples.
@@ -551,14 +553,14 @@ void PathTracer::trace(const TraceScene& scene, const TraceTargets& targets, Fra
   CompositeResources composite;
   composite.frame = &frame_uniforms_;
   composite.states = &states_;
-  composite.accumulation = &accumulation_;
+  composite.accumulation = accumulation_.view();
   for (int a = 0; a < GLPT_GBUFFER_ATTACHMENTS; ++a)
     trace.gbuffer[a] = composite.gbuffer[a] = targets.gbuffer->image(a).view();
   for (int c = 0; c < GLPT_CHANNELS; ++c)
     trace.channels[c] = composite.channels[c] = channels_[c].view();
   composite.front = targets.front;
   composite.back = targets.back;
-  composite.denoised = denoise ? &denoiser_.work() : &accumulation_;
+  composite.denoised = denoise ? denoiser_.work().view() : accumulation_.view();
   composite.denoise_uniforms = &denoise_uniforms_;
   // Each pass reads what the one before wrote (also across submissions: a barrier's first scope
   // covers earlier submissions to the queue).

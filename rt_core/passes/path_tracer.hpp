@@ -151,7 +151,7 @@ class PathTracer {
   GpuBuffer emitters_;
   GpuBuffer clip_planes_;
   GpuBuffer states_;
-  GpuBuffer accumulation_;
+  GpuImage accumulation_;  // sized with the channels (ensure_channels)
 
   FrameSignature previous_signature_;
   bool same_scene_ = false;  // this frame's signature equals the previous frame's

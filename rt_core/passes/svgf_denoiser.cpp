@@ -17,11 +17,13 @@ constexpr VkDescriptorSetLayoutBinding kBindings[] = {
     compute_binding(GLPT_DN_BINDING_CHANNELS + 0, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
     compute_binding(GLPT_DN_BINDING_CHANNELS + 1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
     compute_binding(GLPT_DN_BINDING_CHANNELS + 2, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
-    compute_binding(GLPT_DN_BINDING_GUIDE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
-    compute_binding(GLPT_DN_BINDING_GUIDE_PREVIOUS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
-    compute_binding(GLPT_DN_BINDING_HISTORY, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
-    compute_binding(GLPT_DN_BINDING_HISTORY_PREVIOUS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
-    compute_binding(GLPT_DN_BINDING_WORK, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
+    compute_binding(GLPT_DN_BINDING_GUIDE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
+    compute_binding(GLPT_DN_BINDING_GUIDE_META, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
+    compute_binding(GLPT_DN_BINDING_GUIDE_PREVIOUS, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
+    compute_binding(GLPT_DN_BINDING_GUIDE_META_PREVIOUS, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
+    compute_binding(GLPT_DN_BINDING_HISTORY, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
+    compute_binding(GLPT_DN_BINDING_HISTORY_PREVIOUS, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
+    compute_binding(GLPT_DN_BINDING_WORK, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
 };
 static_assert(GLPT_CHANNELS == 3);
 
@@ -32,12 +34,13 @@ struct IterationConstants {
 }  // namespace
 
 bool SvgfDenoiser::fits(uint32_t width, uint32_t height) const {
+  // The largest image, the work slots, within 2 GiB (lavapipe addresses an image with 32-bit
+  // offsets) and the device's image limits.
+  const VkPhysicalDeviceLimits& limits = device_.properties().limits;
   const VkDeviceSize work = VkDeviceSize{width} * height * GLPT_DN_SLOTS * 3 * sizeof(gpu::vec4);
-  // The device's own limit where it allows more than 2 GiB. Below that, bindings beyond
-  // maxStorageBufferRange (lavapipe: 128 MiB) are kept as they were: they work up to 2 GiB.
-  const VkDeviceSize limit = std::max<VkDeviceSize>(
-      device_.properties().limits.maxStorageBufferRange, VkDeviceSize{0x7fffffff});
-  return work <= limit;
+  return work <= VkDeviceSize{0x7fffffff} && width <= limits.maxImageDimension2D &&
+         height <= limits.maxImageDimension2D &&
+         GLPT_DN_SLOTS * 3 <= limits.maxImageArrayLayers;
 }
 
 bool SvgfDenoiser::prepare(uint32_t width, uint32_t height, const void* owner) {
@@ -46,19 +49,25 @@ bool SvgfDenoiser::prepare(uint32_t width, uint32_t height, const void* owner) {
     atrous_ = std::make_unique<ComputePipeline>(device_, svgf_atrous_spv, kBindings,
                                                 static_cast<uint32_t>(sizeof(IterationConstants)));
   }
-  const VkDeviceSize pixels = VkDeviceSize{width} * height;
-  const VkBufferUsageFlags usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
   if (width != width_ || height != height_ || !work_) {
     history_valid_ = false;
     width_ = height_ = 0;
+    auto image = [&](VkFormat format, uint32_t layers) {
+      GpuImageInfo info;
+      info.format = format;
+      info.extent = {std::max(width, 1u), std::max(height, 1u), 1};
+      info.usage = VK_IMAGE_USAGE_STORAGE_BIT;
+      info.view_type = layers > 1 ? VK_IMAGE_VIEW_TYPE_2D_ARRAY : VK_IMAGE_VIEW_TYPE_2D;
+      info.layers = layers;
+      return GpuImage::create(device_, info);
+    };
     for (int i = 0; i < 2; ++i) {
-      guides_[i] = GpuBuffer::create(
-          device_, std::max<VkDeviceSize>(pixels, 1) * sizeof(gpu::DenoiseGuide), usage);
-      histories_[i] = GpuBuffer::create(
-          device_, std::max<VkDeviceSize>(pixels, 1) * sizeof(gpu::DenoiseHistory), usage);
+      guide_eyes_[i] = image(VK_FORMAT_R32G32B32A32_SFLOAT, 1);
+      guide_metas_[i] = image(VK_FORMAT_R32G32B32A32_UINT, 1);
+      histories_[i] = image(VK_FORMAT_R32G32B32A32_SFLOAT, GLPT_DN_HISTORY_LAYERS);
     }
-    work_ = GpuBuffer::create(
-        device_, std::max<VkDeviceSize>(pixels, 1) * GLPT_DN_SLOTS * 3 * sizeof(gpu::vec4), usage);
+    work_ = image(VK_FORMAT_R32G32B32A32_SFLOAT, GLPT_DN_SLOTS * 3);
+    images_need_layout_ = true;  // to GENERAL in the next record()
     width_ = width;
     height_ = height;
   }
@@ -70,21 +79,31 @@ bool SvgfDenoiser::prepare(uint32_t width, uint32_t height, const void* owner) {
 void SvgfDenoiser::record(VkCommandBuffer cmd, const DenoiseResources& resources,
                           uint32_t iterations) {
   const uint32_t current = parity_, previous = parity_ ^ 1u;
+  if (images_need_layout_) {
+    for (int i = 0; i < 2; ++i) {
+      guide_eyes_[i].initial_barrier(cmd);
+      guide_metas_[i].initial_barrier(cmd);
+      histories_[i].initial_barrier(cmd);
+    }
+    work_.initial_barrier(cmd);
+    images_need_layout_ = false;
+  }
   const VkDescriptorBufferInfo uniforms{resources.uniforms->handle(), 0,
                                         sizeof(gpu::DenoiseUniforms)};
   const VkDescriptorBufferInfo states{resources.states->handle(), 0, VK_WHOLE_SIZE};
-  auto whole = [](const GpuBuffer& buffer) {
-    return VkDescriptorBufferInfo{buffer.handle(), 0, VK_WHOLE_SIZE};
-  };
-  const VkDescriptorBufferInfo guide = whole(guides_[current]);
-  const VkDescriptorBufferInfo previous_guide = whole(guides_[previous]);
-  const VkDescriptorBufferInfo history = whole(histories_[current]);
-  const VkDescriptorBufferInfo previous_history = whole(histories_[previous]);
-  const VkDescriptorBufferInfo work = whole(work_);
-  const VkDescriptorImageInfo images[5] = {
-      general_image_info(resources.position), general_image_info(resources.surface),
-      general_image_info(resources.channels[0]), general_image_info(resources.channels[1]),
-      general_image_info(resources.channels[2])};
+  const VkDescriptorImageInfo images[12] = {
+      general_image_info(resources.position),
+      general_image_info(resources.surface),
+      general_image_info(resources.channels[0]),
+      general_image_info(resources.channels[1]),
+      general_image_info(resources.channels[2]),
+      general_image_info(guide_eyes_[current].view()),
+      general_image_info(guide_metas_[current].view()),
+      general_image_info(guide_eyes_[previous].view()),
+      general_image_info(guide_metas_[previous].view()),
+      general_image_info(histories_[current].view()),
+      general_image_info(histories_[previous].view()),
+      general_image_info(work_.view())};
   for (const ComputePipeline* pipeline : {temporal_.get(), atrous_.get()}) {
     const VkDescriptorSet set = pipeline->descriptor_set();
     const VkWriteDescriptorSet writes[] = {
@@ -95,11 +114,13 @@ void SvgfDenoiser::record(VkCommandBuffer cmd, const DenoiseResources& resources
         storage_image_write(set, GLPT_DN_BINDING_CHANNELS + 0, &images[2]),
         storage_image_write(set, GLPT_DN_BINDING_CHANNELS + 1, &images[3]),
         storage_image_write(set, GLPT_DN_BINDING_CHANNELS + 2, &images[4]),
-        storage_buffer_write(set, GLPT_DN_BINDING_GUIDE, &guide),
-        storage_buffer_write(set, GLPT_DN_BINDING_GUIDE_PREVIOUS, &previous_guide),
-        storage_buffer_write(set, GLPT_DN_BINDING_HISTORY, &history),
-        storage_buffer_write(set, GLPT_DN_BINDING_HISTORY_PREVIOUS, &previous_history),
-        storage_buffer_write(set, GLPT_DN_BINDING_WORK, &work),
+        storage_image_write(set, GLPT_DN_BINDING_GUIDE, &images[5]),
+        storage_image_write(set, GLPT_DN_BINDING_GUIDE_META, &images[6]),
+        storage_image_write(set, GLPT_DN_BINDING_GUIDE_PREVIOUS, &images[7]),
+        storage_image_write(set, GLPT_DN_BINDING_GUIDE_META_PREVIOUS, &images[8]),
+        storage_image_write(set, GLPT_DN_BINDING_HISTORY, &images[9]),
+        storage_image_write(set, GLPT_DN_BINDING_HISTORY_PREVIOUS, &images[10]),
+        storage_image_write(set, GLPT_DN_BINDING_WORK, &images[11]),
     };
     pipeline->update(device_.handle(), writes);
   }

@@ -14,6 +14,7 @@
 
 #include "rt_core/vk/compute_pipeline.hpp"
 #include "rt_core/vk/gpu_buffer.hpp"
+#include "rt_core/vk/gpu_image.hpp"
 #include "rt_core/vk/vk_device.hpp"
 
 namespace glpt::rt {
@@ -36,16 +37,16 @@ class SvgfDenoiser {
   // and compiles the passes on first use. Returns whether the previous frame's history can be
   // reprojected (same size and owner, not forgotten). Throws VulkanError.
   bool prepare(uint32_t width, uint32_t height, const void* owner);
-  // Whether the device can filter a width x height frame: the passes bind the work buffer
-  // (GLPT_DN_SLOTS x 3 vec4 a pixel) whole, and past 2 GiB (4096 x 4096 needs 2.4 GB) lavapipe's
-  // 32-bit shader offsets wrap and the process crashes (tests/extremes). Larger frames are shown
-  // unfiltered, as under GLPT_DENOISER=off.
+  // Whether the device can filter a width x height frame: the work slots (GLPT_DN_SLOTS x 3
+  // layers of vec4) past 2 GiB (4096 x 4096 needs 2.4 GB) would wrap lavapipe's 32-bit shader
+  // offsets, which crashed the process when they were a buffer (tests/extremes). Larger frames
+  // are shown unfiltered, as under GLPT_DENOISER=off.
   bool fits(uint32_t width, uint32_t height) const;
   // Records the temporal pass and `iterations` a-trous iterations; the result is in work() at
   // slot 0 (no iteration) or 1 + (iterations - 1) % 2. This frame's history becomes the
   // previous one for the next record.
   void record(VkCommandBuffer cmd, const DenoiseResources& resources, uint32_t iterations);
-  const GpuBuffer& work() const { return work_; }
+  const GpuImage& work() const { return work_; }
   // The next frame starts without history (a failure, a cut the caller knows of).
   void forget_history() noexcept { history_valid_ = false; }
 
@@ -53,8 +54,10 @@ class SvgfDenoiser {
   const VulkanDevice& device_;
   // Compiled on first use: programs that never denoise never pay for them.
   std::unique_ptr<ComputePipeline> temporal_, atrous_;
-  std::array<GpuBuffer, 2> guides_, histories_;  // by parity: [parity_] is this frame's
-  GpuBuffer work_;
+  // Storage images (shared_types.h, GLPT_DN_BINDING_*), by parity: [parity_] is this frame's.
+  std::array<GpuImage, 2> guide_eyes_, guide_metas_, histories_;
+  GpuImage work_;
+  bool images_need_layout_ = false;  // created since the last record(): still UNDEFINED
   uint32_t width_ = 0, height_ = 0;
   const void* owner_ = nullptr;
   bool history_valid_ = false;

@@ -21,25 +21,35 @@ layout(set = 0, binding = GLPT_DN_BINDING_SURFACE, rgba32ui) uniform readonly ui
 layout(set = 0, binding = GLPT_DN_BINDING_CHANNELS + 0, rgba32f) uniform readonly image2D raw_channel0;
 layout(set = 0, binding = GLPT_DN_BINDING_CHANNELS + 1, rgba32f) uniform readonly image2D raw_channel1;
 layout(set = 0, binding = GLPT_DN_BINDING_CHANNELS + 2, rgba32f) uniform readonly image2D raw_channel2;
-layout(std430, set = 0, binding = GLPT_DN_BINDING_GUIDE) buffer Guide { DenoiseGuide guide[]; };
-layout(std430, set = 0, binding = GLPT_DN_BINDING_GUIDE_PREVIOUS) readonly buffer PreviousGuide {
-  DenoiseGuide previous_guide[];
-};
-layout(std430, set = 0, binding = GLPT_DN_BINDING_HISTORY) buffer History {
-  DenoiseHistory history[];
-};
-layout(std430, set = 0, binding = GLPT_DN_BINDING_HISTORY_PREVIOUS) readonly buffer PreviousHistory {
-  DenoiseHistory previous_history[];
-};
-layout(std430, set = 0, binding = GLPT_DN_BINDING_WORK) buffer Work { vec4 work[]; };
+layout(set = 0, binding = GLPT_DN_BINDING_GUIDE, rgba32f) uniform image2D guide_eye;
+layout(set = 0, binding = GLPT_DN_BINDING_GUIDE_META, rgba32ui) uniform uimage2D guide_meta;
+layout(set = 0, binding = GLPT_DN_BINDING_GUIDE_PREVIOUS, rgba32f)
+    uniform readonly image2D previous_guide_eye;
+layout(set = 0, binding = GLPT_DN_BINDING_GUIDE_META_PREVIOUS, rgba32ui)
+    uniform readonly uimage2D previous_guide_meta;
+layout(set = 0, binding = GLPT_DN_BINDING_HISTORY, rgba32f) uniform image2DArray history;
+layout(set = 0, binding = GLPT_DN_BINDING_HISTORY_PREVIOUS, rgba32f)
+    uniform readonly image2DArray previous_history;
+layout(set = 0, binding = GLPT_DN_BINDING_WORK, rgba32f) uniform image2DArray work;
+
+DenoiseGuide load_guide(ivec2 p) {
+  return DenoiseGuide(imageLoad(guide_eye, p), imageLoad(guide_meta, p));
+}
+DenoiseGuide load_previous_guide(ivec2 p) {
+  return DenoiseGuide(imageLoad(previous_guide_eye, p), imageLoad(previous_guide_meta, p));
+}
+void store_guide(ivec2 p, DenoiseGuide g) {
+  imageStore(guide_eye, p, g.eye);
+  imageStore(guide_meta, p, g.meta);
+}
+// Channel c of pixel p in work slot `slot`.
+vec4 load_work(uint slot, ivec2 p, uint c) { return imageLoad(work, ivec3(p, slot * 3u + c)); }
+void store_work(uint slot, ivec2 p, uint c, vec4 value) {
+  imageStore(work, ivec3(p, slot * 3u + c), value);
+}
 
 float luminance(vec3 c) { return dot(c, vec3(0.2126, 0.7152, 0.0722)); }
 
-uint pixel_index(ivec2 p) { return uint(p.y) * dn.image.x + uint(p.x); }
-// work[] index of channel c of pixel p in slot s.
-uint work_index(uint slot, uint p, uint c) {
-  return (slot * dn.image.x * dn.image.y + p) * 3u + c;
-}
 
 vec3 raw_channel(ivec2 p, uint c) {
   return c == 0u ? imageLoad(raw_channel0, p).rgb
