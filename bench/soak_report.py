@@ -10,6 +10,9 @@ every state the trace has), else the first F of the frames (default 0.1, at leas
     the growth between them, and the least-squares slope per 1,000 frames;
   * Vulkan objects alive (vk_objects): the most during the warm-up, the most after it, at the
     end; where the count grows, the kinds that grew (vk_by_kind);
+  * draws per frame: the most during the warm-up and after it (memory that grows only when a
+    frame larger than any before arrives is the working set of the largest frame, not a leak);
+  * for replays, the resident memory at the end of each pass (a leak grows it pass after pass);
   * frame cost (total_ms, recording to presented): the median after the warm-up, the slowest
     frame, and how many frames took more than 3x the median, apart from those that compiled
     pipelines (pipelines_created > 0: a new state's first draw, a new context's first frames),
@@ -25,11 +28,11 @@ import re
 import statistics
 import sys
 
-FIELD = re.compile(r" (frame|total_ms|rss_kb|vk_objects|pipelines_created)=([-0-9.]+)")
+FIELD = re.compile(r" (frame|total_ms|rss_kb|vk_objects|pipelines_created|draws)=([-0-9.]+)")
 KINDS = re.compile(r" vk_by_kind=(\S+)")
 
 
-Row = collections.namedtuple("Row", "frame ms rss objects pipelines kinds")
+Row = collections.namedtuple("Row", "frame ms rss objects pipelines kinds draws")
 
 
 def parse_kinds(text):  # "buffer:9,memory:35,..." (or "none")
@@ -54,7 +57,8 @@ def read_stats(path):
                     rows.append(Row(int(fields["frame"]), float(fields["total_ms"]),
                                     int(fields["rss_kb"]), int(fields["vk_objects"]),
                                     int(fields.get("pipelines_created", 0)),
-                                    parse_kinds(kinds.group(1)) if kinds else {}))
+                                    parse_kinds(kinds.group(1)) if kinds else {},
+                                    int(fields.get("draws", 0))))
     except OSError as error:
         print(f"soak_report: {path}: {error}", file=sys.stderr)
     return rows
@@ -79,16 +83,17 @@ def main():
     args = parser.parse_args()
 
     print("| run | frames | warm-up | RSS after warm-up | RSS at end | growth | slope /1000 frames "
-          "| Vulkan objects (warm-up's most / most after / end) | median ms "
+          "| most draws per frame (warm-up / after) | Vulkan objects (warm-up's most / most after / end) | median ms "
           "| slowest ms (x median) | frames > 3x median (not compiling) | compiling | verdict |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     slow_lists = []
     growth_notes = []
+    pass_notes = []
     for run in args.runs:
         label, _, path = run.partition("=")
         rows = read_stats(path)
         if len(rows) < 200:
-            print(f"| {label} | {len(rows)} | | | | | | | | | | | too few frames |")
+            print(f"| {label} | {len(rows)} | | | | | | | | | | | | too few frames |")
             continue
         # A new pass (context) starts where the frame number drops.
         pass_starts = [i for i in range(1, len(rows)) if rows[i].frame < rows[i - 1].frame]
@@ -132,10 +137,15 @@ def main():
              "no slow frame" if not slow else f"{len(slow)} SLOW FRAMES"])
         short = "" if not args.frames or len(rows) >= args.frames else f" (of {args.frames})"
         warmup_text = f"pass 1 of {passes}" if pass_starts else f"{warmup} frames"
+        draws_text = f"{max(r.draws for r in rows[:warmup])} / {max(r.draws for r in after)}"
+        if pass_starts:
+            ends = [rows[s - 1].rss for s in pass_starts] + [rows[-1].rss]
+            pass_notes.append((label, ", ".join(f"{e / 1024:.1f}" for e in ends)))
         print(f"| {label} | {len(rows)}{short} | {warmup_text} | {rss_start / 1024:.1f} MiB "
               f"| {rss_end / 1024:.1f} MiB "
               f"| {growth / 1024:+.2f} MiB ({100 * growth / rss_start:+.2f} %) "
-              f"| {slope_per_1000(rss):+.1f} KiB | {objects_start} / {objects_max} / {objects_end} "
+              f"| {slope_per_1000(rss):+.1f} KiB | {draws_text} "
+              f"| {objects_start} / {objects_max} / {objects_end} "
               f"| {median:.2f} | {times[slowest]:.2f} ({times[slowest] / median if median else 0:.1f}x, "
               f"frame {warmup + slowest}) | {len(slow)} | {len(compiling)} | {verdict} |")
         if slow:
@@ -149,6 +159,8 @@ def main():
         print(f"\n{label}: {what} ({median:.2f} ms): {shown}{more}")
     for label, grown in growth_notes:
         print(f"\n{label}: Vulkan objects past the warm-up's most: {grown}")
+    for label, ends in pass_notes:
+        print(f"\n{label}: resident memory at the end of each pass (MiB): {ends}")
 
 
 if __name__ == "__main__":
