@@ -1,5 +1,7 @@
 #include "gl_shim/context.hpp"
 
+#include "gl_shim/framebuffers/framebuffer_rendering.hpp"
+
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -21,6 +23,7 @@ Context::Context(const Context* shared)
     lists.store = shared->lists.store;
     buffers = shared->buffers;
     textures.store = shared->textures.store;
+    framebuffers.store = shared->framebuffers.store;
     render_group = shared->render_group;
   }
 }
@@ -51,6 +54,12 @@ bool Context::list_executes_while_compiling() const {
 void set_current_context(Context* ctx) { t_current_context = ctx; }
 
 void flush_before_release(Context& ctx) {
+  if (ctx.framebuffers.entered) {  // the object's drawing to its textures, then the window's
+    leave_framebuffer(ctx);
+    flush_before_release(ctx);
+    enter_framebuffer(ctx);
+    return;
+  }
   if (ctx.target == nullptr) return;
   if (!ctx.render_frame_ends) {
     // glpt-replay's skipped frames: what this context holds and has recorded was drawn on this
@@ -97,8 +106,10 @@ constexpr size_t kMaxRecordVertexBytes = size_t{256} << 20;
 // once and frees each texture with its object).
 constexpr size_t kMaxRecordTextureBytes = size_t{256} << 20;
 
+}  // namespace
+
 bool ensure_output(Context& ctx) {
-  if (ctx.target == nullptr || ctx.renderer_unavailable) return false;
+  if (render_target(ctx) == nullptr || ctx.renderer_unavailable) return false;
   if (ctx.output) return true;
   std::string error;
   ctx.output = FrameOutput::create(*ctx.render_group, &error);
@@ -114,13 +125,12 @@ bool ensure_output(Context& ctx) {
   return true;
 }
 
-}  // namespace
-
 namespace {
 
 rec::DrawableConfig current_drawable(Context& ctx) {
-  rec::DrawableConfig drawable = ctx.target->config();
-  if (!ctx.target->query_size(&drawable.width, &drawable.height))
+  WindowTarget* target = render_target(ctx);
+  rec::DrawableConfig drawable = target->config();
+  if (!target->query_size(&drawable.width, &drawable.height))
     drawable.width = drawable.height = 0;
   return drawable;
 }
@@ -156,6 +166,8 @@ DeferredFrames::Execute render_held(Context& ctx) {
 // frame starts here, when its first record renders, not when it begins: held frames before it
 // must render on the history of the frames before them.
 void render_held_before(Context& ctx, const rec::DrawableConfig& drawable, bool swap) {
+  // Held frames are the window's: a framebuffer object's record does not build on them.
+  if (ctx.framebuffers.entered) return;
   ctx.skipped_frames.before_render(ctx.recorder.record(), drawable, swap, render_held(ctx));
   if (ctx.replayed)
     ctx.output->renderer().start_independent_frame(ctx.replay_frame, ctx.replay_history_window);
@@ -177,8 +189,10 @@ bool execute_record(Context& ctx) {
   render_held_before(ctx, drawable, /*swap=*/false);
   bool ok = true;
   std::vector<rt::QuerySamples> samples;
+  if (ctx.framebuffers.entered && !ctx.recorder.empty())
+    ctx.framebuffers.framebuffer->rendering->drawn = true;  // its textures take the result
   if (!ctx.recorder.empty() || drawable != ctx.output->drawable())
-    ok = ctx.output->execute(ctx.recorder.record(), *ctx.target, drawable,
+    ok = ctx.output->execute(ctx.recorder.record(), *render_target(ctx), drawable,
                              ctx.recording_since.elapsed_ms(), &samples);
   // A render that failed (device memory, a lost device) loses the commands' effect: GL's
   // error for "not enough memory left to execute the command" (GL 1.5 2.5), not silence.
@@ -188,13 +202,38 @@ bool execute_record(Context& ctx) {
   return ok;
 }
 
+void discard_record(Context& ctx) {
+  ctx.recorder.seal();
+  start_new_record(ctx);
+}
+
 void note_frame_content(Context& ctx) {
   if (ctx.recorder.vertex_bytes() > kMaxRecordVertexBytes ||
       ctx.snapshots.texture_bytes() > kMaxRecordTextureBytes)
     execute_record(ctx);
 }
 
+namespace {
+
+void end_window_frame(Context& ctx, bool swap);
+
+}  // namespace
+
 void end_frame(Context& ctx, bool swap) {
+  // A swap (or a flush of the front buffer) while a framebuffer object is bound ends the window's
+  // frame: what was drawn into the object goes to its textures first.
+  if (ctx.framebuffers.entered) {
+    leave_framebuffer(ctx);
+    end_window_frame(ctx, swap);
+    enter_framebuffer(ctx);
+    return;
+  }
+  end_window_frame(ctx, swap);
+}
+
+namespace {
+
+void end_window_frame(Context& ctx, bool swap) {
   if (!ctx.render_frame_ends) {
     ctx.recorder.seal();
     if (ensure_output(ctx)) {
@@ -233,5 +272,7 @@ void end_frame(Context& ctx, bool swap) {
   start_new_record(ctx);
   count_query_samples(ctx.queries, samples);
 }
+
+}  // namespace
 
 }  // namespace glpt

@@ -25,6 +25,7 @@
 #include "gl_shim/gl_commands.hpp"
 #include "gl_shim/pixels/bitmap_cache.hpp"
 #include "gl_shim/pixels/raster_position.hpp"
+#include "gl_shim/framebuffers/framebuffer_objects.hpp"
 #include "gl_shim/queries/query_objects.hpp"
 #include "gl_shim/render_modes/render_modes.hpp"
 #include "gl_shim/state/attrib_stack.hpp"
@@ -91,6 +92,8 @@ class Context {
   AttribStacks attrib_stacks;   // glPushAttrib / glPushClientAttrib
   RenderModeState render_mode;  // GL_RENDER, GL_SELECT, GL_FEEDBACK (GL 1.5 5.2, 5.3)
   QueryState queries;           // occlusion queries: this context's own, never shared
+  // EXT_framebuffer_object: the share group's objects and this context's bindings.
+  FramebufferBindings framebuffers;
 
   // --- the frame --------------------------------------------------------------------------------
   // The frame being recorded (commands since the record was last executed) and the snapshots of
@@ -154,6 +157,12 @@ void flush_before_release(Context& ctx);
 // buffers: at a swap, a read, glFinish/glFlush. Returns false if there is nothing to execute on
 // (no drawable, or no renderer).
 bool execute_record(Context& ctx);
+// Drops what was recorded since the record was last executed (an incomplete framebuffer object's
+// drawing, which GL does not do).
+void discard_record(Context& ctx);
+// Creates the frame output (the renderer) on first use; false when there is nothing to render to
+// or no renderer.
+bool ensure_output(Context& ctx);
 
 // A primitive or pixel command was recorded: keeps a frame that never ends from growing without
 // bound by executing it early (invisible in raster mode).

@@ -22,7 +22,15 @@ namespace glpt::replay {
 using GlProc = void (*)();
 
 // Objects whose names the replay maps from the recorded name to the name this run got.
-enum class NameKind : uint8_t { kTexture, kBuffer, kQuery, kList, kCount };
+enum class NameKind : uint8_t {
+  kTexture,
+  kBuffer,
+  kQuery,
+  kList,
+  kFramebuffer,
+  kRenderbuffer,
+  kCount
+};
 
 // Recorded object name -> replayed name, per kind, for one share group. A name never generated
 // maps to itself (GL 1.x binds unused names without glGen*).

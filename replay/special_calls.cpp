@@ -75,6 +75,10 @@ void glGenBuffers(CallContext& c) { generate(c, NameKind::kBuffer); }
 void glGenBuffersARB(CallContext& c) { generate(c, NameKind::kBuffer); }
 void glGenQueries(CallContext& c) { generate(c, NameKind::kQuery); }
 void glGenQueriesARB(CallContext& c) { generate(c, NameKind::kQuery); }
+void glGenFramebuffers(CallContext& c) { generate(c, NameKind::kFramebuffer); }
+void glGenFramebuffersEXT(CallContext& c) { generate(c, NameKind::kFramebuffer); }
+void glGenRenderbuffers(CallContext& c) { generate(c, NameKind::kRenderbuffer); }
+void glGenRenderbuffersEXT(CallContext& c) { generate(c, NameKind::kRenderbuffer); }
 
 void glGenLists(CallContext& c) {
   const GLsizei range = c.sint<GLsizei>(0);

@@ -15,6 +15,10 @@ void glGenBuffers(CallContext& c);
 void glGenBuffersARB(CallContext& c);
 void glGenQueries(CallContext& c);
 void glGenQueriesARB(CallContext& c);
+void glGenFramebuffers(CallContext& c);
+void glGenFramebuffersEXT(CallContext& c);
+void glGenRenderbuffers(CallContext& c);
+void glGenRenderbuffersEXT(CallContext& c);
 void glGenLists(CallContext& c);
 // Read into scratch memory: the values are not needed, but the read is a flush point of the
 // frame record and must happen where the program did it.

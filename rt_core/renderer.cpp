@@ -82,8 +82,9 @@ class Renderer::Impl {
     };
     const uint64_t waits_before = device_->host_waits();
     classified_ = false;
-    if (log_ || settings_.classify_debug ||
-        (settings_.mode == RenderMode::kPathTraced && tracer_)) {
+    if (!drawable.framebuffer_object &&
+        (log_ || settings_.classify_debug ||
+         (settings_.mode == RenderMode::kPathTraced && tracer_))) {
       const auto start = std::chrono::steady_clock::now();
       classify_frame(record, drawable, &identities_of(buffers), classification_);
       stats.classify_ms +=
@@ -151,7 +152,9 @@ class Renderer::Impl {
   void run_frame(const rec::FrameRecord& record, DrawableBuffers& buffers,
                  const rec::DrawableConfig& drawable, FrameStats& stats, const FrameEnd* end,
                  std::vector<QuerySamples>* queries) {
-    if (settings_.mode == RenderMode::kRaster || !tracer_) {
+    // Draws into a framebuffer object make a texture the traced scene may sample: rasterized
+    // as raster mode draws them, never traced, classified or made the main camera.
+    if (settings_.mode == RenderMode::kRaster || !tracer_ || drawable.framebuffer_object) {
       raster_.execute(record, buffers, drawable, stats, nullptr, end, nullptr, queries);
       return;
     }
@@ -282,6 +285,15 @@ bool Renderer::read_color(DrawableBuffers& buffers, uint32_t buffer, int32_t x, 
   std::lock_guard lock(impl_->mutex);
   return guarded("read failed", error, [&] {
     return impl_->raster().read_color(buffers, buffer, x, y, width, height, rgba);
+  });
+}
+
+bool Renderer::write_color(DrawableBuffers& buffers, const rec::DrawableConfig& drawable,
+                           const std::vector<uint8_t>& rgba, std::string* error) {
+  std::lock_guard lock(impl_->mutex);
+  return guarded("write failed", error, [&] {
+    impl_->raster().write_front_color(buffers, drawable, rgba);
+    return true;
   });
 }
 

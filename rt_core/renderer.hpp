@@ -87,6 +87,12 @@ class Renderer {
   bool read_stencil(DrawableBuffers& buffers, int32_t x, int32_t y, uint32_t width, uint32_t height,
                     std::vector<uint8_t>& stencil, std::string* error);
 
+  // Replaces the front colour buffer of `buffers` (created for `drawable` if need be) with
+  // `rgba` (RGBA8, rows bottom to top, the drawable's size): a framebuffer object's target takes
+  // the image of the texture attached to it.
+  bool write_color(DrawableBuffers& buffers, const rec::DrawableConfig& drawable,
+                   const std::vector<uint8_t>& rgba, std::string* error);
+
   // glXSwapBuffers of a double-buffered drawable: the front buffer takes the back buffer's
   // contents, and the back buffer keeps them (Mesa's software swap does the same).
   bool swap_buffers(DrawableBuffers& buffers, std::string* error);

@@ -9,6 +9,7 @@
 #include "gl_shim/context.hpp"
 #include "gl_shim/dispatch.hpp"
 #include "gl_shim/frame/framebuffer_access.hpp"
+#include "gl_shim/framebuffers/framebuffer_rendering.hpp"
 #include "gl_shim/gl_impl_decls.hpp"
 
 namespace glpt {
@@ -24,15 +25,16 @@ bool read_framebuffer(Context& ctx, rec::PixelKind kind, uint32_t buffer, int32_
   if (!execute_record(ctx) || !ctx.output) {
     // No renderer: the clear colour stands in for the buffers (clear_fallback.hpp).
     uint32_t w = 0, h = 0;
-    if (!ctx.clear_fallback || ctx.target == nullptr || !ctx.target->query_size(&w, &h))
-      return false;
+    WindowTarget* target = render_target(ctx);
+    if (!ctx.clear_fallback || target == nullptr || !target->query_size(&w, &h)) return false;
     ctx.clear_fallback->read(kind, x, y, width, height, w, h, out);
     return true;
   }
   rt::Renderer& renderer = ctx.output->renderer();
   const rec::DrawableConfig& drawable = ctx.output->drawable();
-  std::lock_guard lock(ctx.target->mutex());
-  rt::DrawableBuffers& buffers = ctx.target->buffers();
+  WindowTarget& target = *render_target(ctx);
+  std::lock_guard lock(target.mutex());
+  rt::DrawableBuffers& buffers = target.buffers();
   std::string error;
   const size_t n = size_t{width} * height;
   bool ok = false;
@@ -172,13 +174,42 @@ bool right_buffer_only(GLenum buf) {
 }
 }  // namespace
 
+namespace {
+// A framebuffer object's draw and read buffers name its colour attachments (or GL_NONE); the
+// window's buffers are GL_INVALID_OPERATION there, as in Mesa.
+bool framebuffer_object_buffer(Context& ctx, GLenum buf) {
+  if (buf == GL_NONE ||
+      (buf >= GL_COLOR_ATTACHMENT0_EXT && buf < GL_COLOR_ATTACHMENT0_EXT + kMaxColorAttachments))
+    return true;
+  record_error(ctx, valid_color_buffer(buf) || (buf >= GL_COLOR_ATTACHMENT0_EXT &&
+                                                  buf <= GL_COLOR_ATTACHMENT15_EXT)
+                        ? GL_INVALID_OPERATION
+                        : GL_INVALID_ENUM);
+  return false;
+}
+}  // namespace
+
 void glDrawBuffer(Context& ctx, GLenum buf) {
+  if (ctx.framebuffers.entered) {
+    if (!framebuffer_object_buffer(ctx, buf) || buf == ctx.raster.ops.draw_buffer) return;
+    // The target holds the drawn attachment's image: the one drawn so far goes back to its
+    // texture, the newly named one is loaded.
+    leave_framebuffer(ctx);
+    ctx.framebuffers.framebuffer->rendering->parked.draw_buffer = buf;
+    enter_framebuffer(ctx);
+    return;
+  }
   if (!valid_color_buffer(buf)) return record_error(ctx, GL_INVALID_ENUM);
   if (right_buffer_only(buf)) return record_error(ctx, GL_INVALID_OPERATION);
   ctx.raster.ops.draw_buffer = buf;
 }
 
 void glReadBuffer(Context& ctx, GLenum buf) {
+  if (ctx.framebuffers.entered) {
+    // Reads come from the target, which holds the drawn attachment.
+    if (framebuffer_object_buffer(ctx, buf)) ctx.raster.ops.read_buffer = buf;
+    return;
+  }
   if (!valid_color_buffer(buf) || buf == GL_NONE || buf == GL_FRONT_AND_BACK)
     return record_error(ctx, GL_INVALID_ENUM);
   if (right_buffer_only(buf)) return record_error(ctx, GL_INVALID_OPERATION);
@@ -246,6 +277,7 @@ namespace {
 // drawable, or glDrawBuffer(GL_FRONT)): the window shows the front buffer, and this is the only
 // point where a program drawing there says its image is complete.
 bool draws_to_front(const Context& ctx) {
+  if (ctx.framebuffers.entered) return false;  // a framebuffer object's drawing ends no frame
   const uint32_t b = ctx.raster.ops.draw_buffer;
   return !ctx.drawable.double_buffered || b == GL_FRONT || b == GL_FRONT_LEFT || b == GL_LEFT ||
          b == GL_FRONT_AND_BACK;

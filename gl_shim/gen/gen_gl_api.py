@@ -67,6 +67,7 @@ GL_EXTENSIONS = [
     "GL_EXT_texture3D", "GL_EXT_subtexture", "GL_EXT_copy_texture", "GL_EXT_compiled_vertex_array",
     "GL_EXT_draw_range_elements", "GL_EXT_multi_draw_arrays", "GL_EXT_fog_coord",
     "GL_EXT_secondary_color", "GL_EXT_point_parameters", "GL_EXT_stencil_two_side",
+    "GL_EXT_framebuffer_object",
 ]
 # Enums only (these extensions add no commands, or only enums matter).
 GL_ENUM_ONLY_EXTENSIONS = [
@@ -152,6 +153,16 @@ NOT_COMPILED = {
     "glBufferSubData", "glMapBuffer", "glUnmapBuffer",
     "glGenQueries", "glDeleteQueries", "glIsQuery",
     "glLockArraysEXT", "glUnlockArraysEXT",
+    # EXT_framebuffer_object (GL 3.0 5.4 lists its commands among those not compiled).
+    "glBindFramebufferEXT", "glDeleteFramebuffersEXT", "glGenFramebuffersEXT",
+    "glCheckFramebufferStatusEXT", "glFramebufferTexture1DEXT", "glFramebufferTexture2DEXT",
+    "glFramebufferTexture3DEXT", "glFramebufferRenderbufferEXT", "glGenerateMipmapEXT",
+    "glBindRenderbufferEXT", "glDeleteRenderbuffersEXT", "glGenRenderbuffersEXT",
+    "glRenderbufferStorageEXT",
+    "glBindFramebuffer", "glDeleteFramebuffers", "glGenFramebuffers", "glCheckFramebufferStatus",
+    "glFramebufferTexture1D", "glFramebufferTexture2D", "glFramebufferTexture3D",
+    "glFramebufferRenderbuffer", "glGenerateMipmap", "glBindRenderbuffer",
+    "glDeleteRenderbuffers", "glGenRenderbuffers", "glRenderbufferStorage",
 }
 NOT_COMPILED_PREFIXES = ("glGet", "glIs")
 

@@ -12,6 +12,7 @@
 #include "gl_shim/context.hpp"
 #include "gl_shim/dispatch.hpp"
 #include "gl_shim/frame/framebuffer_access.hpp"
+#include "gl_shim/framebuffers/framebuffer_rendering.hpp"
 #include "gl_shim/gl_impl_decls.hpp"
 #include "gl_shim/pixels/pixel_formats.hpp"
 #include "gl_shim/pixels/pixel_pack.hpp"
@@ -683,6 +684,36 @@ void get_compressed_tex_image(Context& ctx, GLenum target, GLint level, void* pi
 }
 
 }  // namespace
+
+void write_back_framebuffer_image(Context& ctx, TextureObject& object, GLenum texture_target,
+                                  int level, uint32_t width, uint32_t height, bool depth) {
+  const bool cube = texture_target >= GL_TEXTURE_CUBE_MAP_POSITIVE_X &&
+                    texture_target <= GL_TEXTURE_CUBE_MAP_NEGATIVE_Z;
+  const std::optional<ImageTarget> t = image_target(texture_target, 0, ProxyTargets::kRejected);
+  const rec::TextureImage* img = object.image(cube ? int(texture_target - GL_TEXTURE_CUBE_MAP_POSITIVE_X) : 0, level);
+  if (!t || img == nullptr) return;
+  const InternalFormatInfo* info = stored_format_info(img->internal_format, img->sized_format);
+  if (info == nullptr || info->block_bytes != 0 || info->is_depth() != depth) return;
+  const uint32_t w = std::min(width, img->width), h = std::min(height, img->height);
+  const size_t n = size_t{w} * h;
+  if (n == 0) return;
+  FramebufferPixels fb;
+  if (!read_framebuffer(ctx, depth ? rec::PixelKind::kDepth : rec::PixelKind::kColor, GL_FRONT, 0,
+                        0, w, h, fb))
+    return;
+  ImageContents contents;
+  contents.texels.assign(n * rec::texel_bytes(info->texel_format()), 0);
+  if (depth && fb.depth.size() == n)
+    encode_depth_texels(*info, fb.depth.data(), n, contents.texels.data());
+  else if (!depth && fb.color.size() == n)
+    encode_color_texels(*info, fb.color.data(), n, contents.texels.data());
+  else
+    return;
+  write_region(object, *t, level, 0, 0, 0, GLsizei(w), GLsizei(h), 1, contents,
+               rec::texel_bytes(info->texel_format()));
+  image_changed(object, *t, level);
+}
+
 
 namespace impl {
 

@@ -41,6 +41,8 @@ void glDeleteTextures(Context& ctx, GLsizei n, const GLuint* textures) {
         if (bound == it->second) bound.reset();
       }
     }
+    // And from the bound framebuffer object's attachments (EXT_framebuffer_object 4.4.2.3).
+    if (it->second) detach_deleted_texture(ctx, *it->second);
     store.objects.erase(it);
   }
 }

@@ -64,6 +64,19 @@ bool lookup_texture_and_pixel_state(const Context& ctx, GLenum pname, query::Val
     case GL_MAX_TEXTURE_LOD_BIAS:
       real(kMaxTextureLodBias);
       return true;
+    // EXT_framebuffer_object's bindings and limits.
+    case GL_FRAMEBUFFER_BINDING_EXT:
+      *out = ints({double(ctx.framebuffers.framebuffer ? ctx.framebuffers.framebuffer->name : 0)});
+      return true;
+    case GL_RENDERBUFFER_BINDING_EXT:
+      *out = ints({double(ctx.framebuffers.renderbuffer ? ctx.framebuffers.renderbuffer->name : 0)});
+      return true;
+    case GL_MAX_RENDERBUFFER_SIZE_EXT:
+      *out = ints({kMaxRenderbufferSize});
+      return true;
+    case GL_MAX_COLOR_ATTACHMENTS_EXT:
+      *out = ints({kMaxColorAttachments});
+      return true;
     case GL_MAX_TEXTURE_MAX_ANISOTROPY_EXT:
       real(kMaxTextureAnisotropy);
       return true;

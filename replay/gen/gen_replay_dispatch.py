@@ -39,7 +39,8 @@ HAND = {
     "glGenTextures", "glGenTexturesEXT", "glGenBuffers", "glGenBuffersARB", "glGenQueries",
     "glGenQueriesARB", "glGenLists", "glReadPixels", "glFeedbackBuffer", "glSelectBuffer",
     "glMapBuffer", "glMapBufferARB", "glUnmapBuffer", "glUnmapBufferARB", "glMultiDrawElements",
-    "glMultiDrawElementsEXT",
+    "glMultiDrawElementsEXT", "glGenFramebuffers", "glGenFramebuffersEXT", "glGenRenderbuffers",
+    "glGenRenderbuffersEXT",
 }
 
 # Queries: no side effects, never dispatched (the replayer skips them).
@@ -69,7 +70,8 @@ EVALUATOR_COUNTS = {
 }
 
 NAME_KINDS = {"texture": "kTexture", "buffer": "kBuffer", "query": "kQuery",
-              "display list": "kList"}
+              "display list": "kList", "framebuffer": "kFramebuffer",
+              "renderbuffer": "kRenderbuffer"}
 
 
 def name_classes(root):

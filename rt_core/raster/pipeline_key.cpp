@@ -257,7 +257,11 @@ ColorTargets resolve_draw_buffer(uint32_t draw_buffer, bool double_buffered) {
     case GL_LEFT:
     case GL_FRONT_AND_BACK:
       return double_buffered ? ColorTargets::kFrontAndBack : ColorTargets::kFront;
-    default:  // right buffers: glpt's drawables are not stereo
+    default:
+      // A framebuffer object's colour attachments: its target holds the one the draw buffer
+      // names, as its single (front) buffer. Right buffers: glpt's drawables are not stereo.
+      if (draw_buffer >= GL_COLOR_ATTACHMENT0_EXT && draw_buffer <= GL_COLOR_ATTACHMENT15_EXT)
+        return ColorTargets::kFront;
       return ColorTargets::kNone;
   }
 }

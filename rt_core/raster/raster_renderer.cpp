@@ -987,6 +987,13 @@ void RasterRenderer::write_color(bool front, const std::vector<uint8_t>& rgba) {
   write_image(image, {{0, 0}, {buffers_->config.width, buffers_->config.height}}, rgba);
 }
 
+void RasterRenderer::write_front_color(DrawableBuffers& buffers,
+                                       const rec::DrawableConfig& drawable,
+                                       const std::vector<uint8_t>& rgba) {
+  ensure_buffers(buffers, drawable);
+  write_color(true, rgba);
+}
+
 void RasterRenderer::write_image(const GpuImage& image, const VkRect2D& rect,
                                  const std::vector<uint8_t>& rgba) {
   ensure_capacity(*device_, readback_, rgba.size(),

@@ -68,6 +68,9 @@ class RasterRenderer {
   // Replaces a whole colour buffer with `rgba` (RGBA8, rows bottom to top): the path tracer's
   // image, before the draws it does not take are rasterized over it.
   void write_color(bool front, const std::vector<uint8_t>& rgba);
+  // The same for the front buffer of `buffers`, created for `drawable` first if they are not.
+  void write_front_color(DrawableBuffers& buffers, const rec::DrawableConfig& drawable,
+                         const std::vector<uint8_t>& rgba);
 
   VulkanDevice& device() { return *device_; }
   // The buffers of the last execute, for path-traced mode (which writes the traced image into

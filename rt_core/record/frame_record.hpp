@@ -280,6 +280,10 @@ struct DrawableConfig {
   uint32_t depth_bits = 24;
   uint32_t stencil_bits = 8;
   uint32_t accum_bits = 16;  // per component; 0: no accumulation buffer
+  // A framebuffer object's (EXT_framebuffer_object): single-buffered, its one colour buffer the
+  // attachment the draw buffer names (GL_COLOR_ATTACHMENTn draws into the front buffer); what is
+  // drawn there becomes a texture, so path-traced mode renders it as raster mode does.
+  bool framebuffer_object = false;
 
   bool operator==(const DrawableConfig&) const = default;
 };

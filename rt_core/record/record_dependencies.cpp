@@ -21,6 +21,9 @@ uint8_t colour_buffers(uint32_t buffer, bool double_buffered) {
     case GL_FRONT_AND_BACK:
       return double_buffered ? kFrontColor | kBackColor : kFrontColor;
     default:
+      // A framebuffer object's colour attachment is its target's one (front) buffer.
+      if (buffer >= GL_COLOR_ATTACHMENT0_EXT && buffer <= GL_COLOR_ATTACHMENT15_EXT)
+        return kFrontColor;
       return 0;  // GL_NONE, right buffers: nothing
   }
 }

@@ -55,6 +55,10 @@ bool Renderer::read_stencil(DrawableBuffers&, int32_t, int32_t, uint32_t, uint32
                             std::vector<uint8_t>&, std::string*) {
   std::abort();
 }
+bool Renderer::write_color(DrawableBuffers&, const rec::DrawableConfig&,
+                           const std::vector<uint8_t>&, std::string*) {
+  std::abort();
+}
 void Renderer::start_independent_frame(uint64_t, uint32_t) { std::abort(); }
 
 }  // namespace rt

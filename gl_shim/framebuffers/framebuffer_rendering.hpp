@@ -1,0 +1,70 @@
+// Drawing into framebuffer objects (EXT_framebuffer_object; docs/framebuffer-objects-plan.md).
+//
+// A framebuffer object has a frame record of its own and a target of its attachments' size (a
+// headless drawable: single-buffered, depth and stencil as attached). While it is bound, the
+// context's recorder, snapshots, drawable configuration and draw and read buffers are the
+// object's (swapped in by enter_framebuffer, out by leave_framebuffer), so every command records
+// into it unchanged; the context's window stays ctx.target. Leaving renders what was recorded on
+// the target and writes the colour (and a depth texture's depth) back into the attached texture
+// images, as glCopyTexSubImage would without pixel transfer; entering loads the attached colour
+// texture into the target when its contents changed since (or the target is new).
+#pragma once
+
+#include <cstdint>
+#include <memory>
+
+#include "common/stopwatch.hpp"
+#include "gl_shim/frame/frame_recorder.hpp"
+#include "gl_shim/frame/headless_target.hpp"
+#include "gl_shim/frame/state_snapshot.hpp"
+#include "gl_shim/gl_types.h"
+#include "rt_core/record/frame_record.hpp"
+
+namespace glpt {
+
+class Context;
+class TextureObject;
+class WindowTarget;
+struct FramebufferObject;
+
+// What the context records into: its own while the window is bound, the object's while one is.
+struct RecordingBundle {
+  FrameRecorder recorder;
+  StateSnapshotter snapshots;
+  Stopwatch recording_since;
+  rec::DrawableConfig drawable;  // what GL_DOUBLEBUFFER, GL_*_BITS report
+  uint32_t draw_buffer = 0, read_buffer = 0;
+};
+
+struct FramebufferRendering {
+  // The object's bundle while it is not bound; the window's while it is.
+  RecordingBundle parked;
+  std::unique_ptr<HeadlessTarget> target;  // null while the object is incomplete
+  // A record was executed on the target since it was entered: its contents go to the textures.
+  bool drawn = false;
+  // The texture image the target's colour buffer holds and the texture's content version then.
+  const TextureObject* loaded_texture = nullptr;
+  GLenum loaded_target = 0;
+  int loaded_level = -1;
+  uint64_t loaded_version = 0;
+};
+
+// After `fb` became the bound framebuffer object (ctx.framebuffers.framebuffer).
+void enter_framebuffer(Context& ctx);
+// Before the bound framebuffer object stops being bound (or its attachments change): renders
+// what was recorded into it, writes the result back into its attached textures, and gives the
+// context its window's bundle again.
+void leave_framebuffer(Context& ctx);
+// Its attachments changed while bound: leave and enter again (a new target size or image).
+void refresh_framebuffer(Context& ctx);
+// What the context's record renders to: the bound framebuffer object's target, else the window.
+WindowTarget* render_target(Context& ctx);
+
+// EXT_framebuffer_object: the width x height rectangle at the origin of the render target's front
+// colour (or depth) buffer becomes the texels of `object`'s image at `texture_target` (a cube
+// face for cube maps) and `level`: no pixel transfer (drawing is not a copy).
+// (gl_shim/textures/texture_image_commands.cpp)
+void write_back_framebuffer_image(Context& ctx, TextureObject& object, GLenum texture_target,
+                                  int level, uint32_t width, uint32_t height, bool depth);
+
+}  // namespace glpt

@@ -1,0 +1,222 @@
+// EXT_framebuffer_object: drawing into textures and renderbuffers, then using the result in the
+// window: a lit, depth-tested scene rendered into a texture with a depth renderbuffer; a texture
+// rendered in two passes (the second samples the first's result); a mipmap level drawn into and
+// the chain generated from level 0; glReadPixels and glCopyTexSubImage from a framebuffer
+// object; completeness answers drawn as swatches.
+#include "scene_util.hpp"
+
+namespace {
+
+using namespace glpt::conformance::util;
+
+GLuint color_texture(GLsizei width, GLsizei height, GLenum internal_format = GL_RGBA8) {
+  GLuint t = 0;
+  glGenTextures(1, &t);
+  glBindTexture(GL_TEXTURE_2D, t);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTexImage2D(GL_TEXTURE_2D, 0, GLint(internal_format), width, height, 0, GL_RGBA,
+               GL_UNSIGNED_BYTE, nullptr);
+  return t;
+}
+
+// A framebuffer object drawing into `texture` (level 0) with a depth renderbuffer.
+GLuint framebuffer_for(GLuint texture, GLsizei width, GLsizei height, bool depth) {
+  GLuint fb = 0;
+  glGenFramebuffersEXT(1, &fb);
+  glBindFramebufferEXT(GL_FRAMEBUFFER_EXT, fb);
+  glFramebufferTexture2DEXT(GL_FRAMEBUFFER_EXT, GL_COLOR_ATTACHMENT0_EXT, GL_TEXTURE_2D, texture,
+                            0);
+  if (depth) {
+    GLuint rb = 0;
+    glGenRenderbuffersEXT(1, &rb);
+    glBindRenderbufferEXT(GL_RENDERBUFFER_EXT, rb);
+    glRenderbufferStorageEXT(GL_RENDERBUFFER_EXT, GL_DEPTH_COMPONENT24, width, height);
+    glFramebufferRenderbufferEXT(GL_FRAMEBUFFER_EXT, GL_DEPTH_ATTACHMENT_EXT, GL_RENDERBUFFER_EXT,
+                                 rb);
+  }
+  return fb;
+}
+
+// Shows the 2-D texture `t` on a window rectangle (pixel coordinates, GL_REPLACE).
+void show_texture(GLuint t, float x0, float y0, float x1, float y1) {
+  glBindTexture(GL_TEXTURE_2D, t);
+  glEnable(GL_TEXTURE_2D);
+  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+  textured_quad(x0, y0, x1, y1, 0.0f, 0.0f, 1.0f, 1.0f);
+  glDisable(GL_TEXTURE_2D);
+}
+
+// Green when `status` is `expected`, red otherwise, as a 6x6 swatch at (x, y).
+void status_swatch(GLenum status, GLenum expected, float x, float y) {
+  glColor3f(status == expected ? 0.0f : 1.0f, status == expected ? 1.0f : 0.0f, 0.0f);
+  quad(x, y, x + 6.0f, y + 6.0f);
+}
+
+}  // namespace
+
+// A lit sphere in front of a lit cube, depth-tested, drawn into a 64x64 texture with a depth
+// renderbuffer, then shown twice in the window (at its size and magnified).
+GLPT_SCENE(fbo_render_to_texture, 160, 80) {
+  const GLuint tex = color_texture(64, 64);
+  const GLuint fb = framebuffer_for(tex, 64, 64, true);
+  glViewport(0, 0, 64, 64);
+  glClearColor(0.2f, 0.3f, 0.5f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  lit_perspective_light0(50.0, 1.0);
+  glEnable(GL_DEPTH_TEST);
+  glEnable(GL_COLOR_MATERIAL);
+  glMatrixMode(GL_MODELVIEW);
+  glLoadIdentity();
+  glTranslatef(0.0f, 0.0f, -5.0f);
+  glColor3f(0.9f, 0.6f, 0.2f);
+  sphere(0.9f, 16, 12);
+  glTranslatef(0.6f, 0.4f, -1.2f);
+  glRotatef(30.0f, 1.0f, 1.0f, 0.0f);
+  glColor3f(0.3f, 0.8f, 0.4f);
+  cube(0.8f);
+  glDisable(GL_LIGHTING);
+  glDisable(GL_DEPTH_TEST);
+  glBindFramebufferEXT(GL_FRAMEBUFFER_EXT, 0);
+  glDeleteFramebuffersEXT(1, &fb);
+
+  glViewport(0, 0, 160, 80);
+  clear(0.05f, 0.05f, 0.05f);
+  ortho_pixels(160, 80);
+  show_texture(tex, 4.0f, 8.0f, 68.0f, 72.0f);
+  show_texture(tex, 76.0f, 4.0f, 148.0f, 76.0f);
+}
+
+// Two passes: a coloured triangle drawn into texture A; A textured onto a rotated quad drawn
+// into texture B (of another size) over a cleared background; B shown in the window. The second
+// framebuffer object is bound while the first still is (binding switches directly).
+GLPT_SCENE(fbo_two_passes, 96, 64) {
+  const GLuint a = color_texture(32, 32);
+  const GLuint b = color_texture(48, 40);
+  const GLuint fa = framebuffer_for(a, 32, 32, false);
+  glViewport(0, 0, 32, 32);
+  glClearColor(1.0f, 1.0f, 1.0f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  ortho_pixels(32, 32);
+  rgb_triangle(2.0f, 2.0f, 30.0f, 6.0f, 12.0f, 29.0f);
+  const GLuint fb_b = framebuffer_for(b, 48, 40, false);
+  glViewport(0, 0, 48, 40);
+  glClearColor(0.1f, 0.1f, 0.4f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  ortho_pixels(48, 40);
+  glTranslatef(24.0f, 20.0f, 0.0f);
+  glRotatef(20.0f, 0.0f, 0.0f, 1.0f);
+  glTranslatef(-24.0f, -20.0f, 0.0f);
+  show_texture(a, 8.0f, 6.0f, 40.0f, 34.0f);
+  glLoadIdentity();
+  glBindFramebufferEXT(GL_FRAMEBUFFER_EXT, 0);
+  (void)fa;
+  (void)fb_b;
+  glViewport(0, 0, 96, 64);
+  clear(0.0f, 0.0f, 0.0f);
+  ortho_pixels(96, 64);
+  show_texture(b, 4.0f, 4.0f, 52.0f, 44.0f);
+  show_texture(a, 60.0f, 30.0f, 92.0f, 62.0f);
+}
+
+// Drawing into an existing texture adds to what it holds (no clear): a textured checkerboard
+// keeps its texels where the framebuffer object draws nothing.
+GLPT_SCENE(fbo_draws_over_texture_contents, 64, 64) {
+  GLubyte texels[16 * 16 * 4];
+  for (int y = 0; y < 16; ++y)
+    for (int x = 0; x < 16; ++x) {
+      const bool on = ((x / 4) + (y / 4)) % 2 == 0;
+      GLubyte* t = &texels[(y * 16 + x) * 4];
+      t[0] = on ? 230 : 30;
+      t[1] = on ? 200 : 60;
+      t[2] = on ? 40 : 120;
+      t[3] = 255;
+    }
+  GLuint tex = 0;
+  glGenTextures(1, &tex);
+  glBindTexture(GL_TEXTURE_2D, tex);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 16, 16, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels);
+  framebuffer_for(tex, 16, 16, false);
+  glViewport(0, 0, 16, 16);
+  ortho_pixels(16, 16);
+  glColor3f(1.0f, 0.0f, 1.0f);
+  quad(4.0f, 4.0f, 10.0f, 12.0f);
+  glBindFramebufferEXT(GL_FRAMEBUFFER_EXT, 0);
+  glViewport(0, 0, 64, 64);
+  clear(0.0f, 0.0f, 0.0f);
+  ortho_pixels(64, 64);
+  show_texture(tex, 0.0f, 0.0f, 64.0f, 64.0f);
+}
+
+// glReadPixels and glCopyTexSubImage2D while a framebuffer object is bound read it, not the
+// window; glCheckFramebufferStatusEXT's answers for complete and incomplete objects as swatches.
+GLPT_SCENE(fbo_read_copy_and_status, 96, 48) {
+  clear(0.3f, 0.0f, 0.0f);  // the window: what reads must not see
+  const GLuint tex = color_texture(16, 16);
+  const GLuint fb = framebuffer_for(tex, 16, 16, false);
+  const GLenum complete = glCheckFramebufferStatusEXT(GL_FRAMEBUFFER_EXT);
+  glViewport(0, 0, 16, 16);
+  glClearColor(0.0f, 0.5f, 1.0f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  ortho_pixels(16, 16);
+  rgb_triangle(1.0f, 1.0f, 15.0f, 2.0f, 8.0f, 15.0f);
+  GLubyte pixels[16 * 16 * 4];
+  glReadPixels(0, 0, 16, 16, GL_RGBA, GL_UNSIGNED_BYTE, pixels);
+  GLuint copy = 0;
+  glGenTextures(1, &copy);
+  glBindTexture(GL_TEXTURE_2D, copy);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 16, 16, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+  glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 0, 0, 16, 16);
+  // An object without attachments, and one with a level that does not exist.
+  GLuint empty = 0;
+  glGenFramebuffersEXT(1, &empty);
+  glBindFramebufferEXT(GL_FRAMEBUFFER_EXT, empty);
+  const GLenum missing = glCheckFramebufferStatusEXT(GL_FRAMEBUFFER_EXT);
+  glFramebufferTexture2DEXT(GL_FRAMEBUFFER_EXT, GL_COLOR_ATTACHMENT0_EXT, GL_TEXTURE_2D, tex, 3);
+  const GLenum bad_level = glCheckFramebufferStatusEXT(GL_FRAMEBUFFER_EXT);
+  glBindFramebufferEXT(GL_FRAMEBUFFER_EXT, 0);
+  const GLenum window = glCheckFramebufferStatusEXT(GL_FRAMEBUFFER_EXT);
+  glDeleteFramebuffersEXT(1, &fb);
+  glDeleteFramebuffersEXT(1, &empty);
+
+  glViewport(0, 0, 96, 48);
+  ortho_pixels(96, 48);
+  glRasterPos2i(2, 2);
+  glDrawPixels(16, 16, GL_RGBA, GL_UNSIGNED_BYTE, pixels);
+  show_texture(copy, 22.0f, 2.0f, 38.0f, 18.0f);
+  show_texture(tex, 42.0f, 2.0f, 74.0f, 34.0f);
+  status_swatch(complete, GL_FRAMEBUFFER_COMPLETE_EXT, 2.0f, 40.0f);
+  status_swatch(missing, GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT_EXT, 10.0f, 40.0f);
+  status_swatch(bad_level, GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT_EXT, 18.0f, 40.0f);
+  status_swatch(window, GL_FRAMEBUFFER_COMPLETE_EXT, 26.0f, 40.0f);
+}
+
+// A framebuffer object drawing into level 0 of a mipmapped texture, glGenerateMipmapEXT, and the
+// texture minified so that its smaller levels show.
+GLPT_SCENE(fbo_generate_mipmap, 96, 48) {
+  const GLuint tex = color_texture(32, 32);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
+  framebuffer_for(tex, 32, 32, false);
+  glViewport(0, 0, 32, 32);
+  glClearColor(0.9f, 0.9f, 0.2f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  ortho_pixels(32, 32);
+  glColor3f(0.1f, 0.2f, 0.9f);
+  quad(0.0f, 0.0f, 16.0f, 32.0f);
+  glBindFramebufferEXT(GL_FRAMEBUFFER_EXT, 0);
+  glBindTexture(GL_TEXTURE_2D, tex);
+  glGenerateMipmapEXT(GL_TEXTURE_2D);
+  glViewport(0, 0, 96, 48);
+  clear(0.0f, 0.0f, 0.0f);
+  ortho_pixels(96, 48);
+  glEnable(GL_TEXTURE_2D);
+  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+  textured_quad(2.0f, 2.0f, 34.0f, 34.0f, 0.0f, 0.0f, 1.0f, 1.0f);
+  textured_quad(40.0f, 2.0f, 48.0f, 10.0f, 0.0f, 0.0f, 1.0f, 1.0f);
+  textured_quad(52.0f, 2.0f, 54.0f, 4.0f, 0.0f, 0.0f, 1.0f, 1.0f);
+  glDisable(GL_TEXTURE_2D);
+}
