@@ -1,7 +1,5 @@
 #include "gl_shim/context.hpp"
 
-#include "gl_shim/framebuffers/framebuffer_rendering.hpp"
-
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -10,6 +8,7 @@
 #include "gl_shim/dispatch.hpp"
 #include "gl_shim/frame/headless_target.hpp"
 #include "gl_shim/frame/heap_tuning.hpp"
+#include "gl_shim/framebuffers/framebuffer_rendering.hpp"
 #include "gl_shim/gl_impl_decls.hpp"
 
 namespace glpt {

@@ -7,7 +7,9 @@
 // into it unchanged; the context's window stays ctx.target. Leaving renders what was recorded on
 // the target and writes the colour (and a depth texture's depth) back into the attached texture
 // images, as glCopyTexSubImage would without pixel transfer; entering loads the attached colour
-// texture into the target when its contents changed since (or the target is new).
+// texture into the target when its contents changed since (or the target is new). One context at
+// a time may have an object bound: its bundle is the object's (two contexts of a share group
+// drawing into one object at once are not supported).
 #pragma once
 
 #include <cstdint>
