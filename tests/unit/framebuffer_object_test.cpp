@@ -31,6 +31,16 @@ GLuint texture_2d(GLsizei width, GLsizei height, GLenum internal_format = GL_RGB
   return t;
 }
 
+// A renderbuffer of `format` and size, attached to the bound framebuffer at `attachment`.
+GLuint attach_renderbuffer(GLenum attachment, GLenum format, GLsizei width, GLsizei height) {
+  GLuint rb = 0;
+  glGenRenderbuffersEXT(1, &rb);
+  glBindRenderbufferEXT(GL_RENDERBUFFER_EXT, rb);
+  glRenderbufferStorageEXT(GL_RENDERBUFFER_EXT, format, width, height);
+  glFramebufferRenderbufferEXT(GL_FRAMEBUFFER_EXT, attachment, GL_RENDERBUFFER_EXT, rb);
+  return rb;
+}
+
 TEST_F(GlTest, FramebufferNamesBecomeObjectsWhenBound) {
   GLuint f[2] = {};
   glGenFramebuffersEXT(2, f);
@@ -122,41 +132,22 @@ TEST_F(GlTest, AttachmentsAndCompleteness) {
   attachment_param(GL_COLOR_ATTACHMENT1_EXT, GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL_EXT);
   EXPECT_EQ(error(), GLenum{GL_INVALID_OPERATION});
   // A depth renderbuffer of another size: complete (ARB_framebuffer_object's rule, Mesa's).
-  GLuint depth = 0;
-  glGenRenderbuffersEXT(1, &depth);
-  glBindRenderbufferEXT(GL_RENDERBUFFER_EXT, depth);
-  glRenderbufferStorageEXT(GL_RENDERBUFFER_EXT, GL_DEPTH_COMPONENT24, 64, 64);
-  glFramebufferRenderbufferEXT(GL_FRAMEBUFFER_EXT, GL_DEPTH_ATTACHMENT_EXT, GL_RENDERBUFFER_EXT,
-                               depth);
+  const GLuint depth = attach_renderbuffer(GL_DEPTH_ATTACHMENT_EXT, GL_DEPTH_COMPONENT24, 64, 64);
   EXPECT_EQ(error(), GLenum{GL_NO_ERROR});
   EXPECT_EQ(glCheckFramebufferStatusEXT(GL_FRAMEBUFFER_EXT), GLenum{GL_FRAMEBUFFER_COMPLETE_EXT});
   // A colour format at the depth attachment, and a depth format at a colour attachment.
-  GLuint rgba = 0;
-  glGenRenderbuffersEXT(1, &rgba);
-  glBindRenderbufferEXT(GL_RENDERBUFFER_EXT, rgba);
-  glRenderbufferStorageEXT(GL_RENDERBUFFER_EXT, GL_RGBA8, 32, 16);
-  glFramebufferRenderbufferEXT(GL_FRAMEBUFFER_EXT, GL_DEPTH_ATTACHMENT_EXT, GL_RENDERBUFFER_EXT,
-                               rgba);
+  attach_renderbuffer(GL_DEPTH_ATTACHMENT_EXT, GL_RGBA8, 32, 16);
   EXPECT_EQ(glCheckFramebufferStatusEXT(GL_FRAMEBUFFER_EXT),
             GLenum{GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT_EXT});
   glFramebufferRenderbufferEXT(GL_FRAMEBUFFER_EXT, GL_DEPTH_ATTACHMENT_EXT, GL_RENDERBUFFER_EXT,
                                depth);
   // Separate depth and stencil renderbuffers: what llvmpipe does not support.
-  GLuint stencil = 0;
-  glGenRenderbuffersEXT(1, &stencil);
-  glBindRenderbufferEXT(GL_RENDERBUFFER_EXT, stencil);
-  glRenderbufferStorageEXT(GL_RENDERBUFFER_EXT, GL_STENCIL_INDEX8_EXT, 32, 16);
-  glFramebufferRenderbufferEXT(GL_FRAMEBUFFER_EXT, GL_STENCIL_ATTACHMENT_EXT, GL_RENDERBUFFER_EXT,
-                               stencil);
+  attach_renderbuffer(GL_STENCIL_ATTACHMENT_EXT, GL_STENCIL_INDEX8_EXT, 32, 16);
   EXPECT_EQ(glCheckFramebufferStatusEXT(GL_FRAMEBUFFER_EXT),
             GLenum{GL_FRAMEBUFFER_UNSUPPORTED_EXT});
   // One packed depth-stencil renderbuffer at both: complete.
-  GLuint packed = 0;
-  glGenRenderbuffersEXT(1, &packed);
-  glBindRenderbufferEXT(GL_RENDERBUFFER_EXT, packed);
-  glRenderbufferStorageEXT(GL_RENDERBUFFER_EXT, GL_DEPTH24_STENCIL8_EXT, 32, 16);
-  glFramebufferRenderbufferEXT(GL_FRAMEBUFFER_EXT, kDepthStencilAttachment, GL_RENDERBUFFER_EXT,
-                               packed);
+  const GLuint packed =
+      attach_renderbuffer(kDepthStencilAttachment, GL_DEPTH24_STENCIL8_EXT, 32, 16);
   EXPECT_EQ(error(), GLenum{GL_NO_ERROR});
   EXPECT_EQ(attachment_param(GL_STENCIL_ATTACHMENT_EXT, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME_EXT),
             GLint(packed));

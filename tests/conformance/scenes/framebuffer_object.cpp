@@ -9,14 +9,14 @@ namespace {
 
 using namespace glpt::conformance::util;
 
-GLuint color_texture(GLsizei width, GLsizei height, GLenum internal_format = GL_RGBA8) {
+// A GL_RGBA8 texture of `texels` (RGBA bytes; null: undefined contents), nearest filtering.
+GLuint color_texture(GLsizei width, GLsizei height, const GLubyte* texels = nullptr) {
   GLuint t = 0;
   glGenTextures(1, &t);
   glBindTexture(GL_TEXTURE_2D, t);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  glTexImage2D(GL_TEXTURE_2D, 0, GLint(internal_format), width, height, 0, GL_RGBA,
-               GL_UNSIGNED_BYTE, nullptr);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels);
   return t;
 }
 
@@ -45,6 +45,22 @@ void show_texture(GLuint t, float x0, float y0, float x1, float y1) {
   glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
   textured_quad(x0, y0, x1, y1, 0.0f, 0.0f, 1.0f, 1.0f);
   glDisable(GL_TEXTURE_2D);
+}
+
+// Back to the window: bound, its whole viewport, cleared to `grey`, pixel coordinates.
+void to_window(int width, int height, float grey = 0.0f) {
+  glBindFramebufferEXT(GL_FRAMEBUFFER_EXT, 0);
+  glViewport(0, 0, width, height);
+  clear(grey, grey, grey);
+  ortho_pixels(width, height);
+}
+
+// The bound framebuffer object of `width` x `height` cleared to (r, g, b), pixel coordinates.
+void clear_framebuffer(int width, int height, float r, float g, float b) {
+  glViewport(0, 0, width, height);
+  glClearColor(r, g, b, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  ortho_pixels(width, height);
 }
 
 // Green when `status` is `expected`, red otherwise, as a 6x6 swatch at (x, y).
@@ -77,12 +93,8 @@ GLPT_SCENE(fbo_render_to_texture, 160, 80) {
   cube(0.8f);
   glDisable(GL_LIGHTING);
   glDisable(GL_DEPTH_TEST);
-  glBindFramebufferEXT(GL_FRAMEBUFFER_EXT, 0);
-  glDeleteFramebuffersEXT(1, &fb);
-
-  glViewport(0, 0, 160, 80);
-  clear(0.05f, 0.05f, 0.05f);
-  ortho_pixels(160, 80);
+  glDeleteFramebuffersEXT(1, &fb);  // binds the window
+  to_window(160, 80, 0.05f);
   show_texture(tex, 4.0f, 8.0f, 68.0f, 72.0f);
   show_texture(tex, 76.0f, 4.0f, 148.0f, 76.0f);
 }
@@ -93,28 +105,17 @@ GLPT_SCENE(fbo_render_to_texture, 160, 80) {
 GLPT_SCENE(fbo_two_passes, 96, 64) {
   const GLuint a = color_texture(32, 32);
   const GLuint b = color_texture(48, 40);
-  const GLuint fa = framebuffer_for(a, 32, 32, false);
-  glViewport(0, 0, 32, 32);
-  glClearColor(1.0f, 1.0f, 1.0f, 1.0f);
-  glClear(GL_COLOR_BUFFER_BIT);
-  ortho_pixels(32, 32);
+  framebuffer_for(a, 32, 32, false);
+  clear_framebuffer(32, 32, 1.0f, 1.0f, 1.0f);
   rgb_triangle(2.0f, 2.0f, 30.0f, 6.0f, 12.0f, 29.0f);
-  const GLuint fb_b = framebuffer_for(b, 48, 40, false);
-  glViewport(0, 0, 48, 40);
-  glClearColor(0.1f, 0.1f, 0.4f, 1.0f);
-  glClear(GL_COLOR_BUFFER_BIT);
-  ortho_pixels(48, 40);
+  framebuffer_for(b, 48, 40, false);
+  clear_framebuffer(48, 40, 0.1f, 0.1f, 0.4f);
   glTranslatef(24.0f, 20.0f, 0.0f);
   glRotatef(20.0f, 0.0f, 0.0f, 1.0f);
   glTranslatef(-24.0f, -20.0f, 0.0f);
   show_texture(a, 8.0f, 6.0f, 40.0f, 34.0f);
   glLoadIdentity();
-  glBindFramebufferEXT(GL_FRAMEBUFFER_EXT, 0);
-  (void)fa;
-  (void)fb_b;
-  glViewport(0, 0, 96, 64);
-  clear(0.0f, 0.0f, 0.0f);
-  ortho_pixels(96, 64);
+  to_window(96, 64);
   show_texture(b, 4.0f, 4.0f, 52.0f, 44.0f);
   show_texture(a, 60.0f, 30.0f, 92.0f, 62.0f);
 }
@@ -132,21 +133,13 @@ GLPT_SCENE(fbo_draws_over_texture_contents, 64, 64) {
       t[2] = on ? 40 : 120;
       t[3] = 255;
     }
-  GLuint tex = 0;
-  glGenTextures(1, &tex);
-  glBindTexture(GL_TEXTURE_2D, tex);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 16, 16, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels);
+  const GLuint tex = color_texture(16, 16, texels);
   framebuffer_for(tex, 16, 16, false);
   glViewport(0, 0, 16, 16);
   ortho_pixels(16, 16);
   glColor3f(1.0f, 0.0f, 1.0f);
   quad(4.0f, 4.0f, 10.0f, 12.0f);
-  glBindFramebufferEXT(GL_FRAMEBUFFER_EXT, 0);
-  glViewport(0, 0, 64, 64);
-  clear(0.0f, 0.0f, 0.0f);
-  ortho_pixels(64, 64);
+  to_window(64, 64);
   show_texture(tex, 0.0f, 0.0f, 64.0f, 64.0f);
 }
 
@@ -157,19 +150,11 @@ GLPT_SCENE(fbo_read_copy_and_status, 96, 48) {
   const GLuint tex = color_texture(16, 16);
   const GLuint fb = framebuffer_for(tex, 16, 16, false);
   const GLenum complete = glCheckFramebufferStatusEXT(GL_FRAMEBUFFER_EXT);
-  glViewport(0, 0, 16, 16);
-  glClearColor(0.0f, 0.5f, 1.0f, 1.0f);
-  glClear(GL_COLOR_BUFFER_BIT);
-  ortho_pixels(16, 16);
+  clear_framebuffer(16, 16, 0.0f, 0.5f, 1.0f);
   rgb_triangle(1.0f, 1.0f, 15.0f, 2.0f, 8.0f, 15.0f);
   GLubyte pixels[16 * 16 * 4];
   glReadPixels(0, 0, 16, 16, GL_RGBA, GL_UNSIGNED_BYTE, pixels);
-  GLuint copy = 0;
-  glGenTextures(1, &copy);
-  glBindTexture(GL_TEXTURE_2D, copy);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 16, 16, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+  const GLuint copy = color_texture(16, 16);
   glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 0, 0, 16, 16);
   // An object without attachments, and one with a level that does not exist.
   GLuint empty = 0;
@@ -201,18 +186,12 @@ GLPT_SCENE(fbo_generate_mipmap, 96, 48) {
   const GLuint tex = color_texture(32, 32);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
   framebuffer_for(tex, 32, 32, false);
-  glViewport(0, 0, 32, 32);
-  glClearColor(0.9f, 0.9f, 0.2f, 1.0f);
-  glClear(GL_COLOR_BUFFER_BIT);
-  ortho_pixels(32, 32);
+  clear_framebuffer(32, 32, 0.9f, 0.9f, 0.2f);
   glColor3f(0.1f, 0.2f, 0.9f);
   quad(0.0f, 0.0f, 16.0f, 32.0f);
-  glBindFramebufferEXT(GL_FRAMEBUFFER_EXT, 0);
+  to_window(96, 48);
   glBindTexture(GL_TEXTURE_2D, tex);
   glGenerateMipmapEXT(GL_TEXTURE_2D);
-  glViewport(0, 0, 96, 48);
-  clear(0.0f, 0.0f, 0.0f);
-  ortho_pixels(96, 48);
   glEnable(GL_TEXTURE_2D);
   glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
   textured_quad(2.0f, 2.0f, 34.0f, 34.0f, 0.0f, 0.0f, 1.0f, 1.0f);
