@@ -142,16 +142,21 @@ TEST(Reference, LambertianPlaneUnderASphereLight) {
   expect_same_distribution(plane_under_light(0.6f));
 }
 
-// A plane under an emissive square (GL emission 3), bounces on: next-event estimation of the
-// emitter and bounce rays that hit it, weighed by MIS.
-TEST(Reference, EmissiveSquareLightsAPlane) {
+// A plane under an emissive square of half size `h` and GL emission `emission`, one bounce.
+Scene plane_under_emitter(float h, float emission) {
   Scene scene = base_scene();
   scene.trace.bounces = 1;
   facing_plane(scene, -5.0f, 3.0f, diffuse(glm::vec3(0.75f)));
   Material emitter;
-  emitter.emission = glm::vec3(3.0f);
-  scene.add_quad({-1, -1, -3.5f}, {-1, 1, -3.5f}, {1, 1, -3.5f}, {1, -1, -3.5f}, emitter);
-  expect_same_distribution(scene);
+  emitter.emission = glm::vec3(emission);
+  scene.add_quad({-h, -h, -3.5f}, {-h, h, -3.5f}, {h, h, -3.5f}, {h, -h, -3.5f}, emitter);
+  return scene;
+}
+
+// A plane under an emissive square (GL emission 3), bounces on: next-event estimation of the
+// emitter and bounce rays that hit it, weighed by MIS.
+TEST(Reference, EmissiveSquareLightsAPlane) {
+  expect_same_distribution(plane_under_emitter(1.0f, 3.0f));
 }
 
 // The extremes suite's emissions against the reference: a square 1/1000 the size with 1e6 times
@@ -161,14 +166,7 @@ TEST(Reference, EmissiveSquareLightsAPlane) {
 // million times dimmer than GL's unit emission beside a unit light (what it adds must not be lost
 // or amplified by the tone mapping: the images stay the light's alone to within rounding).
 TEST(Reference, TinyEmitterOfEmission1e6LightsAPlane) {
-  Scene scene = base_scene();
-  scene.trace.bounces = 1;
-  facing_plane(scene, -5.0f, 3.0f, diffuse(glm::vec3(0.75f)));
-  Material emitter;
-  emitter.emission = glm::vec3(1.0e6f);
-  const float h = 1.0e-3f;
-  scene.add_quad({-h, -h, -3.5f}, {-h, h, -3.5f}, {h, h, -3.5f}, {h, -h, -3.5f}, emitter);
-  expect_same_distribution(scene);
+  expect_same_distribution(plane_under_emitter(1.0e-3f, 1.0e6f));
 }
 
 TEST(Reference, EmitterOfEmission1eMinus6BesideALight) {
