@@ -148,21 +148,6 @@ bool is_cube_face(GLenum target) {
   return target >= GL_TEXTURE_CUBE_MAP_POSITIVE_X && target <= GL_TEXTURE_CUBE_MAP_NEGATIVE_Z;
 }
 
-int face_of(GLenum texture_target) {
-  return is_cube_face(texture_target) ? int(texture_target - GL_TEXTURE_CUBE_MAP_POSITIVE_X) : 0;
-}
-
-// The attached texture image, null when the level is not defined.
-const rec::TextureImage* attached_image(const Attachment& a) {
-  if (a.type != GL_TEXTURE || !a.texture) return nullptr;
-  return a.texture->image(face_of(a.texture_target), a.level);
-}
-
-const InternalFormatInfo* attached_texture_format(const Attachment& a) {
-  const rec::TextureImage* image = attached_image(a);
-  return image ? stored_format_info(image->internal_format, image->sized_format) : nullptr;
-}
-
 // Mesa's test_attachment_completeness for a colour (0), depth (1) or stencil (2) attachment.
 bool attachment_complete(const Attachment& a, int kind) {
   if (a.type == GL_NONE) return true;
@@ -253,6 +238,18 @@ void framebuffer_texture(Context& ctx, int dims, GLenum target, GLenum attachmen
 }
 
 }  // namespace
+
+const rec::TextureImage* attached_image(const Attachment& a) {
+  if (a.type != GL_TEXTURE || !a.texture) return nullptr;
+  const int face =
+      is_cube_face(a.texture_target) ? int(a.texture_target - GL_TEXTURE_CUBE_MAP_POSITIVE_X) : 0;
+  return a.texture->image(face, a.level);
+}
+
+const InternalFormatInfo* attached_texture_format(const Attachment& a) {
+  const rec::TextureImage* image = attached_image(a);
+  return image ? stored_format_info(image->internal_format, image->sized_format) : nullptr;
+}
 
 GLenum framebuffer_status(const FramebufferObject& fb) {
   // Depth, stencil, then the colour attachments, as Mesa walks them.

@@ -22,6 +22,10 @@ namespace glpt {
 
 class Context;
 class TextureObject;
+struct InternalFormatInfo;
+namespace rec {
+struct TextureImage;
+}
 struct FramebufferRendering;  // framebuffer_rendering.hpp
 
 // Mesa's limits on llvmpipe (GL_MAX_COLOR_ATTACHMENTS_EXT, GL_MAX_RENDERBUFFER_SIZE_EXT), the
@@ -75,6 +79,11 @@ struct FramebufferBindings {
   // enter_framebuffer and leave_framebuffer.
   bool entered = false;
 };
+
+// An attachment's texture image (its cube face and level), null when it holds none or the level
+// is undefined; and the format its texels are stored in.
+const rec::TextureImage* attached_image(const Attachment& attachment);
+const InternalFormatInfo* attached_texture_format(const Attachment& attachment);
 
 // GL_FRAMEBUFFER_COMPLETE_EXT or the first reason the bound framebuffer object is incomplete
 // (EXT_framebuffer_object 4.4.4.2), for a framebuffer object; the window is always complete.

@@ -28,13 +28,6 @@ void swap_bundle(Context& ctx, RecordingBundle& bundle) {
   ctx.buffer_draws.record_cleared();
 }
 
-int face_of(GLenum texture_target) {
-  return texture_target >= GL_TEXTURE_CUBE_MAP_POSITIVE_X &&
-                 texture_target <= GL_TEXTURE_CUBE_MAP_NEGATIVE_Z
-             ? int(texture_target - GL_TEXTURE_CUBE_MAP_POSITIVE_X)
-             : 0;
-}
-
 // The colour attachment `draw_buffer` names (GL_COLOR_ATTACHMENTn), or null.
 const Attachment* drawn_attachment(const FramebufferObject& fb, uint32_t draw_buffer) {
   if (draw_buffer < GL_COLOR_ATTACHMENT0_EXT ||
@@ -51,7 +44,7 @@ bool target_config(const FramebufferObject& fb, rec::DrawableConfig& config) {
   bool alpha = false, any_color = false;
   auto size_of = [&](const Attachment& a) {
     if (a.type == GL_TEXTURE) {
-      const rec::TextureImage* image = a.texture->image(face_of(a.texture_target), a.level);
+      const rec::TextureImage* image = attached_image(a);
       if (image == nullptr) return;
       width = std::min(width, image->width);
       height = std::min(height, image->height);
@@ -63,9 +56,7 @@ bool target_config(const FramebufferObject& fb, rec::DrawableConfig& config) {
   for (const Attachment& a : fb.color) {
     size_of(a);
     if (a.type == GL_TEXTURE) {
-      const rec::TextureImage* image = a.texture->image(face_of(a.texture_target), a.level);
-      const InternalFormatInfo* info =
-          image ? stored_format_info(image->internal_format, image->sized_format) : nullptr;
+      const InternalFormatInfo* info = attached_texture_format(a);
       alpha = alpha || (info != nullptr && info->alpha != 0);
       any_color = true;
     } else if (a.type == GL_RENDERBUFFER_EXT) {
@@ -99,10 +90,9 @@ void load_color(Context& ctx, const FramebufferObject& fb, FramebufferRendering&
   if (r.loaded_texture == a->texture.get() && r.loaded_target == a->texture_target &&
       r.loaded_level == a->level && r.loaded_version == version)
     return;
-  const rec::TextureImage* image = a->texture->image(face_of(a->texture_target), a->level);
-  const InternalFormatInfo* info =
-      image ? stored_format_info(image->internal_format, image->sized_format) : nullptr;
-  if (info == nullptr || info->is_depth() || !ensure_output(ctx)) return;
+  const rec::TextureImage* image = attached_image(*a);
+  const InternalFormatInfo* info = attached_texture_format(*a);
+  if (image == nullptr || info == nullptr || info->is_depth() || !ensure_output(ctx)) return;
   const rec::DrawableConfig config = r.target->config();
   std::vector<uint8_t> rgba(size_t{config.width} * config.height * 4, 0);
   const size_t texel = rec::texel_bytes(info->texel_format());

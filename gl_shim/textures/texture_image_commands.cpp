@@ -687,11 +687,9 @@ void get_compressed_tex_image(Context& ctx, GLenum target, GLint level, void* pi
 
 void write_back_framebuffer_image(Context& ctx, TextureObject& object, GLenum texture_target,
                                   int level, uint32_t width, uint32_t height, bool depth) {
-  const bool cube = texture_target >= GL_TEXTURE_CUBE_MAP_POSITIVE_X &&
-                    texture_target <= GL_TEXTURE_CUBE_MAP_NEGATIVE_Z;
   const std::optional<ImageTarget> t = image_target(texture_target, 0, ProxyTargets::kRejected);
-  const rec::TextureImage* img = object.image(cube ? int(texture_target - GL_TEXTURE_CUBE_MAP_POSITIVE_X) : 0, level);
-  if (!t || img == nullptr) return;
+  const rec::TextureImage* img = t ? object.image(t->face, level) : nullptr;
+  if (img == nullptr) return;
   const InternalFormatInfo* info = stored_format_info(img->internal_format, img->sized_format);
   if (info == nullptr || info->block_bytes != 0 || info->is_depth() != depth) return;
   const uint32_t w = std::min(width, img->width), h = std::min(height, img->height);
@@ -713,7 +711,6 @@ void write_back_framebuffer_image(Context& ctx, TextureObject& object, GLenum te
                rec::texel_bytes(info->texel_format()));
   image_changed(object, *t, level);
 }
-
 
 namespace impl {
 
