@@ -1,5 +1,8 @@
 #include "gl_shim/frame/frame_output.hpp"
 
+#include <malloc.h>
+#include <unistd.h>
+
 #include <cinttypes>
 #include <cstdio>
 #include <cstdlib>
@@ -7,8 +10,6 @@
 #include <mutex>
 #include <set>
 #include <string>
-
-#include <unistd.h>
 
 #include "common/image_io.hpp"
 #include "rt_core/scene/classify.hpp"
@@ -39,6 +40,23 @@ uint64_t resident_kilobytes() {
   std::fclose(statm);
   if (n != 2) return 0;
   return resident_pages * static_cast<uint64_t>(::sysconf(_SC_PAGESIZE)) / 1024;
+}
+
+// The C heap (glibc's malloc, every thread's arena): bytes the program holds and bytes malloc
+// keeps free. GLPT_STATS' heap_kb= and heap_free_kb=: with rss_kb they tell memory the process
+// uses from memory its allocator keeps (fragmentation) and from memory outside malloc (mapped
+// device memory, JIT code). mallinfo2 walks the arenas' free lists: only when stats are on.
+struct HeapUse {
+  uint64_t in_use_kb = 0, free_kb = 0;
+};
+HeapUse heap_use() {
+  HeapUse h;
+#if defined(__GLIBC__) && (__GLIBC__ > 2 || (__GLIBC__ == 2 && __GLIBC_MINOR__ >= 33))
+  const struct mallinfo2 m = ::mallinfo2();
+  h.in_use_kb = (m.uordblks + m.hblkhd) / 1024;
+  h.free_kb = m.fordblks / 1024;
+#endif
+  return h;
 }
 
 }  // namespace
@@ -185,6 +203,7 @@ bool FrameOutput::end_frame(const rec::FrameRecord& record, const rec::DrawableC
       }
     }
     std::FILE* out = stats_out_ ? stats_out_.get() : stderr;
+    const HeapUse heap = heap_use();
     std::fprintf(
         out,
         "glpt: frame=%" PRIu64
@@ -197,7 +216,8 @@ bool FrameOutput::end_frame(const rec::FrameRecord& record, const rec::DrawableC
         " non_finite_draws=%u emitters=%u host_waits=%u wall_ms=%.2f traced_draws=%u sky_draws=%u"
         " raster_draws=%u instances=%u tlas_builds=%u tlas_updates=%u upload_bytes=%" PRIu64
         " classify_ms=%.3f denoise_ms=%.2f composite_ms=%.2f denoised=%u"
-        " vk_objects=%" PRId64 " rss_kb=%" PRIu64 " classes=%s vk_by_kind=%s\n",
+        " vk_objects=%" PRId64 " rss_kb=%" PRIu64 " heap_kb=%" PRIu64 " heap_free_kb=%" PRIu64
+        " classes=%s vk_by_kind=%s\n",
         frame_index_, width, height, frame_ms, record_ms_, s.upload_ms, s.raster_ms, s.blas_ms,
         s.tlas_ms, s.trace_ms, s.readback_ms, present_ms,
         record_ms_ + s.upload_ms + s.raster_ms + s.blas_ms + s.tlas_ms + s.trace_ms + s.denoise_ms +
@@ -209,7 +229,8 @@ bool FrameOutput::end_frame(const rec::FrameRecord& record, const rec::DrawableC
         s.raster_draws, s.instances, s.tlas_builds, s.tlas_updates, s.upload_bytes, s.classify_ms,
         s.denoise_ms, s.composite_ms, s.denoised,
         rt::vk::live_object_count().load(std::memory_order_relaxed), resident_kilobytes(),
-        kind_counts(s).c_str(), rt::vk::live_object_counts_text().c_str());
+        heap.in_use_kb, heap.free_kb, kind_counts(s).c_str(),
+        rt::vk::live_object_counts_text().c_str());
     if (stats_out_) std::fflush(stats_out_.get());
   }
   last_frame_stats_ = frame_stats_;
