@@ -25,6 +25,7 @@
 #include "gl_shim/arrays/buffer_draw_cache.hpp"
 #include "gl_shim/context.hpp"
 #include "gl_shim/dispatch.hpp"
+#include "gl_shim/framebuffers/framebuffer_rendering.hpp"
 #include "gl_shim/geometry/attributes.hpp"
 #include "gl_shim/gl_impl_decls.hpp"
 #include "gl_shim/state/out_of_memory.hpp"
@@ -126,6 +127,7 @@ bool vertex_array_enabled(const Context& ctx) { return ctx.arrays[ArrayKind::kVe
 bool begin_live_draw(Context& ctx, GLenum error) {
   // Mesa validates state, which analyses the matrices, before it checks the draw's arguments.
   ctx.matrices.validate_for_draw(ctx.transform.clip_plane_mask);
+  if (error == GL_NO_ERROR) error = framebuffer_error(ctx);
   if (error != GL_NO_ERROR) {
     record_error(ctx, error);
     return false;

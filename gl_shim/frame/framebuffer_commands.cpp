@@ -22,6 +22,9 @@ float clamp01(float v) { return std::clamp(v, 0.0f, 1.0f); }
 bool read_framebuffer(Context& ctx, rec::PixelKind kind, uint32_t buffer, int32_t x, int32_t y,
                       uint32_t width, uint32_t height, FramebufferPixels& out) {
   out = FramebufferPixels();
+  if (kind == rec::PixelKind::kColor &&
+      read_other_attachment(ctx, buffer, x, y, width, height, out))
+    return true;
   if (!execute_record(ctx) || !ctx.output) {
     // No renderer: the clear colour stands in for the buffers (clear_fallback.hpp).
     uint32_t w = 0, h = 0;
@@ -68,6 +71,7 @@ bool read_framebuffer(Context& ctx, rec::PixelKind kind, uint32_t buffer, int32_
   out.width = width;
   out.height = height;
   mark_inside_drawable(out, x, y, drawable.width, drawable.height);
+  if (kind == rec::PixelKind::kColor) show_stored_components(ctx, buffer, out);
   return true;
 }
 
@@ -96,6 +100,7 @@ void glClear(Context& ctx, GLbitfield mask) {
   constexpr GLbitfield kValid =
       GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_ACCUM_BUFFER_BIT;
   if (mask & ~kValid) return record_error(ctx, GL_INVALID_VALUE);
+  if (const GLenum e = framebuffer_error(ctx); e != GL_NO_ERROR) return record_error(ctx, e);
   if (mask == 0 || ctx.render_mode.mode != GL_RENDER) return;  // (Mesa clears only in GL_RENDER)
   const FramebufferState& fb = ctx.framebuffer;
   rec::Clear clear;
@@ -181,8 +186,8 @@ bool framebuffer_object_buffer(Context& ctx, GLenum buf) {
   if (buf == GL_NONE ||
       (buf >= GL_COLOR_ATTACHMENT0_EXT && buf < GL_COLOR_ATTACHMENT0_EXT + kMaxColorAttachments))
     return true;
-  record_error(ctx, valid_color_buffer(buf) || (buf >= GL_COLOR_ATTACHMENT0_EXT &&
-                                                  buf <= GL_COLOR_ATTACHMENT15_EXT)
+  record_error(ctx, valid_color_buffer(buf) ||
+                            (buf >= GL_COLOR_ATTACHMENT0_EXT && buf <= GL_COLOR_ATTACHMENT15_EXT)
                         ? GL_INVALID_OPERATION
                         : GL_INVALID_ENUM);
   return false;

@@ -1,10 +1,12 @@
 // EXT_framebuffer_object's commands: names, binding, renderbuffer storage, attachments, status
-// and queries. Errors and their order are Mesa 25's (src/mesa/main/fbobject.c), which follows
-// ARB_framebuffer_object where the two extensions differ in a compatibility context: attachments
-// of different sizes or colour formats do not make a framebuffer incomplete (its size is the
-// smallest), and a draw or read buffer without an attachment does not either.
+// and queries. Errors and their order are Mesa 25's (src/mesa/main/fbobject.c); completeness is
+// EXT_framebuffer_object's, which glpt advertises, where Mesa (which also has
+// ARB_framebuffer_object) applies the ARB rules: with EXT, attachments of different sizes or
+// colour formats, and a draw or read buffer naming no attachment, make a framebuffer incomplete.
 #include <algorithm>
 #include <mutex>
+#include <optional>
+#include <utility>
 
 #include "gl/gl_enums.h"
 #include "gl_shim/context.hpp"
@@ -237,6 +239,131 @@ void framebuffer_texture(Context& ctx, int dims, GLenum target, GLenum attachmen
   enter_framebuffer(ctx);
 }
 
+// ARB_framebuffer_object's attachment queries, which Mesa answers through the EXT command too.
+constexpr GLenum kAttachmentColorEncoding = 0x8210, kAttachmentComponentType = 0x8211,
+                 kAttachmentRedSize = 0x8212, kAttachmentStencilSize = 0x8217;
+constexpr GLenum kFramebufferDefault = 0x8218, kUnsignedNormalized = 0x8C17;
+// An attachment query's answer when attachment_point has raised the error itself.
+constexpr GLenum kErrorRaised = 0xFFFFFFFF;
+
+bool is_size_query(GLenum pname) {
+  return pname >= kAttachmentRedSize && pname <= kAttachmentStencilSize;
+}
+
+// Bits of red, green, blue, alpha, depth and stencil an attachment stores (0 where it holds no
+// such component; luminance and intensity count as none, as Mesa answers).
+std::array<GLint, 6> attachment_bits(const Attachment& a) {
+  if (a.type == GL_RENDERBUFFER_EXT) return a.renderbuffer->bits;
+  const InternalFormatInfo* info = a.type == GL_TEXTURE ? attached_texture_format(a) : nullptr;
+  if (info == nullptr) return {};
+  return {info->red, info->green, info->blue, info->alpha, info->depth, info->stencil};
+}
+
+// The window's buffers (GL 3.0 6.1.13 as Mesa answers it for the default framebuffer): an
+// existing buffer is GL_FRAMEBUFFER_DEFAULT, one the visual lacks GL_NONE; they have no name,
+// level or face (GL_INVALID_ENUM), and sizes only where they exist (GL_INVALID_OPERATION).
+GLenum window_attachment_parameter(const Context& ctx, GLenum attachment, GLenum pname,
+                                   GLint& value) {
+  const rec::DrawableConfig& d = ctx.drawable;
+  bool exists = false, color = false;
+  switch (attachment) {
+    case GL_FRONT:
+    case GL_FRONT_LEFT:
+      exists = color = true;
+      break;
+    case GL_BACK:
+    case GL_BACK_LEFT:
+      exists = color = d.double_buffered;
+      break;
+    case GL_FRONT_RIGHT:
+    case GL_BACK_RIGHT:
+      break;  // no stereo visuals
+    case GL_DEPTH:
+      exists = d.depth_bits != 0;
+      break;
+    case GL_STENCIL:
+      exists = d.stencil_bits != 0;
+      break;
+    default:
+      return GL_INVALID_ENUM;
+  }
+  if (pname == GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE_EXT) {
+    value = exists ? GLint(kFramebufferDefault) : GLint(GL_NONE);
+    return GL_NO_ERROR;
+  }
+  if (pname == GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME_EXT) return GL_INVALID_ENUM;
+  const bool texture_query = pname == GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL_EXT ||
+                             pname == GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_CUBE_MAP_FACE_EXT ||
+                             pname == GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_3D_ZOFFSET_EXT;
+  if (!texture_query && !is_size_query(pname) && pname != kAttachmentComponentType &&
+      pname != kAttachmentColorEncoding)
+    return GL_INVALID_ENUM;
+  if (!exists) return GL_INVALID_OPERATION;
+  if (texture_query) return GL_INVALID_ENUM;
+  // The depth and stencil buffers are one packed image when the visual has both (as Mesa's).
+  const std::array<GLint, 6> bits = {color ? 8 : 0,
+                                     color ? 8 : 0,
+                                     color ? 8 : 0,
+                                     color && d.has_alpha ? 8 : 0,
+                                     color ? 0 : GLint(d.depth_bits),
+                                     color ? 0 : GLint(d.stencil_bits)};
+  if (is_size_query(pname))
+    value = bits[pname - kAttachmentRedSize];
+  else if (pname == kAttachmentComponentType)
+    value = GLint(kUnsignedNormalized);
+  else
+    value = GL_LINEAR;  // glpt's window is not sRGB-capable (Mesa's visuals answer GL_SRGB)
+  return GL_NO_ERROR;
+}
+
+GLenum object_attachment_parameter(Context& ctx, FramebufferObject& fb, GLenum attachment,
+                                   GLenum pname, GLint& value) {
+  const Attachment* point = attachment_point(ctx, fb, attachment);
+  if (point == nullptr) return kErrorRaised;
+  std::lock_guard lock(ctx.framebuffers.store->mutex);
+  const bool depth_stencil = attachment == kDepthStencilAttachment;
+  if (depth_stencil &&
+      (fb.depth.renderbuffer != fb.stencil.renderbuffer || fb.depth.texture != fb.stencil.texture))
+    return GL_INVALID_OPERATION;
+  const Attachment& a = *point;
+  switch (pname) {
+    case GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE_EXT:
+      value = GLint(a.type);
+      return GL_NO_ERROR;
+    case GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME_EXT:
+      value = a.type == GL_TEXTURE            ? GLint(a.texture->name())
+              : a.type == GL_RENDERBUFFER_EXT ? GLint(a.renderbuffer->name)
+                                              : 0;
+      return GL_NO_ERROR;
+    case GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL_EXT:
+    case GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_CUBE_MAP_FACE_EXT:
+    case GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_3D_ZOFFSET_EXT:
+      if (a.type == GL_NONE) return GL_INVALID_OPERATION;
+      if (a.type != GL_TEXTURE) return GL_INVALID_ENUM;
+      value = pname == GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL_EXT ? a.level
+              : pname == GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_CUBE_MAP_FACE_EXT
+                  ? (is_cube_face(a.texture_target) ? GLint(a.texture_target) : 0)
+                  : (a.texture_target == GL_TEXTURE_3D ? a.zoffset : 0);
+      return GL_NO_ERROR;
+    default:
+      break;
+  }
+  if (!is_size_query(pname) && pname != kAttachmentComponentType &&
+      pname != kAttachmentColorEncoding)
+    return GL_INVALID_ENUM;
+  if (a.type == GL_NONE) return GL_INVALID_OPERATION;
+  if (is_size_query(pname)) {
+    value = attachment_bits(a)[pname - kAttachmentRedSize];
+  } else if (pname == kAttachmentComponentType) {
+    // Depth and stencil of one image have no one component type (GL 3.0 6.1.13).
+    if (depth_stencil) return GL_INVALID_OPERATION;
+    value = GLint(kUnsignedNormalized);
+  } else {
+    value = GL_LINEAR;  // glpt has no sRGB formats
+  }
+  return GL_NO_ERROR;
+}
+
 }  // namespace
 
 const rec::TextureImage* attached_image(const Attachment& a) {
@@ -251,7 +378,7 @@ const InternalFormatInfo* attached_texture_format(const Attachment& a) {
   return image ? stored_format_info(image->internal_format, image->sized_format) : nullptr;
 }
 
-GLenum framebuffer_status(const FramebufferObject& fb) {
+GLenum framebuffer_status(const FramebufferObject& fb, uint32_t draw_buffer, uint32_t read_buffer) {
   // Depth, stencil, then the colour attachments, as Mesa walks them.
   if (!attachment_complete(fb.depth, 1) || !attachment_complete(fb.stencil, 2))
     return GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT_EXT;
@@ -261,6 +388,44 @@ GLenum framebuffer_status(const FramebufferObject& fb) {
     any = any || a.type != GL_NONE;
   }
   if (!any) return GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT_EXT;
+  // EXT_framebuffer_object's rules, which ARB_framebuffer_object (not advertised) relaxed and
+  // Mesa therefore does not apply: one size for every image, one internal format for the colour
+  // images, and an image at the attachments the draw and read buffers name.
+  std::optional<std::pair<uint32_t, uint32_t>> size;
+  std::optional<GLint> color_format;
+  auto image_size = [](const Attachment& a) -> std::pair<uint32_t, uint32_t> {
+    if (a.type == GL_RENDERBUFFER_EXT)
+      return {uint32_t(a.renderbuffer->width), uint32_t(a.renderbuffer->height)};
+    const rec::TextureImage* image = attached_image(a);
+    return {image->width, image->height};  // complete: the image exists
+  };
+  bool same_size = true, same_format = true;
+  auto visit = [&](const Attachment& a, bool color) {
+    if (a.type == GL_NONE) return;
+    const auto s = image_size(a);
+    if (size && *size != s) same_size = false;
+    size = s;
+    if (!color) return;
+    const GLint format = a.type == GL_RENDERBUFFER_EXT ? GLint(a.renderbuffer->internal_format)
+                                                       : GLint(attached_image(a)->internal_format);
+    if (color_format && *color_format != format) same_format = false;
+    color_format = format;
+  };
+  for (const Attachment& a : fb.color) visit(a, true);
+  visit(fb.depth, false);
+  visit(fb.stencil, false);
+  if (!same_size) return GL_FRAMEBUFFER_INCOMPLETE_DIMENSIONS_EXT;
+  if (!same_format) return GL_FRAMEBUFFER_INCOMPLETE_FORMATS_EXT;
+  auto names_nothing = [&](uint32_t buffer) {
+    if (buffer < GL_COLOR_ATTACHMENT0_EXT ||
+        buffer >= GL_COLOR_ATTACHMENT0_EXT + kMaxColorAttachments)
+      return false;
+    return fb.color[buffer - GL_COLOR_ATTACHMENT0_EXT].type == GL_NONE;
+  };
+  if (draw_buffer != GL_NONE && names_nothing(draw_buffer))
+    return GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER_EXT;
+  if (read_buffer != GL_NONE && names_nothing(read_buffer))
+    return GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER_EXT;
   // What gallium (llvmpipe) supports: depth and stencil in one image.
   const Attachment& d = fb.depth;
   const Attachment& s = fb.stencil;
@@ -364,6 +529,12 @@ void glRenderbufferStorage(Context& ctx, GLenum target, GLenum internalformat, G
     rb->width = width;
     rb->height = height;
     rb->bits = renderbuffer_bits(base);
+    // The sizes Mesa stores the format in where its texture table has it (GL_RGBA4: 4 bits;
+    // GL_DEPTH_COMPONENT16: 16), which reads of the renderbuffer are quantized to.
+    if (const InternalFormatInfo* info = internal_format_info(GLint(internalformat));
+        info != nullptr && base != GL_STENCIL_INDEX)
+      rb->bits = {info->red,   info->green, info->blue,
+                  info->alpha, info->depth, base == GL_DEPTH_STENCIL_EXT ? GLint(8) : GLint(0)};
   }
   enter_framebuffer(ctx);
 }
@@ -472,7 +643,8 @@ GLenum glCheckFramebufferStatus(Context& ctx, GLenum target) {
   if (!framebuffer_target(ctx, target, &fb)) return 0;
   if (fb == nullptr) return GL_FRAMEBUFFER_COMPLETE_EXT;  // the window
   std::lock_guard lock(ctx.framebuffers.store->mutex);
-  return framebuffer_status(*fb);
+  // The bound object is entered: its draw and read buffers are the context's.
+  return framebuffer_status(*fb, ctx.raster.ops.draw_buffer, ctx.raster.ops.read_buffer);
 }
 
 void glFramebufferTexture1D(Context& ctx, GLenum target, GLenum attachment, GLenum textarget,
@@ -527,45 +699,12 @@ void glGetFramebufferAttachmentParameteriv(Context& ctx, GLenum target, GLenum a
                                            GLenum pname, GLint* params) {
   FramebufferObject* fb = nullptr;
   if (!framebuffer_target(ctx, target, &fb)) return;
-  // The window's attachments (GL 3.0's GL_FRAMEBUFFER_DEFAULT answers) are not modelled: the EXT
-  // extension's GL_INVALID_OPERATION.
-  if (fb == nullptr) return record_error(ctx, GL_INVALID_OPERATION);
-  const Attachment* point = attachment_point(ctx, *fb, attachment);
-  if (point == nullptr) return;
-  std::lock_guard lock(ctx.framebuffers.store->mutex);
-  if (attachment == kDepthStencilAttachment &&
-      (fb->depth.renderbuffer != fb->stencil.renderbuffer ||
-       fb->depth.texture != fb->stencil.texture))
-    return record_error(ctx, GL_INVALID_OPERATION);
-  const Attachment& a = *point;
   GLint value = 0;
-  switch (pname) {
-    case GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE_EXT:
-      value = GLint(a.type);
-      break;
-    case GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME_EXT:
-      value = a.type == GL_TEXTURE            ? GLint(a.texture->name())
-              : a.type == GL_RENDERBUFFER_EXT ? GLint(a.renderbuffer->name)
-                                              : 0;
-      break;
-    case GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL_EXT:
-      if (a.type == GL_NONE) return record_error(ctx, GL_INVALID_OPERATION);
-      if (a.type != GL_TEXTURE) return record_error(ctx, GL_INVALID_ENUM);
-      value = a.level;
-      break;
-    case GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_CUBE_MAP_FACE_EXT:
-      if (a.type == GL_NONE) return record_error(ctx, GL_INVALID_OPERATION);
-      if (a.type != GL_TEXTURE) return record_error(ctx, GL_INVALID_ENUM);
-      value = is_cube_face(a.texture_target) ? GLint(a.texture_target) : 0;
-      break;
-    case GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_3D_ZOFFSET_EXT:
-      if (a.type == GL_NONE) return record_error(ctx, GL_INVALID_OPERATION);
-      if (a.type != GL_TEXTURE) return record_error(ctx, GL_INVALID_ENUM);
-      value = a.texture_target == GL_TEXTURE_3D ? a.zoffset : 0;
-      break;
-    default:
-      return record_error(ctx, GL_INVALID_ENUM);
-  }
+  const GLenum error = fb == nullptr
+                           ? window_attachment_parameter(ctx, attachment, pname, value)
+                           : object_attachment_parameter(ctx, *fb, attachment, pname, value);
+  if (error == kErrorRaised) return;
+  if (error != GL_NO_ERROR) return record_error(ctx, error);
   if (params != nullptr) *params = value;
 }
 
@@ -573,6 +712,7 @@ void glGenerateMipmap(Context& ctx, GLenum target) {
   if (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D && target != GL_TEXTURE_3D &&
       target != GL_TEXTURE_CUBE_MAP)
     return record_error(ctx, GL_INVALID_ENUM);
+  sync_framebuffer_textures(ctx);  // level 0 may hold what the bound object drew
   TextureUnit& unit = ctx.textures.active_unit();
   TextureObject& object = ctx.textures.bound(unit, texture_slot(target));
   // Cube maps need all six base images alike (GL 3.0 4.4.4.3: GL_INVALID_OPERATION otherwise).

@@ -85,9 +85,10 @@ struct FramebufferBindings {
 const rec::TextureImage* attached_image(const Attachment& attachment);
 const InternalFormatInfo* attached_texture_format(const Attachment& attachment);
 
-// GL_FRAMEBUFFER_COMPLETE_EXT or the first reason the bound framebuffer object is incomplete
-// (EXT_framebuffer_object 4.4.4.2), for a framebuffer object; the window is always complete.
-GLenum framebuffer_status(const FramebufferObject& framebuffer);
+// GL_FRAMEBUFFER_COMPLETE_EXT or the first reason a framebuffer object with these draw and read
+// buffers is incomplete (EXT_framebuffer_object 4.4.4.2); the window is always complete.
+GLenum framebuffer_status(const FramebufferObject& framebuffer, uint32_t draw_buffer,
+                          uint32_t read_buffer);
 
 // A texture is being deleted: the bound framebuffer object's attachments of it become GL_NONE
 // (EXT_framebuffer_object 4.4.2.3: only the currently bound framebuffer is affected).

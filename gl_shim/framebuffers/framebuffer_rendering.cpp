@@ -1,8 +1,10 @@
 #include "gl_shim/framebuffers/framebuffer_rendering.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <mutex>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -36,10 +38,12 @@ const Attachment* drawn_attachment(const FramebufferObject& fb, uint32_t draw_bu
   return &fb.color[draw_buffer - GL_COLOR_ATTACHMENT0_EXT];
 }
 
-// The target's buffers for a complete framebuffer object: the smallest attachment's size (Mesa's
-// rule with ARB_framebuffer_object), depth and stencil as attached.
-bool target_config(const FramebufferObject& fb, rec::DrawableConfig& config) {
-  if (framebuffer_status(fb) != GL_FRAMEBUFFER_COMPLETE_EXT) return false;
+// The target's buffers for a complete framebuffer object (entered: its draw and read buffers are
+// the context's): the attachments' size, depth and stencil as attached.
+bool target_config(const Context& ctx, const FramebufferObject& fb, rec::DrawableConfig& config) {
+  if (framebuffer_status(fb, ctx.raster.ops.draw_buffer, ctx.raster.ops.read_buffer) !=
+      GL_FRAMEBUFFER_COMPLETE_EXT)
+    return false;
   uint32_t width = UINT32_MAX, height = UINT32_MAX;
   bool alpha = false, any_color = false;
   auto size_of = [&](const Attachment& a) {
@@ -88,7 +92,7 @@ void load_color(Context& ctx, const FramebufferObject& fb, FramebufferRendering&
   if (a == nullptr || a->type != GL_TEXTURE || !r.target) return;
   const uint64_t version = content_version(*a->texture);
   if (r.loaded_texture == a->texture.get() && r.loaded_target == a->texture_target &&
-      r.loaded_level == a->level && r.loaded_version == version)
+      r.loaded_level == a->level && r.loaded_zoffset == a->zoffset && r.loaded_version == version)
     return;
   const rec::TextureImage* image = attached_image(*a);
   const InternalFormatInfo* info = attached_texture_format(*a);
@@ -96,9 +100,11 @@ void load_color(Context& ctx, const FramebufferObject& fb, FramebufferRendering&
   const rec::DrawableConfig config = r.target->config();
   std::vector<uint8_t> rgba(size_t{config.width} * config.height * 4, 0);
   const size_t texel = rec::texel_bytes(info->texel_format());
+  // A 3-D texture's slice (zoffset; 0 for other targets).
+  const size_t slice = size_t(std::max(a->zoffset, 0)) * image->width * image->height;
   for (uint32_t y = 0; y < config.height && y < image->height; ++y)
     for (uint32_t x = 0; x < config.width && x < image->width; ++x) {
-      const size_t i = size_t{y} * image->width + x;
+      const size_t i = slice + size_t{y} * image->width + x;
       if ((i + 1) * texel > image->texels.size()) continue;
       const glm::vec4 c = decode_color_texel(*info, &image->texels[i * texel]);
       for (int k = 0; k < 4; ++k)
@@ -114,6 +120,7 @@ void load_color(Context& ctx, const FramebufferObject& fb, FramebufferRendering&
   r.loaded_texture = a->texture.get();
   r.loaded_target = a->texture_target;
   r.loaded_level = a->level;
+  r.loaded_zoffset = a->zoffset;
   r.loaded_version = version;
 }
 
@@ -141,7 +148,7 @@ void enter_framebuffer(Context& ctx) {
   bool complete = false;
   {
     std::lock_guard lock(ctx.framebuffers.store->mutex);
-    complete = target_config(*fb, config);
+    complete = target_config(ctx, *fb, config);
   }
   if (!complete) {
     r.target.reset();
@@ -173,19 +180,125 @@ void leave_framebuffer(Context& ctx) {
     const rec::DrawableConfig config = r.target->config();
     if (const Attachment* a = drawn_attachment(*fb, ctx.raster.ops.draw_buffer);
         a != nullptr && a->type == GL_TEXTURE) {
-      write_back_framebuffer_image(ctx, *a->texture, a->texture_target, a->level, config.width,
-                                   config.height, /*depth=*/false);
+      write_back_framebuffer_image(ctx, *a->texture, a->texture_target, a->level, a->zoffset,
+                                   config.width, config.height, /*depth=*/false);
       r.loaded_texture = a->texture.get();
       r.loaded_target = a->texture_target;
       r.loaded_level = a->level;
+      r.loaded_zoffset = a->zoffset;
       r.loaded_version = content_version(*a->texture);
     }
     if (fb->depth.type == GL_TEXTURE)
       write_back_framebuffer_image(ctx, *fb->depth.texture, fb->depth.texture_target,
-                                   fb->depth.level, config.width, config.height, /*depth=*/true);
+                                   fb->depth.level, fb->depth.zoffset, config.width, config.height,
+                                   /*depth=*/true);
   }
   swap_bundle(ctx, r.parked);
   ctx.framebuffers.entered = false;
+}
+
+GLenum framebuffer_error(Context& ctx) {
+  if (!ctx.framebuffers.entered) return GL_NO_ERROR;
+  FramebufferObject* fb = ctx.framebuffers.framebuffer.get();
+  if (fb == nullptr || !fb->rendering) return GL_NO_ERROR;
+  rec::DrawableConfig config;
+  bool complete = false;
+  {
+    std::lock_guard lock(ctx.framebuffers.store->mutex);
+    complete = target_config(ctx, *fb, config);
+  }
+  const HeadlessTarget* target = fb->rendering->target.get();
+  if (complete != (target != nullptr) || (complete && target->config() != config))
+    refresh_framebuffer(ctx);
+  else if (complete && ctx.recorder.empty() && !fb->rendering->drawn)
+    load_color(ctx, *fb, *fb->rendering);  // the attached texture was written meanwhile
+  return complete ? GLenum{GL_NO_ERROR} : GLenum{GL_INVALID_FRAMEBUFFER_OPERATION_EXT};
+}
+
+namespace {
+
+// The components an attachment stores and their bits (0: not stored), luminance and intensity
+// counted as red; null attachments store nothing.
+struct StoredComponents {
+  std::array<int, 4> bits{};  // red (or luminance, intensity), green, blue, alpha
+};
+
+std::optional<StoredComponents> stored_components(const Attachment& a) {
+  StoredComponents s;
+  if (a.type == GL_RENDERBUFFER_EXT) {
+    const std::array<GLint, 6>& b = a.renderbuffer->bits;
+    s.bits = {b[0], b[1], b[2], b[3]};
+    if (s.bits == std::array<int, 4>{}) s.bits[0] = 8;  // luminance and intensity: 8 bits
+    return s;
+  }
+  const InternalFormatInfo* info = a.type == GL_TEXTURE ? attached_texture_format(a) : nullptr;
+  if (info == nullptr || info->is_depth()) return std::nullopt;
+  s.bits = {std::max({int(info->red), int(info->luminance), int(info->intensity)}), info->green,
+            info->blue, info->alpha};
+  return s;
+}
+
+glm::vec4 stored_view(const StoredComponents& s, glm::vec4 c) {
+  auto quantize = [](float v, int bits) {
+    const float steps = float((1u << std::min(bits, 24)) - 1u);
+    return std::round(std::clamp(v, 0.0f, 1.0f) * steps) / steps;
+  };
+  return {s.bits[0] != 0 ? quantize(c.r, s.bits[0]) : 0.0f,
+          s.bits[1] != 0 ? quantize(c.g, s.bits[1]) : 0.0f,
+          s.bits[2] != 0 ? quantize(c.b, s.bits[2]) : 0.0f,
+          s.bits[3] != 0 ? quantize(c.a, s.bits[3]) : 1.0f};
+}
+
+}  // namespace
+
+void show_stored_components(const Context& ctx, uint32_t read_buffer, FramebufferPixels& out) {
+  if (!ctx.framebuffers.entered) return;
+  const FramebufferObject* fb = ctx.framebuffers.framebuffer.get();
+  if (fb == nullptr) return;
+  const Attachment* a = drawn_attachment(*fb, read_buffer);
+  if (a == nullptr) return;
+  const std::optional<StoredComponents> s = stored_components(*a);
+  if (!s) return;
+  for (glm::vec4& c : out.color) c = stored_view(*s, c);
+}
+
+bool read_other_attachment(Context& ctx, uint32_t read_buffer, int32_t x, int32_t y, uint32_t width,
+                           uint32_t height, FramebufferPixels& out) {
+  if (!ctx.framebuffers.entered || read_buffer == ctx.raster.ops.draw_buffer) return false;
+  const FramebufferObject* fb = ctx.framebuffers.framebuffer.get();
+  if (fb == nullptr) return false;
+  const Attachment* a = drawn_attachment(*fb, read_buffer);
+  if (a == nullptr || a->type != GL_TEXTURE) return false;  // renderbuffers: only the drawn one
+  sync_framebuffer_textures(ctx);                           // the textures hold what was drawn
+  const rec::TextureImage* image = attached_image(*a);
+  const InternalFormatInfo* info = attached_texture_format(*a);
+  const std::optional<StoredComponents> s = stored_components(*a);
+  if (image == nullptr || info == nullptr || !s) return false;
+  out = FramebufferPixels();
+  out.width = width;
+  out.height = height;
+  out.color.assign(size_t{width} * height, glm::vec4(0.0f));
+  const size_t texel = rec::texel_bytes(info->texel_format());
+  const size_t slice = size_t(std::max(a->zoffset, 0)) * image->width * image->height;
+  for (uint32_t row = 0; row < height; ++row)
+    for (uint32_t col = 0; col < width; ++col) {
+      const int64_t tx = int64_t{x} + col, ty = int64_t{y} + row;
+      if (tx < 0 || ty < 0 || tx >= int64_t{image->width} || ty >= int64_t{image->height}) continue;
+      const size_t i = slice + size_t(ty) * image->width + size_t(tx);
+      if ((i + 1) * texel > image->texels.size()) continue;
+      // Decoded as sampled (luminance replicated), then shown as stored.
+      out.color[size_t{row} * width + col] =
+          stored_view(*s, decode_color_texel(*info, &image->texels[i * texel]));
+    }
+  mark_inside_drawable(out, x, y, image->width, image->height);
+  return true;
+}
+
+void sync_framebuffer_textures(Context& ctx) {
+  if (!ctx.framebuffers.entered) return;
+  const FramebufferObject* fb = ctx.framebuffers.framebuffer.get();
+  if (fb == nullptr || !fb->rendering || !fb->rendering->target) return;
+  if (!ctx.recorder.empty() || fb->rendering->drawn) refresh_framebuffer(ctx);
 }
 
 void refresh_framebuffer(Context& ctx) {

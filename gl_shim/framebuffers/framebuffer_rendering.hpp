@@ -17,6 +17,7 @@
 
 #include "common/stopwatch.hpp"
 #include "gl_shim/frame/frame_recorder.hpp"
+#include "gl_shim/frame/framebuffer_access.hpp"
 #include "gl_shim/frame/headless_target.hpp"
 #include "gl_shim/frame/state_snapshot.hpp"
 #include "gl_shim/gl_types.h"
@@ -48,6 +49,7 @@ struct FramebufferRendering {
   const TextureObject* loaded_texture = nullptr;
   GLenum loaded_target = 0;
   int loaded_level = -1;
+  int loaded_zoffset = 0;
   uint64_t loaded_version = 0;
 };
 
@@ -59,14 +61,34 @@ void enter_framebuffer(Context& ctx);
 void leave_framebuffer(Context& ctx);
 // Its attachments changed while bound: leave and enter again (a new target size or image).
 void refresh_framebuffer(Context& ctx);
+// GL_NO_ERROR when drawing, clearing or reading may proceed: the window is bound, or a complete
+// framebuffer object; else GL_INVALID_FRAMEBUFFER_OPERATION_EXT (which draws, clears and reads
+// raise; glDrawPixels, glCopyPixels and glBitmap raise GL_INVALID_OPERATION instead, as Mesa).
+// Completeness is judged again each time: an attached image defined, resized or redefined while
+// the object is bound gives it a new target (what was drawn so far is written back first).
+GLenum framebuffer_error(Context& ctx);
+// Before a command reads or writes texture images while a framebuffer object is bound: what was
+// drawn into it so far is rendered and written into its attached textures, so that a read sees
+// it and a write is not overwritten by it later (the next draw loads what the write left).
+void sync_framebuffer_textures(Context& ctx);
+// Colour reads of the bound framebuffer object (glReadPixels, glCopyTex*Image, glCopyPixels) see
+// what the read attachment stores, as Mesa's do: its format's components quantized to their
+// bits, luminance and intensity in red, absent colour components 0 and absent alpha 1. The
+// target holds 8-bit RGBA; `out` (read from it) is converted here. An attachment other than the
+// drawn one is read from its texture (read_other_attachment returns true and fills `out`).
+void show_stored_components(const Context& ctx, uint32_t read_buffer, FramebufferPixels& out);
+bool read_other_attachment(Context& ctx, uint32_t read_buffer, int32_t x, int32_t y, uint32_t width,
+                           uint32_t height, FramebufferPixels& out);
 // What the context's record renders to: the bound framebuffer object's target, else the window.
 WindowTarget* render_target(Context& ctx);
 
 // EXT_framebuffer_object: the width x height rectangle at the origin of the render target's front
 // colour (or depth) buffer becomes the texels of `object`'s image at `texture_target` (a cube
-// face for cube maps) and `level`: no pixel transfer (drawing is not a copy).
+// face for cube maps), `level` and `zoffset` (a 3-D texture's slice): no pixel transfer (drawing
+// is not a copy).
 // (gl_shim/textures/texture_image_commands.cpp)
 void write_back_framebuffer_image(Context& ctx, TextureObject& object, GLenum texture_target,
-                                  int level, uint32_t width, uint32_t height, bool depth);
+                                  int level, int zoffset, uint32_t width, uint32_t height,
+                                  bool depth);
 
 }  // namespace glpt

@@ -6,6 +6,7 @@
 #include "gl/gl_enums.h"
 #include "gl_shim/context.hpp"
 #include "gl_shim/dispatch.hpp"
+#include "gl_shim/framebuffers/framebuffer_rendering.hpp"
 #include "gl_shim/geometry/attributes.hpp"
 #include "gl_shim/geometry/vertex_assembly.hpp"
 #include "gl_shim/gl_impl_decls.hpp"
@@ -114,6 +115,7 @@ void glBegin(Context& ctx, GLenum mode) {
   if (!is_primitive_mode(mode)) return record_error(ctx, GL_INVALID_ENUM);
   // A draw: Mesa validates its derived state here (matrix analysis decides later arithmetic).
   ctx.matrices.validate_for_draw(ctx.transform.clip_plane_mask);
+  if (const GLenum e = framebuffer_error(ctx); e != GL_NO_ERROR) return record_error(ctx, e);
   VertexAssembly& a = ctx.assembly;
   a.inside = true;
   a.state = ctx.snapshots.capture(ctx, ctx.recorder.record());

@@ -12,6 +12,7 @@
 #include "gl/gl_enums.h"
 #include "gl_shim/context.hpp"
 #include "gl_shim/dispatch.hpp"
+#include "gl_shim/framebuffers/framebuffer_rendering.hpp"
 #include "gl_shim/gl_impl_decls.hpp"
 #include "gl_shim/pixels/bitmap_cache.hpp"
 #include "gl_shim/pixels/pixel_formats.hpp"
@@ -151,6 +152,7 @@ void glBitmap(Context& ctx, GLsizei width, GLsizei height, GLfloat xorig, GLfloa
   rec::RasterPosition& rp = ctx.raster_position;
   if (!rp.valid) return;  // nothing drawn, and the raster position does not move (Mesa)
   validate_state(ctx);
+  if (framebuffer_error(ctx) != GL_NO_ERROR) return record_error(ctx, GL_INVALID_OPERATION);
   if (ctx.render_mode.mode != GL_RENDER) {
     render_mode_pixel_rectangle(ctx, GL_BITMAP_TOKEN);  // and the raster position still moves
   } else if (width > 0 && height > 0 && bitmap != nullptr) {
@@ -175,6 +177,7 @@ void glDrawPixels(Context& ctx, GLsizei width, GLsizei height, GLenum format, GL
   if (width < 0 || height < 0) return record_error(ctx, GL_INVALID_VALUE);
   validate_state(ctx);
   ctx.flushed_tex_coord = ctx.current.tex_coord;  // Mesa's FLUSH_CURRENT
+  if (framebuffer_error(ctx) != GL_NO_ERROR) return record_error(ctx, GL_INVALID_OPERATION);
   if (const GLenum error = check_format_and_type(format, type); error != GL_NO_ERROR)
     return record_error(ctx, error);
   const PixelClass kind = pixel_class(format);
@@ -240,6 +243,7 @@ void glCopyPixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height,
   if (type != GL_COLOR && type != GL_DEPTH && type != GL_STENCIL && type != GL_DEPTH_STENCIL_EXT)
     return record_error(ctx, GL_INVALID_ENUM);
   validate_state(ctx);
+  if (framebuffer_error(ctx) != GL_NO_ERROR) return record_error(ctx, GL_INVALID_OPERATION);
   const PixelClass kind = type == GL_DEPTH               ? PixelClass::kDepth
                           : type == GL_STENCIL           ? PixelClass::kStencilIndex
                           : type == GL_DEPTH_STENCIL_EXT ? PixelClass::kDepthStencil

@@ -5,6 +5,7 @@
 #include "gl_shim/context.hpp"
 #include "gl_shim/dispatch.hpp"
 #include "gl_shim/frame/framebuffer_access.hpp"
+#include "gl_shim/framebuffers/framebuffer_rendering.hpp"
 #include "gl_shim/gl_impl_decls.hpp"
 #include "gl_shim/pixels/pixel_formats.hpp"
 #include "gl_shim/pixels/pixel_pack.hpp"
@@ -52,6 +53,7 @@ namespace impl {
 void glReadPixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height, GLenum format,
                   GLenum type, void* pixels) {
   if (width < 0 || height < 0) return record_error(ctx, GL_INVALID_VALUE);
+  if (const GLenum e = framebuffer_error(ctx); e != GL_NO_ERROR) return record_error(ctx, e);
   if (const GLenum e = check_format_and_type(format, type); e != GL_NO_ERROR)
     return record_error(ctx, e);
   const PixelClass kind_of_format = pixel_class(format);

@@ -329,6 +329,7 @@ void compress_region(rec::TextureImage& img, int64_t x0, int64_t y0, int64_t z0,
 void tex_image(Context& ctx, int dims, GLenum target, GLint level, GLint internal_format, GLsizei w,
                GLsizei h, GLsizei d, GLint border, GLenum format, GLenum type, const void* pixels) {
   flush_bitmap_cache(ctx);  // as Mesa's texture uploads and reads
+  sync_framebuffer_textures(ctx);
   const std::optional<ImageTarget> t = image_target(target, dims, ProxyTargets::kAccepted);
   if (!t) return record_error(ctx, GL_INVALID_ENUM);
   if (level < 0 || level >= max_texture_levels(t->slot)) return record_error(ctx, GL_INVALID_VALUE);
@@ -394,6 +395,7 @@ void tex_sub_image(Context& ctx, int dims, GLenum target, GLint level, GLint xof
                    GLint zoff, GLsizei w, GLsizei h, GLsizei d, GLenum format, GLenum type,
                    const void* pixels) {
   flush_bitmap_cache(ctx);  // as Mesa's texture uploads and reads
+  sync_framebuffer_textures(ctx);
   const std::optional<ImageTarget> t = image_target(target, dims, ProxyTargets::kRejected);
   if (!valid_sub_image_args(ctx, t, level, w, h, d)) return;
   if (const GLenum e = check_format_and_type(format, type); e != GL_NO_ERROR)
@@ -434,11 +436,12 @@ bool framebuffer_has_source(const Context& ctx, const InternalFormatInfo& info) 
 void copy_tex_image(Context& ctx, int dims, GLenum target, GLint level, GLenum internal_format,
                     GLint x, GLint y, GLsizei w, GLsizei h, GLint border) {
   flush_bitmap_cache(ctx);  // as Mesa's texture uploads and reads
+  sync_framebuffer_textures(ctx);
   const std::optional<ImageTarget> t = image_target(target, dims, ProxyTargets::kRejected);
   if (!t) return record_error(ctx, GL_INVALID_ENUM);
-  if (level < 0 || level >= max_texture_levels(t->slot) || !legal_border(*t, border) || w < 0 ||
-      h < 0)
-    return record_error(ctx, GL_INVALID_VALUE);
+  if (level < 0 || level >= max_texture_levels(t->slot)) return record_error(ctx, GL_INVALID_VALUE);
+  if (const GLenum e = framebuffer_error(ctx); e != GL_NO_ERROR) return record_error(ctx, e);
+  if (!legal_border(*t, border) || w < 0 || h < 0) return record_error(ctx, GL_INVALID_VALUE);
   // GL 1.5 3.8.2: not 1..4. Mesa reports a bad internal format here as GL_INVALID_ENUM.
   const InternalFormatInfo* info = internal_format_info(GLint(internal_format));
   if (info == nullptr || internal_format <= 4) return record_error(ctx, GL_INVALID_ENUM);
@@ -465,8 +468,10 @@ void copy_tex_image(Context& ctx, int dims, GLenum target, GLint level, GLenum i
 void copy_tex_sub_image(Context& ctx, int dims, GLenum target, GLint level, GLint xoff, GLint yoff,
                         GLint zoff, GLint x, GLint y, GLsizei w, GLsizei h) {
   flush_bitmap_cache(ctx);  // as Mesa's texture uploads and reads
+  sync_framebuffer_textures(ctx);
   const std::optional<ImageTarget> t = image_target(target, dims, ProxyTargets::kRejected);
   if (!valid_sub_image_args(ctx, t, level, w, h, 1)) return;
+  if (const GLenum e = framebuffer_error(ctx); e != GL_NO_ERROR) return record_error(ctx, e);
   const rec::TextureImage* img = target_object(ctx, *t).image(t->face, level);
   if (img == nullptr) return record_error(ctx, GL_INVALID_OPERATION);  // undefined image
   if (!region_fits(*img, dims, xoff, yoff, zoff, w, dims >= 2 ? h : 1, 1))
@@ -514,6 +519,7 @@ bool get_tex_image_formats_agree(const InternalFormatInfo& info, GLenum format) 
 void get_tex_image(Context& ctx, GLenum target, GLint level, GLenum format, GLenum type,
                    void* pixels) {
   flush_bitmap_cache(ctx);  // as Mesa's texture uploads and reads
+  sync_framebuffer_textures(ctx);
   const std::optional<ImageTarget> t = image_target(target, 0, ProxyTargets::kRejected);
   if (!t) return record_error(ctx, GL_INVALID_ENUM);
   if (level < 0 || level >= max_texture_levels(t->slot)) return record_error(ctx, GL_INVALID_VALUE);
@@ -601,6 +607,7 @@ void compressed_tex_image(Context& ctx, int dims, GLenum target, GLint level, GL
                           GLsizei w, GLsizei h, GLsizei d, GLint border, GLsizei image_size,
                           const void* data) {
   flush_bitmap_cache(ctx);  // as Mesa's texture uploads and reads
+  sync_framebuffer_textures(ctx);
   const std::optional<ImageTarget> t = image_target(target, dims, ProxyTargets::kAccepted);
   if (!t || !s3tc_target(*t) || !s3tc::is_s3tc(format)) return record_error(ctx, GL_INVALID_ENUM);
   if (border != 0) return record_error(ctx, GL_INVALID_OPERATION);  // no format has borders
@@ -631,6 +638,7 @@ void compressed_tex_sub_image(Context& ctx, int dims, GLenum target, GLint level
                               GLint yoff, GLint zoff, GLsizei w, GLsizei h, GLsizei d,
                               GLenum format, GLsizei image_size, const void* data) {
   flush_bitmap_cache(ctx);  // as Mesa's texture uploads and reads
+  sync_framebuffer_textures(ctx);
   const std::optional<ImageTarget> t = image_target(target, dims, ProxyTargets::kRejected);
   if (!t || !s3tc_target(*t)) return record_error(ctx, GL_INVALID_ENUM);
   if (level < 0 || level >= max_texture_levels(t->slot)) return record_error(ctx, GL_INVALID_VALUE);
@@ -673,6 +681,7 @@ void compressed_tex_sub_image(Context& ctx, int dims, GLenum target, GLint level
 // glGetCompressedTexImage: the blocks byte for byte (GL 1.x has no compressed pack state).
 void get_compressed_tex_image(Context& ctx, GLenum target, GLint level, void* pixels) {
   flush_bitmap_cache(ctx);  // as Mesa's texture uploads and reads
+  sync_framebuffer_textures(ctx);
   const std::optional<ImageTarget> t = image_target(target, 0, ProxyTargets::kRejected);
   if (!t) return record_error(ctx, GL_INVALID_ENUM);
   if (level < 0 || level >= max_texture_levels(t->slot)) return record_error(ctx, GL_INVALID_VALUE);
@@ -686,7 +695,8 @@ void get_compressed_tex_image(Context& ctx, GLenum target, GLint level, void* pi
 }  // namespace
 
 void write_back_framebuffer_image(Context& ctx, TextureObject& object, GLenum texture_target,
-                                  int level, uint32_t width, uint32_t height, bool depth) {
+                                  int level, int zoffset, uint32_t width, uint32_t height,
+                                  bool depth) {
   const std::optional<ImageTarget> t = image_target(texture_target, 0, ProxyTargets::kRejected);
   const rec::TextureImage* img = t ? object.image(t->face, level) : nullptr;
   if (img == nullptr) return;
@@ -707,7 +717,7 @@ void write_back_framebuffer_image(Context& ctx, TextureObject& object, GLenum te
     encode_color_texels(*info, fb.color.data(), n, contents.texels.data());
   else
     return;
-  write_region(object, *t, level, 0, 0, 0, GLsizei(w), GLsizei(h), 1, contents,
+  write_region(object, *t, level, 0, 0, zoffset, GLsizei(w), GLsizei(h), 1, contents,
                rec::texel_bytes(info->texel_format()));
   image_changed(object, *t, level);
 }

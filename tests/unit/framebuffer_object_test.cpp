@@ -131,10 +131,33 @@ TEST_F(GlTest, AttachmentsAndCompleteness) {
             GL_NONE);
   attachment_param(GL_COLOR_ATTACHMENT1_EXT, GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL_EXT);
   EXPECT_EQ(error(), GLenum{GL_INVALID_OPERATION});
-  // A depth renderbuffer of another size: complete (ARB_framebuffer_object's rule, Mesa's).
-  const GLuint depth = attach_renderbuffer(GL_DEPTH_ATTACHMENT_EXT, GL_DEPTH_COMPONENT24, 64, 64);
+  // A depth renderbuffer of another size: EXT_framebuffer_object's rule (Mesa, which also has
+  // ARB_framebuffer_object, calls it complete).
+  attach_renderbuffer(GL_DEPTH_ATTACHMENT_EXT, GL_DEPTH_COMPONENT24, 64, 64);
+  EXPECT_EQ(error(), GLenum{GL_NO_ERROR});
+  EXPECT_EQ(glCheckFramebufferStatusEXT(GL_FRAMEBUFFER_EXT),
+            GLenum{GL_FRAMEBUFFER_INCOMPLETE_DIMENSIONS_EXT});
+  const GLuint depth = attach_renderbuffer(GL_DEPTH_ATTACHMENT_EXT, GL_DEPTH_COMPONENT24, 32, 16);
+  EXPECT_EQ(glCheckFramebufferStatusEXT(GL_FRAMEBUFFER_EXT), GLenum{GL_FRAMEBUFFER_COMPLETE_EXT});
+  // Colour images of different internal formats; a draw or read buffer naming no image.
+  const GLuint rgb = texture_2d(32, 16, GL_RGB8, GL_RGB);
+  glFramebufferTexture2DEXT(GL_FRAMEBUFFER_EXT, GL_COLOR_ATTACHMENT2_EXT, GL_TEXTURE_2D, rgb, 0);
+  EXPECT_EQ(glCheckFramebufferStatusEXT(GL_FRAMEBUFFER_EXT),
+            GLenum{GL_FRAMEBUFFER_INCOMPLETE_FORMATS_EXT});
+  glFramebufferTexture2DEXT(GL_FRAMEBUFFER_EXT, GL_COLOR_ATTACHMENT2_EXT, GL_TEXTURE_2D, 0, 0);
+  glDrawBuffer(GL_COLOR_ATTACHMENT3_EXT);
+  EXPECT_EQ(glCheckFramebufferStatusEXT(GL_FRAMEBUFFER_EXT),
+            GLenum{GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER_EXT});
+  glDrawBuffer(GL_NONE);
+  EXPECT_EQ(glCheckFramebufferStatusEXT(GL_FRAMEBUFFER_EXT), GLenum{GL_FRAMEBUFFER_COMPLETE_EXT});
+  glReadBuffer(GL_COLOR_ATTACHMENT3_EXT);
+  EXPECT_EQ(glCheckFramebufferStatusEXT(GL_FRAMEBUFFER_EXT),
+            GLenum{GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER_EXT});
+  glDrawBuffer(GL_COLOR_ATTACHMENT0_EXT);
+  glReadBuffer(GL_COLOR_ATTACHMENT0_EXT);
   EXPECT_EQ(error(), GLenum{GL_NO_ERROR});
   EXPECT_EQ(glCheckFramebufferStatusEXT(GL_FRAMEBUFFER_EXT), GLenum{GL_FRAMEBUFFER_COMPLETE_EXT});
+  glDeleteTextures(1, &rgb);
   // A colour format at the depth attachment, and a depth format at a colour attachment.
   attach_renderbuffer(GL_DEPTH_ATTACHMENT_EXT, GL_RGBA8, 32, 16);
   EXPECT_EQ(glCheckFramebufferStatusEXT(GL_FRAMEBUFFER_EXT),
@@ -175,6 +198,138 @@ TEST_F(GlTest, AttachmentsAndCompleteness) {
   EXPECT_EQ(attachment_param(GL_COLOR_ATTACHMENT0_EXT, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE_EXT),
             GL_NONE);
   EXPECT_EQ(error(), GLenum{GL_NO_ERROR});
+}
+
+// ARB_framebuffer_object's attachment queries (which Mesa answers through the EXT command), on
+// the window and on an object; the values are Mesa 25's on llvmpipe (measured), except the
+// window's colour encoding (Mesa's visuals are sRGB-capable, glpt's window is not).
+constexpr GLenum kColorEncoding = 0x8210, kComponentType = 0x8211, kRedSize = 0x8212,
+                 kAlphaSize = 0x8215, kDepthSize = 0x8216, kStencilSize = 0x8217;
+constexpr GLint kFramebufferDefault = 0x8218, kUnsignedNormalized = 0x8C17;
+
+TEST_F(GlTest, WindowAttachmentQueriesAnswerAsTheDefaultFramebuffer) {
+  // The test context's drawable: double-buffered RGBA8 with 24 depth and 8 stencil bits.
+  EXPECT_EQ(attachment_param(GL_BACK_LEFT, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE_EXT),
+            kFramebufferDefault);
+  EXPECT_EQ(attachment_param(GL_FRONT, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE_EXT),
+            kFramebufferDefault);
+  EXPECT_EQ(attachment_param(GL_BACK_RIGHT, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE_EXT), GL_NONE);
+  EXPECT_EQ(error(), GLenum{GL_NO_ERROR});
+  EXPECT_EQ(attachment_param(GL_FRONT_LEFT, kRedSize), 8);
+  EXPECT_EQ(attachment_param(GL_FRONT_LEFT, kAlphaSize), 8);
+  EXPECT_EQ(attachment_param(GL_FRONT_LEFT, kDepthSize), 0);
+  EXPECT_EQ(attachment_param(GL_FRONT_LEFT, kComponentType), kUnsignedNormalized);
+  EXPECT_EQ(attachment_param(GL_FRONT_LEFT, kColorEncoding), GL_LINEAR);
+  // One packed depth-stencil image.
+  EXPECT_EQ(attachment_param(GL_DEPTH, kDepthSize), 24);
+  EXPECT_EQ(attachment_param(GL_STENCIL, kDepthSize), 24);
+  EXPECT_EQ(attachment_param(GL_STENCIL, kStencilSize), 8);
+  EXPECT_EQ(attachment_param(GL_DEPTH, kRedSize), 0);
+  EXPECT_EQ(error(), GLenum{GL_NO_ERROR});
+  // No name, level or face; sizes only of buffers that exist; no colour attachments.
+  EXPECT_EQ(attachment_param(GL_BACK_LEFT, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME_EXT), -12345);
+  EXPECT_EQ(error(), GLenum{GL_INVALID_ENUM});
+  attachment_param(GL_BACK_LEFT, GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL_EXT);
+  EXPECT_EQ(error(), GLenum{GL_INVALID_ENUM});
+  attachment_param(GL_BACK_RIGHT, GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL_EXT);
+  EXPECT_EQ(error(), GLenum{GL_INVALID_OPERATION});
+  attachment_param(GL_BACK_RIGHT, kRedSize);
+  EXPECT_EQ(error(), GLenum{GL_INVALID_OPERATION});
+  attachment_param(GL_BACK_RIGHT, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME_EXT);
+  EXPECT_EQ(error(), GLenum{GL_INVALID_ENUM});
+  for (GLenum attachment : {GLenum{GL_COLOR_ATTACHMENT0_EXT}, GLenum{GL_DEPTH_ATTACHMENT_EXT},
+                            GLenum{GL_ACCUM}, GLenum{GL_AUX0}, GLenum{GL_NONE}}) {
+    EXPECT_EQ(attachment_param(attachment, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE_EXT), -12345);
+    EXPECT_EQ(error(), GLenum{GL_INVALID_ENUM}) << attachment;
+  }
+  attachment_param(GL_BACK_LEFT, 0x1234);
+  EXPECT_EQ(error(), GLenum{GL_INVALID_ENUM});
+}
+
+TEST_F(GlTest, ObjectAttachmentSizesComeFromTheStoredFormat) {
+  GLuint fb = 0;
+  glGenFramebuffersEXT(1, &fb);
+  glBindFramebufferEXT(GL_FRAMEBUFFER_EXT, fb);
+  const GLuint color = texture_2d(8, 8, GL_R3_G3_B2, GL_RGB);
+  glFramebufferTexture2DEXT(GL_FRAMEBUFFER_EXT, GL_COLOR_ATTACHMENT0_EXT, GL_TEXTURE_2D, color, 0);
+  EXPECT_EQ(attachment_param(GL_COLOR_ATTACHMENT0_EXT, kRedSize), 3);
+  EXPECT_EQ(attachment_param(GL_COLOR_ATTACHMENT0_EXT, kRedSize + 2), 2);  // blue
+  EXPECT_EQ(attachment_param(GL_COLOR_ATTACHMENT0_EXT, kAlphaSize), 0);
+  EXPECT_EQ(attachment_param(GL_COLOR_ATTACHMENT0_EXT, kComponentType), kUnsignedNormalized);
+  EXPECT_EQ(attachment_param(GL_COLOR_ATTACHMENT0_EXT, kColorEncoding), GL_LINEAR);
+  const GLuint luminance = texture_2d(8, 8, GL_LUMINANCE8, GL_LUMINANCE);
+  glFramebufferTexture2DEXT(GL_FRAMEBUFFER_EXT, GL_COLOR_ATTACHMENT1_EXT, GL_TEXTURE_2D, luminance,
+                            0);
+  EXPECT_EQ(attachment_param(GL_COLOR_ATTACHMENT1_EXT, kRedSize), 0);  // luminance is no red
+  attach_renderbuffer(kDepthStencilAttachment, GL_DEPTH24_STENCIL8_EXT, 8, 8);
+  EXPECT_EQ(attachment_param(GL_STENCIL_ATTACHMENT_EXT, kDepthSize), 24);
+  EXPECT_EQ(attachment_param(kDepthStencilAttachment, kStencilSize), 8);
+  EXPECT_EQ(error(), GLenum{GL_NO_ERROR});
+  // Depth and stencil of one image have no one component type.
+  attachment_param(kDepthStencilAttachment, kComponentType);
+  EXPECT_EQ(error(), GLenum{GL_INVALID_OPERATION});
+  attachment_param(GL_COLOR_ATTACHMENT2_EXT, kRedSize);  // nothing attached
+  EXPECT_EQ(error(), GLenum{GL_INVALID_OPERATION});
+  attachment_param(GL_DEPTH_ATTACHMENT_EXT, GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL_EXT);
+  EXPECT_EQ(error(), GLenum{GL_INVALID_ENUM});  // a renderbuffer has no level
+  attachment_param(GL_BACK_LEFT, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE_EXT);
+  EXPECT_EQ(error(), GLenum{GL_INVALID_ENUM});  // the window's buffers are not an object's
+}
+
+// Drawing, clearing and reading an incomplete framebuffer object: the errors Mesa 25 raises
+// (measured; its pixel-rectangle draws answer GL_INVALID_OPERATION instead).
+TEST_F(GlTest, IncompleteFramebufferRaisesInvalidFramebufferOperation) {
+  constexpr GLenum kInvalidFramebufferOperation = 0x0506;
+  GLuint fb = 0;
+  glGenFramebuffersEXT(1, &fb);
+  glBindFramebufferEXT(GL_FRAMEBUFFER_EXT, fb);
+  const GLuint empty = texture_2d(0, 0);  // an attachment without an image: incomplete
+  glFramebufferTexture2DEXT(GL_FRAMEBUFFER_EXT, GL_COLOR_ATTACHMENT0_EXT, GL_TEXTURE_2D, empty, 0);
+  ASSERT_NE(glCheckFramebufferStatusEXT(GL_FRAMEBUFFER_EXT), GLenum{GL_FRAMEBUFFER_COMPLETE_EXT});
+  EXPECT_EQ(error(), GLenum{GL_NO_ERROR});
+  glBegin(GL_TRIANGLES);
+  EXPECT_EQ(error(), kInvalidFramebufferOperation);
+  glEnd();  // glBegin did not begin
+  EXPECT_EQ(error(), GLenum{GL_INVALID_OPERATION});
+  const GLfloat vertices[] = {0, 0, 1, 0, 0, 1};
+  glEnableClientState(GL_VERTEX_ARRAY);
+  glVertexPointer(2, GL_FLOAT, 0, vertices);
+  glDrawArrays(GL_TRIANGLES, 0, 0);  // even with nothing to draw
+  EXPECT_EQ(error(), kInvalidFramebufferOperation);
+  glDrawArrays(GL_TRIANGLES + 100, 0, 3);  // argument errors come first
+  EXPECT_EQ(error(), GLenum{GL_INVALID_ENUM});
+  const GLubyte indices[] = {0, 1, 2};
+  glDrawElements(GL_TRIANGLES, 3, GL_UNSIGNED_BYTE, indices);
+  EXPECT_EQ(error(), kInvalidFramebufferOperation);
+  glClear(0);
+  EXPECT_EQ(error(), kInvalidFramebufferOperation);
+  glClear(0x80000000);
+  EXPECT_EQ(error(), GLenum{GL_INVALID_VALUE});
+  GLubyte pixels[16 * 4] = {};
+  glReadPixels(0, 0, 2, 2, 0x1234, GL_UNSIGNED_BYTE, pixels);  // before the format's error
+  EXPECT_EQ(error(), kInvalidFramebufferOperation);
+  const GLuint copy = texture_2d(4, 4);
+  glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 0, 0, 2, 2);
+  EXPECT_EQ(error(), kInvalidFramebufferOperation);
+  glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 0, 0, 2, 2, 0);
+  EXPECT_EQ(error(), kInvalidFramebufferOperation);
+  glRasterPos2f(0.0f, 0.0f);
+  glDrawPixels(2, 2, GL_RGBA, GL_UNSIGNED_BYTE, pixels);
+  EXPECT_EQ(error(), GLenum{GL_INVALID_OPERATION});
+  glCopyPixels(0, 0, 2, 2, GL_COLOR);
+  EXPECT_EQ(error(), GLenum{GL_INVALID_OPERATION});
+  glBitmap(2, 2, 0, 0, 1, 1, pixels);
+  EXPECT_EQ(error(), GLenum{GL_INVALID_OPERATION});
+  // Defining the attached image while bound makes the object complete: drawing proceeds.
+  glBindTexture(GL_TEXTURE_2D, empty);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 4, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+  glClear(GL_COLOR_BUFFER_BIT);
+  EXPECT_EQ(error(), GLenum{GL_NO_ERROR});
+  glDisableClientState(GL_VERTEX_ARRAY);
+  glBindFramebufferEXT(GL_FRAMEBUFFER_EXT, 0);
+  glClear(GL_COLOR_BUFFER_BIT);  // the window is always complete
+  EXPECT_EQ(error(), GLenum{GL_NO_ERROR});
+  glDeleteTextures(1, &copy);
 }
 
 TEST_F(GlTest, GenerateMipmapFillsTheLevels) {

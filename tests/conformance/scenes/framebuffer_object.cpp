@@ -199,3 +199,89 @@ GLPT_SCENE(fbo_generate_mipmap, 96, 48) {
   textured_quad(52.0f, 2.0f, 54.0f, 4.0f, 0.0f, 0.0f, 1.0f, 1.0f);
   glDisable(GL_TEXTURE_2D);
 }
+
+// Reads of what an attachment stores: a scene drawn into luminance, intensity, alpha and R3G3B2
+// textures is read back with glReadPixels (Mesa answers the stored components: luminance in red,
+// missing colour 0, missing alpha 1, quantized) and drawn into the window; then a second colour
+// attachment, drawn earlier, read while the first is the draw buffer; then a 3-D texture's slice
+// drawn into; and glGenerateMipmapEXT while the object that drew level 0 is still bound.
+GLPT_SCENE(fbo_stored_components_and_reads, 112, 48) {
+  const GLenum formats[] = {GL_LUMINANCE8, GL_INTENSITY8, GL_ALPHA8, GL_R3_G3_B2};
+  GLubyte read[4][8 * 8 * 4] = {};
+  for (int i = 0; i < 4; ++i) {
+    GLuint tex = 0;
+    glGenTextures(1, &tex);
+    glBindTexture(GL_TEXTURE_2D, tex);
+    glTexImage2D(GL_TEXTURE_2D, 0, GLint(formats[i]), 8, 8, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    framebuffer_for(tex, 8, 8, false);
+    clear_framebuffer(8, 8, 0.1f, 0.5f, 0.3f);
+    glColor4f(0.7f, 0.45f, 0.9f, 0.6f);
+    quad(0.0f, 0.0f, 4.0f, 8.0f);
+    glReadPixels(0, 0, 8, 8, GL_RGBA, GL_UNSIGNED_BYTE, read[i]);
+  }
+  // Two colour attachments: COLOR1 drawn first, then COLOR0 drawn and COLOR1 read.
+  const GLuint first = color_texture(8, 8), second = color_texture(8, 8);
+  framebuffer_for(first, 8, 8, false);
+  glFramebufferTexture2DEXT(GL_FRAMEBUFFER_EXT, GL_COLOR_ATTACHMENT1_EXT, GL_TEXTURE_2D, second, 0);
+  glDrawBuffer(GL_COLOR_ATTACHMENT1_EXT);
+  clear_framebuffer(8, 8, 0.8f, 0.2f, 0.6f);
+  glDrawBuffer(GL_COLOR_ATTACHMENT0_EXT);
+  clear_framebuffer(8, 8, 0.2f, 0.7f, 0.1f);
+  glReadBuffer(GL_COLOR_ATTACHMENT1_EXT);
+  GLubyte other[8 * 8 * 4] = {};
+  glReadPixels(0, 0, 8, 8, GL_RGBA, GL_UNSIGNED_BYTE, other);
+  glReadBuffer(GL_COLOR_ATTACHMENT0_EXT);
+  // Slice 2 of a 3-D texture.
+  GLuint volume = 0;
+  glGenTextures(1, &volume);
+  glBindTexture(GL_TEXTURE_3D, volume);
+  glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTexImage3D(GL_TEXTURE_3D, 0, GL_RGBA8, 8, 8, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+  GLuint fb3d = 0;
+  glGenFramebuffersEXT(1, &fb3d);
+  glBindFramebufferEXT(GL_FRAMEBUFFER_EXT, fb3d);
+  glFramebufferTexture3DEXT(GL_FRAMEBUFFER_EXT, GL_COLOR_ATTACHMENT0_EXT, GL_TEXTURE_3D, volume, 0,
+                            2);
+  clear_framebuffer(8, 8, 0.3f, 0.3f, 0.9f);
+  glColor3f(1.0f, 0.8f, 0.1f);
+  quad(4.0f, 0.0f, 8.0f, 4.0f);
+  // Level 0 drawn, then its mipmaps generated before the object is unbound.
+  const GLuint mipmapped = color_texture(16, 16);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
+  framebuffer_for(mipmapped, 16, 16, false);
+  clear_framebuffer(16, 16, 0.9f, 0.1f, 0.1f);
+  glColor3f(0.1f, 0.9f, 0.9f);
+  quad(8.0f, 0.0f, 16.0f, 16.0f);
+  glBindTexture(GL_TEXTURE_2D, mipmapped);
+  glGenerateMipmapEXT(GL_TEXTURE_2D);
+
+  to_window(112, 48, 0.25f);
+  for (int i = 0; i < 4; ++i) {
+    glRasterPos2i(2 + 10 * i, 2);
+    glDrawPixels(8, 8, GL_RGBA, GL_UNSIGNED_BYTE, read[i]);
+  }
+  glRasterPos2i(42, 2);
+  glDrawPixels(8, 8, GL_RGBA, GL_UNSIGNED_BYTE, other);
+  show_texture(first, 52.0f, 2.0f, 60.0f, 10.0f);
+  glBindTexture(GL_TEXTURE_3D, volume);
+  glEnable(GL_TEXTURE_3D);
+  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+  glBegin(GL_QUADS);
+  const float r = (2.0f + 0.5f) / 4.0f;  // slice 2's centre
+  glTexCoord3f(0, 0, r);
+  glVertex2f(62, 2);
+  glTexCoord3f(1, 0, r);
+  glVertex2f(78, 2);
+  glTexCoord3f(1, 1, r);
+  glVertex2f(78, 18);
+  glTexCoord3f(0, 1, r);
+  glVertex2f(62, 18);
+  glEnd();
+  glDisable(GL_TEXTURE_3D);
+  glBindTexture(GL_TEXTURE_2D, mipmapped);
+  glEnable(GL_TEXTURE_2D);
+  textured_quad(80.0f, 2.0f, 84.0f, 6.0f, 0.0f, 0.0f, 1.0f, 1.0f);   // level 2
+  textured_quad(86.0f, 2.0f, 94.0f, 10.0f, 0.0f, 0.0f, 1.0f, 1.0f);  // level 1
+  glDisable(GL_TEXTURE_2D);
+}
