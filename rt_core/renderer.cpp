@@ -82,9 +82,8 @@ class Renderer::Impl {
     };
     const uint64_t waits_before = device_->host_waits();
     classified_ = false;
-    if (!drawable.framebuffer_object &&
-        (log_ || settings_.classify_debug ||
-         (settings_.mode == RenderMode::kPathTraced && tracer_))) {
+    if (!drawable.framebuffer_object && (log_ || settings_.classify_debug ||
+                                         (settings_.mode == RenderMode::kPathTraced && tracer_))) {
       const auto start = std::chrono::steady_clock::now();
       classify_frame(record, drawable, &identities_of(buffers), classification_);
       stats.classify_ms +=
@@ -293,6 +292,15 @@ bool Renderer::write_color(DrawableBuffers& buffers, const rec::DrawableConfig& 
   std::lock_guard lock(impl_->mutex);
   return guarded("write failed", error, [&] {
     impl_->raster().write_front_color(buffers, drawable, rgba);
+    return true;
+  });
+}
+
+bool Renderer::write_depth(DrawableBuffers& buffers, const rec::DrawableConfig& drawable,
+                           const std::vector<float>& depth, std::string* error) {
+  std::lock_guard lock(impl_->mutex);
+  return guarded("write failed", error, [&] {
+    impl_->raster().write_depth(buffers, drawable, depth);
     return true;
   });
 }

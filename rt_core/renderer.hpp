@@ -92,6 +92,10 @@ class Renderer {
   // the image of the texture attached to it.
   bool write_color(DrawableBuffers& buffers, const rec::DrawableConfig& drawable,
                    const std::vector<uint8_t>& rgba, std::string* error);
+  // Replaces the depth buffer with `depth` (window z, rows bottom to top, the drawable's size):
+  // a framebuffer object's target takes the depth texture attached to it.
+  bool write_depth(DrawableBuffers& buffers, const rec::DrawableConfig& drawable,
+                   const std::vector<float>& depth, std::string* error);
 
   // glXSwapBuffers of a double-buffered drawable: the front buffer takes the back buffer's
   // contents, and the back buffer keeps them (Mesa's software swap does the same).

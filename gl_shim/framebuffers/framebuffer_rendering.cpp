@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <mutex>
 #include <optional>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -124,6 +126,36 @@ void load_color(Context& ctx, const FramebufferObject& fb, FramebufferRendering&
   r.loaded_version = version;
 }
 
+// Loads the depth texture attachment's image into the target's depth buffer where the target
+// does not hold its current contents (a depth map drawn in an earlier pass and drawn over now).
+void load_depth(Context& ctx, const FramebufferObject& fb, FramebufferRendering& r) {
+  const Attachment& a = fb.depth;
+  if (a.type != GL_TEXTURE || !r.target) return;
+  const uint64_t version = content_version(*a.texture);
+  if (r.loaded_depth_texture == a.texture.get() && r.loaded_depth_version == version) return;
+  const rec::TextureImage* image = attached_image(a);
+  const InternalFormatInfo* info = attached_texture_format(a);
+  if (image == nullptr || info == nullptr || !info->is_depth() || !ensure_output(ctx)) return;
+  const rec::DrawableConfig config = r.target->config();
+  std::vector<float> depth(size_t{config.width} * config.height, 1.0f);
+  const size_t texel = rec::texel_bytes(info->texel_format());
+  const size_t slice = size_t(std::max(a.zoffset, 0)) * image->width * image->height;
+  for (uint32_t y = 0; y < config.height && y < image->height; ++y)
+    for (uint32_t x = 0; x < config.width && x < image->width; ++x) {
+      const size_t i = slice + size_t{y} * image->width + x;
+      if ((i + 1) * texel > image->texels.size()) continue;
+      depth[size_t{y} * config.width + x] = decode_depth_texel(&image->texels[i * texel]);
+    }
+  std::string error;
+  std::lock_guard lock(r.target->mutex());
+  if (!ctx.output->renderer().write_depth(r.target->buffers(), config, depth, &error)) {
+    if (!error.empty()) std::fprintf(stderr, "%s\n", error.c_str());
+    return;
+  }
+  r.loaded_depth_texture = a.texture.get();
+  r.loaded_depth_version = version;
+}
+
 }  // namespace
 
 WindowTarget* render_target(Context& ctx) {
@@ -160,9 +192,11 @@ void enter_framebuffer(Context& ctx) {
   if (!r.target || r.target->config() != config) {
     r.target = std::make_unique<HeadlessTarget>(config.width, config.height, config);
     r.loaded_texture = nullptr;
+    r.loaded_depth_texture = nullptr;
   }
   ctx.drawable = config;
   load_color(ctx, *fb, r);
+  load_depth(ctx, *fb, r);
 }
 
 void leave_framebuffer(Context& ctx) {
@@ -188,10 +222,13 @@ void leave_framebuffer(Context& ctx) {
       r.loaded_zoffset = a->zoffset;
       r.loaded_version = content_version(*a->texture);
     }
-    if (fb->depth.type == GL_TEXTURE)
+    if (fb->depth.type == GL_TEXTURE) {
       write_back_framebuffer_image(ctx, *fb->depth.texture, fb->depth.texture_target,
                                    fb->depth.level, fb->depth.zoffset, config.width, config.height,
                                    /*depth=*/true);
+      r.loaded_depth_texture = fb->depth.texture.get();
+      r.loaded_depth_version = content_version(*fb->depth.texture);
+    }
   }
   swap_bundle(ctx, r.parked);
   ctx.framebuffers.entered = false;
@@ -210,8 +247,10 @@ GLenum framebuffer_error(Context& ctx) {
   const HeadlessTarget* target = fb->rendering->target.get();
   if (complete != (target != nullptr) || (complete && target->config() != config))
     refresh_framebuffer(ctx);
-  else if (complete && ctx.recorder.empty() && !fb->rendering->drawn)
-    load_color(ctx, *fb, *fb->rendering);  // the attached texture was written meanwhile
+  else if (complete && ctx.recorder.empty() && !fb->rendering->drawn) {
+    load_color(ctx, *fb, *fb->rendering);  // the attached textures were written meanwhile
+    load_depth(ctx, *fb, *fb->rendering);
+  }
   return complete ? GLenum{GL_NO_ERROR} : GLenum{GL_INVALID_FRAMEBUFFER_OPERATION_EXT};
 }
 

@@ -50,6 +50,9 @@ struct FramebufferRendering {
   GLenum loaded_target = 0;
   int loaded_level = -1;
   int loaded_zoffset = 0;
+  // The same for the depth texture attachment's image in the target's depth buffer.
+  const TextureObject* loaded_depth_texture = nullptr;
+  uint64_t loaded_depth_version = 0;
   uint64_t loaded_version = 0;
 };
 

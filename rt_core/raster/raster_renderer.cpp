@@ -994,6 +994,33 @@ void RasterRenderer::write_front_color(DrawableBuffers& buffers,
   write_color(true, rgba);
 }
 
+void RasterRenderer::write_depth(DrawableBuffers& buffers, const rec::DrawableConfig& drawable,
+                                 const std::vector<float>& depth) {
+  ensure_buffers(buffers, drawable);
+  if (!buffers_->depth_stencil ||
+      depth.size() != size_t{buffers_->config.width} * buffers_->config.height)
+    return;
+  // The depth aspect of D24_UNORM_S8_UINT copies as 32-bit words holding 24 bits of depth.
+  std::vector<uint32_t> words(depth.size());
+  for (size_t i = 0; i < depth.size(); ++i)
+    words[i] = uint32_t(std::lround(double(std::clamp(depth[i], 0.0f, 1.0f)) * 16777215.0));
+  write_depth_words(words);
+}
+
+void RasterRenderer::write_depth_words(const std::vector<uint32_t>& words) {
+  const size_t bytes = words.size() * sizeof(uint32_t);
+  ensure_capacity(*device_, readback_, bytes,
+                  VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+  readback_.write(words.data(), bytes);
+  device_->submit_and_wait([&](VkCommandBuffer cmd) {
+    VkBufferImageCopy copy{};
+    copy.imageSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 0, 1};
+    copy.imageExtent = {buffers_->config.width, buffers_->config.height, 1};
+    vkCmdCopyBufferToImage(cmd, readback_.handle(), buffers_->depth_stencil.handle(),
+                           VK_IMAGE_LAYOUT_GENERAL, 1, &copy);
+  });
+}
+
 void RasterRenderer::write_image(const GpuImage& image, const VkRect2D& rect,
                                  const std::vector<uint8_t>& rgba) {
   ensure_capacity(*device_, readback_, rgba.size(),

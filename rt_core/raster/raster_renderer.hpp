@@ -71,6 +71,10 @@ class RasterRenderer {
   // The same for the front buffer of `buffers`, created for `drawable` first if they are not.
   void write_front_color(DrawableBuffers& buffers, const rec::DrawableConfig& drawable,
                          const std::vector<uint8_t>& rgba);
+  // The depth buffer of `buffers` (created for `drawable` if need be) takes `depth` (window z in
+  // [0, 1], rows bottom to top, the drawable's size); stencil is kept.
+  void write_depth(DrawableBuffers& buffers, const rec::DrawableConfig& drawable,
+                   const std::vector<float>& depth);
 
   VulkanDevice& device() { return *device_; }
   // The buffers of the last execute, for path-traced mode (which writes the traced image into
@@ -105,6 +109,8 @@ class RasterRenderer {
                   int32_t y, uint32_t width, uint32_t height, std::vector<uint8_t>& out);
   // Replaces the rectangle `rect` of a colour image with `rgba` (RGBA8, rows bottom to top).
   void write_image(const GpuImage& image, const VkRect2D& rect, const std::vector<uint8_t>& rgba);
+  // Uploads 32-bit words into the depth aspect of the depth-stencil image.
+  void write_depth_words(const std::vector<uint32_t>& words);
 
   // ---- pixel rectangles and the accumulation buffer (pixel_commands.cpp) ----
   struct PixelPlan;  // how one pixel rectangle is drawn
@@ -129,8 +135,8 @@ class RasterRenderer {
   // The drawable's buffers the current call works on (set by each public call: a renderer may
   // serve several drawables, and a drawable several renderers).
   DrawableBuffers* buffers_ = nullptr;
-  GpuBuffer states_;           // RasterState per snapshot (+ one per clear drawn as a quad)
-  GpuBuffer vertices_;         // this record's attributes and indices
+  GpuBuffer states_;    // RasterState per snapshot (+ one per clear drawn as a quad)
+  GpuBuffer vertices_;  // this record's attributes and indices
   // The previous execute's states_, vertices_ and pixels_, which its submissions may still read
   // (path-traced mode's G-buffer pass while the draws after the trace are prepared): executes
   // alternate between the two sets, and wait for a set's last submission before refilling it.

@@ -59,6 +59,10 @@ bool Renderer::write_color(DrawableBuffers&, const rec::DrawableConfig&,
                            const std::vector<uint8_t>&, std::string*) {
   std::abort();
 }
+bool Renderer::write_depth(DrawableBuffers&, const rec::DrawableConfig&, const std::vector<float>&,
+                           std::string*) {
+  std::abort();
+}
 void Renderer::start_independent_frame(uint64_t, uint32_t) { std::abort(); }
 
 }  // namespace rt

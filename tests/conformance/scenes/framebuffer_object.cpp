@@ -285,3 +285,58 @@ GLPT_SCENE(fbo_stored_components_and_reads, 112, 48) {
   textured_quad(86.0f, 2.0f, 94.0f, 10.0f, 0.0f, 0.0f, 1.0f, 1.0f);  // level 1
   glDisable(GL_TEXTURE_2D);
 }
+
+// One depth texture shared by two framebuffer objects: the first draws a near quad into it, the
+// second (another colour texture) draws a far quad over the whole with the depth test, which the
+// first's depth must stop: the depth texture's contents are loaded into the second's target.
+// Then the depth texture itself, compared as a luminance image.
+GLPT_SCENE(fbo_shared_depth_texture, 96, 40) {
+  GLuint depth = 0;
+  glGenTextures(1, &depth);
+  glBindTexture(GL_TEXTURE_2D, depth);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24, 16, 16, 0, GL_DEPTH_COMPONENT, GL_FLOAT,
+               nullptr);
+  const GLuint first = color_texture(16, 16), second = color_texture(16, 16);
+  auto depth_framebuffer = [&](GLuint color) {
+    framebuffer_for(color, 16, 16, false);
+    glFramebufferTexture2DEXT(GL_FRAMEBUFFER_EXT, GL_DEPTH_ATTACHMENT_EXT, GL_TEXTURE_2D, depth, 0);
+  };
+  depth_framebuffer(first);
+  glViewport(0, 0, 16, 16);
+  glClearColor(0.1f, 0.1f, 0.4f, 1.0f);
+  glClearDepth(1.0);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
+  glMatrixMode(GL_MODELVIEW);
+  glLoadIdentity();
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glColor3f(0.9f, 0.2f, 0.2f);
+  glBegin(GL_QUADS);  // near (z -0.5: depth 0.25), the left half, sloping to z 0 at its top
+  glVertex3f(-1.0f, -1.0f, -0.5f);
+  glVertex3f(0.0f, -1.0f, -0.5f);
+  glVertex3f(0.0f, 1.0f, 0.0f);
+  glVertex3f(-1.0f, 1.0f, 0.0f);
+  glEnd();
+  depth_framebuffer(second);
+  glClearColor(0.3f, 0.3f, 0.3f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT);  // colour only: the depth texture keeps the first's depth
+  glColor3f(0.2f, 0.9f, 0.3f);
+  glBegin(GL_QUADS);  // at z -0.25 (depth 0.375) over the whole: hidden where the first is nearer
+  glVertex3f(-1.0f, -1.0f, -0.25f);
+  glVertex3f(1.0f, -1.0f, -0.25f);
+  glVertex3f(1.0f, 1.0f, -0.25f);
+  glVertex3f(-1.0f, 1.0f, -0.25f);
+  glEnd();
+  glDisable(GL_DEPTH_TEST);
+
+  to_window(96, 40, 0.0f);
+  show_texture(first, 2.0f, 2.0f, 34.0f, 34.0f);
+  show_texture(second, 36.0f, 2.0f, 68.0f, 34.0f);
+  glBindTexture(GL_TEXTURE_2D, depth);
+  glTexParameteri(GL_TEXTURE_2D, GL_DEPTH_TEXTURE_MODE_ARB, GL_LUMINANCE);
+  show_texture(depth, 70.0f, 2.0f, 86.0f, 18.0f);
+}
