@@ -8,6 +8,7 @@
 #include "gl_shim/context.hpp"
 #include "gl_shim/dispatch.hpp"
 #include "gl_shim/gl_impl_decls.hpp"
+#include "gl_shim/state/extension_override.hpp"
 #include "gl_shim/state/query_values.hpp"
 
 namespace glpt {
@@ -314,7 +315,7 @@ const GLubyte* glGetString(Context& ctx, GLenum name) {
       s = "1.5 glpt " GLPT_VERSION_STRING;
       break;
     case GL_EXTENSIONS:
-      s = gl_extensions_string();
+      s = extensions_string();
       break;
     default:
       record_error(ctx, GL_INVALID_ENUM);

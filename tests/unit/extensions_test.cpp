@@ -6,6 +6,7 @@
 #include <string>
 
 #include "gl_shim/dispatch.hpp"
+#include "gl_shim/state/extension_override.hpp"
 #include "gl_test_context.hpp"
 
 namespace {
@@ -44,12 +45,23 @@ TEST_F(GlTest, ExtensionStringListsGl1xExtensionsEachFollowedByASpace) {
     EXPECT_TRUE(names.insert(name).second) << "listed twice: " << name;
   }
   // What programs of the GL 1.x era look for (and piglit's GL 1.x tests require).
-  for (const char* wanted : {"GL_ARB_multitexture", "GL_ARB_window_pos", "GL_ARB_depth_texture",
-                             "GL_EXT_blend_minmax", "GL_ARB_vertex_buffer_object",
-                             "GL_ARB_occlusion_query"})
+  for (const char* wanted :
+       {"GL_ARB_multitexture", "GL_ARB_window_pos", "GL_ARB_depth_texture", "GL_EXT_blend_minmax",
+        "GL_ARB_vertex_buffer_object", "GL_ARB_occlusion_query"})
     EXPECT_TRUE(names.count(wanted)) << wanted;
   // Not implemented: not advertised.
   EXPECT_FALSE(names.count("GL_ARB_imaging"));
 }
 
 }  // namespace
+
+// GLPT_EXTENSION_OVERRIDE, as MESA_EXTENSION_OVERRIDE: "+NAME" (or a bare name) adds an extension
+// not advertised, "-NAME" hides one; the result keeps Mesa's form.
+TEST(ExtensionOverride, AddsAndRemovesNames) {
+  const std::string base = "GL_A GL_B GL_C ";
+  EXPECT_EQ(glpt::apply_extension_override(base, ""), base);
+  EXPECT_EQ(glpt::apply_extension_override(base, "+GL_D"), "GL_A GL_B GL_C GL_D ");
+  EXPECT_EQ(glpt::apply_extension_override(base, "-GL_B"), "GL_A GL_C ");
+  EXPECT_EQ(glpt::apply_extension_override(base, "  -GL_A   GL_E +GL_C - + -GL_X"),
+            "GL_B GL_C GL_E ");
+}
