@@ -3,6 +3,8 @@
 // rendered in two passes (the second samples the first's result); a mipmap level drawn into and
 // the chain generated from level 0; glReadPixels and glCopyTexSubImage from a framebuffer
 // object; completeness answers drawn as swatches.
+#include <array>
+
 #include "scene_util.hpp"
 
 namespace {
@@ -67,6 +69,20 @@ void clear_framebuffer(int width, int height, float r, float g, float b) {
 void status_swatch(GLenum status, GLenum expected, float x, float y) {
   glColor3f(status == expected ? 0.0f : 1.0f, status == expected ? 1.0f : 0.0f, 0.0f);
   quad(x, y, x + 6.0f, y + 6.0f);
+}
+
+// A size x size texture with nearest-mipmap filtering, its level 0 drawn by a framebuffer object
+// (left as the bound one): cleared to `clear`, one half (the left or the right) in `half`.
+GLuint two_halves_into_mipmapped(int size, std::array<float, 3> clear, std::array<float, 3> half,
+                                 bool left) {
+  const GLuint tex = color_texture(size, size);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
+  framebuffer_for(tex, size, size, false);
+  clear_framebuffer(size, size, clear[0], clear[1], clear[2]);
+  glColor3f(half[0], half[1], half[2]);
+  const float s = float(size);
+  quad(left ? 0.0f : s / 2.0f, 0.0f, left ? s / 2.0f : s, s);
+  return tex;
 }
 
 }  // namespace
@@ -183,12 +199,7 @@ GLPT_SCENE(fbo_read_copy_and_status, 96, 48) {
 // A framebuffer object drawing into level 0 of a mipmapped texture, glGenerateMipmapEXT, and the
 // texture minified so that its smaller levels show.
 GLPT_SCENE(fbo_generate_mipmap, 96, 48) {
-  const GLuint tex = color_texture(32, 32);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
-  framebuffer_for(tex, 32, 32, false);
-  clear_framebuffer(32, 32, 0.9f, 0.9f, 0.2f);
-  glColor3f(0.1f, 0.2f, 0.9f);
-  quad(0.0f, 0.0f, 16.0f, 32.0f);
+  const GLuint tex = two_halves_into_mipmapped(32, {0.9f, 0.9f, 0.2f}, {0.1f, 0.2f, 0.9f}, true);
   to_window(96, 48);
   glBindTexture(GL_TEXTURE_2D, tex);
   glGenerateMipmapEXT(GL_TEXTURE_2D);
@@ -247,12 +258,8 @@ GLPT_SCENE(fbo_stored_components_and_reads, 112, 48) {
   glColor3f(1.0f, 0.8f, 0.1f);
   quad(4.0f, 0.0f, 8.0f, 4.0f);
   // Level 0 drawn, then its mipmaps generated before the object is unbound.
-  const GLuint mipmapped = color_texture(16, 16);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
-  framebuffer_for(mipmapped, 16, 16, false);
-  clear_framebuffer(16, 16, 0.9f, 0.1f, 0.1f);
-  glColor3f(0.1f, 0.9f, 0.9f);
-  quad(8.0f, 0.0f, 16.0f, 16.0f);
+  const GLuint mipmapped =
+      two_halves_into_mipmapped(16, {0.9f, 0.1f, 0.1f}, {0.1f, 0.9f, 0.9f}, false);
   glBindTexture(GL_TEXTURE_2D, mipmapped);
   glGenerateMipmapEXT(GL_TEXTURE_2D);
 
