@@ -10,6 +10,7 @@
 #include "gl_shim/frame/heap_tuning.hpp"
 #include "gl_shim/framebuffers/framebuffer_rendering.hpp"
 #include "gl_shim/gl_impl_decls.hpp"
+#include "rt_core/vk/vk_device.hpp"
 
 namespace glpt {
 
@@ -29,6 +30,9 @@ Context::Context(const Context* shared)
 
 Context::~Context() {
   if (t_current_context == this) t_current_context = nullptr;
+  // Destroyed from an exit handler: the renderer's Vulkan objects are left to the process's end
+  // (destroying pipelines frees JIT code through LLVM, which may be torn down already).
+  if (output && rt::process_exiting()) static_cast<void>(output.release());
   if (std::getenv("GLPT_STATS") == nullptr) return;
   uint64_t total = 0;
   for (size_t i = 0; i < unimplemented_calls.size(); ++i) {
@@ -129,8 +133,7 @@ namespace {
 rec::DrawableConfig current_drawable(Context& ctx) {
   WindowTarget* target = render_target(ctx);
   rec::DrawableConfig drawable = target->config();
-  if (!target->query_size(&drawable.width, &drawable.height))
-    drawable.width = drawable.height = 0;
+  if (!target->query_size(&drawable.width, &drawable.height)) drawable.width = drawable.height = 0;
   return drawable;
 }
 
@@ -175,6 +178,12 @@ void render_held_before(Context& ctx, const rec::DrawableConfig& drawable, bool 
 }  // namespace
 
 bool execute_record(Context& ctx) {
+  if (rt::process_exiting()) {
+    // Released or destroyed from an exit handler: nothing rendered now can be seen, and the
+    // driver's compiler may already be torn down (rt::process_exiting).
+    discard_record(ctx);
+    return false;
+  }
   if (!ensure_output(ctx)) {
     if (ctx.clear_fallback && ctx.target) {  // the record is consumed all the same
       ctx.recorder.seal();

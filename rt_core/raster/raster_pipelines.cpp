@@ -1,12 +1,14 @@
 #include "rt_core/raster/raster_pipelines.hpp"
 
 #include <array>
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "raster_ff_clip_vert_spv.h"
@@ -202,9 +204,28 @@ VkPipeline RasterPipelines::get(const PipelineKey& full_key, bool* created) {
     if (created) *created = false;
     return it->second.get();
   }
+  // GLPT_PIPELINE_LOG=1: each pipeline's state before its compile and the compile's time, to find
+  // which state makes a program stall on a compile.
+  const char* log = std::getenv("GLPT_PIPELINE_LOG");
+  const bool logging = log != nullptr && *log == '1';
+  if (logging) {
+    std::string constants;
+    for (uint32_t c : key.constants) constants += ' ' + std::to_string(c);
+    std::fprintf(stderr,
+                 "glpt: pipeline %zu: topology %u flat %u clip %u unfilled %u pixels %u gbuffer %u "
+                 "blend %u attachments %u constants%s\n",
+                 pipelines_.size() + 1, key.topology, key.flat, key.clip_variant, key.unfilled,
+                 key.pixels, key.gbuffer, key.blend, key.attachments, constants.c_str());
+  }
+  const auto started = std::chrono::steady_clock::now();
   VkPipeline pipeline = create(key);
   pipelines_.emplace(key, vk::Pipeline(pipeline, {device_.handle()}));
   if (created) *created = true;
+  if (logging)
+    std::fprintf(
+        stderr, "glpt: pipeline %zu compiled in %.1f ms\n", pipelines_.size(),
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started)
+            .count());
   return pipeline;
 }
 

@@ -4,10 +4,12 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <mutex>
 #include <new>
 #include <vector>
 
@@ -420,6 +422,19 @@ std::atomic<uint64_t> g_devices_created{0};  // a statistic, for tests and GLPT_
 
 uint64_t VulkanDevice::devices_created() { return g_devices_created.load(); }
 
+namespace {
+
+std::atomic<bool>& exiting_flag() {
+  static std::atomic<bool> exiting{false};  // process-wide by nature, like exit() itself
+  return exiting;
+}
+
+void mark_process_exiting() { exiting_flag().store(true, std::memory_order_release); }
+
+}  // namespace
+
+bool process_exiting() { return exiting_flag().load(std::memory_order_acquire); }
+
 std::unique_ptr<VulkanDevice> VulkanDevice::create(const DeviceOptions& options) {
   std::unique_ptr<VulkanDevice> self(new VulkanDevice());
   ++g_devices_created;
@@ -696,6 +711,9 @@ std::unique_ptr<VulkanDevice> VulkanDevice::create(const DeviceOptions& options)
     self->timestamp_period_ns_ = self->limits_.timestampPeriod;
     self->timestamp_mask_ = valid_bits >= 64 ? ~uint64_t{0} : (uint64_t{1} << valid_bits) - 1;
   }
+  // Registered after the driver (and LLVM) loaded, so it runs before their teardown at exit.
+  static std::once_flag exit_handler;
+  std::call_once(exit_handler, [] { std::atexit(mark_process_exiting); });
   return self;
 }
 

@@ -20,6 +20,14 @@
 
 namespace glpt::rt {
 
+// True once the process is exiting: exit() has run the handlers registered after the Vulkan
+// driver was loaded, and the driver's own (lavapipe's LLVM: its global state is torn down by
+// static destructors registered when it was loaded) may run next or already have. A program
+// whose exit handler releases or destroys its GL context (piglit's teardown, through
+// glXMakeCurrent) must then not render or compile: LLVM used after its teardown hangs in code
+// generation or crashes. Set by a handler VulkanDevice::create registers.
+bool process_exiting();
+
 // How to get a Vulkan driver with ray queries on Debian 12 (for messages).
 const char* vulkan_install_hint();
 

@@ -64,6 +64,7 @@ bool Renderer::write_depth(DrawableBuffers&, const rec::DrawableConfig&, const s
   std::abort();
 }
 void Renderer::start_independent_frame(uint64_t, uint32_t) { std::abort(); }
+bool process_exiting() { return false; }
 
 }  // namespace rt
 }  // namespace glpt
