@@ -59,8 +59,8 @@ def list_tests(groups, pattern):
 
 
 # Why a test skipped, from its output: the requirement it names.
-SKIP_REASON = re.compile(r"(Test requires \S+|requires either .*|Requested a OpenGL [0-9.]+|"
-                         r"GLSL not supported|Function \"\w+\" not supported|\S.* is required for .*)")
+SKIP_REASON = re.compile(r"(Test requires GL version [0-9.]+|Test requires \S+|requires either .*|"
+                         r"Requested a OpenGL [0-9.]+|GLSL not supported|GLSL .* not supported|Function \"\w+\" not supported|\S.* is required for .*)")
 # Why glpt does not pass a test Mesa passes, where that is understood (measured; shown in the
 # note column when the test does not pass). Remove a line when its test passes.
 KNOWN_DIFFERENCES = {
@@ -83,7 +83,8 @@ KNOWN_DIFFERENCES = {
         "needs pixel buffer objects (GL 2.1) without asking for them",
 }
 
-BEYOND_GL15 = re.compile(r"OpenGL [2-9]|GLSL|requires (GL_\w+)|Function|requires (GLX_\w+)")
+BEYOND_GL15 = re.compile(r"OpenGL [2-9]|GL version [2-9]|GLSL|requires (GL_\w+)|Function|"
+                         r"requires (GLX_\w+)")
 # Tests that skip on glpt without naming their requirement in a way BEYOND_GL15 reads, but that
 # need more than GL 1.5 and GLX 1.4 (read in piglit's sources): shown as beyond, with the reason.
 BEYOND_BY_SOURCE = {
