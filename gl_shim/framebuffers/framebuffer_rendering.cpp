@@ -85,6 +85,15 @@ bool target_config(const Context& ctx, const FramebufferObject& fb, rec::Drawabl
   return true;
 }
 
+// The texel at (x, y) of an attachment's image (a 3-D texture's slice `zoffset`), or null where
+// the image holds none.
+const uint8_t* attached_texel(const rec::TextureImage& image, int zoffset, size_t texel_bytes,
+                              uint32_t x, uint32_t y) {
+  const size_t i =
+      size_t(std::max(zoffset, 0)) * image.width * image.height + size_t{y} * image.width + x;
+  return (i + 1) * texel_bytes <= image.texels.size() ? &image.texels[i * texel_bytes] : nullptr;
+}
+
 uint64_t content_version(TextureObject& texture) { return texture.snapshot()->content_version; }
 
 // Loads the drawn colour attachment's texture image into the target where the target does not
@@ -102,13 +111,11 @@ void load_color(Context& ctx, const FramebufferObject& fb, FramebufferRendering&
   const rec::DrawableConfig config = r.target->config();
   std::vector<uint8_t> rgba(size_t{config.width} * config.height * 4, 0);
   const size_t texel = rec::texel_bytes(info->texel_format());
-  // A 3-D texture's slice (zoffset; 0 for other targets).
-  const size_t slice = size_t(std::max(a->zoffset, 0)) * image->width * image->height;
   for (uint32_t y = 0; y < config.height && y < image->height; ++y)
     for (uint32_t x = 0; x < config.width && x < image->width; ++x) {
-      const size_t i = slice + size_t{y} * image->width + x;
-      if ((i + 1) * texel > image->texels.size()) continue;
-      const glm::vec4 c = decode_color_texel(*info, &image->texels[i * texel]);
+      const uint8_t* t = attached_texel(*image, a->zoffset, texel, x, y);
+      if (t == nullptr) continue;
+      const glm::vec4 c = decode_color_texel(*info, t);
       for (int k = 0; k < 4; ++k)
         rgba[(size_t{y} * config.width + x) * 4 + size_t(k)] =
             uint8_t(std::lround(std::clamp(c[k], 0.0f, 1.0f) * 255.0f));
@@ -139,13 +146,10 @@ void load_depth(Context& ctx, const FramebufferObject& fb, FramebufferRendering&
   const rec::DrawableConfig config = r.target->config();
   std::vector<float> depth(size_t{config.width} * config.height, 1.0f);
   const size_t texel = rec::texel_bytes(info->texel_format());
-  const size_t slice = size_t(std::max(a.zoffset, 0)) * image->width * image->height;
   for (uint32_t y = 0; y < config.height && y < image->height; ++y)
-    for (uint32_t x = 0; x < config.width && x < image->width; ++x) {
-      const size_t i = slice + size_t{y} * image->width + x;
-      if ((i + 1) * texel > image->texels.size()) continue;
-      depth[size_t{y} * config.width + x] = decode_depth_texel(&image->texels[i * texel]);
-    }
+    for (uint32_t x = 0; x < config.width && x < image->width; ++x)
+      if (const uint8_t* t = attached_texel(*image, a.zoffset, texel, x, y))
+        depth[size_t{y} * config.width + x] = decode_depth_texel(t);
   std::string error;
   std::lock_guard lock(r.target->mutex());
   if (!ctx.output->renderer().write_depth(r.target->buffers(), config, depth, &error)) {
@@ -318,16 +322,14 @@ bool read_other_attachment(Context& ctx, uint32_t read_buffer, int32_t x, int32_
   out.height = height;
   out.color.assign(size_t{width} * height, glm::vec4(0.0f));
   const size_t texel = rec::texel_bytes(info->texel_format());
-  const size_t slice = size_t(std::max(a->zoffset, 0)) * image->width * image->height;
   for (uint32_t row = 0; row < height; ++row)
     for (uint32_t col = 0; col < width; ++col) {
       const int64_t tx = int64_t{x} + col, ty = int64_t{y} + row;
       if (tx < 0 || ty < 0 || tx >= int64_t{image->width} || ty >= int64_t{image->height}) continue;
-      const size_t i = slice + size_t(ty) * image->width + size_t(tx);
-      if ((i + 1) * texel > image->texels.size()) continue;
+      const uint8_t* t = attached_texel(*image, a->zoffset, texel, uint32_t(tx), uint32_t(ty));
+      if (t == nullptr) continue;
       // Decoded as sampled (luminance replicated), then shown as stored.
-      out.color[size_t{row} * width + col] =
-          stored_view(*s, decode_color_texel(*info, &image->texels[i * texel]));
+      out.color[size_t{row} * width + col] = stored_view(*s, decode_color_texel(*info, t));
     }
   mark_inside_drawable(out, x, y, image->width, image->height);
   return true;

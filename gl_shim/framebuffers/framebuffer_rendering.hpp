@@ -6,8 +6,9 @@
 // object's (swapped in by enter_framebuffer, out by leave_framebuffer), so every command records
 // into it unchanged; the context's window stays ctx.target. Leaving renders what was recorded on
 // the target and writes the colour (and a depth texture's depth) back into the attached texture
-// images, as glCopyTexSubImage would without pixel transfer; entering loads the attached colour
-// texture into the target when its contents changed since (or the target is new). One context at
+// images, as glCopyTexSubImage would without pixel transfer; entering (and the first draw after
+// a texture command) loads the attached colour texture and a depth texture into the target when
+// their contents changed since (or the target is new). One context at
 // a time may have an object bound: its bundle is the object's (two contexts of a share group
 // drawing into one object at once are not supported).
 #pragma once
