@@ -128,14 +128,14 @@ bool ensure_output(Context& ctx) {
   return true;
 }
 
-namespace {
-
 rec::DrawableConfig current_drawable(Context& ctx) {
   WindowTarget* target = render_target(ctx);
   rec::DrawableConfig drawable = target->config();
   if (!target->query_size(&drawable.width, &drawable.height)) drawable.width = drawable.height = 0;
   return drawable;
 }
+
+namespace {
 
 void start_new_record(Context& ctx) {
   ctx.recorder.clear();

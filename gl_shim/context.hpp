@@ -21,11 +21,11 @@
 #include "gl_shim/frame/frame_output.hpp"
 #include "gl_shim/frame/frame_recorder.hpp"
 #include "gl_shim/frame/state_snapshot.hpp"
+#include "gl_shim/framebuffers/framebuffer_objects.hpp"
 #include "gl_shim/geometry/vertex_assembly.hpp"
 #include "gl_shim/gl_commands.hpp"
 #include "gl_shim/pixels/bitmap_cache.hpp"
 #include "gl_shim/pixels/raster_position.hpp"
-#include "gl_shim/framebuffers/framebuffer_objects.hpp"
 #include "gl_shim/queries/query_objects.hpp"
 #include "gl_shim/render_modes/render_modes.hpp"
 #include "gl_shim/state/attrib_stack.hpp"
@@ -163,6 +163,9 @@ void discard_record(Context& ctx);
 // Creates the frame output (the renderer) on first use; false when there is nothing to render to
 // or no renderer.
 bool ensure_output(Context& ctx);
+// The configuration and current size of what the context's record renders to (render_target,
+// which must exist).
+rec::DrawableConfig current_drawable(Context& ctx);
 
 // A primitive or pixel command was recorded: keeps a frame that never ends from growing without
 // bound by executing it early (invisible in raster mode).

@@ -305,6 +305,15 @@ bool Renderer::write_depth(DrawableBuffers& buffers, const rec::DrawableConfig& 
   });
 }
 
+bool Renderer::write_pixels(DrawableBuffers& buffers, const rec::DrawableConfig& drawable,
+                            const PixelWrite& pixels, std::string* error) {
+  std::lock_guard lock(impl_->mutex);
+  return guarded("write failed", error, [&] {
+    impl_->raster().write_pixels(buffers, drawable, pixels);
+    return true;
+  });
+}
+
 bool Renderer::read_depth(DrawableBuffers& buffers, int32_t x, int32_t y, uint32_t width,
                           uint32_t height, std::vector<float>& depth, std::string* error) {
   std::lock_guard lock(impl_->mutex);

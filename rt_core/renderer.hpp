@@ -48,6 +48,18 @@ struct QuerySamples {
   uint64_t samples = 0;
 };
 
+// A rectangle of pixels that replaces what the buffers hold there, past every fragment operation
+// (glBlitFramebuffer's destination). Each of colour, depth and stencil is written where it is not
+// empty: width * height values, rows bottom to top. The rectangle lies inside the drawable.
+struct PixelWrite {
+  int32_t x = 0, y = 0;
+  uint32_t width = 0, height = 0;
+  bool front = false, back = false;  // the colour buffers `rgba` goes to (single-buffered: front)
+  std::vector<uint8_t> rgba;         // RGBA8
+  std::vector<float> depth;          // window z in [0, 1]
+  std::vector<uint8_t> stencil;
+};
+
 // The buffers of one GL drawable (colour front and back, depth/stencil, accumulation; see
 // raster/drawable_buffers.hpp). They belong to the drawable: every context drawing to it (with
 // any renderer of the process) draws into and reads the same buffers. Created empty; the first
@@ -96,6 +108,10 @@ class Renderer {
   // a framebuffer object's target takes the depth texture attached to it.
   bool write_depth(DrawableBuffers& buffers, const rec::DrawableConfig& drawable,
                    const std::vector<float>& depth, std::string* error);
+
+  // Writes `pixels` into `buffers` (created for `drawable` if need be).
+  bool write_pixels(DrawableBuffers& buffers, const rec::DrawableConfig& drawable,
+                    const PixelWrite& pixels, std::string* error);
 
   // glXSwapBuffers of a double-buffered drawable: the front buffer takes the back buffer's
   // contents, and the back buffer keeps them (Mesa's software swap does the same).

@@ -38,7 +38,8 @@ EXTENSION_GROUPS = (r"^spec@((arb_point_sprite|arb_point_parameters|ext_stencil_
                     r"arb_shadow|arb_texture_cube_map|ext_blend_minmax|ext_blend_subtract|"
                     r"ext_blend_color|arb_occlusion_query|arb_vertex_buffer_object|"
                     r"ext_compiled_vertex_array|ext_draw_range_elements|ext_multi_draw_arrays|"
-                    r"arb_texture_compression|ext_texture_compression_s3tc|ext_framebuffer_object)@|"
+                    r"arb_texture_compression|ext_texture_compression_s3tc|ext_framebuffer_object|"
+                    r"ext_framebuffer_blit)@|"
                     # ARB_texture_non_power_of_two has no group of its own.
                     r"!opengl 2\.0@tex3d-npot$)")
 

@@ -210,6 +210,7 @@ void glDrawBuffer(Context& ctx, GLenum buf) {
 }
 
 void glReadBuffer(Context& ctx, GLenum buf) {
+  const ReadFramebufferScope read(ctx);  // the read framebuffer's read buffer
   if (ctx.framebuffers.entered) {
     // Reads come from the target, which holds the drawn attachment.
     if (framebuffer_object_buffer(ctx, buf)) ctx.raster.ops.read_buffer = buf;

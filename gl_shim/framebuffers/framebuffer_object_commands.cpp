@@ -118,15 +118,36 @@ std::array<GLint, 6> renderbuffer_bits(GLenum base) {
   }
 }
 
-// The bound framebuffer object for `target` (null: the window), or false for a target other
-// than GL_FRAMEBUFFER_EXT (GL_INVALID_ENUM, raised here).
+// The framebuffer bound for `target` (null: the window): GL_FRAMEBUFFER_EXT and
+// GL_DRAW_FRAMEBUFFER_EXT name the draw framebuffer, GL_READ_FRAMEBUFFER_EXT the read one
+// (EXT_framebuffer_blit); false for any other target (GL_INVALID_ENUM, raised here).
 bool framebuffer_target(Context& ctx, GLenum target, FramebufferObject** out) {
-  if (target != GL_FRAMEBUFFER_EXT) {
-    record_error(ctx, GL_INVALID_ENUM);
-    return false;
+  switch (target) {
+    case GL_FRAMEBUFFER_EXT:
+    case GL_DRAW_FRAMEBUFFER_EXT:
+      *out = ctx.framebuffers.framebuffer.get();
+      return true;
+    case GL_READ_FRAMEBUFFER_EXT:
+      *out = ctx.framebuffers.read_framebuffer.get();
+      return true;
+    default:
+      record_error(ctx, GL_INVALID_ENUM);
+      return false;
   }
-  *out = ctx.framebuffers.framebuffer.get();
-  return true;
+}
+
+// Changes the attachments of `fb` under the store's lock. The entered (draw) framebuffer is left
+// first, since what was drawn so far belongs to the old attachments, and entered again after (a
+// new target size or image); another (a read framebuffer) is judged again when next entered.
+template <typename Change>
+void change_attachments(Context& ctx, FramebufferObject& fb, Change change) {
+  const bool entered = ctx.framebuffers.framebuffer.get() == &fb;
+  if (entered) leave_framebuffer(ctx);
+  {
+    std::lock_guard lock(ctx.framebuffers.store->mutex);
+    change();
+  }
+  if (entered) enter_framebuffer(ctx);
 }
 
 // The attachment point `attachment` names, or null (GL_INVALID_OPERATION for a colour attachment
@@ -230,13 +251,10 @@ void framebuffer_texture(Context& ctx, int dims, GLenum target, GLenum attachmen
   if (fb == nullptr) return record_error(ctx, GL_INVALID_OPERATION);  // the window's
   Attachment* point = attachment_point(ctx, *fb, attachment);
   if (point == nullptr) return;
-  leave_framebuffer(ctx);  // what was drawn so far belongs to the old attachments
-  {
-    std::lock_guard lock(ctx.framebuffers.store->mutex);
+  change_attachments(ctx, *fb, [&] {
     set_attachment_to_texture(*point, object, textarget, level, dims == 3 ? zoffset : 0);
     if (attachment == kDepthStencilAttachment) fb->stencil = *point;
-  }
-  enter_framebuffer(ctx);
+  });
 }
 
 // ARB_framebuffer_object's attachment queries, which Mesa answers through the EXT command too.
@@ -250,21 +268,12 @@ bool is_size_query(GLenum pname) {
   return pname >= kAttachmentRedSize && pname <= kAttachmentStencilSize;
 }
 
-// Bits of red, green, blue, alpha, depth and stencil an attachment stores (0 where it holds no
-// such component; luminance and intensity count as none, as Mesa answers).
-std::array<GLint, 6> attachment_bits(const Attachment& a) {
-  if (a.type == GL_RENDERBUFFER_EXT) return a.renderbuffer->bits;
-  const InternalFormatInfo* info = a.type == GL_TEXTURE ? attached_texture_format(a) : nullptr;
-  if (info == nullptr) return {};
-  return {info->red, info->green, info->blue, info->alpha, info->depth, info->stencil};
-}
-
 // The window's buffers (GL 3.0 6.1.13 as Mesa answers it for the default framebuffer): an
 // existing buffer is GL_FRAMEBUFFER_DEFAULT, one the visual lacks GL_NONE; they have no name,
 // level or face (GL_INVALID_ENUM), and sizes only where they exist (GL_INVALID_OPERATION).
 GLenum window_attachment_parameter(const Context& ctx, GLenum attachment, GLenum pname,
                                    GLint& value) {
-  const rec::DrawableConfig& d = ctx.drawable;
+  const rec::DrawableConfig& d = window_drawable(ctx);
   bool exists = false, color = false;
   switch (attachment) {
     case GL_FRONT:
@@ -366,6 +375,13 @@ GLenum object_attachment_parameter(Context& ctx, FramebufferObject& fb, GLenum a
 
 }  // namespace
 
+std::array<GLint, 6> attachment_bits(const Attachment& a) {
+  if (a.type == GL_RENDERBUFFER_EXT) return a.renderbuffer->bits;
+  const InternalFormatInfo* info = a.type == GL_TEXTURE ? attached_texture_format(a) : nullptr;
+  if (info == nullptr) return {};
+  return {info->red, info->green, info->blue, info->alpha, info->depth, info->stencil};
+}
+
 const rec::TextureImage* attached_image(const Attachment& a) {
   if (a.type != GL_TEXTURE || !a.texture) return nullptr;
   const int face =
@@ -439,15 +455,17 @@ GLenum framebuffer_status(const FramebufferObject& fb, uint32_t draw_buffer, uin
 }
 
 void detach_deleted_texture(Context& ctx, const TextureObject& texture) {
-  FramebufferObject* fb = ctx.framebuffers.framebuffer.get();
-  if (fb == nullptr) return;
   std::lock_guard lock(ctx.framebuffers.store->mutex);
   auto detach = [&](Attachment& a) {
     if (a.texture.get() == &texture) a = Attachment{};
   };
-  for (Attachment& a : fb->color) detach(a);
-  detach(fb->depth);
-  detach(fb->stencil);
+  for (FramebufferObject* fb :
+       {ctx.framebuffers.framebuffer.get(), ctx.framebuffers.read_framebuffer.get()}) {
+    if (fb == nullptr) continue;
+    for (Attachment& a : fb->color) detach(a);
+    detach(fb->depth);
+    detach(fb->stencil);
+  }
 }
 
 namespace impl {
@@ -485,11 +503,13 @@ void glDeleteRenderbuffers(Context& ctx, GLsizei n, const GLuint* renderbuffers)
     const std::shared_ptr<Renderbuffer> object = it->second;
     if (object) {
       if (ctx.framebuffers.renderbuffer == object) ctx.framebuffers.renderbuffer.reset();
-      // Detached from the bound framebuffer object only (EXT_framebuffer_object 4.4.2.2).
-      if (FramebufferObject* fb = ctx.framebuffers.framebuffer.get()) {
-        auto detach = [&](Attachment& a) {
-          if (a.renderbuffer == object) a = Attachment{};
-        };
+      // Detached from the bound framebuffer objects only (EXT_framebuffer_object 4.4.2.2).
+      auto detach = [&](Attachment& a) {
+        if (a.renderbuffer == object) a = Attachment{};
+      };
+      for (FramebufferObject* fb :
+           {ctx.framebuffers.framebuffer.get(), ctx.framebuffers.read_framebuffer.get()}) {
+        if (fb == nullptr) continue;
         for (Attachment& a : fb->color) detach(a);
         detach(fb->depth);
         detach(fb->stencil);
@@ -589,7 +609,9 @@ GLboolean glIsFramebuffer(Context& ctx, GLuint framebuffer) {
 }
 
 void glBindFramebufferEXT(Context& ctx, GLenum target, GLuint framebuffer) {
-  if (target != GL_FRAMEBUFFER_EXT) return record_error(ctx, GL_INVALID_ENUM);
+  const bool draw = target == GL_FRAMEBUFFER_EXT || target == GL_DRAW_FRAMEBUFFER_EXT;
+  const bool read = target == GL_FRAMEBUFFER_EXT || target == GL_READ_FRAMEBUFFER_EXT;
+  if (!draw && !read) return record_error(ctx, GL_INVALID_ENUM);
   std::shared_ptr<FramebufferObject> object;
   if (framebuffer != 0) {
     FramebufferStore& store = *ctx.framebuffers.store;
@@ -598,7 +620,8 @@ void glBindFramebufferEXT(Context& ctx, GLenum target, GLuint framebuffer) {
     if (!named) named = std::make_shared<FramebufferObject>(framebuffer);
     object = named;
   }
-  if (object == ctx.framebuffers.framebuffer) return;
+  if (read) ctx.framebuffers.read_framebuffer = object;
+  if (!draw || object == ctx.framebuffers.framebuffer) return;
   leave_framebuffer(ctx);  // what was drawn into the last one goes to its textures
   ctx.framebuffers.framebuffer = std::move(object);
   enter_framebuffer(ctx);
@@ -617,9 +640,11 @@ void glDeleteFramebuffers(Context& ctx, GLsizei n, const GLuint* framebuffers) {
       object = it->second;
       store.framebuffers.erase(it);
     }
+    if (object && ctx.framebuffers.read_framebuffer == object)
+      ctx.framebuffers.read_framebuffer.reset();  // the window again
     if (object && ctx.framebuffers.framebuffer == object) {
       leave_framebuffer(ctx);
-      ctx.framebuffers.framebuffer.reset();  // the window again
+      ctx.framebuffers.framebuffer.reset();
     }
   }
 }
@@ -642,9 +667,9 @@ GLenum glCheckFramebufferStatus(Context& ctx, GLenum target) {
   FramebufferObject* fb = nullptr;
   if (!framebuffer_target(ctx, target, &fb)) return 0;
   if (fb == nullptr) return GL_FRAMEBUFFER_COMPLETE_EXT;  // the window
+  const FramebufferBuffers buffers = buffers_of(ctx, fb);
   std::lock_guard lock(ctx.framebuffers.store->mutex);
-  // The bound object is entered: its draw and read buffers are the context's.
-  return framebuffer_status(*fb, ctx.raster.ops.draw_buffer, ctx.raster.ops.read_buffer);
+  return framebuffer_status(*fb, buffers.draw_buffer, buffers.read_buffer);
 }
 
 void glFramebufferTexture1D(Context& ctx, GLenum target, GLenum attachment, GLenum textarget,
@@ -682,17 +707,14 @@ void glFramebufferRenderbuffer(Context& ctx, GLenum target, GLenum attachment,
   if (attachment == kDepthStencilAttachment && rb && rb->width > 0 &&
       renderbuffer_base_format(rb->internal_format) != GL_DEPTH_STENCIL_EXT)
     return record_error(ctx, GL_INVALID_OPERATION);
-  leave_framebuffer(ctx);  // what was drawn so far belongs to the old attachments
-  {
-    std::lock_guard lock(ctx.framebuffers.store->mutex);
+  change_attachments(ctx, *fb, [&] {
     *point = Attachment{};
     if (rb) {
       point->type = GL_RENDERBUFFER_EXT;
       point->renderbuffer = rb;
     }
     if (attachment == kDepthStencilAttachment) fb->stencil = *point;
-  }
-  enter_framebuffer(ctx);
+  });
 }
 
 void glGetFramebufferAttachmentParameteriv(Context& ctx, GLenum target, GLenum attachment,

@@ -70,10 +70,14 @@ struct FramebufferStore {
   GLuint next_framebuffer_name = 1, next_renderbuffer_name = 1;
 };
 
-// What a context has bound (EXT_framebuffer_object's single binding point for each).
+// What a context has bound: EXT_framebuffer_blit's draw and read framebuffers
+// (GL_FRAMEBUFFER_EXT binds both) and the renderbuffer.
 struct FramebufferBindings {
   std::shared_ptr<FramebufferStore> store = std::make_shared<FramebufferStore>();
-  std::shared_ptr<FramebufferObject> framebuffer;  // null: the window
+  std::shared_ptr<FramebufferObject> framebuffer;  // the draw framebuffer; null: the window
+  // What reads (glReadPixels, glCopyTex*Image, glCopyPixels, glBlitFramebufferEXT) take their
+  // source from; null: the window. Usually the same object as `framebuffer`.
+  std::shared_ptr<FramebufferObject> read_framebuffer;
   std::shared_ptr<Renderbuffer> renderbuffer;
   // The bound object's recording bundle is the context's (framebuffer_rendering.hpp): between
   // enter_framebuffer and leave_framebuffer.
@@ -84,14 +88,18 @@ struct FramebufferBindings {
 // is undefined; and the format its texels are stored in.
 const rec::TextureImage* attached_image(const Attachment& attachment);
 const InternalFormatInfo* attached_texture_format(const Attachment& attachment);
+// Bits of red, green, blue, alpha, depth and stencil an attachment stores (0 where it holds no
+// such component; luminance and intensity count as none, as Mesa answers).
+std::array<GLint, 6> attachment_bits(const Attachment& attachment);
 
 // GL_FRAMEBUFFER_COMPLETE_EXT or the first reason a framebuffer object with these draw and read
 // buffers is incomplete (EXT_framebuffer_object 4.4.4.2); the window is always complete.
 GLenum framebuffer_status(const FramebufferObject& framebuffer, uint32_t draw_buffer,
                           uint32_t read_buffer);
 
-// A texture is being deleted: the bound framebuffer object's attachments of it become GL_NONE
-// (EXT_framebuffer_object 4.4.2.3: only the currently bound framebuffer is affected).
+// A texture is being deleted: the bound framebuffer objects' attachments of it become GL_NONE
+// (EXT_framebuffer_object 4.4.2.3: only the bound framebuffers are affected, the draw and the
+// read one with EXT_framebuffer_blit).
 void detach_deleted_texture(Context& ctx, const TextureObject& texture);
 
 }  // namespace glpt

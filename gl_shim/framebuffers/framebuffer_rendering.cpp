@@ -168,16 +168,58 @@ WindowTarget* render_target(Context& ctx) {
   return fb != nullptr && fb->rendering ? fb->rendering->target.get() : nullptr;
 }
 
+FramebufferRendering& rendering_of(FramebufferObject& fb) {
+  if (!fb.rendering) {
+    fb.rendering = std::make_shared<FramebufferRendering>();
+    fb.rendering->parked.draw_buffer = fb.rendering->parked.read_buffer = GL_COLOR_ATTACHMENT0_EXT;
+  }
+  return *fb.rendering;
+}
+
+FramebufferBuffers buffers_of(const Context& ctx, const FramebufferObject* fb) {
+  const FramebufferObject* entered =
+      ctx.framebuffers.entered ? ctx.framebuffers.framebuffer.get() : nullptr;
+  const RecordingBundle* parked = nullptr;
+  if (fb == entered) {
+    parked = nullptr;  // the context's own
+  } else if (fb == nullptr) {
+    parked = &entered->rendering->parked;  // the window's bundle, parked in the entered object
+  } else if (fb->rendering) {
+    parked = &fb->rendering->parked;
+  } else {
+    return {GL_COLOR_ATTACHMENT0_EXT, GL_COLOR_ATTACHMENT0_EXT};  // never bound for drawing
+  }
+  if (parked == nullptr) return {ctx.raster.ops.draw_buffer, ctx.raster.ops.read_buffer};
+  return {parked->draw_buffer, parked->read_buffer};
+}
+
+const rec::DrawableConfig& window_drawable(const Context& ctx) {
+  return ctx.framebuffers.entered ? ctx.framebuffers.framebuffer->rendering->parked.drawable
+                                  : ctx.drawable;
+}
+
+ReadFramebufferScope::ReadFramebufferScope(Context& ctx) : ctx_(ctx) {
+  FramebufferBindings& b = ctx.framebuffers;
+  if (b.read_framebuffer == b.framebuffer) return;
+  leave_framebuffer(ctx);
+  draw_ = std::move(b.framebuffer);
+  b.framebuffer = b.read_framebuffer;
+  enter_framebuffer(ctx);
+  swapped_ = true;
+}
+
+ReadFramebufferScope::~ReadFramebufferScope() {
+  if (!swapped_) return;
+  leave_framebuffer(ctx_);
+  ctx_.framebuffers.framebuffer = std::move(draw_);
+  enter_framebuffer(ctx_);
+}
+
 void enter_framebuffer(Context& ctx) {
   FramebufferObject* fb = ctx.framebuffers.framebuffer.get();
   if (fb == nullptr || ctx.framebuffers.entered) return;
   flush_bitmap_cache(ctx);
-  if (!fb->rendering) {
-    fb->rendering = std::make_shared<FramebufferRendering>();
-    fb->rendering->parked.draw_buffer = fb->rendering->parked.read_buffer =
-        GL_COLOR_ATTACHMENT0_EXT;
-  }
-  FramebufferRendering& r = *fb->rendering;
+  FramebufferRendering& r = rendering_of(*fb);
   swap_bundle(ctx, r.parked);
   ctx.framebuffers.entered = true;
   rec::DrawableConfig config;

@@ -57,6 +57,10 @@ struct FramebufferRendering {
   uint64_t loaded_version = 0;
 };
 
+// The object's rendering state, created (draw and read buffer GL_COLOR_ATTACHMENT0_EXT) when
+// first needed.
+FramebufferRendering& rendering_of(FramebufferObject& fb);
+
 // After `fb` became the bound framebuffer object (ctx.framebuffers.framebuffer).
 void enter_framebuffer(Context& ctx);
 // Before the bound framebuffer object stops being bound (or its attachments change): renders
@@ -85,6 +89,34 @@ bool read_other_attachment(Context& ctx, uint32_t read_buffer, int32_t x, int32_
                            uint32_t height, FramebufferPixels& out);
 // What the context's record renders to: the bound framebuffer object's target, else the window.
 WindowTarget* render_target(Context& ctx);
+
+// EXT_framebuffer_blit's read framebuffer, for the commands that read pixels. While a scope
+// lives, the context has entered its read framebuffer (that framebuffer's record, drawable, read
+// buffer and completeness are the context's), so reads take their source from it; the scope's
+// end enters the draw framebuffer again. Nothing happens when both bindings are one framebuffer
+// (the usual case). Entering a framebuffer object renders what was drawn into the one left and
+// writes it to its textures (reads are flush points anyway).
+class ReadFramebufferScope {
+ public:
+  explicit ReadFramebufferScope(Context& ctx);
+  ~ReadFramebufferScope();
+  ReadFramebufferScope(const ReadFramebufferScope&) = delete;
+  ReadFramebufferScope& operator=(const ReadFramebufferScope&) = delete;
+
+ private:
+  Context& ctx_;
+  bool swapped_ = false;
+  std::shared_ptr<FramebufferObject> draw_;
+};
+
+// The draw and read buffers of `fb` (null: the window) as its bundle holds them, wherever that
+// bundle is now (the context's while entered, else parked).
+struct FramebufferBuffers {
+  uint32_t draw_buffer = 0, read_buffer = 0;
+};
+FramebufferBuffers buffers_of(const Context& ctx, const FramebufferObject* fb);
+// The window's configuration (GLX visual or EGL config), wherever its bundle is now.
+const rec::DrawableConfig& window_drawable(const Context& ctx);
 
 // EXT_framebuffer_object: the width x height rectangle at the origin of the render target's front
 // colour (or depth) buffer becomes the texels of `object`'s image at `texture_target` (a cube

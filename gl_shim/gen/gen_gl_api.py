@@ -67,7 +67,7 @@ GL_EXTENSIONS = [
     "GL_EXT_texture3D", "GL_EXT_subtexture", "GL_EXT_copy_texture", "GL_EXT_compiled_vertex_array",
     "GL_EXT_draw_range_elements", "GL_EXT_multi_draw_arrays", "GL_EXT_fog_coord",
     "GL_EXT_secondary_color", "GL_EXT_point_parameters", "GL_EXT_stencil_two_side",
-    "GL_EXT_framebuffer_object",
+    "GL_EXT_framebuffer_object", "GL_EXT_framebuffer_blit",
 ]
 # Enums only (these extensions add no commands, or only enums matter).
 GL_ENUM_ONLY_EXTENSIONS = [
@@ -113,7 +113,7 @@ ADVERTISED_GL_EXTENSIONS = [
     "GL_EXT_blend_func_separate", "GL_EXT_blend_logic_op",
     "GL_EXT_blend_minmax", "GL_EXT_blend_subtract", "GL_EXT_compiled_vertex_array",
     "GL_EXT_copy_texture", "GL_EXT_draw_range_elements", "GL_EXT_fog_coord",
-    "GL_EXT_framebuffer_object",
+    "GL_EXT_framebuffer_blit", "GL_EXT_framebuffer_object",
     "GL_EXT_multi_draw_arrays", "GL_EXT_packed_depth_stencil", "GL_EXT_packed_pixels",
     "GL_EXT_point_parameters",
     "GL_EXT_rescale_normal", "GL_EXT_secondary_color", "GL_EXT_separate_specular_color",

@@ -12,11 +12,13 @@
 #include "gl/gl_enums.h"
 #include "gl_shim/context.hpp"
 #include "gl_shim/dispatch.hpp"
+#include "gl_shim/frame/framebuffer_access.hpp"
 #include "gl_shim/framebuffers/framebuffer_rendering.hpp"
 #include "gl_shim/gl_impl_decls.hpp"
 #include "gl_shim/pixels/bitmap_cache.hpp"
 #include "gl_shim/pixels/pixel_formats.hpp"
 #include "gl_shim/pixels/pixel_layout.hpp"
+#include "gl_shim/pixels/pixel_transfer.hpp"
 #include "gl_shim/pixels/pixel_unpack.hpp"
 #include "gl_shim/state/out_of_memory.hpp"
 
@@ -142,6 +144,55 @@ bool drawable_has(const rec::DrawableConfig& drawable, PixelClass kind) {
   }
 }
 
+// glCopyPixels whose read framebuffer is not the draw framebuffer (EXT_framebuffer_blit): the
+// rectangle is read from the read framebuffer (which must be complete and hold the buffer) and
+// drawn into the draw framebuffer as glDrawPixels draws an image, through pixel transfer once,
+// as glCopyPixels applies it.
+void copy_between_framebuffers(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height,
+                               PixelClass kind) {
+  const uint32_t w = uint32_t(std::min(width, kMaxImageSide));
+  const uint32_t h = uint32_t(std::min(height, kMaxImageSide));
+  if (size_t{w} * h > kMaxGroups) return record_error(ctx, GL_OUT_OF_MEMORY);
+  or_out_of_memory(ctx, [&] {
+    FramebufferPixels color, depth, stencil;
+    {
+      const ReadFramebufferScope read(ctx);
+      if (framebuffer_error(ctx) != GL_NO_ERROR || !drawable_has(ctx.drawable, kind))
+        return record_error(ctx, GL_INVALID_OPERATION);
+      const uint32_t buffer = ctx.raster.ops.read_buffer;
+      const bool depth_kind = kind == PixelClass::kDepth || kind == PixelClass::kDepthStencil;
+      const bool stencil_kind =
+          kind == PixelClass::kStencilIndex || kind == PixelClass::kDepthStencil;
+      if (!depth_kind && !stencil_kind &&
+          !read_framebuffer(ctx, rec::PixelKind::kColor, buffer, x, y, w, h, color))
+        return;
+      if (depth_kind && !read_framebuffer(ctx, rec::PixelKind::kDepth, buffer, x, y, w, h, depth))
+        return;
+      if (stencil_kind &&
+          !read_framebuffer(ctx, rec::PixelKind::kStencil, buffer, x, y, w, h, stencil))
+        return;
+    }
+    rec::DrawPixels d;
+    d.width = w;
+    d.height = h;
+    d.raster = with_mesa_tex_coords(rounded_raster_position(ctx), ctx.flushed_tex_coord, false);
+    if (kind == PixelClass::kColor) {
+      d.kind = rec::PixelKind::kColor;
+      d.color = mesa_transfer_colors(color.color, int32_t(w), int32_t(h), ctx.pixel_transfer);
+      return record(ctx, std::move(d));
+    }
+    rec::DrawPixels s = d;
+    s.kind = rec::PixelKind::kStencil;
+    s.stencil = std::move(stencil.stencil);
+    d.kind = rec::PixelKind::kDepth;
+    d.depth = std::move(depth.depth);
+    transfer_depth(ctx.pixel_transfer, d.depth);
+    if (kind == PixelClass::kDepthStencil)
+      return record_depth_stencil(ctx, std::move(s), std::move(d));
+    record(ctx, kind == PixelClass::kDepth ? std::move(d) : std::move(s));
+  });
+}
+
 }  // namespace
 
 namespace impl {
@@ -254,6 +305,8 @@ void glCopyPixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height,
     return;
   }
   if (!ctx.raster_position.valid || width == 0 || height == 0) return;
+  if (ctx.framebuffers.read_framebuffer != ctx.framebuffers.framebuffer)
+    return copy_between_framebuffers(ctx, x, y, width, height, kind);
   rec::CopyPixels c;
   c.raster = with_mesa_tex_coords(rounded_raster_position(ctx), ctx.flushed_tex_coord, false);
   c.kind = type == GL_DEPTH     ? rec::PixelKind::kDepth

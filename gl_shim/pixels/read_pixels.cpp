@@ -53,6 +53,7 @@ namespace impl {
 void glReadPixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height, GLenum format,
                   GLenum type, void* pixels) {
   if (width < 0 || height < 0) return record_error(ctx, GL_INVALID_VALUE);
+  const ReadFramebufferScope read(ctx);
   if (const GLenum e = framebuffer_error(ctx); e != GL_NO_ERROR) return record_error(ctx, e);
   if (const GLenum e = check_format_and_type(format, type); e != GL_NO_ERROR)
     return record_error(ctx, e);

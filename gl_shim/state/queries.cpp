@@ -7,6 +7,7 @@
 #include "gl/gl_enums.h"
 #include "gl_shim/context.hpp"
 #include "gl_shim/dispatch.hpp"
+#include "gl_shim/framebuffers/framebuffer_rendering.hpp"
 #include "gl_shim/gl_impl_decls.hpp"
 #include "gl_shim/state/extension_override.hpp"
 #include "gl_shim/state/query_values.hpp"
@@ -133,7 +134,8 @@ bool lookup(const Context& ctx, GLenum pname, Value* out) {
       *out = ints({double(ctx.raster.ops.draw_buffer)});
       return true;
     case GL_READ_BUFFER:
-      *out = ints({double(ctx.raster.ops.read_buffer)});
+      // The read framebuffer's (EXT_framebuffer_blit), usually the draw framebuffer.
+      *out = ints({double(buffers_of(ctx, ctx.framebuffers.read_framebuffer.get()).read_buffer)});
       return true;
     case GL_SCISSOR_BOX:
       *out = ints({double(ctx.raster.ops.scissor_box[0]), double(ctx.raster.ops.scissor_box[1]),

@@ -436,6 +436,7 @@ bool framebuffer_has_source(const Context& ctx, const InternalFormatInfo& info) 
 void copy_tex_image(Context& ctx, int dims, GLenum target, GLint level, GLenum internal_format,
                     GLint x, GLint y, GLsizei w, GLsizei h, GLint border) {
   flush_bitmap_cache(ctx);  // as Mesa's texture uploads and reads
+  const ReadFramebufferScope read(ctx);
   sync_framebuffer_textures(ctx);
   const std::optional<ImageTarget> t = image_target(target, dims, ProxyTargets::kRejected);
   if (!t) return record_error(ctx, GL_INVALID_ENUM);
@@ -468,6 +469,7 @@ void copy_tex_image(Context& ctx, int dims, GLenum target, GLint level, GLenum i
 void copy_tex_sub_image(Context& ctx, int dims, GLenum target, GLint level, GLint xoff, GLint yoff,
                         GLint zoff, GLint x, GLint y, GLsizei w, GLsizei h) {
   flush_bitmap_cache(ctx);  // as Mesa's texture uploads and reads
+  const ReadFramebufferScope read(ctx);
   sync_framebuffer_textures(ctx);
   const std::optional<ImageTarget> t = image_target(target, dims, ProxyTargets::kRejected);
   if (!valid_sub_image_args(ctx, t, level, w, h, 1)) return;

@@ -68,8 +68,13 @@ bool lookup_texture_and_pixel_state(const Context& ctx, GLenum pname, query::Val
     case GL_FRAMEBUFFER_BINDING_EXT:
       *out = ints({double(ctx.framebuffers.framebuffer ? ctx.framebuffers.framebuffer->name : 0)});
       return true;
+    case GL_READ_FRAMEBUFFER_BINDING_EXT:
+      *out = ints({double(
+          ctx.framebuffers.read_framebuffer ? ctx.framebuffers.read_framebuffer->name : 0)});
+      return true;
     case GL_RENDERBUFFER_BINDING_EXT:
-      *out = ints({double(ctx.framebuffers.renderbuffer ? ctx.framebuffers.renderbuffer->name : 0)});
+      *out =
+          ints({double(ctx.framebuffers.renderbuffer ? ctx.framebuffers.renderbuffer->name : 0)});
       return true;
     case GL_MAX_RENDERBUFFER_SIZE_EXT:
       *out = ints({kMaxRenderbufferSize});

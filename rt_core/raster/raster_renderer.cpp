@@ -1004,18 +1004,46 @@ void RasterRenderer::write_depth(DrawableBuffers& buffers, const rec::DrawableCo
   std::vector<uint32_t> words(depth.size());
   for (size_t i = 0; i < depth.size(); ++i)
     words[i] = uint32_t(std::lround(double(std::clamp(depth[i], 0.0f, 1.0f)) * 16777215.0));
-  write_depth_words(words);
+  write_depth_stencil(VK_IMAGE_ASPECT_DEPTH_BIT,
+                      {{0, 0}, {buffers_->config.width, buffers_->config.height}}, words.data(),
+                      words.size() * sizeof(uint32_t));
 }
 
-void RasterRenderer::write_depth_words(const std::vector<uint32_t>& words) {
-  const size_t bytes = words.size() * sizeof(uint32_t);
-  ensure_capacity(*device_, readback_, bytes,
+void RasterRenderer::write_pixels(DrawableBuffers& buffers, const rec::DrawableConfig& drawable,
+                                  const PixelWrite& pixels) {
+  ensure_buffers(buffers, drawable);
+  const rec::DrawableConfig& config = buffers_->config;
+  const size_t n = size_t{pixels.width} * pixels.height;
+  if (n == 0 || pixels.x < 0 || pixels.y < 0 || pixels.x + int64_t{pixels.width} > config.width ||
+      pixels.y + int64_t{pixels.height} > config.height)
+    return;
+  const VkRect2D rect{{pixels.x, pixels.y}, {pixels.width, pixels.height}};
+  if (pixels.rgba.size() == n * 4) {
+    if (pixels.front || !config.double_buffered) write_image(buffers_->front, rect, pixels.rgba);
+    if (pixels.back && config.double_buffered) write_image(buffers_->back, rect, pixels.rgba);
+  }
+  if (!buffers_->depth_stencil) return;
+  if (pixels.depth.size() == n) {
+    std::vector<uint32_t> words(n);
+    for (size_t i = 0; i < n; ++i)
+      words[i] =
+          uint32_t(std::lround(double(std::clamp(pixels.depth[i], 0.0f, 1.0f)) * 16777215.0));
+    write_depth_stencil(VK_IMAGE_ASPECT_DEPTH_BIT, rect, words.data(), words.size() * 4);
+  }
+  if (pixels.stencil.size() == n)
+    write_depth_stencil(VK_IMAGE_ASPECT_STENCIL_BIT, rect, pixels.stencil.data(), n);
+}
+
+void RasterRenderer::write_depth_stencil(VkImageAspectFlags aspect, const VkRect2D& rect,
+                                         const void* bytes, size_t size) {
+  ensure_capacity(*device_, readback_, size,
                   VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
-  readback_.write(words.data(), bytes);
+  readback_.write(bytes, size);
   device_->submit_and_wait([&](VkCommandBuffer cmd) {
     VkBufferImageCopy copy{};
-    copy.imageSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 0, 1};
-    copy.imageExtent = {buffers_->config.width, buffers_->config.height, 1};
+    copy.imageSubresource = {aspect, 0, 0, 1};
+    copy.imageOffset = {rect.offset.x, rect.offset.y, 0};
+    copy.imageExtent = {rect.extent.width, rect.extent.height, 1};
     vkCmdCopyBufferToImage(cmd, readback_.handle(), buffers_->depth_stencil.handle(),
                            VK_IMAGE_LAYOUT_GENERAL, 1, &copy);
   });

@@ -75,6 +75,9 @@ class RasterRenderer {
   // [0, 1], rows bottom to top, the drawable's size); stencil is kept.
   void write_depth(DrawableBuffers& buffers, const rec::DrawableConfig& drawable,
                    const std::vector<float>& depth);
+  // Renderer::write_pixels: a rectangle of colour, depth and stencil written as it is.
+  void write_pixels(DrawableBuffers& buffers, const rec::DrawableConfig& drawable,
+                    const PixelWrite& pixels);
 
   VulkanDevice& device() { return *device_; }
   // The buffers of the last execute, for path-traced mode (which writes the traced image into
@@ -109,8 +112,10 @@ class RasterRenderer {
                   int32_t y, uint32_t width, uint32_t height, std::vector<uint8_t>& out);
   // Replaces the rectangle `rect` of a colour image with `rgba` (RGBA8, rows bottom to top).
   void write_image(const GpuImage& image, const VkRect2D& rect, const std::vector<uint8_t>& rgba);
-  // Uploads 32-bit words into the depth aspect of the depth-stencil image.
-  void write_depth_words(const std::vector<uint32_t>& words);
+  // Uploads `bytes` into the rectangle `rect` of one aspect of the depth-stencil image: 32-bit
+  // words of 24-bit depth, or 8-bit stencil indices.
+  void write_depth_stencil(VkImageAspectFlags aspect, const VkRect2D& rect, const void* bytes,
+                           size_t size);
 
   // ---- pixel rectangles and the accumulation buffer (pixel_commands.cpp) ----
   struct PixelPlan;  // how one pixel rectangle is drawn

@@ -63,6 +63,10 @@ bool Renderer::write_depth(DrawableBuffers&, const rec::DrawableConfig&, const s
                            std::string*) {
   std::abort();
 }
+bool Renderer::write_pixels(DrawableBuffers&, const rec::DrawableConfig&, const PixelWrite&,
+                            std::string*) {
+  std::abort();
+}
 void Renderer::start_independent_frame(uint64_t, uint32_t) { std::abort(); }
 bool process_exiting() { return false; }
 

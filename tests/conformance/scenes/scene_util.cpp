@@ -352,4 +352,20 @@ void active_stencil_face(GLenum face) {
   fn(face);
 }
 
+#pragma weak glBlitFramebufferEXT
+void blit_framebuffer(GLint src_x0, GLint src_y0, GLint src_x1, GLint src_y1, GLint dst_x0,
+                      GLint dst_y0, GLint dst_x1, GLint dst_y1, GLbitfield mask, GLenum filter) {
+  using Fn = void (*)(GLint, GLint, GLint, GLint, GLint, GLint, GLint, GLint, GLbitfield, GLenum);
+  static const Fn fn = [] {
+    const char* name = "glBlitFramebufferEXT";
+    if (Fn linked = &glBlitFramebufferEXT; linked != nullptr) return linked;
+    using GetProc = void* (*)(const char*);
+    if (void* osmesa = dlsym(RTLD_DEFAULT, "OSMesaGetProcAddress"))
+      if (void* found = reinterpret_cast<GetProc>(osmesa)(name)) return reinterpret_cast<Fn>(found);
+    std::fprintf(stderr, "scene: %s not found\n", name);
+    std::abort();
+  }();
+  fn(src_x0, src_y0, src_x1, src_y1, dst_x0, dst_y0, dst_x1, dst_y1, mask, filter);
+}
+
 }  // namespace glpt::conformance::util

@@ -91,5 +91,8 @@ void bitmap_text(const char* text);
 // glActiveStencilFaceEXT (EXT_stencil_two_side), looked up by name: OSMesa exports only core
 // commands, extension ones through OSMesaGetProcAddress.
 void active_stencil_face(GLenum face);
+// glBlitFramebufferEXT (EXT_framebuffer_blit), looked up by name as above.
+void blit_framebuffer(GLint src_x0, GLint src_y0, GLint src_x1, GLint src_y1, GLint dst_x0,
+                      GLint dst_y0, GLint dst_x1, GLint dst_y1, GLbitfield mask, GLenum filter);
 
 }  // namespace glpt::conformance::util
