@@ -307,4 +307,48 @@ TEST_F(FramebufferBlitTest, CopyPixelsReadsTheReadFramebuffer) {
   glDeleteTextures(1, &texture);
 }
 
+// Undefined but safe (EXT_framebuffer_object 4.4.3, EXT_framebuffer_blit): a texture sampled by
+// the draws of the framebuffer object it is attached to, a blit whose rectangles overlap in one
+// framebuffer, and a blit after the read attachment's texture was deleted: no error but the ones
+// named, no crash, and the pixels outside the feedback keep their values.
+TEST_F(FramebufferBlitTest, FeedbackLoopsAndDeletedAttachmentsAreSafe) {
+  GLuint texture = 0;
+  const GLuint fb = framebuffer_with_texture(4, 4, ramp_4x4(), &texture);
+  glBindTexture(GL_TEXTURE_2D, texture);
+  glEnable(GL_TEXTURE_2D);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glBegin(GL_QUADS);  // samples the texture it draws into
+  glTexCoord2f(0, 0);
+  glVertex2f(-1, -1);
+  glTexCoord2f(1, 0);
+  glVertex2f(1, -1);
+  glTexCoord2f(1, 1);
+  glVertex2f(1, 1);
+  glTexCoord2f(0, 1);
+  glVertex2f(-1, 1);
+  glEnd();
+  glDisable(GL_TEXTURE_2D);
+  EXPECT_EQ(glGetError(), GLenum{GL_NO_ERROR});
+  glBlitFramebufferEXT(0, 0, 3, 3, 1, 1, 4, 4, GL_COLOR_BUFFER_BIT, GL_LINEAR);  // overlapping
+  EXPECT_EQ(glGetError(), GLenum{GL_NO_ERROR});
+  // The read framebuffer loses its only attachment: incomplete, and the blit says so.
+  glBindFramebufferEXT(GL_DRAW_FRAMEBUFFER_EXT, 0);
+  glDeleteTextures(1, &texture);
+  EXPECT_EQ(glCheckFramebufferStatusEXT(GL_READ_FRAMEBUFFER_EXT),
+            GLenum{GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT_EXT});
+  glBlitFramebufferEXT(0, 0, 4, 4, 0, 0, 4, 4, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  EXPECT_EQ(glGetError(), kInvalidFramebufferOperation);
+  GLubyte p[4] = {1, 2, 3, 4};
+  glReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, p);
+  EXPECT_EQ(glGetError(), kInvalidFramebufferOperation);
+  EXPECT_EQ(std::vector<int>(p, p + 4), (std::vector<int>{1, 2, 3, 4}));
+  EXPECT_EQ(window_pixel(0, 0), (std::array<int, 4>{0, 0, 0, 0}));
+  // Huge and inverted rectangles are clipped, not allocated.
+  glBindFramebufferEXT(GL_READ_FRAMEBUFFER_EXT, 0);
+  glBlitFramebufferEXT(-2147483647, -2147483647, 2147483647, 2147483647, 2147483647, 2147483647,
+                       -2147483647, -2147483647, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  EXPECT_EQ(glGetError(), GLenum{GL_NO_ERROR});
+  glDeleteFramebuffersEXT(1, &fb);
+}
+
 }  // namespace
