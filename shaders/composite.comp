@@ -123,9 +123,11 @@ void main() {
       (lit || (dn.image.z & GLPT_DN_UNLIT_AO) != 0u)) {
     uint slot = dn.image.w == 0u ? 0u : 1u + (dn.image.w - 1u) % 2u;
     int base = int(slot * 3u);
-    vec3 light[GLPT_CHANNELS] = vec3[GLPT_CHANNELS](imageLoad(denoised, ivec3(pixel, base)).rgb,
-                                                    imageLoad(denoised, ivec3(pixel, base + 1)).rgb,
-                                                    imageLoad(denoised, ivec3(pixel, base + 2)).rgb);
+    // A channel the denoiser did not filter (GLPT_DN_NO_SPECULAR) is zero: taken raw.
+    vec3 light[GLPT_CHANNELS] = vec3[GLPT_CHANNELS](
+        imageLoad(denoised, ivec3(pixel, base)).rgb, imageLoad(denoised, ivec3(pixel, base + 1)).rgb,
+        (dn.image.z & GLPT_DN_NO_SPECULAR) != 0u ? raw[GLPT_CHANNEL_SPECULAR]
+                                                 : imageLoad(denoised, ivec3(pixel, base + 2)).rgb);
     denoised_color = composite(pixel, surface, light);
     denoised_weight = clamp(dn.params.w, 0.0, 1.0);
   }

@@ -98,6 +98,9 @@ using mat4 = glm::mat4;
 #define GLPT_DN_HISTORY_VALID 1u  // the previous frame's guide and history belong to this size
 #define GLPT_DN_UNLIT_AO 2u       // unlit pixels carry AO in the indirect channel: denoise it
 #define GLPT_DN_ACTIVE 4u         // composite: the denoiser ran this frame, show its result
+// No traced surface reflects specularly this frame (every material's specular is black): the
+// specular channel is zero, neither pass filters it and the composite takes it raw.
+#define GLPT_DN_NO_SPECULAR 8u
 
 // ---- radiance channels -----------------------------------------------------------------------
 // What the trace pass writes per pixel (RGBA32F, this frame's samples averaged; linear HDR

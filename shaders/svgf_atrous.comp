@@ -38,10 +38,11 @@ void main() {
   int radius = int(dn.sigmas.w);
   float kernel[3] = radius == 1 ? float[3](0.5, 0.25, 0.0) : float[3](0.375, 0.25, 0.0625);
   int step = int(iteration.step);
+  uint channels = filtered_channels();  // a channel the frame cannot have is neither read nor written
 
-  vec4 centre_values[3];
-  float luminance_p[3], sigma_l[3];
-  for (uint c = 0u; c < 3u; ++c) {
+  vec4 centre_values[3] = vec4[3](vec4(0.0), vec4(0.0), vec4(0.0));
+  float luminance_p[3] = float[3](0.0, 0.0, 0.0), sigma_l[3] = float[3](1.0, 1.0, 1.0);
+  for (uint c = 0u; c < channels; ++c) {
     centre_values[c] = load_work(iteration.input_slot, pixel, c);
     luminance_p[c] = luminance(centre_values[c].rgb);
   }
@@ -49,7 +50,7 @@ void main() {
   // estimate must not stop the filter. Later iterations read variance the previous iteration
   // filtered already: they take it as it is (a third of their cost saved, no measured loss).
   if (iteration.step > 1u) {
-    for (uint c = 0u; c < 3u; ++c)
+    for (uint c = 0u; c < channels; ++c)
       sigma_l[c] = dn.sigmas.z * sqrt(max(centre_values[c].a, 0.0)) + 1e-10;
   } else {
     vec3 sum = vec3(0.0);
@@ -61,17 +62,17 @@ void main() {
         float w = (dx == 0 ? 0.5 : 0.25) * (dy == 0 ? 0.5 : 0.25);
         sum += w * vec3(load_work(iteration.input_slot, q, 0u).a,
                         load_work(iteration.input_slot, q, 1u).a,
-                        load_work(iteration.input_slot, q, 2u).a);
+                        channels > 2u ? load_work(iteration.input_slot, q, 2u).a : 0.0);
         total += w;
       }
     vec3 variance = sum / max(total, 1e-6);
-    for (uint c = 0u; c < 3u; ++c)
+    for (uint c = 0u; c < channels; ++c)
       sigma_l[c] = dn.sigmas.z * sqrt(max(variance[c], 0.0)) + 1e-10;
   }
 
   vec3 sums[3];
   float variance_sums[3], weight_sums[3];
-  for (uint c = 0u; c < 3u; ++c) {
+  for (uint c = 0u; c < channels; ++c) {
     float h = kernel[0] * kernel[0];
     sums[c] = h * centre_values[c].rgb;
     variance_sums[c] = h * h * centre_values[c].a;
@@ -91,7 +92,7 @@ void main() {
                        pow(max(dot(n_p, gbuffer_unpack_normal(g.meta.z)), 0.0), dn.sigmas.y);
       if (!(geometry > 0.0)) continue;
       float h = kernel[abs(dx)] * kernel[abs(dy)] * geometry;
-      for (uint c = 0u; c < 3u; ++c) {
+      for (uint c = 0u; c < channels; ++c) {
         vec4 value = load_work(iteration.input_slot, q, c);
         float w = h * exp(-abs(luminance(value.rgb) - luminance_p[c]) / sigma_l[c]);
         sums[c] += w * value.rgb;
@@ -99,7 +100,7 @@ void main() {
         weight_sums[c] += w;
       }
     }
-  for (uint c = 0u; c < 3u; ++c) {
+  for (uint c = 0u; c < channels; ++c) {
     float inverse_weight = 1.0 / weight_sums[c];  // >= the centre's kernel weight
     vec4 result = vec4(sums[c] * inverse_weight,
                        variance_sums[c] * inverse_weight * inverse_weight);

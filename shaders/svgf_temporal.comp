@@ -14,6 +14,7 @@
 //
 // Writes work slot 0 (colour + variance: the a-trous filter's input), this frame's history
 // (colour = the integrated colour until the first a-trous iteration overwrites it) and guide.
+// A channel the frame cannot have (filtered_channels) is not read; its history is zero.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_shader_image_load_formatted : require
 
@@ -46,6 +47,7 @@ void main() {
   }
   vec3 eye = imageLoad(gbuffer_position, pixel).xyz;
   vec3 normal = gbuffer_unpack_normal(surface.y);
+  uint channels = filtered_channels();
   GpuStateHistory sh = state_histories[surface.x - 1u];
   uint id = sh.info.x;
 
@@ -95,7 +97,7 @@ void main() {
         float w = tap_weights[t];
         weight_sum += w;
         previous_length += w * float(imageLoad(previous_guide_meta, q).y);
-        for (uint c = 0u; c < 3u; ++c) {
+        for (uint c = 0u; c < channels; ++c) {
           vec4 colour = imageLoad(previous_history, ivec3(q, c));
           vec4 fast = imageLoad(previous_history, ivec3(q, 3u + c));
           previous_colour[c] += w * colour.rgb;
@@ -138,7 +140,7 @@ void main() {
         if (!(direct.a > 0.0)) continue;
         count += 1.0;
         float l0 = luminance(direct.rgb), l1 = luminance(imageLoad(raw_channel1, q).rgb),
-              l2 = luminance(imageLoad(raw_channel2, q).rgb);
+              l2 = channels > 2u ? luminance(imageLoad(raw_channel2, q).rgb) : 0.0;
         sums[0] += vec2(l0, l0 * l0);
         sums[1] += vec2(l1, l1 * l1);
         sums[2] += vec2(l2, l2 * l2);
@@ -148,9 +150,13 @@ void main() {
       noise_sigma[c] = sqrt(max(m.y - m.x * m.x, 0.0));
     }
   }
-  float variances[3];
-  vec3 colours[3];
-  for (uint c = 0u; c < 3u; ++c) {
+  float variances[3] = float[3](0.0, 0.0, 0.0);
+  vec3 colours[3] = vec3[3](vec3(0.0), vec3(0.0), vec3(0.0));
+  for (uint c = channels; c < 3u; ++c) {
+    imageStore(history, ivec3(pixel, c), vec4(0.0));
+    imageStore(history, ivec3(pixel, 3u + c), vec4(0.0));
+  }
+  for (uint c = 0u; c < channels; ++c) {
     vec3 raw = raw_channel(pixel, c);
     float l = luminance(raw);
     vec3 colour = raw, fast = raw;
@@ -218,7 +224,7 @@ void main() {
                   pow(max(dot(normal, gbuffer_unpack_normal(s.y)), 0.0), 32.0);
         if (!(w > 0.0)) continue;
         total += w;
-        for (uint c = 0u; c < 3u; ++c) {
+        for (uint c = 0u; c < channels; ++c) {
           float l = luminance(raw_channel(q, c));
           sums[c] += w * vec2(l, l * l);
         }
@@ -229,6 +235,6 @@ void main() {
         variances[c] = max(m.y - m.x * m.x, 0.0);
       }
   }
-  for (uint c = 0u; c < 3u; ++c) store_work(0u, pixel, c, vec4(colours[c], variances[c]));
+  for (uint c = 0u; c < channels; ++c) store_work(0u, pixel, c, vec4(colours[c], variances[c]));
   store_guide(pixel, DenoiseGuide(vec4(eye, 1.0), uvec4(id, uint(history_length), surface.y, 0u)));
 }

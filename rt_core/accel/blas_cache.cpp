@@ -178,6 +178,10 @@ std::unique_ptr<ShadingEntry> BlasCache::create_shading(const Geometry& geometry
   entry->materials_address = entry->data.address() + vertex_bytes;
   entry->shape_hash = geometry.shape_hash;
   entry->emitters = emitter_triangles(geometry, shape.triangle_order);
+  for (const Material& m : geometry.materials)
+    entry->reflects_specularly = entry->reflects_specularly ||
+                                 m.color_source == ColorSource::kSpecular || m.specular.r != 0.0f ||
+                                 m.specular.g != 0.0f || m.specular.b != 0.0f;
   return entry;
 }
 

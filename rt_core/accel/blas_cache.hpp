@@ -49,6 +49,9 @@ struct ShadingEntry {
   // The shape's triangles in BLAS primitive order with their emission, when any emits (host
   // memory: each frame places them in eye space for next-event estimation); else empty.
   std::vector<EmitterTriangle> emitters;
+  // A material of it has a specular lobe (GL_SPECULAR not black, or the vertex colour under
+  // GL_COLOR_MATERIAL(GL_SPECULAR)): light can reach the tracer's specular channel through it.
+  bool reflects_specularly = false;
 };
 
 struct BlasPrepareStats {

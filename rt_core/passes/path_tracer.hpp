@@ -100,6 +100,9 @@ class PathTracer {
     std::vector<uint8_t> sky;  // per instance: 1 for the sky (TLAS mask GLPT_MASK_SKY only)
     EyeBounds scene_bounds;
     uint64_t triangles = 0;
+    // Some instance's shading reflects specularly (ShadingEntry::reflects_specularly): else the
+    // specular channel is zero and the denoiser leaves it out (GLPT_DN_NO_SPECULAR).
+    bool reflects_specularly = false;
   };
   void build_scene_setup(const TraceScene& scene, TextureCache* textures, SceneSetup& setup) const;
   // Whether this frame's samples are denoised: SVGF on, samples to add, no reference, and the

@@ -48,6 +48,10 @@ void store_work(uint slot, ivec2 p, uint c, vec4 value) {
   imageStore(work, ivec3(p, slot * 3u + c), value);
 }
 
+// The channels the passes filter: direct and indirect diffuse, and specular where any surface
+// reflects specularly (GLPT_DN_NO_SPECULAR; specular is the last channel).
+uint filtered_channels() { return (dn.image.z & GLPT_DN_NO_SPECULAR) != 0u ? 2u : 3u; }
+
 float luminance(vec3 c) { return dot(c, vec3(0.2126, 0.7152, 0.0722)); }
 
 

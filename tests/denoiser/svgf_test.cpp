@@ -44,12 +44,14 @@ void scene_camera(float eye_x) {
   glEnable(GL_DEPTH_TEST);
 }
 
-void material(glm::vec3 diffuse) {
+void material(glm::vec3 diffuse, float specular = 0.0f) {
   const float d[] = {diffuse.r, diffuse.g, diffuse.b, 1};
   const float black[] = {0, 0, 0, 1};
+  const float s[] = {specular, specular, specular, 1};
   glMaterialfv(GL_FRONT_AND_BACK, GL_DIFFUSE, d);
   glMaterialfv(GL_FRONT_AND_BACK, GL_AMBIENT, black);
-  glMaterialfv(GL_FRONT_AND_BACK, GL_SPECULAR, black);
+  glMaterialfv(GL_FRONT_AND_BACK, GL_SPECULAR, s);
+  glMaterialf(GL_FRONT_AND_BACK, GL_SHININESS, 24.0f);
 }
 
 void box(glm::vec3 lo, glm::vec3 hi) {
@@ -65,6 +67,7 @@ struct SceneOptions {
   float eye_x = 0.0f;
   bool light_on = true;
   float box_x = 0.0f;
+  float box_specular = 0.0f;  // the box's GL_SPECULAR (grey), shininess 24
 };
 
 void draw_scene(const SceneOptions& o) {
@@ -82,7 +85,7 @@ void draw_scene(const SceneOptions& o) {
     for (int j = -3; j < 3; ++j)
       quad({float(i), 0, float(j + 1)}, {float(i + 1), 0, float(j + 1)},
            {float(i + 1), 0, float(j)}, {float(i), 0, float(j)});
-  material({0.8f, 0.3f, 0.2f});
+  material({0.8f, 0.3f, 0.2f}, o.box_specular);
   glPushMatrix();
   glTranslatef(o.box_x, 0.0f, 0.0f);
   box({-0.6f, 0.0f, -0.6f}, {0.6f, 1.0f, 0.6f});
@@ -230,6 +233,28 @@ TEST(Svgf, StillSceneAtOneSampleHasAFifthOfTheRawRelMseAndHardlyFlickers) {
   std::printf("still: frame-to-frame change raw %.3f denoised %.3f (%.1fx)\n", change_raw,
               change_denoised, change_raw / change_denoised);
   EXPECT_LE(change_denoised * 5.0, change_raw);
+}
+
+TEST(Svgf, SpecularLightIsFilteredWhereASurfaceReflectsIt) {
+  // The scenes above reflect nothing specularly: their specular channel is left out of the
+  // filter (GLPT_DN_NO_SPECULAR). A shiny box brings it back: its highlights are filtered as the
+  // diffuse light is.
+  SceneOptions shiny;
+  shiny.box_specular = 0.6f;
+  const std::vector<uint8_t> ref = reference(shiny);
+  const int frames = 16;
+  const Frames denoised = render(with(kOneSample, {}), frames, [&](int) { return shiny; });
+  const Frames raw =
+      render(with(kOneSample, {{"GLPT_DENOISER", "off"}}), frames, [&](int) { return shiny; });
+  const std::vector<uint8_t> matte = reference(SceneOptions{});
+  keep("reference", ref);
+  keep("denoised", denoised.back());
+  // The highlight is there: the shiny reference differs from the matte one.
+  EXPECT_GT(rel_mse(matte, ref), 1e-3);
+  const double mse_denoised = rel_mse(denoised.back(), ref), mse_raw = rel_mse(raw.back(), ref);
+  std::printf("specular: relMSE raw %.5f denoised %.5f (%.1fx)\n", mse_raw, mse_denoised,
+              mse_raw / mse_denoised);
+  EXPECT_LE(mse_denoised * 5.0, mse_raw);
 }
 
 TEST(Svgf, MovingCameraKeepsItsHistoryAndHasAFifthOfTheRawRelMse) {

@@ -1,0 +1,44 @@
+#!/usr/bin/env bash
+# ab_denoiser_builds.sh BASE_BUILD_DIR NEW_BUILD_DIR [ROUNDS]
+#
+# The denoiser's device time on glxgears (320x240 and 640x480, 25 s each, accumulation off) for
+# two builds of glpt, alternating run by run so both see the same machine: per run the median
+# trace_ms and denoise_ms (GLPT_STATS, Vulkan timestamps) and the frames counted. For changes to
+# the denoiser (docs/denoiser.md, "Cost"); bench_denoiser.sh measures one build in full.
+set -u
+base=${1:?base build dir}
+new=${2:?new build dir}
+rounds=${3:-3}
+echo "command: $0 $base $new $rounds"
+echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')"
+display=:$((200 + RANDOM % 100))
+Xvfb $display -screen 0 1280x1024x24 -nolisten tcp >/dev/null 2>&1 &
+xvfb=$!
+trap 'kill $xvfb' EXIT
+sleep 1
+run() {
+  local libgl=$1 size=$2 log
+  log=$(mktemp)
+  env DISPLAY=$display LD_PRELOAD=$libgl GLPT_STATS=1 GLPT_ACCUMULATE=0 GLPT_QUIET=1 \
+    timeout -s INT 25 /usr/bin/glxgears -geometry $size 2>"$log" >/dev/null
+  awk -v skip=3 '
+    /^glpt: frame=/ {
+      for (i = 1; i <= NF; ++i) { split($i, kv, "="); v[kv[1]] = kv[2] }
+      if (v["trace_ms"] + 0 == 0) next
+      if (seen++ < skip) next
+      trace[n] = v["trace_ms"]; denoise[n] = v["denoise_ms"]; ++n
+    }
+    function median(a, n,   i, j, t) {
+      for (i = 0; i < n; ++i) for (j = i + 1; j < n; ++j) if (a[j] < a[i]) { t = a[i]; a[i] = a[j]; a[j] = t }
+      return n ? (n % 2 ? a[int(n / 2)] : (a[n / 2 - 1] + a[n / 2]) / 2) : 0
+    }
+    END { printf "%.2f %.2f %d\n", median(trace, n), median(denoise, n), n }' "$log"
+  rm -f "$log"
+}
+echo "round size build trace_ms denoise_ms frames"
+for ((round = 1; round <= rounds; ++round)); do
+  for size in 320x240 640x480; do
+    echo "$round $size base $(run "$base/gl_shim/libGL.so.1" $size)"
+    echo "$round $size new  $(run "$new/gl_shim/libGL.so.1" $size)"
+  done
+done
