@@ -454,10 +454,15 @@ GLenum framebuffer_status(const FramebufferObject& fb, uint32_t draw_buffer, uin
   return GL_FRAMEBUFFER_COMPLETE_EXT;
 }
 
-void detach_deleted_texture(Context& ctx, const TextureObject& texture) {
-  std::lock_guard lock(ctx.framebuffers.store->mutex);
+namespace {
+
+// Every attachment of the bound draw and read framebuffers that `holds_image` accepts becomes
+// GL_NONE: a deleted image is detached from the bound framebuffers only (EXT_framebuffer_object
+// 4.4.2.2, 4.4.2.3). The caller holds the store's mutex.
+template <typename HoldsImage>
+void detach_from_bound_framebuffers(Context& ctx, HoldsImage holds_image) {
   auto detach = [&](Attachment& a) {
-    if (a.texture.get() == &texture) a = Attachment{};
+    if (holds_image(a)) a = Attachment{};
   };
   for (FramebufferObject* fb :
        {ctx.framebuffers.framebuffer.get(), ctx.framebuffers.read_framebuffer.get()}) {
@@ -466,6 +471,14 @@ void detach_deleted_texture(Context& ctx, const TextureObject& texture) {
     detach(fb->depth);
     detach(fb->stencil);
   }
+}
+
+}  // namespace
+
+void detach_deleted_texture(Context& ctx, const TextureObject& texture) {
+  std::lock_guard lock(ctx.framebuffers.store->mutex);
+  detach_from_bound_framebuffers(ctx,
+                                 [&](const Attachment& a) { return a.texture.get() == &texture; });
 }
 
 namespace impl {
@@ -503,17 +516,8 @@ void glDeleteRenderbuffers(Context& ctx, GLsizei n, const GLuint* renderbuffers)
     const std::shared_ptr<Renderbuffer> object = it->second;
     if (object) {
       if (ctx.framebuffers.renderbuffer == object) ctx.framebuffers.renderbuffer.reset();
-      // Detached from the bound framebuffer objects only (EXT_framebuffer_object 4.4.2.2).
-      auto detach = [&](Attachment& a) {
-        if (a.renderbuffer == object) a = Attachment{};
-      };
-      for (FramebufferObject* fb :
-           {ctx.framebuffers.framebuffer.get(), ctx.framebuffers.read_framebuffer.get()}) {
-        if (fb == nullptr) continue;
-        for (Attachment& a : fb->color) detach(a);
-        detach(fb->depth);
-        detach(fb->stencil);
-      }
+      detach_from_bound_framebuffers(
+          ctx, [&](const Attachment& a) { return a.renderbuffer == object; });
     }
     store.renderbuffers.erase(it);
   }

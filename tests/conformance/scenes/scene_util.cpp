@@ -335,36 +335,33 @@ void bitmap_text(const char* text) {
   }
 }
 
-// glpt's runner links glpt statically (the symbol is there, but not in the dynamic table); Mesa's
-// runner has OSMesa, whose library does not export it.
+namespace {
+
+// An extension command of the runner's GL. glpt's runner links glpt statically (the symbol is
+// there, but not in the dynamic table: `linked`, a weak reference); Mesa's runner has OSMesa,
+// whose library does not export extension commands but gives them through OSMesaGetProcAddress.
+template <typename Fn>
+Fn extension_command(Fn linked, const char* name) {
+  if (linked != nullptr) return linked;
+  using GetProc = void* (*)(const char*);
+  if (void* osmesa = dlsym(RTLD_DEFAULT, "OSMesaGetProcAddress"))
+    if (void* found = reinterpret_cast<GetProc>(osmesa)(name)) return reinterpret_cast<Fn>(found);
+  std::fprintf(stderr, "scene: %s not found\n", name);
+  std::abort();
+}
+
+}  // namespace
+
 #pragma weak glActiveStencilFaceEXT
 void active_stencil_face(GLenum face) {
-  using Fn = void (*)(GLenum);
-  static const Fn fn = [] {
-    const char* name = "glActiveStencilFaceEXT";
-    if (Fn linked = &glActiveStencilFaceEXT; linked != nullptr) return linked;
-    using GetProc = void* (*)(const char*);
-    if (void* osmesa = dlsym(RTLD_DEFAULT, "OSMesaGetProcAddress"))
-      if (void* found = reinterpret_cast<GetProc>(osmesa)(name)) return reinterpret_cast<Fn>(found);
-    std::fprintf(stderr, "scene: %s not found\n", name);
-    std::abort();
-  }();
+  static const auto fn = extension_command(&glActiveStencilFaceEXT, "glActiveStencilFaceEXT");
   fn(face);
 }
 
 #pragma weak glBlitFramebufferEXT
 void blit_framebuffer(GLint src_x0, GLint src_y0, GLint src_x1, GLint src_y1, GLint dst_x0,
                       GLint dst_y0, GLint dst_x1, GLint dst_y1, GLbitfield mask, GLenum filter) {
-  using Fn = void (*)(GLint, GLint, GLint, GLint, GLint, GLint, GLint, GLint, GLbitfield, GLenum);
-  static const Fn fn = [] {
-    const char* name = "glBlitFramebufferEXT";
-    if (Fn linked = &glBlitFramebufferEXT; linked != nullptr) return linked;
-    using GetProc = void* (*)(const char*);
-    if (void* osmesa = dlsym(RTLD_DEFAULT, "OSMesaGetProcAddress"))
-      if (void* found = reinterpret_cast<GetProc>(osmesa)(name)) return reinterpret_cast<Fn>(found);
-    std::fprintf(stderr, "scene: %s not found\n", name);
-    std::abort();
-  }();
+  static const auto fn = extension_command(&glBlitFramebufferEXT, "glBlitFramebufferEXT");
   fn(src_x0, src_y0, src_x1, src_y1, dst_x0, dst_y0, dst_x1, dst_y1, mask, filter);
 }
 
