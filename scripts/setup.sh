@@ -53,6 +53,7 @@ build_pkgs=(cmake ninja-build g++ clang pkg-config python3 clang-format
 # tests), apitrace, Vulkan tools and validation layers.
 run_pkgs=(xvfb xauth mesa-utils x11-utils libgl-dev libegl-dev vulkan-tools vulkan-validationlayers
           xscreensaver-gl xscreensaver-gl-extra piglit apitrace
+          x11-apps            # xwd: scripts/real_programs.py compares the window with the PNGs
           python3-matplotlib  # glpt tune's and bench/bench_tradeoffs.sh's plots
           libembree-dev)      # bench/ray_ceiling: Embree, the CPU's ray-tracing ceiling
 $SUDO apt-get install -y -q --no-install-recommends "${build_pkgs[@]}" "${run_pkgs[@]}"
