@@ -317,16 +317,7 @@ TEST_F(FramebufferBlitTest, FeedbackLoopsAndDeletedAttachmentsAreSafe) {
   glBindTexture(GL_TEXTURE_2D, texture);
   glEnable(GL_TEXTURE_2D);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glBegin(GL_QUADS);  // samples the texture it draws into
-  glTexCoord2f(0, 0);
-  glVertex2f(-1, -1);
-  glTexCoord2f(1, 0);
-  glVertex2f(1, -1);
-  glTexCoord2f(1, 1);
-  glVertex2f(1, 1);
-  glTexCoord2f(0, 1);
-  glVertex2f(-1, 1);
-  glEnd();
+  glpt_test::full_viewport_textured_quad();  // samples the texture it draws into
   glDisable(GL_TEXTURE_2D);
   EXPECT_EQ(glGetError(), GLenum{GL_NO_ERROR});
   glBlitFramebufferEXT(0, 0, 3, 3, 1, 1, 4, 4, GL_COLOR_BUFFER_BIT, GL_LINEAR);  // overlapping

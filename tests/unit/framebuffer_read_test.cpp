@@ -190,16 +190,7 @@ TEST_F(FramebufferReadTest, DrawsOfReplacedTexturesAreExecutedBeforeTheyFillMemo
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, kSide, kSide, 0, GL_RGBA, GL_UNSIGNED_BYTE,
                  texels.data());
-    glBegin(GL_QUADS);
-    glTexCoord2f(0, 0);
-    glVertex2f(-1, -1);
-    glTexCoord2f(1, 0);
-    glVertex2f(1, -1);
-    glTexCoord2f(1, 1);
-    glVertex2f(1, 1);
-    glTexCoord2f(0, 1);
-    glVertex2f(-1, 1);
-    glEnd();
+    glpt_test::full_viewport_textured_quad();
     glDeleteTextures(1, &texture);
     most_commands = std::max(most_commands, ctx_.recorder.record().commands.size());
   }

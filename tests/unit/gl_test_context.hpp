@@ -36,6 +36,20 @@ class HeadlessGlTest : public GlTest {
 
 namespace glpt_test {
 
+// A quad over the whole viewport under identity matrices, texture coordinates 0..1.
+inline void full_viewport_textured_quad() {
+  glBegin(GL_QUADS);
+  glTexCoord2f(0, 0);
+  glVertex2f(-1, -1);
+  glTexCoord2f(1, 0);
+  glVertex2f(1, -1);
+  glTexCoord2f(1, 1);
+  glVertex2f(1, 1);
+  glTexCoord2f(0, 1);
+  glVertex2f(-1, 1);
+  glEnd();
+}
+
 // Raster mode: it executes every command, depth and stencil clears included (the path-traced
 // mode is not the subject here).
 class RasterMode {
