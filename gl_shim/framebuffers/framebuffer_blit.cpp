@@ -55,6 +55,27 @@ DepthStencilImage depth_stencil_image(const Context& ctx, const FramebufferObjec
   return {true, bits[4], bits[5]};
 }
 
+// Mesa's validate_stencil_buffer (`depth_point` false) and validate_depth_buffer: where `mask`
+// asks for `bit` and both framebuffers have an image at that point, its bits must match (and the
+// other component's too where both images have it): false (GL_INVALID_OPERATION) otherwise; where
+// either has none, `bit` is silently dropped from `mask`.
+bool depth_stencil_compatible(const Context& ctx, const FramebufferObject* read_fb,
+                              const FramebufferObject* draw_fb, bool depth_point, GLbitfield bit,
+                              GLbitfield& mask) {
+  if (!(mask & bit)) return true;
+  const DepthStencilImage r = depth_stencil_image(ctx, read_fb, depth_point);
+  const DepthStencilImage d = depth_stencil_image(ctx, draw_fb, depth_point);
+  if (!r.exists || !d.exists) {
+    mask &= ~bit;
+    return true;
+  }
+  const int r_own = depth_point ? r.depth_bits : r.stencil_bits;
+  const int d_own = depth_point ? d.depth_bits : d.stencil_bits;
+  const int r_other = depth_point ? r.stencil_bits : r.depth_bits;
+  const int d_other = depth_point ? d.stencil_bits : d.depth_bits;
+  return r_own == d_own && !(r_other > 0 && d_other > 0 && r_other != d_other);
+}
+
 // The read framebuffer's read buffer names an image (an attachment of an object, or a window
 // colour buffer).
 bool reads_color(const FramebufferObject* fb, uint32_t read_buffer) {
@@ -230,26 +251,9 @@ void glBlitFramebuffer(Context& ctx, GLint srcX0, GLint srcY0, GLint srcX1, GLin
   if ((mask & GL_COLOR_BUFFER_BIT) &&
       (!reads_color(read_fb, buffers_of(ctx, read_fb).read_buffer) || draw_buffer == GL_NONE))
     mask &= ~GLbitfield{GL_COLOR_BUFFER_BIT};
-  if (mask & GL_STENCIL_BUFFER_BIT) {
-    const DepthStencilImage r = depth_stencil_image(ctx, read_fb, false);
-    const DepthStencilImage d = depth_stencil_image(ctx, draw_fb, false);
-    if (!r.exists || !d.exists) {
-      mask &= ~GLbitfield{GL_STENCIL_BUFFER_BIT};
-    } else if (r.stencil_bits != d.stencil_bits ||
-               (r.depth_bits > 0 && d.depth_bits > 0 && r.depth_bits != d.depth_bits)) {
-      return record_error(ctx, GL_INVALID_OPERATION);
-    }
-  }
-  if (mask & GL_DEPTH_BUFFER_BIT) {
-    const DepthStencilImage r = depth_stencil_image(ctx, read_fb, true);
-    const DepthStencilImage d = depth_stencil_image(ctx, draw_fb, true);
-    if (!r.exists || !d.exists) {
-      mask &= ~GLbitfield{GL_DEPTH_BUFFER_BIT};
-    } else if (r.depth_bits != d.depth_bits ||
-               (r.stencil_bits > 0 && d.stencil_bits > 0 && r.stencil_bits != d.stencil_bits)) {
-      return record_error(ctx, GL_INVALID_OPERATION);
-    }
-  }
+  if (!depth_stencil_compatible(ctx, read_fb, draw_fb, false, GL_STENCIL_BUFFER_BIT, mask) ||
+      !depth_stencil_compatible(ctx, read_fb, draw_fb, true, GL_DEPTH_BUFFER_BIT, mask))
+    return record_error(ctx, GL_INVALID_OPERATION);
   if (mask == 0 || srcX0 == srcX1 || srcY0 == srcY1 || dstX0 == dstX1 || dstY0 == dstY1) return;
   if (!ensure_output(ctx)) return;  // no renderer: the buffers hold only the clear colour
 
