@@ -54,9 +54,9 @@ struct QuerySamples {
 struct PixelWrite {
   int32_t x = 0, y = 0;
   uint32_t width = 0, height = 0;
-  bool front = false, back = false;  // the colour buffers `rgba` goes to (single-buffered: front)
-  std::vector<uint8_t> rgba;         // RGBA8
-  std::vector<float> depth;          // window z in [0, 1]
+  uint32_t draw_buffer = 0;   // the GL draw buffer `rgba` goes to (GL_BACK, GL_NONE, ...)
+  std::vector<uint8_t> rgba;  // RGBA8
+  std::vector<float> depth;   // window z in [0, 1]
   std::vector<uint8_t> stencil;
 };
 

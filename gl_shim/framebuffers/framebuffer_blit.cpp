@@ -207,19 +207,6 @@ void sample(const BlitSource& source, const BlitAxis& ax, const BlitAxis& ay, bo
     }
 }
 
-// The colour buffers a draw buffer writes: an object's target and a single-buffered window have
-// one (front); a double-buffered window's front and back as the draw buffer names them.
-void destination_buffers(const Context& ctx, uint32_t draw_buffer, rt::PixelWrite& out) {
-  if (ctx.framebuffers.entered) {
-    out.front = draw_buffer != GL_NONE;
-    return;
-  }
-  out.front = draw_buffer == GL_FRONT || draw_buffer == GL_FRONT_LEFT || draw_buffer == GL_LEFT ||
-              draw_buffer == GL_FRONT_AND_BACK;
-  out.back = draw_buffer == GL_BACK || draw_buffer == GL_BACK_LEFT || draw_buffer == GL_LEFT ||
-             draw_buffer == GL_FRONT_AND_BACK;
-}
-
 }  // namespace
 
 namespace impl {
@@ -293,7 +280,7 @@ void glBlitFramebuffer(Context& ctx, GLint srcX0, GLint srcY0, GLint srcX1, GLin
     write.y = ay.lo;
     write.width = uint32_t(ax.hi - ax.lo);
     write.height = uint32_t(ay.hi - ay.lo);
-    destination_buffers(ctx, draw_buffer, write);
+    write.draw_buffer = draw_buffer;
     sample(source, ax, ay, linear, write);
   });
   if (write.width == 0 || write.height == 0) return;

@@ -179,18 +179,13 @@ FramebufferRendering& rendering_of(FramebufferObject& fb) {
 FramebufferBuffers buffers_of(const Context& ctx, const FramebufferObject* fb) {
   const FramebufferObject* entered =
       ctx.framebuffers.entered ? ctx.framebuffers.framebuffer.get() : nullptr;
-  const RecordingBundle* parked = nullptr;
-  if (fb == entered) {
-    parked = nullptr;  // the context's own
-  } else if (fb == nullptr) {
-    parked = &entered->rendering->parked;  // the window's bundle, parked in the entered object
-  } else if (fb->rendering) {
-    parked = &fb->rendering->parked;
-  } else {
-    return {GL_COLOR_ATTACHMENT0_EXT, GL_COLOR_ATTACHMENT0_EXT};  // never bound for drawing
-  }
-  if (parked == nullptr) return {ctx.raster.ops.draw_buffer, ctx.raster.ops.read_buffer};
-  return {parked->draw_buffer, parked->read_buffer};
+  if (fb == entered) return {ctx.raster.ops.draw_buffer, ctx.raster.ops.read_buffer};
+  if (fb != nullptr && !fb->rendering)
+    return {GL_COLOR_ATTACHMENT0_EXT, GL_COLOR_ATTACHMENT0_EXT};  // never entered: the defaults
+  // An object's own bundle, or the window's, parked in the entered object.
+  const RecordingBundle& parked =
+      fb != nullptr ? fb->rendering->parked : entered->rendering->parked;
+  return {parked.draw_buffer, parked.read_buffer};
 }
 
 const rec::DrawableConfig& window_drawable(const Context& ctx) {

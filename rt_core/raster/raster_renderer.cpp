@@ -1019,8 +1019,11 @@ void RasterRenderer::write_pixels(DrawableBuffers& buffers, const rec::DrawableC
     return;
   const VkRect2D rect{{pixels.x, pixels.y}, {pixels.width, pixels.height}};
   if (pixels.rgba.size() == n * 4) {
-    if (pixels.front || !config.double_buffered) write_image(buffers_->front, rect, pixels.rgba);
-    if (pixels.back && config.double_buffered) write_image(buffers_->back, rect, pixels.rgba);
+    const ColorTargets targets = resolve_draw_buffer(pixels.draw_buffer, config.double_buffered);
+    if (targets == ColorTargets::kFront || targets == ColorTargets::kFrontAndBack)
+      write_image(buffers_->front, rect, pixels.rgba);
+    if (targets == ColorTargets::kBack || targets == ColorTargets::kFrontAndBack)
+      write_image(buffers_->back, rect, pixels.rgba);
   }
   if (!buffers_->depth_stencil) return;
   if (pixels.depth.size() == n) {
