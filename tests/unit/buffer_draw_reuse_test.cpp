@@ -189,8 +189,8 @@ TEST_F(BufferDrawReuseTest, OnlyStaticBuffersAreCached) {
                GL_STATIC_DRAW);
   std::vector<GLuint> indices(vertices.size());
   for (size_t i = 0; i < indices.size(); ++i) indices[i] = GLuint(i);
-  glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(indices.size() * sizeof(GLuint)),
-               indices.data(), GL_DYNAMIC_DRAW);
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(indices.size() * sizeof(GLuint)), indices.data(),
+               GL_DYNAMIC_DRAW);
   draw_in_new_record();
   EXPECT_EQ(ctx_.buffer_draws.size(), 0u);
 }

@@ -133,12 +133,8 @@ TEST_F(FramebufferBlitTest, ErrorsComeInMesasOrder) {
   EXPECT_EQ(glGetError(), GLenum{GL_NO_ERROR});
   // A 16-bit depth renderbuffer against the window's 24 bits: the formats do not match.
   GLuint fb = framebuffer_with_texture(16, 16, {}, nullptr);
-  GLuint rb = 0;
-  glGenRenderbuffersEXT(1, &rb);
-  glBindRenderbufferEXT(GL_RENDERBUFFER_EXT, rb);
-  glRenderbufferStorageEXT(GL_RENDERBUFFER_EXT, GL_DEPTH_COMPONENT16, 16, 16);
-  glFramebufferRenderbufferEXT(GL_FRAMEBUFFER_EXT, GL_DEPTH_ATTACHMENT_EXT, GL_RENDERBUFFER_EXT,
-                               rb);
+  const GLuint rb =
+      glpt_test::attach_renderbuffer(GL_DEPTH_ATTACHMENT_EXT, GL_DEPTH_COMPONENT16, 16, 16);
   ASSERT_EQ(glCheckFramebufferStatusEXT(GL_FRAMEBUFFER_EXT), GLenum{GL_FRAMEBUFFER_COMPLETE_EXT});
   glBindFramebufferEXT(GL_READ_FRAMEBUFFER_EXT, 0);
   glBlitFramebufferEXT(0, 0, 1, 1, 0, 0, 1, 1, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
@@ -220,12 +216,8 @@ TEST_F(FramebufferBlitTest, DepthAndStencilCopyIntoAnObject) {
   glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
   GLuint texture = 0;
   const GLuint fb = framebuffer_with_texture(16, 16, {}, &texture);
-  GLuint rb = 0;
-  glGenRenderbuffersEXT(1, &rb);
-  glBindRenderbufferEXT(GL_RENDERBUFFER_EXT, rb);
-  glRenderbufferStorageEXT(GL_RENDERBUFFER_EXT, GL_DEPTH24_STENCIL8_EXT, 16, 16);
-  glFramebufferRenderbufferEXT(GL_FRAMEBUFFER_EXT, GL_DEPTH_ATTACHMENT_EXT, GL_RENDERBUFFER_EXT,
-                               rb);
+  const GLuint rb =
+      glpt_test::attach_renderbuffer(GL_DEPTH_ATTACHMENT_EXT, GL_DEPTH24_STENCIL8_EXT, 16, 16);
   glFramebufferRenderbufferEXT(GL_FRAMEBUFFER_EXT, GL_STENCIL_ATTACHMENT_EXT, GL_RENDERBUFFER_EXT,
                                rb);
   ASSERT_EQ(glCheckFramebufferStatusEXT(GL_FRAMEBUFFER_EXT), GLenum{GL_FRAMEBUFFER_COMPLETE_EXT});

@@ -31,15 +31,7 @@ GLuint texture_2d(GLsizei width, GLsizei height, GLenum internal_format = GL_RGB
   return t;
 }
 
-// A renderbuffer of `format` and size, attached to the bound framebuffer at `attachment`.
-GLuint attach_renderbuffer(GLenum attachment, GLenum format, GLsizei width, GLsizei height) {
-  GLuint rb = 0;
-  glGenRenderbuffersEXT(1, &rb);
-  glBindRenderbufferEXT(GL_RENDERBUFFER_EXT, rb);
-  glRenderbufferStorageEXT(GL_RENDERBUFFER_EXT, format, width, height);
-  glFramebufferRenderbufferEXT(GL_FRAMEBUFFER_EXT, attachment, GL_RENDERBUFFER_EXT, rb);
-  return rb;
-}
+using glpt_test::attach_renderbuffer;
 
 TEST_F(GlTest, FramebufferNamesBecomeObjectsWhenBound) {
   GLuint f[2] = {};

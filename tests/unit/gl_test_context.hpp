@@ -36,6 +36,16 @@ class HeadlessGlTest : public GlTest {
 
 namespace glpt_test {
 
+// A renderbuffer of `format` and size, attached to the bound framebuffer at `attachment`.
+inline GLuint attach_renderbuffer(GLenum attachment, GLenum format, GLsizei width, GLsizei height) {
+  GLuint rb = 0;
+  glGenRenderbuffersEXT(1, &rb);
+  glBindRenderbufferEXT(GL_RENDERBUFFER_EXT, rb);
+  glRenderbufferStorageEXT(GL_RENDERBUFFER_EXT, format, width, height);
+  glFramebufferRenderbufferEXT(GL_FRAMEBUFFER_EXT, attachment, GL_RENDERBUFFER_EXT, rb);
+  return rb;
+}
+
 // A quad over the whole viewport under identity matrices, texture coordinates 0..1.
 inline void full_viewport_textured_quad() {
   glBegin(GL_QUADS);
