@@ -276,9 +276,13 @@ struct GpuStateHistory {
 };
 
 // Per pixel of the denoiser's G-buffer copy: what the next frame's reprojection tests taps on.
+// The shading normal is kept unpacked (n.x, n.y in meta.zw as float bits, n.z in eye.w): the
+// a-trous filter reads it at every tap, and decoding the G-buffer's octahedral normal there took
+// half of an iteration's time on lavapipe.
 struct DenoiseGuide {
-  vec4 eye;    // xyz: eye-space position; w: 0 for no denoised surface here
-  uvec4 meta;  // x: history id, y: history length (frames), z: packed shading normal, w: unused
+  vec4 eye;    // xyz: eye-space position; w: the normal's z
+  uvec4 meta;  // x: history id (0: no denoised surface here), y: history length (frames),
+               // z, w: the normal's x and y (float bits)
 };
 
 struct DenoiseUniforms {

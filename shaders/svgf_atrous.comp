@@ -27,80 +27,107 @@ bool inside(ivec2 q) {
   return q.x >= 0 && q.y >= 0 && q.x < int(dn.image.x) && q.y < int(dn.image.y);
 }
 
+// Every loop over channels or taps has a constant trip count and indexes its arrays with
+// constants once unrolled: an array indexed by a value the compiler cannot resolve lives in
+// memory, which lavapipe reads and writes one invocation at a time.
+//
+// One a-trous tap per channel, weighed as above. The weights are computed as one exp2 per
+// channel of the summed log2 terms (w_depth * w_normal * w_luminance = 2^(sum)): two
+// transcendentals fewer per tap than exp, pow and exp (on lavapipe each is a vector polynomial,
+// about a third of an iteration's time).
+DenoiseGuide centre;
+vec3 x_p, n_p;
+float depth_scale;  // log2(e) / (sigma_depth * pixel footprint * step)
+vec4 centre_values[3];
+float luminance_p[3], luminance_scale[3];  // log2(e) / (sigma_luminance * deviation), per channel
+vec3 sums[3];
+float variance_sums[3], weight_sums[3];
+
+void add_channel(uint c, ivec2 q, float h, float log_geometry) {
+  vec4 value = load_work(iteration.input_slot, q, c);
+  float w = h * exp2(log_geometry - abs(luminance(value.rgb) - luminance_p[c]) * luminance_scale[c]);
+  sums[c] += w * value.rgb;
+  variance_sums[c] += w * w * value.a;
+  weight_sums[c] += w;
+}
+
+float b3_spline(int d) { return d == 0 ? 0.375 : abs(d) == 1 ? 0.25 : 0.0625; }
+
+void add_tap(ivec2 pixel, ivec2 offset, float h, uint channels) {
+  ivec2 q = pixel + offset * int(iteration.step);
+  if (!inside(q)) return;
+  DenoiseGuide g = load_guide(q);
+  // Another object's light is no estimate of this one's, however close its plane (gears side by
+  // side, a character against a wall at the same depth).
+  if (g.meta.x != centre.meta.x) return;  // (0, no surface, is never the centre's id)
+  float facing = dot(n_p, guide_normal(g));
+  if (!(facing > 0.0)) return;  // w_normal = 0
+  float log_geometry = -abs(dot(n_p, g.eye.xyz - x_p)) * depth_scale / length(vec2(offset)) +
+                       dn.sigmas.y * log2(facing);
+  if (!(log_geometry > -126.0)) return;  // a weight below the smallest normal float
+  add_channel(0u, q, h, log_geometry);
+  add_channel(1u, q, h, log_geometry);
+  if (channels > 2u) add_channel(2u, q, h, log_geometry);
+}
+
 void main() {
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
   if (!inside(pixel)) return;
-  DenoiseGuide centre = load_guide(pixel);
-  if (centre.eye.w == 0.0) return;  // not shaded by the tracer: nothing to filter
-  vec3 x_p = centre.eye.xyz;
-  vec3 n_p = gbuffer_unpack_normal(centre.meta.z);
-  float footprint = pixel_footprint(x_p);
-  int radius = int(dn.sigmas.w);
-  float kernel[3] = radius == 1 ? float[3](0.5, 0.25, 0.0) : float[3](0.375, 0.25, 0.0625);
-  int step = int(iteration.step);
+  centre = load_guide(pixel);
+  if (!guide_shaded(centre)) return;  // not shaded by the tracer: nothing to filter
+  x_p = centre.eye.xyz;
+  n_p = guide_normal(centre);
+  const float log2_e = 1.4426950408889634;
+  depth_scale = log2_e / (dn.sigmas.x * pixel_footprint(x_p) * float(iteration.step) + 1e-20);
   uint channels = filtered_channels();  // a channel the frame cannot have is neither read nor written
 
-  vec4 centre_values[3] = vec4[3](vec4(0.0), vec4(0.0), vec4(0.0));
-  float luminance_p[3] = float[3](0.0, 0.0, 0.0), sigma_l[3] = float[3](1.0, 1.0, 1.0);
-  for (uint c = 0u; c < channels; ++c) {
-    centre_values[c] = load_work(iteration.input_slot, pixel, c);
+  for (uint c = 0u; c < 3u; ++c) {
+    centre_values[c] = c < channels ? load_work(iteration.input_slot, pixel, c) : vec4(0.0);
     luminance_p[c] = luminance(centre_values[c].rgb);
   }
   // The centre's variance through a 3x3 Gaussian (the paper's prefilter): one noisy variance
   // estimate must not stop the filter. Later iterations read variance the previous iteration
   // filtered already: they take it as it is (a third of their cost saved, no measured loss).
-  if (iteration.step > 1u) {
-    for (uint c = 0u; c < channels; ++c)
-      sigma_l[c] = dn.sigmas.z * sqrt(max(centre_values[c].a, 0.0)) + 1e-10;
-  } else {
+  vec3 variance = vec3(centre_values[0].a, centre_values[1].a, centre_values[2].a);
+  if (iteration.step == 1u) {
     vec3 sum = vec3(0.0);
     float total = 0.0;
     for (int dy = -1; dy <= 1; ++dy)
       for (int dx = -1; dx <= 1; ++dx) {
         ivec2 q = pixel + ivec2(dx, dy);
-        if (!inside(q) || imageLoad(guide_eye, q).w == 0.0) continue;
+        if (!inside(q) || imageLoad(guide_meta, q).x == 0u) continue;
         float w = (dx == 0 ? 0.5 : 0.25) * (dy == 0 ? 0.5 : 0.25);
         sum += w * vec3(load_work(iteration.input_slot, q, 0u).a,
                         load_work(iteration.input_slot, q, 1u).a,
                         channels > 2u ? load_work(iteration.input_slot, q, 2u).a : 0.0);
         total += w;
       }
-    vec3 variance = sum / max(total, 1e-6);
-    for (uint c = 0u; c < channels; ++c)
-      sigma_l[c] = dn.sigmas.z * sqrt(max(variance[c], 0.0)) + 1e-10;
+    variance = sum / max(total, 1e-6);
   }
+  for (uint c = 0u; c < 3u; ++c)
+    luminance_scale[c] = log2_e / (dn.sigmas.z * sqrt(max(variance[c], 0.0)) + 1e-10);
 
-  vec3 sums[3];
-  float variance_sums[3], weight_sums[3];
-  for (uint c = 0u; c < channels; ++c) {
-    float h = kernel[0] * kernel[0];
-    sums[c] = h * centre_values[c].rgb;
-    variance_sums[c] = h * h * centre_values[c].a;
-    weight_sums[c] = h;
+  // The B3-spline kernel (0.375, 0.25, 0.0625), or (0.5, 0.25) for the 3x3 kernel; each loop
+  // has a constant trip count so the compiler unrolls it.
+  float h_centre = int(dn.sigmas.w) == 1 ? 0.25 : 0.375 * 0.375;
+  for (uint c = 0u; c < 3u; ++c) {
+    sums[c] = h_centre * centre_values[c].rgb;
+    variance_sums[c] = h_centre * h_centre * centre_values[c].a;
+    weight_sums[c] = h_centre;
   }
-  for (int dy = -radius; dy <= radius; ++dy)
-    for (int dx = -radius; dx <= radius; ++dx) {
-      if (dx == 0 && dy == 0) continue;
-      ivec2 q = pixel + ivec2(dx, dy) * step;
-      if (!inside(q)) continue;
-      DenoiseGuide g = load_guide(q);
-      // Another object's light is no estimate of this one's, however close its plane (gears side
-      // by side, a character against a wall at the same depth).
-      if (g.eye.w == 0.0 || g.meta.x != centre.meta.x) continue;
-      float geometry = exp(-abs(dot(n_p, g.eye.xyz - x_p)) /
-                           (dn.sigmas.x * footprint * float(step) * length(vec2(dx, dy)) + 1e-20)) *
-                       pow(max(dot(n_p, gbuffer_unpack_normal(g.meta.z)), 0.0), dn.sigmas.y);
-      if (!(geometry > 0.0)) continue;
-      float h = kernel[abs(dx)] * kernel[abs(dy)] * geometry;
-      for (uint c = 0u; c < channels; ++c) {
-        vec4 value = load_work(iteration.input_slot, q, c);
-        float w = h * exp(-abs(luminance(value.rgb) - luminance_p[c]) / sigma_l[c]);
-        sums[c] += w * value.rgb;
-        variance_sums[c] += w * w * value.a;
-        weight_sums[c] += w;
-      }
-    }
-  for (uint c = 0u; c < channels; ++c) {
+  if (int(dn.sigmas.w) == 1) {
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx)
+        if (dx != 0 || dy != 0)
+          add_tap(pixel, ivec2(dx, dy), (dx == 0 ? 0.5 : 0.25) * (dy == 0 ? 0.5 : 0.25), channels);
+  } else {
+    for (int dy = -2; dy <= 2; ++dy)
+      for (int dx = -2; dx <= 2; ++dx)
+        if (dx != 0 || dy != 0)
+          add_tap(pixel, ivec2(dx, dy), b3_spline(dx) * b3_spline(dy), channels);
+  }
+  for (uint c = 0u; c < 3u; ++c) {
+    if (c >= channels) break;
     float inverse_weight = 1.0 / weight_sums[c];  // >= the centre's kernel weight
     vec4 result = vec4(sums[c] * inverse_weight,
                        variance_sums[c] * inverse_weight * inverse_weight);

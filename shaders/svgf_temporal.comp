@@ -18,7 +18,15 @@
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_shader_image_load_formatted : require
 
+#extension GL_KHR_shader_subgroup_ballot : require
+#extension GL_KHR_shader_subgroup_vote : require
+
 #include "svgf/svgf_common.h"
+
+// Loops over channels and taps have constant trip counts and every array is indexed by constants
+// once they are unrolled (a channel the frame does not have is skipped by a uniform test): an
+// array indexed by a value the compiler cannot resolve lives in memory, which lavapipe reads and
+// writes one invocation at a time.
 
 // Whether the tracer shaded the pixel with samples the denoiser should filter.
 bool shaded(ivec2 q, out uvec4 surface) {
@@ -32,9 +40,24 @@ bool shaded(ivec2 q, out uvec4 surface) {
 bool tap_matches(ivec2 q, uint id, vec3 previous_eye, vec3 previous_normal, float tolerance) {
   if (q.x < 0 || q.y < 0 || q.x >= int(dn.image.x) || q.y >= int(dn.image.y)) return false;
   DenoiseGuide g = load_previous_guide(q);
-  if (g.eye.w == 0.0 || g.meta.x != id) return false;
-  if (dot(previous_normal, gbuffer_unpack_normal(g.meta.z)) < 0.9) return false;
+  if (g.meta.x != id) return false;  // (0, no surface, is never a pixel's id)
+  if (dot(previous_normal, guide_normal(g)) < 0.9) return false;
   return abs(dot(previous_normal, g.eye.xyz - previous_eye)) <= tolerance;
+}
+
+// Adds the previous frame's history at q with weight w.
+void add_history(ivec2 q, float w, inout vec3 colour[3], inout vec3 fast[3], inout vec2 moments[3],
+                 inout float history_length, inout float weight_sum) {
+  weight_sum += w;
+  history_length += w * float(imageLoad(previous_guide_meta, q).y);
+  for (uint c = 0u; c < 3u; ++c) {
+    if (c >= filtered_channels()) break;
+    vec4 slow = imageLoad(previous_history, ivec3(q, c));
+    vec4 quick = imageLoad(previous_history, ivec3(q, 3u + c));
+    colour[c] += w * slow.rgb;
+    fast[c] += w * quick.rgb;
+    moments[c] += w * vec2(slow.a, quick.a);
+  }
 }
 
 void main() {
@@ -48,7 +71,15 @@ void main() {
   vec3 eye = imageLoad(gbuffer_position, pixel).xyz;
   vec3 normal = gbuffer_unpack_normal(surface.y);
   uint channels = filtered_channels();
-  GpuStateHistory sh = state_histories[surface.x - 1u];
+  // Neighbouring pixels mostly show the same record state: where a whole subgroup does, its
+  // history is read once at a uniform index (lavapipe loads a per-invocation index one
+  // invocation at a time, 40 words each).
+  uint state_index = surface.x - 1u;
+  GpuStateHistory sh;
+  if (subgroupAllEqual(state_index))
+    sh = state_histories[subgroupBroadcastFirst(state_index)];
+  else
+    sh = state_histories[state_index];
   uint id = sh.info.x;
 
   // ---- reprojection into the previous frame
@@ -71,39 +102,21 @@ void main() {
       float tolerance = 2.0 * pixel_footprint(previous_eye.xyz);
       float weights[4] = float[4]((1.0 - f.x) * (1.0 - f.y), f.x * (1.0 - f.y), (1.0 - f.x) * f.y,
                                   f.x * f.y);
-      ivec2 taps[9];
-      float tap_weights[9];
-      uint count = 0u;
       for (int t = 0; t < 4; ++t) {
         ivec2 q = base + ivec2(t & 1, t >> 1);
-        if (weights[t] > 0.0 && tap_matches(q, id, previous_eye.xyz, previous_normal, tolerance)) {
-          taps[count] = q;
-          tap_weights[count++] = weights[t];
-        }
+        if (weights[t] > 0.0 && tap_matches(q, id, previous_eye.xyz, previous_normal, tolerance))
+          add_history(q, weights[t], previous_colour, previous_fast, previous_moments,
+                      previous_length, weight_sum);
       }
-      if (count == 0u) {
+      if (weight_sum == 0.0) {
         ivec2 centre = ivec2(floor(position + 0.5));
         for (int dy = -1; dy <= 1; ++dy)
           for (int dx = -1; dx <= 1; ++dx) {
             ivec2 q = centre + ivec2(dx, dy);
-            if (tap_matches(q, id, previous_eye.xyz, previous_normal, tolerance)) {
-              taps[count] = q;
-              tap_weights[count++] = 1.0;
-            }
+            if (tap_matches(q, id, previous_eye.xyz, previous_normal, tolerance))
+              add_history(q, 1.0, previous_colour, previous_fast, previous_moments,
+                          previous_length, weight_sum);
           }
-      }
-      for (uint t = 0u; t < count; ++t) {
-        ivec2 q = taps[t];
-        float w = tap_weights[t];
-        weight_sum += w;
-        previous_length += w * float(imageLoad(previous_guide_meta, q).y);
-        for (uint c = 0u; c < channels; ++c) {
-          vec4 colour = imageLoad(previous_history, ivec3(q, c));
-          vec4 fast = imageLoad(previous_history, ivec3(q, 3u + c));
-          previous_colour[c] += w * colour.rgb;
-          previous_fast[c] += w * fast.rgb;
-          previous_moments[c] += w * vec2(colour.a, fast.a);
-        }
       }
     }
   }
@@ -152,11 +165,12 @@ void main() {
   }
   float variances[3] = float[3](0.0, 0.0, 0.0);
   vec3 colours[3] = vec3[3](vec3(0.0), vec3(0.0), vec3(0.0));
-  for (uint c = channels; c < 3u; ++c) {
-    imageStore(history, ivec3(pixel, c), vec4(0.0));
-    imageStore(history, ivec3(pixel, 3u + c), vec4(0.0));
-  }
-  for (uint c = 0u; c < channels; ++c) {
+  for (uint c = 0u; c < 3u; ++c) {
+    if (c >= channels) {
+      imageStore(history, ivec3(pixel, c), vec4(0.0));
+      imageStore(history, ivec3(pixel, 3u + c), vec4(0.0));
+      continue;
+    }
     vec3 raw = raw_channel(pixel, c);
     float l = luminance(raw);
     vec3 colour = raw, fast = raw;
@@ -224,7 +238,8 @@ void main() {
                   pow(max(dot(normal, gbuffer_unpack_normal(s.y)), 0.0), 32.0);
         if (!(w > 0.0)) continue;
         total += w;
-        for (uint c = 0u; c < channels; ++c) {
+        for (uint c = 0u; c < 3u; ++c) {
+          if (c >= channels) break;
           float l = luminance(raw_channel(q, c));
           sums[c] += w * vec2(l, l * l);
         }
@@ -235,6 +250,7 @@ void main() {
         variances[c] = max(m.y - m.x * m.x, 0.0);
       }
   }
-  for (uint c = 0u; c < channels; ++c) store_work(0u, pixel, c, vec4(colours[c], variances[c]));
-  store_guide(pixel, DenoiseGuide(vec4(eye, 1.0), uvec4(id, uint(history_length), surface.y, 0u)));
+  for (uint c = 0u; c < 3u; ++c)
+    if (c < channels) store_work(0u, pixel, c, vec4(colours[c], variances[c]));
+  store_guide(pixel, make_guide(eye, normal, id, uint(history_length)));
 }

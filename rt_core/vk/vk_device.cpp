@@ -195,7 +195,8 @@ Candidate evaluate(VkPhysicalDevice device) {
       candidate.missing_ray_query.push_back("shaderSampledImageArrayNonUniformIndexing");
   }
 
-  // The path tracer counts rays with subgroupAdd.
+  // The path tracer counts rays with subgroupAdd; the denoiser reads a subgroup's shared record
+  // state once (subgroupAllEqual, subgroupBroadcastFirst).
   auto subgroup = make_info<VkPhysicalDeviceSubgroupProperties>(
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES);
   auto driver = make_info<VkPhysicalDeviceDriverProperties>(
@@ -206,8 +207,11 @@ Candidate evaluate(VkPhysicalDevice device) {
   candidate.driver = driver.driverName;
   if (driver.driverInfo[0] != '\0') candidate.driver += std::string(" ") + driver.driverInfo;
   if (!(subgroup.supportedStages & VK_SHADER_STAGE_COMPUTE_BIT) ||
-      !(subgroup.supportedOperations & VK_SUBGROUP_FEATURE_ARITHMETIC_BIT)) {
-    candidate.missing_ray_query.push_back("subgroup arithmetic in compute shaders");
+      !(subgroup.supportedOperations & VK_SUBGROUP_FEATURE_ARITHMETIC_BIT) ||
+      !(subgroup.supportedOperations & VK_SUBGROUP_FEATURE_VOTE_BIT) ||
+      !(subgroup.supportedOperations & VK_SUBGROUP_FEATURE_BALLOT_BIT)) {
+    candidate.missing_ray_query.push_back(
+        "subgroup arithmetic, votes and ballots in compute shaders");
   }
 
   vkGetPhysicalDeviceQueueFamilyProperties(device, &count, nullptr);

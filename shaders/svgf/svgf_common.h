@@ -38,6 +38,12 @@ DenoiseGuide load_guide(ivec2 p) {
 DenoiseGuide load_previous_guide(ivec2 p) {
   return DenoiseGuide(imageLoad(previous_guide_eye, p), imageLoad(previous_guide_meta, p));
 }
+DenoiseGuide make_guide(vec3 eye, vec3 normal, uint id, uint history_length) {
+  return DenoiseGuide(vec4(eye, normal.z),
+                      uvec4(max(id, 1u), history_length, floatBitsToUint(normal.xy)));
+}
+bool guide_shaded(DenoiseGuide g) { return g.meta.x != 0u; }
+vec3 guide_normal(DenoiseGuide g) { return vec3(uintBitsToFloat(g.meta.zw), g.eye.w); }
 void store_guide(ivec2 p, DenoiseGuide g) {
   imageStore(guide_eye, p, g.eye);
   imageStore(guide_meta, p, g.meta);
