@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# ab_denoiser_builds.sh BASE_BUILD_DIR NEW_BUILD_DIR [ROUNDS]
+# ab_denoiser_builds.sh BASE_BUILD_DIR NEW_BUILD_DIR [ROUNDS] [glxgears|lit_scene]
 #
-# The denoiser's device time on glxgears (320x240 and 640x480, 25 s each, accumulation off) for
+# The denoiser's device time on glxgears (320x240 and 640x480, 25 s each, accumulation off) or
+# on bench/lit_scene (lit geometry over the whole window, 12 frames; the new build's program) for
 # two builds of glpt, alternating run by run so both see the same machine: per run the median
 # trace_ms and denoise_ms (GLPT_STATS, Vulkan timestamps) and the frames counted. For changes to
 # the denoiser (docs/denoiser.md, "Cost"); bench_denoiser.sh measures one build in full.
@@ -9,7 +10,8 @@ set -u
 base=${1:?base build dir}
 new=${2:?new build dir}
 rounds=${3:-3}
-echo "command: $0 $base $new $rounds"
+scene=${4:-glxgears}
+echo "command: $0 $base $new $rounds $scene"
 echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')"
 display=:$((200 + RANDOM % 100))
 Xvfb $display -screen 0 1280x1024x24 -nolisten tcp >/dev/null 2>&1 &
@@ -20,7 +22,8 @@ run() {
   local libgl=$1 size=$2 log
   log=$(mktemp)
   env DISPLAY=$display LD_PRELOAD=$libgl GLPT_STATS=1 GLPT_ACCUMULATE=0 GLPT_QUIET=1 \
-    timeout -s INT 25 /usr/bin/glxgears -geometry $size 2>"$log" >/dev/null
+    $(if [ "$scene" = lit_scene ]; then echo "$new/bench/lit_scene --frames 12 --size $size"
+      else echo "timeout -s INT 25 /usr/bin/glxgears -geometry $size"; fi) 2>"$log" >/dev/null
   awk -v skip=3 '
     /^glpt: frame=/ {
       for (i = 1; i <= NF; ++i) { split($i, kv, "="); v[kv[1]] = kv[2] }

@@ -218,11 +218,14 @@ void main() {
     imageStore(history, ivec3(pixel, c), vec4(colour, moments.x));
     imageStore(history, ivec3(pixel, 3u + c), vec4(fast, moments.y));
   }
+  // A clamp shortens the history for the next frames' weights but keeps the moments' variance
+  // (moved with the colour above): the spatial estimate is for histories that are short.
+  bool short_history = history_length < 4.0;
   if (clamped_any) history_length = min(history_length, dn.params.z);
 
   // ---- variance: spatial where the history is short (the paper's 7x7 bilateral estimate; 5x5
   // here, weighted by normal and plane distance)
-  if (history_length < 4.0) {
+  if (short_history) {
     vec2 sums[3] = vec2[3](vec2(0.0), vec2(0.0), vec2(0.0));
     float total = 0.0;
     float tolerance = 2.0 * pixel_footprint(eye);
