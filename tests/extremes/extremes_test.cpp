@@ -32,6 +32,9 @@
 #include "gl_shim/frame/headless_target.hpp"
 #include "gl_shim/gl_entry_decls.h"
 
+// After the GL declarations (gl_entry_decls.h) it calls.
+#include "../common/gl_shapes.hpp"
+
 namespace {
 
 using glpt::test::Settings;
@@ -168,23 +171,7 @@ void material4(GLenum pname, float r, float g, float b) {
   glMaterialfv(GL_FRONT_AND_BACK, pname, v);
 }
 
-// A sphere of `radius` around (cx, cy, cz), positions computed in double and rounded once.
-void sphere_around(double cx, double cy, double cz, double radius, int slices, int stacks) {
-  for (int i = 0; i < stacks; ++i) {
-    const double p0 = kPi * i / stacks - kPi / 2, p1 = kPi * (i + 1) / stacks - kPi / 2;
-    glBegin(GL_QUAD_STRIP);
-    for (int j = 0; j <= slices; ++j) {
-      const double a = 2 * kPi * j / slices;
-      for (const double p : {p1, p0}) {
-        const double nx = std::cos(p) * std::cos(a), ny = std::cos(p) * std::sin(a),
-                     nz = std::sin(p);
-        glNormal3d(nx, ny, nz);
-        glVertex3d(cx + radius * nx, cy + radius * ny, cz + radius * nz);
-      }
-    }
-    glEnd();
-  }
-}
+using glpt::test_shapes::sphere_around;
 
 // The axis-aligned box [x0, x1] x [y0, y1] x [z0, z1] (double corners), outward normals.
 void box(double x0, double y0, double z0, double x1, double y1, double z1) {
@@ -766,11 +753,11 @@ TEST(Extremes, A4096SquareDrawable) {
     for (int c = 0; c < 3; ++c)
       EXPECT_NEAR(image.at(kSize / 2, kSize / 2, c), raster_centre.at(kSize / 2, kSize / 2, c), 12)
           << mode;
-    // Sane memory: the frame's buffers (path-traced mode keeps a G-buffer, radiance channels
-    // and an accumulation buffer per pixel: ~200 bytes a pixel, 3.2 GiB here). The time is
-    // printed, not asserted (timed assertions do not belong in tests). AddressSanitizer's
-    // shadow memory and quarantine raise the peak past any figure of glpt's own: the bound is
-    // checked in the normal build only.
+      // Sane memory: the frame's buffers (path-traced mode keeps a G-buffer, radiance channels
+      // and an accumulation buffer per pixel: ~200 bytes a pixel, 3.2 GiB here). The time is
+      // printed, not asserted (timed assertions do not belong in tests). AddressSanitizer's
+      // shadow memory and quarantine raise the peak past any figure of glpt's own: the bound is
+      // checked in the normal build only.
 #if !defined(__SANITIZE_ADDRESS__)
     EXPECT_LT(max_rss_mib(), 6 * 1024) << mode;
 #endif

@@ -13,6 +13,9 @@
 
 #include "scene_util.hpp"
 
+// After the GL declarations (scene_util.hpp's <GL/gl.h>) it calls.
+#include "../../common/gl_shapes.hpp"
+
 namespace {
 
 using namespace glpt::conformance::util;
@@ -29,24 +32,7 @@ struct Lcg {
   }
 };
 
-// A sphere of `radius` around `centre` (given in double, each vertex rounded to float only
-// once): at 1e5 from the origin the float vertices are 1/128 apart, which is the point.
-void sphere_around(double cx, double cy, double cz, double radius, int slices, int stacks) {
-  for (int i = 0; i < stacks; ++i) {
-    const double p0 = kPi * i / stacks - kPi / 2, p1 = kPi * (i + 1) / stacks - kPi / 2;
-    glBegin(GL_QUAD_STRIP);
-    for (int j = 0; j <= slices; ++j) {
-      const double a = 2 * kPi * j / slices;
-      for (const double p : {p1, p0}) {
-        const double nx = std::cos(p) * std::cos(a), ny = std::cos(p) * std::sin(a),
-                     nz = std::sin(p);
-        glNormal3d(nx, ny, nz);
-        glVertex3d(cx + radius * nx, cy + radius * ny, cz + radius * nz);
-      }
-    }
-    glEnd();
-  }
-}
+using glpt::test_shapes::sphere_around;
 
 // The scene of the scale scenes, in units of 1: a lit sphere, a lit cube and a floor under a
 // positional light, seen through a 53-degree frustum from 1 to 20. `s` scales everything (the
