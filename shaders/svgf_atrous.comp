@@ -23,14 +23,6 @@ layout(push_constant) uniform Iteration {
   uint feedback;  // 1: also write the result as this frame's colour history
 } iteration;
 
-bool inside(ivec2 q) {
-  return q.x >= 0 && q.y >= 0 && q.x < int(dn.image.x) && q.y < int(dn.image.y);
-}
-
-// Every loop over channels or taps has a constant trip count and indexes its arrays with
-// constants once unrolled: an array indexed by a value the compiler cannot resolve lives in
-// memory, which lavapipe reads and writes one invocation at a time.
-//
 // One a-trous tap per channel, weighed as above. The weights are computed as one exp2 per
 // channel of the summed log2 terms (w_depth * w_normal * w_luminance = 2^(sum)): two
 // transcendentals fewer per tap than exp, pow and exp (on lavapipe each is a vector polynomial,
@@ -51,7 +43,11 @@ void add_channel(uint c, ivec2 q, float h, float log_geometry) {
   weight_sums[c] += w;
 }
 
-float b3_spline(int d) { return d == 0 ? 0.375 : abs(d) == 1 ? 0.25 : 0.0625; }
+// The kernel's weight at offset d (in taps) along one axis: the B3 spline (0.375, 0.25, 0.0625),
+// or (0.5, 0.25) for the 3x3 kernel, which is also the variance prefilter's Gaussian.
+float kernel_weight(int d, bool three_by_three) {
+  return three_by_three ? (d == 0 ? 0.5 : 0.25) : (d == 0 ? 0.375 : abs(d) == 1 ? 0.25 : 0.0625);
+}
 
 void add_tap(ivec2 pixel, ivec2 offset, float h, uint channels) {
   ivec2 q = pixel + offset * int(iteration.step);
@@ -96,7 +92,7 @@ void main() {
       for (int dx = -1; dx <= 1; ++dx) {
         ivec2 q = pixel + ivec2(dx, dy);
         if (!inside(q) || imageLoad(guide_meta, q).x == 0u) continue;
-        float w = (dx == 0 ? 0.5 : 0.25) * (dy == 0 ? 0.5 : 0.25);
+        float w = kernel_weight(dx, true) * kernel_weight(dy, true);
         sum += w * vec3(load_work(iteration.input_slot, q, 0u).a,
                         load_work(iteration.input_slot, q, 1u).a,
                         channels > 2u ? load_work(iteration.input_slot, q, 2u).a : 0.0);
@@ -107,24 +103,25 @@ void main() {
   for (uint c = 0u; c < 3u; ++c)
     luminance_scale[c] = log2_e / (dn.sigmas.z * sqrt(max(variance[c], 0.0)) + 1e-10);
 
-  // The B3-spline kernel (0.375, 0.25, 0.0625), or (0.5, 0.25) for the 3x3 kernel; each loop
-  // has a constant trip count so the compiler unrolls it.
-  float h_centre = int(dn.sigmas.w) == 1 ? 0.25 : 0.375 * 0.375;
+  // Each tap loop has a constant trip count so the compiler unrolls it.
+  bool three_by_three = int(dn.sigmas.w) == 1;
+  float h_centre = kernel_weight(0, three_by_three) * kernel_weight(0, three_by_three);
   for (uint c = 0u; c < 3u; ++c) {
     sums[c] = h_centre * centre_values[c].rgb;
     variance_sums[c] = h_centre * h_centre * centre_values[c].a;
     weight_sums[c] = h_centre;
   }
-  if (int(dn.sigmas.w) == 1) {
+  if (three_by_three) {
     for (int dy = -1; dy <= 1; ++dy)
       for (int dx = -1; dx <= 1; ++dx)
         if (dx != 0 || dy != 0)
-          add_tap(pixel, ivec2(dx, dy), (dx == 0 ? 0.5 : 0.25) * (dy == 0 ? 0.5 : 0.25), channels);
+          add_tap(pixel, ivec2(dx, dy), kernel_weight(dx, true) * kernel_weight(dy, true), channels);
   } else {
     for (int dy = -2; dy <= 2; ++dy)
       for (int dx = -2; dx <= 2; ++dx)
         if (dx != 0 || dy != 0)
-          add_tap(pixel, ivec2(dx, dy), b3_spline(dx) * b3_spline(dy), channels);
+          add_tap(pixel, ivec2(dx, dy), kernel_weight(dx, false) * kernel_weight(dy, false),
+                  channels);
   }
   for (uint c = 0u; c < 3u; ++c) {
     if (c >= channels) break;

@@ -23,11 +23,6 @@
 
 #include "svgf/svgf_common.h"
 
-// Loops over channels and taps have constant trip counts and every array is indexed by constants
-// once they are unrolled (a channel the frame does not have is skipped by a uniform test): an
-// array indexed by a value the compiler cannot resolve lives in memory, which lavapipe reads and
-// writes one invocation at a time.
-
 // Whether the tracer shaded the pixel with samples the denoiser should filter.
 bool shaded(ivec2 q, out uvec4 surface) {
   surface = imageLoad(gbuffer_surface, q);
@@ -38,7 +33,7 @@ bool shaded(ivec2 q, out uvec4 surface) {
 // Whether the previous frame's pixel q shows the point `previous_eye` (the current pixel's
 // surface point in the previous eye space) of object `id` with normal `previous_normal`.
 bool tap_matches(ivec2 q, uint id, vec3 previous_eye, vec3 previous_normal, float tolerance) {
-  if (q.x < 0 || q.y < 0 || q.x >= int(dn.image.x) || q.y >= int(dn.image.y)) return false;
+  if (!inside(q)) return false;
   DenoiseGuide g = load_previous_guide(q);
   if (g.meta.x != id) return false;  // (0, no surface, is never a pixel's id)
   if (dot(previous_normal, guide_normal(g)) < 0.9) return false;
@@ -62,7 +57,7 @@ void add_history(ivec2 q, float w, inout vec3 colour[3], inout vec3 fast[3], ino
 
 void main() {
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
-  if (pixel.x >= int(dn.image.x) || pixel.y >= int(dn.image.y)) return;
+  if (!inside(pixel)) return;
   uvec4 surface;
   if (!shaded(pixel, surface)) {
     store_guide(pixel, DenoiseGuide(vec4(0.0), uvec4(0u)));
@@ -147,7 +142,7 @@ void main() {
     for (int dy = -1; dy <= 1; ++dy)
       for (int dx = -1; dx <= 1; ++dx) {
         ivec2 q = pixel + ivec2(dx, dy);
-        if (q.x < 0 || q.y < 0 || q.x >= int(dn.image.x) || q.y >= int(dn.image.y)) continue;
+        if (!inside(q)) continue;
         // Any traced sample counts (no G-buffer read: this runs for every pixel every frame).
         vec4 direct = imageLoad(raw_channel0, q);
         if (!(direct.a > 0.0)) continue;
@@ -232,7 +227,7 @@ void main() {
     for (int dy = -2; dy <= 2; ++dy)
       for (int dx = -2; dx <= 2; ++dx) {
         ivec2 q = pixel + ivec2(dx, dy);
-        if (q.x < 0 || q.y < 0 || q.x >= int(dn.image.x) || q.y >= int(dn.image.y)) continue;
+        if (!inside(q)) continue;
         uvec4 s;
         if (!shaded(q, s)) continue;
         vec3 qe = imageLoad(gbuffer_position, q).xyz;

@@ -54,12 +54,21 @@ void store_work(uint slot, ivec2 p, uint c, vec4 value) {
   imageStore(work, ivec3(p, slot * 3u + c), value);
 }
 
+// Whether pixel q lies in the image.
+bool inside(ivec2 q) {
+  return q.x >= 0 && q.y >= 0 && q.x < int(dn.image.x) && q.y < int(dn.image.y);
+}
+
 // The channels the passes filter: direct and indirect diffuse, and specular where any surface
 // reflects specularly (GLPT_DN_NO_SPECULAR; specular is the last channel).
+//
+// Both passes loop over channels (and taps) with constant trip counts, a channel the frame does
+// not have skipped by a uniform test, so that every array is indexed by constants once the loops
+// are unrolled: an array indexed by a value the compiler cannot resolve lives in memory, which
+// lavapipe reads and writes one invocation at a time.
 uint filtered_channels() { return (dn.image.z & GLPT_DN_NO_SPECULAR) != 0u ? 2u : 3u; }
 
 float luminance(vec3 c) { return dot(c, vec3(0.2126, 0.7152, 0.0722)); }
-
 
 vec3 raw_channel(ivec2 p, uint c) {
   return c == 0u ? imageLoad(raw_channel0, p).rgb
