@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # soak.sh [--frames N] [--modes "raster path"] [--programs "glxgears gears pipes"]
 #         [--trace FILE] [--trace-repeat K] [--path-settings "GLPT_*=..."] [--out DIR]
+#         [--geometry WxH]
 #
 # The soak of issue 22 (not a test, not in CI; docs/soak.md): each program runs N frames
 # (default 10,000) in each mode under glpt, headless, and what every frame cost is read from
@@ -14,7 +15,9 @@
 # frames; the recorded game (--trace, an apitrace trace) is replayed by glpt-replay in one process,
 # --repeat K times (K defaults to enough passes for N frames). Path-traced runs use
 # --path-settings (default: 1 sample, trace scale 0.5: 10,000 path-traced frames of a 640x480
-# game otherwise take hours on 2 cores).
+# game otherwise take hours on 2 cores). --geometry gives glxgears and the hacks that window size
+# (default: theirs; the hacks open 1280x720 in the private Xvfb, and the trace and the denoiser
+# cost grows with the window).
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 repo=$(cd "$here/.." && pwd)
@@ -28,6 +31,7 @@ trace=""
 trace_repeat=0
 path_settings="GLPT_SPP=1 GLPT_SCALE=0.5"
 out=/tmp/glpt-soak
+geometry=""
 while [ $# -gt 0 ]; do
   case $1 in
     --frames) frames=$2; shift 2 ;;
@@ -37,14 +41,16 @@ while [ $# -gt 0 ]; do
     --trace-repeat) trace_repeat=$2; shift 2 ;;
     --path-settings) path_settings=$2; shift 2 ;;
     --out) out=$2; shift 2 ;;
-    -h|--help) sed -n '2,17p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    --geometry) geometry=$2; shift 2 ;;
+    -h|--help) sed -n '2,21p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "soak: unknown argument '$1'" >&2; exit 2 ;;
   esac
 done
 [ -f "$libgl" ] && [ -x "$replay" ] || { echo "soak: build first ($libgl, $replay)" >&2; exit 2; }
 mkdir -p "$out"
 echo "command: $0 --frames $frames --modes \"$modes\" --programs \"$programs\"" \
-  "${trace:+--trace $trace} --path-settings \"$path_settings\" --out $out"
+  "${trace:+--trace $trace} --path-settings \"$path_settings\" --out $out" \
+  "${geometry:+--geometry $geometry}"
 echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')"
 echo "commit: $(git -C "$repo" rev-parse --short HEAD 2>/dev/null || echo unknown)"
 
@@ -62,6 +68,7 @@ for mode in $modes; do
     else
       command=("/usr/libexec/xscreensaver/$program" -window)
     fi
+    [ -n "$geometry" ] && command+=(-geometry "$geometry")
     command -v "${command[0]}" >/dev/null || { echo "soak: no ${command[0]}, skipped" >&2; continue; }
     stats=$out/$program.$mode.stats
     rm -f "$stats"
