@@ -80,6 +80,7 @@ void bind_target_and_make_current(Context& ctx, WindowTarget* target) {
   if (ctx.target != nullptr && ctx.target != target) flush_before_release(ctx);
   ctx.target = target;
   set_current_context(&ctx);
+  if (target != nullptr) target->forget_size();  // (WindowTarget::known_size)
   uint32_t w = 0, h = 0;
   if (ctx.framebuffer.viewport_initialized || target == nullptr || !target->query_size(&w, &h))
     return;
@@ -131,7 +132,7 @@ bool ensure_output(Context& ctx) {
 rec::DrawableConfig current_drawable(Context& ctx) {
   WindowTarget* target = render_target(ctx);
   rec::DrawableConfig drawable = target->config();
-  if (!target->query_size(&drawable.width, &drawable.height)) drawable.width = drawable.height = 0;
+  if (!target->known_size(&drawable.width, &drawable.height)) drawable.width = drawable.height = 0;
   return drawable;
 }
 
@@ -242,6 +243,14 @@ void end_frame(Context& ctx, bool swap) {
 namespace {
 
 void end_window_frame(Context& ctx, bool swap) {
+  // A swap sees the window's size now, and the next frame asks again (WindowTarget::known_size).
+  if (ctx.target != nullptr) ctx.target->forget_size();
+  struct ForgetAfter {
+    WindowTarget* target;
+    ~ForgetAfter() {
+      if (target != nullptr) target->forget_size();
+    }
+  } forget_after{ctx.target};
   if (!ctx.render_frame_ends) {
     ctx.recorder.seal();
     if (ensure_output(ctx)) {
@@ -264,10 +273,11 @@ void end_window_frame(Context& ctx, bool swap) {
     return;
   }
   ctx.recorder.seal();
-  render_held_before(ctx, current_drawable(ctx), swap);
+  const rec::DrawableConfig drawable = current_drawable(ctx);
+  render_held_before(ctx, drawable, swap);
   std::vector<rt::QuerySamples> samples;
-  if (!ctx.output->end_frame(ctx.recorder.record(), current_drawable(ctx),
-                             ctx.recording_since.elapsed_ms(), *ctx.target, swap, &samples))
+  if (!ctx.output->end_frame(ctx.recorder.record(), drawable, ctx.recording_since.elapsed_ms(),
+                             *ctx.target, swap, &samples))
     record_error(ctx, GL_OUT_OF_MEMORY);  // as in execute_record
   // Running totals, so a program killed mid-run (as screensavers are) still leaves them.
   if (ctx.output->stats_enabled()) {

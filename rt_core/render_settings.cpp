@@ -154,6 +154,12 @@ RenderSettings parse_render_settings(const std::function<const char*(const char*
       [](const char* text) { return parse_uint(text, 0, kMaxAccumulated); }, "0..16777216");
   if (const char* path = lookup("GLPT_CLASSIFY_LOG"); path != nullptr && *path != '\0')
     settings.classify_log = path;
+  const auto set = [&](const char* name) {
+    const char* value = lookup(name);
+    return value != nullptr && *value != '\0' && std::strcmp(value, "0") != 0;
+  };
+  settings.device_timing = set("GLPT_STATS") || set("GLPT_STATS_FILE") || set("GLPT_DUMP_SCENE");
+  apply("GLPT_DEVICE_TIMING", settings.device_timing, parse_bool, "0 or 1");
 
   if (warning != nullptr) {
     warning->clear();

@@ -110,6 +110,13 @@ struct RenderSettings {
   DenoiseSettings denoise;
   // GLPT_VALIDATION=1 enables VK_LAYER_KHRONOS_validation if present.
   bool validation = false;
+  // Every submission timed on the device with timestamp queries (FrameStats' pass times).
+  // from_environment() turns it on only when something reports the times (GLPT_STATS,
+  // GLPT_STATS_FILE, GLPT_DUMP_SCENE) or GLPT_DEVICE_TIMING=1 asks: on lavapipe a pair of
+  // timestamps makes every submission wait for llvmpipe's threads, which tripled what a
+  // glReadPixels costs (bench/gl_readback.c). Off, the times are the host's, from submission to
+  // the wait that saw it complete.
+  bool device_timing = true;
 
   // Reads the variables above; bad values -> defaults + one stderr warning.
   static RenderSettings from_environment();

@@ -243,7 +243,8 @@ std::unique_ptr<Renderer> Renderer::create(const RenderSettings& settings, std::
                                            std::string* notice) {
   std::unique_ptr<Renderer> renderer;
   guarded("cannot create the Vulkan renderer", error, [&] {
-    const DeviceOptions options = DeviceOptions::from_environment(settings.validation);
+    DeviceOptions options = DeviceOptions::from_environment(settings.validation);
+    options.timestamps = settings.device_timing;
     std::shared_ptr<VulkanDevice> device = VulkanDevice::shared(options);
     RenderSettings effective = settings;
     std::unique_ptr<PathTracer> tracer;

@@ -26,6 +26,12 @@ class WindowTarget {
   virtual ~WindowTarget() = default;
   // Current size in pixels; false if the window is gone.
   virtual bool query_size(uint32_t* width, uint32_t* height) = 0;
+  // The size frames render at: for a window, the size query_size() last answered until
+  // forget_size(), which make-current, glViewport and every swap call. Mesa's software GLX asks
+  // the server at the same points (a drawable is re-validated when its stamp changes), not at
+  // every glReadPixels or glFinish: a query is a round trip to the X server.
+  virtual bool known_size(uint32_t* width, uint32_t* height) { return query_size(width, height); }
+  virtual void forget_size() {}
   // `rgba`: width*height RGBA8, rows bottom to top (GL order).
   virtual void present(const uint8_t* rgba, uint32_t width, uint32_t height) = 0;
   // The buffers the drawable has (GLX visual / EGL config); the size is filled in by the caller.

@@ -116,6 +116,9 @@ void glClear(Context& ctx, GLbitfield mask) {
 void glViewport(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height) {
   if (width < 0 || height < 0) return record_error(ctx, GL_INVALID_VALUE);
   constexpr GLsizei kMaxViewport = 16384;  // GL_MAX_VIEWPORT_DIMS
+  // Programs answer a resize with glViewport: the window's size is asked again
+  // (WindowTarget::known_size), as Mesa re-validates its drawable here.
+  if (ctx.target != nullptr) ctx.target->forget_size();
   ctx.framebuffer.viewport_x = x;
   ctx.framebuffer.viewport_y = y;
   ctx.framebuffer.viewport_width = std::min(width, kMaxViewport);

@@ -115,6 +115,18 @@ bool X11WindowTarget::query_size(uint32_t* width, uint32_t* height) {
   return true;
 }
 
+bool X11WindowTarget::known_size(uint32_t* width, uint32_t* height) {
+  const uint64_t known = known_size_;
+  if (known != kSizeUnknown) {
+    *width = static_cast<uint32_t>(known >> 32);
+    *height = static_cast<uint32_t>(known);
+    return true;
+  }
+  if (!query_size(width, height)) return false;
+  known_size_ = uint64_t{*width} << 32 | *height;
+  return true;
+}
+
 bool X11WindowTarget::prepare() {
   if (prepared_) return gc_ != 0;
   prepared_ = true;

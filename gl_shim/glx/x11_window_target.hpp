@@ -29,6 +29,8 @@ class X11WindowTarget final : public WindowTarget {
 
   uint32_t window() const { return window_; }
   bool query_size(uint32_t* width, uint32_t* height) override;
+  bool known_size(uint32_t* width, uint32_t* height) override;
+  void forget_size() override { known_size_ = kSizeUnknown; }
   rec::DrawableConfig config() const override { return config_; }
   void present(const uint8_t* rgba, uint32_t width, uint32_t height) override;
   const rt::HostImage* host_image(uint32_t width, uint32_t height) override;
@@ -44,6 +46,9 @@ class X11WindowTarget final : public WindowTarget {
   rec::DrawableConfig config_;
   uint32_t gc_ = 0;
   std::atomic<uint8_t> depth_ = 0;  // written by query_size, which any thread may call
+  // known_size(): width << 32 | height, or kSizeUnknown (any thread may ask or forget).
+  static constexpr uint64_t kSizeUnknown = ~uint64_t{0};
+  std::atomic<uint64_t> known_size_ = kSizeUnknown;
   int red_shift_ = 16, green_shift_ = 8, blue_shift_ = 0;
   bool prepared_ = false;
   bool lsb_first_ = true;  // server image byte order

@@ -1,5 +1,6 @@
 #include "rt_core/raster/raster_pipelines.hpp"
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cstdio>
@@ -65,7 +66,7 @@ RasterPipelines::RasterPipelines(const VulkanDevice& device)
       cache_file_(PipelineCacheFile::default_path(device.name()), device.properties()) {
   VkDevice dev = device.handle();
   // Set 0: the per-state uniforms and one combined image sampler per unit and texture kind,
-  // written with push descriptors per draw.
+  // written where a draw's textures change (descriptor_set_ring.hpp: why not push descriptors).
   std::vector<VkDescriptorSetLayoutBinding> bindings;
   bindings.push_back({GLPT_RASTER_BINDING_STATES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1,
                       VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, nullptr});
@@ -81,12 +82,19 @@ RasterPipelines::RasterPipelines(const VulkanDevice& device)
                       VK_SHADER_STAGE_FRAGMENT_BIT, nullptr});
   auto set_info = make_info<VkDescriptorSetLayoutCreateInfo>(
       VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO);
-  set_info.flags = VK_DESCRIPTOR_SET_LAYOUT_CREATE_PUSH_DESCRIPTOR_BIT_KHR;
   set_info.bindingCount = static_cast<uint32_t>(bindings.size());
   set_info.pBindings = bindings.data();
   VkDescriptorSetLayout set_layout = VK_NULL_HANDLE;
   GLPT_VK_CHECK(vkCreateDescriptorSetLayout(dev, &set_info, nullptr, &set_layout));
   set_layout_ = vk::DescriptorSetLayout(set_layout, {dev});
+  for (const VkDescriptorSetLayoutBinding& binding : bindings) {
+    auto same = [&](const VkDescriptorPoolSize& s) { return s.type == binding.descriptorType; };
+    auto found = std::find_if(set_counts_.begin(), set_counts_.end(), same);
+    if (found == set_counts_.end())
+      set_counts_.push_back({binding.descriptorType, binding.descriptorCount});
+    else
+      found->descriptorCount += binding.descriptorCount;
+  }
 
   push_stages_ = VK_SHADER_STAGE_VERTEX_BIT | geometry | VK_SHADER_STAGE_FRAGMENT_BIT;
   VkPushConstantRange push{push_stages_, 0, sizeof(gpu::RasterPushConstants)};

@@ -39,6 +39,8 @@ class RasterPipelines {
 
   VkPipelineLayout layout() const { return layout_.get(); }
   VkDescriptorSetLayout set_layout() const { return set_layout_.get(); }
+  // The descriptors one set of set_layout() holds, by type (for pools).
+  const std::vector<VkDescriptorPoolSize>& set_descriptor_counts() const { return set_counts_; }
   VkShaderStageFlags push_constant_stages() const { return push_stages_; }
   size_t size() const { return pipelines_.size(); }
 
@@ -49,6 +51,7 @@ class RasterPipelines {
 
   const VulkanDevice& device_;
   vk::DescriptorSetLayout set_layout_;
+  std::vector<VkDescriptorPoolSize> set_counts_;
   vk::PipelineLayout layout_;
   // The vertex and fragment shaders in variants by the varyings they declare (raster_varyings.h),
   // cheapest first: a pipeline takes the first that declares what it reads.

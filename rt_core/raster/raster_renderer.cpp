@@ -64,9 +64,10 @@ bool in_vertex_order(const rec::VertexData& v, const std::vector<rec::Decomposed
 }  // namespace
 
 RasterRenderer::RasterRenderer(std::shared_ptr<VulkanDevice> device)
-    : device_(std::move(device)), pipelines_(*device_), textures_(*device_) {
-  push_descriptor_set_ =
-      load_device_function<PFN_vkCmdPushDescriptorSetKHR>(*device_, "vkCmdPushDescriptorSetKHR");
+    : device_(std::move(device)),
+      pipelines_(*device_),
+      textures_(*device_),
+      descriptor_sets_(*device_, pipelines_.set_layout(), pipelines_.set_descriptor_counts()) {
   set_line_stipple_ =
       load_device_function<PFN_vkCmdSetLineStippleEXT>(*device_, "vkCmdSetLineStippleEXT");
 }
@@ -172,6 +173,7 @@ void RasterRenderer::execute(const rec::FrameRecord& record, DrawableBuffers& bu
       if (unit.target != 0 && unit.texture) textures.push_back(unit.texture.get());
   stats.upload_bytes += textures_.prepare(textures, frame_);
 
+  descriptor_sets_.reclaim();
   Recording r;
   r.record = &record;
   r.stats = &stats;
@@ -432,6 +434,7 @@ void RasterRenderer::execute(const rec::FrameRecord& record, DrawableBuffers& bu
       end_rendering(r);
       if (end && position == commands->size()) record_frame_end(cmd, *end);
     });
+    descriptor_sets_.retire(ticket);
     unreported_.push_back(ticket);
     if (position < commands->size()) {
       device_->wait(ticket);
@@ -596,10 +599,13 @@ void RasterRenderer::bind(Recording& r, const PipelineKey& key,
   writes[1] = writes[0];
   writes[1].dstBinding = GLPT_RASTER_BINDING_EDGES;
   writes[1].pBufferInfo = &edges;
+  const VkDescriptorSet set = descriptor_sets_.acquire();
+  for (VkWriteDescriptorSet& w : writes) w.dstSet = set;  // (the loop below sets its own)
   for (uint32_t b = 0; b < images.size(); ++b) {
     images[b] = {samplers[b], views[b], VK_IMAGE_LAYOUT_GENERAL};
     VkWriteDescriptorSet& w = writes[2 + b];
     w = make_info<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
+    w.dstSet = set;
     w.dstBinding = GLPT_RASTER_BINDING_TEXTURES + b;
     w.descriptorCount = 1;
     w.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
@@ -610,8 +616,10 @@ void RasterRenderer::bind(Recording& r, const PipelineKey& key,
   writes.back() = writes[0];
   writes.back().dstBinding = GLPT_RASTER_BINDING_PIXELS;
   writes.back().pBufferInfo = &pixels;
-  push_descriptor_set_(r.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.layout(), 0,
-                       static_cast<uint32_t>(writes.size()), writes.data());
+  vkUpdateDescriptorSets(device_->handle(), static_cast<uint32_t>(writes.size()), writes.data(), 0,
+                         nullptr);
+  vkCmdBindDescriptorSets(r.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.layout(), 0, 1, &set,
+                          0, nullptr);
   r.bound_views = views;
   r.bound_samplers = samplers;
   r.descriptors_pushed = true;

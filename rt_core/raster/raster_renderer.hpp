@@ -9,6 +9,7 @@
 
 #include "rt_core/frame_stats.hpp"
 #include "rt_core/raster/accumulation.hpp"
+#include "rt_core/raster/descriptor_set_ring.hpp"
 #include "rt_core/raster/drawable_buffers.hpp"
 #include "rt_core/raster/gbuffer_targets.hpp"
 #include "rt_core/raster/occlusion_queries.hpp"
@@ -135,7 +136,7 @@ class RasterRenderer {
   std::shared_ptr<VulkanDevice> device_;
   RasterPipelines pipelines_;
   TextureCache textures_;
-  PFN_vkCmdPushDescriptorSetKHR push_descriptor_set_ = nullptr;
+  DescriptorSetRing descriptor_sets_;  // set 0 of every draw (descriptor_set_ring.hpp)
   PFN_vkCmdSetLineStippleEXT set_line_stipple_ = nullptr;
   // The drawable's buffers the current call works on (set by each public call: a renderer may
   // serve several drawables, and a drawable several renderers).

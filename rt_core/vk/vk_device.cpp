@@ -35,7 +35,6 @@ constexpr const char* kRasterDeviceExtensions[] = {
     VK_EXT_PROVOKING_VERTEX_EXTENSION_NAME,     // GL's last-vertex convention
     VK_EXT_LINE_RASTERIZATION_EXTENSION_NAME,   // Bresenham (GL's diamond-exit) lines, stipple
     VK_EXT_DEPTH_CLIP_CONTROL_EXTENSION_NAME,   // GL's [-1, 1] clip-space depth
-    VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME,      // per-draw textures without descriptor pools
     VK_EXT_CUSTOM_BORDER_COLOR_EXTENSION_NAME,  // GL's texture border colour
 };
 // Path tracing. VK_KHR_deferred_host_operations is required by VK_KHR_acceleration_structure
@@ -705,7 +704,7 @@ std::unique_ptr<VulkanDevice> VulkanDevice::create(const DeviceOptions& options)
   vkGetPhysicalDeviceQueueFamilyProperties(self->physical_device_, &family_count, families.data());
   const uint32_t valid_bits =
       chosen.queue_family < family_count ? families[chosen.queue_family].timestampValidBits : 0;
-  if (valid_bits > 0 && self->limits_.timestampPeriod > 0.0f) {
+  if (options.timestamps && valid_bits > 0 && self->limits_.timestampPeriod > 0.0f) {
     auto query_info = make_info<VkQueryPoolCreateInfo>(VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO);
     query_info.queryType = VK_QUERY_TYPE_TIMESTAMP;
     query_info.queryCount = 2 * kSubmissionSlots;
@@ -860,6 +859,16 @@ void VulkanDevice::wait(Ticket ticket) {
   // In ticket order: a fence covers its own submission only.
   for (Ticket t = completed_ticket_ + 1; t <= ticket; ++t)
     complete_locked(slots_[t % kSubmissionSlots]);
+}
+
+VulkanDevice::Ticket VulkanDevice::completed_ticket() {
+  std::lock_guard lock(submit_mutex_);
+  for (Ticket t = completed_ticket_ + 1; t <= last_ticket_; ++t) {
+    SubmissionSlot& slot = slots_[t % kSubmissionSlots];
+    if (vkGetFenceStatus(handle(), slot.fence.get()) != VK_SUCCESS) break;
+    complete_locked(slot);  // signalled: does not block
+  }
+  return completed_ticket_;
 }
 
 VulkanDevice::Ticket VulkanDevice::last_ticket() const {

@@ -58,6 +58,8 @@ struct DeviceOptions {
   // `scripts/test.sh --validation` collects the messages of every process of the test suite
   // there, including programs whose stderr a test swallows or compares.
   std::string validation_log;
+  // Time every submission with a pair of timestamp queries (RenderSettings::device_timing).
+  bool timestamps = true;
   bool operator==(const DeviceOptions&) const = default;
   // GLPT_VK_DEVICE, GLPT_VK_NO_RAY_QUERY and GLPT_VK_SYNC, as every renderer reads them.
   static DeviceOptions from_environment(bool validation);
@@ -149,6 +151,9 @@ class VulkanDevice {
   void wait(Ticket ticket);
   void wait_all() { wait(last_ticket()); }
   Ticket last_ticket() const;
+  // Every ticket up to the one returned has completed (asks the fences of the later ones, without
+  // waiting).
+  Ticket completed_ticket();
   // The device time of a completed ticket's commands in milliseconds (timestamps; where the
   // queue has none, submit to completion as the host saw it), once: the value is handed over
   // and forgotten. 0 for a ticket not waited for, unknown or already taken.

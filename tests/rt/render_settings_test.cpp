@@ -29,6 +29,22 @@ TEST(RenderSettings, DefaultsWhenUnset) {
   EXPECT_FALSE(settings.validation);
 }
 
+// Timestamp queries only where something reports the times they measure (RenderSettings::
+// device_timing): on lavapipe they made every glReadPixels wait for llvmpipe's threads.
+TEST(RenderSettings, DeviceTimingOnlyWhenTimesAreReported) {
+  std::string warning;
+  EXPECT_FALSE(parse({}, &warning).device_timing);
+  EXPECT_FALSE(parse({{"GLPT_STATS", "0"}, {"GLPT_STATS_FILE", ""}}, &warning).device_timing);
+  EXPECT_TRUE(parse({{"GLPT_STATS", "1"}}, &warning).device_timing);
+  EXPECT_TRUE(parse({{"GLPT_STATS_FILE", "/tmp/stats"}}, &warning).device_timing);
+  EXPECT_TRUE(parse({{"GLPT_DUMP_SCENE", "/tmp/scene.json"}}, &warning).device_timing);
+  EXPECT_TRUE(parse({{"GLPT_DEVICE_TIMING", "1"}}, &warning).device_timing);
+  EXPECT_FALSE(parse({{"GLPT_STATS", "1"}, {"GLPT_DEVICE_TIMING", "0"}}, &warning).device_timing);
+  EXPECT_TRUE(warning.empty());
+  // Code that makes its own settings (tests, benchmarks) times its passes unless it says not to.
+  EXPECT_TRUE(RenderSettings{}.device_timing);
+}
+
 TEST(RenderSettings, ReadsValidValues) {
   std::string warning;
   RenderSettings settings = parse({{"GLPT_SPP", "4"},
