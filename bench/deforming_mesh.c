@@ -15,6 +15,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "glx_window.h"
+
 int main(int argc, char** argv) {
   int grid = 96, frames = 40;
   float amplitude = 0.15f;
@@ -52,27 +54,9 @@ int main(int argc, char** argv) {
       indices[k++] = a, indices[k++] = b, indices[k++] = d;
       indices[k++] = a, indices[k++] = d, indices[k++] = c;
     }
-  Display* dpy = XOpenDisplay(NULL);
-  if (!dpy) {
-    fprintf(stderr, "deforming_mesh: cannot open display\n");
-    return 1;
-  }
-  int attributes[] = {GLX_RGBA, GLX_DOUBLEBUFFER, GLX_DEPTH_SIZE, 24, None};
-  XVisualInfo* visual = glXChooseVisual(dpy, DefaultScreen(dpy), attributes);
-  if (!visual) {
-    fprintf(stderr, "deforming_mesh: no visual\n");
-    return 1;
-  }
-  Window root = RootWindow(dpy, visual->screen);
-  XSetWindowAttributes wa = {0};
-  wa.colormap = XCreateColormap(dpy, root, visual->visual, AllocNone);
-  Window window = XCreateWindow(dpy, root, 0, 0, 256, 256, 0, visual->depth, InputOutput,
-                                visual->visual, CWColormap, &wa);
-  XMapWindow(dpy, window);
-  XSync(dpy, False);
-  GLXContext context = glXCreateContext(dpy, visual, NULL, True);
-  glXMakeCurrent(dpy, window, context);
-  glViewport(0, 0, 256, 256);
+  GlxWindow w;
+  if (glx_window_open(&w, "deforming_mesh", 256, 256) != 0) return 1;
+  Display* dpy = w.dpy;
   glEnable(GL_LIGHTING);
   glEnable(GL_LIGHT0);
   glEnable(GL_COLOR_MATERIAL);
@@ -120,13 +104,10 @@ int main(int argc, char** argv) {
     glVertexPointer(3, GL_FLOAT, 0, positions);
     glNormalPointer(GL_FLOAT, 0, normals);
     glDrawElements(GL_TRIANGLES, 6 * grid * grid, GL_UNSIGNED_INT, indices);
-    glXSwapBuffers(dpy, window);
+    glXSwapBuffers(dpy, w.window);
   }
   glFinish();
-  glXMakeCurrent(dpy, None, NULL);
-  glXDestroyContext(dpy, context);
-  XDestroyWindow(dpy, window);
-  XCloseDisplay(dpy);
+  glx_window_close(&w);
   free(positions);
   free(normals);
   free(indices);

@@ -19,6 +19,8 @@
 #include <string.h>
 #include <time.h>
 
+#include "glx_window.h"
+
 static double now_us(void) {
   struct timespec t;
   clock_gettime(CLOCK_MONOTONIC, &t);
@@ -48,25 +50,8 @@ int main(int argc, char** argv) {
     fprintf(stderr, "gl_readback: bad arguments\n");
     return 2;
   }
-  Display* dpy = XOpenDisplay(NULL);
-  if (!dpy) {
-    fprintf(stderr, "gl_readback: no display\n");
-    return 1;
-  }
-  int attributes[] = {GLX_RGBA, GLX_DOUBLEBUFFER, GLX_RED_SIZE, 8, GLX_DEPTH_SIZE, 24, None};
-  XVisualInfo* vi = glXChooseVisual(dpy, DefaultScreen(dpy), attributes);
-  if (!vi) {
-    fprintf(stderr, "gl_readback: no visual\n");
-    return 1;
-  }
-  XSetWindowAttributes swa = {0};
-  swa.colormap = XCreateColormap(dpy, RootWindow(dpy, vi->screen), vi->visual, AllocNone);
-  Window win = XCreateWindow(dpy, RootWindow(dpy, vi->screen), 0, 0, size, size, 0, vi->depth,
-                             InputOutput, vi->visual, CWColormap, &swa);
-  XMapWindow(dpy, win);
-  GLXContext ctx = glXCreateContext(dpy, vi, NULL, True);
-  glXMakeCurrent(dpy, win, ctx);
-  glViewport(0, 0, size, size);
+  GlxWindow w;
+  if (glx_window_open(&w, "gl_readback", size, size) != 0) return 1;
   glMatrixMode(GL_PROJECTION);
   glLoadIdentity();
   glOrtho(0, size, 0, size, -1, 1);
@@ -105,9 +90,6 @@ int main(int argc, char** argv) {
   printf("mode=%s size=%d read=%d iterations=%d us_per_iteration=%.1f (checksum %.3f)\n", mode,
          size, read, iterations, us, sum);
   free(pixels);
-  glXMakeCurrent(dpy, None, NULL);
-  glXDestroyContext(dpy, ctx);
-  XDestroyWindow(dpy, win);
-  XCloseDisplay(dpy);
+  glx_window_close(&w);
   return 0;
 }

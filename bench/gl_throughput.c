@@ -25,6 +25,8 @@
 #include <string.h>
 #include <time.h>
 
+#include "glx_window.h"
+
 typedef struct {
   GLubyte color[4];
   GLfloat normal[3];
@@ -72,7 +74,9 @@ int main(int argc, char** argv) {
     } else if (strcmp(argv[i], "--frames") == 0 && i + 1 < argc) {
       frames = atoi(argv[++i]);
     } else {
-      fprintf(stderr, "usage: gl_throughput --mode immediate|arrays|elements|vbo [--triangles N] [--frames F]\n");
+      fprintf(stderr,
+              "usage: gl_throughput --mode immediate|arrays|elements|vbo [--triangles N] [--frames "
+              "F]\n");
       return 2;
     }
   }
@@ -85,27 +89,9 @@ int main(int argc, char** argv) {
     fprintf(stderr, "gl_throughput: bad arguments\n");
     return 2;
   }
-  Display* dpy = XOpenDisplay(NULL);
-  if (!dpy) {
-    fprintf(stderr, "gl_throughput: cannot open display\n");
-    return 1;
-  }
-  int attributes[] = {GLX_RGBA, GLX_DOUBLEBUFFER, GLX_DEPTH_SIZE, 24, None};
-  XVisualInfo* visual = glXChooseVisual(dpy, DefaultScreen(dpy), attributes);
-  if (!visual) {
-    fprintf(stderr, "gl_throughput: no visual\n");
-    return 1;
-  }
-  Window root = RootWindow(dpy, visual->screen);
-  XSetWindowAttributes wa = {0};
-  wa.colormap = XCreateColormap(dpy, root, visual->visual, AllocNone);
-  Window window = XCreateWindow(dpy, root, 0, 0, 256, 256, 0, visual->depth, InputOutput,
-                                visual->visual, CWColormap, &wa);
-  XMapWindow(dpy, window);
-  XSync(dpy, False);
-  GLXContext context = glXCreateContext(dpy, visual, NULL, True);
-  glXMakeCurrent(dpy, window, context);
-  glViewport(0, 0, 256, 256);
+  GlxWindow w;
+  if (glx_window_open(&w, "gl_throughput", 256, 256) != 0) return 1;
+  Display* dpy = w.dpy;
   glEnable(GL_LIGHTING);
   glEnable(GL_LIGHT0);
   glEnable(GL_COLOR_MATERIAL);
@@ -162,7 +148,7 @@ int main(int argc, char** argv) {
     }
     double submitted = now_ms();
     glFinish();
-    glXSwapBuffers(dpy, window);
+    glXSwapBuffers(dpy, w.window);
     double end = now_ms();
     if (frame >= 0) {
       submit += submitted - start;
@@ -171,10 +157,7 @@ int main(int argc, char** argv) {
   }
   printf("mode=%s triangles=%d frames=%d submit_ms=%.3f frame_ms=%.3f\n", mode, triangles, frames,
          submit / frames, total / frames);
-  glXMakeCurrent(dpy, None, NULL);
-  glXDestroyContext(dpy, context);
-  XDestroyWindow(dpy, window);
-  XCloseDisplay(dpy);
+  glx_window_close(&w);
   free(vertices);
   free(indices);
   return 0;

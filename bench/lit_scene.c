@@ -19,6 +19,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "glx_window.h"
+
 enum { kSpheres = 16 };
 
 static void light_positions(int n, float (*positions)[4]) {
@@ -55,37 +57,27 @@ int main(int argc, char** argv) {
   int lights = 1, triangles = 50000, frames = 12, width = 320, height = 240;
   float pan = 0.0f; /* degrees the camera turns about its vertical axis per frame */
   for (int i = 1; i < argc; ++i) {
-    if (!strcmp(argv[i], "--lights") && i + 1 < argc) lights = atoi(argv[++i]);
-    else if (!strcmp(argv[i], "--triangles") && i + 1 < argc) triangles = atoi(argv[++i]);
-    else if (!strcmp(argv[i], "--frames") && i + 1 < argc) frames = atoi(argv[++i]);
-    else if (!strcmp(argv[i], "--pan") && i + 1 < argc) pan = (float)atof(argv[++i]);
+    if (!strcmp(argv[i], "--lights") && i + 1 < argc)
+      lights = atoi(argv[++i]);
+    else if (!strcmp(argv[i], "--triangles") && i + 1 < argc)
+      triangles = atoi(argv[++i]);
+    else if (!strcmp(argv[i], "--frames") && i + 1 < argc)
+      frames = atoi(argv[++i]);
+    else if (!strcmp(argv[i], "--pan") && i + 1 < argc)
+      pan = (float)atof(argv[++i]);
     else if (!strcmp(argv[i], "--size") && i + 1 < argc) {
       if (sscanf(argv[++i], "%dx%d", &width, &height) != 2) return 2;
     } else {
-      fprintf(stderr,
-              "usage: lit_scene [--lights N] [--triangles T] [--frames F] [--size WxH] [--pan DEG]\n");
+      fprintf(
+          stderr,
+          "usage: lit_scene [--lights N] [--triangles T] [--frames F] [--size WxH] [--pan DEG]\n");
       return 2;
     }
   }
   if (lights < 1 || lights > 4096 || triangles < 100 || frames < 1) return 2;
-  Display* dpy = XOpenDisplay(NULL);
-  if (!dpy) {
-    fprintf(stderr, "lit_scene: cannot open display\n");
-    return 1;
-  }
-  int attributes[] = {GLX_RGBA, GLX_DOUBLEBUFFER, GLX_DEPTH_SIZE, 24, None};
-  XVisualInfo* visual = glXChooseVisual(dpy, DefaultScreen(dpy), attributes);
-  if (!visual) return 1;
-  Window root = RootWindow(dpy, visual->screen);
-  XSetWindowAttributes wa = {0};
-  wa.colormap = XCreateColormap(dpy, root, visual->visual, AllocNone);
-  Window window = XCreateWindow(dpy, root, 0, 0, (unsigned)width, (unsigned)height, 0,
-                                visual->depth, InputOutput, visual->visual, CWColormap, &wa);
-  XMapWindow(dpy, window);
-  XSync(dpy, False);
-  GLXContext context = glXCreateContext(dpy, visual, NULL, True);
-  glXMakeCurrent(dpy, window, context);
-  glViewport(0, 0, width, height);
+  GlxWindow w;
+  if (glx_window_open(&w, "lit_scene", width, height) != 0) return 1;
+  Display* dpy = w.dpy;
 
   /* A checker texture, modulating the lit colour. */
   enum { kTex = 64 };
@@ -116,7 +108,7 @@ int main(int argc, char** argv) {
   sphere(0.6f, rings, segments);
   glEndList();
 
-  float (*positions)[4] = malloc(sizeof(float[4]) * (size_t)lights);
+  float(*positions)[4] = malloc(sizeof(float[4]) * (size_t)lights);
   if (!positions) return 1;
   light_positions(lights, positions);
   const float strength = 6.0f / (float)(lights < 8 ? lights : 8);
@@ -159,10 +151,14 @@ int main(int argc, char** argv) {
       if (draw == kSpheres) {
         glBegin(GL_QUADS);
         glNormal3f(0, 1, 0);
-        glTexCoord2f(0, 0); glVertex3f(-6, 0, -2);
-        glTexCoord2f(8, 0); glVertex3f(6, 0, -2);
-        glTexCoord2f(8, 8); glVertex3f(6, 0, -14);
-        glTexCoord2f(0, 8); glVertex3f(-6, 0, -14);
+        glTexCoord2f(0, 0);
+        glVertex3f(-6, 0, -2);
+        glTexCoord2f(8, 0);
+        glVertex3f(6, 0, -2);
+        glTexCoord2f(8, 8);
+        glVertex3f(6, 0, -14);
+        glTexCoord2f(0, 8);
+        glVertex3f(-6, 0, -14);
         glEnd();
       } else {
         glPushMatrix();
@@ -171,12 +167,10 @@ int main(int argc, char** argv) {
         glPopMatrix();
       }
     }
-    glXSwapBuffers(dpy, window);
+    glXSwapBuffers(dpy, w.window);
   }
   glFinish();
   free(positions);
-  glXMakeCurrent(dpy, None, NULL);
-  glXDestroyContext(dpy, context);
-  XCloseDisplay(dpy);
+  glx_window_close(&w);
   return 0;
 }

@@ -18,6 +18,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "glx_window.h"
+
 static void cube(float s) {
   static const float n[6][3] = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
                                 {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
@@ -66,27 +68,9 @@ int main(int argc, char** argv) {
     fprintf(stderr, "many_draws: counts must be >= 1\n");
     return 2;
   }
-  Display* dpy = XOpenDisplay(NULL);
-  if (!dpy) {
-    fprintf(stderr, "many_draws: cannot open display\n");
-    return 1;
-  }
-  int attributes[] = {GLX_RGBA, GLX_DOUBLEBUFFER, GLX_DEPTH_SIZE, 24, None};
-  XVisualInfo* visual = glXChooseVisual(dpy, DefaultScreen(dpy), attributes);
-  if (!visual) {
-    fprintf(stderr, "many_draws: no visual\n");
-    return 1;
-  }
-  Window root = RootWindow(dpy, visual->screen);
-  XSetWindowAttributes wa = {0};
-  wa.colormap = XCreateColormap(dpy, root, visual->visual, AllocNone);
-  Window window = XCreateWindow(dpy, root, 0, 0, 256, 256, 0, visual->depth, InputOutput,
-                                visual->visual, CWColormap, &wa);
-  XMapWindow(dpy, window);
-  XSync(dpy, False);
-  GLXContext context = glXCreateContext(dpy, visual, NULL, True);
-  glXMakeCurrent(dpy, window, context);
-  glViewport(0, 0, 256, 256);
+  GlxWindow w;
+  if (glx_window_open(&w, "many_draws", 256, 256) != 0) return 1;
+  Display* dpy = w.dpy;
   glEnable(GL_LIGHTING);
   glEnable(GL_LIGHT0);
   glEnable(GL_COLOR_MATERIAL);
@@ -124,12 +108,9 @@ int main(int argc, char** argv) {
     glColor3f(1, 1, 1);
     glRecti(8, 8, 120, 20);
     glEnable(GL_LIGHTING);
-    glXSwapBuffers(dpy, window);
+    glXSwapBuffers(dpy, w.window);
   }
   glFinish();
-  glXMakeCurrent(dpy, None, NULL);
-  glXDestroyContext(dpy, context);
-  XDestroyWindow(dpy, window);
-  XCloseDisplay(dpy);
+  glx_window_close(&w);
   return 0;
 }

@@ -5,9 +5,9 @@
  * A 64x64 GLX window, GL_LIGHTING with GL_LIGHT0; each frame glClear, then N glNormal3f/glVertex3f
  * pairs (default 300,000) as one glBegin(GL_TRIANGLES)/glEnd, almost all triangles of zero area
  * (the three vertices of 99 in 100 triangles are one point, so rasterization costs nothing), then
- * glFinish and a swap: the cost per vertex before rasterization (capture, conversion, upload, vertex shader,
- * clipping and setup). F frames (default 20) after two warm-up frames; prints one line:
- *   vertices=N frames=F ms_per_frame=T mverts_per_s=V
+ * glFinish and a swap: the cost per vertex before rasterization (capture, conversion, upload,
+ * vertex shader, clipping and setup). F frames (default 20) after two warm-up frames; prints one
+ * line: vertices=N frames=F ms_per_frame=T mverts_per_s=V
  */
 #include <GL/gl.h>
 #include <GL/glx.h>
@@ -16,6 +16,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
+
+#include "glx_window.h"
 
 static double now_ms(void) {
   struct timespec t;
@@ -40,25 +42,9 @@ int main(int argc, char** argv) {
     fprintf(stderr, "vertex_stream: bad arguments\n");
     return 2;
   }
-  Display* dpy = XOpenDisplay(NULL);
-  if (!dpy) {
-    fprintf(stderr, "vertex_stream: no display\n");
-    return 1;
-  }
-  int attributes[] = {GLX_RGBA, GLX_DOUBLEBUFFER, GLX_RED_SIZE, 8, GLX_DEPTH_SIZE, 24, None};
-  XVisualInfo* vi = glXChooseVisual(dpy, DefaultScreen(dpy), attributes);
-  if (!vi) {
-    fprintf(stderr, "vertex_stream: no visual\n");
-    return 1;
-  }
-  XSetWindowAttributes swa = {0};
-  swa.colormap = XCreateColormap(dpy, RootWindow(dpy, vi->screen), vi->visual, AllocNone);
-  Window win = XCreateWindow(dpy, RootWindow(dpy, vi->screen), 0, 0, 64, 64, 0, vi->depth,
-                             InputOutput, vi->visual, CWColormap, &swa);
-  XMapWindow(dpy, win);
-  GLXContext ctx = glXCreateContext(dpy, vi, NULL, True);
-  glXMakeCurrent(dpy, win, ctx);
-  glViewport(0, 0, 64, 64);
+  GlxWindow w;
+  if (glx_window_open(&w, "vertex_stream", 64, 64) != 0) return 1;
+  Display* dpy = w.dpy;
   glEnable(GL_LIGHTING);
   glEnable(GL_LIGHT0);
   glEnable(GL_DEPTH_TEST);
@@ -93,15 +79,12 @@ int main(int argc, char** argv) {
     }
     glEnd();
     glFinish();
-    glXSwapBuffers(dpy, win);  // a frame boundary for GLPT_STATS (64x64: presenting is cheap)
+    glXSwapBuffers(dpy, w.window);  // a frame boundary for GLPT_STATS (64x64: presenting is cheap)
   }
   const double ms = (now_ms() - start) / frames;
   printf("vertices=%d frames=%d ms_per_frame=%.2f mverts_per_s=%.2f\n", vertices, frames, ms,
          vertices / ms / 1000.0);
   free(data);
-  glXMakeCurrent(dpy, None, NULL);
-  glXDestroyContext(dpy, ctx);
-  XDestroyWindow(dpy, win);
-  XCloseDisplay(dpy);
+  glx_window_close(&w);
   return 0;
 }
