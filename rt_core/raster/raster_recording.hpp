@@ -136,11 +136,19 @@ struct RasterRenderer::Recording {
   bool rendering = false;
   ColorTargets targets = ColorTargets::kBack;
   VkPipeline bound_pipeline = VK_NULL_HANDLE;
-  // Texture descriptors currently pushed, per binding (to skip redundant pushes).
+  // Texture descriptors of the bound set, per binding (to skip redundant binds).
   std::array<VkImageView, 4 * GLPT_RASTER_MAX_UNITS> bound_views{};
   // ... and their samplers: a texture whose parameters changed keeps its view (same texels).
   std::array<VkSampler, 4 * GLPT_RASTER_MAX_UNITS> bound_samplers{};
   bool descriptors_pushed = false;
+  // The sets written in this command buffer, by their textures: a frame that switches between a
+  // few textures binds a few sets, not one per switch (the buffers are the same for all).
+  struct WrittenSet {
+    std::array<VkImageView, 4 * GLPT_RASTER_MAX_UNITS> views;
+    std::array<VkSampler, 4 * GLPT_RASTER_MAX_UNITS> samplers;
+    VkDescriptorSet set;
+  };
+  std::vector<WrittenSet> written_sets;
   // Dynamic state last set in this command buffer.
   bool dynamic_valid = false;
   DynamicDrawState dynamic;

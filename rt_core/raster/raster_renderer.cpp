@@ -394,6 +394,7 @@ void RasterRenderer::execute(const rec::FrameRecord& record, DrawableBuffers& bu
       r.rendering = false;
       r.bound_pipeline = VK_NULL_HANDLE;
       r.descriptors_pushed = false;
+      r.written_sets.clear();  // an earlier submission's sets may be reused by now
       r.dynamic_valid = false;
       r.blend_valid = false;
       if (position == 0) queries_.reset_slots(cmd);
@@ -580,6 +581,15 @@ void RasterRenderer::bind(Recording& r, const PipelineKey& key,
     }
   }
   if (r.descriptors_pushed && views == r.bound_views && samplers == r.bound_samplers) return;
+  r.bound_views = views;
+  r.bound_samplers = samplers;
+  r.descriptors_pushed = true;
+  for (const Recording::WrittenSet& written : r.written_sets) {
+    if (written.views != views || written.samplers != samplers) continue;
+    vkCmdBindDescriptorSets(r.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.layout(), 0, 1,
+                            &written.set, 0, nullptr);
+    return;
+  }
   std::array<VkDescriptorImageInfo, 4 * GLPT_RASTER_MAX_UNITS> images{};
   std::array<VkWriteDescriptorSet, 3 + 4 * GLPT_RASTER_MAX_UNITS> writes{};
   VkDescriptorBufferInfo states{states_.handle(), 0, VK_WHOLE_SIZE};
@@ -620,9 +630,10 @@ void RasterRenderer::bind(Recording& r, const PipelineKey& key,
                          nullptr);
   vkCmdBindDescriptorSets(r.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.layout(), 0, 1, &set,
                           0, nullptr);
-  r.bound_views = views;
-  r.bound_samplers = samplers;
-  r.descriptors_pushed = true;
+  // A linear search: a frame binds few distinct texture sets; past this many, new ones are not
+  // remembered (they still work, each writes a set of its own).
+  constexpr size_t kRememberedSets = 64;
+  if (r.written_sets.size() < kRememberedSets) r.written_sets.push_back({views, samplers, set});
 }
 
 void RasterRenderer::set_dynamic_state(Recording& r, const DynamicDrawState& d,
