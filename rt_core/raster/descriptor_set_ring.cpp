@@ -40,7 +40,6 @@ void DescriptorSetRing::add_pool() {
   free_.reserve(free_.size() + sets.size());
   pools_.push_back(std::move(owner));
   free_.insert(free_.end(), sets.begin(), sets.end());
-  allocated_ += kSetsPerPool;
 }
 
 void DescriptorSetRing::reclaim() {
@@ -54,11 +53,10 @@ void DescriptorSetRing::reclaim() {
 
 VkDescriptorSet DescriptorSetRing::acquire() {
   if (free_.empty()) add_pool();
-  acquired_.reserve(acquired_.size() + 1);
-  const VkDescriptorSet set = free_.back();
+  // Into acquired_ before leaving free_: a failed push_back loses no set.
+  acquired_.push_back(free_.back());
   free_.pop_back();
-  acquired_.push_back(set);
-  return set;
+  return acquired_.back();
 }
 
 void DescriptorSetRing::retire(VulkanDevice::Ticket ticket) {
