@@ -3,7 +3,8 @@
 # IMGCOMPARE, RUN_SCENE, OUT_DIR, WITH_GLPT (register the glpt-vs-Mesa image tests), WITH_STATE
 # (and the state tests), PENDING (pending.txt: scenes whose image test is expected to fail),
 # PATH_MODE (path_mode.txt: scenes also compared with Mesa in path-traced mode), STATIC_BLEND
-# (static_blend.txt: scenes also compared with blend state in pipelines), OUTPUT.
+# (static_blend.txt: scenes also compared with blend state in pipelines), SCENE_TIMEOUT (seconds
+# per test), OUTPUT.
 cmake_policy(VERSION 3.25)
 execute_process(COMMAND ${MESA_RUNNER} --list
                 OUTPUT_VARIABLE listing
@@ -49,7 +50,7 @@ foreach(line IN LISTS lines)
   string(APPEND text
     "add_test(conformance_harness.${scene} \"${RUN_SCENE}\" harness \"${scene}\" "
     "\"${OUT_DIR}/harness/${scene}\" \"${MESA_RUNNER}\" \"${IMGCOMPARE}\")\n"
-    "set_tests_properties(conformance_harness.${scene} PROPERTIES LABELS harness TIMEOUT 60)\n")
+    "set_tests_properties(conformance_harness.${scene} PROPERTIES LABELS harness TIMEOUT ${SCENE_TIMEOUT})\n")
   if(WITH_GLPT)
     # A pending scene (pending.txt) is expected to fail; once it matches Mesa its test fails,
     # and its line in pending.txt must go.
@@ -62,13 +63,13 @@ foreach(line IN LISTS lines)
       "add_test(conformance.${scene} \"${RUN_SCENE}\" image \"${scene}\" "
       "\"${OUT_DIR}/image/${scene}\" \"${MESA_RUNNER}\" \"${GLPT_RUNNER}\" \"${IMGCOMPARE}\" "
       "${max_diff} ${min_fraction})\n"
-      "set_tests_properties(conformance.${scene} PROPERTIES ${image_properties} TIMEOUT 60)\n")
+      "set_tests_properties(conformance.${scene} PROPERTIES ${image_properties} TIMEOUT ${SCENE_TIMEOUT})\n")
     if(scene IN_LIST path_scenes)
       string(APPEND text
         "add_test(conformance_path.${scene} \"${RUN_SCENE}\" image-path \"${scene}\" "
         "\"${OUT_DIR}/path/${scene}\" \"${MESA_RUNNER}\" \"${GLPT_RUNNER}\" \"${IMGCOMPARE}\" "
         "${max_diff} ${min_fraction})\n"
-        "set_tests_properties(conformance_path.${scene} PROPERTIES LABELS conformance TIMEOUT 60)\n")
+        "set_tests_properties(conformance_path.${scene} PROPERTIES LABELS conformance TIMEOUT ${SCENE_TIMEOUT})\n")
     endif()
     if(scene IN_LIST static_blend_scenes)
       string(APPEND text
@@ -76,7 +77,7 @@ foreach(line IN LISTS lines)
         "\"${OUT_DIR}/static_blend/${scene}\" \"${MESA_RUNNER}\" \"${GLPT_RUNNER}\" "
         "\"${IMGCOMPARE}\" ${max_diff} ${min_fraction})\n"
         "set_tests_properties(conformance_static_blend.${scene} PROPERTIES LABELS conformance "
-        "ENVIRONMENT GLPT_VK_NO_DYNAMIC_BLEND=1 TIMEOUT 60)\n")
+        "ENVIRONMENT GLPT_VK_NO_DYNAMIC_BLEND=1 TIMEOUT ${SCENE_TIMEOUT})\n")
     endif()
   endif()
   # A pending scene's state is compared once it leaves pending.txt (until then it may fail either
@@ -86,7 +87,7 @@ foreach(line IN LISTS lines)
       "add_test(conformance_state.${scene} \"${RUN_SCENE}\" state \"${scene}\" "
       "\"${OUT_DIR}/state/${scene}\" \"${MESA_RUNNER}\" \"${GLPT_RUNNER}\" \"${IMGCOMPARE}\")\n"
       "set_tests_properties(conformance_state.${scene} PROPERTIES LABELS "
-      "\"conformance_state${extremes_label}\" TIMEOUT 60)\n")
+      "\"conformance_state${extremes_label}\" TIMEOUT ${SCENE_TIMEOUT})\n")
   endif()
 endforeach()
 file(WRITE ${OUTPUT} "${text}")
