@@ -21,7 +21,8 @@
 #include "shared_types.h"
 #include "trace/gbuffer_material.h"
 
-layout(local_size_x = GLPT_TILE_SIZE, local_size_y = GLPT_TILE_SIZE) in;
+layout(local_size_x = GLPT_TILE_SIZE, local_size_y = GLPT_TILE_SIZE,
+       local_size_x_id = GLPT_SPEC_TILE_WIDTH, local_size_y_id = GLPT_SPEC_TILE_HEIGHT) in;
 
 layout(std140, set = 0, binding = GLPT_CO_BINDING_FRAME) uniform FrameBlock {
   FrameUniforms frame;

@@ -24,7 +24,8 @@
 #include "gbuffer_layout.h"
 #include "shared_types.h"
 
-layout(local_size_x = GLPT_TILE_SIZE, local_size_y = GLPT_TILE_SIZE) in;
+layout(local_size_x = GLPT_TILE_SIZE, local_size_y = GLPT_TILE_SIZE,
+       local_size_x_id = GLPT_SPEC_TILE_WIDTH, local_size_y_id = GLPT_SPEC_TILE_HEIGHT) in;
 
 layout(set = 0, binding = GLPT_PT_BINDING_SCENE) uniform accelerationStructureEXT scene;
 layout(std430, set = 0, binding = GLPT_PT_BINDING_INSTANCES) readonly buffer InstanceTable {

@@ -29,7 +29,9 @@ static_assert(GLPT_GBUFFER_ATTACHMENTS == 4 && GLPT_CHANNELS == 3);
 }  // namespace
 
 CompositePass::CompositePass(const VulkanDevice& device)
-    : device_(device), pipeline_(device, composite_spv, kBindings) {}
+    : device_(device),
+      pipeline_(device, composite_spv, kBindings, 0,
+                {GLPT_IMAGE_TILE_WIDTH, GLPT_IMAGE_TILE_HEIGHT}) {}
 
 void CompositePass::record(VkCommandBuffer cmd, const CompositeResources& resources, uint32_t width,
                            uint32_t height) const {

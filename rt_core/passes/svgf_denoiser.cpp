@@ -39,15 +39,16 @@ bool SvgfDenoiser::fits(uint32_t width, uint32_t height) const {
   const VkPhysicalDeviceLimits& limits = device_.properties().limits;
   const VkDeviceSize work = VkDeviceSize{width} * height * GLPT_DN_SLOTS * 3 * sizeof(gpu::vec4);
   return work <= VkDeviceSize{0x7fffffff} && width <= limits.maxImageDimension2D &&
-         height <= limits.maxImageDimension2D &&
-         GLPT_DN_SLOTS * 3 <= limits.maxImageArrayLayers;
+         height <= limits.maxImageDimension2D && GLPT_DN_SLOTS * 3 <= limits.maxImageArrayLayers;
 }
 
 bool SvgfDenoiser::prepare(uint32_t width, uint32_t height, const void* owner) {
   if (!temporal_) {
-    temporal_ = std::make_unique<ComputePipeline>(device_, svgf_temporal_spv, kBindings);
-    atrous_ = std::make_unique<ComputePipeline>(device_, svgf_atrous_spv, kBindings,
-                                                static_cast<uint32_t>(sizeof(IterationConstants)));
+    constexpr VkExtent2D tile{GLPT_IMAGE_TILE_WIDTH, GLPT_IMAGE_TILE_HEIGHT};
+    temporal_ = std::make_unique<ComputePipeline>(device_, svgf_temporal_spv, kBindings, 0, tile);
+    atrous_ =
+        std::make_unique<ComputePipeline>(device_, svgf_atrous_spv, kBindings,
+                                          static_cast<uint32_t>(sizeof(IterationConstants)), tile);
   }
   if (width != width_ || height != height_ || !work_) {
     history_valid_ = false;
@@ -91,19 +92,18 @@ void SvgfDenoiser::record(VkCommandBuffer cmd, const DenoiseResources& resources
   const VkDescriptorBufferInfo uniforms{resources.uniforms->handle(), 0,
                                         sizeof(gpu::DenoiseUniforms)};
   const VkDescriptorBufferInfo states{resources.states->handle(), 0, VK_WHOLE_SIZE};
-  const VkDescriptorImageInfo images[12] = {
-      general_image_info(resources.position),
-      general_image_info(resources.surface),
-      general_image_info(resources.channels[0]),
-      general_image_info(resources.channels[1]),
-      general_image_info(resources.channels[2]),
-      general_image_info(guide_eyes_[current].view()),
-      general_image_info(guide_metas_[current].view()),
-      general_image_info(guide_eyes_[previous].view()),
-      general_image_info(guide_metas_[previous].view()),
-      general_image_info(histories_[current].view()),
-      general_image_info(histories_[previous].view()),
-      general_image_info(work_.view())};
+  const VkDescriptorImageInfo images[12] = {general_image_info(resources.position),
+                                            general_image_info(resources.surface),
+                                            general_image_info(resources.channels[0]),
+                                            general_image_info(resources.channels[1]),
+                                            general_image_info(resources.channels[2]),
+                                            general_image_info(guide_eyes_[current].view()),
+                                            general_image_info(guide_metas_[current].view()),
+                                            general_image_info(guide_eyes_[previous].view()),
+                                            general_image_info(guide_metas_[previous].view()),
+                                            general_image_info(histories_[current].view()),
+                                            general_image_info(histories_[previous].view()),
+                                            general_image_info(work_.view())};
   for (const ComputePipeline* pipeline : {temporal_.get(), atrous_.get()}) {
     const VkDescriptorSet set = pipeline->descriptor_set();
     const VkWriteDescriptorSet writes[] = {

@@ -11,7 +11,8 @@ namespace glpt::rt {
 
 ComputePipeline::ComputePipeline(const VulkanDevice& device, std::span<const uint32_t> spirv,
                                  std::span<const VkDescriptorSetLayoutBinding> bindings,
-                                 uint32_t push_constant_bytes) {
+                                 uint32_t push_constant_bytes, VkExtent2D tile)
+    : tile_(tile) {
   VkDevice vk_device = device.handle();
 
   auto set_layout_info = make_info<VkDescriptorSetLayoutCreateInfo>(
@@ -49,6 +50,12 @@ ComputePipeline::ComputePipeline(const VulkanDevice& device, std::span<const uin
   pipeline_info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
   pipeline_info.stage.module = module;
   pipeline_info.stage.pName = "main";
+  // The workgroup size (GLPT_SPEC_TILE_WIDTH/HEIGHT in the shader).
+  const uint32_t tile_size[2] = {tile_.width, tile_.height};
+  const VkSpecializationMapEntry entries[2] = {{GLPT_SPEC_TILE_WIDTH, 0, 4},
+                                               {GLPT_SPEC_TILE_HEIGHT, 4, 4}};
+  const VkSpecializationInfo specialization{2, entries, sizeof tile_size, tile_size};
+  pipeline_info.stage.pSpecializationInfo = &specialization;
   pipeline_info.layout = layout;
   VkPipeline pipeline = VK_NULL_HANDLE;
   GLPT_VK_CHECK(
@@ -83,8 +90,8 @@ void ComputePipeline::update_and_dispatch(VkDevice device, VkCommandBuffer cmd,
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_.get());
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.get(), 0, 1,
                           &descriptor_set_, 0, nullptr);
-  vkCmdDispatch(cmd, (width + GLPT_TILE_SIZE - 1) / GLPT_TILE_SIZE,
-                (height + GLPT_TILE_SIZE - 1) / GLPT_TILE_SIZE, 1);
+  vkCmdDispatch(cmd, (width + tile_.width - 1) / tile_.width,
+                (height + tile_.height - 1) / tile_.height, 1);
 }
 
 void ComputePipeline::update(VkDevice device, std::span<const VkWriteDescriptorSet> writes) const {
@@ -99,8 +106,8 @@ void ComputePipeline::dispatch(VkCommandBuffer cmd, const void* push_constants, 
   if (push_bytes > 0)
     vkCmdPushConstants(cmd, layout_.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0, push_bytes,
                        push_constants);
-  vkCmdDispatch(cmd, (width + GLPT_TILE_SIZE - 1) / GLPT_TILE_SIZE,
-                (height + GLPT_TILE_SIZE - 1) / GLPT_TILE_SIZE, 1);
+  vkCmdDispatch(cmd, (width + tile_.width - 1) / tile_.width,
+                (height + tile_.height - 1) / tile_.height, 1);
 }
 
 VkWriteDescriptorSet storage_buffer_write(VkDescriptorSet set, uint32_t binding,

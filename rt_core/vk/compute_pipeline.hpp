@@ -7,23 +7,26 @@
 
 #include "rt_core/vk/vk_device.hpp"
 #include "rt_core/vk/vk_raii.hpp"
+#include "shared_types.h"  // GLPT_TILE_SIZE
 
 namespace glpt::rt {
 
 class ComputePipeline {
  public:
   // `bindings` are all compute-stage bindings of set 0; `push_constant_bytes` of push constants
-  // (0: none). Throws VulkanError.
+  // (0: none); `tile`: the workgroup size, given to the shader as the specialization constants
+  // GLPT_SPEC_TILE_WIDTH and GLPT_SPEC_TILE_HEIGHT. Throws VulkanError.
   ComputePipeline(const VulkanDevice& device, std::span<const uint32_t> spirv,
                   std::span<const VkDescriptorSetLayoutBinding> bindings,
-                  uint32_t push_constant_bytes = 0);
+                  uint32_t push_constant_bytes = 0,
+                  VkExtent2D tile = {GLPT_TILE_SIZE, GLPT_TILE_SIZE});
 
   VkPipeline pipeline() const { return pipeline_.get(); }
   VkPipelineLayout layout() const { return layout_.get(); }
   VkDescriptorSet descriptor_set() const { return descriptor_set_; }
 
   // Writes `writes` into the set, binds the pipeline and its set and dispatches enough
-  // GLPT_TILE_SIZE^2 groups to cover width x height invocations.
+  // workgroups (tiles) to cover width x height invocations.
   void update_and_dispatch(VkDevice device, VkCommandBuffer cmd,
                            std::span<const VkWriteDescriptorSet> writes, uint32_t width,
                            uint32_t height) const;
@@ -39,6 +42,7 @@ class ComputePipeline {
   vk::Pipeline pipeline_;
   vk::DescriptorPool pool_;
   VkDescriptorSet descriptor_set_ = VK_NULL_HANDLE;  // freed with pool_
+  VkExtent2D tile_;
 };
 
 // A compute-stage binding of set 0 (`count` descriptors).

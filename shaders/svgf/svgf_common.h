@@ -8,7 +8,8 @@
 #include "gbuffer_layout.h"
 #include "shared_types.h"
 
-layout(local_size_x = GLPT_TILE_SIZE, local_size_y = GLPT_TILE_SIZE) in;
+layout(local_size_x = GLPT_TILE_SIZE, local_size_y = GLPT_TILE_SIZE,
+       local_size_x_id = GLPT_SPEC_TILE_WIDTH, local_size_y_id = GLPT_SPEC_TILE_HEIGHT) in;
 
 layout(std140, set = 0, binding = GLPT_DN_BINDING_UNIFORMS) uniform DenoiseBlock {
   DenoiseUniforms dn;

@@ -240,6 +240,38 @@ TEST_F(GlxDrawables, AResizedWindowHasItsNewSizeNextFrame) {
   EXPECT_EQ(x_pixel(win, 2, 2), 0x00FF00u);
 }
 
+// glpt asks X for the window's size at make-current, glViewport and each swap, not at every
+// read or finish (X11WindowTarget::known_size): a program that resizes its window and never
+// calls glViewport still draws the next frame at the new size.
+TEST_F(GlxDrawables, AResizedWindowHasItsNewSizeNextFrameWithoutGlViewport) {
+  Window win = 0;
+  GLXContext ctx = nullptr;
+  ASSERT_TRUE(double_buffered_window(32, 32, &win, &ctx));
+  ASSERT_TRUE(glXMakeCurrent(dpy_, win, ctx));
+  glClearColor(1, 0, 0, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glFinish();  // the size is known now
+  glXSwapBuffers(dpy_, win);
+  XResizeWindow(dpy_, win, 100, 80);
+  XSync(dpy_, False);
+  glClearColor(0, 0, 1, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  unsigned char pixel[4] = {};
+  glReadPixels(95, 75, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, pixel);  // outside the old 32x32
+  EXPECT_EQ(pixel[2], 255);
+  glXSwapBuffers(dpy_, win);
+  EXPECT_EQ(x_pixel(win, 95, 75), 0x0000FFu);
+  // And a second resize within one frame is seen at its swap.
+  XResizeWindow(dpy_, win, 60, 50);
+  XSync(dpy_, False);
+  glClearColor(0, 1, 0, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glXSwapBuffers(dpy_, win);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glXSwapBuffers(dpy_, win);
+  EXPECT_EQ(x_pixel(win, 55, 45), 0x00FF00u);
+}
+
 TEST_F(GlxDrawables, GlxPixmapIsSingleBufferedAndGlFlushWritesIt) {
   XVisualInfo* vi = visual({GLX_RGBA, GLX_RED_SIZE, 1});
   ASSERT_NE(vi, nullptr);
