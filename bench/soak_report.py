@@ -12,11 +12,15 @@ every state the trace has), else the first F of the frames (default 0.1, at leas
     end; where the count grows, the kinds that grew (vk_by_kind);
   * draws per frame: the most during the warm-up and after it (memory that grows only when a
     frame larger than any before arrives is the working set of the largest frame, not a leak);
-  * for replays, the resident memory at the end of each pass (a leak grows it pass after pass);
+  * for replays, at the end of each pass: resident memory, the C heap in use (heap_kb) and the
+    free memory malloc keeps (heap_free_kb), and resident memory less that free memory (a leak
+    grows the heap in use pass after pass; fragmentation grows only what malloc keeps free);
   * frame cost (total_ms, recording to presented): the median after the warm-up, the slowest
     frame, and how many frames took more than 3x the median, apart from those that compiled
     pipelines (pipelines_created > 0: a new state's first draw, a new context's first frames),
-    which are listed on their own.
+    which are listed on their own. A replay's frames differ in content (a menu, then the game):
+    its frames after the first pass are also compared with the median of the same frame over
+    those passes, which separates a stall from a frame whose content costs more.
 Criteria (printed per run): memory growth after the warm-up at most 1 % of the resident size or
 2 MiB, whichever is larger; no Vulkan object count above the warm-up's most; no frame over 3x the
 median that did not compile a pipeline. Prints a Markdown table and the slow frames; exits 0 (a
@@ -28,11 +32,12 @@ import re
 import statistics
 import sys
 
-FIELD = re.compile(r" (frame|total_ms|rss_kb|vk_objects|pipelines_created|draws)=([-0-9.]+)")
+FIELD = re.compile(
+    r" (frame|total_ms|rss_kb|vk_objects|pipelines_created|draws|heap_kb|heap_free_kb)=([-0-9.]+)")
 KINDS = re.compile(r" vk_by_kind=(\S+)")
 
 
-Row = collections.namedtuple("Row", "frame ms rss objects pipelines kinds draws")
+Row = collections.namedtuple("Row", "frame ms rss objects pipelines kinds draws heap heap_free")
 
 
 def parse_kinds(text):  # "buffer:9,memory:35,..." (or "none")
@@ -58,7 +63,8 @@ def read_stats(path):
                                     int(fields["rss_kb"]), int(fields["vk_objects"]),
                                     int(fields.get("pipelines_created", 0)),
                                     parse_kinds(kinds.group(1)) if kinds else {},
-                                    int(fields.get("draws", 0))))
+                                    int(fields.get("draws", 0)), int(fields.get("heap_kb", 0)),
+                                    int(fields.get("heap_free_kb", 0))))
     except OSError as error:
         print(f"soak_report: {path}: {error}", file=sys.stderr)
     return rows
@@ -75,6 +81,30 @@ def slope_per_1000(values):
     return 1000 * sxy / sxx
 
 
+def same_frame_stalls(rows, pass_starts):
+    """Frames after the first pass over 3x the median of the same frame in those passes."""
+    starts = [0] + pass_starts
+    length = min(b - a for a, b in zip(starts, starts[1:] + [len(rows)]))
+    later = starts[1:]
+    if len(later) < 2 or length == 0:
+        return "too few passes to compare frames with themselves"
+    stalls, worst = [], (0.0, 0)
+    for f in range(length):
+        times = [rows[s + f].ms for s in later]
+        median = statistics.median(times)
+        for s in later:
+            row = rows[s + f]
+            ratio = row.ms / median if median > 0 else 0.0
+            if row.pipelines == 0 and ratio > worst[0]:
+                worst = (ratio, s + f)
+            if ratio > 3 and row.pipelines == 0:
+                stalls.append((s + f, row.ms, median))
+    shown = ", ".join(f"{i} ({ms:.1f} ms against {m:.1f})" for i, ms, m in stalls[:20])
+    return (f"frames over 3x the median of the same frame in passes 2-{len(starts)} (not "
+            f"compiling): {len(stalls)}{': ' + shown if stalls else ''}; the most, "
+            f"{worst[0]:.2f}x (frame {worst[1]})")
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--frames", type=int, default=0, help="frames each run was meant to have")
@@ -89,6 +119,7 @@ def main():
     slow_lists = []
     growth_notes = []
     pass_notes = []
+    same_frame_notes = []
     for run in args.runs:
         label, _, path = run.partition("=")
         rows = read_stats(path)
@@ -139,8 +170,11 @@ def main():
         warmup_text = f"pass 1 of {passes}" if pass_starts else f"{warmup} frames"
         draws_text = f"{max(r.draws for r in rows[:warmup])} / {max(r.draws for r in after)}"
         if pass_starts:
-            ends = [rows[s - 1].rss for s in pass_starts] + [rows[-1].rss]
-            pass_notes.append((label, ", ".join(f"{e / 1024:.1f}" for e in ends)))
+            ends = [rows[s - 1] for s in pass_starts] + [rows[-1]]
+            pass_notes.append((label, "; ".join(
+                f"{e.rss / 1024:.1f} / {e.heap / 1024:.1f} / {e.heap_free / 1024:.1f} / "
+                f"{(e.rss - e.heap_free) / 1024:.1f}" for e in ends)))
+            same_frame_notes.append((label, same_frame_stalls(rows, pass_starts)))
         print(f"| {label} | {len(rows)}{short} | {warmup_text} | {rss_start / 1024:.1f} MiB "
               f"| {rss_end / 1024:.1f} MiB "
               f"| {growth / 1024:+.2f} MiB ({100 * growth / rss_start:+.2f} %) "
@@ -160,7 +194,10 @@ def main():
     for label, grown in growth_notes:
         print(f"\n{label}: Vulkan objects past the warm-up's most: {grown}")
     for label, ends in pass_notes:
-        print(f"\n{label}: resident memory at the end of each pass (MiB): {ends}")
+        print(f"\n{label}: at the end of each pass, MiB (resident / heap in use / free heap kept by "
+              f"malloc / resident less that): {ends}")
+    for label, note in same_frame_notes:
+        print(f"\n{label}: {note}")
 
 
 if __name__ == "__main__":
