@@ -58,6 +58,9 @@ struct DenoiseSettings {
   // Once a still image has accumulated this many samples per pixel the accumulated average is
   // shown and the denoiser no longer runs (GLPT_DENOISE_UNTIL); before, the two are mixed.
   uint32_t until_samples = 64;
+  // GLPT_DENOISE_VERTEX_MOTION: a deformed surface (a refit BLAS) reprojects each pixel through
+  // its triangle's previous vertices, not through its draw's transform alone; 0: off (A/B).
+  bool vertex_motion = true;
 };
 
 struct RenderSettings {

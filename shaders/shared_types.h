@@ -92,6 +92,8 @@ using mat4 = glm::mat4;
 // rgba32f array, layer slot * 3 + channel: slot 0 the temporally integrated colour, 1 and 2 the
 // a-trous iterations' ping-pong; rgb: radiance, a: its luminance variance.
 #define GLPT_DN_BINDING_WORK 13
+#define GLPT_DN_BINDING_SCENE 14      // the frame's TLAS (deformed surfaces' triangles)
+#define GLPT_DN_BINDING_INSTANCES 15  // GpuInstance[] (GLPT_PT_BINDING_INSTANCES' table)
 #define GLPT_DN_SLOTS 3
 #define GLPT_DN_HISTORY_LAYERS 6
 // DenoiseUniforms::image.z flags
@@ -188,7 +190,9 @@ struct GpuInstance {
   // Indices into the frame's other tables. x: in the emitter table (GLPT_PT_BINDING_EMITTERS),
   // of the emitter of BLAS primitive 0, + 1 (primitive p is emitter x - 1 + p); 0: not sampled
   // by next-event estimation. y: in the clip-plane table (GLPT_PT_BINDING_CLIP_PLANES) + 1; 0:
-  // no clip plane. zw: unused
+  // no clip plane. zw: device address of the shape's GpuPosition array as it was the frame
+  // before, where the shape deformed since (its BLAS refit this frame: the same triangles in the
+  // same order); 0: none. The denoiser's temporal pass reprojects through it.
   uvec4 tables;
 };
 
@@ -279,7 +283,9 @@ struct GpuStateHistory {
   mat4 to_previous_eye;      // this frame's eye space -> the previous frame's
   mat4 previous_projection;  // the previous frame's projection
   vec4 viewport;             // x, y, width, height (GL window pixels)
-  // x: history id (0: no traced draw, 1: no identity), y: 1 when the matrices are valid
+  // x: history id (0: no traced draw, 1: no identity), y: 1 when the matrices are valid, z: 1
+  // when an instance of the state deformed (GpuInstance.tables.zw): the temporal pass finds
+  // each pixel's triangle with a ray query and moves its point by the triangle's deformation
   uvec4 info;
 };
 

@@ -12,6 +12,11 @@
 // (docs/denoiser.md, "No stale light"). Variance: from the moments, or estimated spatially where
 // the history is under four frames long.
 //
+// A deformed surface (GpuStateHistory.info.z: a refit BLAS whose previous positions the instance
+// table carries) is reprojected through its triangle's previous vertices: a short ray query along
+// the normal finds the pixel's triangle and barycentrics, and the point moves by the triangle's
+// deformation before the state's transforms apply.
+//
 // Writes work slot 0 (colour + variance: the a-trous filter's input), this frame's history
 // (colour = the integrated colour until the first a-trous iteration overwrites it) and guide.
 // A channel the frame cannot have (filtered_channels) is not read; its history is zero.
@@ -20,8 +25,49 @@
 
 #extension GL_KHR_shader_subgroup_ballot : require
 #extension GL_KHR_shader_subgroup_vote : require
+#extension GL_EXT_ray_query : require
+#extension GL_EXT_buffer_reference : require
+#extension GL_EXT_buffer_reference_uvec2 : require
 
 #include "svgf/svgf_common.h"
+
+layout(set = 0, binding = GLPT_DN_BINDING_SCENE) uniform accelerationStructureEXT scene;
+layout(std430, set = 0, binding = GLPT_DN_BINDING_INSTANCES) readonly buffer InstanceTable {
+  GpuInstance instances[];
+};
+layout(buffer_reference, std430, buffer_reference_align = 16) readonly buffer PositionArray {
+  GpuPosition positions[];
+};
+
+// The point `eye` of a surface (shading normal `normal`) where it was last frame, in this frame's
+// eye space, when its triangle deformed since: moved by the difference of the triangle's
+// previous and present vertices at the point's barycentrics. `eye` itself where no triangle lies
+// at the point (within a pixel footprint) or it did not deform.
+vec3 before_deformation(vec3 eye, vec3 normal) {
+  float reach = 4.0 * pixel_footprint(eye);
+  rayQueryEXT query;
+  // The segment holds the surface itself and rarely anything else: the first triangle found
+  // will do (checked by its distance below), every one taken as opaque.
+  rayQueryInitializeEXT(query, scene, gl_RayFlagsOpaqueEXT | gl_RayFlagsTerminateOnFirstHitEXT,
+                        GLPT_MASK_VISIBLE, eye + reach * normal, 0.0, -normal, 2.0 * reach);
+  while (rayQueryProceedEXT(query)) {
+  }
+  if (rayQueryGetIntersectionTypeEXT(query, true) != gl_RayQueryCommittedIntersectionTriangleEXT)
+    return eye;
+  if (abs(rayQueryGetIntersectionTEXT(query, true) - reach) > 0.25 * reach) return eye;
+  GpuInstance instance = instances[rayQueryGetIntersectionInstanceCustomIndexEXT(query, true)];
+  if (all(equal(instance.tables.zw, uvec2(0u)))) return eye;
+  uint first = 3u * uint(rayQueryGetIntersectionPrimitiveIndexEXT(query, true));
+  vec2 b = rayQueryGetIntersectionBarycentricsEXT(query, true);
+  vec3 w = vec3(1.0 - b.x - b.y, b.x, b.y);
+  PositionArray now = PositionArray(instance.addresses.xy);
+  PositionArray before = PositionArray(instance.tables.zw);
+  vec3 moved = vec3(0.0);
+  for (uint k = 0u; k < 3u; ++k)
+    moved += w[k] * (before.positions[first + k].position.xyz - now.positions[first + k].position.xyz);
+  vec3 result = eye + mat3(rayQueryGetIntersectionObjectToWorldEXT(query, true)) * moved;
+  return any(isnan(result)) || any(isinf(result)) ? eye : result;
+}
 
 // Whether the tracer shaded the pixel with samples the denoiser should filter.
 bool shaded(ivec2 q, out uvec4 surface) {
@@ -83,7 +129,11 @@ void main() {
   vec2 previous_moments[3] = vec2[3](vec2(0.0), vec2(0.0), vec2(0.0));
   float previous_length = 0.0, weight_sum = 0.0;
   if ((dn.image.z & GLPT_DN_HISTORY_VALID) != 0u && sh.info.y != 0u && id > 1u) {
-    vec4 previous_eye = sh.to_previous_eye * vec4(eye, 1.0);
+    // A deformed surface's point moves back by its triangle's deformation first: its draw's
+    // transform alone finds a wrong history there, or none. (Trying the transform first and the
+    // triangle only where it found none measured worse than either alone: a patchwork of both.)
+    vec3 point = sh.info.z != 0u ? before_deformation(eye, normal) : eye;
+    vec4 previous_eye = sh.to_previous_eye * vec4(point, 1.0);
     vec4 clip = sh.previous_projection * previous_eye;
     // Normals go through the inverse transpose (a motion may scale).
     vec3 previous_normal = normalize(transpose(inverse(mat3(sh.to_previous_eye))) * normal);

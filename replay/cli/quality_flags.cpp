@@ -72,6 +72,9 @@ constexpr std::array kFlags = {
                 "weight of a new frame in the fast average (default 0.7)"},
     QualityFlag{"--denoise-until", "GLPT_DENOISE_UNTIL", FlagValue::kCount, "N",
                 "a still image shows its accumulated average from N samples on (default 64)"},
+    QualityFlag{"--no-denoise-vertex-motion", "GLPT_DENOISE_VERTEX_MOTION", FlagValue::kNone, "0",
+                "deformed surfaces reproject through their draw's transform only, not through "
+                "their triangles' previous vertices (A/B)"},
     QualityFlag{"--output", "GLPT_OUTPUT", FlagValue::kText, "DIR",
                 "also write every frame as DIR/frame_NNNNNN.png"},
     QualityFlag{"--output-every", "GLPT_OUTPUT_EVERY", FlagValue::kCount, "N",

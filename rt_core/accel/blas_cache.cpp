@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <unordered_set>
 
@@ -21,7 +22,7 @@ VkDeviceSize align_up(VkDeviceSize value, VkDeviceSize alignment) {
 }
 
 VkDeviceSize entry_bytes(const BlasEntry& entry) {
-  return entry.positions.size() + entry.storage.size();
+  return entry.positions.size() + entry.previous_positions.size() + entry.storage.size();
 }
 
 uint64_t shading_key(uint64_t shape_hash, uint64_t shading_hash) {
@@ -221,6 +222,17 @@ BlasPrepareStats BlasCache::prepare(std::span<const Geometry* const> geometries,
       memory_bytes_ -= entry_bytes(*build.entry);
       entries_.erase(source);
       BlasEntry& entry = *build.entry;
+      // Keep the shape it deforms from when that was last frame's: the denoiser reprojects
+      // through the difference (the previous trace read these positions and has completed).
+      if (entry.last_used_frame + 1 == frame_number) {
+        if (entry.previous_positions.size() != entry.positions.size())
+          entry.previous_positions = GpuBuffer::create(device_, entry.positions.size(),
+                                                       VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+        std::memcpy(entry.previous_positions.as<std::byte>(), entry.positions.as<std::byte>(),
+                    entry.positions.size());
+        entry.previous_positions_address = entry.previous_positions.address();
+        entry.previous_positions_frame = frame_number;
+      }
       pack_positions(*geometry, entry.triangle_order,
                      {entry.positions.as<gpu::GpuPosition>(), 3 * size_t{entry.triangle_count}});
       const Bounds bounds = bounds_of(positions);

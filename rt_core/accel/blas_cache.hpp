@@ -38,6 +38,12 @@ struct BlasEntry {
   VkDeviceSize update_scratch_size = 0;
   uint32_t refits = 0;      // since it was built
   float built_area = 0.0f;  // surface area of its bounds when built
+  // The positions before its last refit (same size and order as `positions`), when the shape it
+  // was refit from was used the frame before: how the surface deformed since, for the
+  // denoiser's reprojection (GpuInstance.tables.zw). Valid in frame `previous_positions_frame`.
+  GpuBuffer previous_positions;
+  VkDeviceAddress previous_positions_address = 0;
+  uint64_t previous_positions_frame = 0;
 };
 
 struct ShadingEntry {

@@ -237,7 +237,8 @@ void PathTracer::write_denoise_inputs(const TraceScene& scene, bool denoise, boo
       h.previous_projection = state.previous_projection;
       h.viewport =
           glm::vec4(state.viewport[0], state.viewport[1], state.viewport[2], state.viewport[3]);
-      h.info = glm::uvec4(state.history_id, state.has_previous ? 1u : 0u, 0u, 0u);
+      const bool deformed = i < scene_.deformed_states.size() && scene_.deformed_states[i] != 0;
+      h.info = glm::uvec4(state.history_id, state.has_previous ? 1u : 0u, deformed ? 1u : 0u, 0u);
     }
     stats.upload_bytes += upload(*device_, state_histories_, histories);
   }
@@ -309,6 +310,7 @@ void PathTracer::build_scene_setup(const TraceScene& scene, TextureCache* textur
     const uint32_t clamp = make_sampler_setup(texture, unit.lod_bias).shader.clamp_coords & 7u;
     return slot | (target << 8) | (clamp << 10) | ((unit.env_mode & 0xFFFFu) << 16);
   };
+  setup.deformed_states.assign(scene.states.size(), 0);
   for (const Instance& instance : scene.instances) {
     if (!instance.geometry) continue;
     const Geometry& geometry = *instance.geometry;
@@ -335,6 +337,14 @@ void PathTracer::build_scene_setup(const TraceScene& scene, TextureCache* textur
     const EyeBounds bounds =
         EyeBounds::transformed(entry->bounds_min, entry->bounds_max, instance.modelview);
     const glm::uvec2 positions = split_address(entry->positions_address);
+    // How the shape deformed since last frame (a BLAS refit this frame from last frame's shape).
+    glm::uvec2 previous_positions(0u);
+    if (settings_.denoise.vertex_motion && entry->previous_positions_frame == frame_number_ &&
+        entry->previous_positions_address != 0) {
+      previous_positions = split_address(entry->previous_positions_address);
+      for (uint32_t state : instance.draw_states)
+        if (state < setup.deformed_states.size()) setup.deformed_states[state] = 1;
+    }
     const glm::uvec2 vertices = split_address(shading->vertices_address);
     const glm::uvec2 materials = split_address(shading->materials_address);
     float size = bounds.diagonal();
@@ -355,7 +365,7 @@ void PathTracer::build_scene_setup(const TraceScene& scene, TextureCache* textur
          glm::uvec4(instance.surface.alpha_func,
                     std::bit_cast<uint32_t>(instance.surface.alpha_ref), 0u, 0u),
          glm::uvec4(add_emitters(shading->emitters, instance.modelview, setup.emitters), clip_index,
-                    0u, 0u)});
+                    previous_positions)});
 
     setup.instance_bounds.push_back(bounds);
     setup.sky.push_back(instance.sky ? 1 : 0);
@@ -587,6 +597,8 @@ void PathTracer::trace(const TraceScene& scene, const TraceTargets& targets, Fra
     DenoiseResources resources;
     resources.uniforms = &denoise_uniforms_;
     resources.states = &state_histories_;
+    resources.scene = trace.scene;
+    resources.instances = trace.instances;
     resources.position = targets.gbuffer->image(GLPT_GBUFFER_POSITION).view();
     resources.surface = targets.gbuffer->image(GLPT_GBUFFER_SURFACE).view();
     for (int c = 0; c < GLPT_CHANNELS; ++c) resources.channels[c] = channels_[c].view();

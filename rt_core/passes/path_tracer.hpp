@@ -103,6 +103,9 @@ class PathTracer {
     // Some instance's shading reflects specularly (ShadingEntry::reflects_specularly): else the
     // specular channel is zero and the denoiser leaves it out (GLPT_DN_NO_SPECULAR).
     bool reflects_specularly = false;
+    // Per record state: 1 where an instance of it carries its shape's previous positions
+    // (GpuInstance.tables.zw; GpuStateHistory.info.z).
+    std::vector<uint8_t> deformed_states;
   };
   void build_scene_setup(const TraceScene& scene, TextureCache* textures, SceneSetup& setup) const;
   // Whether this frame's samples are denoised: SVGF on, samples to add, no reference, and the

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "rt_core/vk/vk_info.hpp"
 #include "shared_types.h"
 #include "svgf_atrous_spv.h"    // generated from shaders/svgf_atrous.comp at build time
 #include "svgf_temporal_spv.h"  // generated from shaders/svgf_temporal.comp
@@ -24,6 +25,8 @@ constexpr VkDescriptorSetLayoutBinding kBindings[] = {
     compute_binding(GLPT_DN_BINDING_HISTORY, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
     compute_binding(GLPT_DN_BINDING_HISTORY_PREVIOUS, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
     compute_binding(GLPT_DN_BINDING_WORK, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
+    compute_binding(GLPT_DN_BINDING_SCENE, VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR),
+    compute_binding(GLPT_DN_BINDING_INSTANCES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
 };
 static_assert(GLPT_CHANNELS == 3);
 
@@ -92,6 +95,11 @@ void SvgfDenoiser::record(VkCommandBuffer cmd, const DenoiseResources& resources
   const VkDescriptorBufferInfo uniforms{resources.uniforms->handle(), 0,
                                         sizeof(gpu::DenoiseUniforms)};
   const VkDescriptorBufferInfo states{resources.states->handle(), 0, VK_WHOLE_SIZE};
+  const VkDescriptorBufferInfo instances{resources.instances->handle(), 0, VK_WHOLE_SIZE};
+  auto scene_info = make_info<VkWriteDescriptorSetAccelerationStructureKHR>(
+      VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET_ACCELERATION_STRUCTURE_KHR);
+  scene_info.accelerationStructureCount = 1;
+  scene_info.pAccelerationStructures = &resources.scene;
   const VkDescriptorImageInfo images[12] = {general_image_info(resources.position),
                                             general_image_info(resources.surface),
                                             general_image_info(resources.channels[0]),
@@ -104,6 +112,15 @@ void SvgfDenoiser::record(VkCommandBuffer cmd, const DenoiseResources& resources
                                             general_image_info(histories_[current].view()),
                                             general_image_info(histories_[previous].view()),
                                             general_image_info(work_.view())};
+  auto scene_write = [&](VkDescriptorSet set) {
+    auto write =
+        make_info<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET, &scene_info);
+    write.dstSet = set;
+    write.dstBinding = GLPT_DN_BINDING_SCENE;
+    write.descriptorCount = 1;
+    write.descriptorType = VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR;
+    return write;
+  };
   for (const ComputePipeline* pipeline : {temporal_.get(), atrous_.get()}) {
     const VkDescriptorSet set = pipeline->descriptor_set();
     const VkWriteDescriptorSet writes[] = {
@@ -121,6 +138,8 @@ void SvgfDenoiser::record(VkCommandBuffer cmd, const DenoiseResources& resources
         storage_image_write(set, GLPT_DN_BINDING_HISTORY, &images[9]),
         storage_image_write(set, GLPT_DN_BINDING_HISTORY_PREVIOUS, &images[10]),
         storage_image_write(set, GLPT_DN_BINDING_WORK, &images[11]),
+        storage_buffer_write(set, GLPT_DN_BINDING_INSTANCES, &instances),
+        scene_write(set),
     };
     pipeline->update(device_.handle(), writes);
   }

@@ -269,8 +269,12 @@ class Batcher {
       for (const OpenDraw& d : draws_) append_triangles(d, *geometry);
       if (geometry->positions.empty()) return;
     }
-    instances_.push_back(
-        {std::move(geometry), open_modelview_, open_state_, open_surface_, open_sky_});
+    std::vector<uint32_t> states;
+    for (const OpenDraw& d : draws_) states.push_back(d.draw->state);
+    std::sort(states.begin(), states.end());
+    states.erase(std::unique(states.begin(), states.end()), states.end());
+    instances_.push_back({std::move(geometry), open_modelview_, open_state_, open_surface_,
+                          open_sky_, std::move(states)});
     open_lighting_.reset();
     open_surface_ = TracedSurface();
   }

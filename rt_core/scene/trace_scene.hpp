@@ -116,6 +116,9 @@ struct Instance {
   // The sky (DrawClass::kSky): not seen by the world's rays, only looked up, from the eye, by
   // rays that miss the world (the sky is drawn around the camera).
   bool sky = false;
+  // The record states of its draws, ascending (several where draws of other states were merged
+  // into one geometry): the G-buffer's pixels of this geometry carry one of them.
+  std::vector<uint32_t> draw_states;
 };
 
 // A GL light in eye space, with its GL parameters (already transformed by the modelview that was

@@ -21,7 +21,6 @@
 
 namespace {
 
-using glpt::test::quad;
 using glpt::test::Settings;
 using Frames = std::vector<std::vector<uint8_t>>;
 
@@ -30,7 +29,7 @@ constexpr int kReferenceSamples = 1024;
 
 // Camera above a floor looking down at a box lit by a small sphere light: soft shadow edges,
 // box edges, indirect light between box and floor.
-void scene_camera(float eye_x) {
+void scene_camera(float eye_x, float eye_y = 3.0f) {
   glMatrixMode(GL_PROJECTION);
   glLoadIdentity();
   glFrustum(-0.5, 0.5, -0.5, 0.5, 1.0, 30.0);
@@ -38,7 +37,7 @@ void scene_camera(float eye_x) {
   glLoadIdentity();
   // The camera folded into the modelview, as GL programs do.
   glRotatef(35.0f, 1.0f, 0.0f, 0.0f);
-  glTranslatef(-eye_x, -3.0f, -4.5f);
+  glTranslatef(-eye_x, -eye_y, -4.5f);
   glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   glEnable(GL_DEPTH_TEST);
@@ -52,6 +51,15 @@ void material(glm::vec3 diffuse, float specular = 0.0f) {
   glMaterialfv(GL_FRONT_AND_BACK, GL_AMBIENT, black);
   glMaterialfv(GL_FRONT_AND_BACK, GL_SPECULAR, s);
   glMaterialf(GL_FRONT_AND_BACK, GL_SHININESS, 24.0f);
+}
+
+// What the scene's positions pass through before GL sees them: the identity, or the camera where
+// the program transforms its vertices itself (SceneOptions::camera_in_vertices).
+glm::mat4 vertex_transform(1.0f);
+
+void quad(glm::vec3 p0, glm::vec3 p1, glm::vec3 p2, glm::vec3 p3) {
+  auto at = [](glm::vec3 p) { return glm::vec3(vertex_transform * glm::vec4(p, 1.0f)); };
+  glpt::test::quad(at(p0), at(p1), at(p2), at(p3));
 }
 
 void box(glm::vec3 lo, glm::vec3 hi) {
@@ -68,17 +76,27 @@ struct SceneOptions {
   bool light_on = true;
   float box_x = 0.0f;
   float box_specular = 0.0f;  // the box's GL_SPECULAR (grey), shininess 24
+  float eye_y = 3.0f;  // the camera's height
+  // The program transforms its vertices and lights by the camera itself and draws under an
+  // identity modelview (software transform): every draw deforms when the camera moves.
+  bool camera_in_vertices = false;
 };
 
 void draw_scene(const SceneOptions& o) {
-  scene_camera(o.eye_x);
+  scene_camera(o.eye_x, o.eye_y);
+  vertex_transform = glm::mat4(1.0f);
+  if (o.camera_in_vertices) {
+    glGetFloatv(GL_MODELVIEW_MATRIX, &vertex_transform[0][0]);
+    glLoadIdentity();
+  }
+  auto at = [](glm::vec3 p) { return glm::vec3(vertex_transform * glm::vec4(p, 1.0f)); };
   glEnable(GL_LIGHTING);
   const float ambient[] = {0, 0, 0, 1};
   glLightModelfv(GL_LIGHT_MODEL_AMBIENT, ambient);
-  glpt::test::inverse_square_light(GL_LIGHT0, {1.5f, 3.0f, 1.0f}, glm::vec3(9.0f));
+  glpt::test::inverse_square_light(GL_LIGHT0, at({1.5f, 3.0f, 1.0f}), glm::vec3(9.0f));
   if (!o.light_on) glDisable(GL_LIGHT0);
   // A second, dim light that stays on, so switching the first leaves a lit scene.
-  glpt::test::inverse_square_light(GL_LIGHT1, {-2.0f, 2.5f, 2.0f}, glm::vec3(2.0f));
+  glpt::test::inverse_square_light(GL_LIGHT1, at({-2.0f, 2.5f, 2.0f}), glm::vec3(2.0f));
   material({0.7f, 0.7f, 0.7f});
   // The floor in tiles: separate draws, as programs draw levels.
   for (int i = -3; i < 3; ++i)
@@ -399,6 +417,51 @@ TEST(Svgf, GlsOwnLightingHasNoNoiseAndIsNotDenoised) {
       render(with(parity, {{"GLPT_DENOISER", "off"}}), 3, [&](int) { return still; });
   for (const glpt::rt::FrameStats& s : stats) EXPECT_EQ(s.denoised, 0u);
   EXPECT_EQ(denoised.back(), raw.back());
+}
+
+// Item 1's deformed geometry: a program that transforms its vertices by the camera itself (an
+// identity modelview, new eye-space positions every frame: every draw deforms, its BLAS refit)
+// while the camera rises. Through its triangles' previous vertices the history follows the
+// surfaces as it does when the camera is in the modelview; without that correspondence
+// (GLPT_DENOISE_VERTEX_MOTION=0) each pixel looks for its history where the surface was not, and
+// the floor (moving along its normal in eye space) loses it every frame.
+TEST(Svgf, ACameraInTheVerticesKeepsTheHistoryThroughThePreviousVertices) {
+  const int frames = 12;
+  auto in_vertices = [](int frame) {
+    SceneOptions o;
+    o.eye_y = 3.0f + 0.12f * float(frame);
+    o.camera_in_vertices = true;
+    return o;
+  };
+  auto in_modelview = [&](int frame) {
+    SceneOptions o = in_vertices(frame);
+    o.camera_in_vertices = false;
+    return o;
+  };
+  const std::vector<uint8_t> ref = reference(in_modelview(frames - 1));
+  std::vector<glpt::rt::FrameStats> stats;
+  const Frames through_vertices = render(with(kOneSample, {}), frames, in_vertices, &stats);
+  const Frames without =
+      render(with(kOneSample, {{"GLPT_DENOISE_VERTEX_MOTION", "0"}}), frames, in_vertices);
+  const Frames through_modelview = render(with(kOneSample, {}), frames, in_modelview);
+  const Frames raw = render(with(kOneSample, {{"GLPT_DENOISER", "off"}}), frames, in_vertices);
+  keep("reference", ref);
+  keep("vertices", through_vertices.back());
+  keep("without", without.back());
+  keep("modelview", through_modelview.back());
+  const double e_vertices = rel_mse(through_vertices.back(), ref),
+               e_without = rel_mse(without.back(), ref),
+               e_modelview = rel_mse(through_modelview.back(), ref),
+               e_raw = rel_mse(raw.back(), ref);
+  std::printf(
+      "camera in the vertices, rising: relMSE raw %.5f, without vertex motion %.5f, through the "
+      "previous vertices %.5f (%.2fx lower), camera in the modelview %.5f\n",
+      e_raw, e_without, e_vertices, e_without / e_vertices, e_modelview);
+  uint32_t refits = 0;
+  for (size_t f = 2; f < stats.size(); ++f) refits += stats[f].blas_refits;
+  EXPECT_GT(refits, 0u) << "the draws' new positions must refit their BLASes";
+  EXPECT_LE(e_vertices * 1.5, e_without);
+  EXPECT_LE(e_vertices, e_modelview * 1.25);
 }
 
 TEST(Svgf, ANewSizeAndACameraCutEveryFrameStartWithoutHistory) {
