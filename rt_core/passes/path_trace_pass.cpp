@@ -45,16 +45,9 @@ PathTracePass::PathTracePass(const VulkanDevice& device)
 void PathTracePass::record(VkCommandBuffer cmd, const PathTraceResources& resources, uint32_t width,
                            uint32_t height, uint32_t grid_width, uint32_t grid_height) const {
   const VkDescriptorSet set = pipeline_.descriptor_set();
-  auto scene_info = make_info<VkWriteDescriptorSetAccelerationStructureKHR>(
-      VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET_ACCELERATION_STRUCTURE_KHR);
-  scene_info.accelerationStructureCount = 1;
-  scene_info.pAccelerationStructures = &resources.scene;
-  auto scene_write =
-      make_info<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET, &scene_info);
-  scene_write.dstSet = set;
-  scene_write.dstBinding = GLPT_PT_BINDING_SCENE;
-  scene_write.descriptorCount = 1;
-  scene_write.descriptorType = VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR;
+  const auto scene_info = acceleration_structure_info(&resources.scene);
+  const VkWriteDescriptorSet scene_write =
+      acceleration_structure_write(set, GLPT_PT_BINDING_SCENE, &scene_info);
 
   auto whole = [](const GpuBuffer* buffer) {
     return VkDescriptorBufferInfo{buffer->handle(), 0, VK_WHOLE_SIZE};

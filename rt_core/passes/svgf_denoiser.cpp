@@ -2,7 +2,6 @@
 
 #include <algorithm>
 
-#include "rt_core/vk/vk_info.hpp"
 #include "shared_types.h"
 #include "svgf_atrous_spv.h"    // generated from shaders/svgf_atrous.comp at build time
 #include "svgf_temporal_spv.h"  // generated from shaders/svgf_temporal.comp
@@ -96,10 +95,7 @@ void SvgfDenoiser::record(VkCommandBuffer cmd, const DenoiseResources& resources
                                         sizeof(gpu::DenoiseUniforms)};
   const VkDescriptorBufferInfo states{resources.states->handle(), 0, VK_WHOLE_SIZE};
   const VkDescriptorBufferInfo instances{resources.instances->handle(), 0, VK_WHOLE_SIZE};
-  auto scene_info = make_info<VkWriteDescriptorSetAccelerationStructureKHR>(
-      VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET_ACCELERATION_STRUCTURE_KHR);
-  scene_info.accelerationStructureCount = 1;
-  scene_info.pAccelerationStructures = &resources.scene;
+  const auto scene_info = acceleration_structure_info(&resources.scene);
   const VkDescriptorImageInfo images[12] = {general_image_info(resources.position),
                                             general_image_info(resources.surface),
                                             general_image_info(resources.channels[0]),
@@ -112,15 +108,6 @@ void SvgfDenoiser::record(VkCommandBuffer cmd, const DenoiseResources& resources
                                             general_image_info(histories_[current].view()),
                                             general_image_info(histories_[previous].view()),
                                             general_image_info(work_.view())};
-  auto scene_write = [&](VkDescriptorSet set) {
-    auto write =
-        make_info<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET, &scene_info);
-    write.dstSet = set;
-    write.dstBinding = GLPT_DN_BINDING_SCENE;
-    write.descriptorCount = 1;
-    write.descriptorType = VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR;
-    return write;
-  };
   for (const ComputePipeline* pipeline : {temporal_.get(), atrous_.get()}) {
     const VkDescriptorSet set = pipeline->descriptor_set();
     const VkWriteDescriptorSet writes[] = {
@@ -139,7 +126,7 @@ void SvgfDenoiser::record(VkCommandBuffer cmd, const DenoiseResources& resources
         storage_image_write(set, GLPT_DN_BINDING_HISTORY_PREVIOUS, &images[10]),
         storage_image_write(set, GLPT_DN_BINDING_WORK, &images[11]),
         storage_buffer_write(set, GLPT_DN_BINDING_INSTANCES, &instances),
-        scene_write(set),
+        acceleration_structure_write(set, GLPT_DN_BINDING_SCENE, &scene_info),
     };
     pipeline->update(device_.handle(), writes);
   }

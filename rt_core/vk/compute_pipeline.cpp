@@ -121,6 +121,27 @@ VkWriteDescriptorSet storage_buffer_write(VkDescriptorSet set, uint32_t binding,
   return write;
 }
 
+VkWriteDescriptorSetAccelerationStructureKHR acceleration_structure_info(
+    const VkAccelerationStructureKHR* scene) {
+  auto info = make_info<VkWriteDescriptorSetAccelerationStructureKHR>(
+      VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET_ACCELERATION_STRUCTURE_KHR);
+  info.accelerationStructureCount = 1;
+  info.pAccelerationStructures = scene;
+  return info;
+}
+
+VkWriteDescriptorSet acceleration_structure_write(
+    VkDescriptorSet set, uint32_t binding,
+    const VkWriteDescriptorSetAccelerationStructureKHR* scene) {
+  auto write = make_info<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
+  write.pNext = scene;  // VkWriteDescriptorSet's pNext is const
+  write.dstSet = set;
+  write.dstBinding = binding;
+  write.descriptorCount = 1;
+  write.descriptorType = VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR;
+  return write;
+}
+
 VkWriteDescriptorSet storage_image_write(VkDescriptorSet set, uint32_t binding,
                                          const VkDescriptorImageInfo* info) {
   auto write = make_info<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);

@@ -58,6 +58,14 @@ VkWriteDescriptorSet uniform_buffer_write(VkDescriptorSet set, uint32_t binding,
                                           const VkDescriptorBufferInfo* info);
 VkWriteDescriptorSet storage_image_write(VkDescriptorSet set, uint32_t binding,
                                          const VkDescriptorImageInfo* info);
+// `scene` (one acceleration structure, VkWriteDescriptorSetAccelerationStructureKHR) must outlive
+// the returned write, which points at it.
+VkWriteDescriptorSet acceleration_structure_write(
+    VkDescriptorSet set, uint32_t binding,
+    const VkWriteDescriptorSetAccelerationStructureKHR* scene);
+// The pNext of acceleration_structure_write: one acceleration structure, `*scene`.
+VkWriteDescriptorSetAccelerationStructureKHR acceleration_structure_info(
+    const VkAccelerationStructureKHR* scene);
 // A storage image in VK_IMAGE_LAYOUT_GENERAL (every image of glpt's, gpu_image.hpp).
 VkDescriptorImageInfo general_image_info(VkImageView view);
 

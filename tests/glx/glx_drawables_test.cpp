@@ -91,6 +91,18 @@ class GlxDrawables : public ::testing::Test {
     XFree(vi);
     return *ctx != nullptr;
   }
+  // A 32x32 double-buffered window, current, with one red frame finished and swapped: the size
+  // it had before a test resizes it.
+  bool red_frame_shown(Window* win) {
+    GLXContext ctx = nullptr;
+    if (!double_buffered_window(32, 32, win, &ctx) || !glXMakeCurrent(dpy_, *win, ctx))
+      return false;
+    glClearColor(1, 0, 0, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glFinish();
+    glXSwapBuffers(dpy_, *win);
+    return true;
+  }
   GLXContext context(XVisualInfo* vi, GLXContext share = nullptr) {
     GLXContext c = glXCreateContext(dpy_, vi, share, True);
     if (c) contexts_.push_back(c);
@@ -220,12 +232,7 @@ TEST_F(GlxDrawables, ADrawableWithoutDepthPassesTheDepthTest) {
 
 TEST_F(GlxDrawables, AResizedWindowHasItsNewSizeNextFrame) {
   Window win = 0;
-  GLXContext ctx = nullptr;
-  ASSERT_TRUE(double_buffered_window(32, 32, &win, &ctx));
-  ASSERT_TRUE(glXMakeCurrent(dpy_, win, ctx));
-  glClearColor(1, 0, 0, 1);
-  glClear(GL_COLOR_BUFFER_BIT);
-  glXSwapBuffers(dpy_, win);
+  ASSERT_TRUE(red_frame_shown(&win));
   XResizeWindow(dpy_, win, 100, 80);  // no XSync: the swap flushes the program's Display
   unsigned int width = 0, height = 0;
   glXQueryDrawable(dpy_, win, GLX_WIDTH, &width);
@@ -245,13 +252,7 @@ TEST_F(GlxDrawables, AResizedWindowHasItsNewSizeNextFrame) {
 // calls glViewport still draws the next frame at the new size.
 TEST_F(GlxDrawables, AResizedWindowHasItsNewSizeNextFrameWithoutGlViewport) {
   Window win = 0;
-  GLXContext ctx = nullptr;
-  ASSERT_TRUE(double_buffered_window(32, 32, &win, &ctx));
-  ASSERT_TRUE(glXMakeCurrent(dpy_, win, ctx));
-  glClearColor(1, 0, 0, 1);
-  glClear(GL_COLOR_BUFFER_BIT);
-  glFinish();  // the size is known now
-  glXSwapBuffers(dpy_, win);
+  ASSERT_TRUE(red_frame_shown(&win));  // its size known
   XResizeWindow(dpy_, win, 100, 80);
   XSync(dpy_, False);
   glClearColor(0, 0, 1, 1);
