@@ -194,8 +194,8 @@ def main():
     for label, grown in growth_notes:
         print(f"\n{label}: Vulkan objects past the warm-up's most: {grown}")
     for label, ends in pass_notes:
-        print(f"\n{label}: at the end of each pass, MiB (resident / heap in use / free heap kept by "
-              f"malloc / resident less that): {ends}")
+        print(f"\n{label}: at the end of each pass, MiB (resident / heap in use / "
+              f"free heap kept by malloc / resident less that): {ends}")
     for label, note in same_frame_notes:
         print(f"\n{label}: {note}")
 

@@ -64,7 +64,8 @@ vec3 before_deformation(vec3 eye, vec3 normal) {
   PositionArray before = PositionArray(instance.tables.zw);
   vec3 moved = vec3(0.0);
   for (uint k = 0u; k < 3u; ++k)
-    moved += w[k] * (before.positions[first + k].position.xyz - now.positions[first + k].position.xyz);
+    moved += w[k] * (before.positions[first + k].position.xyz -
+                     now.positions[first + k].position.xyz);
   vec3 result = eye + mat3(rayQueryGetIntersectionObjectToWorldEXT(query, true)) * moved;
   return any(isnan(result)) || any(isinf(result)) ? eye : result;
 }
