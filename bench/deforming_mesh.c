@@ -87,7 +87,7 @@ int main(int argc, char** argv) {
     glMatrixMode(GL_MODELVIEW);
     glLoadIdentity();
     glTranslatef(0.0f, 0.0f, -3.5f);
-    glRotatef(-25.0f, 1, 0, 0);
+    glRotatef(25.0f, 1, 0, 0);  // look down on the floor: the camera stays above it
     const float light[4] = {0.4f, 0.6f, 1.0f, 0.0f};
     glLightfv(GL_LIGHT0, GL_POSITION, light);
     glColor3f(0.7f, 0.7f, 0.7f);  // the floor

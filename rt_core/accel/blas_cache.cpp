@@ -68,6 +68,49 @@ Bounds bounds_of(std::span<const glm::vec3> positions) {
   return {low, high};
 }
 
+// The surface-area cost of the tree lavapipe's builder makes of triangles in `order` (it halves
+// the primitive index range, morton_sort.hpp): the summed areas of a binary tree over runs of
+// kLeafTriangles consecutive triangles, relative to the root's area. A refit keeps the order of
+// the shape the tree was built for; as the triangles move apart the boxes of index ranges grow
+// and rays visit more of them: the cost of the refit tree against its cost when built is what
+// the refit loses (BlasCache::refit_source).
+float tree_cost(std::span<const glm::vec3> positions, std::span<const uint32_t> order) {
+  constexpr size_t kLeafTriangles = 4;
+  std::vector<Bounds> level;
+  level.reserve((order.size() + kLeafTriangles - 1) / kLeafTriangles);
+  const glm::vec3 empty_low(std::numeric_limits<float>::max());
+  const glm::vec3 empty_high(std::numeric_limits<float>::lowest());
+  for (size_t first = 0; first < order.size(); first += kLeafTriangles) {
+    Bounds box{empty_low, empty_high};
+    for (size_t i = first; i < std::min(order.size(), first + kLeafTriangles); ++i)
+      for (size_t corner = 0; corner < 3; ++corner) {
+        const glm::vec3& p = positions[3 * size_t{order[i]} + corner];
+        if (!(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z))) continue;
+        box.min = glm::min(box.min, p);
+        box.max = glm::max(box.max, p);
+      }
+    level.push_back(box);
+  }
+  auto area = [](const Bounds& box) { return box.min.x > box.max.x ? 0.0 : double{box.area()}; };
+  double sum = 0.0;
+  while (level.size() > 1) {
+    size_t parents = 0;
+    for (size_t i = 0; i < level.size(); i += 2) {
+      sum += area(level[i]);
+      Bounds parent = level[i];
+      if (i + 1 < level.size()) {
+        sum += area(level[i + 1]);
+        parent.min = glm::min(parent.min, level[i + 1].min);
+        parent.max = glm::max(parent.max, level[i + 1].max);
+      }
+      level[parents++] = parent;
+    }
+    level.resize(parents);
+  }
+  const double root = level.empty() ? 0.0 : area(level.front());
+  return root > 0.0 ? static_cast<float>(sum / root) : 0.0f;
+}
+
 // The build input of a non-indexed triangle soup read straight from `entry`'s positions.
 void describe_triangles(const BlasEntry& entry, VkAccelerationStructureGeometryKHR& geometry) {
   geometry.geometryType = VK_GEOMETRY_TYPE_TRIANGLES_KHR;
@@ -113,7 +156,7 @@ std::unique_ptr<BlasEntry> BlasCache::create_entry(const Geometry& geometry, boo
   const Bounds bounds = bounds_of(positions);
   entry->bounds_min = bounds.min;
   entry->bounds_max = bounds.max;
-  entry->built_area = bounds.area();
+  if (updatable) entry->built_tree_cost = tree_cost(positions, entry->triangle_order);
   describe_triangles(*entry, build.geometry);
 
   auto info =
@@ -146,7 +189,7 @@ std::unique_ptr<BlasEntry> BlasCache::create_entry(const Geometry& geometry, boo
 }
 
 std::unordered_map<uint64_t, std::unique_ptr<BlasEntry>>::iterator BlasCache::refit_source(
-    const Geometry& geometry, uint64_t frame_number) {
+    const Geometry& geometry, uint64_t frame_number, double* refit_loss) {
   if (!refit_allowed_ || geometry.lineage == 0) return entries_.end();
   const auto shape = lineage_shapes_.find(geometry.lineage);
   if (shape == lineage_shapes_.end() || shape->second == geometry.shape_hash) return entries_.end();
@@ -157,9 +200,37 @@ std::unordered_map<uint64_t, std::unique_ptr<BlasEntry>>::iterator BlasCache::re
   if (!entry.updatable || entry.last_used_frame == frame_number ||
       entry.triangle_count != geometry.triangle_count() || entry.refits + 1 > kMaxRefits)
     return entries_.end();
-  const Bounds bounds = bounds_of({geometry.positions.data(), 3 * geometry.triangle_count()});
-  if (!(bounds.area() <= kMaxAreaGrowth * entry.built_area)) return entries_.end();
+  // What the refit trees have cost the rays since the build (in units of a frame's tracing),
+  // against what building anew costs: refit until the loss would exceed a build.
+  const std::span<const glm::vec3> positions(geometry.positions.data(),
+                                             3 * geometry.triangle_count());
+  const float growth = tree_cost(positions, entry.triangle_order) / entry.built_tree_cost;
+  const double loss = entry.refit_loss + std::max(0.0, double{growth} - 1.0);
+  const double build_cost = static_cast<double>(entry.triangle_count) /
+                            (kBuiltTrianglesPerTracedPixel * std::max(1.0, traced_pixels_));
+  if (!(loss < build_cost)) return entries_.end();
+  *refit_loss = loss;
   return found;
+}
+
+void BlasCache::keep_previous_positions(const BlasEntry& from, BlasEntry& to,
+                                        uint64_t frame_number) const {
+  if (from.triangle_count != to.triangle_count || from.triangle_order.size() != to.triangle_count)
+    return;
+  // from.triangle_order: BLAS index in `from` -> triangle; inverted: triangle -> index in `from`.
+  std::vector<uint32_t> index_in_from(from.triangle_count);
+  for (uint32_t i = 0; i < from.triangle_count; ++i) index_in_from[from.triangle_order[i]] = i;
+  to.previous_positions =
+      GpuBuffer::create(device_, to.positions.size(), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  const auto* old_positions = from.positions.as<gpu::GpuPosition>();
+  auto* previous = to.previous_positions.as<gpu::GpuPosition>();
+  for (uint32_t i = 0; i < to.triangle_count; ++i) {
+    const size_t source = 3 * size_t{index_in_from[to.triangle_order[i]]};
+    for (size_t corner = 0; corner < 3; ++corner)
+      previous[3 * size_t{i} + corner] = old_positions[source + corner];
+  }
+  to.previous_positions_address = to.previous_positions.address();
+  to.previous_positions_frame = frame_number;
 }
 
 std::unique_ptr<ShadingEntry> BlasCache::create_shading(const Geometry& geometry,
@@ -187,7 +258,8 @@ std::unique_ptr<ShadingEntry> BlasCache::create_shading(const Geometry& geometry
 }
 
 BlasPrepareStats BlasCache::prepare(std::span<const Geometry* const> geometries,
-                                    uint64_t frame_number) {
+                                    uint64_t frame_number, double traced_pixels) {
+  traced_pixels_ = traced_pixels;
   BlasPrepareStats stats;
   const Stopwatch timer;
   std::vector<PendingBuild> pending;
@@ -216,9 +288,12 @@ BlasPrepareStats BlasCache::prepare(std::span<const Geometry* const> geometries,
     build.shape_hash = geometry->shape_hash;
     const std::span<const glm::vec3> positions(geometry->positions.data(),
                                                3 * geometry->triangle_count());
-    if (auto source = refit_source(*geometry, frame_number); source != entries_.end()) {
+    double refit_loss = 0.0;
+    if (auto source = refit_source(*geometry, frame_number, &refit_loss);
+        source != entries_.end()) {
       build.refit = true;
       build.entry = std::move(source->second);
+      build.entry->refit_loss = refit_loss;
       memory_bytes_ -= entry_bytes(*build.entry);
       entries_.erase(source);
       BlasEntry& entry = *build.entry;
@@ -248,6 +323,13 @@ BlasPrepareStats BlasCache::prepare(std::span<const Geometry* const> geometries,
       const bool deforms =
           previous != lineage_shapes_.end() && previous->second != geometry->shape_hash;
       build.entry = create_entry(*geometry, refit_allowed_ && deforms, build);
+      // Rebuilt (not refit) while deforming: the shape it deforms from, drawn last frame, gives
+      // the denoiser the same per-vertex motion a refit would, in the new BLAS's order.
+      if (deforms) {
+        const auto from = entries_.find(previous->second);
+        if (from != entries_.end() && from->second->last_used_frame + 1 == frame_number)
+          keep_previous_positions(*from->second, *build.entry, frame_number);
+      }
     }
     build.entry->last_used_frame = frame_number;
     stats.upload_bytes += build.entry->positions.size();

@@ -3,7 +3,8 @@
 // order. Recolouring a shape (new colours, normals or materials) uploads new shading data and
 // reuses the BLAS. A deforming object (the same draws, Geometry::lineage, with new positions of
 // as many triangles) refits its previous shape's BLAS in place instead of building a new one,
-// until the refit tree has degraded (BlasCache::kMaxRefits, kMaxAreaGrowth).
+// until what the refit tree costs the rays would exceed a build (BlasCache::kMaxRefits,
+// kBuiltTrianglesPerTracedPixel).
 #pragma once
 
 #include <cstdint>
@@ -36,8 +37,11 @@ struct BlasEntry {
   // before): it can be refit to new positions of the same triangles.
   bool updatable = false;
   VkDeviceSize update_scratch_size = 0;
-  uint32_t refits = 0;      // since it was built
-  float built_area = 0.0f;  // surface area of its bounds when built
+  uint32_t refits = 0;  // since it was built
+  // tree_cost() of the shape it was built for (refittable entries only), and the sum over its
+  // refits of how much more the refit tree cost (cost / built_tree_cost - 1).
+  float built_tree_cost = 0.0f;
+  double refit_loss = 0.0;
   // The positions before its last refit (same size and order as `positions`), when the shape it
   // was refit from was used the frame before: how the surface deformed since, for the
   // denoiser's reprojection (GpuInstance.tables.zw). Valid in frame `previous_positions_frame`.
@@ -81,12 +85,18 @@ class BlasCache {
   // otherwise keep 60 frames' worth of it.
   static constexpr VkDeviceSize kMemoryBudgetBytes = VkDeviceSize{512} << 20;
 
-  // A BLAS is refit at most this many times in a row, and only while its bounds' surface area
-  // stays within kMaxAreaGrowth of the area it was built for; then it is built anew (a refit
-  // keeps the tree of the first shape: boxes grow as the triangles move apart and rays visit
-  // more of them). Measured in docs/classification.md ("Deforming geometry").
+  // Refit or build anew: a refit costs little (lavapipe, this machine: 0.06 us a triangle
+  // against 0.3 us for a build, and half the host work) but keeps the tree of the shape it was
+  // built for, whose boxes grow as the triangles move apart, so every ray through it costs more
+  // (tree_cost() in blas_cache.cpp estimates by how much). A deforming shape is refit until the
+  // refits' summed loss (growth of the tree's cost over its built cost, per frame) would exceed
+  // what a build costs: its triangles / (kBuiltTrianglesPerTracedPixel x the pixels traced per
+  // frame), since tracing a frame's pixel costs about as much as building 5 triangles (measured
+  // with bench/bench_refit.sh: docs/classification.md, "Deforming geometry"). So a small mesh
+  // under many pixels is rebuilt every frame or two and a large one refit for many frames; at
+  // most kMaxRefits in a row.
   static constexpr uint32_t kMaxRefits = 16;
-  static constexpr float kMaxAreaGrowth = 1.5f;
+  static constexpr double kBuiltTrianglesPerTracedPixel = 5.0;
 
   explicit BlasCache(VulkanDevice& device) : device_(device) {}
   // GLPT_BLAS_REFIT=0: every deformed shape is built anew (for A/B measurements).
@@ -98,7 +108,10 @@ class BlasCache {
   // lineage had another shape in an earlier frame refits that shape's BLAS when it is unused
   // this frame, has as many triangles and may still be refit. Throws VulkanError; entries whose
   // build did not complete are not kept.
-  BlasPrepareStats prepare(std::span<const Geometry* const> geometries, uint64_t frame_number);
+  // `traced_pixels`: paths the frame traces (pixels x scale^2 x samples), which decides between
+  // refit and build (kBuiltTrianglesPerTracedPixel).
+  BlasPrepareStats prepare(std::span<const Geometry* const> geometries, uint64_t frame_number,
+                           double traced_pixels);
 
   const BlasEntry* find(uint64_t shape_hash) const;
   // Both the shape's BLAS and this shading of it are held.
@@ -117,7 +130,10 @@ class BlasCache {
   // The entry of the shape `geometry`'s lineage had before, when it can be refit to `geometry`
   // this frame; else entries_.end().
   std::unordered_map<uint64_t, std::unique_ptr<BlasEntry>>::iterator refit_source(
-      const Geometry& geometry, uint64_t frame_number);
+      const Geometry& geometry, uint64_t frame_number, double* refit_loss);
+  // Gives `to`, a new BLAS of a shape `from` deforms into (as many triangles, another order),
+  // `from`'s positions as its previous positions, in `to`'s order.
+  void keep_previous_positions(const BlasEntry& from, BlasEntry& to, uint64_t frame_number) const;
   std::unique_ptr<ShadingEntry> create_shading(const Geometry& geometry,
                                                const BlasEntry& shape) const;
 
@@ -130,6 +146,7 @@ class BlasCache {
   // Each lineage's latest shape (bounded by the entries: dropped with its shape).
   std::unordered_map<uint64_t, uint64_t> lineage_shapes_;
   bool refit_allowed_ = true;
+  double traced_pixels_ = 0.0;  // of the frame being prepared (prepare())
 };
 
 }  // namespace glpt::rt

@@ -451,7 +451,13 @@ void PathTracer::trace(const TraceScene& scene, const TraceTargets& targets, Fra
   std::vector<const Geometry*> geometries;
   geometries.reserve(scene.instances.size());
   for (const Instance& instance : scene.instances) geometries.push_back(instance.geometry.get());
-  const BlasPrepareStats blas = blas_cache_.prepare(geometries, frame_number_);
+  // Paths traced this frame: how much a refit tree's extra cost weighs against a build.
+  const double trace_scale = settings_.reference_samples > 0 ? 1.0 : settings_.trace_scale;
+  const double traced_pixels =
+      static_cast<double>(scene.width) * scene.height * trace_scale * trace_scale *
+      std::max<uint32_t>(1u, settings_.reference_samples > 0 ? settings_.reference_samples
+                                                             : settings_.samples_per_pixel);
+  const BlasPrepareStats blas = blas_cache_.prepare(geometries, frame_number_, traced_pixels);
   stats.blas_builds = blas.builds;
   stats.blas_refits = blas.refits;
   stats.blas_reused = blas.reused;
