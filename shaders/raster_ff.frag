@@ -2,7 +2,7 @@
 // GL 1.5 fixed-function fragment processing: polygon stipple, texturing with per-unit texture
 // environments (GL 1.5 3.8.13, including GL_COMBINE and crossbar sources), colour sum, fog
 // (3.10) and the alpha test (4.1.4). Blending, logic op, stencil, depth and masks are fixed
-// function in the pipeline. Specialization constants (raster_types.h) select each unit's target,
+// function in the pipeline (or here: GLPT_FRAMEBUFFER_OPS). Specialization constants (raster_types.h) select each unit's target,
 // environment and texture base format, so a pipeline contains only what its state uses.
 //
 // Built twice: GLPT_FLAT 1 takes the colours of the provoking vertex (GL_FLAT); both also in
@@ -25,6 +25,11 @@
 
 #ifndef GLPT_PIXELS
 #define GLPT_PIXELS 0
+#endif
+// GLPT_FRAMEBUFFER_OPS 1: blending or the logic op done here (raster_framebuffer_ops.h), for a
+// single colour target read as an input attachment.
+#ifndef GLPT_FRAMEBUFFER_OPS
+#define GLPT_FRAMEBUFFER_OPS 0
 #endif
 
 layout(constant_id = GLPT_SC_UNIT0 + 0) const uint kUnit0 = 0u;
@@ -66,6 +71,12 @@ layout(set = 0, binding = GLPT_RASTER_BINDING_TEXTURES + 13) uniform sampler2D u
 layout(set = 0, binding = GLPT_RASTER_BINDING_TEXTURES + 14) uniform sampler3D u_tex3d_3;
 layout(set = 0, binding = GLPT_RASTER_BINDING_TEXTURES + 15) uniform samplerCube u_texcube_3;
 
+#if GLPT_FRAMEBUFFER_OPS
+#include "raster_framebuffer_ops.h"
+layout(input_attachment_index = 0, set = 0,
+       binding = GLPT_RASTER_BINDING_FRAMEBUFFER) uniform subpassInput u_framebuffer;
+#endif
+
 #if GLPT_PIXELS
 layout(std430, set = 0, binding = GLPT_RASTER_BINDING_PIXELS) readonly buffer Pixels {
   uint pixel_words[];
@@ -97,7 +108,9 @@ layout(location = GLPT_GBUFFER_MATERIAL0) out uvec4 o_material0;
 layout(location = GLPT_GBUFFER_MATERIAL1) out uvec4 o_material1;
 #else
 layout(location = 0) out vec4 o_color;
+#if !GLPT_FRAMEBUFFER_OPS  // (blending in the shader: one colour target)
 layout(location = 1) out vec4 o_color_second;  // GL_FRONT_AND_BACK: the same colour twice
+#endif
 #endif
 
 uint unit_config(uint u) {
@@ -804,7 +817,9 @@ void main() {
 #if !GLPT_GBUFFER
   if ((kFlags & GLPT_FS_CLEAR) != 0u) {
     o_color = S.clear_color;
+#if !GLPT_FRAMEBUFFER_OPS
     o_color_second = o_color;
+#endif
     return;
   }
 #endif
@@ -868,7 +883,11 @@ void main() {
 #if GLPT_GBUFFER
   write_gbuffer(color, back, texels);
 #else
+#if GLPT_FRAMEBUFFER_OPS
+  o_color = framebuffer_ops(color, subpassLoad(u_framebuffer), push.framebuffer_ops);
+#else
   o_color = color;
   o_color_second = color;
+#endif
 #endif
 }

@@ -39,6 +39,9 @@ using mat4 = glm::mat4;
 // Their images, as 32-bit words, for raster_ff.frag built with GLPT_PIXELS (1: fragments keep
 // the rasterized depth; 2: they take the image's depth).
 #define GLPT_RASTER_BINDING_PIXELS (GLPT_RASTER_BINDING_EDGES + 1)
+// The colour buffer as an input attachment, for blending and logic ops in the fragment shader
+// (raster_framebuffer_ops.h): written where the single-target render pass renders.
+#define GLPT_RASTER_BINDING_FRAMEBUFFER (GLPT_RASTER_BINDING_PIXELS + 1)
 // How the words hold one pixel (RasterState::pixel_image.x).
 #define GLPT_PIXELS_RGBA32F 0u   // 4 words: R, G, B, A floats
 #define GLPT_PIXELS_RGBA8 1u     // 1 word: B, G, R, A bytes (a copy of a BGRA8 colour buffer)
@@ -252,12 +255,15 @@ struct RasterPushConstants {
   // RasterMaterial; 0: one pair for the whole draw), z: 1 when the draw has them (else the
   // state's material applies).
   uvec4 materials;
+  // Blend factors, equations, logic op and constant colour of a draw whose fragment shader
+  // blends (raster_framebuffer_ops.h: framebuffer_ops() has the layout); else zero.
+  uvec4 framebuffer_ops;
 };
 
 #ifdef __cplusplus
 static_assert(sizeof(RasterLight) == 112);
 static_assert(sizeof(RasterMaterial) == 80);
-static_assert(sizeof(RasterPushConstants) == 32);
+static_assert(sizeof(RasterPushConstants) == 48);
 }  // namespace glpt::rt::gpu
 #endif
 

@@ -1,6 +1,7 @@
 #include "rt_core/raster/pipeline_key.hpp"
 
 #include <algorithm>
+#include <cstring>
 
 #include "common/content_hash.hpp"
 #include "raster_types.h"
@@ -240,6 +241,32 @@ uint32_t varyings_read(const PipelineKey& key) {
   for (int u = 0; u < GLPT_RASTER_MAX_UNITS; ++u)
     if (key.constants[GLPT_SC_UNIT0 + u] & 7u) varyings |= GLPT_VARYING_TEXCOORDS;
   return varyings;
+}
+
+namespace {
+
+// Mesa's float_to_ubyte (u_math.h), which llvmpipe applies to the blend constant of unorm8
+// colour buffers: x * 255/256 + 2^15 leaves x * 255 rounded to nearest even in the low byte.
+uint32_t blend_constant_unorm8(float x) {
+  if (!(x > 0.0f)) return 0;  // NaN too
+  if (x >= 1.0f) return 255;
+  volatile float scaled = x * (255.0f / 256.0f);  // two roundings, as in Mesa: no fused add
+  const float biased = scaled + 32768.0f;
+  uint32_t bits;
+  std::memcpy(&bits, &biased, sizeof bits);
+  return bits & 0xFFu;
+}
+
+}  // namespace
+
+glm::uvec4 framebuffer_ops_constants(const PipelineKey& key, const glm::vec4& blend_constant) {
+  glm::uvec4 ops(0u);
+  ops.x = uint32_t{key.blend_src_rgb} | uint32_t{key.blend_dst_rgb} << 8 |
+          uint32_t{key.blend_src_alpha} << 16 | uint32_t{key.blend_dst_alpha} << 24;
+  ops.y = uint32_t{key.blend_op_rgb} | uint32_t{key.blend_op_alpha} << 8 |
+          uint32_t{key.logic_op} << 16 | (key.logic_op_enable ? 1u << 24 : 0u);
+  for (int c = 0; c < 4; ++c) ops.z |= blend_constant_unorm8(blend_constant[c]) << (8 * c);
+  return ops;
 }
 
 ColorTargets resolve_draw_buffer(uint32_t draw_buffer, bool double_buffered) {

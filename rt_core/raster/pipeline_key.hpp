@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <type_traits>
 
 #include "rt_core/record/frame_record.hpp"
 
@@ -40,12 +41,18 @@ struct PipelineKey {
   uint8_t unfilled;     // polygon mode through the geometry shader: 0 no, 1 lines, 2 points
   uint8_t pixels;       // pixel rectangles: the GLPT_PIXELS fragment shader (1, or 2 with depth)
   uint8_t gbuffer;      // path-traced mode's G-buffer pass: G-buffer shaders and attachments
-  uint8_t padding[1];
+  // Blending or the logic op in the fragment shader (raster_framebuffer_ops.h); the blend and
+  // logic-op fields above then go to push constants (framebuffer_ops_constants()).
+  uint8_t framebuffer_ops;
+  // Explicit, so that copies keep it zero: keys compare and hash as bytes (implicit padding
+  // would carry whatever a copy leaves there, and equal states would miss their pipeline).
+  uint8_t padding[3];
 
   PipelineKey() { std::memset(this, 0, sizeof *this); }
   bool operator==(const PipelineKey& o) const { return std::memcmp(this, &o, sizeof *this) == 0; }
 };
 static_assert(sizeof(PipelineKey) % 4 == 0);
+static_assert(std::has_unique_object_representations_v<PipelineKey>, "no implicit padding");
 
 struct PipelineKeyHash {
   size_t operator()(const PipelineKey& key) const;
@@ -114,6 +121,10 @@ DrawSetup make_draw_setup(const rec::StateSnapshot& state, const DrawContext& co
 // the front colour: its shaders must declare them (raster_varyings.h). The G-buffer pass, pixel
 // rectangles and unfilled polygons (geometry shaders) take them all.
 uint32_t varyings_read(const PipelineKey& key);
+
+// RasterPushConstants.framebuffer_ops of a key's blend and logic-op state and the blend
+// constant (raster_framebuffer_ops.h has the layout).
+glm::uvec4 framebuffer_ops_constants(const PipelineKey& key, const glm::vec4& blend_constant);
 
 // The GL draw buffer of a state resolved against the drawable.
 ColorTargets resolve_draw_buffer(uint32_t draw_buffer, bool double_buffered);

@@ -396,7 +396,8 @@ void RasterRenderer::record_pixels(Recording& r, size_t index) {
   const VkRect2D scissor = scissor_of(ops, buffers_->config);
   if (scissor.extent.width == 0 || scissor.extent.height == 0) return;
   auto draw_quad = [&](uint32_t keep) {
-    const gpu::RasterPushConstants push{glm::uvec4(plan.state, 0, keep, 0), glm::uvec4(0u)};
+    const gpu::RasterPushConstants push{glm::uvec4(plan.state, 0, keep, 0), glm::uvec4(0u),
+                                        glm::uvec4(0u)};
     vkCmdPushConstants(r.cmd, pipelines_.layout(), pipelines_.push_constant_stages(), 0,
                        sizeof push, &push);
     bind_geometry(r.cmd, plan.quad);

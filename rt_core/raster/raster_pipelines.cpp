@@ -17,6 +17,11 @@
 #include "raster_ff_clip_vert_v12_spv.h"
 #include "raster_ff_clip_vert_v4_spv.h"
 #include "raster_ff_clip_vert_v8_spv.h"
+#include "raster_ff_flat_fbops_frag_v0_spv.h"
+#include "raster_ff_flat_fbops_frag_v12_spv.h"
+#include "raster_ff_flat_fbops_frag_v31_spv.h"
+#include "raster_ff_flat_fbops_frag_v4_spv.h"
+#include "raster_ff_flat_fbops_frag_v8_spv.h"
 #include "raster_ff_flat_frag_spv.h"
 #include "raster_ff_flat_frag_v0_spv.h"
 #include "raster_ff_flat_frag_v12_spv.h"
@@ -24,6 +29,11 @@
 #include "raster_ff_flat_frag_v8_spv.h"
 #include "raster_ff_pixels_depth_frag_spv.h"
 #include "raster_ff_pixels_frag_spv.h"
+#include "raster_ff_smooth_fbops_frag_v0_spv.h"
+#include "raster_ff_smooth_fbops_frag_v12_spv.h"
+#include "raster_ff_smooth_fbops_frag_v31_spv.h"
+#include "raster_ff_smooth_fbops_frag_v4_spv.h"
+#include "raster_ff_smooth_fbops_frag_v8_spv.h"
 #include "raster_ff_smooth_frag_spv.h"
 #include "raster_ff_smooth_frag_v0_spv.h"
 #include "raster_ff_smooth_frag_v12_spv.h"
@@ -80,6 +90,9 @@ RasterPipelines::RasterPipelines(const VulkanDevice& device)
   bindings[0].stageFlags |= geometry;
   bindings.push_back({GLPT_RASTER_BINDING_PIXELS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1,
                       VK_SHADER_STAGE_FRAGMENT_BIT, nullptr});
+  if (device.has_ordered_framebuffer_reads())
+    bindings.push_back({GLPT_RASTER_BINDING_FRAMEBUFFER, VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT, 1,
+                        VK_SHADER_STAGE_FRAGMENT_BIT, nullptr});
   auto set_info = make_info<VkDescriptorSetLayoutCreateInfo>(
       VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO);
   set_info.bindingCount = static_cast<uint32_t>(bindings.size());
@@ -108,22 +121,32 @@ RasterPipelines::RasterPipelines(const VulkanDevice& device)
   GLPT_VK_CHECK(vkCreatePipelineLayout(dev, &layout_info, nullptr, &layout));
   layout_ = vk::PipelineLayout(layout, {dev});
 
+  const bool framebuffer_reads = device.has_ordered_framebuffer_reads();
   auto add_set = [&](uint32_t varyings, std::span<const uint32_t> vertex,
                      std::span<const uint32_t> vertex_clip, std::span<const uint32_t> smooth,
-                     std::span<const uint32_t> flat) {
+                     std::span<const uint32_t> flat, std::span<const uint32_t> smooth_ops,
+                     std::span<const uint32_t> flat_ops) {
     shader_sets_.push_back({varyings, make_module(dev, vertex), make_module(dev, vertex_clip),
-                            make_module(dev, smooth), make_module(dev, flat)});
+                            make_module(dev, smooth), make_module(dev, flat),
+                            framebuffer_reads ? make_module(dev, smooth_ops) : vk::ShaderModule(),
+                            framebuffer_reads ? make_module(dev, flat_ops) : vk::ShaderModule()});
   };
   add_set(0, raster_ff_vert_v0_spv, raster_ff_clip_vert_v0_spv, raster_ff_smooth_frag_v0_spv,
-          raster_ff_flat_frag_v0_spv);
+          raster_ff_flat_frag_v0_spv, raster_ff_smooth_fbops_frag_v0_spv,
+          raster_ff_flat_fbops_frag_v0_spv);
   add_set(GLPT_VARYING_FOG, raster_ff_vert_v4_spv, raster_ff_clip_vert_v4_spv,
-          raster_ff_smooth_frag_v4_spv, raster_ff_flat_frag_v4_spv);
+          raster_ff_smooth_frag_v4_spv, raster_ff_flat_frag_v4_spv,
+          raster_ff_smooth_fbops_frag_v4_spv, raster_ff_flat_fbops_frag_v4_spv);
   add_set(GLPT_VARYING_TEXCOORDS, raster_ff_vert_v8_spv, raster_ff_clip_vert_v8_spv,
-          raster_ff_smooth_frag_v8_spv, raster_ff_flat_frag_v8_spv);
+          raster_ff_smooth_frag_v8_spv, raster_ff_flat_frag_v8_spv,
+          raster_ff_smooth_fbops_frag_v8_spv, raster_ff_flat_fbops_frag_v8_spv);
   add_set(GLPT_VARYING_TEXCOORDS | GLPT_VARYING_FOG, raster_ff_vert_v12_spv,
-          raster_ff_clip_vert_v12_spv, raster_ff_smooth_frag_v12_spv, raster_ff_flat_frag_v12_spv);
+          raster_ff_clip_vert_v12_spv, raster_ff_smooth_frag_v12_spv, raster_ff_flat_frag_v12_spv,
+          raster_ff_smooth_fbops_frag_v12_spv, raster_ff_flat_fbops_frag_v12_spv);
   add_set(GLPT_VARYINGS_ALL, raster_ff_vert_spv, raster_ff_clip_vert_spv, raster_ff_smooth_frag_spv,
-          raster_ff_flat_frag_spv);
+          raster_ff_flat_frag_spv, raster_ff_smooth_fbops_frag_v31_spv,
+          raster_ff_flat_fbops_frag_v31_spv);
+  if (framebuffer_reads) render_pass_ = create_single_target_render_pass(dev);
   fragment_pixels_ = make_module(dev, raster_ff_pixels_frag_spv);
   fragment_pixels_depth_ = make_module(dev, raster_ff_pixels_depth_frag_spv);
   if (device.has_geometry_shader()) {
@@ -168,6 +191,17 @@ RasterPipelines::~RasterPipelines() {
 }
 
 PipelineKey RasterPipelines::pipeline_of(const PipelineKey& key) const {
+  if (key.framebuffer_ops) {
+    // Push constants (framebuffer_ops_constants): one pipeline per colour mask, or one for all
+    // where the mask is dynamic too.
+    PipelineKey shared = key;
+    shared.blend = 0;
+    shared.blend_src_rgb = shared.blend_dst_rgb = shared.blend_src_alpha = 0;
+    shared.blend_dst_alpha = shared.blend_op_rgb = shared.blend_op_alpha = 0;
+    shared.logic_op_enable = shared.logic_op = 0;
+    if (device_.dynamic_blend() != nullptr) shared.color_write_mask = 0;
+    return shared;
+  }
   if (device_.dynamic_blend() == nullptr) return key;
   // Set per draw (RasterRenderer::bind): no part of the pipeline.
   PipelineKey shared = key;
@@ -185,23 +219,25 @@ void RasterPipelines::set_blend_state(VkCommandBuffer cmd, const PipelineKey& ke
   std::array<VkBool32, GLPT_GBUFFER_ATTACHMENTS> enables{};
   std::array<VkColorBlendEquationEXT, GLPT_GBUFFER_ATTACHMENTS> equations{};
   std::array<VkColorComponentFlags, GLPT_GBUFFER_ATTACHMENTS> masks{};
+  // Blending in the shader: the pipeline's blending and logic op are off.
+  const bool fixed_function = !key.gbuffer && !key.framebuffer_ops;
   for (size_t i = 0; i < GLPT_GBUFFER_ATTACHMENTS; ++i) {
     // The G-buffer's attachments are written whole, unblended (as create() makes them).
-    enables[i] = key.gbuffer ? VK_FALSE : key.blend;
+    enables[i] = fixed_function ? key.blend : VK_FALSE;
     equations[i] = {static_cast<VkBlendFactor>(key.blend_src_rgb),
                     static_cast<VkBlendFactor>(key.blend_dst_rgb),
                     static_cast<VkBlendOp>(key.blend_op_rgb),
                     static_cast<VkBlendFactor>(key.blend_src_alpha),
                     static_cast<VkBlendFactor>(key.blend_dst_alpha),
                     static_cast<VkBlendOp>(key.blend_op_alpha)};
-    if (key.gbuffer) equations[i] = {};
+    if (!fixed_function) equations[i] = {};
     masks[i] = key.gbuffer ? 0xFu : key.color_write_mask;
   }
   const uint32_t count = key.attachments;
   blend->set_enable(cmd, 0, count, enables.data());
   blend->set_equation(cmd, 0, count, equations.data());
   blend->set_write_mask(cmd, 0, count, masks.data());
-  blend->set_logic_op_enable(cmd, key.logic_op_enable && !key.gbuffer);
+  blend->set_logic_op_enable(cmd, key.logic_op_enable && fixed_function);
   blend->set_logic_op(cmd, static_cast<VkLogicOp>(key.logic_op));
 }
 
@@ -221,9 +257,10 @@ VkPipeline RasterPipelines::get(const PipelineKey& full_key, bool* created) {
     for (uint32_t c : key.constants) constants += ' ' + std::to_string(c);
     std::fprintf(stderr,
                  "glpt: pipeline %zu: topology %u flat %u clip %u unfilled %u pixels %u gbuffer %u "
-                 "blend %u attachments %u constants%s\n",
+                 "blend %u framebuffer_ops %u attachments %u constants%s\n",
                  pipelines_.size() + 1, key.topology, key.flat, key.clip_variant, key.unfilled,
-                 key.pixels, key.gbuffer, key.blend, key.attachments, constants.c_str());
+                 key.pixels, key.gbuffer, key.blend, key.framebuffer_ops, key.attachments,
+                 constants.c_str());
   }
   const auto started = std::chrono::steady_clock::now();
   VkPipeline pipeline = create(key);
@@ -260,10 +297,12 @@ VkPipeline RasterPipelines::create(const PipelineKey& key) {
   stages[0].pSpecializationInfo = &specialization;
   stages[1] = stages[0];
   stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
-  stages[1].module = key.pixels == 2 ? fragment_pixels_depth_.get()
-                     : key.pixels    ? fragment_pixels_.get()
-                     : key.flat      ? shaders->fragment_flat.get()
-                                     : shaders->fragment_smooth.get();
+  stages[1].module = key.pixels == 2       ? fragment_pixels_depth_.get()
+                     : key.pixels          ? fragment_pixels_.get()
+                     : key.framebuffer_ops ? (key.flat ? shaders->fragment_flat_ops.get()
+                                                       : shaders->fragment_smooth_ops.get())
+                     : key.flat            ? shaders->fragment_flat.get()
+                                           : shaders->fragment_smooth.get();
   uint32_t stage_count = 2;
   if (key.unfilled != 0 && unfilled_lines_) {
     stages[2] = stages[0];
@@ -371,8 +410,14 @@ VkPipeline RasterPipelines::create(const PipelineKey& key) {
     unblended.colorWriteMask = 0xF;
     blends.fill(unblended);
   }
+  // Blending in the shader: the render pass whose colour attachment is also its input
+  // attachment, read in rasterization order (render_pass()); the others render dynamically.
+  const bool in_render_pass = uses_render_pass(key);
   auto color_blend = make_info<VkPipelineColorBlendStateCreateInfo>(
       VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO);
+  if (in_render_pass)
+    color_blend.flags =
+        VK_PIPELINE_COLOR_BLEND_STATE_CREATE_RASTERIZATION_ORDER_ATTACHMENT_ACCESS_BIT_EXT;
   color_blend.logicOpEnable = key.logic_op_enable;
   color_blend.logicOp = static_cast<VkLogicOp>(key.logic_op);
   color_blend.attachmentCount = key.attachments;
@@ -420,7 +465,11 @@ VkPipeline RasterPipelines::create(const PipelineKey& key) {
   rendering.stencilAttachmentFormat = kDepthStencilFormat;
 
   auto info = make_info<VkGraphicsPipelineCreateInfo>(
-      VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO, &rendering);
+      VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO, in_render_pass ? nullptr : &rendering);
+  if (in_render_pass) {
+    info.renderPass = render_pass_.get();
+    info.subpass = 0;
+  }
   info.stageCount = stage_count;
   info.pStages = stages.data();
   info.pVertexInputState = &vertex_input;
@@ -436,6 +485,41 @@ VkPipeline RasterPipelines::create(const PipelineKey& key) {
   GLPT_VK_CHECK(
       vkCreateGraphicsPipelines(device_.handle(), cache_.get(), 1, &info, nullptr, &pipeline));
   return pipeline;
+}
+
+bool RasterPipelines::uses_render_pass(const PipelineKey& key) const {
+  return render_pass_ && key.framebuffer_ops;
+}
+
+vk::RenderPass RasterPipelines::create_single_target_render_pass(VkDevice dev) {
+  // Everything stays in GENERAL (as with dynamic rendering): no layout transitions.
+  std::array<VkAttachmentDescription, 2> attachments{};
+  for (VkAttachmentDescription& a : attachments) {
+    a.samples = VK_SAMPLE_COUNT_1_BIT;
+    a.loadOp = a.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
+    a.storeOp = a.stencilStoreOp = VK_ATTACHMENT_STORE_OP_STORE;
+    a.initialLayout = a.finalLayout = VK_IMAGE_LAYOUT_GENERAL;
+  }
+  attachments[0].format = kColorFormat;
+  attachments[1].format = kDepthStencilFormat;
+  const VkAttachmentReference color{0, VK_IMAGE_LAYOUT_GENERAL};
+  const VkAttachmentReference depth{1, VK_IMAGE_LAYOUT_GENERAL};
+  VkSubpassDescription subpass{};
+  subpass.flags = VK_SUBPASS_DESCRIPTION_RASTERIZATION_ORDER_ATTACHMENT_COLOR_ACCESS_BIT_EXT;
+  subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
+  subpass.inputAttachmentCount = 1;
+  subpass.pInputAttachments = &color;
+  subpass.colorAttachmentCount = 1;
+  subpass.pColorAttachments = &color;
+  subpass.pDepthStencilAttachment = &depth;
+  auto info = make_info<VkRenderPassCreateInfo>(VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO);
+  info.attachmentCount = static_cast<uint32_t>(attachments.size());
+  info.pAttachments = attachments.data();
+  info.subpassCount = 1;
+  info.pSubpasses = &subpass;
+  VkRenderPass render_pass = VK_NULL_HANDLE;
+  GLPT_VK_CHECK(vkCreateRenderPass(dev, &info, nullptr, &render_pass));
+  return vk::RenderPass(render_pass, {dev});
 }
 
 }  // namespace glpt::rt

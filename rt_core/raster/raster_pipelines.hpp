@@ -44,10 +44,20 @@ class RasterPipelines {
   VkShaderStageFlags push_constant_stages() const { return push_stages_; }
   size_t size() const { return pipelines_.size(); }
 
+  // Blending and logic ops in the fragment shader (PipelineKey::framebuffer_ops) where the device
+  // reads colour attachments in rasterization order: such draws (one colour target) render in
+  // render_pass(), whose colour attachment is also input attachment 0, bound at
+  // GLPT_RASTER_BINDING_FRAMEBUFFER; their pipelines are made for it (uses_render_pass()), all
+  // others for dynamic rendering.
+  bool blends_in_shader() const { return static_cast<bool>(render_pass_); }
+  VkRenderPass render_pass() const { return render_pass_.get(); }
+  bool uses_render_pass(const PipelineKey& key) const;
+
  private:
   VkPipeline create(const PipelineKey& key);
   // `key` without what is set per draw.
   PipelineKey pipeline_of(const PipelineKey& key) const;
+  static vk::RenderPass create_single_target_render_pass(VkDevice dev);
 
   const VulkanDevice& device_;
   vk::DescriptorSetLayout set_layout_;
@@ -58,6 +68,7 @@ class RasterPipelines {
   struct ShaderSet {
     uint32_t varyings = 0;  // GLPT_VARYING_* bits
     vk::ShaderModule vertex, vertex_clip, fragment_smooth, fragment_flat;
+    vk::ShaderModule fragment_smooth_ops, fragment_flat_ops;  // GLPT_FRAMEBUFFER_OPS (or null)
   };
   std::vector<ShaderSet> shader_sets_;
   vk::ShaderModule fragment_pixels_, fragment_pixels_depth_;
@@ -66,6 +77,7 @@ class RasterPipelines {
   vk::ShaderModule gbuffer_vertex_, gbuffer_vertex_clip_, gbuffer_geometry_, gbuffer_geometry_clip_;
   vk::ShaderModule gbuffer_fragment_smooth_, gbuffer_fragment_flat_;
   VkShaderStageFlags push_stages_ = 0;
+  vk::RenderPass render_pass_;  // null without ordered framebuffer reads
   PipelineCacheFile cache_file_;
   vk::PipelineCache cache_;
   std::unordered_map<PipelineKey, vk::Pipeline, PipelineKeyHash> pipelines_;

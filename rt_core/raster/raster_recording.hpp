@@ -134,18 +134,21 @@ struct RasterRenderer::Recording {
   std::vector<PixelPlan> pixels;       // per command index (pixel rectangles only)
   DrawGeometry clear_geometry;
   bool rendering = false;
+  bool in_render_pass = false;  // rendering in RasterPipelines::render_pass (else dynamic)
   ColorTargets targets = ColorTargets::kBack;
   VkPipeline bound_pipeline = VK_NULL_HANDLE;
   // Texture descriptors of the bound set, per binding (to skip redundant binds).
   std::array<VkImageView, 4 * GLPT_RASTER_MAX_UNITS> bound_views{};
   // ... and their samplers: a texture whose parameters changed keeps its view (same texels).
   std::array<VkSampler, 4 * GLPT_RASTER_MAX_UNITS> bound_samplers{};
+  VkImageView bound_framebuffer = VK_NULL_HANDLE;  // ... and the colour buffer shaders read
   bool descriptors_pushed = false;
   // The sets written in this command buffer, by their textures: a frame that switches between a
   // few textures binds a few sets, not one per switch (the buffers are the same for all).
   struct WrittenSet {
     std::array<VkImageView, 4 * GLPT_RASTER_MAX_UNITS> views;
     std::array<VkSampler, 4 * GLPT_RASTER_MAX_UNITS> samplers;
+    VkImageView framebuffer;
     VkDescriptorSet set;
   };
   std::vector<WrittenSet> written_sets;

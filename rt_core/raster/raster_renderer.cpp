@@ -19,6 +19,10 @@ namespace {
 
 // Two keys set the same per-draw blend state (RasterPipelines::set_blend_state).
 bool same_blend(const PipelineKey& a, const PipelineKey& b) {
+  if (a.framebuffer_ops != b.framebuffer_ops) return false;
+  // Blending in the shader: the pipeline's blend state is off and the same for every key.
+  if (a.framebuffer_ops)
+    return a.attachments == b.attachments && a.color_write_mask == b.color_write_mask;
   return a.gbuffer == b.gbuffer && a.attachments == b.attachments && a.blend == b.blend &&
          a.blend_src_rgb == b.blend_src_rgb && a.blend_dst_rgb == b.blend_dst_rgb &&
          a.blend_src_alpha == b.blend_src_alpha && a.blend_dst_alpha == b.blend_dst_alpha &&
@@ -61,6 +65,16 @@ bool in_vertex_order(const rec::VertexData& v, const std::vector<rec::Decomposed
   return true;
 }
 
+// The front and back colour buffers and the depth-stencil buffer: how they are made and what
+// the single-target render pass's framebuffers declare (the two must agree).
+constexpr VkImageUsageFlags kColorUsage =
+    VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT |
+    VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
+    VK_IMAGE_USAGE_STORAGE_BIT;
+constexpr VkImageUsageFlags kDepthStencilUsage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT |
+                                                 VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+                                                 VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+
 }  // namespace
 
 RasterRenderer::RasterRenderer(std::shared_ptr<VulkanDevice> device)
@@ -85,15 +99,12 @@ void RasterRenderer::ensure_buffers(DrawableBuffers& buffers, const rec::Drawabl
   GpuImageInfo color;
   color.format = kColorFormat;
   color.extent = {drawable.width, drawable.height, 1};
-  color.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
-                VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
-                VK_IMAGE_USAGE_STORAGE_BIT;
+  color.usage = kColorUsage;
   buffers.front = GpuImage::create(*device_, color);
   buffers.back = GpuImage::create(*device_, color);
   GpuImageInfo depth = color;
   depth.format = kDepthStencilFormat;
-  depth.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
-                VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+  depth.usage = kDepthStencilUsage;
   depth.aspect = VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT;
   buffers.depth_stencil = GpuImage::create(*device_, depth);
   buffers.accum.resize(drawable.accum_bits > 0 ? drawable.width : 0,
@@ -496,13 +507,81 @@ GpuBuffer* RasterRenderer::imported_host_image(const HostImage& image) {
   return buffer ? &buffer : nullptr;
 }
 
-void RasterRenderer::begin_rendering(Recording& r, ColorTargets targets) {
+VkFramebuffer RasterRenderer::single_target_framebuffer(uint32_t width, uint32_t height) {
+  for (const SizedFramebuffer& f : framebuffers_)
+    if (f.width == width && f.height == height) return f.framebuffer.get();
+  // Imageless: the views come with each vkCmdBeginRenderPass, so one framebuffer per size
+  // serves the front and the back buffer of every drawable of that size.
+  std::array<VkFramebufferAttachmentImageInfo, 2> images{};
+  const VkFormat color_format = kColorFormat, depth_format = kDepthStencilFormat;
+  for (VkFramebufferAttachmentImageInfo& image : images) {
+    image = make_info<VkFramebufferAttachmentImageInfo>(
+        VK_STRUCTURE_TYPE_FRAMEBUFFER_ATTACHMENT_IMAGE_INFO);
+    image.width = width;
+    image.height = height;
+    image.layerCount = 1;
+    image.viewFormatCount = 1;
+  }
+  images[0].usage = kColorUsage;
+  images[0].pViewFormats = &color_format;
+  images[1].usage = kDepthStencilUsage;
+  images[1].pViewFormats = &depth_format;
+  auto attachments = make_info<VkFramebufferAttachmentsCreateInfo>(
+      VK_STRUCTURE_TYPE_FRAMEBUFFER_ATTACHMENTS_CREATE_INFO);
+  attachments.attachmentImageInfoCount = static_cast<uint32_t>(images.size());
+  attachments.pAttachmentImageInfos = images.data();
+  auto info =
+      make_info<VkFramebufferCreateInfo>(VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO, &attachments);
+  info.flags = VK_FRAMEBUFFER_CREATE_IMAGELESS_BIT;
+  info.renderPass = pipelines_.render_pass();
+  info.attachmentCount = static_cast<uint32_t>(images.size());
+  info.width = width;
+  info.height = height;
+  info.layers = 1;
+  VkFramebuffer framebuffer = VK_NULL_HANDLE;
+  GLPT_VK_CHECK(vkCreateFramebuffer(device_->handle(), &info, nullptr, &framebuffer));
+  // A few sizes are kept (a share group's windows, a resize). Submitted frames may still use
+  // the oldest, so it goes once they completed; the recording under way is of this size.
+  constexpr size_t kMaxFramebuffers = 4;
+  if (framebuffers_.size() >= kMaxFramebuffers) {
+    device_->wait_all();
+    framebuffers_.erase(framebuffers_.begin());
+  }
+  framebuffers_.push_back({width, height, vk::Framebuffer(framebuffer, {device_->handle()})});
+  return framebuffer;
+}
+
+void RasterRenderer::begin_rendering(Recording& r, ColorTargets targets, RenderingKind kind) {
   // GL_NONE still writes depth and stencil: render to the back (or front) buffer with a colour
   // write mask of zero (the pipeline key has it).
   if (targets == ColorTargets::kNone)
     targets = buffers_->config.double_buffered ? ColorTargets::kBack : ColorTargets::kFront;
-  if (r.rendering && r.targets == targets) return;
+  if (r.rendering && r.targets == targets &&
+      (kind == RenderingKind::kAny || r.in_render_pass == (kind == RenderingKind::kRenderPass)))
+    return;
   end_rendering(r);
+  if (kind == RenderingKind::kRenderPass) {
+    // A draw blending in the shader: the render pass whose colour attachment the fragment shader
+    // reads (RasterPipelines::render_pass; only keys with framebuffer_ops, one colour target).
+    const std::array<VkImageView, 2> views{
+        targets == ColorTargets::kFront ? buffers_->front.view() : buffers_->back.view(),
+        buffers_->depth_stencil.view()};
+    auto attachments = make_info<VkRenderPassAttachmentBeginInfo>(
+        VK_STRUCTURE_TYPE_RENDER_PASS_ATTACHMENT_BEGIN_INFO);
+    attachments.attachmentCount = static_cast<uint32_t>(views.size());
+    attachments.pAttachments = views.data();
+    auto info =
+        make_info<VkRenderPassBeginInfo>(VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO, &attachments);
+    info.renderPass = pipelines_.render_pass();
+    info.framebuffer = single_target_framebuffer(buffers_->config.width, buffers_->config.height);
+    info.renderArea = {{0, 0}, {buffers_->config.width, buffers_->config.height}};
+    vkCmdBeginRenderPass(r.cmd, &info, VK_SUBPASS_CONTENTS_INLINE);
+    r.rendering = true;
+    r.in_render_pass = true;
+    r.targets = targets;
+    r.bound_pipeline = VK_NULL_HANDLE;
+    return;
+  }
   std::array<VkRenderingAttachmentInfo, GLPT_GBUFFER_ATTACHMENTS> colors{};
   uint32_t count = 0;
   auto add_color = [&](VkImageView view) {
@@ -540,8 +619,12 @@ void RasterRenderer::begin_rendering(Recording& r, ColorTargets targets) {
 void RasterRenderer::end_rendering(Recording& r) {
   if (!r.rendering) return;
   queries_.stop(r.cmd);  // a Vulkan query ends inside the rendering instance it began in
-  vkCmdEndRendering(r.cmd);
+  if (r.in_render_pass)
+    vkCmdEndRenderPass(r.cmd);
+  else
+    vkCmdEndRendering(r.cmd);
   r.rendering = false;
+  r.in_render_pass = false;
 }
 
 void RasterRenderer::bind(Recording& r, const PipelineKey& key,
@@ -580,12 +663,22 @@ void RasterRenderer::bind(Recording& r, const PipelineKey& key,
       }
     }
   }
-  if (r.descriptors_pushed && views == r.bound_views && samplers == r.bound_samplers) return;
+  // The colour buffer a fragment shader that blends reads: the render pass's target (any colour
+  // buffer elsewhere: no pipeline outside the render pass reads it).
+  const VkImageView framebuffer = !pipelines_.blends_in_shader()      ? VK_NULL_HANDLE
+                                  : r.targets == ColorTargets::kFront ? buffers_->front.view()
+                                                                      : buffers_->back.view();
+  if (r.descriptors_pushed && views == r.bound_views && samplers == r.bound_samplers &&
+      framebuffer == r.bound_framebuffer)
+    return;
   r.bound_views = views;
   r.bound_samplers = samplers;
+  r.bound_framebuffer = framebuffer;
   r.descriptors_pushed = true;
   for (const Recording::WrittenSet& written : r.written_sets) {
-    if (written.views != views || written.samplers != samplers) continue;
+    if (written.views != views || written.samplers != samplers ||
+        written.framebuffer != framebuffer)
+      continue;
     vkCmdBindDescriptorSets(r.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.layout(), 0, 1,
                             &written.set, 0, nullptr);
     return;
@@ -626,14 +719,28 @@ void RasterRenderer::bind(Recording& r, const PipelineKey& key,
   writes.back() = writes[0];
   writes.back().dstBinding = GLPT_RASTER_BINDING_PIXELS;
   writes.back().pBufferInfo = &pixels;
-  vkUpdateDescriptorSets(device_->handle(), static_cast<uint32_t>(writes.size()), writes.data(), 0,
-                         nullptr);
+  uint32_t write_count = static_cast<uint32_t>(writes.size());
+  std::array<VkWriteDescriptorSet, std::tuple_size_v<decltype(writes)> + 1> all_writes{};
+  std::copy(writes.begin(), writes.end(), all_writes.begin());
+  const VkDescriptorImageInfo framebuffer_info{VK_NULL_HANDLE, framebuffer,
+                                               VK_IMAGE_LAYOUT_GENERAL};
+  if (framebuffer != VK_NULL_HANDLE) {
+    VkWriteDescriptorSet& w = all_writes[write_count++];
+    w = make_info<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
+    w.dstSet = set;
+    w.dstBinding = GLPT_RASTER_BINDING_FRAMEBUFFER;
+    w.descriptorCount = 1;
+    w.descriptorType = VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT;
+    w.pImageInfo = &framebuffer_info;
+  }
+  vkUpdateDescriptorSets(device_->handle(), write_count, all_writes.data(), 0, nullptr);
   vkCmdBindDescriptorSets(r.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.layout(), 0, 1, &set,
                           0, nullptr);
   // A linear search: a frame binds few distinct texture sets; past this many, new ones are not
   // remembered (they still work, each writes a set of its own).
   constexpr size_t kRememberedSets = 64;
-  if (r.written_sets.size() < kRememberedSets) r.written_sets.push_back({views, samplers, set});
+  if (r.written_sets.size() < kRememberedSets)
+    r.written_sets.push_back({views, samplers, framebuffer, set});
 }
 
 void RasterRenderer::set_dynamic_state(Recording& r, const DynamicDrawState& d,
@@ -710,7 +817,7 @@ void RasterRenderer::record_clear(Recording& r, const rec::Clear& clear, uint32_
       (clear.mask & GL_STENCIL_BUFFER_BIT) && stencil_mask != 0 && buffers_->config.stencil_bits;
   if (clear.mask & GL_ACCUM_BUFFER_BIT) clear_accum(*r.record, clear);  // on the CPU, now
   if (!color && !depth && !stencil) return;
-  begin_rendering(r, color ? targets : ColorTargets::kNone);
+  begin_rendering(r, color ? targets : ColorTargets::kNone, RenderingKind::kAny);
   // The depth Mesa writes: its whole-buffer clear and its quad clear round differently.
   const bool whole_buffer = rect.offset.x == 0 && rect.offset.y == 0 &&
                             rect.extent.width == buffers_->config.width &&
@@ -746,6 +853,7 @@ void RasterRenderer::record_clear(Recording& r, const rec::Clear& clear, uint32_
     if (color && r.gbuffer) clear_gbuffer_surface(r, rect);
     return;
   }
+  begin_rendering(r, color ? targets : ColorTargets::kNone);  // a pipeline's instance
   PipelineKey key;
   key.constants[GLPT_SC_FS_FLAGS] = GLPT_FS_CLEAR;
   key.topology = static_cast<uint8_t>(RasterTopology::kTriangles);
@@ -779,7 +887,8 @@ void RasterRenderer::record_clear(Recording& r, const rec::Clear& clear, uint32_
                             z,
                             z};
   set_dynamic_state(r, d, viewport, rect);
-  const gpu::RasterPushConstants push{glm::uvec4(state_index, 0, 0, 0), glm::uvec4(0u)};
+  const gpu::RasterPushConstants push{glm::uvec4(state_index, 0, 0, 0), glm::uvec4(0u),
+                                      glm::uvec4(0u)};
   vkCmdPushConstants(r.cmd, pipelines_.layout(), pipelines_.push_constant_stages(), 0, sizeof push,
                      &push);
   const DrawGeometry& g = r.clear_geometry;
@@ -840,7 +949,13 @@ void RasterRenderer::record_draw_pass(Recording& r, const rec::Draw& draw, const
   if (t.viewport[2] <= 0 || t.viewport[3] <= 0) return;  // GL draws nothing in an empty viewport
   const VkRect2D scissor = scissor_of(state.raster->ops, buffers_->config);
   if (scissor.extent.width == 0 || scissor.extent.height == 0) return;
-  begin_rendering(r, context.targets);
+  // Blending and logic ops in the fragment shader where it can read the colour buffer (one
+  // colour target, not pixel rectangles): push constants instead of a variant per blend state.
+  setup.key.framebuffer_ops = pipelines_.blends_in_shader() && !to_gbuffer &&
+                              setup.key.attachments == 1 && !setup.key.pixels &&
+                              (setup.key.blend || setup.key.logic_op_enable);
+  begin_rendering(r, context.targets,
+                  setup.key.framebuffer_ops ? RenderingKind::kRenderPass : RenderingKind::kDynamic);
   bind(r, setup.key, &state);
   DynamicDrawState d = setup.dynamic;
   if (buffers_->config.depth_bits == 0) d.depth_test = d.depth_write = false;
@@ -854,7 +969,9 @@ void RasterRenderer::record_draw_pass(Recording& r, const rec::Draw& draw, const
   glm::uvec2 jitter(0u);
   if (to_gbuffer) std::memcpy(&jitter, &r.gbuffer->jitter, sizeof jitter);
   const gpu::RasterPushConstants push{
-      glm::uvec4(draw.state, static_cast<uint32_t>(g.edge_offset / 4), jitter), g.materials};
+      glm::uvec4(draw.state, static_cast<uint32_t>(g.edge_offset / 4), jitter), g.materials,
+      setup.key.framebuffer_ops ? framebuffer_ops_constants(setup.key, d.blend_constant)
+                                : glm::uvec4(0u)};
   vkCmdPushConstants(r.cmd, pipelines_.layout(), pipelines_.push_constant_stages(), 0, sizeof push,
                      &push);
   bind_geometry(r.cmd, g);

@@ -96,7 +96,12 @@ class RasterRenderer {
   void record_draw_pass(Recording& r, const rec::Draw& draw, const DrawGeometry& geometry,
                         VkCullModeFlags face_pass, bool to_gbuffer = false);
   void clear_gbuffer_surface(Recording& r, const VkRect2D& rect);
-  void begin_rendering(Recording& r, ColorTargets targets);
+  // How draws into a rendering instance are made: pipelines for dynamic rendering, pipelines
+  // blending in the shader (the render pass of RasterPipelines::render_pass, one colour target),
+  // or only vkCmdClearAttachments, which any instance takes.
+  enum class RenderingKind : uint8_t { kDynamic, kRenderPass, kAny };
+  void begin_rendering(Recording& r, ColorTargets targets,
+                       RenderingKind kind = RenderingKind::kDynamic);
   void end_rendering(Recording& r);  // ends the rendering instance (and counting in it)
   void bind(Recording& r, const PipelineKey& key, const rec::StateSnapshot* textures_of);
   void set_dynamic_state(Recording& r, const DynamicDrawState& d, const VkViewport& viewport,
@@ -163,6 +168,13 @@ class RasterRenderer {
     GpuBuffer buffer;
   };
   std::vector<ImportedHostImage> imported_;
+  // Imageless framebuffers of RasterPipelines::render_pass, by drawable size.
+  struct SizedFramebuffer {
+    uint32_t width = 0, height = 0;
+    vk::Framebuffer framebuffer;
+  };
+  std::vector<SizedFramebuffer> framebuffers_;
+  VkFramebuffer single_target_framebuffer(uint32_t width, uint32_t height);
   GpuBuffer* present_ = nullptr;  // this execute's window memory, if imported
   GpuBuffer* imported_host_image(const HostImage& image);
   uint64_t frame_ = 0;

@@ -44,6 +44,10 @@ constexpr const char* kDynamicBlendDeviceExtensions[] = {
     VK_EXT_EXTENDED_DYNAMIC_STATE_2_EXTENSION_NAME,
     VK_EXT_EXTENDED_DYNAMIC_STATE_3_EXTENSION_NAME,
 };
+// Blending in the fragment shader (optional: else blending is the pipeline's).
+constexpr const char* kOrderedFramebufferReadExtensions[] = {
+    VK_EXT_RASTERIZATION_ORDER_ATTACHMENT_ACCESS_EXTENSION_NAME,
+};
 constexpr const char* kRayQueryDeviceExtensions[] = {
     VK_KHR_ACCELERATION_STRUCTURE_EXTENSION_NAME,
     VK_KHR_RAY_QUERY_EXTENSION_NAME,
@@ -78,6 +82,8 @@ struct Candidate {
   // VK_EXT_extended_dynamic_state3's blend enable, equation, write mask and logic op enable, and
   // _2's logic op: blend state set per draw.
   bool dynamic_blend = false;
+  // rasterizationOrderColorAttachmentAccess and imagelessFramebuffer: blending in the shader.
+  bool ordered_framebuffer_reads = false;
 };
 
 template <size_t N>
@@ -114,6 +120,8 @@ Candidate evaluate(VkPhysicalDevice device) {
       });
   std::vector<std::string> no_dynamic_blend;
   require_extensions(extensions, kDynamicBlendDeviceExtensions, no_dynamic_blend);
+  std::vector<std::string> no_ordered_reads;
+  require_extensions(extensions, kOrderedFramebufferReadExtensions, no_ordered_reads);
   if (!candidate.missing.empty()) return candidate;  // feature structs may not be understood
 
   auto dynamic3 = make_info<VkPhysicalDeviceExtendedDynamicState3FeaturesEXT>(
@@ -140,9 +148,16 @@ Candidate evaluate(VkPhysicalDevice device) {
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES, &border);
   auto vulkan12 = make_info<VkPhysicalDeviceVulkan12Features>(
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES, &vulkan13);
+  auto order = make_info<VkPhysicalDeviceRasterizationOrderAttachmentAccessFeaturesEXT>(
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RASTERIZATION_ORDER_ATTACHMENT_ACCESS_FEATURES_EXT,
+      vulkan12.pNext);
+  if (no_ordered_reads.empty()) vulkan12.pNext = &order;
   auto features =
       make_info<VkPhysicalDeviceFeatures2>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &vulkan12);
   vkGetPhysicalDeviceFeatures2(device, &features);
+  candidate.ordered_framebuffer_reads = no_ordered_reads.empty() &&
+                                        order.rasterizationOrderColorAttachmentAccess &&
+                                        vulkan12.imagelessFramebuffer;
   const VkPhysicalDeviceFeatures& core = features.features;
   auto need = [&](bool present, const char* what) {
     if (!present) candidate.missing.push_back(what);
@@ -311,6 +326,8 @@ DeviceOptions DeviceOptions::from_environment(bool validation) {
     options.sync_submissions = true;
   if (const char* hide = std::getenv("GLPT_VK_NO_DYNAMIC_BLEND"); hide && *hide && *hide != '0')
     options.hide_dynamic_blend = true;
+  if (const char* hide = std::getenv("GLPT_VK_NO_SHADER_BLEND"); hide && *hide && *hide != '0')
+    options.hide_framebuffer_reads = true;
   if (const char* log = std::getenv("GLPT_VALIDATION_LOG")) options.validation_log = log;
   return options;
 }
@@ -587,6 +604,16 @@ std::unique_ptr<VulkanDevice> VulkanDevice::create(const DeviceOptions& options)
   auto vulkan12 = make_info<VkPhysicalDeviceVulkan12Features>(
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES, &vulkan13);
   vulkan12.bufferDeviceAddress = VK_TRUE;
+  const bool ordered_reads = chosen.ordered_framebuffer_reads && !options.hide_framebuffer_reads;
+  auto order = make_info<VkPhysicalDeviceRasterizationOrderAttachmentAccessFeaturesEXT>(
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RASTERIZATION_ORDER_ATTACHMENT_ACCESS_FEATURES_EXT,
+      vulkan12.pNext);
+  order.rasterizationOrderColorAttachmentAccess = VK_TRUE;
+  if (ordered_reads) {
+    vulkan12.pNext = &order;
+    vulkan12.imagelessFramebuffer = VK_TRUE;
+  }
+  self->ordered_framebuffer_reads_ = ordered_reads;
   auto features =
       make_info<VkPhysicalDeviceFeatures2>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &vulkan12);
   features.features.fillModeNonSolid = VK_TRUE;
@@ -624,6 +651,10 @@ std::unique_ptr<VulkanDevice> VulkanDevice::create(const DeviceOptions& options)
   if (dynamic_blend) {
     device_extensions.insert(device_extensions.end(), std::begin(kDynamicBlendDeviceExtensions),
                              std::end(kDynamicBlendDeviceExtensions));
+  }
+  if (ordered_reads) {
+    device_extensions.insert(device_extensions.end(), std::begin(kOrderedFramebufferReadExtensions),
+                             std::end(kOrderedFramebufferReadExtensions));
   }
 
   float priority = 1.0f;

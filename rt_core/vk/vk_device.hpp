@@ -54,6 +54,9 @@ struct DeviceOptions {
   // colour mask and logic op state its own pipeline, as on devices without
   // VK_EXT_extended_dynamic_state3 (for A/B measurements and to test that path).
   bool hide_dynamic_blend = false;
+  // Treat the device as lacking ordered reads of colour attachments (GLPT_VK_NO_SHADER_BLEND=1):
+  // blending and logic ops in the pipeline's blend state, not in the fragment shader.
+  bool hide_framebuffer_reads = false;
   // Also append every validation message, one line each, to this file (GLPT_VALIDATION_LOG):
   // `scripts/test.sh --validation` collects the messages of every process of the test suite
   // there, including programs whose stderr a test swallows or compares.
@@ -107,6 +110,10 @@ class VulkanDevice {
   // then filters isotropically).
   float max_sampler_anisotropy() const { return max_sampler_anisotropy_; }
   bool has_smooth_lines() const { return smooth_lines_; }
+  // A fragment shader may read the colour attachment it writes as an input attachment, in
+  // rasterization order (VK_EXT_rasterization_order_attachment_access), in render passes with
+  // imageless framebuffers: blending and logic ops in the shader (raster_framebuffer_ops.h).
+  bool has_ordered_framebuffer_reads() const { return ordered_framebuffer_reads_; }
   // Blend enable, equations and factors, colour write masks and the logic op set per draw
   // (VK_EXT_extended_dynamic_state3 and _2's logic op): one pipeline serves every blend state.
   // Null where the device lacks them.
@@ -214,6 +221,7 @@ class VulkanDevice {
   bool geometry_shader_ = false;
   float max_sampler_anisotropy_ = 0.0f;
   bool smooth_lines_ = false;
+  bool ordered_framebuffer_reads_ = false;
   bool precise_occlusion_queries_ = false;
   bool external_host_memory_ = false;
   VkDeviceSize host_pointer_alignment_ = 4096;

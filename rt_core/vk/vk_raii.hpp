@@ -29,7 +29,7 @@ using ObjectKinds =
     std::tuple<VkInstance, VkDevice, VkDebugUtilsMessengerEXT, VkAccelerationStructureKHR, VkBuffer,
                VkDeviceMemory, VkCommandPool, VkDescriptorPool, VkDescriptorSetLayout, VkFence,
                VkPipeline, VkPipelineLayout, VkShaderModule, VkImage, VkImageView, VkSampler,
-               VkPipelineCache, VkQueryPool>;
+               VkPipelineCache, VkQueryPool, VkRenderPass, VkFramebuffer>;
 template <typename Handle, std::size_t index = 0>
 constexpr std::size_t kind_index() {
   if constexpr (index == std::tuple_size_v<ObjectKinds>)
@@ -57,7 +57,9 @@ inline constexpr std::array<const char*, std::tuple_size_v<ObjectKinds>> kObject
     "image_view",
     "sampler",
     "pipeline_cache",
-    "query_pool"};
+    "query_pool",
+    "render_pass",
+    "framebuffer"};
 inline std::array<std::atomic<int64_t>, kObjectKindNames.size()>& live_object_counts_by_kind() {
   static std::array<std::atomic<int64_t>, kObjectKindNames.size()> counts{};
   return counts;
@@ -175,5 +177,7 @@ using ImageView = DeviceChild<VkImageView, &vkDestroyImageView>;
 using Sampler = DeviceChild<VkSampler, &vkDestroySampler>;
 using PipelineCache = DeviceChild<VkPipelineCache, &vkDestroyPipelineCache>;
 using QueryPool = DeviceChild<VkQueryPool, &vkDestroyQueryPool>;
+using RenderPass = DeviceChild<VkRenderPass, &vkDestroyRenderPass>;
+using Framebuffer = DeviceChild<VkFramebuffer, &vkDestroyFramebuffer>;
 
 }  // namespace glpt::rt::vk

@@ -3,7 +3,7 @@
 # IMGCOMPARE, RUN_SCENE, OUT_DIR, WITH_GLPT (register the glpt-vs-Mesa image tests), WITH_STATE
 # (and the state tests), PENDING (pending.txt: scenes whose image test is expected to fail),
 # PATH_MODE (path_mode.txt: scenes also compared with Mesa in path-traced mode), STATIC_BLEND
-# (static_blend.txt: scenes also compared with blend state in pipelines), SCENE_TIMEOUT (seconds
+# (static_blend.txt: scenes also compared with blend state in pipelines and as dynamic state), SCENE_TIMEOUT (seconds
 # per test), OUTPUT.
 cmake_policy(VERSION 3.25)
 execute_process(COMMAND ${MESA_RUNNER} --list
@@ -77,7 +77,13 @@ foreach(line IN LISTS lines)
         "\"${OUT_DIR}/static_blend/${scene}\" \"${MESA_RUNNER}\" \"${GLPT_RUNNER}\" "
         "\"${IMGCOMPARE}\" ${max_diff} ${min_fraction})\n"
         "set_tests_properties(conformance_static_blend.${scene} PROPERTIES LABELS conformance "
-        "ENVIRONMENT GLPT_VK_NO_DYNAMIC_BLEND=1 TIMEOUT ${SCENE_TIMEOUT})\n")
+        "ENVIRONMENT \"GLPT_VK_NO_DYNAMIC_BLEND=1;GLPT_VK_NO_SHADER_BLEND=1\" "
+        "TIMEOUT ${SCENE_TIMEOUT})\n"
+        "add_test(conformance_dynamic_blend.${scene} \"${RUN_SCENE}\" image \"${scene}\" "
+        "\"${OUT_DIR}/dynamic_blend/${scene}\" \"${MESA_RUNNER}\" \"${GLPT_RUNNER}\" "
+        "\"${IMGCOMPARE}\" ${max_diff} ${min_fraction})\n"
+        "set_tests_properties(conformance_dynamic_blend.${scene} PROPERTIES LABELS conformance "
+        "ENVIRONMENT GLPT_VK_NO_SHADER_BLEND=1 TIMEOUT ${SCENE_TIMEOUT})\n")
     endif()
   endif()
   # A pending scene's state is compared once it leaves pending.txt (until then it may fail either

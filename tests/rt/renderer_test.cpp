@@ -1052,16 +1052,19 @@ TEST(ClassifyDraws, ViewerOfAProjection) {
   EXPECT_EQ(moved.w, 1.0f);
 }
 
-// Raster mode: blend equations and factors, colour masks and logic ops are set per draw where
-// the device can (VK_EXT_extended_dynamic_state3): a program walking through them compiles one
-// pipeline, not one per state (GLPT_VK_NO_DYNAMIC_BLEND=1: one per state, as before).
+// Raster mode: a program walking through blend equations and factors, colour masks and logic
+// ops compiles a pipeline per state only where the device can neither blend in the fragment
+// shader (raster_framebuffer_ops.h; GLPT_VK_NO_SHADER_BLEND=1 hides it) nor set blend state per
+// draw (VK_EXT_extended_dynamic_state3; GLPT_VK_NO_DYNAMIC_BLEND=1 hides it).
 TEST(RenderDeviceSelection, BlendStatesShareOnePipelineWhereTheDeviceSetsThemPerDraw) {
-  auto pipelines_for_blend_states = [](bool hide_dynamic_blend) -> uint32_t {
-    if (hide_dynamic_blend) ::setenv("GLPT_VK_NO_DYNAMIC_BLEND", "1", 1);
+  auto pipelines_for_blend_states = [](bool shader_blend, bool dynamic_blend) -> uint32_t {
+    if (!shader_blend) ::setenv("GLPT_VK_NO_SHADER_BLEND", "1", 1);
+    if (!dynamic_blend) ::setenv("GLPT_VK_NO_DYNAMIC_BLEND", "1", 1);
     RenderSettings settings;
     settings.mode = RenderMode::kRaster;
     std::string error;
     std::unique_ptr<Renderer> renderer = Renderer::create(settings, &error);
+    ::unsetenv("GLPT_VK_NO_SHADER_BLEND");
     ::unsetenv("GLPT_VK_NO_DYNAMIC_BLEND");
     EXPECT_NE(renderer, nullptr) << error;
     if (renderer == nullptr) return 0;
@@ -1085,8 +1088,12 @@ TEST(RenderDeviceSelection, BlendStatesShareOnePipelineWhereTheDeviceSetsThemPer
     return stats.pipelines_created;
   };
   // The clear is a transfer; the six draws differ only in blend, mask and logic op state.
-  EXPECT_EQ(pipelines_for_blend_states(false), 1u);
-  EXPECT_EQ(pipelines_for_blend_states(true), 6u);
+  // Blending in the shader: one pipeline blends (the four blend states and the logic op), one
+  // does not (the masked draw); without dynamic state the logic op's mask is a third.
+  EXPECT_EQ(pipelines_for_blend_states(true, true), 2u);
+  EXPECT_EQ(pipelines_for_blend_states(true, false), 3u);
+  EXPECT_EQ(pipelines_for_blend_states(false, true), 1u);
+  EXPECT_EQ(pipelines_for_blend_states(false, false), 6u);
 }
 
 TEST(RenderDeviceSelection, UnknownDeviceNameGivesAClearError) {
