@@ -2,11 +2,12 @@
 # bench_blend_fill.sh [--size WxH] [--layers N] [--rounds R] [LIBGL]
 #
 # What blending costs per pixel: bench/blend_fill (N window-sized quads a frame, each blended
-# with one of four blend states) under real Mesa (llvmpipe), under glpt's raster mode blending
-# in the fragment shader (the default where the device reads colour attachments in order) and
-# under glpt with the pipeline's blending (GLPT_VK_NO_SHADER_BLEND=1), alternating within each
-# of R rounds (default 5) in one private Xvfb. Prints each run and the median frame time and
-# blended megapixels per second per setting, and the command. LIBGL: glpt's libGL.so.1
+# with one of four blend states) under real Mesa (llvmpipe), under glpt's raster mode as it
+# runs by default (a blend state blends in the fragment shader in the first records that use it,
+# then in the pipeline: RasterRenderer::shader_blends) and with the pipeline's blending only
+# (GLPT_VK_NO_SHADER_BLEND=1), alternating within each of R rounds (default 5) in one private
+# Xvfb. Prints each run and the median frame time (the first two frames of each run left out)
+# and blended megapixels per second per setting, and the command. LIBGL: glpt's libGL.so.1
 # (default <repo>/build/gl_shim/libGL.so.1). Not a test.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
@@ -19,7 +20,7 @@ while [ $# -gt 0 ]; do
     --size) size=$2; shift 2 ;;
     --layers) layers=$2; shift 2 ;;
     --rounds) rounds=$2; shift 2 ;;
-    -h|--help) sed -n '2,10p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,11p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) break ;;
   esac
 done
@@ -35,7 +36,7 @@ echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -
   args=(--size "$size" --layers "$layers" --frames 30)
   for round in $(seq 1 "$rounds"); do
     echo "run mesa $("$program" "${args[@]}")"
-    echo "run glpt_shader_blend $(GLPT_MODE=raster GLPT_QUIET=1 LD_PRELOAD="$libgl" "$program" "${args[@]}")"
+    echo "run glpt $(GLPT_MODE=raster GLPT_QUIET=1 LD_PRELOAD="$libgl" "$program" "${args[@]}")"
     echo "run glpt_pipeline_blend $(GLPT_VK_NO_SHADER_BLEND=1 GLPT_MODE=raster GLPT_QUIET=1 \
       LD_PRELOAD="$libgl" "$program" "${args[@]}")"
   done

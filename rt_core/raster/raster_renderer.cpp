@@ -507,6 +507,30 @@ GpuBuffer* RasterRenderer::imported_host_image(const HostImage& image) {
   return buffer ? &buffer : nullptr;
 }
 
+bool RasterRenderer::shader_blends(const PipelineKey& key) {
+  // Blending in the shader costs no compile but each blended pixel reads the colour buffer and
+  // blends in shader arithmetic (3-4x llvmpipe's own blending per pixel, docs/performance.md);
+  // the pipeline's blending is fast per pixel but llvmpipe compiles a fragment shader variant
+  // for each new blend state. So a state blends in the shader in the first records that use it
+  // (a program walking through many states, each drawn once or twice, never compiles one) and
+  // in the pipeline from then on (a program's steady states are fast once compiled).
+  constexpr uint32_t kShaderBlendRecords = 4;
+  constexpr size_t kTrackedStates = 16384;  // beyond: forgotten, so new again (correct either way)
+  const uint64_t state = uint64_t{key.blend_src_rgb} | uint64_t{key.blend_dst_rgb} << 8 |
+                         uint64_t{key.blend_src_alpha} << 16 | uint64_t{key.blend_dst_alpha} << 24 |
+                         uint64_t{key.blend_op_rgb} << 32 | uint64_t{key.blend_op_alpha} << 40 |
+                         uint64_t{key.logic_op} << 48 | uint64_t{key.logic_op_enable} << 56 |
+                         uint64_t{key.blend} << 57;
+  if (blend_state_uses_.size() >= kTrackedStates && !blend_state_uses_.count(state))
+    blend_state_uses_.clear();
+  BlendStateUse& use = blend_state_uses_[state];
+  if (use.records == 0 || use.last_record != frame_) {
+    ++use.records;
+    use.last_record = frame_;
+  }
+  return use.records <= kShaderBlendRecords;
+}
+
 VkFramebuffer RasterRenderer::single_target_framebuffer(uint32_t width, uint32_t height) {
   for (const SizedFramebuffer& f : framebuffers_)
     if (f.width == width && f.height == height) return f.framebuffer.get();
@@ -950,10 +974,11 @@ void RasterRenderer::record_draw_pass(Recording& r, const rec::Draw& draw, const
   const VkRect2D scissor = scissor_of(state.raster->ops, buffers_->config);
   if (scissor.extent.width == 0 || scissor.extent.height == 0) return;
   // Blending and logic ops in the fragment shader where it can read the colour buffer (one
-  // colour target, not pixel rectangles): push constants instead of a variant per blend state.
+  // colour target, not pixel rectangles) while the blend state is new (shader_blends()).
   setup.key.framebuffer_ops = pipelines_.blends_in_shader() && !to_gbuffer &&
                               setup.key.attachments == 1 && !setup.key.pixels &&
-                              (setup.key.blend || setup.key.logic_op_enable);
+                              (setup.key.blend || setup.key.logic_op_enable) &&
+                              shader_blends(setup.key);
   begin_rendering(r, context.targets,
                   setup.key.framebuffer_ops ? RenderingKind::kRenderPass : RenderingKind::kDynamic);
   bind(r, setup.key, &state);

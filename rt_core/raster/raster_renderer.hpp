@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <unordered_map>
 #include <vector>
 
 #include "rt_core/frame_stats.hpp"
@@ -178,6 +179,14 @@ class RasterRenderer {
   GpuBuffer* present_ = nullptr;  // this execute's window memory, if imported
   GpuBuffer* imported_host_image(const HostImage& image);
   uint64_t frame_ = 0;
+  // Blend states (and logic ops) by the records that used them: a state blends in the fragment
+  // shader in its first kShaderBlendRecords records, then in the pipeline (shader_blends()).
+  struct BlendStateUse {
+    uint64_t last_record = 0;
+    uint32_t records = 0;
+  };
+  std::unordered_map<uint64_t, BlendStateUse> blend_state_uses_;
+  bool shader_blends(const PipelineKey& key);
   rec::Decomposed decomposed_;  // scratch
   // Scratch of execute(), kept across frames: a large frame's megabytes of vertices are not
   // allocated (and page-faulted in) again every frame.

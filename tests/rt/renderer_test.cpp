@@ -1096,6 +1096,51 @@ TEST(RenderDeviceSelection, BlendStatesShareOnePipelineWhereTheDeviceSetsThemPer
   EXPECT_EQ(pipelines_for_blend_states(false, false), 6u);
 }
 
+// A blend state blends in the fragment shader in the first records that use it, then in the
+// pipeline (RasterRenderer::shader_blends): the pixels are the same either way and the same as
+// a device without shader blending gives, frame after frame.
+TEST(RenderDeviceSelection, ABlendStateMovesFromTheShaderToThePipelineWithTheSamePixels) {
+  auto raster_renderer = [](bool shader_blend) {
+    if (!shader_blend) ::setenv("GLPT_VK_NO_SHADER_BLEND", "1", 1);
+    RenderSettings settings;
+    settings.mode = RenderMode::kRaster;
+    settings.validation = RenderSettings::from_environment().validation;
+    std::string error;
+    std::unique_ptr<Renderer> renderer = Renderer::create(settings, &error);
+    ::unsetenv("GLPT_VK_NO_SHADER_BLEND");
+    EXPECT_NE(renderer, nullptr) << error;
+    return renderer;
+  };
+  const std::unique_ptr<Renderer> shader = raster_renderer(true);
+  const std::unique_ptr<Renderer> pipeline = raster_renderer(false);
+  ASSERT_TRUE(shader && pipeline);
+  const std::shared_ptr<DrawableBuffers> shader_buffers = create_drawable_buffers();
+  const std::shared_ptr<DrawableBuffers> pipeline_buffers = create_drawable_buffers();
+  std::vector<uint32_t> created;
+  for (int record = 0; record < 7; ++record) {
+    // Each record blends over the last one's pixels (no clear after the first).
+    RecordBuilder b(16, 16);
+    if (record == 0) b.clear(glm::vec4(0.1f, 0.5f, 0.9f, 1.0f));
+    b.raster.ops.blend = true;
+    b.raster.ops.blend_src_rgb = b.raster.ops.blend_src_alpha = GL_SRC_ALPHA;
+    b.raster.ops.blend_dst_rgb = b.raster.ops.blend_dst_alpha = GL_ONE_MINUS_SRC_ALPHA;
+    b.quad({-1, -1, 0}, {2, 0, 0}, {0, 2, 0}, glm::vec4(0.9f, 0.3f, 0.2f, 0.37f));
+    std::string error;
+    FrameStats stats, unused;
+    std::vector<uint8_t> from_shader, from_pipeline;
+    ASSERT_TRUE(shader->execute(b.record, *shader_buffers, b.drawable, stats, &error)) << error;
+    ASSERT_TRUE(pipeline->execute(b.record, *pipeline_buffers, b.drawable, unused, &error))
+        << error;
+    ASSERT_TRUE(shader->read_color(*shader_buffers, GL_BACK, 0, 0, 16, 16, from_shader, &error));
+    ASSERT_TRUE(
+        pipeline->read_color(*pipeline_buffers, GL_BACK, 0, 0, 16, 16, from_pipeline, &error));
+    EXPECT_EQ(from_shader, from_pipeline) << "record " << record;
+    created.push_back(stats.pipelines_created);
+  }
+  // The shader's pipeline in the first record, the pipeline that blends from the fifth on.
+  EXPECT_EQ(created, (std::vector<uint32_t>{1, 0, 0, 0, 1, 0, 0}));
+}
+
 TEST(RenderDeviceSelection, UnknownDeviceNameGivesAClearError) {
   ::setenv("GLPT_VK_DEVICE", "no-such-device-xyz", 1);
   std::string error;
