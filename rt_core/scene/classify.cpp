@@ -30,6 +30,19 @@ Camera camera_of(const rec::StateSnapshot& s) {
 
 bool same_camera(const Camera& a, const Camera& b) { return !(a < b) && !(b < a); }
 
+// The same view as the main camera's: the same viewport, and a projection equal but for the
+// row that maps depth (its near and far planes), to within float rounding of the same frustum
+// computed for another near plane.
+bool same_view_but_depth(const Camera& a, const MainCamera& main) {
+  if (!main.valid || a.viewport != main.viewport) return false;
+  for (int column = 0; column < 4; ++column)
+    for (int row : {0, 1, 3}) {
+      const float x = a.projection[column][row], y = main.projection[column][row];
+      if (!(std::abs(x - y) <= 1e-5f * std::max(std::abs(x), std::abs(y)))) return false;
+    }
+  return true;
+}
+
 bool same_matrix(const glm::mat4& a, const glm::mat4& b) {
   return std::memcmp(&a, &b, sizeof a) == 0;
 }
@@ -436,17 +449,21 @@ DrawClass classify_draw(const rec::Draw& draw, const rec::StateSnapshot& state,
   return DrawClass::kTraced;
 }
 
-void find_sky(const rec::FrameRecord& record, std::vector<DrawClass>& classes) {
+void find_sky(const rec::FrameRecord& record, const MainCamera& camera,
+              std::vector<DrawClass>& classes) {
   // The run of unlit draws without depth writes or test before the first traced draw (their
   // union must hold the eye: six faces of a box each do not), draws at the far plane, and, after
-  // the world, an unlit box centred on the eye around everything drawn before it.
+  // the world, an unlit box centred on the eye around everything drawn before it. Draws under
+  // the main camera's view with other near and far planes count as the main camera's here.
   std::vector<size_t> run;
   EyeBounds run_bounds, world;
   bool world_started = false;
   for (size_t i = 0; i < record.commands.size() && i < classes.size(); ++i) {
-    if (classes[i] != DrawClass::kTraced) continue;
+    if (classes[i] != DrawClass::kTraced && classes[i] != DrawClass::kOtherCamera) continue;
     const rec::Draw& draw = std::get<rec::Draw>(record.commands[i]);
     const rec::StateSnapshot& state = record.states[draw.state];
+    if (classes[i] == DrawClass::kOtherCamera && !same_view_but_depth(camera_of(state), camera))
+      continue;
     const rec::TransformState& transform = *state.transform;
     if (transform.depth_near == 1.0f && transform.depth_far == 1.0f) {
       classes[i] = DrawClass::kSky;
@@ -485,7 +502,7 @@ void classify_frame(const rec::FrameRecord& record, const rec::DrawableConfig& d
   for (size_t i = 0; i < n; ++i)
     if (const auto* draw = std::get_if<rec::Draw>(&record.commands[i]))
       out.classes[i] = classify_draw(*draw, record.states[draw->state], out.camera, drawable);
-  find_sky(record, out.classes);
+  find_sky(record, out.camera, out.classes);
 
   // Identities first: motion is per draw, relative to the previous frame.
   out.prints.clear();

@@ -98,9 +98,11 @@ MainCamera find_main_camera(const rec::FrameRecord& record, const rec::DrawableC
 DrawClass classify_draw(const rec::Draw& draw, const rec::StateSnapshot& state,
                         const MainCamera& camera, const rec::DrawableConfig& drawable);
 
-// Turns the classes of the record's sky draws from kTraced into kSky (`classes`: per command,
-// as classify_draw gives them).
-void find_sky(const rec::FrameRecord& record, std::vector<DrawClass>& classes);
+// Turns the classes of the record's sky draws into kSky (`classes`: per command, as
+// classify_draw gives them): traced draws, and draws of another camera whose view is the main
+// camera's but for its near and far planes (a sky drawn under a projection reaching farther).
+void find_sky(const rec::FrameRecord& record, const MainCamera& camera,
+              std::vector<DrawClass>& classes);
 
 // Classifies every command of `record`. `identities` (may be null: every draw new, ids 0)
 // matches draws against the previous frame's and is updated.

@@ -722,6 +722,27 @@ TEST(ClassifyDraws, TheSkyAroundTheCameraIsNotTracedAndTheWorldIs) {
   build_trace_scene(n.record, n.drawable, build);
   EXPECT_EQ(build.classes,
             (std::vector<DrawClass>{DrawClass::kSky, DrawClass::kTraced, DrawClass::kTraced}));
+
+  // A sky box without the depth test under a projection reaching farther than the world's (the
+  // same view, other near and far planes) is the sky; the same box under a wider field of view
+  // is another camera's.
+  for (const float fov : {1.0f, 1.3f}) {
+    RecordBuilder f(16, 16);
+    f.transform.projection = glm::perspective(fov, 1.0f, 1.0f, 5000.0f);
+    f.lighting.enabled = false;
+    f.raster.ops.depth_test = false;
+    f.draw(GL_QUADS, box_faces(glm::vec3(-500.0f), glm::vec3(500.0f)), {0, 0, 1}, glm::vec4(0.5f));
+    f.transform.projection = glm::perspective(1.0f, 1.0f, 0.1f, 100.0f);
+    f.raster.ops.depth_test = true;
+    f.directional_light(0, {0, 1, 0});
+    // The world: over 5x the sky's triangles, so its camera is the main one.
+    for (int k = 0; k < 40; ++k)
+      f.quad({-4.0f + 0.2f * float(k), -1, -2}, {0.2f, 0, 0}, {0, 0, -8}, glm::vec4(1));
+    build_trace_scene(f.record, f.drawable, build);
+    EXPECT_EQ(build.classes[0], fov == 1.0f ? DrawClass::kSky : DrawClass::kOtherCamera)
+        << "field of view " << fov;
+    EXPECT_EQ(build.classes[1], DrawClass::kTraced);
+  }
 }
 
 TEST_F(RenderTest, AStillSceneBuildsNothingAfterItsFirstFrameAndACameraMoveNoBlas) {
