@@ -290,6 +290,28 @@ static inline GLuint lbl_checker_texture(int size, int cell, const GLubyte a[4],
   return name;
 }
 
+/* A sky box's six face textures (checkers of sky blues and white, the -y face dark). */
+static inline void lbl_sky_textures(GLuint textures[6]) {
+  static const GLubyte colors[6][4] = {{120, 160, 230, 255}, {110, 150, 220, 255},
+                                       {150, 190, 255, 255}, {60, 70, 90, 255},
+                                       {130, 170, 240, 255}, {100, 140, 210, 255}};
+  static const GLubyte white[4] = {235, 240, 250, 255};
+  for (int i = 0; i < 6; ++i) textures[i] = lbl_checker_texture(16, 4, colors[i], white);
+}
+
+/* The six faces of a sky box of half size h around the origin, each its own draw labelled
+ * `sky` (sky_face0..5), textured with `textures` (GL_REPLACE; texturing off afterwards). */
+static inline void lbl_sky_box(const GLuint textures[6], float h) {
+  glEnable(GL_TEXTURE_2D);
+  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+  for (int face = 0; face < 6; ++face) {
+    glBindTexture(GL_TEXTURE_2D, textures[face]);
+    labelf("sky", "sky_face%d", face, 0);
+    lbl_box_face_inside(face, h);
+  }
+  glDisable(GL_TEXTURE_2D);
+}
+
 /* A size x size RGBA radial blob: colour c, alpha (and, if premultiplied, colour) falling from
  * 1 at the centre to 0 at the edge. Linear filtering, clamp. */
 static inline GLuint lbl_blob_texture(int size, const GLubyte c[3], int premultiplied) {

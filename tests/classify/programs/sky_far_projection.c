@@ -16,11 +16,7 @@
 static GLuint face_textures[6];
 
 static void setup(void) {
-  static const GLubyte colors[6][4] = {{120, 160, 230, 255}, {110, 150, 220, 255},
-                                       {150, 190, 255, 255}, {60, 70, 90, 255},
-                                       {130, 170, 240, 255}, {100, 140, 210, 255}};
-  static const GLubyte white[4] = {235, 240, 250, 255};
-  for (int i = 0; i < 6; ++i) face_textures[i] = lbl_checker_texture(16, 4, colors[i], white);
+  lbl_sky_textures(face_textures);
   glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
 }
 
@@ -42,14 +38,7 @@ static void frame(int f) {
   lbl_look_at(origin, direction, up);
   glDisable(GL_LIGHTING);
   glDisable(GL_DEPTH_TEST);
-  glEnable(GL_TEXTURE_2D);
-  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
-  for (int face = 0; face < 6; ++face) {
-    glBindTexture(GL_TEXTURE_2D, face_textures[face]);
-    labelf("sky", "sky_face%d", face, 0);
-    lbl_box_face_inside(face, 500.0f);
-  }
-  glDisable(GL_TEXTURE_2D);
+  lbl_sky_box(face_textures, 500.0f);
 
   /* the horizon ground: far projection, the whole camera, lit, still no depth test */
   glLoadIdentity();
