@@ -290,6 +290,16 @@ static inline GLuint lbl_checker_texture(int size, int cell, const GLubyte a[4],
   return name;
 }
 
+/* The camera at eye looking at center, its translation removed (the rotation only): what a
+ * sky box centred on the eye is drawn under. Loads the modelview. */
+static inline void lbl_camera_rotation(const float eye[3], const float center[3],
+                                       const float up[3]) {
+  static const float origin[3] = {0.0f, 0.0f, 0.0f};
+  const float direction[3] = {center[0] - eye[0], center[1] - eye[1], center[2] - eye[2]};
+  glLoadIdentity();
+  lbl_look_at(origin, direction, up);
+}
+
 /* A sky box's six face textures (checkers of sky blues and white, the -y face dark). */
 static inline void lbl_sky_textures(GLuint textures[6]) {
   static const GLubyte colors[6][4] = {{120, 160, 230, 255}, {110, 150, 220, 255},

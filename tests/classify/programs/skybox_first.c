@@ -31,10 +31,7 @@ static void frame(int f) {
   glLoadIdentity();
   lbl_perspective(70.0f, 4.0f / 3.0f, 0.5f, 100.0f);
   glMatrixMode(GL_MODELVIEW);
-  glLoadIdentity();
-  const float origin[3] = {0.0f, 0.0f, 0.0f};
-  const float direction[3] = {center[0] - eye[0], center[1] - eye[1], center[2] - eye[2]};
-  lbl_look_at(origin, direction, up);
+  lbl_camera_rotation(eye, center, up);
   glDisable(GL_LIGHTING);
   glEnable(GL_DEPTH_TEST);
   glDepthMask(GL_FALSE);

@@ -53,10 +53,7 @@ static void frame(int f) {
   }
   glDisable(GL_LIGHTING);
 
-  glLoadIdentity();
-  const float origin[3] = {0.0f, 0.0f, 0.0f};
-  const float direction[3] = {center[0] - eye[0], center[1] - eye[1], center[2] - eye[2]};
-  lbl_look_at(origin, direction, up);
+  lbl_camera_rotation(eye, center, up);
   glDepthRange(1.0, 1.0);
   glDepthFunc(GL_LEQUAL);
   label("sky", "sky_box");
