@@ -63,10 +63,18 @@ int main(int argc, char** argv) {
     glClear(GL_COLOR_BUFFER_BIT);
     for (int layer = 0; layer < layers; ++layer) {
       switch (layer % 4) {
-        case 0: glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA); break;
-        case 1: glBlendFunc(GL_ONE, GL_ONE); break;
-        case 2: glBlendFunc(GL_DST_COLOR, GL_ZERO); break;
-        default: glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA); break;
+        case 0:
+          glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+          break;
+        case 1:
+          glBlendFunc(GL_ONE, GL_ONE);
+          break;
+        case 2:
+          glBlendFunc(GL_DST_COLOR, GL_ZERO);
+          break;
+        default:
+          glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+          break;
       }
       const float t = (float)layer / (float)layers;
       glBegin(GL_QUADS);

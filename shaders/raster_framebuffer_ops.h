@@ -78,6 +78,8 @@ uvec4 blend_equation(uint op, uvec4 a, uvec4 b, uvec4 s, uvec4 d) {
 // VkLogicOp 0..15 on 8-bit values.
 uvec4 logic_op(uint op, uvec4 s, uvec4 d) {
   uvec4 r;
+  // One line per operation: the table it is.
+  // clang-format off
   switch (op) {
     case 0u: r = uvec4(0u); break;
     case 1u: r = s & d; break;
@@ -96,6 +98,7 @@ uvec4 logic_op(uint op, uvec4 s, uvec4 d) {
     case 14u: r = ~(s & d); break;
     default: r = uvec4(255u); break;
   }
+  // clang-format on
   return r & 0xFFu;
 }
 
