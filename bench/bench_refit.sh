@@ -4,8 +4,8 @@
 # What refitting a deforming object's BLAS saves and what it costs the rays (docs/classification.md,
 # "Deforming geometry"): bench/deforming_mesh (a G x G grid, default 96: 18,432 triangles, waving
 # with height A relative to its size) path-traced under glpt (LIBGL, default
-# <build>/gl_shim/libGL.so.1) in a private Xvfb, with GLPT_BLAS_REFIT=1 (refit, rebuilt every
-# BlasCache::kMaxRefits) and =0 (built anew every frame), alternating, R repetitions (default 3)
+# <build>/gl_shim/libGL.so.1) in a private Xvfb, with GLPT_BLAS_REFIT=1 (refit or built anew by
+# cost, BlasCache::refit_source) and =0 (built anew every frame), alternating, R repetitions (default 3)
 # of F frames (default 30), accumulation off. Prints per setting the medians over the frames
 # after the second of: host upload ms (BLAS inputs and shading data), device BLAS ms, device
 # trace ms, wall ms per frame, and builds and refits per frame. Not a test.

@@ -189,7 +189,7 @@ std::unique_ptr<BlasEntry> BlasCache::create_entry(const Geometry& geometry, boo
 }
 
 std::unordered_map<uint64_t, std::unique_ptr<BlasEntry>>::iterator BlasCache::refit_source(
-    const Geometry& geometry, uint64_t frame_number, double* refit_loss) {
+    const Geometry& geometry, uint64_t frame_number, double traced_pixels, double* refit_loss) {
   if (!refit_allowed_ || geometry.lineage == 0) return entries_.end();
   const auto shape = lineage_shapes_.find(geometry.lineage);
   if (shape == lineage_shapes_.end() || shape->second == geometry.shape_hash) return entries_.end();
@@ -207,7 +207,7 @@ std::unordered_map<uint64_t, std::unique_ptr<BlasEntry>>::iterator BlasCache::re
   const float growth = tree_cost(positions, entry.triangle_order) / entry.built_tree_cost;
   const double loss = entry.refit_loss + std::max(0.0, double{growth} - 1.0);
   const double build_cost = static_cast<double>(entry.triangle_count) /
-                            (kBuiltTrianglesPerTracedPixel * std::max(1.0, traced_pixels_));
+                            (kBuiltTrianglesPerTracedPixel * std::max(1.0, traced_pixels));
   if (!(loss < build_cost)) return entries_.end();
   *refit_loss = loss;
   return found;
@@ -259,7 +259,6 @@ std::unique_ptr<ShadingEntry> BlasCache::create_shading(const Geometry& geometry
 
 BlasPrepareStats BlasCache::prepare(std::span<const Geometry* const> geometries,
                                     uint64_t frame_number, double traced_pixels) {
-  traced_pixels_ = traced_pixels;
   BlasPrepareStats stats;
   const Stopwatch timer;
   std::vector<PendingBuild> pending;
@@ -289,7 +288,7 @@ BlasPrepareStats BlasCache::prepare(std::span<const Geometry* const> geometries,
     const std::span<const glm::vec3> positions(geometry->positions.data(),
                                                3 * geometry->triangle_count());
     double refit_loss = 0.0;
-    if (auto source = refit_source(*geometry, frame_number, &refit_loss);
+    if (auto source = refit_source(*geometry, frame_number, traced_pixels, &refit_loss);
         source != entries_.end()) {
       build.refit = true;
       build.entry = std::move(source->second);

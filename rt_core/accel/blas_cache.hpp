@@ -128,9 +128,10 @@ class BlasCache {
   std::unique_ptr<BlasEntry> create_entry(const Geometry& geometry, bool updatable,
                                           PendingBuild& build) const;
   // The entry of the shape `geometry`'s lineage had before, when it can be refit to `geometry`
-  // this frame; else entries_.end().
+  // this frame and refitting costs less than a build (`traced_pixels`: prepare()'s); else
+  // entries_.end(). `refit_loss`: the entry's summed loss after this refit.
   std::unordered_map<uint64_t, std::unique_ptr<BlasEntry>>::iterator refit_source(
-      const Geometry& geometry, uint64_t frame_number, double* refit_loss);
+      const Geometry& geometry, uint64_t frame_number, double traced_pixels, double* refit_loss);
   // Gives `to`, a new BLAS of a shape `from` deforms into (as many triangles, another order),
   // `from`'s positions as its previous positions, in `to`'s order.
   void keep_previous_positions(const BlasEntry& from, BlasEntry& to, uint64_t frame_number) const;
@@ -146,7 +147,6 @@ class BlasCache {
   // Each lineage's latest shape (bounded by the entries: dropped with its shape).
   std::unordered_map<uint64_t, uint64_t> lineage_shapes_;
   bool refit_allowed_ = true;
-  double traced_pixels_ = 0.0;  // of the frame being prepared (prepare())
 };
 
 }  // namespace glpt::rt
