@@ -78,6 +78,12 @@ void flush_before_release(Context& ctx) {
 
 void bind_target_and_make_current(Context& ctx, WindowTarget* target) {
   if (ctx.target != nullptr && ctx.target != target) flush_before_release(ctx);
+  // Frames swapped on the drawable the thread leaves are on screen before it draws elsewhere,
+  // as with Mesa's synchronous swap (a program reading its windows after switching sees them).
+  if (Context* previous = current_context();
+      previous != nullptr && previous->target != nullptr && previous->target != target)
+    previous->target->wait_presented();
+  if (ctx.target != nullptr && ctx.target != target) ctx.target->wait_presented();
   ctx.target = target;
   set_current_context(&ctx);
   if (target != nullptr) target->forget_size();  // (WindowTarget::known_size)

@@ -59,6 +59,7 @@ class Renderer::Impl {
   RenderMode mode() const { return settings_.mode; }
   const std::string& device_name() const { return device_->name(); }
   RasterRenderer& raster() { return raster_; }
+  VulkanDevice& device() const { return *device_; }
   void start_independent_frame(uint64_t frame_index, uint32_t history_window) {
     if (tracer_) tracer_->start_independent_frame(frame_index, history_window);
   }
@@ -73,7 +74,9 @@ class Renderer::Impl {
     // half-way, so nothing pending outlives the call that submitted it.
     struct FrameEndWait {
       VulkanDevice& device;
+      bool submitted_only;  // FrameEnd::present_later: the caller waits before presenting
       ~FrameEndWait() {
+        if (submitted_only) return;
         try {
           device.wait_all();
         } catch (...) {  // a lost device: the next submission reports it
@@ -98,8 +101,17 @@ class Renderer::Impl {
       identities_of(buffers).end_frame();
       if (log_) log_->end_frame();
     }
+    // Only raster mode's frames return before they complete: the path tracer's passes keep
+    // history and acceleration structures that the next frame rewrites.
+    FrameEnd end_now;
+    if (end != nullptr && end->present_later &&
+        (settings_.mode != RenderMode::kRaster || drawable.framebuffer_object)) {
+      end_now = *end;
+      end_now.present_later = false;
+      end = &end_now;
+    }
     {
-      const FrameEndWait frame_end{*device_};
+      const FrameEndWait frame_end{*device_, end != nullptr && end->present_later};
       if (classified_ && settings_.classify_debug) {
         tint_by_class(record, classification_, debug_record_);
         run_frame(debug_record_, buffers, drawable, stats, end, queries);
@@ -277,6 +289,15 @@ bool Renderer::execute(const rec::FrameRecord& record, DrawableBuffers& buffers,
   std::lock_guard lock(impl_->mutex);
   return guarded("render failed", error,
                  [&] { return impl_->execute(record, buffers, drawable, stats, end, queries); });
+}
+
+uint64_t Renderer::frame_ticket() const { return impl_->device().last_ticket(); }
+
+void Renderer::wait_for_frame(uint64_t ticket) const {
+  try {
+    impl_->device().wait(ticket);
+  } catch (...) {  // a lost device: the next execute reports it
+  }
 }
 
 bool Renderer::read_color(DrawableBuffers& buffers, uint32_t buffer, int32_t x, int32_t y,

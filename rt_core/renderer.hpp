@@ -39,6 +39,14 @@ struct FrameEnd {
   bool swap = false;                           // double-buffered swap: back -> front
   std::vector<uint8_t>* front_rgba = nullptr;  // read the front buffer (RGBA8, bottom row first)
   const HostImage* present_to = nullptr;       // copy the front buffer there for the window
+  // The caller shows present_to later, after Renderer::wait_for_frame(Renderer::frame_ticket()):
+  // where the window's memory is imported and the frame is rasterized (raster mode, or a frame
+  // with nothing traced is not enough: path-traced mode always waits), execute returns once the
+  // frame is submitted, so the program records its next frame while this one renders.
+  bool present_later = false;
+  // present_to receives the rows bottom to top (GL's order), for the caller to flip: one copy
+  // region where lavapipe pays per region (300 row regions cost 3x one at 300x300).
+  bool present_bottom_up = false;
 };
 
 // The samples one execute counted for an occlusion query (rec::BeginQuery .. rec::EndQuery): those
@@ -112,6 +120,13 @@ class Renderer {
   // Writes `pixels` into `buffers` (created for `drawable` if need be).
   bool write_pixels(DrawableBuffers& buffers, const rec::DrawableConfig& drawable,
                     const PixelWrite& pixels, std::string* error);
+
+  // What wait_for_frame() takes to wait for everything submitted so far (the frame an execute
+  // with FrameEnd::present_later just submitted included).
+  uint64_t frame_ticket() const;
+  // Blocks until the submissions up to `ticket` have completed. Any thread may call it, also
+  // while another executes: it holds no lock of the renderer while it waits.
+  void wait_for_frame(uint64_t ticket) const;
 
   // glXSwapBuffers of a double-buffered drawable: the front buffer takes the back buffer's
   // contents, and the back buffer keeps them (Mesa's software swap does the same).

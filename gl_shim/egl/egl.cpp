@@ -993,14 +993,18 @@ GLPT_EXPORT EGLBoolean eglCopyBuffers(EGLDisplay dpy, EGLSurface surface,
   });
 }
 
-// Rendering is synchronous with presentation (glpt executes a frame at the swap, read or flush
-// that needs it), so there is nothing to wait for, as glXWaitGL/glXWaitX in glpt.
+// glpt executes a frame at the swap, read or flush that needs it; a swapped frame may still be
+// on its way to the window (GLPT_PRESENT=later): native rendering after this sees it.
 GLPT_EXPORT EGLBoolean eglWaitClient(void) {
   return egl_entry(EGLBoolean{EGL_FALSE}, [&]() -> EGLBoolean {
-    std::lock_guard lock(objects_mutex());
-    EglContext* c = current_egl();
-    if (c && ((c->draw && !c->draw->live) || (c->read && !c->read->live)))
-      return fail(EGL_BAD_CURRENT_SURFACE, EGL_FALSE);
+    {
+      std::lock_guard lock(objects_mutex());
+      EglContext* c = current_egl();
+      if (c && ((c->draw && !c->draw->live) || (c->read && !c->read->live)))
+        return fail(EGL_BAD_CURRENT_SURFACE, EGL_FALSE);
+    }
+    glpt::Context* gl = glpt::current_context();
+    if (gl != nullptr && gl->target != nullptr) gl->target->wait_presented();
     return succeed();
   });
 }

@@ -6,10 +6,12 @@
 #include <cinttypes>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <mutex>
 #include <set>
 #include <string>
+#include <vector>
 
 #include "common/image_io.hpp"
 #include "rt_core/scene/classify.hpp"
@@ -79,6 +81,12 @@ OutputSettings OutputSettings::from_environment() {
     s.stats = true;
     s.stats_file = file;
   }
+  if (const char* present = std::getenv("GLPT_PRESENT"); present && *present) {
+    if (std::strcmp(present, "sync") == 0)
+      s.present_later = false;
+    else if (std::strcmp(present, "later") != 0)
+      std::fprintf(stderr, "glpt: ignoring GLPT_PRESENT=%s (want sync or later)\n", present);
+  }
   return s;
 }
 
@@ -127,6 +135,23 @@ std::unique_ptr<FrameOutput> FrameOutput::create(RenderGroup& group, std::string
   return std::unique_ptr<FrameOutput>(new FrameOutput(std::move(renderer), std::move(settings)));
 }
 
+namespace {
+
+// Reverses the order of the image's rows in place.
+void flip_rows(const rt::HostImage& image) {
+  const size_t row_bytes = size_t{image.width} * 4;
+  std::vector<uint8_t> row(row_bytes);
+  for (uint32_t top = 0, bottom = image.height - 1; top < bottom; ++top, --bottom) {
+    uint8_t* a = image.pixels + top * row_bytes;
+    uint8_t* b = image.pixels + bottom * row_bytes;
+    std::memcpy(row.data(), a, row_bytes);
+    std::memcpy(a, b, row_bytes);
+    std::memcpy(b, row.data(), row_bytes);
+  }
+}
+
+}  // namespace
+
 FrameOutput::FrameOutput(std::shared_ptr<rt::Renderer> renderer, OutputSettings settings)
     : renderer_(std::move(renderer)), settings_(std::move(settings)) {}
 
@@ -172,7 +197,11 @@ bool FrameOutput::end_frame(const rec::FrameRecord& record, const rec::DrawableC
   std::unique_lock lock(target.mutex());
   const rt::HostImage* host = target.host_image(width, height);
   const bool want_png = !settings_.png_dir.empty() && frame_index_ % settings_.png_every == 0;
-  const rt::FrameEnd end{swap, host == nullptr || want_png ? &image_ : nullptr, host};
+  // Into the window's memory: shown by the target's thread once rendered, while the program
+  // goes on (a PNG of the frame needs its pixels here, so that frame waits).
+  const bool later =
+      swap && drawable.double_buffered && host != nullptr && !want_png && settings_.present_later;
+  const rt::FrameEnd end{swap, host == nullptr || want_png ? &image_ : nullptr, host, later, later};
   image_.clear();
   const bool ok =
       renderer_->execute(record, target.buffers(), drawable, stats, &error, &end, queries);
@@ -181,7 +210,17 @@ bool FrameOutput::end_frame(const rec::FrameRecord& record, const rec::DrawableC
   const Stopwatch present_timer;
   const bool have_image =
       ok && width > 0 && height > 0 && image_.size() == size_t{width} * height * 4;
-  if (ok && host != nullptr)
+  if (ok && host != nullptr && later) {
+    std::shared_ptr<const rt::Renderer> renderer = renderer_;
+    const uint64_t ticket = renderer_->frame_ticket();
+    // The rows arrive bottom to top (FrameEnd::present_bottom_up); X's run top to bottom. The
+    // flip runs on the presenting thread, beside the program's.
+    const rt::HostImage image = *host;
+    target.present_host_image_later([renderer, ticket, image] {
+      renderer->wait_for_frame(ticket);
+      flip_rows(image);
+    });
+  } else if (ok && host != nullptr)
     target.present_host_image();
   else if (have_image)
     target.present(image_.data(), width, height);

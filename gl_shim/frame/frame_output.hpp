@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <cstdio>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -43,6 +44,17 @@ class WindowTarget {
     return nullptr;
   }
   virtual void present_host_image() {}
+  // Shows the frame in host_image()'s memory once `ready` (which waits for the renderer to
+  // finish it) has returned, on a thread of the target's, so that the program's thread records
+  // the next frame meanwhile; host_image() then hands out other memory until this frame is
+  // shown. A target without such a thread waits and shows it now.
+  virtual void present_host_image_later(std::function<void()> ready) {
+    ready();
+    present_host_image();
+  }
+  // Blocks until every frame given to present_host_image_later() is shown (glFinish,
+  // glXWaitGL: later X requests of the program see it).
+  virtual void wait_presented() {}
 
   // The drawable's buffers: every context drawing to it draws into and reads these (GLX and EGL
   // let several contexts share a drawable, one after another or on several threads).
@@ -60,6 +72,11 @@ struct OutputSettings {
   uint32_t png_every = 1;  // GLPT_OUTPUT_EVERY: every Nth frame
   bool stats = false;      // GLPT_STATS=1: one line per frame on stderr
   std::string stats_file;  // GLPT_STATS_FILE=FILE: those lines appended to FILE instead
+  // GLPT_PRESENT=later (default): a swapped frame is shown by the window's presenting thread once
+  // rendered, while the program records the next (GLX lets a swap complete after it returns;
+  // glFinish and glXWaitGL wait for it). sync: the swap returns once the frame is on screen, as
+  // Mesa's software GLX does.
+  bool present_later = true;
   static OutputSettings from_environment();
 };
 

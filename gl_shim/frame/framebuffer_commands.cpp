@@ -300,11 +300,13 @@ void glFlush(Context& ctx) {
 }
 
 void glFinish(Context& ctx) {
-  // Rendering is synchronous: finishing means the recorded commands are executed.
+  // Finishing means the recorded commands are executed, and a swapped frame still being shown
+  // by the window's presenting thread is on screen (later X requests of the program see it).
   if (draws_to_front(ctx))
     end_frame(ctx, /*swap=*/false);
   else if (!ctx.replayed)  // a replay (glpt-replay) has nothing to wait for
     execute_record(ctx);
+  if (ctx.target != nullptr) ctx.target->wait_presented();
 }
 
 }  // namespace impl

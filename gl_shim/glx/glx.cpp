@@ -938,8 +938,9 @@ GLPT_EXPORT void glXQueryDrawable(Display* dpy, GLXDrawable draw, int attribute,
   });
 }
 
-// glpt renders synchronously. glXWaitGL: what GL drew reaches the window before later X
-// rendering, as glFinish makes it. glXWaitX: the program's X requests are done (Mesa: XSync).
+// glXWaitGL: what GL drew, and the frames swapped, reach the window before later X rendering,
+// as glFinish makes it (a swapped frame may still be on its way: GLPT_PRESENT=later). glXWaitX: the
+// program's X requests are done (Mesa: XSync).
 GLPT_EXPORT void glXWaitGL(void) {
   glpt::glx::gl_work_entry([&] {
     if (current_glx() != nullptr) glpt::impl::glFinish(*glpt::current_context());

@@ -31,7 +31,18 @@ X11WindowTarget::X11WindowTarget(xcb_connection_t* connection, uint32_t window,
     : connection_(connection), window_(window), config_(config) {}
 
 X11WindowTarget::~X11WindowTarget() {
-  if (!owner_.is_this_process()) return;  // a forked child's exit (process_owner.hpp)
+  if (!owner_.is_this_process()) {  // a forked child's exit (process_owner.hpp)
+    (void)presenter_.release();     // the thread is the parent's: nothing of it runs here
+    return;
+  }
+  if (presenter_) {
+    {
+      std::lock_guard lock(present_mutex_);
+      presenter_stop_ = true;  // after the frames it holds
+    }
+    present_changed_.notify_all();
+    presenter_->join();
+  }
   release_shm();
   if (gc_ != 0) xcb_free_gc(connection_, gc_);
   xcb_disconnect(connection_);
@@ -45,13 +56,37 @@ void X11WindowTarget::round_trip() {
 }
 
 void X11WindowTarget::release_shm() {
-  if (shm_segment_ != 0) {
-    xcb_shm_detach(connection_, shm_segment_);
-    round_trip();  // the server lets go of the segment before it is unmapped here
-    shm_segment_ = 0;
+  wait_presented();
+  for (ShmSegment& segment : shm_) {
+    if (segment.id != 0) {
+      xcb_shm_detach(connection_, segment.id);
+      round_trip();  // the server lets go of the segment before it is unmapped here
+      segment.id = 0;
+    }
+    if (segment.image.pixels != nullptr) shmdt(segment.image.pixels);
+    segment.image = rt::HostImage();
   }
-  if (shm_image_.pixels != nullptr) shmdt(shm_image_.pixels);
-  shm_image_ = rt::HostImage();
+  shm_next_ = 0;
+}
+
+bool X11WindowTarget::attach_shm(ShmSegment& segment, uint32_t width, uint32_t height) {
+  const size_t bytes = (size_t{width} * height * 4 + 4095) & ~size_t{4095};
+  const int id = shmget(IPC_PRIVATE, bytes, IPC_CREAT | 0600);
+  if (id < 0) return false;
+  void* memory = shmat(id, nullptr, 0);
+  segment.id = xcb_generate_id(connection_);
+  xcb_void_cookie_t cookie = xcb_shm_attach_checked(connection_, segment.id, id, 0);
+  xcb_generic_error_t* error = xcb_request_check(connection_, cookie);
+  // Marked for removal now: the segment disappears once both sides have detached.
+  shmctl(id, IPC_RMID, nullptr);
+  if (memory == reinterpret_cast<void*>(-1) || error != nullptr) {
+    free(error);
+    if (memory != reinterpret_cast<void*>(-1)) shmdt(memory);
+    segment.id = 0;
+    return false;  // e.g. a server on another host
+  }
+  segment.image = {static_cast<uint8_t*>(memory), width, height, rt::new_host_image_generation()};
+  return true;
 }
 
 const rt::HostImage* X11WindowTarget::host_image(uint32_t width, uint32_t height) {
@@ -66,40 +101,96 @@ const rt::HostImage* X11WindowTarget::host_image(uint32_t width, uint32_t height
     free(v);
   }
   if (!shm_available_ || width == 0 || height == 0) return nullptr;
-  if (shm_image_.pixels != nullptr && shm_image_.width == width && shm_image_.height == height)
-    return &shm_image_;
-  release_shm();
-  const size_t bytes = (size_t{width} * height * 4 + 4095) & ~size_t{4095};
-  const int id = shmget(IPC_PRIVATE, bytes, IPC_CREAT | 0600);
-  if (id < 0) {
+  const ShmSegment& other = shm_[shm_next_ ^ 1];
+  if (other.image.pixels != nullptr && (other.image.width != width || other.image.height != height))
+    release_shm();  // a new size: both segments go
+  {
+    // The segment's last frame must be on screen before the renderer writes the next into it.
+    std::unique_lock lock(present_mutex_);
+    present_changed_.wait(lock, [&] { return !shm_busy_[shm_next_]; });
+  }
+  ShmSegment& segment = shm_[shm_next_];
+  if (segment.image.pixels != nullptr && segment.image.width == width &&
+      segment.image.height == height)
+    return &segment.image;
+  if (segment.image.pixels != nullptr) release_shm();
+  if (!attach_shm(shm_[shm_next_], width, height)) {
     shm_available_ = false;
+    release_shm();
     return nullptr;
   }
-  void* memory = shmat(id, nullptr, 0);
-  shm_segment_ = xcb_generate_id(connection_);
-  xcb_void_cookie_t cookie = xcb_shm_attach_checked(connection_, shm_segment_, id, 0);
-  xcb_generic_error_t* error = xcb_request_check(connection_, cookie);
-  // Marked for removal now: the segment disappears once both sides have detached.
-  shmctl(id, IPC_RMID, nullptr);
-  if (memory == reinterpret_cast<void*>(-1) || error != nullptr) {
-    free(error);
-    if (memory != reinterpret_cast<void*>(-1)) shmdt(memory);
-    shm_segment_ = 0;
-    shm_available_ = false;  // e.g. a server on another host
-    return nullptr;
-  }
-  shm_image_ = {static_cast<uint8_t*>(memory), width, height, rt::new_host_image_generation()};
-  return &shm_image_;
+  return &shm_[shm_next_].image;
+}
+
+void X11WindowTarget::put_shm(const ShmSegment& segment) {
+  const uint16_t w = static_cast<uint16_t>(segment.image.width);
+  const uint16_t h = static_cast<uint16_t>(segment.image.height);
+  xcb_shm_put_image(connection_, window_, gc_, w, h, 0, 0, w, h, 0, 0, depth_,
+                    XCB_IMAGE_FORMAT_Z_PIXMAP, 0, segment.id, 0);
+  // The segment may be written again once the server has read it, and the frame is on screen.
+  round_trip();
 }
 
 void X11WindowTarget::present_host_image() {
-  if (shm_segment_ == 0 || shm_image_.pixels == nullptr) return;
-  const uint16_t w = static_cast<uint16_t>(shm_image_.width);
-  const uint16_t h = static_cast<uint16_t>(shm_image_.height);
-  xcb_shm_put_image(connection_, window_, gc_, w, h, 0, 0, w, h, 0, 0, depth_,
-                    XCB_IMAGE_FORMAT_Z_PIXMAP, 0, shm_segment_, 0);
-  // Presenting is synchronous: the next frame may overwrite the segment once this returns.
-  round_trip();
+  wait_presented();  // frames keep their order on screen
+  const ShmSegment& segment = shm_[shm_next_];
+  if (segment.id == 0 || segment.image.pixels == nullptr) return;
+  put_shm(segment);
+}
+
+void X11WindowTarget::present_host_image_later(std::function<void()> ready) {
+  if (shm_[shm_next_].id == 0 || shm_[shm_next_].image.pixels == nullptr) {
+    ready();  // nothing to show; the renderer's work still completes before this returns
+    return;
+  }
+  {
+    std::lock_guard lock(present_mutex_);
+    if (!presenter_) {
+      try {
+        presenter_ = std::make_unique<std::thread>([this] { run_presenter(); });
+      } catch (const std::exception&) {  // no thread: present here, as before
+        presenter_.reset();
+      }
+    }
+    if (presenter_) {
+      shm_busy_[shm_next_] = true;
+      present_jobs_.push_back({shm_next_, std::move(ready)});
+    }
+  }
+  if (!presenter_) {
+    ready();
+    put_shm(shm_[shm_next_]);
+    return;
+  }
+  present_changed_.notify_all();
+  shm_next_ ^= 1;
+}
+
+void X11WindowTarget::run_presenter() {
+  for (;;) {
+    PresentJob* job = nullptr;
+    {
+      std::unique_lock lock(present_mutex_);
+      present_changed_.wait(lock, [&] { return presenter_stop_ || !present_jobs_.empty(); });
+      if (present_jobs_.empty()) return;  // stopped, every frame shown
+      job = &present_jobs_.front();       // stays in the queue (wait_presented) until shown
+    }
+    // The job and its segment are not touched by the program's thread until it leaves the
+    // queue: host_image() and release_shm() wait for that.
+    job->ready();
+    put_shm(shm_[job->segment]);
+    {
+      std::lock_guard lock(present_mutex_);
+      shm_busy_[job->segment] = false;
+      present_jobs_.pop_front();
+    }
+    present_changed_.notify_all();
+  }
+}
+
+void X11WindowTarget::wait_presented() {
+  std::unique_lock lock(present_mutex_);
+  present_changed_.wait(lock, [&] { return present_jobs_.empty(); });
 }
 
 bool X11WindowTarget::query_size(uint32_t* width, uint32_t* height) {
@@ -172,6 +263,7 @@ bool X11WindowTarget::prepare() {
 
 void X11WindowTarget::present(const uint8_t* rgba, uint32_t width, uint32_t height) {
   if (!prepare()) return;
+  wait_presented();  // frames keep their order on screen
   // GL rows run bottom to top, X rows top to bottom; pixels become 32-bit words in the
   // visual's channel layout.
   converted_.resize(size_t{width} * height);

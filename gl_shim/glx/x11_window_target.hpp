@@ -5,10 +5,16 @@
 // program. XCB returns errors per request, so a window that vanished is just a failed present.
 #pragma once
 
+#include <array>
 #include <atomic>
+#include <condition_variable>
 #include <cstdint>
+#include <deque>
+#include <functional>
 #include <memory>
+#include <mutex>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "gl_shim/frame/frame_output.hpp"
@@ -35,6 +41,8 @@ class X11WindowTarget final : public WindowTarget {
   void present(const uint8_t* rgba, uint32_t width, uint32_t height) override;
   const rt::HostImage* host_image(uint32_t width, uint32_t height) override;
   void present_host_image() override;
+  void present_host_image_later(std::function<void()> ready) override;
+  void wait_presented() override;
 
  private:
   X11WindowTarget(xcb_connection_t* connection, uint32_t window, rec::DrawableConfig config);
@@ -54,12 +62,33 @@ class X11WindowTarget final : public WindowTarget {
   bool lsb_first_ = true;  // server image byte order
   std::vector<uint32_t> converted_;
   // MIT-SHM: the frame is written straight into memory the X server reads (as Mesa's software
-  // GLX presents). Unavailable over a network connection or with another pixel layout.
+  // GLX presents). Unavailable over a network connection or with another pixel layout. Two
+  // segments: the renderer writes the next frame into one while the other is being shown.
+  struct ShmSegment {
+    uint32_t id = 0;  // xcb_shm_seg_t, 0 when none is attached
+    rt::HostImage image;
+  };
   bool shm_checked_ = false, shm_available_ = false;
-  uint32_t shm_segment_ = 0;  // xcb_shm_seg_t, 0 when none is attached
-  rt::HostImage shm_image_;
+  std::array<ShmSegment, 2> shm_;
+  size_t shm_next_ = 0;  // the segment host_image() hands out
+  bool attach_shm(ShmSegment& segment, uint32_t width, uint32_t height);
   void release_shm();
+  void put_shm(const ShmSegment& segment);
   void round_trip();
+
+  // The presenting thread (present_host_image_later): it waits for each frame, then shows it.
+  // shm_busy_[i]: segment i holds a frame not yet shown (host_image() waits for it).
+  struct PresentJob {
+    size_t segment;
+    std::function<void()> ready;
+  };
+  std::mutex present_mutex_;
+  std::condition_variable present_changed_;
+  std::deque<PresentJob> present_jobs_;
+  std::array<bool, 2> shm_busy_{};
+  bool presenter_stop_ = false;
+  std::unique_ptr<std::thread> presenter_;
+  void run_presenter();
 };
 
 }  // namespace glpt

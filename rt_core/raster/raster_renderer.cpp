@@ -456,7 +456,10 @@ void RasterRenderer::execute(const rec::FrameRecord& record, DrawableBuffers& bu
   uploads_ticket_ = ticket;
   // The host reads query results only where a draw counted into a query (the shim always asks
   // for them), and the frame's pixels only where it copies them itself.
-  if ((queries && queries_.counted_any()) || (end && (end->front_rgba || end->present_to)))
+  // A frame presented later (FrameEnd::present_later) reaches the window's imported memory
+  // inside the submission: the caller waits for it before showing it.
+  if ((queries && queries_.counted_any()) ||
+      (end && (end->front_rgba || (end->present_to && !(end->present_later && present_)))))
     device_->wait(ticket);
   if (queries) queries_.collect(*queries);
   const size_t pixel_count = size_t{buffers_->config.width} * buffers_->config.height;
@@ -470,15 +473,19 @@ void RasterRenderer::execute(const rec::FrameRecord& record, DrawableBuffers& bu
       end->present_to->height == buffers_->config.height) {
     const size_t row = size_t{buffers_->config.width} * 4;
     const auto* src = static_cast<const uint8_t*>(readback_.mapped());
-    for (uint32_t y = 0; y < buffers_->config.height; ++y)
-      std::memcpy(end->present_to->pixels + (buffers_->config.height - 1 - y) * row, src + y * row,
-                  row);
+    for (uint32_t y = 0; y < buffers_->config.height; ++y) {
+      const uint32_t to = end->present_bottom_up ? y : buffers_->config.height - 1 - y;
+      std::memcpy(end->present_to->pixels + to * row, src + y * row, row);
+    }
   }
 }
 
 void RasterRenderer::end_frame(FrameStats& stats) {
-  // The frame's submissions have completed (the caller waited): their device time is known, and
-  // nothing pending samples a texture or reads geometry released here.
+  // The frame's submissions have completed (the caller waited), or, for a frame presented
+  // later, those of the execute before the previous one (execute waits for them before reusing
+  // their upload set). What is released here was last used before that: geometry after
+  // ResidentGeometry::kKeepExecutes executes, textures after TextureCache's frames (the previous
+  // execute's are kept).
   for (VulkanDevice::Ticket ticket : unreported_)
     stats.raster_ms += device_->take_device_ms(ticket);
   unreported_.clear();
@@ -493,7 +500,10 @@ GpuBuffer* RasterRenderer::imported_host_image(const HostImage& image) {
   if (it == imported_.end()) {
     // A share group's renderer presents to each of its contexts' windows: a few are kept.
     constexpr size_t kMaxImported = 4;
-    if (imported_.size() >= kMaxImported) imported_.erase(imported_.begin());
+    if (imported_.size() >= kMaxImported) {
+      device_->wait_all();  // a frame presented later may still copy into the oldest
+      imported_.erase(imported_.begin());
+    }
     const VkDeviceSize alignment = device_->host_pointer_alignment();
     const size_t bytes =
         (size_t{image.width} * image.height * 4 + alignment - 1) & ~(alignment - 1);
@@ -1054,7 +1064,15 @@ void RasterRenderer::record_frame_end(VkCommandBuffer cmd, const FrameEnd& end) 
     vkCmdCopyImageToBuffer(cmd, buffers_->front.handle(), VK_IMAGE_LAYOUT_GENERAL,
                            readback_.handle(), 1, &copy);
   }
-  if (to_window && present_) {
+  if (to_window && present_ && end.present_bottom_up) {
+    // Straight into the window's memory as one region, rows bottom to top: the caller flips.
+    wait_for_previous();
+    VkBufferImageCopy copy{};
+    copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    copy.imageExtent = {buffers_->config.width, buffers_->config.height, 1};
+    vkCmdCopyImageToBuffer(cmd, buffers_->front.handle(), VK_IMAGE_LAYOUT_GENERAL,
+                           present_->handle(), 1, &copy);
+  } else if (to_window && present_) {
     // Straight into the window's memory, one region per row: X rows run top to bottom.
     wait_for_previous();
     std::vector<VkBufferImageCopy> rows(buffers_->config.height);

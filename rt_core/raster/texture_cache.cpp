@@ -222,7 +222,9 @@ void TextureCache::evict_unused(uint64_t frame) {
   if (bytes <= kMemoryBudgetBytes) return;
   std::vector<std::pair<uint64_t, uint64_t>> by_age;  // (last used, content version)
   for (const auto& [version, entry] : entries_)
-    if (entry.last_used < frame) by_age.emplace_back(entry.last_used, version);
+    // Not those of this execute or the one before: a frame presented later may still sample
+    // the previous execute's (FrameEnd::present_later).
+    if (entry.last_used + 1 < frame) by_age.emplace_back(entry.last_used, version);
   std::sort(by_age.begin(), by_age.end());
   for (const auto& [last_used, version] : by_age) {
     if (bytes <= kMemoryBudgetBytes) break;

@@ -35,7 +35,8 @@ class TextureCache {
   VkImageView dummy_view(uint32_t kind) const { return dummies_[kind].view(); }
   VkSampler dummy_sampler() const { return dummy_sampler_.get(); }
   // Drops the images unused for many frames, then, while the images hold more than
-  // kMemoryBudgetBytes, the least recently used ones that `frame` did not use (a program that
+  // kMemoryBudgetBytes, the least recently used ones that neither `frame` nor the execute before
+  // it used (a frame presented later may still be drawing with those; a program that
   // makes a new texture at every frame or draw would otherwise fill the device's memory).
   void evict_unused(uint64_t frame);
   // Bytes of the texels of the cached images.

@@ -604,6 +604,7 @@ std::unique_ptr<VulkanDevice> VulkanDevice::create(const DeviceOptions& options)
   auto vulkan12 = make_info<VkPhysicalDeviceVulkan12Features>(
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES, &vulkan13);
   vulkan12.bufferDeviceAddress = VK_TRUE;
+  vulkan12.timelineSemaphore = VK_TRUE;  // core in 1.2, required: tickets are its values
   const bool ordered_reads = chosen.ordered_framebuffer_reads && !options.hide_framebuffer_reads;
   auto order = make_info<VkPhysicalDeviceRasterizationOrderAttachmentAccessFeaturesEXT>(
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RASTERIZATION_ORDER_ATTACHMENT_ACCESS_FEATURES_EXT,
@@ -728,6 +729,17 @@ std::unique_ptr<VulkanDevice> VulkanDevice::create(const DeviceOptions& options)
     GLPT_VK_CHECK(vkCreateFence(device, &fence_info, nullptr, &fence));
     slot.fence = vk::Fence(fence, {device});
   }
+  // Signalled with each ticket: a thread waits for a ticket without holding the submission lock
+  // (a fence is reset when its slot completes, so only the lock holder may wait on one).
+  auto timeline_type =
+      make_info<VkSemaphoreTypeCreateInfo>(VK_STRUCTURE_TYPE_SEMAPHORE_TYPE_CREATE_INFO);
+  timeline_type.semaphoreType = VK_SEMAPHORE_TYPE_TIMELINE;
+  timeline_type.initialValue = 0;
+  auto semaphore_info =
+      make_info<VkSemaphoreCreateInfo>(VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO, &timeline_type);
+  VkSemaphore timeline = VK_NULL_HANDLE;
+  GLPT_VK_CHECK(vkCreateSemaphore(device, &semaphore_info, nullptr, &timeline));
+  self->timeline_ = vk::Semaphore(timeline, {device});
 
   uint32_t family_count = 0;
   vkGetPhysicalDeviceQueueFamilyProperties(self->physical_device_, &family_count, nullptr);
@@ -841,9 +853,16 @@ VulkanDevice::Ticket VulkanDevice::submit(const std::function<void(VkCommandBuff
                         first_query + 1);
   GLPT_VK_CHECK(vkEndCommandBuffer(cmd));
 
-  auto submit_info = make_info<VkSubmitInfo>(VK_STRUCTURE_TYPE_SUBMIT_INFO);
+  auto timeline_info =
+      make_info<VkTimelineSemaphoreSubmitInfo>(VK_STRUCTURE_TYPE_TIMELINE_SEMAPHORE_SUBMIT_INFO);
+  timeline_info.signalSemaphoreValueCount = 1;
+  timeline_info.pSignalSemaphoreValues = &ticket;
+  auto submit_info = make_info<VkSubmitInfo>(VK_STRUCTURE_TYPE_SUBMIT_INFO, &timeline_info);
   submit_info.commandBufferCount = 1;
   submit_info.pCommandBuffers = &cmd;
+  const VkSemaphore timeline = timeline_.get();
+  submit_info.signalSemaphoreCount = 1;
+  submit_info.pSignalSemaphores = &timeline;
   GLPT_VK_CHECK(vkQueueSubmit(queue_, 1, &submit_info, slot.fence.get()));
   slot.ticket = ticket;
   slot.submitted_at_ms = now_ms();
@@ -884,10 +903,23 @@ void VulkanDevice::complete_locked(SubmissionSlot& slot) {
 }
 
 void VulkanDevice::wait(Ticket ticket) {
+  {
+    std::lock_guard lock(submit_mutex_);
+    ticket = std::min(ticket, last_ticket_);
+    if (ticket <= completed_ticket_) return;
+    ++host_waits_;
+  }
+  // Blocks without the lock: other threads submit meanwhile (a presenting thread waits for a
+  // frame while the program's thread records the next).
+  auto wait_info = make_info<VkSemaphoreWaitInfo>(VK_STRUCTURE_TYPE_SEMAPHORE_WAIT_INFO);
+  const VkSemaphore timeline = timeline_.get();
+  wait_info.semaphoreCount = 1;
+  wait_info.pSemaphores = &timeline;
+  wait_info.pValues = &ticket;
+  GLPT_VK_CHECK(vkWaitSemaphores(handle(), &wait_info, UINT64_MAX));
   std::lock_guard lock(submit_mutex_);
-  ticket = std::min(ticket, last_ticket_);
-  if (ticket > completed_ticket_) ++host_waits_;
-  // In ticket order: a fence covers its own submission only.
+  // In ticket order: a fence covers its own submission only. Their submissions have finished,
+  // so these waits end at once.
   for (Ticket t = completed_ticket_ + 1; t <= ticket; ++t)
     complete_locked(slots_[t % kSubmissionSlots]);
 }

@@ -147,12 +147,12 @@ class VulkanDevice {
   // Submissions: tickets in submission order (0: none). `submit` records commands with `record`
   // into a command buffer of its own and submits them without waiting, so the passes of one
   // frame follow each other on the device while the host prepares the next; `wait` blocks until
-  // a ticket and every earlier one have completed. Each submission starts with a full memory
-  // barrier, so earlier submissions' work and host writes made before it are visible, and ends
-  // with one that makes its results visible to the host once waited. A caller that writes host
-  // memory a pending submission reads, or reads what it writes, waits for it first. Thread-safe:
-  // contexts current on different threads share the device, and submissions are serialized (the
-  // queue is one).
+  // a ticket and every earlier one have completed (it holds no lock while it blocks). Each
+  // submission starts with a full memory barrier, so earlier submissions' work and host writes made
+  // before it are visible, and ends with one that makes its results visible to the host once
+  // waited. A caller that writes host memory a pending submission reads, or reads what it writes,
+  // waits for it first. Thread-safe: contexts current on different threads share the device, and
+  // submissions are serialized (the queue is one).
   using Ticket = uint64_t;
   Ticket submit(const std::function<void(VkCommandBuffer)>& record);
   void wait(Ticket ticket);
@@ -204,6 +204,7 @@ class VulkanDevice {
     double submitted_at_ms = 0;
   };
   std::array<SubmissionSlot, kSubmissionSlots> slots_;
+  vk::Semaphore timeline_;    // timeline semaphore: value t once ticket t has completed
   vk::QueryPool timestamps_;  // two per slot (start, end); null where the queue has none
   double timestamp_period_ns_ = 0;
   uint64_t timestamp_mask_ = 0;

@@ -29,7 +29,7 @@ using ObjectKinds =
     std::tuple<VkInstance, VkDevice, VkDebugUtilsMessengerEXT, VkAccelerationStructureKHR, VkBuffer,
                VkDeviceMemory, VkCommandPool, VkDescriptorPool, VkDescriptorSetLayout, VkFence,
                VkPipeline, VkPipelineLayout, VkShaderModule, VkImage, VkImageView, VkSampler,
-               VkPipelineCache, VkQueryPool, VkRenderPass, VkFramebuffer>;
+               VkPipelineCache, VkQueryPool, VkRenderPass, VkFramebuffer, VkSemaphore>;
 template <typename Handle, std::size_t index = 0>
 constexpr std::size_t kind_index() {
   if constexpr (index == std::tuple_size_v<ObjectKinds>)
@@ -59,7 +59,8 @@ inline constexpr std::array<const char*, std::tuple_size_v<ObjectKinds>> kObject
     "pipeline_cache",
     "query_pool",
     "render_pass",
-    "framebuffer"};
+    "framebuffer",
+    "semaphore"};
 inline std::array<std::atomic<int64_t>, kObjectKindNames.size()>& live_object_counts_by_kind() {
   static std::array<std::atomic<int64_t>, kObjectKindNames.size()> counts{};
   return counts;
@@ -179,5 +180,6 @@ using PipelineCache = DeviceChild<VkPipelineCache, &vkDestroyPipelineCache>;
 using QueryPool = DeviceChild<VkQueryPool, &vkDestroyQueryPool>;
 using RenderPass = DeviceChild<VkRenderPass, &vkDestroyRenderPass>;
 using Framebuffer = DeviceChild<VkFramebuffer, &vkDestroyFramebuffer>;
+using Semaphore = DeviceChild<VkSemaphore, &vkDestroySemaphore>;
 
 }  // namespace glpt::rt::vk

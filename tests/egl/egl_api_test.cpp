@@ -470,7 +470,8 @@ TEST_F(Egl, WindowSurfaceFrameReachesReadPixels) {
   EXPECT_EQ(right[2], 255);
   EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
   EXPECT_TRUE(eglSwapBuffers(egl_, surface));
-  // The swapped frame is in the window.
+  // The swapped frame is in the window once native rendering may follow (eglWaitClient).
+  EXPECT_TRUE(eglWaitClient());
   XImage* image = XGetImage(dpy_, win, 0, 0, 64, 48, AllPlanes, ZPixmap);
   ASSERT_NE(image, nullptr);
   const unsigned long left_pixel = XGetPixel(image, 10, 24), right_pixel = XGetPixel(image, 50, 24);
@@ -578,6 +579,7 @@ TEST_F(Egl, ForkedChildExitingLeavesTheParentPresenting) {
   glClearColor(0, 1, 0, 1);
   glClear(GL_COLOR_BUFFER_BIT);
   EXPECT_TRUE(eglSwapBuffers(egl_, surface));
+  EXPECT_TRUE(eglWaitClient());  // the frame on screen before it is read
   XImage* image = XGetImage(dpy_, win, 0, 0, 64, 48, AllPlanes, ZPixmap);
   ASSERT_NE(image, nullptr);
   const unsigned long pixel = XGetPixel(image, 10, 24);

@@ -68,6 +68,8 @@ bool Renderer::write_pixels(DrawableBuffers&, const rec::DrawableConfig&, const 
   std::abort();
 }
 void Renderer::start_independent_frame(uint64_t, uint32_t) { std::abort(); }
+uint64_t Renderer::frame_ticket() const { std::abort(); }
+void Renderer::wait_for_frame(uint64_t) const { std::abort(); }
 bool process_exiting() { return false; }
 
 }  // namespace rt

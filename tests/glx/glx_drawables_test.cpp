@@ -1,5 +1,6 @@
 // GLX drawables against glpt's libGL.so.1 on Xvfb: single-buffered windows shown by glFlush and
-// glFinish (read back from the X server with XGetImage), drawables without depth, resize between
+// glFinish, swapped frames once glXWaitGL returns (read back from the X server with XGetImage),
+// a swap shown at once with GLPT_PRESENT=sync, drawables without depth, resize between
 // frames, pixmaps, pbuffers, swap intervals, glXCopyContext, several contexts, and the errors GLX
 // names for bad input (through the X error handler, as Mesa reports them).
 
@@ -108,6 +109,12 @@ class GlxDrawables : public ::testing::Test {
     if (c) contexts_.push_back(c);
     return c;
   }
+  // A swap returns before the frame is on screen (as GLX allows; GLPT_PRESENT=later):
+  // glXWaitGL makes it reach the window before the X requests that follow.
+  void swap_and_wait(GLXDrawable d) {
+    glXSwapBuffers(dpy_, d);
+    glXWaitGL();
+  }
   // The pixel (x, y) of an X drawable (rows top to bottom) as 0xRRGGBB.
   uint32_t x_pixel(Drawable d, int x, int y) {
     XImage* image = XGetImage(dpy_, d, x, y, 1, 1, AllPlanes, ZPixmap);
@@ -187,9 +194,51 @@ TEST_F(GlxDrawables, DoubleBufferedDrawsToTheBackAndSwapShowsIt) {
   glGetIntegerv(GL_DRAW_BUFFER, &draw_buffer);
   EXPECT_EQ(draw_buffer, GL_BACK);
   draw_red_left_half_on_blue();
-  glXSwapBuffers(dpy_, win);
+  swap_and_wait(win);
   EXPECT_EQ(x_pixel(win, 2, 2), 0xFF0000u);
   EXPECT_EQ(x_pixel(win, 30, 2), 0x0000FFu);
+}
+
+// Frames swapped one after another without waiting are shown in order: after glXWaitGL the
+// window holds the last (the presenting thread alternates between two shared-memory segments).
+TEST_F(GlxDrawables, FramesSwappedWithoutWaitingAreShownInOrder) {
+  Window win = 0;
+  GLXContext ctx = nullptr;
+  ASSERT_TRUE(double_buffered_window(24, 24, &win, &ctx));
+  ASSERT_TRUE(glXMakeCurrent(dpy_, win, ctx));
+  for (int frame = 0; frame < 25; ++frame) {
+    glClearColor(frame % 3 == 0 ? 1.0f : 0.0f, frame % 3 == 1 ? 1.0f : 0.0f,
+                 frame % 3 == 2 ? 1.0f : 0.0f, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glXSwapBuffers(dpy_, win);
+  }
+  glXWaitGL();
+  EXPECT_EQ(x_pixel(win, 3, 3), 0xFF0000u);  // frame 24: 24 % 3 == 0
+  EXPECT_EQ(x_pixel(win, 20, 20), 0xFF0000u);
+  // glFinish waits for it as well.
+  glClearColor(0, 0, 1, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glXSwapBuffers(dpy_, win);
+  glFinish();
+  EXPECT_EQ(x_pixel(win, 3, 3), 0x0000FFu);
+  EXPECT_TRUE(g_errors.empty());
+}
+
+// GLPT_PRESENT=sync: the swap returns once the frame is on screen, as Mesa's software GLX.
+TEST_F(GlxDrawables, WithSyncPresentingASwapShowsTheFrameAtOnce) {
+  setenv("GLPT_PRESENT", "sync", 1);  // read when the context first renders
+  Window win = 0;
+  GLXContext ctx = nullptr;
+  const bool made = double_buffered_window(24, 24, &win, &ctx) && glXMakeCurrent(dpy_, win, ctx);
+  if (made) {
+    glClearColor(0, 1, 0, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glXSwapBuffers(dpy_, win);
+  }
+  const uint32_t shown = made ? x_pixel(win, 3, 3) : 0;
+  unsetenv("GLPT_PRESENT");
+  ASSERT_TRUE(made);
+  EXPECT_EQ(shown, 0x00FF00u);
 }
 
 // A config without depth or stencil buffers: GL_*_BITS say so and the depth test always passes
@@ -242,7 +291,7 @@ TEST_F(GlxDrawables, AResizedWindowHasItsNewSizeNextFrame) {
   glViewport(0, 0, 100, 80);
   glClearColor(0, 1, 0, 1);
   glClear(GL_COLOR_BUFFER_BIT);
-  glXSwapBuffers(dpy_, win);
+  swap_and_wait(win);
   EXPECT_EQ(x_pixel(win, 95, 75), 0x00FF00u);  // outside the old 32x32
   EXPECT_EQ(x_pixel(win, 2, 2), 0x00FF00u);
 }
@@ -260,7 +309,7 @@ TEST_F(GlxDrawables, AResizedWindowHasItsNewSizeNextFrameWithoutGlViewport) {
   unsigned char pixel[4] = {};
   glReadPixels(95, 75, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, pixel);  // outside the old 32x32
   EXPECT_EQ(pixel[2], 255);
-  glXSwapBuffers(dpy_, win);
+  swap_and_wait(win);
   EXPECT_EQ(x_pixel(win, 95, 75), 0x0000FFu);
   // And a second resize within one frame is seen at its swap.
   XResizeWindow(dpy_, win, 60, 50);
@@ -269,7 +318,7 @@ TEST_F(GlxDrawables, AResizedWindowHasItsNewSizeNextFrameWithoutGlViewport) {
   glClear(GL_COLOR_BUFFER_BIT);
   glXSwapBuffers(dpy_, win);
   glClear(GL_COLOR_BUFFER_BIT);
-  glXSwapBuffers(dpy_, win);
+  swap_and_wait(win);
   EXPECT_EQ(x_pixel(win, 55, 45), 0x00FF00u);
 }
 
@@ -404,7 +453,7 @@ TEST_F(GlxDrawables, TwoContextsTwoWindowsShareLists) {
   glCallList(list);
   glXSwapBuffers(dpy_, b);
   ASSERT_TRUE(glXMakeCurrent(dpy_, a, ca));
-  glXSwapBuffers(dpy_, a);
+  swap_and_wait(a);
   EXPECT_EQ(x_pixel(a, 4, 4), 0xFF0000u);
   EXPECT_EQ(x_pixel(b, 4, 4), 0x00FF00u);
 }
@@ -489,7 +538,7 @@ TEST_F(GlxDrawables, SeveralContextsDrawIntoOneWindow) {
     EXPECT_EQ(rgba[1], colors[i][1] * 255) << "context " << i;
     EXPECT_EQ(rgba[2], colors[i][2] * 255) << "context " << i;
   }
-  glXSwapBuffers(dpy_, win);
+  swap_and_wait(win);
   EXPECT_EQ(x_pixel(win, 20, 4), 0x0000FFu);
   EXPECT_TRUE(g_errors.empty());
 }
@@ -597,7 +646,7 @@ TEST_F(GlxDrawables, ContextsAreCurrentOnOneThreadAtATime) {
   glXDestroyContext(dpy_, ctx);  // current here: deferred
   glClearColor(0, 0, 1, 1);
   glClear(GL_COLOR_BUFFER_BIT);
-  glXSwapBuffers(dpy_, win);
+  swap_and_wait(win);
   EXPECT_EQ(x_pixel(win, 4, 4), 0x0000FFu);
   EXPECT_EQ(glXGetCurrentContext(), ctx);
   ASSERT_TRUE(glXMakeCurrent(dpy_, None, nullptr));  // released: now it is gone

@@ -25,7 +25,7 @@ std::shared_ptr<rec::TextureObjectSnapshot> texture(uint64_t version, uint32_t s
   return t;
 }
 
-TEST(TextureCacheTest, KeepsTheImagesOfOneFrameAndDropsOldOnesBeyondTheBudget) {
+TEST(TextureCacheTest, KeepsTheImagesOfTwoFramesAndDropsOldOnesBeyondTheBudget) {
   std::unique_ptr<VulkanDevice> device;
   try {
     device = VulkanDevice::create({});
@@ -37,6 +37,7 @@ TEST(TextureCacheTest, KeepsTheImagesOfOneFrameAndDropsOldOnesBeyondTheBudget) {
   constexpr size_t kBytes = size_t{kSide} * kSide * 4;
   const size_t per_frame = TextureCache::kMemoryBudgetBytes / kBytes / 2 + 1;  // > half budget
   uint64_t version = 1;
+  std::vector<std::shared_ptr<rec::TextureObjectSnapshot>> previous, before_previous;
   for (uint64_t frame = 1; frame <= 4; ++frame) {
     std::vector<std::shared_ptr<rec::TextureObjectSnapshot>> owned;
     std::vector<const rec::TextureObjectSnapshot*> textures;
@@ -46,11 +47,18 @@ TEST(TextureCacheTest, KeepsTheImagesOfOneFrameAndDropsOldOnesBeyondTheBudget) {
     }
     cache.prepare(textures, frame);
     cache.evict_unused(frame);
-    // Every texture of this frame keeps its image, even past the budget ...
+    // Every texture of this frame keeps its image, even past the budget, and so does every
+    // texture of the frame before (a frame presented later may still sample them) ...
     for (const auto* t : textures) EXPECT_NE(cache.view(*t), VK_NULL_HANDLE) << frame;
+    for (const auto& t : previous) EXPECT_NE(cache.view(*t), VK_NULL_HANDLE) << frame;
     // ... and the older frames' images beyond the budget are gone.
-    EXPECT_LE(cache.image_bytes(), std::max(TextureCache::kMemoryBudgetBytes, per_frame * kBytes));
-    EXPECT_GE(cache.image_bytes(), per_frame * kBytes);
+    for (const auto& t : before_previous) EXPECT_EQ(cache.view(*t), VK_NULL_HANDLE) << frame;
+    const size_t kept_frames = frame == 1 ? 1 : 2;
+    EXPECT_LE(cache.image_bytes(),
+              std::max(TextureCache::kMemoryBudgetBytes, kept_frames * per_frame * kBytes));
+    EXPECT_GE(cache.image_bytes(), kept_frames * per_frame * kBytes);
+    before_previous = std::move(previous);
+    previous = std::move(owned);
   }
   // A texture prepared again keeps its image (no re-upload) and counts as used.
   std::vector<std::shared_ptr<rec::TextureObjectSnapshot>> last{texture(version - 1, kSide)};
