@@ -19,6 +19,11 @@ struct DrawableBuffers {
   std::shared_ptr<VulkanDevice> device;
   rec::DrawableConfig config{0, 0};
   GpuImage front, back, depth_stencil;
+  // A swap exchanges the colour images instead of copying the back into the front (GL keeps the
+  // back buffer's contents across a swap, as Mesa's software swap does): the back buffer's pixels
+  // are then the front's until the raster renderer copies them over, which it does only when the
+  // back is used before a clear replaces it (RasterRenderer::restore_back).
+  bool back_is_front = false;
   AccumulationBuffer accum;
 };
 

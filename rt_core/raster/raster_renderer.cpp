@@ -95,6 +95,7 @@ void RasterRenderer::ensure_buffers(DrawableBuffers& buffers, const rec::Drawabl
   buffers.front = GpuImage();
   buffers.back = GpuImage();
   buffers.depth_stencil = GpuImage();
+  buffers.back_is_front = false;
   if (drawable.width == 0 || drawable.height == 0) return;
   GpuImageInfo color;
   color.format = kColorFormat;
@@ -397,10 +398,19 @@ void RasterRenderer::execute(const rec::FrameRecord& record, DrawableBuffers& bu
   // colour (the accumulation buffer is updated on the CPU, as Mesa does); the frame end goes with
   // the last. Nothing waits for the device unless the host reads what it produced (the
   // accumulation buffer, query results, read-back pixels): the renderer waits at the frame's end.
+  // After a swap exchanged the colour images, the back takes the front's pixels first unless
+  // the record starts by clearing all of it (most frames: glClear, then draws).
+  const bool restore_back_first =
+      buffers_->back_is_front && !begins_with_whole_back_clear(record, *commands);
+  buffers_->back_is_front = false;
   size_t position = 0;
   VulkanDevice::Ticket ticket = 0;
   do {
     ticket = device_->submit([&](VkCommandBuffer cmd) {
+      if (position == 0 && restore_back_first) {
+        buffers_->back_is_front = true;
+        record_restore_back(cmd);
+      }
       r.cmd = cmd;
       r.rendering = false;
       r.bound_pipeline = VK_NULL_HANDLE;
@@ -1045,14 +1055,12 @@ void RasterRenderer::record_frame_end(VkCommandBuffer cmd, const FrameEnd& end) 
                          VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0, 1, &barrier, 0, nullptr, 0,
                          nullptr);
   };
-  if (end.swap && buffers_->config.double_buffered) {
-    wait_for_previous();
-    VkImageCopy copy{};
-    copy.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-    copy.dstSubresource = copy.srcSubresource;
-    copy.extent = {buffers_->config.width, buffers_->config.height, 1};
-    vkCmdCopyImage(cmd, buffers_->back.handle(), VK_IMAGE_LAYOUT_GENERAL, buffers_->front.handle(),
-                   VK_IMAGE_LAYOUT_GENERAL, 1, &copy);
+  // The swap: the back becomes the front, and the old front the back, whose pixels are the
+  // front's until restored (DrawableBuffers::back_is_front). A back that already is the front
+  // (nothing drew into it since the last swap) leaves the images as they are.
+  if (end.swap && buffers_->config.double_buffered && !buffers_->back_is_front) {
+    std::swap(buffers_->front, buffers_->back);
+    buffers_->back_is_front = true;
   }
   const bool to_window = end.present_to && end.present_to->width == buffers_->config.width &&
                          end.present_to->height == buffers_->config.height;
@@ -1129,6 +1137,7 @@ bool RasterRenderer::read_current_color(uint32_t buffer, int32_t x, int32_t y, u
                                         uint32_t height, std::vector<uint8_t>& rgba) {
   const bool front = buffer == GL_FRONT || buffer == GL_FRONT_LEFT || buffer == GL_LEFT ||
                      !buffers_->config.double_buffered;
+  if (!front) restore_back();
   if (!read_image(front ? buffers_->front : buffers_->back, VK_IMAGE_ASPECT_COLOR_BIT, 4, x, y,
                   width, height, rgba))
     return false;
@@ -1160,8 +1169,9 @@ bool RasterRenderer::read_stencil(DrawableBuffers& buffers, int32_t x, int32_t y
 }
 
 void RasterRenderer::write_color(bool front, const std::vector<uint8_t>& rgba) {
-  const GpuImage& image =
-      front || !buffers_->config.double_buffered ? buffers_->front : buffers_->back;
+  const bool to_front = front || !buffers_->config.double_buffered;
+  if (!to_front) restore_back();  // (a whole image: the copy is cheap and keeps this simple)
+  const GpuImage& image = to_front ? buffers_->front : buffers_->back;
   if (!image || rgba.size() != size_t{buffers_->config.width} * buffers_->config.height * 4) return;
   write_image(image, {{0, 0}, {buffers_->config.width, buffers_->config.height}}, rgba);
 }
@@ -1201,8 +1211,10 @@ void RasterRenderer::write_pixels(DrawableBuffers& buffers, const rec::DrawableC
     const ColorTargets targets = resolve_draw_buffer(pixels.draw_buffer, config.double_buffered);
     if (targets == ColorTargets::kFront || targets == ColorTargets::kFrontAndBack)
       write_image(buffers_->front, rect, pixels.rgba);
-    if (targets == ColorTargets::kBack || targets == ColorTargets::kFrontAndBack)
+    if (targets == ColorTargets::kBack || targets == ColorTargets::kFrontAndBack) {
+      restore_back();
       write_image(buffers_->back, rect, pixels.rgba);
+    }
   }
   if (!buffers_->depth_stencil) return;
   if (pixels.depth.size() == n) {
@@ -1249,15 +1261,62 @@ void RasterRenderer::write_image(const GpuImage& image, const VkRect2D& rect,
 
 void RasterRenderer::swap_buffers(DrawableBuffers& buffers) {
   buffers_ = &buffers;
-  if (!buffers_->front || !buffers_->config.double_buffered) return;
-  device_->submit_and_wait([&](VkCommandBuffer cmd) {
-    VkImageCopy copy{};
-    copy.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-    copy.dstSubresource = copy.srcSubresource;
-    copy.extent = {buffers_->config.width, buffers_->config.height, 1};
-    vkCmdCopyImage(cmd, buffers_->back.handle(), VK_IMAGE_LAYOUT_GENERAL, buffers_->front.handle(),
-                   VK_IMAGE_LAYOUT_GENERAL, 1, &copy);
-  });
+  if (!buffers_->front || !buffers_->config.double_buffered || buffers_->back_is_front) return;
+  // (Submissions still pending use the images they recorded; later ones follow in queue order.)
+  std::swap(buffers_->front, buffers_->back);
+  buffers_->back_is_front = true;
+}
+
+void RasterRenderer::record_restore_back(VkCommandBuffer cmd) {
+  if (!buffers_->back_is_front) return;
+  buffers_->back_is_front = false;
+  auto barrier = make_info<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
+  barrier.srcAccessMask = VK_ACCESS_MEMORY_WRITE_BIT;
+  barrier.dstAccessMask = VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT;
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT,
+                       0, 1, &barrier, 0, nullptr, 0, nullptr);
+  VkImageCopy copy{};
+  copy.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  copy.dstSubresource = copy.srcSubresource;
+  copy.extent = {buffers_->config.width, buffers_->config.height, 1};
+  vkCmdCopyImage(cmd, buffers_->front.handle(), VK_IMAGE_LAYOUT_GENERAL, buffers_->back.handle(),
+                 VK_IMAGE_LAYOUT_GENERAL, 1, &copy);
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT,
+                       0, 1, &barrier, 0, nullptr, 0, nullptr);
+}
+
+void RasterRenderer::restore_back() {
+  if (!buffers_->back_is_front || !buffers_->back) return;
+  device_->submit_and_wait([&](VkCommandBuffer cmd) { record_restore_back(cmd); });
+}
+
+bool RasterRenderer::begins_with_whole_back_clear(const rec::FrameRecord& record,
+                                                  const std::vector<size_t>& commands) const {
+  for (size_t i : commands) {
+    const rec::Command& command = record.commands[i];
+    if (std::holds_alternative<rec::BeginQuery>(command) ||
+        std::holds_alternative<rec::EndQuery>(command))
+      continue;
+    const auto* clear = std::get_if<rec::Clear>(&command);
+    if (clear == nullptr) return false;  // a draw, read or pixel command: it may touch colour
+    const rec::FragmentOpsState& ops = record.states[clear->state].raster->ops;
+    const ColorTargets targets =
+        resolve_draw_buffer(ops.draw_buffer, buffers_->config.double_buffered);
+    const bool writes_color =
+        (clear->mask & GL_COLOR_BUFFER_BIT) &&
+        (ops.color_write[0] || ops.color_write[1] || ops.color_write[2] || ops.color_write[3]);
+    // A clear of depth or stencil only, or of the front only, leaves colour as it is: look on.
+    if (!writes_color || targets == ColorTargets::kNone || targets == ColorTargets::kFront)
+      continue;
+    if (targets != ColorTargets::kBack && targets != ColorTargets::kFrontAndBack) return false;
+    const VkRect2D rect = scissor_of(ops, buffers_->config);
+    const bool all_channels = ops.color_write[0] && ops.color_write[1] && ops.color_write[2] &&
+                              (ops.color_write[3] || !buffers_->config.has_alpha);
+    return all_channels && rect.offset.x == 0 && rect.offset.y == 0 &&
+           rect.extent.width == buffers_->config.width &&
+           rect.extent.height == buffers_->config.height;
+  }
+  return false;
 }
 
 }  // namespace glpt::rt

@@ -108,6 +108,14 @@ class RasterRenderer {
   void set_dynamic_state(Recording& r, const DynamicDrawState& d, const VkViewport& viewport,
                          const VkRect2D& scissor);
   void record_frame_end(VkCommandBuffer cmd, const FrameEnd& end);
+  // DrawableBuffers::back_is_front: records the copy of the front into the back (and clears the
+  // flag); restore_back() submits it now, before a read or partial write of the back.
+  void record_restore_back(VkCommandBuffer cmd);
+  void restore_back();
+  // Whether the first of `commands` (of `record`) that touches colour is a clear of every pixel
+  // and channel of the back buffer: what the back held before does not matter then.
+  bool begins_with_whole_back_clear(const rec::FrameRecord& record,
+                                    const std::vector<size_t>& commands) const;
   // read_color on the buffers of the call in progress (glAccum reads the read buffer).
   bool read_current_color(uint32_t buffer, int32_t x, int32_t y, uint32_t width, uint32_t height,
                           std::vector<uint8_t>& rgba);

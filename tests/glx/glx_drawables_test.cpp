@@ -224,6 +224,62 @@ TEST_F(GlxDrawables, FramesSwappedWithoutWaitingAreShownInOrder) {
   EXPECT_TRUE(g_errors.empty());
 }
 
+// A swap keeps the back buffer's contents (as Mesa's software swap does; glpt exchanges the
+// colour images and copies the front back only where a frame uses the back before clearing all of
+// it): a frame drawn without a clear, a partial (scissored) clear, reads of both buffers.
+TEST_F(GlxDrawables, TheBackBufferKeepsItsContentsAcrossSwaps) {
+  Window win = 0;
+  GLXContext ctx = nullptr;
+  ASSERT_TRUE(double_buffered_window(32, 32, &win, &ctx));
+  ASSERT_TRUE(glXMakeCurrent(dpy_, win, ctx));
+  glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
+  glOrtho(0, 32, 0, 32, -1, 1);
+  glMatrixMode(GL_MODELVIEW);
+  glLoadIdentity();
+  glClearColor(1, 0, 0, 1);  // frame 1: red
+  glClear(GL_COLOR_BUFFER_BIT);
+  glXSwapBuffers(dpy_, win);
+  glColor3f(0, 1, 0);  // frame 2: green left half over what the back holds
+  glRectf(0, 0, 16, 32);
+  swap_and_wait(win);
+  EXPECT_EQ(x_pixel(win, 4, 4), 0x00FF00u);
+  EXPECT_EQ(x_pixel(win, 28, 4), 0xFF0000u);
+  for (GLenum buffer : {GL_BACK, GL_FRONT}) {
+    glReadBuffer(buffer);
+    unsigned char left[4] = {}, right[4] = {};
+    glReadPixels(4, 4, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, left);
+    glReadPixels(28, 4, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, right);
+    EXPECT_EQ(left[1], 255) << buffer;
+    EXPECT_EQ(left[0], 0) << buffer;
+    EXPECT_EQ(right[0], 255) << buffer;
+  }
+  glReadBuffer(GL_BACK);
+  glEnable(GL_SCISSOR_TEST);  // frame 3: only the right half cleared, blue
+  glScissor(16, 0, 16, 32);
+  glClearColor(0, 0, 1, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glDisable(GL_SCISSOR_TEST);
+  swap_and_wait(win);
+  EXPECT_EQ(x_pixel(win, 4, 4), 0x00FF00u);
+  EXPECT_EQ(x_pixel(win, 28, 4), 0x0000FFu);
+  glXSwapBuffers(dpy_, win);  // frame 4: nothing drawn, the same image
+  glXSwapBuffers(dpy_, win);  // and again
+  glFinish();
+  EXPECT_EQ(x_pixel(win, 4, 4), 0x00FF00u);
+  EXPECT_EQ(x_pixel(win, 28, 4), 0x0000FFu);
+  glClearColor(1, 1, 1, 1);  // frame 5: a whole clear, then drawing into the front
+  glClear(GL_COLOR_BUFFER_BIT);
+  glXSwapBuffers(dpy_, win);
+  glDrawBuffer(GL_FRONT);
+  glColor3f(0, 0, 0);
+  glRectf(0, 0, 8, 8);
+  glFlush();
+  EXPECT_EQ(x_pixel(win, 2, 29), 0x000000u);  // X rows run top to bottom
+  EXPECT_EQ(x_pixel(win, 28, 4), 0xFFFFFFu);
+  EXPECT_TRUE(g_errors.empty());
+}
+
 // GLPT_PRESENT=sync: the swap returns once the frame is on screen, as Mesa's software GLX.
 TEST_F(GlxDrawables, WithSyncPresentingASwapShowsTheFrameAtOnce) {
   setenv("GLPT_PRESENT", "sync", 1);  // read when the context first renders
