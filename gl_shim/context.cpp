@@ -57,6 +57,10 @@ bool Context::list_executes_while_compiling() const {
 void set_current_context(Context* ctx) { t_current_context = ctx; }
 
 void flush_before_release(Context& ctx) {
+  // Frames the context swapped on the drawable it leaves are on screen before it draws
+  // elsewhere, as with Mesa's synchronous swap (a program reading its windows after switching
+  // contexts or windows sees them).
+  if (ctx.target != nullptr) ctx.target->wait_presented();
   if (ctx.framebuffers.entered) {  // the object's drawing to its textures, then the window's
     leave_framebuffer(ctx);
     flush_before_release(ctx);
@@ -78,12 +82,6 @@ void flush_before_release(Context& ctx) {
 
 void bind_target_and_make_current(Context& ctx, WindowTarget* target) {
   if (ctx.target != nullptr && ctx.target != target) flush_before_release(ctx);
-  // Frames swapped on the drawable the thread leaves are on screen before it draws elsewhere,
-  // as with Mesa's synchronous swap (a program reading its windows after switching sees them).
-  if (Context* previous = current_context();
-      previous != nullptr && previous->target != nullptr && previous->target != target)
-    previous->target->wait_presented();
-  if (ctx.target != nullptr && ctx.target != target) ctx.target->wait_presented();
   ctx.target = target;
   set_current_context(&ctx);
   if (target != nullptr) target->forget_size();  // (WindowTarget::known_size)

@@ -46,7 +46,7 @@ $SUDO apt-get update -q
 build_pkgs=(cmake ninja-build g++ clang pkg-config python3 clang-format
             dpkg-dev bash-completion  # cpack's dependency scan (dpkg-shlibdeps), the completion test
             khronos-api libvulkan-dev glslang-tools libglm-dev
-            libx11-dev libxcb1-dev libxcb-shm0-dev libpng-dev zlib1g-dev libgtest-dev
+            libx11-dev libx11-xcb-dev libxcb1-dev libxcb-shm0-dev libpng-dev zlib1g-dev libgtest-dev
             libsnappy-dev libbrotli-dev  # apitrace's trace containers (replay/trace)
             libglfw3-dev)                # glpt-replay --window
 # Running and testing: Xvfb, real programs (glxgears, xscreensaver's GL hacks, piglit's GL 1.x

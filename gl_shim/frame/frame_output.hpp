@@ -33,6 +33,9 @@ class WindowTarget {
   // every glReadPixels or glFinish: a query is a round trip to the X server.
   virtual bool known_size(uint32_t* width, uint32_t* height) { return query_size(width, height); }
   virtual void forget_size() {}
+  // The size the program's own connection reported just now (glXSwapBuffers asks there, after
+  // the program's requests): the frame ending uses it, and the next forget_size() keeps it.
+  virtual void assume_size(uint32_t /*width*/, uint32_t /*height*/) {}
   // `rgba`: width*height RGBA8, rows bottom to top (GL order).
   virtual void present(const uint8_t* rgba, uint32_t width, uint32_t height) = 0;
   // The buffers the drawable has (GLX visual / EGL config); the size is filled in by the caller.

@@ -6,6 +6,8 @@
 // Errors go through the program's Xlib error handler with the codes Mesa's libGL uses
 // (glx_display.hpp); functions with a return value also return NULL/False/None as Mesa does.
 #include <X11/Xatom.h>
+#include <X11/Xlib-xcb.h>
+#include <xcb/xcb.h>
 
 #include <algorithm>
 #include <climits>
@@ -606,12 +608,37 @@ GLPT_EXPORT Bool glXMakeCurrentReadSGI(Display* dpy, GLXDrawable draw, GLXDrawab
   return glXMakeContextCurrent(dpy, draw, read, ctx);
 }
 
+namespace {
+
+// The drawable's size asked on the program's connection (so after its requests); false if the
+// drawable is gone or not a drawable (the error is consumed here).
+bool size_after_program_requests(Display* dpy, GLXDrawable drawable, uint32_t* width,
+                                 uint32_t* height) {
+  xcb_connection_t* c = XGetXCBConnection(dpy);
+  xcb_generic_error_t* error = nullptr;
+  xcb_get_geometry_reply_t* g =
+      xcb_get_geometry_reply(c, xcb_get_geometry(c, static_cast<xcb_drawable_t>(drawable)), &error);
+  free(error);
+  if (g == nullptr) return false;
+  *width = g->width;
+  *height = g->height;
+  free(g);
+  return true;
+}
+
+}  // namespace
+
 GLPT_EXPORT void glXSwapBuffers(Display* dpy, GLXDrawable drawable) {
   glpt::glx::gl_work_entry([&] {
     if (dpy == nullptr) return;
-    // The program's X requests (a resize, its own drawing) are done before glpt's connection asks
-    // for the window's size and draws: Mesa's swap makes its requests on `dpy`, after them.
-    XSync(dpy, False);
+    // The program's X requests (a resize, its own drawing) are done before glpt's connection
+    // draws, and the frame has the window's size after them: Mesa's swap makes its requests on
+    // `dpy`, after the program's. One round trip there does both (the size asked through `dpy`'s
+    // XCB connection, whose errors come back here, not to the program's error handler).
+    uint32_t width = 0, height = 0;
+    const bool sized =
+        drawable != None && size_after_program_requests(dpy, drawable, &width, &height);
+    if (!sized) XSync(dpy, False);
     if (drawable == None) {
       glpt::glx::send_glx_error(dpy, glpt::glx::kGlxBadDrawable, drawable,
                                 glpt::glx::kXGlxSwapBuffers);
@@ -624,6 +651,7 @@ GLPT_EXPORT void glXSwapBuffers(Display* dpy, GLXDrawable drawable) {
     if (find_glx_drawable(DisplayState::of(dpy), drawable, &info) &&
         info.kind == DrawableKind::kPixmap)
       return;  // GLX 1.4 3.3.10: no effect on a pixmap
+    if (sized && ctx->gl.target != nullptr) ctx->gl.target->assume_size(width, height);
     // A single-buffered window has nothing to swap; what was drawn is flushed to it, as Mesa's
     // swap flushes the context.
     glpt::end_frame(ctx->gl, /*swap=*/current_target_double_buffered(ctx));

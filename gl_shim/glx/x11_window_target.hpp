@@ -36,7 +36,13 @@ class X11WindowTarget final : public WindowTarget {
   uint32_t window() const { return window_; }
   bool query_size(uint32_t* width, uint32_t* height) override;
   bool known_size(uint32_t* width, uint32_t* height) override;
-  void forget_size() override { known_size_ = kSizeUnknown; }
+  void forget_size() override {
+    if (!size_assumed_.exchange(false)) known_size_ = kSizeUnknown;
+  }
+  void assume_size(uint32_t width, uint32_t height) override {
+    known_size_ = uint64_t{width} << 32 | height;
+    size_assumed_ = true;
+  }
   rec::DrawableConfig config() const override { return config_; }
   void present(const uint8_t* rgba, uint32_t width, uint32_t height) override;
   const rt::HostImage* host_image(uint32_t width, uint32_t height) override;
@@ -57,6 +63,7 @@ class X11WindowTarget final : public WindowTarget {
   // known_size(): width << 32 | height, or kSizeUnknown (any thread may ask or forget).
   static constexpr uint64_t kSizeUnknown = ~uint64_t{0};
   std::atomic<uint64_t> known_size_ = kSizeUnknown;
+  std::atomic<bool> size_assumed_ = false;  // assume_size(): the next forget_size() keeps it
   int red_shift_ = 16, green_shift_ = 8, blue_shift_ = 0;
   bool prepared_ = false;
   bool lsb_first_ = true;  // server image byte order
