@@ -7,7 +7,6 @@
 // (glx_display.hpp); functions with a return value also return NULL/False/None as Mesa does.
 #include <X11/Xatom.h>
 #include <X11/Xlib-xcb.h>
-#include <xcb/xcb.h>
 
 #include <algorithm>
 #include <climits>
@@ -614,16 +613,7 @@ namespace {
 // drawable is gone or not a drawable (the error is consumed here).
 bool size_after_program_requests(Display* dpy, GLXDrawable drawable, uint32_t* width,
                                  uint32_t* height) {
-  xcb_connection_t* c = XGetXCBConnection(dpy);
-  xcb_generic_error_t* error = nullptr;
-  xcb_get_geometry_reply_t* g =
-      xcb_get_geometry_reply(c, xcb_get_geometry(c, static_cast<xcb_drawable_t>(drawable)), &error);
-  free(error);
-  if (g == nullptr) return false;
-  *width = g->width;
-  *height = g->height;
-  free(g);
-  return true;
+  return glpt::glx::drawable_geometry(XGetXCBConnection(dpy), drawable, width, height);
 }
 
 }  // namespace

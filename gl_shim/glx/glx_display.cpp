@@ -99,7 +99,11 @@ void* DisplayState::connection() {
 
 bool DisplayState::geometry(XID drawable, uint32_t* width, uint32_t* height) {
   std::lock_guard lock(mutex);
-  auto* c = static_cast<xcb_connection_t*>(connection());
+  return drawable_geometry(connection(), drawable, width, height);
+}
+
+bool drawable_geometry(void* connection, XID drawable, uint32_t* width, uint32_t* height) {
+  auto* c = static_cast<xcb_connection_t*>(connection);
   if (c == nullptr) return false;
   xcb_generic_error_t* error = nullptr;
   xcb_get_geometry_reply_t* g =

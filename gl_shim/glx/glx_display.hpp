@@ -24,6 +24,10 @@ namespace glpt::glx {
 
 enum class DrawableKind { kWindow, kPixmap, kPbuffer };
 
+// The size of an X drawable asked on XCB connection `connection` (an xcb_connection_t*): false
+// if it does not exist, the error consumed here rather than reported to an error handler.
+bool drawable_geometry(void* connection, XID drawable, uint32_t* width, uint32_t* height);
+
 struct GlxDrawable {
   DrawableKind kind = DrawableKind::kWindow;
   const Config* config = nullptr;

@@ -91,7 +91,12 @@ class GlxDrawables : public ::testing::Test {
     *ctx = context(vi);
     XFree(vi);
     return *ctx != nullptr;
+  }  // The same window, made current.
+  bool current_double_buffered_window(int w, int h, Window* win) {
+    GLXContext ctx = nullptr;
+    return double_buffered_window(w, h, win, &ctx) && glXMakeCurrent(dpy_, *win, ctx);
   }
+
   // A 32x32 double-buffered window, current, with one red frame finished and swapped: the size
   // it had before a test resizes it.
   bool red_frame_shown(Window* win) {
@@ -184,9 +189,7 @@ TEST_F(GlxDrawables, SingleBufferedGlFlushShowsTheImageWithoutXSync) {
 
 TEST_F(GlxDrawables, DoubleBufferedDrawsToTheBackAndSwapShowsIt) {
   Window win = 0;
-  GLXContext ctx = nullptr;
-  ASSERT_TRUE(double_buffered_window(32, 32, &win, &ctx));
-  ASSERT_TRUE(glXMakeCurrent(dpy_, win, ctx));
+  ASSERT_TRUE(current_double_buffered_window(32, 32, &win));
   GLboolean doublebuffer = GL_FALSE;
   glGetBooleanv(GL_DOUBLEBUFFER, &doublebuffer);
   EXPECT_EQ(doublebuffer, GL_TRUE);
@@ -203,9 +206,7 @@ TEST_F(GlxDrawables, DoubleBufferedDrawsToTheBackAndSwapShowsIt) {
 // window holds the last (the presenting thread alternates between two shared-memory segments).
 TEST_F(GlxDrawables, FramesSwappedWithoutWaitingAreShownInOrder) {
   Window win = 0;
-  GLXContext ctx = nullptr;
-  ASSERT_TRUE(double_buffered_window(24, 24, &win, &ctx));
-  ASSERT_TRUE(glXMakeCurrent(dpy_, win, ctx));
+  ASSERT_TRUE(current_double_buffered_window(24, 24, &win));
   for (int frame = 0; frame < 25; ++frame) {
     glClearColor(frame % 3 == 0 ? 1.0f : 0.0f, frame % 3 == 1 ? 1.0f : 0.0f,
                  frame % 3 == 2 ? 1.0f : 0.0f, 1);
@@ -229,9 +230,7 @@ TEST_F(GlxDrawables, FramesSwappedWithoutWaitingAreShownInOrder) {
 // it): a frame drawn without a clear, a partial (scissored) clear, reads of both buffers.
 TEST_F(GlxDrawables, TheBackBufferKeepsItsContentsAcrossSwaps) {
   Window win = 0;
-  GLXContext ctx = nullptr;
-  ASSERT_TRUE(double_buffered_window(32, 32, &win, &ctx));
-  ASSERT_TRUE(glXMakeCurrent(dpy_, win, ctx));
+  ASSERT_TRUE(current_double_buffered_window(32, 32, &win));
   glMatrixMode(GL_PROJECTION);
   glLoadIdentity();
   glOrtho(0, 32, 0, 32, -1, 1);
