@@ -11,6 +11,8 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "rt_core/vk/vk_device.hpp"
+
 namespace glpt {
 
 std::unique_ptr<X11WindowTarget> X11WindowTarget::create(const std::string& display_name,
@@ -100,7 +102,8 @@ const rt::HostImage* X11WindowTarget::host_image(uint32_t width, uint32_t height
         v != nullptr && red_shift_ == 16 && green_shift_ == 8 && blue_shift_ == 0 && lsb_first_;
     free(v);
   }
-  if (!shm_available_ || width == 0 || height == 0) return nullptr;
+  // At exit (rt::process_exiting) frames are not shown: no segment, no waiting for one.
+  if (!shm_available_ || width == 0 || height == 0 || rt::process_exiting()) return nullptr;
   const ShmSegment& other = shm_[shm_next_ ^ 1];
   if (other.image.pixels != nullptr && (other.image.width != width || other.image.height != height))
     release_shm();  // a new size: both segments go
@@ -178,7 +181,7 @@ void X11WindowTarget::run_presenter() {
     // The job and its segment are not touched by the program's thread until it leaves the
     // queue: host_image() and release_shm() wait for that.
     job->ready();
-    put_shm(shm_[job->segment]);
+    if (!rt::process_exiting()) put_shm(shm_[job->segment]);
     {
       std::lock_guard lock(present_mutex_);
       shm_busy_[job->segment] = false;
@@ -189,6 +192,9 @@ void X11WindowTarget::run_presenter() {
 }
 
 void X11WindowTarget::wait_presented() {
+  // From an exit handler nothing is shown any more (the presenting thread skips its requests):
+  // flushes at exit do not wait for it.
+  if (rt::process_exiting()) return;
   std::unique_lock lock(present_mutex_);
   present_changed_.wait(lock, [&] { return present_jobs_.empty(); });
 }
