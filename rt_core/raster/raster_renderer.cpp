@@ -508,8 +508,9 @@ GpuBuffer* RasterRenderer::imported_host_image(const HostImage& image) {
     return i.generation == image.generation;
   });
   if (it == imported_.end()) {
-    // A share group's renderer presents to each of its contexts' windows: a few are kept.
-    constexpr size_t kMaxImported = 4;
+    // A share group's renderer presents to each of its contexts' windows (two segments each,
+    // X11WindowTarget): those of a few windows are kept.
+    constexpr size_t kMaxImported = 8;
     if (imported_.size() >= kMaxImported) {
       device_->wait_all();  // a frame presented later may still copy into the oldest
       imported_.erase(imported_.begin());
