@@ -402,15 +402,12 @@ void RasterRenderer::execute(const rec::FrameRecord& record, DrawableBuffers& bu
   // the record starts by clearing all of it (most frames: glClear, then draws).
   const bool restore_back_first =
       buffers_->back_is_front && !begins_with_whole_back_clear(record, *commands);
-  buffers_->back_is_front = false;
+  if (!restore_back_first) buffers_->back_is_front = false;  // the first clear replaces it
   size_t position = 0;
   VulkanDevice::Ticket ticket = 0;
   do {
     ticket = device_->submit([&](VkCommandBuffer cmd) {
-      if (position == 0 && restore_back_first) {
-        buffers_->back_is_front = true;
-        record_restore_back(cmd);
-      }
+      if (position == 0 && restore_back_first) record_restore_back(cmd);
       r.cmd = cmd;
       r.rendering = false;
       r.bound_pipeline = VK_NULL_HANDLE;
