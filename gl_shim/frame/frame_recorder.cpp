@@ -39,6 +39,16 @@ size_t bytes_per_vertex(const rec::VertexData& d) {
   return bytes;
 }
 
+// The bytes a batch's arrays have allocated (what keeping it as a spare keeps).
+size_t capacity_bytes(const rec::VertexData& d) {
+  auto of = [](const auto& values) { return values.capacity() * sizeof(values[0]); };
+  size_t sum = of(d.position) + of(d.normal) + of(d.color) + of(d.secondary_color) +
+               of(d.fog_coord) + of(d.edge_flag) + of(d.material) + of(d.indices) +
+               of(d.primitives);
+  for (const auto& t : d.tex_coord) sum += of(t);
+  return sum;
+}
+
 }  // namespace
 
 void clear_vertex_arrays(rec::VertexData& d) {
@@ -146,14 +156,24 @@ void FrameRecorder::seal() {
 
 void FrameRecorder::clear() {
   ++events_;
-  constexpr size_t kMaxSpares = 4;
+  // Enough spares for every batch of a frame of a few hundred draws (glxgears has 18: with 4
+  // kept, 14 batches a frame grew their arrays from nothing and were freed again, a third of
+  // the program thread's time in malloc and free). The first few are kept whatever their size
+  // (a program drawing megabytes a frame in one batch); the rest within a bound.
+  constexpr size_t kMaxSpares = 256, kSparesOfAnySize = 4;
+  constexpr size_t kMaxSpareBytes = size_t{64} << 20;
+  size_t spare_bytes = 0;
+  for (const auto& spare : spare_) spare_bytes += capacity_bytes(*spare);
   for (rec::Command& command : record_.commands) {
     auto* draw = std::get_if<rec::Draw>(&command);
     if (spare_.size() == kMaxSpares) break;
     // Only this record holds it (consumers that keep draws, as the path tracer's scene, share
     // them): the batches were created mutable, so taking const away is sound.
-    if (draw && draw->vertices && draw->vertices.use_count() == 1)
-      spare_.push_back(std::const_pointer_cast<rec::VertexData>(std::move(draw->vertices)));
+    if (!draw || !draw->vertices || draw->vertices.use_count() != 1) continue;
+    const size_t bytes = capacity_bytes(*draw->vertices);
+    if (spare_.size() >= kSparesOfAnySize && spare_bytes + bytes > kMaxSpareBytes) continue;
+    spare_bytes += bytes;
+    spare_.push_back(std::const_pointer_cast<rec::VertexData>(std::move(draw->vertices)));
   }
   record_.clear();
   open_.reset();

@@ -885,10 +885,15 @@ void RasterRenderer::record_clear(Recording& r, const rec::Clear& clear, uint32_
     }
     if (depth || stencil) {
       VkClearAttachment& a = attachments[n++];
-      a.aspectMask =
-          (depth ? VK_IMAGE_ASPECT_DEPTH_BIT : 0) | (stencil ? VK_IMAGE_ASPECT_STENCIL_BIT : 0);
+      // A drawable without stencil bits still has the packed depth/stencil image: its stencil
+      // is never read, so a depth clear takes it along (value 0). lavapipe then fills whole
+      // words (rep stos) instead of keeping each pixel's stencil byte with a mask, a scalar
+      // loop on its queue thread (5 % of all CPU samples of glxgears at 300x300).
+      const bool stencil_aspect = stencil || (depth && buffers_->config.stencil_bits == 0);
+      a.aspectMask = (depth ? VK_IMAGE_ASPECT_DEPTH_BIT : 0) |
+                     (stencil_aspect ? VK_IMAGE_ASPECT_STENCIL_BIT : 0);
       a.clearValue.depthStencil = {attachment_clear_depth(z24),
-                                   static_cast<uint32_t>(clear.stencil) & 0xFFu};
+                                   stencil ? static_cast<uint32_t>(clear.stencil) & 0xFFu : 0u};
     }
     const VkClearRect clear_rect{rect, 0, 1};
     vkCmdClearAttachments(r.cmd, n, attachments.data(), 1, &clear_rect);
