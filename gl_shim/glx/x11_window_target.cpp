@@ -52,9 +52,11 @@ X11WindowTarget::~X11WindowTarget() {
 
 void X11WindowTarget::round_trip() {
   // The server has processed (and, for SHM, read) everything sent before the reply; errors of
-  // earlier requests arrive as events on this connection, which nobody else reads.
+  // earlier requests arrive as events on this connection, which nobody else reads. They came
+  // before the reply, so reading the reply queued them: draining the queue needs no read of the
+  // socket (xcb_poll_for_event's would be one more system call per frame, finding nothing).
   free(xcb_get_input_focus_reply(connection_, xcb_get_input_focus(connection_), nullptr));
-  while (xcb_generic_event_t* e = xcb_poll_for_event(connection_)) free(e);
+  while (xcb_generic_event_t* e = xcb_poll_for_queued_event(connection_)) free(e);
 }
 
 void X11WindowTarget::release_shm() {
