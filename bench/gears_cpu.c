@@ -3,6 +3,8 @@
  *
  * usage: gears_cpu [--seconds S] [--size N]
  *
+ * After half a second of warm-up (not counted), draws for S seconds.
+ *
  * Prints one line: frames=F fps=R thread_us=T process_us=P, where thread_us is the CPU time of
  * the program's own thread per frame (its GL calls and whatever the implementation does on that
  * thread) and process_us the CPU time of every thread of the process per frame (an
@@ -10,102 +12,44 @@
  * than the frame rate on a machine shared with other work: bench_frame_cpu.sh reports both.
  * The gears turn by frame count, not by clock, so every run draws the same frames.
  */
-#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
 
 #include "glx_window.h"
-
-/* glxgears' gear: front and back faces as quad strips, the teeth as quads, the outward faces as
- * one flat-shaded quad strip and the inner cylinder smooth-shaded. */
-static void gear(float inner, float outer, float width, int teeth, float tooth_depth) {
-  const float r0 = inner, r1 = outer - tooth_depth / 2.0f, r2 = outer + tooth_depth / 2.0f;
-  const float da = 2.0f * (float)M_PI / (float)teeth / 4.0f;
-  glShadeModel(GL_FLAT);
-  glNormal3f(0.0f, 0.0f, 1.0f);
-  glBegin(GL_QUAD_STRIP);
-  for (int i = 0; i <= teeth; i++) {
-    const float a = (float)i * 2.0f * (float)M_PI / (float)teeth;
-    glVertex3f(r0 * cosf(a), r0 * sinf(a), width * 0.5f);
-    glVertex3f(r1 * cosf(a), r1 * sinf(a), width * 0.5f);
-    if (i < teeth) {
-      glVertex3f(r0 * cosf(a), r0 * sinf(a), width * 0.5f);
-      glVertex3f(r1 * cosf(a + 3 * da), r1 * sinf(a + 3 * da), width * 0.5f);
-    }
-  }
-  glEnd();
-  glBegin(GL_QUADS);
-  for (int i = 0; i < teeth; i++) {
-    const float a = (float)i * 2.0f * (float)M_PI / (float)teeth;
-    glVertex3f(r1 * cosf(a), r1 * sinf(a), width * 0.5f);
-    glVertex3f(r2 * cosf(a + da), r2 * sinf(a + da), width * 0.5f);
-    glVertex3f(r2 * cosf(a + 2 * da), r2 * sinf(a + 2 * da), width * 0.5f);
-    glVertex3f(r1 * cosf(a + 3 * da), r1 * sinf(a + 3 * da), width * 0.5f);
-  }
-  glEnd();
-  glNormal3f(0.0f, 0.0f, -1.0f);
-  glBegin(GL_QUAD_STRIP);
-  for (int i = 0; i <= teeth; i++) {
-    const float a = (float)i * 2.0f * (float)M_PI / (float)teeth;
-    glVertex3f(r1 * cosf(a), r1 * sinf(a), -width * 0.5f);
-    glVertex3f(r0 * cosf(a), r0 * sinf(a), -width * 0.5f);
-    if (i < teeth) {
-      glVertex3f(r1 * cosf(a + 3 * da), r1 * sinf(a + 3 * da), -width * 0.5f);
-      glVertex3f(r0 * cosf(a), r0 * sinf(a), -width * 0.5f);
-    }
-  }
-  glEnd();
-  glBegin(GL_QUADS);
-  for (int i = 0; i < teeth; i++) {
-    const float a = (float)i * 2.0f * (float)M_PI / (float)teeth;
-    glVertex3f(r1 * cosf(a + 3 * da), r1 * sinf(a + 3 * da), -width * 0.5f);
-    glVertex3f(r2 * cosf(a + 2 * da), r2 * sinf(a + 2 * da), -width * 0.5f);
-    glVertex3f(r2 * cosf(a + da), r2 * sinf(a + da), -width * 0.5f);
-    glVertex3f(r1 * cosf(a), r1 * sinf(a), -width * 0.5f);
-  }
-  glEnd();
-  glBegin(GL_QUAD_STRIP);
-  for (int i = 0; i < teeth; i++) {
-    const float a = (float)i * 2.0f * (float)M_PI / (float)teeth;
-    glVertex3f(r1 * cosf(a), r1 * sinf(a), width * 0.5f);
-    glVertex3f(r1 * cosf(a), r1 * sinf(a), -width * 0.5f);
-    float u = r2 * cosf(a + da) - r1 * cosf(a), v = r2 * sinf(a + da) - r1 * sinf(a);
-    const float len = sqrtf(u * u + v * v);
-    u /= len;
-    v /= len;
-    glNormal3f(v, -u, 0.0f);
-    glVertex3f(r2 * cosf(a + da), r2 * sinf(a + da), width * 0.5f);
-    glVertex3f(r2 * cosf(a + da), r2 * sinf(a + da), -width * 0.5f);
-    glNormal3f(cosf(a), sinf(a), 0.0f);
-    glVertex3f(r2 * cosf(a + 2 * da), r2 * sinf(a + 2 * da), width * 0.5f);
-    glVertex3f(r2 * cosf(a + 2 * da), r2 * sinf(a + 2 * da), -width * 0.5f);
-    u = r1 * cosf(a + 3 * da) - r2 * cosf(a + 2 * da);
-    v = r1 * sinf(a + 3 * da) - r2 * sinf(a + 2 * da);
-    glNormal3f(v, -u, 0.0f);
-    glVertex3f(r1 * cosf(a + 3 * da), r1 * sinf(a + 3 * da), width * 0.5f);
-    glVertex3f(r1 * cosf(a + 3 * da), r1 * sinf(a + 3 * da), -width * 0.5f);
-    glNormal3f(cosf(a), sinf(a), 0.0f);
-  }
-  glVertex3f(r1, 0.0f, width * 0.5f);
-  glVertex3f(r1, 0.0f, -width * 0.5f);
-  glEnd();
-  glShadeModel(GL_SMOOTH);
-  glBegin(GL_QUAD_STRIP);
-  for (int i = 0; i <= teeth; i++) {
-    const float a = (float)i * 2.0f * (float)M_PI / (float)teeth;
-    glNormal3f(-cosf(a), -sinf(a), 0.0f);
-    glVertex3f(r0 * cosf(a), r0 * sinf(a), -width * 0.5f);
-    glVertex3f(r0 * cosf(a), r0 * sinf(a), width * 0.5f);
-  }
-  glEnd();
-}
+#include "glxgears_gear.h" /* tests/programs */
 
 static double seconds_of(clockid_t clock) {
   struct timespec t;
   clock_gettime(clock, &t);
   return (double)t.tv_sec + (double)t.tv_nsec * 1e-9;
+}
+
+/* One frame of glxgears' scene, the gears turned by `frame`. */
+static void draw_frame(const GlxWindow* w, GLuint gears, long frame) {
+  const float angle = 0.5f * (float)(frame % 720);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glPushMatrix();
+  glRotatef(20.0f, 1.0f, 0.0f, 0.0f);
+  glRotatef(30.0f, 0.0f, 1.0f, 0.0f);
+  glPushMatrix();
+  glTranslatef(-3.0f, -2.0f, 0.0f);
+  glRotatef(angle, 0.0f, 0.0f, 1.0f);
+  glCallList(gears);
+  glPopMatrix();
+  glPushMatrix();
+  glTranslatef(3.1f, -2.0f, 0.0f);
+  glRotatef(-2.0f * angle - 9.0f, 0.0f, 0.0f, 1.0f);
+  glCallList(gears + 1);
+  glPopMatrix();
+  glPushMatrix();
+  glTranslatef(-3.1f, 4.2f, 0.0f);
+  glRotatef(-2.0f * angle - 25.0f, 0.0f, 0.0f, 1.0f);
+  glCallList(gears + 2);
+  glPopMatrix();
+  glPopMatrix();
+  glXSwapBuffers(w->dpy, w->window);
 }
 
 int main(int argc, char** argv) {
@@ -138,15 +82,15 @@ int main(int argc, char** argv) {
   const GLuint gears = glGenLists(3);
   glNewList(gears, GL_COMPILE);
   glMaterialfv(GL_FRONT, GL_AMBIENT_AND_DIFFUSE, red);
-  gear(1.0f, 4.0f, 1.0f, 20, 0.7f);
+  glxgears_gear(1.0f, 4.0f, 1.0f, 20, 0.7f, 0);
   glEndList();
   glNewList(gears + 1, GL_COMPILE);
   glMaterialfv(GL_FRONT, GL_AMBIENT_AND_DIFFUSE, green);
-  gear(0.5f, 2.0f, 2.0f, 10, 0.7f);
+  glxgears_gear(0.5f, 2.0f, 2.0f, 10, 0.7f, 0);
   glEndList();
   glNewList(gears + 2, GL_COMPILE);
   glMaterialfv(GL_FRONT, GL_AMBIENT_AND_DIFFUSE, blue);
-  gear(1.3f, 2.0f, 0.5f, 10, 0.7f);
+  glxgears_gear(1.3f, 2.0f, 0.5f, 10, 0.7f, 0);
   glEndList();
   glEnable(GL_NORMALIZE);
   glMatrixMode(GL_PROJECTION);
@@ -155,37 +99,21 @@ int main(int argc, char** argv) {
   glMatrixMode(GL_MODELVIEW);
   glLoadIdentity();
   glTranslatef(0.0f, 0.0f, -40.0f);
+  /* Warm-up (pipelines compiled, buffers allocated) before anything is counted. */
+  long frames = 0;
+  for (const double warm_up = seconds_of(CLOCK_MONOTONIC);
+       seconds_of(CLOCK_MONOTONIC) - warm_up < 0.5;)
+    draw_frame(&w, gears, frames++);
   const double start = seconds_of(CLOCK_MONOTONIC);
   const double thread_start = seconds_of(CLOCK_THREAD_CPUTIME_ID);
   const double process_start = seconds_of(CLOCK_PROCESS_CPUTIME_ID);
-  long frames = 0;
+  const long first = frames;
   double elapsed = 0.0;
   do {
-    const float angle = 0.5f * (float)(frames % 720);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    glPushMatrix();
-    glRotatef(20.0f, 1.0f, 0.0f, 0.0f);
-    glRotatef(30.0f, 0.0f, 1.0f, 0.0f);
-    glPushMatrix();
-    glTranslatef(-3.0f, -2.0f, 0.0f);
-    glRotatef(angle, 0.0f, 0.0f, 1.0f);
-    glCallList(gears);
-    glPopMatrix();
-    glPushMatrix();
-    glTranslatef(3.1f, -2.0f, 0.0f);
-    glRotatef(-2.0f * angle - 9.0f, 0.0f, 0.0f, 1.0f);
-    glCallList(gears + 1);
-    glPopMatrix();
-    glPushMatrix();
-    glTranslatef(-3.1f, 4.2f, 0.0f);
-    glRotatef(-2.0f * angle - 25.0f, 0.0f, 0.0f, 1.0f);
-    glCallList(gears + 2);
-    glPopMatrix();
-    glPopMatrix();
-    glXSwapBuffers(w.dpy, w.window);
-    ++frames;
+    draw_frame(&w, gears, frames++);
     elapsed = seconds_of(CLOCK_MONOTONIC) - start;
   } while (elapsed < seconds);
+  frames -= first;
   const double thread_us = (seconds_of(CLOCK_THREAD_CPUTIME_ID) - thread_start) * 1e6 / frames;
   const double process_us = (seconds_of(CLOCK_PROCESS_CPUTIME_ID) - process_start) * 1e6 / frames;
   printf("frames=%ld fps=%.1f thread_us=%.1f process_us=%.1f\n", frames, frames / elapsed,
