@@ -157,7 +157,7 @@ void FrameRecorder::seal() {
 void FrameRecorder::clear() {
   ++events_;
   // Enough spares for every batch of a frame of a few hundred draws (glxgears has 18: with 4
-  // kept, 14 batches a frame grew their arrays from nothing and were freed again, a third of
+  // kept, 14 batches a frame grew their arrays from nothing and were freed again, a seventh of
   // the program thread's time in malloc and free). The first few are kept whatever their size
   // (a program drawing megabytes a frame in one batch); the rest within a bound.
   constexpr size_t kMaxSpares = 256, kSparesOfAnySize = 4;
