@@ -94,6 +94,7 @@ void FrameRecorder::add_primitive(rec::StateId state, rec::VertexData& p) {
     } else {
       open_ = std::move(spare_.back());
       spare_.pop_back();
+      spare_bytes_ -= capacity_bytes(*open_);
       // Exchanged, not copied: `p` (the caller's scratch, cleared before reuse) takes the spare's
       // storage for its next primitive.
       std::swap(*open_, p);
@@ -134,6 +135,7 @@ void FrameRecorder::add_recorded_draw(rec::StateId state,
 
 rec::VertexData FrameRecorder::take_storage() {
   if (spare_.empty()) return {};
+  spare_bytes_ -= capacity_bytes(*spare_.back());
   rec::VertexData storage = std::move(*spare_.back());
   spare_.pop_back();
   clear_vertex_arrays(storage);
@@ -156,14 +158,12 @@ void FrameRecorder::seal() {
 
 void FrameRecorder::clear() {
   ++events_;
-  // Enough spares for every batch of a frame of a few hundred draws (glxgears has 18: with 4
+  // Enough spares for every batch of a frame of thousands of draws (glxgears has 18: with 4
   // kept, 14 batches a frame grew their arrays from nothing and were freed again, a seventh of
   // the program thread's time in malloc and free). The first few are kept whatever their size
   // (a program drawing megabytes a frame in one batch); the rest within a bound.
-  constexpr size_t kMaxSpares = 256, kSparesOfAnySize = 4;
+  constexpr size_t kMaxSpares = 4096, kSparesOfAnySize = 4;
   constexpr size_t kMaxSpareBytes = size_t{64} << 20;
-  size_t spare_bytes = 0;
-  for (const auto& spare : spare_) spare_bytes += capacity_bytes(*spare);
   for (rec::Command& command : record_.commands) {
     auto* draw = std::get_if<rec::Draw>(&command);
     if (spare_.size() == kMaxSpares) break;
@@ -171,8 +171,8 @@ void FrameRecorder::clear() {
     // them): the batches were created mutable, so taking const away is sound.
     if (!draw || !draw->vertices || draw->vertices.use_count() != 1) continue;
     const size_t bytes = capacity_bytes(*draw->vertices);
-    if (spare_.size() >= kSparesOfAnySize && spare_bytes + bytes > kMaxSpareBytes) continue;
-    spare_bytes += bytes;
+    if (spare_.size() >= kSparesOfAnySize && spare_bytes_ + bytes > kMaxSpareBytes) continue;
+    spare_bytes_ += bytes;
     spare_.push_back(std::const_pointer_cast<rec::VertexData>(std::move(draw->vertices)));
   }
   record_.clear();

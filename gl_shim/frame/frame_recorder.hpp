@@ -54,6 +54,7 @@ class FrameRecorder {
   // a program drawing megabytes of vertices per frame does not allocate (and page-fault in) them
   // again every frame.
   std::vector<std::shared_ptr<rec::VertexData>> spare_;
+  size_t spare_bytes_ = 0;  // what the spares' arrays have allocated
   rec::StateId open_state_ = 0;
   size_t vertex_bytes_ = 0;
   uint64_t events_ = 0;
