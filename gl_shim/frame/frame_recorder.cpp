@@ -39,16 +39,6 @@ size_t bytes_per_vertex(const rec::VertexData& d) {
   return bytes;
 }
 
-// The bytes a batch's arrays have allocated (what keeping it as a spare keeps).
-size_t capacity_bytes(const rec::VertexData& d) {
-  auto of = [](const auto& values) { return values.capacity() * sizeof(values[0]); };
-  size_t sum = of(d.position) + of(d.normal) + of(d.color) + of(d.secondary_color) +
-               of(d.fog_coord) + of(d.edge_flag) + of(d.material) + of(d.indices) +
-               of(d.primitives);
-  for (const auto& t : d.tex_coord) sum += of(t);
-  return sum;
-}
-
 }  // namespace
 
 void clear_vertex_arrays(rec::VertexData& d) {
@@ -94,7 +84,7 @@ void FrameRecorder::add_primitive(rec::StateId state, rec::VertexData& p) {
     } else {
       open_ = std::move(spare_.back());
       spare_.pop_back();
-      spare_bytes_ -= capacity_bytes(*open_);
+      spare_bytes_ -= open_->capacity_bytes();
       // Exchanged, not copied: `p` (the caller's scratch, cleared before reuse) takes the spare's
       // storage for its next primitive.
       std::swap(*open_, p);
@@ -135,7 +125,7 @@ void FrameRecorder::add_recorded_draw(rec::StateId state,
 
 rec::VertexData FrameRecorder::take_storage() {
   if (spare_.empty()) return {};
-  spare_bytes_ -= capacity_bytes(*spare_.back());
+  spare_bytes_ -= spare_.back()->capacity_bytes();
   rec::VertexData storage = std::move(*spare_.back());
   spare_.pop_back();
   clear_vertex_arrays(storage);
@@ -170,7 +160,7 @@ void FrameRecorder::clear() {
     // Only this record holds it (consumers that keep draws, as the path tracer's scene, share
     // them): the batches were created mutable, so taking const away is sound.
     if (!draw || !draw->vertices || draw->vertices.use_count() != 1) continue;
-    const size_t bytes = capacity_bytes(*draw->vertices);
+    const size_t bytes = draw->vertices->capacity_bytes();
     if (spare_.size() >= kSparesOfAnySize && spare_bytes_ + bytes > kMaxSpareBytes) continue;
     spare_bytes_ += bytes;
     spare_.push_back(std::const_pointer_cast<rec::VertexData>(std::move(draw->vertices)));

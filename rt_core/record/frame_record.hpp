@@ -121,8 +121,10 @@ struct VertexData {
   std::vector<PrimitiveRange> primitives;
 
   uint32_t vertex_count() const { return static_cast<uint32_t>(position.size()); }
-  // The bytes its arrays hold (attributes, edge flags, materials, indices, primitives).
+  // The bytes its arrays hold (attributes, edge flags, materials, indices, primitives), and the
+  // bytes they have allocated (what keeping their storage for reuse keeps).
   size_t bytes() const;
+  size_t capacity_bytes() const;
 
   // Identity (VertexKeys), hashed on first use and cached: only path-traced mode asks (to reuse
   // acceleration structures and accumulation), so raster mode never hashes a frame's megabytes of

@@ -42,12 +42,24 @@ const VertexKeys& VertexData::keys() const {
   return cached_keys.keys;
 }
 
-size_t VertexData::bytes() const {
-  auto of = [](const auto& values) { return values.size() * sizeof(values[0]); };
-  size_t sum = of(position) + of(normal) + of(color) + of(secondary_color) + of(fog_coord) +
-               of(edge_flag) + of(material) + of(indices) + of(primitives);
-  for (const auto& t : tex_coord) sum += of(t);
+namespace {
+// `bytes_of(array)` summed over every array of `d`.
+template <typename BytesOf>
+size_t sum_over_arrays(const VertexData& d, BytesOf bytes_of) {
+  size_t sum = bytes_of(d.position) + bytes_of(d.normal) + bytes_of(d.color) +
+               bytes_of(d.secondary_color) + bytes_of(d.fog_coord) + bytes_of(d.edge_flag) +
+               bytes_of(d.material) + bytes_of(d.indices) + bytes_of(d.primitives);
+  for (const auto& t : d.tex_coord) sum += bytes_of(t);
   return sum;
+}
+}  // namespace
+
+size_t VertexData::bytes() const {
+  return sum_over_arrays(*this, [](const auto& v) { return v.size() * sizeof(v[0]); });
+}
+
+size_t VertexData::capacity_bytes() const {
+  return sum_over_arrays(*this, [](const auto& v) { return v.capacity() * sizeof(v[0]); });
 }
 
 uint64_t VertexData::content_id() const {
