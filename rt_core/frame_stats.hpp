@@ -39,6 +39,8 @@ struct FrameStats {
   // Samples per pixel in the image now shown.
   uint32_t accumulated_samples = 0;
   uint32_t draws = 0;  // Draw commands executed
+  // Of those, draws drawn by an earlier draw's Vulkan draw (raster/draw_merging.hpp).
+  uint32_t merged_draws = 0;
   // Path-traced mode, per class (docs/classification.md): draws traced (G-buffer and rays), of
   // the sky, and drawn by raster mode only (blended, lines, overlays...); TLAS instances built
   // from them (world and sky).
@@ -86,6 +88,7 @@ struct FrameStats {
     instances += s.instances;
     for (size_t k = 0; k < kind_draws.size(); ++k) kind_draws[k] += s.kind_draws[k];
     resident_draws += s.resident_draws;
+    merged_draws += s.merged_draws;
     pipelines_created += s.pipelines_created;
     inexpressible += s.inexpressible;
     host_waits += s.host_waits;

@@ -40,6 +40,22 @@ class Arena {
   VkDeviceSize add_external(const T* data, size_t count) {
     return place(reinterpret_cast<const uint8_t*>(data), 0, count * sizeof(T));
   }
+  // One piece made of several arrays laid back to back (no alignment between them), in `local`:
+  // begin_joined() starts it, append() and append_repeated() extend it until the next add.
+  VkDeviceSize begin_joined() {
+    const VkDeviceSize offset = place(nullptr, local_.size(), 0);
+    pieces_.push_back({offset, nullptr, local_.size(), 0});
+    return offset;
+  }
+  void append(const uint8_t* data, size_t bytes) {
+    local_.insert(local_.end(), data, data + bytes);
+    extend_joined(bytes);
+  }
+  void append_repeated(const uint8_t* element, size_t element_bytes, size_t count) {
+    for (size_t k = 0; k < count; ++k)
+      local_.insert(local_.end(), element, element + element_bytes);
+    extend_joined(element_bytes * count);
+  }
   size_t size() const { return size_; }
   // Copies every piece to its offset in `destination` (size() bytes).
   void write_to(uint8_t* destination) const {
@@ -56,6 +72,10 @@ class Arena {
     size_t local_offset;
     size_t bytes;
   };
+  void extend_joined(size_t bytes) {
+    pieces_.back().bytes += bytes;
+    size_ += bytes;
+  }
   VkDeviceSize place(const uint8_t* external, size_t local_offset, size_t bytes) {
     const size_t offset = (size_ + 15) & ~size_t{15};
     size_ = offset + bytes;
@@ -112,6 +132,9 @@ struct RasterRenderer::DrawGeometry {
   RasterTopology topology = RasterTopology::kTriangles;
   // Per-vertex materials (RasterPushConstants::materials): all zero when the draw has none.
   glm::uvec4 materials{0u};
+  // The draws after this one whose triangles it draws too (draw_merging.hpp); their own
+  // geometry is empty.
+  uint32_t merged_draws = 0;
 };
 
 // How one pixel rectangle (glBitmap, glDrawPixels, glCopyPixels) is drawn; prepared with the

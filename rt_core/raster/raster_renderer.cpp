@@ -9,6 +9,7 @@
 #include "common/stopwatch.hpp"
 #include "raster_types.h"
 #include "rt_core/raster/depth_clear.hpp"
+#include "rt_core/raster/draw_merging.hpp"
 #include "rt_core/raster/raster_recording.hpp"
 #include "rt_core/raster/state_uniforms.hpp"
 #include "rt_core/vk/vk_error.hpp"
@@ -211,7 +212,8 @@ void RasterRenderer::execute(const rec::FrameRecord& record, DrawableBuffers& bu
   std::vector<uint8_t>& edge_masks = edge_masks_;
   std::vector<gpu::RasterMaterial> materials;
   size_t next_clear_state = state_count;
-  for (size_t i : *commands) {
+  for (size_t position = 0; position < commands->size(); ++position) {
+    const size_t i = (*commands)[position];
     const rec::Command& command = record.commands[i];
     if (const auto* clear = std::get_if<rec::Clear>(&command)) {
       gpu::RasterState& s = states[next_clear_state];
@@ -224,6 +226,13 @@ void RasterRenderer::execute(const rec::FrameRecord& record, DrawableBuffers& bu
     if (prepare_pixels(r, i, arena, states, next_clear_state)) continue;
     const auto* draw = std::get_if<rec::Draw>(&command);
     if (draw == nullptr || !draw->vertices) continue;
+    if (gbuffer == nullptr) {
+      const size_t merged = merge_draws(r, *commands, position, arena, defaults, default_offset);
+      if (merged > 0) {
+        position += merged - 1;
+        continue;
+      }
+    }
     const rec::VertexData& v = *draw->vertices;
     DrawGeometry& g = r.geometry[i];
     ResidentGeometry::Entry* resident = resident_.use(*device_, v, frame_);
@@ -944,10 +953,59 @@ void RasterRenderer::record_clear(Recording& r, const rec::Clear& clear, uint32_
   if (color && r.gbuffer) clear_gbuffer_surface(r, rect);
 }
 
+size_t RasterRenderer::merge_draws(Recording& r, const std::vector<size_t>& commands,
+                                   size_t position, Arena& arena,
+                                   std::span<const glm::vec4> defaults,
+                                   VkDeviceSize default_offset) {
+  const rec::FrameRecord& record = *r.record;
+  const auto draw_at = [&](size_t p) {
+    return std::get_if<rec::Draw>(&record.commands[commands[p]]);
+  };
+  const rec::Draw& lead = *draw_at(position);
+  if (!mergeable_draw(record, lead)) return 0;
+  // The run of draws after it under the same state, counting into the same occlusion query.
+  const uint64_t query = queries_.query_of(commands[position]);
+  uint64_t vertices = lead.vertices->vertex_count();
+  size_t end = position + 1;
+  for (; end < commands.size(); ++end) {
+    const rec::Draw* next = draw_at(end);
+    if (next == nullptr || next->state != lead.state || !mergeable_draw(record, *next) ||
+        queries_.query_of(commands[end]) != query)
+      break;
+    vertices += next->vertices->vertex_count();
+    if (vertices > kMaxMergedVertices) break;
+  }
+  if (end - position < 2) return 0;
+
+  merging_.clear();
+  std::vector<uint32_t>& indices = indices_;
+  indices.clear();
+  const rec::StateSnapshot& state = record.states[lead.state];
+  if (!finite_matrix(state.transform->modelview_projection))
+    r.stats->non_finite_draws += static_cast<uint32_t>(end - position);
+  uint32_t base = 0;
+  for (size_t p = position; p < end; ++p) {
+    const rec::VertexData& v = *draw_at(p)->vertices;
+    merging_.push_back(&v);
+    r.stats->non_finite_primitives +=
+        append_filled_triangles(v, rec::assembly_state(state, v), base, decomposed_, indices);
+    base += v.vertex_count();
+  }
+  DrawGeometry& g = r.geometry[commands[position]];
+  merge_attributes(merging_, arena, reinterpret_cast<const uint8_t*>(defaults.data()),
+                   default_offset, g.offsets, g.strides);
+  g.topology = RasterTopology::kTriangles;
+  g.index_offset = arena.add(indices.data(), indices.size());
+  g.index_count = static_cast<uint32_t>(indices.size());
+  g.merged_draws = static_cast<uint32_t>(end - position - 1);
+  return end - position;
+}
+
 void RasterRenderer::record_draw(Recording& r, const rec::Draw& draw, const DrawGeometry& g,
                                  bool to_gbuffer) {
   if (g.index_count == 0) return;
-  ++r.stats->draws;
+  r.stats->draws += 1 + g.merged_draws;
+  r.stats->merged_draws += g.merged_draws;
   record_draw_pass(r, draw, g, VK_CULL_MODE_NONE, to_gbuffer);
 }
 

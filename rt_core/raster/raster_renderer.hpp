@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <unordered_map>
 #include <vector>
 
@@ -92,6 +93,13 @@ class RasterRenderer {
   struct Recording;     // state of one command-buffer recording
   void ensure_buffers(DrawableBuffers& buffers, const rec::DrawableConfig& drawable);
   void record_clear(Recording& r, const rec::Clear& clear, uint32_t state_index);
+  // Geometry for the run of draws at `position` of `commands` drawn as one (draw_merging.hpp),
+  // into the first one's DrawGeometry; returns the run's length (0: the draw is not merged).
+  size_t merge_draws(Recording& r, const std::vector<size_t>& commands, size_t position,
+                     Arena& arena, std::span<const glm::vec4> defaults,
+                     VkDeviceSize default_offset);
+  // A merged draw's vertices stay far from 32-bit indices and from megabyte index lists.
+  static constexpr uint64_t kMaxMergedVertices = uint64_t{1} << 20;
   void record_draw(Recording& r, const rec::Draw& draw, const DrawGeometry& geometry,
                    bool to_gbuffer = false);
   void record_draw_pass(Recording& r, const rec::Draw& draw, const DrawGeometry& geometry,
@@ -200,6 +208,7 @@ class RasterRenderer {
   // allocated (and page-faulted in) again every frame.
   std::vector<uint8_t> upload_;
   std::vector<uint32_t> indices_;
+  std::vector<const rec::VertexData*> merging_;  // scratch: the draws merge_draws joins
   std::vector<uint8_t> edge_masks_;
   GpuBuffer pixels_;                   // images of this record's pixel rectangles (32-bit words)
   std::vector<uint32_t> pixel_words_;  // scratch: what goes to pixels_

@@ -102,6 +102,10 @@ GUARDS = {
     # Display lists that call lists: a list calling itself twice asks for 2^64 calls (GL nests
     # 64 deep), a hang in any GL. While a list is compiled, at most one list call goes into it,
     # so nested lists are chains, never trees.
+    # Evaluator meshes: glpt evaluates up to 2^24 points per mesh, as GL allows (seconds of work,
+    # tens of seconds under the sanitizers): spans past 64K points are legal and merely slow.
+    "glEvalMesh1": "d.mesh_fits(i1, i2, 0, 0)",
+    "glEvalMesh2": "d.mesh_fits(i1, i2, j1, j2)",
     "glCallList": "d.list_calls_fit(1)",
     "glCallLists": "d.list_calls_fit(n)",
 }

@@ -262,6 +262,11 @@ class Decoder {
   bool client_range_fits(GLuint start, GLuint end) {
     return !reads_client_arrays() || end < start || end < GLuint{kMaxVertices};
   }
+  // Guard of glEvalMesh1/2: at most 64K points (a reversed or empty span draws none).
+  bool mesh_fits(GLint i1, GLint i2, GLint j1, GLint j2) {
+    const auto span = [](GLint a, GLint b) { return std::max<int64_t>(0, int64_t{b} - a + 1); };
+    return span(i1, i2) * std::max<int64_t>(1, span(j1, j2)) <= (int64_t{1} << 16);
+  }
   void skip_unsafe_draw() { ++g_stats.unsafe_draws_skipped; }
   // glCallLists' count: small (each list named may call a chain of 64 more).
   GLsizei list_count() { return std::min(count(), GLint{64}); }

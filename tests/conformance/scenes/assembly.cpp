@@ -341,4 +341,80 @@ GLPT_SCENE(assembly_display_list_stippled_line_strips, 64, 64) {
   glDeleteLists(list, 1);
 }
 
+// Consecutive glBegin/glEnd blocks of different modes under one state, as glxgears draws its
+// gears: glpt draws such a run as one Vulkan draw (rt_core/raster/draw_merging.hpp), each block
+// still in Mesa's own triangles and order. Lit and flat shaded: each block's normal is one value
+// given before glBegin (constant within the block, different between blocks), some blocks give
+// colours per vertex and some once. Lit (bottom) and unlit (top), directly (left) and from a
+// display list (right: indexed).
+GLPT_SCENE(assembly_mixed_modes_under_one_state, 64, 64) {
+  begin_scene();
+  light4(GL_LIGHT0, GL_POSITION, 0.3f, 0.5f, 1.0f, 0.0f);
+  glEnable(GL_LIGHT0);
+  glShadeModel(GL_FLAT);
+  auto blocks = [] {
+    glNormal3f(0.0f, 0.0f, 1.0f);
+    glBegin(GL_QUAD_STRIP);
+    for (int i = 0; i < 5; ++i) {
+      glColor3fv(kCorners[i % 4]);
+      glVertex2f(2.0f + 6.0f * static_cast<float>(i), 2.0f + (i % 2 ? 1.5f : 0.0f));
+      glVertex2f(2.5f + 6.0f * static_cast<float>(i), 12.0f);
+    }
+    glEnd();
+    glNormal3f(0.6f, 0.0f, 0.8f);
+    glBegin(GL_QUADS);
+    corner_quad(8.0f, 22.0f, 6.0f, 1);
+    corner_quad(22.0f, 22.0f, 6.0f, 2, false);
+    glEnd();
+    glNormal3f(0.0f, 0.6f, 0.8f);
+    glColor3f(0.8f, 0.5f, 0.2f);
+    glBegin(GL_POLYGON);
+    for (int i = 0; i < 6; ++i) {
+      const float a = static_cast<float>(i) * 1.0472f;
+      glVertex2f(10.0f + 7.0f * std::cos(a), 40.0f + 6.0f * std::sin(a));
+    }
+    glEnd();
+    glBegin(GL_TRIANGLE_FAN);
+    glNormal3f(-0.5f, 0.0f, 0.85f);
+    glVertex2f(24.0f, 40.0f);
+    for (int i = 0; i < 5; ++i) {
+      glColor3fv(kCorners[(i + 1) % 4]);
+      glVertex2f(24.0f + 7.0f * std::cos(0.9f * static_cast<float>(i)),
+                 40.0f + 7.0f * std::sin(0.9f * static_cast<float>(i)));
+    }
+    glEnd();
+    glShadeModel(GL_SMOOTH);  // a new state: the next block starts another run
+    glBegin(GL_TRIANGLE_STRIP);
+    for (int i = 0; i < 6; ++i) {
+      glNormal3f(0.1f * static_cast<float>(i), 0.0f, 1.0f);
+      glVertex2f(2.0f + 5.0f * static_cast<float>(i), 52.0f + (i % 2 ? 8.0f : 0.0f));
+    }
+    glEnd();
+    glBegin(GL_TRIANGLES);
+    glVertex2f(3.0f, 62.0f);
+    glVertex2f(28.0f, 61.0f);
+    glVertex2f(15.0f, 58.5f);
+    glEnd();
+    glShadeModel(GL_FLAT);
+  };
+  const GLuint list = glGenLists(1);
+  glNewList(list, GL_COMPILE);
+  blocks();
+  glEndList();
+  for (int lit = 0; lit < 2; ++lit) {
+    if (lit)
+      glEnable(GL_LIGHTING);
+    else
+      glDisable(GL_LIGHTING);
+    glPushMatrix();
+    glTranslatef(0.0f, lit ? 0.0f : 32.0f, 0.0f);
+    glScalef(1.0f, 0.5f, 1.0f);
+    blocks();
+    glTranslatef(32.0f, 0.0f, 0.0f);
+    glCallList(list);
+    glPopMatrix();
+  }
+  glDeleteLists(list, 1);
+}
+
 }  // namespace
