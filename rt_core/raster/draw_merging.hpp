@@ -8,15 +8,13 @@
 //
 // Merging changes no pixel: every draw is decomposed on its own into Mesa's triangles in Mesa's
 // order (decompose.hpp), and the merged index list draws them in the same order, each with its
-// own vertices. Only what the shaders index per draw rules a draw out: per-vertex materials
-// (RasterPushConstants::materials) and the edge masks of unfilled polygons; points and lines
-// (stipple and strips) and geometry big enough to stay resident (ResidentGeometry) are drawn as
-// they are. The G-buffer pass keeps one draw per command (the geometry shader's ids).
+// own vertices (back to back in the record's vertex streams, vertex_streams.hpp). Only draws the
+// streams take are merged, filled triangles only: the unfilled polygons' edge masks are found per
+// draw, points and lines keep their stipple and strips. The G-buffer pass draws every command
+// on its own (each keeps its identity for the tracer).
 #pragma once
 
-#include <array>
 #include <cstdint>
-#include <span>
 #include <vector>
 
 #include "rt_core/raster/raster_recording.hpp"
@@ -32,14 +30,5 @@ bool mergeable_draw(const rec::FrameRecord& record, const rec::Draw& draw);
 uint64_t append_filled_triangles(const rec::VertexData& v, const rec::AssemblyState& assembly,
                                  uint32_t base, rec::Decomposed& scratch,
                                  std::vector<uint32_t>& out);
-
-// Lays the vertex attributes of `draws` out back to back in `arena` and says where they are: an
-// attribute every draw lacks reads the default at `default_offset + default_at`, one value the
-// draws all share is stored once, anything else is one value per vertex (a draw's single value
-// or default repeated over its vertices). `offsets` and `strides` per attribute location.
-void merge_attributes(std::span<const rec::VertexData* const> draws, Arena& arena,
-                      const uint8_t* defaults, VkDeviceSize default_offset,
-                      std::array<VkDeviceSize, GLPT_RASTER_ATTR_COUNT>& offsets,
-                      std::array<VkDeviceSize, GLPT_RASTER_ATTR_COUNT>& strides);
 
 }  // namespace glpt::rt

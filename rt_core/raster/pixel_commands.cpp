@@ -400,9 +400,8 @@ void RasterRenderer::record_pixels(Recording& r, size_t index) {
                                         glm::uvec4(0u)};
     vkCmdPushConstants(r.cmd, pipelines_.layout(), pipelines_.push_constant_stages(), 0,
                        sizeof push, &push);
-    bind_geometry(r.cmd, plan.quad);
     queries_.before_draw(r.cmd, r.counting);
-    vkCmdDrawIndexed(r.cmd, plan.quad.index_count, 1, 0, 0, 0);
+    draw_geometry(r, plan.quad);
   };
 
   // ---- stencil images: only the stencil buffer, under the scissor and the stencil write mask

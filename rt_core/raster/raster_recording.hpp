@@ -40,21 +40,23 @@ class Arena {
   VkDeviceSize add_external(const T* data, size_t count) {
     return place(reinterpret_cast<const uint8_t*>(data), 0, count * sizeof(T));
   }
-  // One piece made of several arrays laid back to back (no alignment between them), in `local`:
-  // begin_joined() starts it, append() and append_repeated() extend it until the next add.
-  VkDeviceSize begin_joined() {
-    const VkDeviceSize offset = place(nullptr, local_.size(), 0);
-    pieces_.push_back({offset, nullptr, local_.size(), 0});
+  // A region of `bytes` that add_external_at() and add_repeated_at() fill (all of it, before
+  // write_to: nothing else writes it).
+  VkDeviceSize reserve(size_t bytes) {
+    const VkDeviceSize offset = place(nullptr, 0, 0);
+    size_ = offset + bytes;
     return offset;
   }
-  void append(const uint8_t* data, size_t bytes) {
-    local_.insert(local_.end(), data, data + bytes);
-    extend_joined(bytes);
+  void add_external_at(VkDeviceSize offset, const uint8_t* data, size_t bytes) {
+    if (bytes > 0) pieces_.push_back({offset, data, 0, bytes});
   }
-  void append_repeated(const uint8_t* element, size_t element_bytes, size_t count) {
+  void add_repeated_at(VkDeviceSize offset, const uint8_t* element, size_t element_bytes,
+                       size_t count) {
+    const size_t local_offset = local_.size();
+    local_.resize(local_offset + element_bytes * count);
     for (size_t k = 0; k < count; ++k)
-      local_.insert(local_.end(), element, element + element_bytes);
-    extend_joined(element_bytes * count);
+      std::memcpy(local_.data() + local_offset + k * element_bytes, element, element_bytes);
+    if (count > 0) pieces_.push_back({offset, nullptr, local_offset, element_bytes * count});
   }
   size_t size() const { return size_; }
   // Copies every piece to its offset in `destination` (size() bytes).
@@ -72,10 +74,6 @@ class Arena {
     size_t local_offset;
     size_t bytes;
   };
-  void extend_joined(size_t bytes) {
-    pieces_.back().bytes += bytes;
-    size_ += bytes;
-  }
   VkDeviceSize place(const uint8_t* external, size_t local_offset, size_t bytes) {
     const size_t offset = (size_ + 15) & ~size_t{15};
     size_ = offset + bytes;
@@ -132,6 +130,9 @@ struct RasterRenderer::DrawGeometry {
   RasterTopology topology = RasterTopology::kTriangles;
   // Per-vertex materials (RasterPushConstants::materials): all zero when the draw has none.
   glm::uvec4 materials{0u};
+  // Added to every index (vkCmdDrawIndexed's vertexOffset): where the draw's vertices start in
+  // the record's shared vertex streams (vertex_streams.hpp).
+  int32_t vertex_offset = 0;
   // The draws after this one whose triangles it draws too (draw_merging.hpp); their own
   // geometry is empty.
   uint32_t merged_draws = 0;
@@ -183,6 +184,11 @@ struct RasterRenderer::Recording {
   PipelineKey blend_key;
   VkViewport viewport{};
   VkRect2D scissor{};
+  // The vertex and index buffers last bound in this command buffer, when valid.
+  bool geometry_bound = false;
+  std::array<VkBuffer, GLPT_RASTER_ATTR_COUNT> bound_buffers{};
+  std::array<VkDeviceSize, GLPT_RASTER_ATTR_COUNT> bound_offsets{}, bound_strides{};
+  VkBuffer bound_index_buffer = VK_NULL_HANDLE;
   const GBufferTargets* gbuffer = nullptr;  // path-traced mode's G-buffer pass
   // The occlusion query the command being recorded counts into (0: none); its draw calls pass
   // it to OcclusionQueries::before_draw.

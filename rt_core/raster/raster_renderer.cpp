@@ -12,6 +12,7 @@
 #include "rt_core/raster/draw_merging.hpp"
 #include "rt_core/raster/raster_recording.hpp"
 #include "rt_core/raster/state_uniforms.hpp"
+#include "rt_core/raster/vertex_streams.hpp"
 #include "rt_core/vk/vk_error.hpp"
 #include "rt_core/vk/vk_info.hpp"
 
@@ -208,6 +209,14 @@ void RasterRenderer::execute(const rec::FrameRecord& record, DrawableBuffers& bu
   r.clear_geometry.strides[GLPT_RASTER_ATTR_POSITION] = sizeof(glm::vec4);
   r.clear_geometry.index_offset = arena.add(clear_indices, 3);
   r.clear_geometry.index_count = 3;
+  // The small draws' vertices go into shared streams (vertex_streams.hpp): sized first.
+  VertexStreams streams;
+  for (size_t i : *commands)
+    if (const auto* draw = std::get_if<rec::Draw>(&record.commands[i]);
+        draw != nullptr && draw->vertices && VertexStreams::takes(*draw->vertices))
+      streams.count(*draw->vertices);
+  streams.reserve(arena);
+  const auto* default_bytes = reinterpret_cast<const uint8_t*>(defaults);
   std::vector<uint32_t>& indices = indices_;
   std::vector<uint8_t>& edge_masks = edge_masks_;
   std::vector<gpu::RasterMaterial> materials;
@@ -226,8 +235,9 @@ void RasterRenderer::execute(const rec::FrameRecord& record, DrawableBuffers& bu
     if (prepare_pixels(r, i, arena, states, next_clear_state)) continue;
     const auto* draw = std::get_if<rec::Draw>(&command);
     if (draw == nullptr || !draw->vertices) continue;
-    if (gbuffer == nullptr) {
-      const size_t merged = merge_draws(r, *commands, position, arena, defaults, default_offset);
+    if (gbuffer == nullptr && streams.reserved()) {
+      const size_t merged =
+          merge_draws(r, *commands, position, arena, streams, default_bytes, default_offset);
       if (merged > 0) {
         position += merged - 1;
         continue;
@@ -237,8 +247,15 @@ void RasterRenderer::execute(const rec::FrameRecord& record, DrawableBuffers& bu
     DrawGeometry& g = r.geometry[i];
     ResidentGeometry::Entry* resident = resident_.use(*device_, v, frame_);
     if (resident != nullptr) ++stats.resident_draws;
+    const bool streamed =
+        resident == nullptr && VertexStreams::takes(v) && streams.fits(v.vertex_count());
+    if (streamed) {
+      g.vertex_offset = streams.add(v, arena, default_bytes);
+      streams.locate(default_offset, g.offsets, g.strides);
+    }
     for_each_attribute(v, [&](uint32_t location, const auto& values, VkDeviceSize default_at) {
       using T = typename std::decay_t<decltype(values)>::value_type;
+      if (streamed) return;
       if (values.empty()) {
         g.offsets[location] = default_offset + default_at;
         g.strides[location] = 0;
@@ -424,6 +441,7 @@ void RasterRenderer::execute(const rec::FrameRecord& record, DrawableBuffers& bu
       r.written_sets.clear();  // an earlier submission's sets may be reused by now
       r.dynamic_valid = false;
       r.blend_valid = false;
+      r.geometry_bound = false;
       if (position == 0) queries_.reset_slots(cmd);
       if (gbuffer && position == 0) {
         // Nothing is traced where no traced draw lands: the SURFACE attachment starts at 0.
@@ -947,16 +965,13 @@ void RasterRenderer::record_clear(Recording& r, const rec::Clear& clear, uint32_
                                       glm::uvec4(0u)};
   vkCmdPushConstants(r.cmd, pipelines_.layout(), pipelines_.push_constant_stages(), 0, sizeof push,
                      &push);
-  const DrawGeometry& g = r.clear_geometry;
-  bind_geometry(r.cmd, g);
-  vkCmdDrawIndexed(r.cmd, g.index_count, 1, 0, 0, 0);
+  draw_geometry(r, r.clear_geometry);
   if (color && r.gbuffer) clear_gbuffer_surface(r, rect);
 }
 
 size_t RasterRenderer::merge_draws(Recording& r, const std::vector<size_t>& commands,
-                                   size_t position, Arena& arena,
-                                   std::span<const glm::vec4> defaults,
-                                   VkDeviceSize default_offset) {
+                                   size_t position, Arena& arena, VertexStreams& streams,
+                                   const uint8_t* defaults, VkDeviceSize default_offset) {
   const rec::FrameRecord& record = *r.record;
   const auto draw_at = [&](size_t p) {
     return std::get_if<rec::Draw>(&record.commands[commands[p]]);
@@ -975,25 +990,24 @@ size_t RasterRenderer::merge_draws(Recording& r, const std::vector<size_t>& comm
     vertices += next->vertices->vertex_count();
     if (vertices > kMaxMergedVertices) break;
   }
-  if (end - position < 2) return 0;
+  if (end - position < 2 || !streams.fits(vertices)) return 0;
 
-  merging_.clear();
   std::vector<uint32_t>& indices = indices_;
   indices.clear();
   const rec::StateSnapshot& state = record.states[lead.state];
   if (!finite_matrix(state.transform->modelview_projection))
     r.stats->non_finite_draws += static_cast<uint32_t>(end - position);
-  uint32_t base = 0;
+  DrawGeometry& g = r.geometry[commands[position]];
+  uint32_t base = 0;  // the run's vertices follow each other in the streams
   for (size_t p = position; p < end; ++p) {
     const rec::VertexData& v = *draw_at(p)->vertices;
-    merging_.push_back(&v);
+    const int32_t first = streams.add(v, arena, defaults);
+    if (p == position) g.vertex_offset = first;
     r.stats->non_finite_primitives +=
         append_filled_triangles(v, rec::assembly_state(state, v), base, decomposed_, indices);
     base += v.vertex_count();
   }
-  DrawGeometry& g = r.geometry[commands[position]];
-  merge_attributes(merging_, arena, reinterpret_cast<const uint8_t*>(defaults.data()),
-                   default_offset, g.offsets, g.strides);
+  streams.locate(default_offset, g.offsets, g.strides);
   g.topology = RasterTopology::kTriangles;
   g.index_offset = arena.add(indices.data(), indices.size());
   g.index_count = static_cast<uint32_t>(indices.size());
@@ -1080,21 +1094,34 @@ void RasterRenderer::record_draw_pass(Recording& r, const rec::Draw& draw, const
                                 : glm::uvec4(0u)};
   vkCmdPushConstants(r.cmd, pipelines_.layout(), pipelines_.push_constant_stages(), 0, sizeof push,
                      &push);
-  bind_geometry(r.cmd, g);
   queries_.before_draw(r.cmd, r.counting);
-  vkCmdDrawIndexed(r.cmd, g.index_count, 1, 0, 0, 0);
+  draw_geometry(r, g);
 }
 
-void RasterRenderer::bind_geometry(VkCommandBuffer cmd, const DrawGeometry& g) {
+void RasterRenderer::draw_geometry(Recording& r, const DrawGeometry& g) {
+  // Bindings only where they change: draws from the shared vertex streams bind nothing.
   std::array<VkBuffer, GLPT_RASTER_ATTR_COUNT> buffers;
   for (size_t a = 0; a < buffers.size(); ++a)
     buffers[a] = g.buffers[a] != VK_NULL_HANDLE ? g.buffers[a] : vertices_.handle();
-  vkCmdBindVertexBuffers2(cmd, 0, GLPT_RASTER_ATTR_COUNT, buffers.data(), g.offsets.data(), nullptr,
-                          g.strides.data());
+  if (!r.geometry_bound || buffers != r.bound_buffers || g.offsets != r.bound_offsets ||
+      g.strides != r.bound_strides) {
+    vkCmdBindVertexBuffers2(r.cmd, 0, GLPT_RASTER_ATTR_COUNT, buffers.data(), g.offsets.data(),
+                            nullptr, g.strides.data());
+    r.bound_buffers = buffers;
+    r.bound_offsets = g.offsets;
+    r.bound_strides = g.strides;
+  }
+  // The whole buffer, the draw's indices found by firstIndex (every index list starts at a
+  // multiple of 4 bytes: the upload buffer's pieces and resident entries are 16-byte aligned).
   const VkBuffer indices = g.ascending_indices                ? ascending_.handle()
                            : g.index_buffer != VK_NULL_HANDLE ? g.index_buffer
                                                               : vertices_.handle();
-  vkCmdBindIndexBuffer(cmd, indices, g.index_offset, VK_INDEX_TYPE_UINT32);
+  if (!r.geometry_bound || indices != r.bound_index_buffer)
+    vkCmdBindIndexBuffer(r.cmd, indices, 0, VK_INDEX_TYPE_UINT32);
+  r.bound_index_buffer = indices;
+  r.geometry_bound = true;
+  vkCmdDrawIndexed(r.cmd, g.index_count, 1, static_cast<uint32_t>(g.index_offset / 4),
+                   g.vertex_offset, 0);
 }
 
 void RasterRenderer::ensure_ascending_indices(uint32_t count) {

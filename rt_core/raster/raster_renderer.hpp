@@ -5,7 +5,6 @@
 
 #include <cstdint>
 #include <memory>
-#include <span>
 #include <unordered_map>
 #include <vector>
 
@@ -32,6 +31,7 @@ namespace gpu {
 struct RasterState;
 }
 class Arena;
+class VertexStreams;
 
 class RasterRenderer {
  public:
@@ -96,7 +96,7 @@ class RasterRenderer {
   // Geometry for the run of draws at `position` of `commands` drawn as one (draw_merging.hpp),
   // into the first one's DrawGeometry; returns the run's length (0: the draw is not merged).
   size_t merge_draws(Recording& r, const std::vector<size_t>& commands, size_t position,
-                     Arena& arena, std::span<const glm::vec4> defaults,
+                     Arena& arena, VertexStreams& streams, const uint8_t* defaults,
                      VkDeviceSize default_offset);
   // A merged draw's vertices stay far from 32-bit indices and from megabyte index lists.
   static constexpr uint64_t kMaxMergedVertices = uint64_t{1} << 20;
@@ -128,7 +128,8 @@ class RasterRenderer {
   bool read_current_color(uint32_t buffer, int32_t x, int32_t y, uint32_t width, uint32_t height,
                           std::vector<uint8_t>& rgba);
   // Binds the vertex and index buffers `geometry` names.
-  void bind_geometry(VkCommandBuffer cmd, const DrawGeometry& geometry);
+  // Binds the geometry's buffers where they differ from the bound ones and draws it.
+  void draw_geometry(Recording& r, const DrawGeometry& geometry);
   // ascending_ holds 0, 1, 2, ... for at least `count` indices.
   void ensure_ascending_indices(uint32_t count);
   bool read_image(const GpuImage& image, VkImageAspectFlags aspect, uint32_t texel_bytes, int32_t x,
@@ -208,7 +209,6 @@ class RasterRenderer {
   // allocated (and page-faulted in) again every frame.
   std::vector<uint8_t> upload_;
   std::vector<uint32_t> indices_;
-  std::vector<const rec::VertexData*> merging_;  // scratch: the draws merge_draws joins
   std::vector<uint8_t> edge_masks_;
   GpuBuffer pixels_;                   // images of this record's pixel rectangles (32-bit words)
   std::vector<uint32_t> pixel_words_;  // scratch: what goes to pixels_
