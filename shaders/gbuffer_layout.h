@@ -45,6 +45,8 @@
 // shader as GLPT_GBUFFER_VARYING_NORMAL's fourth component (the geometry shader's inputs are
 // limited to 64 components, 16 locations, on lavapipe), the triangle's largest out of it (flat).
 #define GLPT_GBUFFER_VARYING_TERM_MAGNITUDE 19
+// uint: the draw's state index (raster_types.h GLPT_RASTER_VARYING_STATE)
+#define GLPT_GBUFFER_VARYING_STATE 20
 
 #ifndef __cplusplus
 // Octahedral unit-vector encoding (Cigolle et al. 2014) in two snorm16 values: about 1e-4

@@ -52,7 +52,7 @@ layout(std430, set = 0, binding = GLPT_RASTER_BINDING_STATES) readonly buffer St
 };
 layout(push_constant) uniform Push { RasterPushConstants push; };
 // The draw's state, read field by field where used (never copied whole).
-#define S states[push.indices.x]
+#define S states[v_state]
 
 layout(set = 0, binding = GLPT_RASTER_BINDING_TEXTURES + 0) uniform sampler1D u_tex1d_0;
 layout(set = 0, binding = GLPT_RASTER_BINDING_TEXTURES + 1) uniform sampler2D u_tex2d_0;
@@ -90,6 +90,7 @@ layout(std430, set = 0, binding = GLPT_RASTER_BINDING_PIXELS) readonly buffer Pi
 #endif
 #define GLPT_VARYING_OUT in
 #define GLPT_COLOR_VARYING_OUT INTERPOLATION in
+#define GLPT_VARYINGS_INTO_FRAGMENT 1
 #include "raster_varyings.h"
 
 #if GLPT_GBUFFER
@@ -760,7 +761,7 @@ void write_gbuffer(vec4 color, bool back, vec4 texels[GLPT_RASTER_MAX_UNITS]) {
   uint flags = gbuffer_pack_precision(v_term_magnitude);
   if ((kVsFlags & GLPT_VS_LIGHTING) == 0u) {
     // Unlit: the exact colour raster mode writes; nothing to trace at this pixel.
-    o_surface = uvec4(push.indices.x + 1u, gbuffer_pack_normal(shading),
+    o_surface = uvec4(v_state + 1u, gbuffer_pack_normal(shading),
                       gbuffer_pack_normal(geometric), flags);
     o_material0 = uvec4(packUnorm4x8(clamp(color, 0.0, 1.0)), 0u, 0u, 0u);
     o_material1 = uvec4(0u);
@@ -804,7 +805,7 @@ void write_gbuffer(vec4 color, bool back, vec4 texels[GLPT_RASTER_MAX_UNITS]) {
   }
   if (any(isnan(lift)) || any(isinf(lift))) lift = vec3(0.0);
 
-  o_surface = uvec4(push.indices.x + 1u, gbuffer_pack_normal(shading),
+  o_surface = uvec4(v_state + 1u, gbuffer_pack_normal(shading),
                     gbuffer_pack_normal(geometric), flags | (packHalf2x16(vec2(m.shininess.x, 0.0)) << 16));
   o_material0 = uvec4(packHalf2x16(diffuse.rg), packHalf2x16(diffuse.ba), packHalf2x16(ambient.rg),
                       packHalf2x16(vec2(ambient.b, specular.r)));

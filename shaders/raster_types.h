@@ -248,8 +248,17 @@ struct RasterState {
 // only ones gallivm filters anisotropically) instead of Mesa's explicit lod.
 #define GLPT_TEX_ANISOTROPIC 256u
 
+// The draw's state index (its RasterState in GLPT_RASTER_BINDING_STATES) is the draw's
+// firstInstance, gl_InstanceIndex in the vertex shader, which hands it on as this flat varying
+// (through the geometry shaders). Not a push constant: lavapipe re-validates its shaders on every
+// vkCmdPushConstants (bench/many_draws: 2,000 draws a frame took twice the CPU), and the push
+// constants below rarely change from draw to draw. Location 12: geometry shaders take at most
+// 16 input locations; the G-buffer pass's geometry shader hands it on at
+// GLPT_GBUFFER_VARYING_STATE (its outputs from 12 on are the triangle's).
+#define GLPT_RASTER_VARYING_STATE 12
+
 struct RasterPushConstants {
-  uvec4 indices;  // x: state index, y: first edge-mask word of an unfilled draw
+  uvec4 indices;  // x: unused (0), y: first edge-mask word of an unfilled draw
   // Per-vertex materials (glMaterial between glBegin and glEnd), in the vertex buffer (bound as
   // GLPT_RASTER_BINDING_EDGES): x: first vec4, y: vec4s per vertex (10: the front then the back
   // RasterMaterial; 0: one pair for the whole draw), z: 1 when the draw has them (else the

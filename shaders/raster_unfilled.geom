@@ -29,13 +29,14 @@ layout(std430, set = 0, binding = GLPT_RASTER_BINDING_EDGES) readonly buffer Edg
 };
 layout(push_constant) uniform Push { RasterPushConstants push; };
 // The draw's state, read field by field where used (never copied whole).
-#define S states[push.indices.x]
+#define S states[g_state[0]]
 
 layout(location = 0) in vec4 g_front_color[];
 layout(location = 1) in vec4 g_back_color[];
 layout(location = 2) in vec4 g_front_secondary[];
 layout(location = 3) in vec4 g_back_secondary[];
 layout(location = 4) in vec4 g_texcoord[][GLPT_RASTER_MAX_UNITS];
+layout(location = GLPT_RASTER_VARYING_STATE) flat in uint g_state[];
 layout(location = 8) in float g_fog[];
 in gl_PerVertex {
   vec4 gl_Position;
@@ -48,6 +49,7 @@ layout(location = 1) out vec4 v_back_color;
 layout(location = 2) out vec4 v_front_secondary;
 layout(location = 3) out vec4 v_back_secondary;
 layout(location = 4) out vec4 v_texcoord[GLPT_RASTER_MAX_UNITS];
+layout(location = GLPT_RASTER_VARYING_STATE) flat out uint v_state;
 layout(location = 8) out float v_fog;
 out gl_PerVertex {
   vec4 gl_Position;
@@ -78,6 +80,7 @@ void emit(uint i, bool back, uint colour_from, float window_offset) {
   v_back_secondary = v_front_secondary;
   for (int u = 0; u < GLPT_RASTER_MAX_UNITS; ++u) v_texcoord[u] = g_texcoord[i][u];
   v_fog = g_fog[i];
+  v_state = g_state[i];
   // User clip planes pass through; the emitted lines are also clipped exactly to the view's
   // sides, as GL clips the polygon (see raster_ff.vert).
   int slot = 0;

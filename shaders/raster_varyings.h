@@ -14,6 +14,11 @@
 #endif
 
 layout(location = 0) GLPT_COLOR_VARYING_OUT vec4 v_front_color;
+#if defined(GLPT_VARYINGS_INTO_FRAGMENT) && GLPT_GBUFFER  // after raster_gbuffer.geom
+layout(location = GLPT_GBUFFER_VARYING_STATE) flat GLPT_VARYING_OUT uint v_state;
+#else
+layout(location = GLPT_RASTER_VARYING_STATE) flat GLPT_VARYING_OUT uint v_state;
+#endif
 #if (GLPT_VARYINGS & GLPT_VARYING_BACK) != 0
 layout(location = 1) GLPT_COLOR_VARYING_OUT vec4 v_back_color;
 #else

@@ -396,12 +396,10 @@ void RasterRenderer::record_pixels(Recording& r, size_t index) {
   const VkRect2D scissor = scissor_of(ops, buffers_->config);
   if (scissor.extent.width == 0 || scissor.extent.height == 0) return;
   auto draw_quad = [&](uint32_t keep) {
-    const gpu::RasterPushConstants push{glm::uvec4(plan.state, 0, keep, 0), glm::uvec4(0u),
-                                        glm::uvec4(0u)};
-    vkCmdPushConstants(r.cmd, pipelines_.layout(), pipelines_.push_constant_stages(), 0,
-                       sizeof push, &push);
+    push_constants(
+        r, gpu::RasterPushConstants{glm::uvec4(0, 0, keep, 0), glm::uvec4(0u), glm::uvec4(0u)});
     queries_.before_draw(r.cmd, r.counting);
-    draw_geometry(r, plan.quad);
+    draw_geometry(r, plan.quad, plan.state);
   };
 
   // ---- stencil images: only the stencil buffer, under the scissor and the stencil write mask

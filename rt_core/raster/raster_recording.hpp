@@ -184,6 +184,9 @@ struct RasterRenderer::Recording {
   PipelineKey blend_key;
   VkViewport viewport{};
   VkRect2D scissor{};
+  // The push constants last pushed in this command buffer, when valid.
+  bool push_valid = false;
+  gpu::RasterPushConstants pushed{};
   // The vertex and index buffers last bound in this command buffer, when valid.
   bool geometry_bound = false;
   std::array<VkBuffer, GLPT_RASTER_ATTR_COUNT> bound_buffers{};

@@ -442,6 +442,7 @@ void RasterRenderer::execute(const rec::FrameRecord& record, DrawableBuffers& bu
       r.dynamic_valid = false;
       r.blend_valid = false;
       r.geometry_bound = false;
+      r.push_valid = false;
       if (position == 0) queries_.reset_slots(cmd);
       if (gbuffer && position == 0) {
         // Nothing is traced where no traced draw lands: the SURFACE attachment starts at 0.
@@ -704,6 +705,10 @@ void RasterRenderer::bind(Recording& r, const PipelineKey& key,
   if (pipeline != r.bound_pipeline) {
     vkCmdBindPipeline(r.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
     r.bound_pipeline = pipeline;
+    // Pushed again after a pipeline change: lavapipe hands push constants to the stages bound
+    // when they are pushed, so a geometry shader bound later read none (polygon mode
+    // GL_FILL front, GL_POINT back: the back faces' points were lost).
+    r.push_valid = false;
   }
   if (pipelines_.blend_is_dynamic() && (!r.blend_valid || !same_blend(key, r.blend_key))) {
     pipelines_.set_blend_state(r.cmd, key);
@@ -961,11 +966,8 @@ void RasterRenderer::record_clear(Recording& r, const rec::Clear& clear, uint32_
                             z,
                             z};
   set_dynamic_state(r, d, viewport, rect);
-  const gpu::RasterPushConstants push{glm::uvec4(state_index, 0, 0, 0), glm::uvec4(0u),
-                                      glm::uvec4(0u)};
-  vkCmdPushConstants(r.cmd, pipelines_.layout(), pipelines_.push_constant_stages(), 0, sizeof push,
-                     &push);
-  draw_geometry(r, r.clear_geometry);
+  push_constants(r, gpu::RasterPushConstants{glm::uvec4(0u), glm::uvec4(0u), glm::uvec4(0u)});
+  draw_geometry(r, r.clear_geometry, state_index);
   if (color && r.gbuffer) clear_gbuffer_surface(r, rect);
 }
 
@@ -1088,17 +1090,26 @@ void RasterRenderer::record_draw_pass(Recording& r, const rec::Draw& draw, const
   set_dynamic_state(r, d, viewport, scissor);
   glm::uvec2 jitter(0u);
   if (to_gbuffer) std::memcpy(&jitter, &r.gbuffer->jitter, sizeof jitter);
-  const gpu::RasterPushConstants push{
-      glm::uvec4(draw.state, static_cast<uint32_t>(g.edge_offset / 4), jitter), g.materials,
-      setup.key.framebuffer_ops ? framebuffer_ops_constants(setup.key, d.blend_constant)
-                                : glm::uvec4(0u)};
-  vkCmdPushConstants(r.cmd, pipelines_.layout(), pipelines_.push_constant_stages(), 0, sizeof push,
-                     &push);
+  push_constants(
+      r, gpu::RasterPushConstants{
+             glm::uvec4(0u, static_cast<uint32_t>(g.edge_offset / 4), jitter), g.materials,
+             setup.key.framebuffer_ops ? framebuffer_ops_constants(setup.key, d.blend_constant)
+                                       : glm::uvec4(0u)});
   queries_.before_draw(r.cmd, r.counting);
-  draw_geometry(r, g);
+  draw_geometry(r, g, draw.state);
 }
 
-void RasterRenderer::draw_geometry(Recording& r, const DrawGeometry& g) {
+void RasterRenderer::push_constants(Recording& r, const gpu::RasterPushConstants& push) {
+  // Only when they change: lavapipe re-validates the bound shaders on every vkCmdPushConstants,
+  // which cost more than the draw itself (the state index is the draw's firstInstance).
+  if (r.push_valid && std::memcmp(&push, &r.pushed, sizeof push) == 0) return;
+  vkCmdPushConstants(r.cmd, pipelines_.layout(), pipelines_.push_constant_stages(), 0, sizeof push,
+                     &push);
+  r.pushed = push;
+  r.push_valid = true;
+}
+
+void RasterRenderer::draw_geometry(Recording& r, const DrawGeometry& g, uint32_t state_index) {
   // Bindings only where they change: draws from the shared vertex streams bind nothing.
   std::array<VkBuffer, GLPT_RASTER_ATTR_COUNT> buffers;
   for (size_t a = 0; a < buffers.size(); ++a)
@@ -1120,8 +1131,9 @@ void RasterRenderer::draw_geometry(Recording& r, const DrawGeometry& g) {
     vkCmdBindIndexBuffer(r.cmd, indices, 0, VK_INDEX_TYPE_UINT32);
   r.bound_index_buffer = indices;
   r.geometry_bound = true;
+  // The state index as firstInstance: gl_InstanceIndex (GLPT_RASTER_VARYING_STATE).
   vkCmdDrawIndexed(r.cmd, g.index_count, 1, static_cast<uint32_t>(g.index_offset / 4),
-                   g.vertex_offset, 0);
+                   g.vertex_offset, state_index);
 }
 
 void RasterRenderer::ensure_ascending_indices(uint32_t count) {

@@ -29,7 +29,8 @@ namespace glpt::rt {
 
 namespace gpu {
 struct RasterState;
-}
+struct RasterPushConstants;
+}  // namespace gpu
 class Arena;
 class VertexStreams;
 
@@ -129,7 +130,10 @@ class RasterRenderer {
                           std::vector<uint8_t>& rgba);
   // Binds the vertex and index buffers `geometry` names.
   // Binds the geometry's buffers where they differ from the bound ones and draws it.
-  void draw_geometry(Recording& r, const DrawGeometry& geometry);
+  // (The state index goes to the shaders as the draw's firstInstance.)
+  void draw_geometry(Recording& r, const DrawGeometry& geometry, uint32_t state_index);
+  // vkCmdPushConstants where they differ from the last ones of the command buffer.
+  void push_constants(Recording& r, const gpu::RasterPushConstants& push);
   // ascending_ holds 0, 1, 2, ... for at least `count` indices.
   void ensure_ascending_indices(uint32_t count);
   bool read_image(const GpuImage& image, VkImageAspectFlags aspect, uint32_t texel_bytes, int32_t x,
