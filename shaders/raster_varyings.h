@@ -7,7 +7,8 @@
 // the shaders are built in variants: GLPT_VARYINGS (GLPT_VARYING_* bits, raster_types.h) names the
 // varyings declared as interface variables; the others are private globals that the variant's
 // pipelines never read (RasterPipelines picks a variant whose bits cover the key's needs). The
-// front colour is always declared. The including shader defines GLPT_VARYING_OUT (out or in) and
+// front colour and the state index (raster_types.h GLPT_RASTER_VARYING_STATE) are always
+// declared. The including shader defines GLPT_VARYING_OUT (out or in) and
 // GLPT_COLOR_VARYING_OUT (with its colour interpolation qualifier).
 #ifndef GLPT_VARYINGS
 #define GLPT_VARYINGS GLPT_VARYINGS_ALL

@@ -1,24 +1,10 @@
 #include "rt_core/raster/draw_merging.hpp"
 
-#include <cmath>
-#include <cstring>
-
-#include "rt_core/raster/vertex_streams.hpp"
-
 namespace glpt::rt {
-namespace {
 
-bool finite(const glm::vec4& v) {
-  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && std::isfinite(v.w);
-}
-
-}  // namespace
-
-bool mergeable_draw(const rec::FrameRecord& record, const rec::Draw& draw) {
-  if (!draw.vertices || draw.state >= record.states.size()) return false;
-  const rec::VertexData& v = *draw.vertices;
-  if (rec::primitive_class(v.mode) != rec::PrimitiveClass::kTriangles || !VertexStreams::takes(v))
-    return false;
+bool mergeable_draw(const rec::FrameRecord& record, const rec::Draw& draw, bool streamed) {
+  if (!streamed || !draw.vertices || draw.state >= record.states.size()) return false;
+  if (rec::primitive_class(draw.vertices->mode) != rec::PrimitiveClass::kTriangles) return false;
   const rec::PrimitiveState& p = record.states[draw.state].raster->primitive;
   return p.polygon_mode_front == GL_FILL && p.polygon_mode_back == GL_FILL;
 }

@@ -22,8 +22,9 @@
 
 namespace glpt::rt {
 
-// Whether `draw` may share one Vulkan draw with neighbours of the same state.
-bool mergeable_draw(const rec::FrameRecord& record, const rec::Draw& draw);
+// Whether `draw` may share one Vulkan draw with neighbours of the same state; `streamed`: the
+// record's vertex streams take its vertices (VertexStreams::takes).
+bool mergeable_draw(const rec::FrameRecord& record, const rec::Draw& draw, bool streamed);
 
 // The filled triangles of `v` in Mesa's order (decompose.hpp), as vertex numbers plus `base`,
 // appended to `out`; triangles with a non-finite vertex are left out. Returns how many were.

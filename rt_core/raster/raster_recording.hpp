@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstring>
 #include <utility>
 #include <vector>
@@ -13,6 +14,10 @@
 #include "rt_core/raster/raster_renderer.hpp"
 
 namespace glpt::rt {
+
+inline bool finite(const glm::vec4& v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && std::isfinite(v.w);
+}
 
 // The colour buffers are BGRA8 (kColorFormat); the front end speaks RGBA8.
 inline void swap_red_and_blue(uint8_t* pixels, size_t count) {
@@ -156,6 +161,9 @@ struct RasterRenderer::Recording {
   std::vector<DrawGeometry> geometry;  // per command index (draws only)
   std::vector<uint32_t> clear_state;   // per command index: the state entry of a quad clear
   std::vector<PixelPlan> pixels;       // per command index (pixel rectangles only)
+  // Per command index: a draw whose vertices go into the record's vertex streams
+  // (VertexStreams::takes, asked once per draw).
+  std::vector<uint8_t> streamed;
   DrawGeometry clear_geometry;
   bool rendering = false;
   bool in_render_pass = false;  // rendering in RasterPipelines::render_pass (else dynamic)

@@ -42,10 +42,6 @@ T load_device_function(const VulkanDevice& device, const char* name) {
   return f;
 }
 
-bool finite(const glm::vec4& v) {
-  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && std::isfinite(v.w);
-}
-
 bool finite_matrix(const glm::mat4& m) {
   return finite(m[0]) && finite(m[1]) && finite(m[2]) && finite(m[3]);
 }
@@ -211,11 +207,14 @@ void RasterRenderer::execute(const rec::FrameRecord& record, DrawableBuffers& bu
   r.clear_geometry.index_count = 3;
   // The small draws' vertices go into shared streams (vertex_streams.hpp): sized first.
   VertexStreams streams;
+  r.streamed.assign(record.commands.size(), 0);
   for (size_t i : *commands)
     if (const auto* draw = std::get_if<rec::Draw>(&record.commands[i]);
-        draw != nullptr && draw->vertices && VertexStreams::takes(*draw->vertices))
+        draw != nullptr && draw->vertices && VertexStreams::takes(*draw->vertices)) {
       streams.count(*draw->vertices);
-  streams.reserve(arena);
+      r.streamed[i] = 1;
+    }
+  if (!streams.reserve(arena)) r.streamed.assign(record.commands.size(), 0);
   const auto* default_bytes = reinterpret_cast<const uint8_t*>(defaults);
   std::vector<uint32_t>& indices = indices_;
   std::vector<uint8_t>& edge_masks = edge_masks_;
@@ -235,7 +234,7 @@ void RasterRenderer::execute(const rec::FrameRecord& record, DrawableBuffers& bu
     if (prepare_pixels(r, i, arena, states, next_clear_state)) continue;
     const auto* draw = std::get_if<rec::Draw>(&command);
     if (draw == nullptr || !draw->vertices) continue;
-    if (gbuffer == nullptr && streams.reserved()) {
+    if (gbuffer == nullptr && r.streamed[i]) {
       const size_t merged =
           merge_draws(r, *commands, position, arena, streams, default_bytes, default_offset);
       if (merged > 0) {
@@ -247,28 +246,27 @@ void RasterRenderer::execute(const rec::FrameRecord& record, DrawableBuffers& bu
     DrawGeometry& g = r.geometry[i];
     ResidentGeometry::Entry* resident = resident_.use(*device_, v, frame_);
     if (resident != nullptr) ++stats.resident_draws;
-    const bool streamed =
-        resident == nullptr && VertexStreams::takes(v) && streams.fits(v.vertex_count());
-    if (streamed) {
+    // (Streamed draws are below ResidentGeometry::kMinBytes: never resident.)
+    if (r.streamed[i] && streams.fits(v.vertex_count())) {
       g.vertex_offset = streams.add(v, arena, default_bytes);
       streams.locate(default_offset, g.offsets, g.strides);
+    } else {
+      for_each_attribute(v, [&](uint32_t location, const auto& values, VkDeviceSize default_at) {
+        using T = typename std::decay_t<decltype(values)>::value_type;
+        if (values.empty()) {
+          g.offsets[location] = default_offset + default_at;
+          g.strides[location] = 0;
+          return;
+        }
+        if (resident != nullptr) {
+          g.buffers[location] = resident->buffer.handle();
+          g.offsets[location] = resident->offsets[location];
+        } else {
+          g.offsets[location] = arena.add_external(values.data(), values.size());
+        }
+        g.strides[location] = values.size() == 1 ? 0 : sizeof(T);
+      });
     }
-    for_each_attribute(v, [&](uint32_t location, const auto& values, VkDeviceSize default_at) {
-      using T = typename std::decay_t<decltype(values)>::value_type;
-      if (streamed) return;
-      if (values.empty()) {
-        g.offsets[location] = default_offset + default_at;
-        g.strides[location] = 0;
-        return;
-      }
-      if (resident != nullptr) {
-        g.buffers[location] = resident->buffer.handle();
-        g.offsets[location] = resident->offsets[location];
-      } else {
-        g.offsets[location] = arena.add_external(values.data(), values.size());
-      }
-      g.strides[location] = values.size() == 1 ? 0 : sizeof(T);
-    });
     // The draw's own indices, wherever its attributes are.
     auto own_indices = [&] {
       if (resident != nullptr) {
@@ -979,18 +977,19 @@ size_t RasterRenderer::merge_draws(Recording& r, const std::vector<size_t>& comm
     return std::get_if<rec::Draw>(&record.commands[commands[p]]);
   };
   const rec::Draw& lead = *draw_at(position);
-  if (!mergeable_draw(record, lead)) return 0;
+  if (!mergeable_draw(record, lead, r.streamed[commands[position]])) return 0;
   // The run of draws after it under the same state, counting into the same occlusion query.
   const uint64_t query = queries_.query_of(commands[position]);
   uint64_t vertices = lead.vertices->vertex_count();
   size_t end = position + 1;
   for (; end < commands.size(); ++end) {
     const rec::Draw* next = draw_at(end);
-    if (next == nullptr || next->state != lead.state || !mergeable_draw(record, *next) ||
-        queries_.query_of(commands[end]) != query)
+    if (next == nullptr || next->state != lead.state ||
+        !mergeable_draw(record, *next, r.streamed[commands[end]]) ||
+        queries_.query_of(commands[end]) != query ||
+        vertices + next->vertices->vertex_count() > kMaxMergedVertices)
       break;
     vertices += next->vertices->vertex_count();
-    if (vertices > kMaxMergedVertices) break;
   }
   if (end - position < 2 || !streams.fits(vertices)) return 0;
 

@@ -128,7 +128,6 @@ class RasterRenderer {
   // read_color on the buffers of the call in progress (glAccum reads the read buffer).
   bool read_current_color(uint32_t buffer, int32_t x, int32_t y, uint32_t width, uint32_t height,
                           std::vector<uint8_t>& rgba);
-  // Binds the vertex and index buffers `geometry` names.
   // Binds the geometry's buffers where they differ from the bound ones and draws it.
   // (The state index goes to the shaders as the draw's firstInstance.)
   void draw_geometry(Recording& r, const DrawGeometry& geometry, uint32_t state_index);
