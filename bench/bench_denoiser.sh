@@ -65,7 +65,7 @@ echo "command: $0 --frames $frames --rounds $rounds"
 printf '%-10s %-8s %-12s %10s %11s %13s %10s\n' scene size settings trace_ms denoise_ms \
   composite_ms den/trace
 for scene in glxgears lit_scene; do
-  for settings in "" "GLPT_DENOISE_KERNEL=2"; do
+  for settings in "" "GLPT_DENOISE_KERNEL=1" "GLPT_DENOISE_KERNEL=2"; do
     declare -A traces=() denoises=() composites=()
     for ((round = 0; round < rounds; ++round)); do
       for size in 320x240 640x480; do

@@ -103,6 +103,9 @@ using mat4 = glm::mat4;
 // No traced surface reflects specularly this frame (every material's specular is black): the
 // specular channel is zero, neither pass filters it and the composite takes it raw.
 #define GLPT_DN_NO_SPECULAR 8u
+// The previous frame filtered no specular channel: its history has none (the temporal pass
+// stores no zeros for a channel it leaves out), so this frame's specular starts afresh.
+#define GLPT_DN_PREVIOUS_NO_SPECULAR 16u
 
 // ---- radiance channels -----------------------------------------------------------------------
 // What the trace pass writes per pixel (RGBA32F, this frame's samples averaged; linear HDR
@@ -305,8 +308,8 @@ struct DenoiseUniforms {
   // x: colour alpha, y: moments alpha, z: fast-history alpha, w: fast-clamp width in standard
   // deviations (0: off)
   vec4 temporal;
-  // x: sigma depth, y: sigma normal (exponent), z: sigma luminance, w: kernel radius (1: 3x3,
-  // 2: 5x5)
+  // x: sigma depth, y: sigma normal (exponent), z: sigma luminance, w: a-trous kernel (0: four
+  // taps, cross and diagonal in turn; 1: 3x3; 2: 5x5)
   vec4 sigmas;
   // x: angle one pixel spans (perspective main camera), y: pixel size in eye units (parallel),
   // z: history length a clamped history falls back to, w: composite: weight of the accumulated

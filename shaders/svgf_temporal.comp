@@ -19,7 +19,11 @@
 //
 // Writes work slot 0 (colour + variance: the a-trous filter's input), this frame's history
 // (colour = the integrated colour until the first a-trous iteration overwrites it) and guide.
-// A channel the frame cannot have (filtered_channels) is not read; its history is zero.
+// A channel the frame cannot have (filtered_channels) is neither read nor written (the next
+// frame is told, GLPT_DN_PREVIOUS_NO_SPECULAR); a pixel the tracer did not shade writes its
+// guide's meta alone (id 0: every reader tests the id before the eye position). Image stores
+// are the dearest operation on lavapipe (a scalar store per lane and component): each one left
+// out counts.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_shader_image_load_formatted : require
 
@@ -79,19 +83,23 @@ bool shaded(ivec2 q, out uvec4 surface) {
 
 // Whether the previous frame's pixel q shows the point `previous_eye` (the current pixel's
 // surface point in the previous eye space) of object `id` with normal `previous_normal`.
-bool tap_matches(ivec2 q, uint id, vec3 previous_eye, vec3 previous_normal, float tolerance) {
+// `tap_length` is that pixel's history length (read with the guide, not again).
+bool tap_matches(ivec2 q, uint id, vec3 previous_eye, vec3 previous_normal, float tolerance,
+                 out uint tap_length) {
+  tap_length = 0u;
   if (!inside(q)) return false;
   DenoiseGuide g = load_previous_guide(q);
+  tap_length = g.meta.y;
   if (g.meta.x != id) return false;  // (0, no surface, is never a pixel's id)
   if (dot(previous_normal, guide_normal(g)) < 0.9) return false;
   return abs(dot(previous_normal, g.eye.xyz - previous_eye)) <= tolerance;
 }
 
-// Adds the previous frame's history at q with weight w.
-void add_history(ivec2 q, float w, inout vec3 colour[3], inout vec3 fast[3], inout vec2 moments[3],
-                 inout float history_length, inout float weight_sum) {
+// Adds the previous frame's history at q (of length tap_length) with weight w.
+void add_history(ivec2 q, float w, uint tap_length, inout vec3 colour[3], inout vec3 fast[3],
+                 inout vec2 moments[3], inout float history_length, inout float weight_sum) {
   weight_sum += w;
-  history_length += w * float(imageLoad(previous_guide_meta, q).y);
+  history_length += w * float(tap_length);
   for (uint c = 0u; c < 3u; ++c) {
     if (c >= filtered_channels()) break;
     vec4 slow = imageLoad(previous_history, ivec3(q, c));
@@ -107,7 +115,7 @@ void main() {
   if (!inside(pixel)) return;
   uvec4 surface;
   if (!shaded(pixel, surface)) {
-    store_guide(pixel, DenoiseGuide(vec4(0.0), uvec4(0u)));
+    imageStore(guide_meta, pixel, uvec4(0u));  // id 0: no surface (the eye is not read)
     return;
   }
   vec3 eye = imageLoad(gbuffer_position, pixel).xyz;
@@ -150,8 +158,10 @@ void main() {
                                   f.x * f.y);
       for (int t = 0; t < 4; ++t) {
         ivec2 q = base + ivec2(t & 1, t >> 1);
-        if (weights[t] > 0.0 && tap_matches(q, id, previous_eye.xyz, previous_normal, tolerance))
-          add_history(q, weights[t], previous_colour, previous_fast, previous_moments,
+        uint tap_length;
+        if (weights[t] > 0.0 &&
+            tap_matches(q, id, previous_eye.xyz, previous_normal, tolerance, tap_length))
+          add_history(q, weights[t], tap_length, previous_colour, previous_fast, previous_moments,
                       previous_length, weight_sum);
       }
       if (weight_sum == 0.0) {
@@ -159,8 +169,9 @@ void main() {
         for (int dy = -1; dy <= 1; ++dy)
           for (int dx = -1; dx <= 1; ++dx) {
             ivec2 q = centre + ivec2(dx, dy);
-            if (tap_matches(q, id, previous_eye.xyz, previous_normal, tolerance))
-              add_history(q, 1.0, previous_colour, previous_fast, previous_moments,
+            uint tap_length;
+            if (tap_matches(q, id, previous_eye.xyz, previous_normal, tolerance, tap_length))
+              add_history(q, 1.0, tap_length, previous_colour, previous_fast, previous_moments,
                           previous_length, weight_sum);
           }
       }
@@ -211,12 +222,15 @@ void main() {
   }
   float variances[3] = float[3](0.0, 0.0, 0.0);
   vec3 colours[3] = vec3[3](vec3(0.0), vec3(0.0), vec3(0.0));
+  // A specular channel the previous frame did not filter has no history stored: it was black
+  // there (and the fast-history clamp brings it up as for a light switched on).
+  if (channels > 2u && (dn.image.z & GLPT_DN_PREVIOUS_NO_SPECULAR) != 0u) {
+    previous_colour[2] = vec3(0.0);
+    previous_fast[2] = vec3(0.0);
+    previous_moments[2] = vec2(0.0);
+  }
   for (uint c = 0u; c < 3u; ++c) {
-    if (c >= channels) {
-      imageStore(history, ivec3(pixel, c), vec4(0.0));
-      imageStore(history, ivec3(pixel, 3u + c), vec4(0.0));
-      continue;
-    }
+    if (c >= channels) break;
     vec3 raw = raw_channel(pixel, c);
     float l = luminance(raw);
     vec3 colour = raw, fast = raw;

@@ -64,8 +64,9 @@ constexpr std::array kFlags = {
                 "SVGF normal edge-stopping exponent (default 128)"},
     QualityFlag{"--denoise-sigma-luminance", "GLPT_DENOISE_SIGMA_LUMINANCE", FlagValue::kNumber,
                 "S", "SVGF luminance edge-stopping, in standard deviations (default 4)"},
-    QualityFlag{"--denoise-kernel", "GLPT_DENOISE_KERNEL", FlagValue::kChoice, "1|2",
-                "SVGF kernel radius: 1 = 3x3 (default), 2 = 5x5 (the paper's)"},
+    QualityFlag{"--denoise-kernel", "GLPT_DENOISE_KERNEL", FlagValue::kChoice, "0|1|2",
+                "SVGF a-trous kernel: 0 = four taps, cross and diagonal in turn (default), "
+                "1 = 3x3, 2 = 5x5 (the paper's)"},
     QualityFlag{"--denoise-clamp", "GLPT_DENOISE_CLAMP", FlagValue::kNumber, "K",
                 "clamp the history to a fast average +- K deviations (default 3; 0 = off)"},
     QualityFlag{"--denoise-fast-alpha", "GLPT_DENOISE_FAST_ALPHA", FlagValue::kNumber, "A",

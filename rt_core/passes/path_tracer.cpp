@@ -213,10 +213,11 @@ void PathTracer::write_denoise_inputs(const TraceScene& scene, bool denoise, boo
     // No surface with a specular lobe: the specular channel holds nothing, and leaving it out
     // saves the denoiser a third of its work.
     if (!scene_.reflects_specularly) flags |= GLPT_DN_NO_SPECULAR;
+    if (!denoiser_.history_has_specular()) flags |= GLPT_DN_PREVIOUS_NO_SPECULAR;
     uniforms.image = glm::uvec4(scene.width, scene.height, flags, d.iterations);
     uniforms.temporal = glm::vec4(d.alpha, d.moments_alpha, d.fast_alpha, d.fast_clamp);
     uniforms.sigmas = glm::vec4(d.sigma_depth, d.sigma_normal, d.sigma_luminance,
-                                static_cast<float>(d.kernel_radius));
+                                static_cast<float>(d.kernel));
     // A history that was clamped counts as this many frames long: 3 brings a switched-on
     // light's error back in 4 frames (4 took 5), for a little more noise where noise clamps.
     constexpr float kClampedHistoryLength = 3.0f;
@@ -615,7 +616,8 @@ void PathTracer::trace(const TraceScene& scene, const TraceTargets& targets, Fra
                            &FrameStats::trace_ms});
     unreported_.push_back({device_->submit([&](VkCommandBuffer cmd) {
                              barrier(cmd);
-                             denoiser_.record(cmd, resources, settings_.denoise.iterations);
+                             denoiser_.record(cmd, resources, settings_.denoise.iterations,
+                                              scene_.reflects_specularly);
                            }),
                            &FrameStats::denoise_ms});
     trace_ticket_ = device_->submit([&](VkCommandBuffer cmd) {

@@ -80,7 +80,7 @@ bool SvgfDenoiser::prepare(uint32_t width, uint32_t height, const void* owner) {
 }
 
 void SvgfDenoiser::record(VkCommandBuffer cmd, const DenoiseResources& resources,
-                          uint32_t iterations) {
+                          uint32_t iterations, bool specular) {
   const uint32_t current = parity_, previous = parity_ ^ 1u;
   if (images_need_layout_) {
     for (int i = 0; i < 2; ++i) {
@@ -149,6 +149,7 @@ void SvgfDenoiser::record(VkCommandBuffer cmd, const DenoiseResources& resources
   barrier();
   parity_ = previous;
   history_valid_ = true;
+  history_has_specular_ = specular;
 }
 
 }  // namespace glpt::rt

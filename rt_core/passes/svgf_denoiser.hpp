@@ -47,8 +47,13 @@ class SvgfDenoiser {
   bool fits(uint32_t width, uint32_t height) const;
   // Records the temporal pass and `iterations` a-trous iterations; the result is in work() at
   // slot 0 (no iteration) or 1 + (iterations - 1) % 2. This frame's history becomes the
-  // previous one for the next record.
-  void record(VkCommandBuffer cmd, const DenoiseResources& resources, uint32_t iterations);
+  // previous one for the next record. `specular`: the frame filters the specular channel
+  // (GLPT_DN_NO_SPECULAR clear); without it the history holds no specular channel.
+  void record(VkCommandBuffer cmd, const DenoiseResources& resources, uint32_t iterations,
+              bool specular);
+  // Whether the previous frame's history has a specular channel (else the next frame's
+  // specular starts afresh: GLPT_DN_PREVIOUS_NO_SPECULAR).
+  bool history_has_specular() const { return history_has_specular_; }
   const GpuImage& work() const { return work_; }
   // The next frame starts without history (a failure, a cut the caller knows of).
   void forget_history() noexcept { history_valid_ = false; }
@@ -64,6 +69,7 @@ class SvgfDenoiser {
   uint32_t width_ = 0, height_ = 0;
   const void* owner_ = nullptr;
   bool history_valid_ = false;
+  bool history_has_specular_ = false;
   uint32_t parity_ = 0;
 };
 
