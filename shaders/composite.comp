@@ -49,7 +49,7 @@ layout(set = 0, binding = GLPT_CO_BINDING_CHANNELS + GLPT_CHANNEL_INDIRECT_DIFFU
 layout(set = 0, binding = GLPT_CO_BINDING_CHANNELS + GLPT_CHANNEL_SPECULAR, rgba32f)
     uniform readonly image2D channel_specular;
 // The denoiser's work slots (shared_types.h, GLPT_DN_BINDING_WORK).
-layout(set = 0, binding = GLPT_CO_BINDING_DENOISED, rgba32f) uniform readonly image2DArray denoised;
+layout(set = 0, binding = GLPT_CO_BINDING_DENOISED, rgba32ui) uniform readonly uimage2DArray denoised;
 layout(std140, set = 0, binding = GLPT_CO_BINDING_DENOISE) uniform DenoiseBlock {
   DenoiseUniforms dn;
 };
@@ -123,12 +123,17 @@ void main() {
   if ((dn.image.z & GLPT_DN_ACTIVE) != 0u && covered &&
       (lit || (dn.image.z & GLPT_DN_UNLIT_AO) != 0u)) {
     uint slot = dn.image.w == 0u ? 0u : 1u + (dn.image.w - 1u) % 2u;
-    int base = int(slot * 3u);
-    // A channel the denoiser did not filter (GLPT_DN_NO_SPECULAR) is zero: taken raw.
+    int base = int(slot * GLPT_DN_WORK_LAYERS);
+    // Two channels a texel, in half floats (GLPT_DN_BINDING_WORK). A channel the denoiser did
+    // not filter (GLPT_DN_NO_SPECULAR) is not there: taken raw.
+    uvec4 pair = imageLoad(denoised, ivec3(pixel, base));
     vec3 light[GLPT_CHANNELS] = vec3[GLPT_CHANNELS](
-        imageLoad(denoised, ivec3(pixel, base)).rgb, imageLoad(denoised, ivec3(pixel, base + 1)).rgb,
-        (dn.image.z & GLPT_DN_NO_SPECULAR) != 0u ? raw[GLPT_CHANNEL_SPECULAR]
-                                                 : imageLoad(denoised, ivec3(pixel, base + 2)).rgb);
+        vec3(unpackHalf2x16(pair.x), unpackHalf2x16(pair.y).x),
+        vec3(unpackHalf2x16(pair.z), unpackHalf2x16(pair.w).x),
+        (dn.image.z & GLPT_DN_NO_SPECULAR) != 0u
+            ? raw[GLPT_CHANNEL_SPECULAR]
+            : vec3(unpackHalf2x16(imageLoad(denoised, ivec3(pixel, base + 1)).x),
+                   unpackHalf2x16(imageLoad(denoised, ivec3(pixel, base + 1)).y).x));
     denoised_color = composite(pixel, surface, light);
     denoised_weight = clamp(dn.params.w, 0.0, 1.0);
   }

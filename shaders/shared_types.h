@@ -89,12 +89,15 @@ using mat4 = glm::mat4;
 // against stale light), a the second moment.
 #define GLPT_DN_BINDING_HISTORY 11
 #define GLPT_DN_BINDING_HISTORY_PREVIOUS 12
-// rgba32f array, layer slot * 3 + channel: slot 0 the temporally integrated colour, 1 and 2 the
-// a-trous iterations' ping-pong; rgb: radiance, a: its luminance variance.
+// rgba32ui array of half floats, per slot two layers (GLPT_DN_WORK_LAYERS): slot 0 the
+// temporally integrated colour, 1 and 2 the a-trous iterations' ping-pong. Layer 2 * slot holds
+// channels 0 (xy) and 1 (zw), layer 2 * slot + 1 channel 2 (xy); each channel's rgb radiance and
+// its luminance variance as four halves (svgf_common.h, pack_work).
 #define GLPT_DN_BINDING_WORK 13
 #define GLPT_DN_BINDING_SCENE 14      // the frame's TLAS (deformed surfaces' triangles)
 #define GLPT_DN_BINDING_INSTANCES 15  // GpuInstance[] (GLPT_PT_BINDING_INSTANCES' table)
 #define GLPT_DN_SLOTS 3
+#define GLPT_DN_WORK_LAYERS 2u  // per slot
 #define GLPT_DN_HISTORY_LAYERS 6
 // DenoiseUniforms::image.z flags
 #define GLPT_DN_HISTORY_VALID 1u  // the previous frame's guide and history belong to this size

@@ -36,8 +36,7 @@ float luminance_p[3], luminance_scale[3];  // log2(e) / (sigma_luminance * devia
 vec3 sums[3];
 float variance_sums[3], weight_sums[3];
 
-void add_channel(uint c, ivec2 q, float h, float log_geometry) {
-  vec4 value = load_work(iteration.input_slot, q, c);
+void add_channel(uint c, vec4 value, float h, float log_geometry) {
   float w = h * exp2(log_geometry - abs(luminance(value.rgb) - luminance_p[c]) * luminance_scale[c]);
   sums[c] += w * value.rgb;
   variance_sums[c] += w * w * value.a;
@@ -62,9 +61,10 @@ void add_tap(ivec2 pixel, ivec2 offset, float h, uint channels) {
   float log_geometry = -abs(dot(n_p, g.eye.xyz - x_p)) * depth_scale / length(vec2(offset)) +
                        dn.sigmas.y * log2(facing);
   if (!(log_geometry > -126.0)) return;  // a weight below the smallest normal float
-  add_channel(0u, q, h, log_geometry);
-  add_channel(1u, q, h, log_geometry);
-  if (channels > 2u) add_channel(2u, q, h, log_geometry);
+  uvec4 pair = load_work_pair(iteration.input_slot, q);
+  add_channel(0u, unpack_work(pair.xy), h, log_geometry);
+  add_channel(1u, unpack_work(pair.zw), h, log_geometry);
+  if (channels > 2u) add_channel(2u, load_work_specular(iteration.input_slot, q), h, log_geometry);
 }
 
 void main() {
@@ -78,10 +78,11 @@ void main() {
   depth_scale = log2_e / (dn.sigmas.x * pixel_footprint(x_p) * float(iteration.step) + 1e-20);
   uint channels = filtered_channels();  // a channel the frame cannot have is neither read nor written
 
-  for (uint c = 0u; c < 3u; ++c) {
-    centre_values[c] = c < channels ? load_work(iteration.input_slot, pixel, c) : vec4(0.0);
-    luminance_p[c] = luminance(centre_values[c].rgb);
-  }
+  uvec4 centre_pair = load_work_pair(iteration.input_slot, pixel);
+  centre_values[0] = unpack_work(centre_pair.xy);
+  centre_values[1] = unpack_work(centre_pair.zw);
+  centre_values[2] = channels > 2u ? load_work_specular(iteration.input_slot, pixel) : vec4(0.0);
+  for (uint c = 0u; c < 3u; ++c) luminance_p[c] = luminance(centre_values[c].rgb);
   // The centre's variance through a 3x3 Gaussian (the paper's prefilter): one noisy variance
   // estimate must not stop the filter. Later iterations read variance the previous iteration
   // filtered already: they take it as it is (a third of their cost saved, no measured loss).
@@ -94,9 +95,9 @@ void main() {
         ivec2 q = pixel + ivec2(dx, dy);
         if (!inside(q) || imageLoad(guide_meta, q).x == 0u) continue;
         float w = kernel_weight(dx, true) * kernel_weight(dy, true);
-        sum += w * vec3(load_work(iteration.input_slot, q, 0u).a,
-                        load_work(iteration.input_slot, q, 1u).a,
-                        channels > 2u ? load_work(iteration.input_slot, q, 2u).a : 0.0);
+        uvec4 pair = load_work_pair(iteration.input_slot, q);
+        sum += w * vec3(unpackHalf2x16(pair.y).y, unpackHalf2x16(pair.w).y,
+                        channels > 2u ? load_work_specular(iteration.input_slot, q).a : 0.0);
         total += w;
       }
     variance = sum / max(total, 1e-6);
@@ -145,15 +146,16 @@ void main() {
           add_tap(pixel, ivec2(dx, dy), kernel_weight(dx, false) * kernel_weight(dy, false),
                   channels);
   }
+  vec4 results[3];
   for (uint c = 0u; c < 3u; ++c) {
-    if (c >= channels) break;
     float inverse_weight = 1.0 / weight_sums[c];  // >= the centre's kernel weight
-    vec4 result = vec4(sums[c] * inverse_weight,
-                       variance_sums[c] * inverse_weight * inverse_weight);
-    store_work(iteration.output_slot, pixel, c, result);
-    if (iteration.feedback != 0u) {
-      vec4 colour = imageLoad(history, ivec3(pixel, c));
-      imageStore(history, ivec3(pixel, c), vec4(result.rgb, colour.a));
-    }
+    results[c] = vec4(sums[c] * inverse_weight, variance_sums[c] * inverse_weight * inverse_weight);
   }
+  store_work(iteration.output_slot, pixel, results[0], results[1], results[2], channels);
+  if (iteration.feedback != 0u)
+    for (uint c = 0u; c < 3u; ++c) {
+      if (c >= channels) break;
+      vec4 colour = imageLoad(history, ivec3(pixel, c));
+      imageStore(history, ivec3(pixel, c), vec4(results[c].rgb, colour.a));
+    }
 }

@@ -313,7 +313,7 @@ void main() {
         variances[c] = max(m.y - m.x * m.x, 0.0);
       }
   }
-  for (uint c = 0u; c < 3u; ++c)
-    if (c < channels) store_work(0u, pixel, c, vec4(colours[c], variances[c]));
+  store_work(0u, pixel, vec4(colours[0], variances[0]), vec4(colours[1], variances[1]),
+             vec4(colours[2], variances[2]), channels);
   store_guide(pixel, make_guide(eye, normal, id, uint(history_length)));
 }

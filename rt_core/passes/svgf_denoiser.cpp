@@ -39,9 +39,11 @@ bool SvgfDenoiser::fits(uint32_t width, uint32_t height) const {
   // The largest image, the work slots, within 2 GiB (lavapipe addresses an image with 32-bit
   // offsets) and the device's image limits.
   const VkPhysicalDeviceLimits& limits = device_.properties().limits;
-  const VkDeviceSize work = VkDeviceSize{width} * height * GLPT_DN_SLOTS * 3 * sizeof(gpu::vec4);
+  const VkDeviceSize work =
+      VkDeviceSize{width} * height * GLPT_DN_SLOTS * GLPT_DN_WORK_LAYERS * sizeof(gpu::uvec4);
   return work <= VkDeviceSize{0x7fffffff} && width <= limits.maxImageDimension2D &&
-         height <= limits.maxImageDimension2D && GLPT_DN_SLOTS * 3 <= limits.maxImageArrayLayers;
+         height <= limits.maxImageDimension2D &&
+         GLPT_DN_SLOTS * GLPT_DN_WORK_LAYERS <= limits.maxImageArrayLayers;
 }
 
 bool SvgfDenoiser::prepare(uint32_t width, uint32_t height, const void* owner) {
@@ -69,7 +71,7 @@ bool SvgfDenoiser::prepare(uint32_t width, uint32_t height, const void* owner) {
       guide_metas_[i] = image(VK_FORMAT_R32G32B32A32_UINT, 1);
       histories_[i] = image(VK_FORMAT_R32G32B32A32_SFLOAT, GLPT_DN_HISTORY_LAYERS);
     }
-    work_ = image(VK_FORMAT_R32G32B32A32_SFLOAT, GLPT_DN_SLOTS * 3);
+    work_ = image(VK_FORMAT_R32G32B32A32_UINT, GLPT_DN_SLOTS * GLPT_DN_WORK_LAYERS);
     images_need_layout_ = true;  // to GENERAL in the next record()
     width_ = width;
     height_ = height;

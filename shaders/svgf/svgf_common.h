@@ -31,7 +31,7 @@ layout(set = 0, binding = GLPT_DN_BINDING_GUIDE_META_PREVIOUS, rgba32ui)
 layout(set = 0, binding = GLPT_DN_BINDING_HISTORY, rgba32f) uniform image2DArray history;
 layout(set = 0, binding = GLPT_DN_BINDING_HISTORY_PREVIOUS, rgba32f)
     uniform readonly image2DArray previous_history;
-layout(set = 0, binding = GLPT_DN_BINDING_WORK, rgba32f) uniform image2DArray work;
+layout(set = 0, binding = GLPT_DN_BINDING_WORK, rgba32ui) uniform uimage2DArray work;
 
 DenoiseGuide load_guide(ivec2 p) {
   return DenoiseGuide(imageLoad(guide_eye, p), imageLoad(guide_meta, p));
@@ -49,10 +49,28 @@ void store_guide(ivec2 p, DenoiseGuide g) {
   imageStore(guide_eye, p, g.eye);
   imageStore(guide_meta, p, g.meta);
 }
-// Channel c of pixel p in work slot `slot`.
-vec4 load_work(uint slot, ivec2 p, uint c) { return imageLoad(work, ivec3(p, slot * 3u + c)); }
-void store_work(uint slot, ivec2 p, uint c, vec4 value) {
-  imageStore(work, ivec3(p, slot * 3u + c), value);
+// The work slots keep two channels per texel in half floats (shared_types.h,
+// GLPT_DN_BINDING_WORK): on lavapipe an image store is a scalar store per lane and component,
+// the dearest operation of the a-trous iterations, and a load is a call; one texel for the two
+// diffuse channels halves both. Half floats keep 11 bits: far below what 8-bit output shows.
+uvec2 pack_work(vec4 value) {
+  value = clamp(value, vec4(-65504.0), vec4(65504.0));  // beyond the largest half: infinite
+  return uvec2(packHalf2x16(value.rg), packHalf2x16(value.ba));
+}
+vec4 unpack_work(uvec2 packed) { return vec4(unpackHalf2x16(packed.x), unpackHalf2x16(packed.y)); }
+// Channels 0 (xy) and 1 (zw) of pixel p in work slot `slot`, packed.
+uvec4 load_work_pair(uint slot, ivec2 p) {
+  return imageLoad(work, ivec3(p, slot * GLPT_DN_WORK_LAYERS));
+}
+vec4 load_work_specular(uint slot, ivec2 p) {
+  return unpack_work(imageLoad(work, ivec3(p, slot * GLPT_DN_WORK_LAYERS + 1u)).xy);
+}
+// The `channels` (2 or 3) channels of pixel p into work slot `slot`.
+void store_work(uint slot, ivec2 p, vec4 channel0, vec4 channel1, vec4 channel2, uint channels) {
+  imageStore(work, ivec3(p, slot * GLPT_DN_WORK_LAYERS),
+             uvec4(pack_work(channel0), pack_work(channel1)));
+  if (channels > 2u)
+    imageStore(work, ivec3(p, slot * GLPT_DN_WORK_LAYERS + 1u), uvec4(pack_work(channel2), 0u, 0u));
 }
 
 // Whether pixel q lies in the image.
