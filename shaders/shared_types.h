@@ -83,22 +83,32 @@ using mat4 = glm::mat4;
 #define GLPT_DN_BINDING_GUIDE_META 8
 #define GLPT_DN_BINDING_GUIDE_PREVIOUS 9
 #define GLPT_DN_BINDING_GUIDE_META_PREVIOUS 10
-// This frame's history: rgba32f array; per channel c, layer c: rgb the temporally filtered
-// colour (the a-trous filter's first iteration, fed back as in the SVGF paper), a the first
-// luminance moment; layer 3 + c: rgb a short exponential average of the raw colour (the clamp
-// against stale light), a the second moment.
+// This frame's fast history: rgba32ui array of half floats in a work slot's layout (below), 2
+// layers: a short exponential average of the raw colour, the clamp against stale light (rgb;
+// the fourth halves unused). The colour history lives in the work image (slots 3 and 4).
 #define GLPT_DN_BINDING_HISTORY 11
 #define GLPT_DN_BINDING_HISTORY_PREVIOUS 12
 // rgba32ui array of half floats, per slot two layers (GLPT_DN_WORK_LAYERS): slot 0 the
-// temporally integrated colour, 1 and 2 the a-trous iterations' ping-pong. Layer 2 * slot holds
-// channels 0 (xy) and 1 (zw), layer 2 * slot + 1 channel 2 (xy); each channel's rgb radiance and
-// its luminance variance as four halves (svgf_common.h, pack_work).
+// temporally integrated colour, 1 and 2 the a-trous iterations' ping-pong, 3 and 4 the colour
+// history of alternate frames (DenoiseUniforms::slots): the temporally filtered colour, which the
+// a-trous filter's first iteration writes (the history fed back as in the SVGF paper, and the
+// second iteration's input), or the temporal pass where there is no iteration. Layer 2 * slot
+// holds channels 0 (xy) and 1 (zw), layer 2 * slot + 1 channel 2 (xy); each channel's rgb
+// radiance and its luminance variance as four halves (svgf_common.h, pack_work).
 #define GLPT_DN_BINDING_WORK 13
 #define GLPT_DN_BINDING_SCENE 14      // the frame's TLAS (deformed surfaces' triangles)
 #define GLPT_DN_BINDING_INSTANCES 15  // GpuInstance[] (GLPT_PT_BINDING_INSTANCES' table)
+// This frame's luminance moments: rgba32f array of GLPT_DN_MOMENT_LAYERS layers, layer 0 the
+// first and second moments of channel 0 (xy) and 1 (zw), layer 1 those of channel 2 (xy). In
+// float: the variance is a difference of them.
+#define GLPT_DN_BINDING_MOMENTS 16
+#define GLPT_DN_BINDING_MOMENTS_PREVIOUS 17
 #define GLPT_DN_SLOTS 3
 #define GLPT_DN_WORK_LAYERS 2u  // per slot
-#define GLPT_DN_HISTORY_LAYERS 6
+#define GLPT_DN_HISTORY_SLOTS 2  // slots GLPT_DN_SLOTS and GLPT_DN_SLOTS + 1
+#define GLPT_DN_HISTORY_LAYERS 2u
+#define GLPT_DN_MOMENT_LAYERS 2u
+#define GLPT_DN_SLOT_NONE 254u  // an a-trous iteration's second output: none
 // DenoiseUniforms::image.z flags
 #define GLPT_DN_HISTORY_VALID 1u  // the previous frame's guide and history belong to this size
 #define GLPT_DN_UNLIT_AO 2u       // unlit pixels carry AO in the indirect channel: denoise it
@@ -321,6 +331,8 @@ struct DenoiseUniforms {
   // xy: this frame's sub-pixel jitter (removed from the reprojection), z: 1 when the composite
   // reads the denoised colour, w: unused
   vec4 jitter;
+  // x: the work slot of this frame's colour history, y: the previous frame's, zw: unused
+  uvec4 slots;
 };
 
 struct GpuCounters {
@@ -341,7 +353,7 @@ static_assert(sizeof(FrameUniforms) == 96);
 static_assert(sizeof(GpuCounters) == 16);
 static_assert(sizeof(GpuStateHistory) == 160);
 static_assert(sizeof(DenoiseGuide) == 32);
-static_assert(sizeof(DenoiseUniforms) == 80);
+static_assert(sizeof(DenoiseUniforms) == 96);
 }  // namespace glpt::rt::gpu
 #endif
 

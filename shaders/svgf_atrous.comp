@@ -18,10 +18,11 @@
 #include "svgf/svgf_common.h"
 
 layout(push_constant) uniform Iteration {
-  uint step;      // tap spacing in pixels
-  uint input_slot;
-  uint output_slot;
-  uint feedback;  // 1: also write the result as this frame's colour history
+  uint step;         // tap spacing in pixels
+  uint input_slot;   // work slots (shared_types.h, GLPT_DN_BINDING_WORK)
+  uint output_slot;  // the first iteration's result is the colour history
+  uint also_output;  // a work slot written as well (the first iteration when it is the last), or
+                     // GLPT_DN_SLOT_NONE
 } iteration;
 
 // One a-trous tap per channel, weighed as above. The weights are computed as one exp2 per
@@ -152,10 +153,6 @@ void main() {
     results[c] = vec4(sums[c] * inverse_weight, variance_sums[c] * inverse_weight * inverse_weight);
   }
   store_work(iteration.output_slot, pixel, results[0], results[1], results[2], channels);
-  if (iteration.feedback != 0u)
-    for (uint c = 0u; c < 3u; ++c) {
-      if (c >= channels) break;
-      vec4 colour = imageLoad(history, ivec3(pixel, c));
-      imageStore(history, ivec3(pixel, c), vec4(results[c].rgb, colour.a));
-    }
+  if (iteration.also_output != GLPT_DN_SLOT_NONE)
+    store_work(iteration.also_output, pixel, results[0], results[1], results[2], channels);
 }

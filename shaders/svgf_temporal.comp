@@ -17,8 +17,9 @@
 // the normal finds the pixel's triangle and barycentrics, and the point moves by the triangle's
 // deformation before the state's transforms apply.
 //
-// Writes work slot 0 (colour + variance: the a-trous filter's input), this frame's history
-// (colour = the integrated colour until the first a-trous iteration overwrites it) and guide.
+// Writes work slot 0 (colour + variance: the a-trous filter's input), this frame's fast
+// average and moments (the colour history is the first a-trous iteration's result, or written
+// here when there is no iteration) and guide.
 // A channel the frame cannot have (filtered_channels) is neither read nor written (the next
 // frame is told, GLPT_DN_PREVIOUS_NO_SPECULAR); a pixel the tracer did not shade writes its
 // guide's meta alone (id 0: every reader tests the id before the eye position). Image stores
@@ -100,13 +101,20 @@ void add_history(ivec2 q, float w, uint tap_length, inout vec3 colour[3], inout 
                  inout vec2 moments[3], inout float history_length, inout float weight_sum) {
   weight_sum += w;
   history_length += w * float(tap_length);
-  for (uint c = 0u; c < 3u; ++c) {
-    if (c >= filtered_channels()) break;
-    vec4 slow = imageLoad(previous_history, ivec3(q, c));
-    vec4 quick = imageLoad(previous_history, ivec3(q, 3u + c));
-    colour[c] += w * slow.rgb;
-    fast[c] += w * quick.rgb;
-    moments[c] += w * vec2(slow.a, quick.a);
+  // Two channels a texel (shared_types.h, GLPT_DN_BINDING_HISTORY and _MOMENTS).
+  uvec4 slow = load_work_pair(dn.slots.y, q);
+  uvec4 quick = imageLoad(previous_history, ivec3(q, 0));
+  vec4 first_two = imageLoad(previous_history_moments, ivec3(q, 0));
+  colour[0] += w * unpack_work(slow.xy).rgb;
+  colour[1] += w * unpack_work(slow.zw).rgb;
+  fast[0] += w * unpack_work(quick.xy).rgb;
+  fast[1] += w * unpack_work(quick.zw).rgb;
+  moments[0] += w * first_two.xy;
+  moments[1] += w * first_two.zw;
+  if (filtered_channels() > 2u) {
+    colour[2] += w * load_work_specular(dn.slots.y, q).rgb;
+    fast[2] += w * unpack_work(imageLoad(previous_history, ivec3(q, 1)).xy).rgb;
+    moments[2] += w * imageLoad(previous_history_moments, ivec3(q, 1)).xy;
   }
 }
 
@@ -222,6 +230,8 @@ void main() {
   }
   float variances[3] = float[3](0.0, 0.0, 0.0);
   vec3 colours[3] = vec3[3](vec3(0.0), vec3(0.0), vec3(0.0));
+  vec3 fasts[3] = vec3[3](vec3(0.0), vec3(0.0), vec3(0.0));
+  vec2 all_moments[3] = vec2[3](vec2(0.0), vec2(0.0), vec2(0.0));
   // A specular channel the previous frame did not filter has no history stored: it was black
   // there (and the fast-history clamp brings it up as for a light switched on).
   if (channels > 2u && (dn.image.z & GLPT_DN_PREVIOUS_NO_SPECULAR) != 0u) {
@@ -275,8 +285,15 @@ void main() {
     }
     colours[c] = colour;
     variances[c] = max(moments.y - moments.x * moments.x, 0.0);
-    imageStore(history, ivec3(pixel, c), vec4(colour, moments.x));
-    imageStore(history, ivec3(pixel, 3u + c), vec4(fast, moments.y));
+    fasts[c] = fast;
+    all_moments[c] = moments;
+  }
+  imageStore(history, ivec3(pixel, 0),
+             uvec4(pack_work(vec4(fasts[0], 0.0)), pack_work(vec4(fasts[1], 0.0))));
+  imageStore(history_moments, ivec3(pixel, 0), vec4(all_moments[0], all_moments[1]));
+  if (channels > 2u) {
+    imageStore(history, ivec3(pixel, 1), uvec4(pack_work(vec4(fasts[2], 0.0)), 0u, 0u));
+    imageStore(history_moments, ivec3(pixel, 1), vec4(all_moments[2], 0.0, 0.0));
   }
   // A clamp shortens the history for the next frames' weights but keeps the moments' variance
   // (moved with the colour above): the spatial estimate is for histories that are short.
@@ -315,5 +332,9 @@ void main() {
   }
   store_work(0u, pixel, vec4(colours[0], variances[0]), vec4(colours[1], variances[1]),
              vec4(colours[2], variances[2]), channels);
+  // Without a-trous iterations the integrated colour is the history.
+  if (dn.image.w == 0u)
+    store_work(dn.slots.x, pixel, vec4(colours[0], variances[0]),
+               vec4(colours[1], variances[1]), vec4(colours[2], variances[2]), channels);
   store_guide(pixel, make_guide(eye, normal, id, uint(history_length)));
 }

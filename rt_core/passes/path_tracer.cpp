@@ -229,6 +229,8 @@ void PathTracer::write_denoise_inputs(const TraceScene& scene, bool denoise, boo
     uniforms.params = glm::vec4(scene.pixel_spread, scene.pixel_size_parallel,
                                 kClampedHistoryLength, accumulated_weight);
     uniforms.jitter = glm::vec4(frame_jitter_, 0.0f, 0.0f);
+    uniforms.slots =
+        glm::uvec4(denoiser_.history_slot(), denoiser_.previous_history_slot(), 0u, 0u);
     std::vector<gpu::GpuStateHistory>& histories = state_history_table_;
     histories.assign(std::max<size_t>(scene.states.size(), 1), gpu::GpuStateHistory{});
     for (size_t i = 0; i < scene.states.size(); ++i) {
@@ -261,9 +263,17 @@ void PathTracer::ensure_channels(uint32_t width, uint32_t height) {
   info.view_type = VK_IMAGE_VIEW_TYPE_2D_ARRAY;
   info.layers = 2;
   accumulation_ = GpuImage::create(*device_, info);
+  const bool placeholder_needed = !no_denoised_;
+  if (placeholder_needed) {
+    info.format = VK_FORMAT_R32G32B32A32_UINT;
+    info.extent = {1, 1, 1};
+    info.layers = 1;
+    no_denoised_ = GpuImage::create(*device_, info);
+  }
   device_->submit_and_wait([&](VkCommandBuffer cmd) {
     for (const GpuImage& image : channels_) image.initial_barrier(cmd);
     accumulation_.initial_barrier(cmd);
+    if (placeholder_needed) no_denoised_.initial_barrier(cmd);
   });
   channels_width_ = width;
   channels_height_ = height;
@@ -582,7 +592,7 @@ void PathTracer::trace(const TraceScene& scene, const TraceTargets& targets, Fra
     trace.channels[c] = composite.channels[c] = channels_[c].view();
   composite.front = targets.front;
   composite.back = targets.back;
-  composite.denoised = denoise ? denoiser_.work().view() : accumulation_.view();
+  composite.denoised = denoise ? denoiser_.work().view() : no_denoised_.view();
   composite.denoise_uniforms = &denoise_uniforms_;
   // Each pass reads what the one before wrote (also across submissions: a barrier's first scope
   // covers earlier submissions to the queue).

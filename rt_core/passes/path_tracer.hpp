@@ -158,6 +158,9 @@ class PathTracer {
   GpuBuffer clip_planes_;
   GpuBuffer states_;
   GpuImage accumulation_;  // sized with the channels (ensure_channels)
+  // A 1x1 stand-in for the denoiser's work image (rgba32ui array, GLPT_DN_BINDING_WORK), bound
+  // to the composite when the frame is not denoised (the composite does not read it then).
+  GpuImage no_denoised_;
 
   FrameSignature previous_signature_;
   bool same_scene_ = false;  // this frame's signature equals the previous frame's

@@ -26,11 +26,16 @@ constexpr VkDescriptorSetLayoutBinding kBindings[] = {
     compute_binding(GLPT_DN_BINDING_WORK, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
     compute_binding(GLPT_DN_BINDING_SCENE, VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR),
     compute_binding(GLPT_DN_BINDING_INSTANCES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
+    compute_binding(GLPT_DN_BINDING_MOMENTS, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
+    compute_binding(GLPT_DN_BINDING_MOMENTS_PREVIOUS, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
 };
 static_assert(GLPT_CHANNELS == 3);
 
+// The work slots and the two colour histories' (shared_types.h, GLPT_DN_BINDING_WORK).
+constexpr uint32_t kWorkLayers = (GLPT_DN_SLOTS + GLPT_DN_HISTORY_SLOTS) * GLPT_DN_WORK_LAYERS;
+
 struct IterationConstants {
-  uint32_t step, input_slot, output_slot, feedback;
+  uint32_t step, input_slot, output_slot, also_output;
 };
 
 }  // namespace
@@ -39,11 +44,9 @@ bool SvgfDenoiser::fits(uint32_t width, uint32_t height) const {
   // The largest image, the work slots, within 2 GiB (lavapipe addresses an image with 32-bit
   // offsets) and the device's image limits.
   const VkPhysicalDeviceLimits& limits = device_.properties().limits;
-  const VkDeviceSize work =
-      VkDeviceSize{width} * height * GLPT_DN_SLOTS * GLPT_DN_WORK_LAYERS * sizeof(gpu::uvec4);
+  const VkDeviceSize work = VkDeviceSize{width} * height * kWorkLayers * sizeof(gpu::uvec4);
   return work <= VkDeviceSize{0x7fffffff} && width <= limits.maxImageDimension2D &&
-         height <= limits.maxImageDimension2D &&
-         GLPT_DN_SLOTS * GLPT_DN_WORK_LAYERS <= limits.maxImageArrayLayers;
+         height <= limits.maxImageDimension2D && kWorkLayers <= limits.maxImageArrayLayers;
 }
 
 bool SvgfDenoiser::prepare(uint32_t width, uint32_t height, const void* owner) {
@@ -69,9 +72,10 @@ bool SvgfDenoiser::prepare(uint32_t width, uint32_t height, const void* owner) {
     for (int i = 0; i < 2; ++i) {
       guide_eyes_[i] = image(VK_FORMAT_R32G32B32A32_SFLOAT, 1);
       guide_metas_[i] = image(VK_FORMAT_R32G32B32A32_UINT, 1);
-      histories_[i] = image(VK_FORMAT_R32G32B32A32_SFLOAT, GLPT_DN_HISTORY_LAYERS);
+      histories_[i] = image(VK_FORMAT_R32G32B32A32_UINT, GLPT_DN_HISTORY_LAYERS);
+      moments_[i] = image(VK_FORMAT_R32G32B32A32_SFLOAT, GLPT_DN_MOMENT_LAYERS);
     }
-    work_ = image(VK_FORMAT_R32G32B32A32_UINT, GLPT_DN_SLOTS * GLPT_DN_WORK_LAYERS);
+    work_ = image(VK_FORMAT_R32G32B32A32_UINT, kWorkLayers);
     images_need_layout_ = true;  // to GENERAL in the next record()
     width_ = width;
     height_ = height;
@@ -89,6 +93,7 @@ void SvgfDenoiser::record(VkCommandBuffer cmd, const DenoiseResources& resources
       guide_eyes_[i].initial_barrier(cmd);
       guide_metas_[i].initial_barrier(cmd);
       histories_[i].initial_barrier(cmd);
+      moments_[i].initial_barrier(cmd);
     }
     work_.initial_barrier(cmd);
     images_need_layout_ = false;
@@ -98,7 +103,7 @@ void SvgfDenoiser::record(VkCommandBuffer cmd, const DenoiseResources& resources
   const VkDescriptorBufferInfo states{resources.states->handle(), 0, VK_WHOLE_SIZE};
   const VkDescriptorBufferInfo instances{resources.instances->handle(), 0, VK_WHOLE_SIZE};
   const auto scene_info = acceleration_structure_info(&resources.scene);
-  const VkDescriptorImageInfo images[12] = {general_image_info(resources.position),
+  const VkDescriptorImageInfo images[14] = {general_image_info(resources.position),
                                             general_image_info(resources.surface),
                                             general_image_info(resources.channels[0]),
                                             general_image_info(resources.channels[1]),
@@ -109,7 +114,9 @@ void SvgfDenoiser::record(VkCommandBuffer cmd, const DenoiseResources& resources
                                             general_image_info(guide_metas_[previous].view()),
                                             general_image_info(histories_[current].view()),
                                             general_image_info(histories_[previous].view()),
-                                            general_image_info(work_.view())};
+                                            general_image_info(work_.view()),
+                                            general_image_info(moments_[current].view()),
+                                            general_image_info(moments_[previous].view())};
   for (const ComputePipeline* pipeline : {temporal_.get(), atrous_.get()}) {
     const VkDescriptorSet set = pipeline->descriptor_set();
     const VkWriteDescriptorSet writes[] = {
@@ -127,6 +134,8 @@ void SvgfDenoiser::record(VkCommandBuffer cmd, const DenoiseResources& resources
         storage_image_write(set, GLPT_DN_BINDING_HISTORY, &images[9]),
         storage_image_write(set, GLPT_DN_BINDING_HISTORY_PREVIOUS, &images[10]),
         storage_image_write(set, GLPT_DN_BINDING_WORK, &images[11]),
+        storage_image_write(set, GLPT_DN_BINDING_MOMENTS, &images[12]),
+        storage_image_write(set, GLPT_DN_BINDING_MOMENTS_PREVIOUS, &images[13]),
         storage_buffer_write(set, GLPT_DN_BINDING_INSTANCES, &instances),
         acceleration_structure_write(set, GLPT_DN_BINDING_SCENE, &scene_info),
     };
@@ -144,8 +153,12 @@ void SvgfDenoiser::record(VkCommandBuffer cmd, const DenoiseResources& resources
   temporal_->dispatch(cmd, nullptr, 0, width_, height_);
   for (uint32_t i = 0; i < iterations; ++i) {
     barrier();
-    const IterationConstants constants{1u << i, i == 0 ? 0u : 1u + (i - 1) % 2, 1u + i % 2,
-                                       i == 0 ? 1u : 0u};
+    // The first iteration's result is the colour history (the paper's feedback) and the
+    // second iteration's input; a work slot gets it as well only where it is the last.
+    const uint32_t input = i == 0 ? 0u : i == 1 ? history_slot() : 1u + (i - 1) % 2;
+    const uint32_t output = i == 0 ? history_slot() : 1u + i % 2;
+    const uint32_t also = i == 0 && iterations == 1 ? 1u : GLPT_DN_SLOT_NONE;
+    const IterationConstants constants{1u << i, input, output, also};
     atrous_->dispatch(cmd, &constants, sizeof constants, width_, height_);
   }
   barrier();

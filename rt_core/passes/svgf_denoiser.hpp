@@ -54,6 +54,10 @@ class SvgfDenoiser {
   // Whether the previous frame's history has a specular channel (else the next frame's
   // specular starts afresh: GLPT_DN_PREVIOUS_NO_SPECULAR).
   bool history_has_specular() const { return history_has_specular_; }
+  // The work slots of the next record's colour history and of the previous one's
+  // (DenoiseUniforms::slots).
+  uint32_t history_slot() const { return GLPT_DN_SLOTS + parity_; }
+  uint32_t previous_history_slot() const { return GLPT_DN_SLOTS + (parity_ ^ 1u); }
   const GpuImage& work() const { return work_; }
   // The next frame starts without history (a failure, a cut the caller knows of).
   void forget_history() noexcept { history_valid_ = false; }
@@ -63,7 +67,7 @@ class SvgfDenoiser {
   // Compiled on first use: programs that never denoise never pay for them.
   std::unique_ptr<ComputePipeline> temporal_, atrous_;
   // Storage images (shared_types.h, GLPT_DN_BINDING_*), by parity: [parity_] is this frame's.
-  std::array<GpuImage, 2> guide_eyes_, guide_metas_, histories_;
+  std::array<GpuImage, 2> guide_eyes_, guide_metas_, histories_, moments_;
   GpuImage work_;
   bool images_need_layout_ = false;  // created since the last record(): still UNDEFINED
   uint32_t width_ = 0, height_ = 0;

@@ -28,9 +28,13 @@ layout(set = 0, binding = GLPT_DN_BINDING_GUIDE_PREVIOUS, rgba32f)
     uniform readonly image2D previous_guide_eye;
 layout(set = 0, binding = GLPT_DN_BINDING_GUIDE_META_PREVIOUS, rgba32ui)
     uniform readonly uimage2D previous_guide_meta;
-layout(set = 0, binding = GLPT_DN_BINDING_HISTORY, rgba32f) uniform image2DArray history;
-layout(set = 0, binding = GLPT_DN_BINDING_HISTORY_PREVIOUS, rgba32f)
-    uniform readonly image2DArray previous_history;
+layout(set = 0, binding = GLPT_DN_BINDING_HISTORY, rgba32ui) uniform uimage2DArray history;
+layout(set = 0, binding = GLPT_DN_BINDING_HISTORY_PREVIOUS, rgba32ui)
+    uniform readonly uimage2DArray previous_history;
+layout(set = 0, binding = GLPT_DN_BINDING_MOMENTS, rgba32f)
+    uniform writeonly image2DArray history_moments;
+layout(set = 0, binding = GLPT_DN_BINDING_MOMENTS_PREVIOUS, rgba32f)
+    uniform readonly image2DArray previous_history_moments;
 layout(set = 0, binding = GLPT_DN_BINDING_WORK, rgba32ui) uniform uimage2DArray work;
 
 DenoiseGuide load_guide(ivec2 p) {
@@ -90,8 +94,9 @@ uint filtered_channels() { return (dn.image.z & GLPT_DN_NO_SPECULAR) != 0u ? 2u 
 float luminance(vec3 c) { return dot(c, vec3(0.2126, 0.7152, 0.0722)); }
 
 vec3 raw_channel(ivec2 p, uint c) {
-  return c == 0u ? imageLoad(raw_channel0, p).rgb
-                 : c == 1u ? imageLoad(raw_channel1, p).rgb : imageLoad(raw_channel2, p).rgb;
+  return c == 0u   ? imageLoad(raw_channel0, p).rgb
+         : c == 1u ? imageLoad(raw_channel1, p).rgb
+                   : imageLoad(raw_channel2, p).rgb;
 }
 
 // The size of one pixel at eye-space position `eye`: what depth tolerances scale with.
