@@ -40,10 +40,11 @@ class SvgfDenoiser {
   // and compiles the passes on first use. Returns whether the previous frame's history can be
   // reprojected (same size and owner, not forgotten). Throws VulkanError.
   bool prepare(uint32_t width, uint32_t height, const void* owner);
-  // Whether the device can filter a width x height frame: the work slots (GLPT_DN_SLOTS x
-  // GLPT_DN_WORK_LAYERS layers of uvec4) past 2 GiB (8192 x 8192 needs 3.2 GB) would wrap
-  // lavapipe's 32-bit shader offsets, which crashed the process when they were a buffer
-  // (tests/extremes). Larger frames are shown unfiltered, as under GLPT_DENOISER=off.
+  // Whether the device can filter a width x height frame: the work image (the work slots and
+  // the two colour histories, 10 layers of uvec4: 160 bytes a pixel) past 2 GiB (4096 x 4096
+  // needs 2.7 GB) would wrap lavapipe's 32-bit shader offsets, which crashed the process when
+  // it was a buffer (tests/extremes). Larger frames are shown unfiltered, as under
+  // GLPT_DENOISER=off.
   bool fits(uint32_t width, uint32_t height) const;
   // Records the temporal pass and `iterations` a-trous iterations; the result is in work() at
   // slot 0 (no iteration) or 1 + (iterations - 1) % 2. This frame's history becomes the
