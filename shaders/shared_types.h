@@ -103,6 +103,11 @@ using mat4 = glm::mat4;
 // float: the variance is a difference of them.
 #define GLPT_DN_BINDING_MOMENTS 16
 #define GLPT_DN_BINDING_MOMENTS_PREVIOUS 17
+// The tiles (workgroups) with a shaded pixel, found by the temporal pass; the a-trous iterations
+// are dispatched over them alone (vkCmdDispatchIndirect). uint[]: [0..2] the dispatch (x: the
+// number of such tiles, 1, 1), [3] unused, then per tile a flag (1 once listed), then the list.
+#define GLPT_DN_BINDING_TILES 18
+#define GLPT_DN_TILES_HEADER 4u
 #define GLPT_DN_SLOTS 3
 #define GLPT_DN_WORK_LAYERS 2u  // per slot
 #define GLPT_DN_HISTORY_SLOTS 2  // slots GLPT_DN_SLOTS and GLPT_DN_SLOTS + 1

@@ -28,6 +28,7 @@
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_shader_image_load_formatted : require
 
+#extension GL_KHR_shader_subgroup_basic : require
 #extension GL_KHR_shader_subgroup_ballot : require
 #extension GL_KHR_shader_subgroup_vote : require
 #extension GL_EXT_ray_query : require
@@ -120,9 +121,17 @@ void add_history(ivec2 q, float w, uint tap_length, inout vec3 colour[3], inout 
 
 void main() {
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
-  if (!inside(pixel)) return;
   uvec4 surface;
-  if (!shaded(pixel, surface)) {
+  bool is_shaded = inside(pixel) && shaded(pixel, surface);
+  // A tile with a shaded pixel goes on the list the a-trous iterations are dispatched over: the
+  // first subgroup to find one lists it.
+  if (subgroupAny(is_shaded) && subgroupElect()) {
+    uint tile = gl_WorkGroupID.y * tiles_across() + gl_WorkGroupID.x;
+    if (atomicExchange(tile_words[tile], 1u) == 0u)
+      tile_words[tile_count() + atomicAdd(tiles_dispatch[0], 1u)] = tile;
+  }
+  if (!inside(pixel)) return;
+  if (!is_shaded) {
     imageStore(guide_meta, pixel, uvec4(0u));  // id 0: no surface (the eye is not read)
     return;
   }

@@ -28,6 +28,7 @@ constexpr VkDescriptorSetLayoutBinding kBindings[] = {
     compute_binding(GLPT_DN_BINDING_INSTANCES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
     compute_binding(GLPT_DN_BINDING_MOMENTS, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
     compute_binding(GLPT_DN_BINDING_MOMENTS_PREVIOUS, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
+    compute_binding(GLPT_DN_BINDING_TILES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
 };
 static_assert(GLPT_CHANNELS == 3);
 
@@ -76,6 +77,16 @@ bool SvgfDenoiser::prepare(uint32_t width, uint32_t height, const void* owner) {
       moments_[i] = image(VK_FORMAT_R32G32B32A32_SFLOAT, GLPT_DN_MOMENT_LAYERS);
     }
     work_ = image(VK_FORMAT_R32G32B32A32_UINT, kWorkLayers);
+    // The tile list (GLPT_DN_BINDING_TILES): a header, a flag and a list entry per tile.
+    const VkDeviceSize tiles = VkDeviceSize{(std::max(width, 1u) + GLPT_IMAGE_TILE_WIDTH - 1) /
+                                            GLPT_IMAGE_TILE_WIDTH} *
+                               ((std::max(height, 1u) + GLPT_IMAGE_TILE_HEIGHT - 1) /
+                                GLPT_IMAGE_TILE_HEIGHT);
+    tiles_ = GpuBuffer::create(device_, (GLPT_DN_TILES_HEADER + 2 * tiles) * sizeof(uint32_t),
+                               VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
+                                   VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT |
+                                   VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+    tile_count_ = tiles;
     images_need_layout_ = true;  // to GENERAL in the next record()
     width_ = width;
     height_ = height;
@@ -102,6 +113,7 @@ void SvgfDenoiser::record(VkCommandBuffer cmd, const DenoiseResources& resources
                                         sizeof(gpu::DenoiseUniforms)};
   const VkDescriptorBufferInfo states{resources.states->handle(), 0, VK_WHOLE_SIZE};
   const VkDescriptorBufferInfo instances{resources.instances->handle(), 0, VK_WHOLE_SIZE};
+  const VkDescriptorBufferInfo tiles{tiles_.handle(), 0, VK_WHOLE_SIZE};
   const auto scene_info = acceleration_structure_info(&resources.scene);
   const VkDescriptorImageInfo images[14] = {general_image_info(resources.position),
                                             general_image_info(resources.surface),
@@ -136,20 +148,31 @@ void SvgfDenoiser::record(VkCommandBuffer cmd, const DenoiseResources& resources
         storage_image_write(set, GLPT_DN_BINDING_WORK, &images[11]),
         storage_image_write(set, GLPT_DN_BINDING_MOMENTS, &images[12]),
         storage_image_write(set, GLPT_DN_BINDING_MOMENTS_PREVIOUS, &images[13]),
+        storage_buffer_write(set, GLPT_DN_BINDING_TILES, &tiles),
         storage_buffer_write(set, GLPT_DN_BINDING_INSTANCES, &instances),
         acceleration_structure_write(set, GLPT_DN_BINDING_SCENE, &scene_info),
     };
     pipeline->update(device_.handle(), writes);
   }
-  // Each pass reads what the one before wrote.
+  // Each pass reads what the one before wrote (the a-trous dispatches' sizes too).
   auto barrier = [&] {
-    const VkMemoryBarrier memory{VK_STRUCTURE_TYPE_MEMORY_BARRIER, nullptr,
-                                 VK_ACCESS_SHADER_WRITE_BIT,
-                                 VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT};
+    const VkMemoryBarrier memory{
+        VK_STRUCTURE_TYPE_MEMORY_BARRIER, nullptr, VK_ACCESS_SHADER_WRITE_BIT,
+        VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_INDIRECT_COMMAND_READ_BIT};
     vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                         VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &memory, 0, nullptr, 0,
-                         nullptr);
+                         VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT |
+                             VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT,
+                         0, 1, &memory, 0, nullptr, 0, nullptr);
   };
+  // An empty tile list: no tile, a dispatch of (0, 1, 1), no tile flagged.
+  const uint32_t header[GLPT_DN_TILES_HEADER] = {0u, 1u, 1u, 0u};
+  vkCmdUpdateBuffer(cmd, tiles_.handle(), 0, sizeof header, header);
+  vkCmdFillBuffer(cmd, tiles_.handle(), sizeof header, tile_count_ * sizeof(uint32_t), 0u);
+  const VkMemoryBarrier cleared{VK_STRUCTURE_TYPE_MEMORY_BARRIER, nullptr,
+                                VK_ACCESS_TRANSFER_WRITE_BIT,
+                                VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT};
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                       0, 1, &cleared, 0, nullptr, 0, nullptr);
   temporal_->dispatch(cmd, nullptr, 0, width_, height_);
   for (uint32_t i = 0; i < iterations; ++i) {
     barrier();
@@ -159,7 +182,7 @@ void SvgfDenoiser::record(VkCommandBuffer cmd, const DenoiseResources& resources
     const uint32_t output = i == 0 ? history_slot() : 1u + i % 2;
     const uint32_t also = i == 0 && iterations == 1 ? 1u : GLPT_DN_SLOT_NONE;
     const IterationConstants constants{1u << i, input, output, also};
-    atrous_->dispatch(cmd, &constants, sizeof constants, width_, height_);
+    atrous_->dispatch_indirect(cmd, &constants, sizeof constants, tiles_.handle(), 0);
   }
   barrier();
   parity_ = previous;

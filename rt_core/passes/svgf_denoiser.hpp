@@ -70,6 +70,8 @@ class SvgfDenoiser {
   // Storage images (shared_types.h, GLPT_DN_BINDING_*), by parity: [parity_] is this frame's.
   std::array<GpuImage, 2> guide_eyes_, guide_metas_, histories_, moments_;
   GpuImage work_;
+  GpuBuffer tiles_;  // GLPT_DN_BINDING_TILES, sized with the images
+  VkDeviceSize tile_count_ = 0;
   bool images_need_layout_ = false;  // created since the last record(): still UNDEFINED
   uint32_t width_ = 0, height_ = 0;
   const void* owner_ = nullptr;

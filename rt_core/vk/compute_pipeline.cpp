@@ -110,6 +110,18 @@ void ComputePipeline::dispatch(VkCommandBuffer cmd, const void* push_constants, 
                 (height + tile_.height - 1) / tile_.height, 1);
 }
 
+void ComputePipeline::dispatch_indirect(VkCommandBuffer cmd, const void* push_constants,
+                                        uint32_t push_bytes, VkBuffer buffer,
+                                        VkDeviceSize offset) const {
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_.get());
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.get(), 0, 1,
+                          &descriptor_set_, 0, nullptr);
+  if (push_bytes > 0)
+    vkCmdPushConstants(cmd, layout_.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0, push_bytes,
+                       push_constants);
+  vkCmdDispatchIndirect(cmd, buffer, offset);
+}
+
 VkWriteDescriptorSet storage_buffer_write(VkDescriptorSet set, uint32_t binding,
                                           const VkDescriptorBufferInfo* info) {
   auto write = make_info<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);

@@ -35,6 +35,9 @@ class ComputePipeline {
   void update(VkDevice device, std::span<const VkWriteDescriptorSet> writes) const;
   void dispatch(VkCommandBuffer cmd, const void* push_constants, uint32_t push_bytes,
                 uint32_t width, uint32_t height) const;
+  // The same with the workgroup counts read from `buffer` at `offset` (VkDispatchIndirectCommand).
+  void dispatch_indirect(VkCommandBuffer cmd, const void* push_constants, uint32_t push_bytes,
+                         VkBuffer buffer, VkDeviceSize offset) const;
 
  private:
   vk::DescriptorSetLayout set_layout_;

@@ -37,6 +37,17 @@ layout(set = 0, binding = GLPT_DN_BINDING_MOMENTS_PREVIOUS, rgba32f)
     uniform readonly image2DArray previous_history_moments;
 layout(set = 0, binding = GLPT_DN_BINDING_WORK, rgba32ui) uniform uimage2DArray work;
 
+layout(std430, set = 0, binding = GLPT_DN_BINDING_TILES) buffer ShadedTiles {
+  uint tiles_dispatch[GLPT_DN_TILES_HEADER];
+  uint tile_words[];  // a flag per tile, then the list (shared_types.h)
+};
+
+// The image's tiles (workgroups of the passes) across and in all.
+uint tiles_across() { return (dn.image.x + gl_WorkGroupSize.x - 1u) / gl_WorkGroupSize.x; }
+uint tile_count() {
+  return tiles_across() * ((dn.image.y + gl_WorkGroupSize.y - 1u) / gl_WorkGroupSize.y);
+}
+
 DenoiseGuide load_guide(ivec2 p) {
   return DenoiseGuide(imageLoad(guide_eye, p), imageLoad(guide_meta, p));
 }
