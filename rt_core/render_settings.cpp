@@ -148,8 +148,7 @@ RenderSettings parse_render_settings(const std::function<const char*(const char*
   apply("GLPT_DENOISE_SIGMA_LUMINANCE", denoise.sigma_luminance, sigma, "0.001..10000");
   apply(
       "GLPT_DENOISE_KERNEL", denoise.kernel,
-      [](const char* text) { return parse_uint(text, 0, 2); },
-      "0 (four taps), 1 (3x3) or 2 (5x5)");
+      [](const char* text) { return parse_uint(text, 0, 2); }, "0 (four taps), 1 (3x3) or 2 (5x5)");
   apply(
       "GLPT_DENOISE_UNTIL", denoise.until_samples,
       [](const char* text) { return parse_uint(text, 0, kMaxAccumulated); }, "0..16777216");

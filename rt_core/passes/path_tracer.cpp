@@ -216,8 +216,8 @@ void PathTracer::write_denoise_inputs(const TraceScene& scene, bool denoise, boo
     if (!denoiser_.history_has_specular()) flags |= GLPT_DN_PREVIOUS_NO_SPECULAR;
     uniforms.image = glm::uvec4(scene.width, scene.height, flags, d.iterations);
     uniforms.temporal = glm::vec4(d.alpha, d.moments_alpha, d.fast_alpha, d.fast_clamp);
-    uniforms.sigmas = glm::vec4(d.sigma_depth, d.sigma_normal, d.sigma_luminance,
-                                static_cast<float>(d.kernel));
+    uniforms.sigmas =
+        glm::vec4(d.sigma_depth, d.sigma_normal, d.sigma_luminance, static_cast<float>(d.kernel));
     // A history that was clamped counts as this many frames long: 3 brings a switched-on
     // light's error back in 4 frames (4 took 5), for a little more noise where noise clamps.
     constexpr float kClampedHistoryLength = 3.0f;

@@ -78,14 +78,13 @@ bool SvgfDenoiser::prepare(uint32_t width, uint32_t height, const void* owner) {
     }
     work_ = image(VK_FORMAT_R32G32B32A32_UINT, kWorkLayers);
     // The tile list (GLPT_DN_BINDING_TILES): a header, a flag and a list entry per tile.
-    const VkDeviceSize tiles = VkDeviceSize{(std::max(width, 1u) + GLPT_IMAGE_TILE_WIDTH - 1) /
-                                            GLPT_IMAGE_TILE_WIDTH} *
-                               ((std::max(height, 1u) + GLPT_IMAGE_TILE_HEIGHT - 1) /
-                                GLPT_IMAGE_TILE_HEIGHT);
-    tiles_ = GpuBuffer::create(device_, (GLPT_DN_TILES_HEADER + 2 * tiles) * sizeof(uint32_t),
-                               VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
-                                   VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT |
-                                   VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+    const VkDeviceSize tiles =
+        VkDeviceSize{(std::max(width, 1u) + GLPT_IMAGE_TILE_WIDTH - 1) / GLPT_IMAGE_TILE_WIDTH} *
+        ((std::max(height, 1u) + GLPT_IMAGE_TILE_HEIGHT - 1) / GLPT_IMAGE_TILE_HEIGHT);
+    tiles_ =
+        GpuBuffer::create(device_, (GLPT_DN_TILES_HEADER + 2 * tiles) * sizeof(uint32_t),
+                          VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT |
+                              VK_BUFFER_USAGE_TRANSFER_DST_BIT);
     tile_count_ = tiles;
     images_need_layout_ = true;  // to GENERAL in the next record()
     width_ = width;
@@ -156,12 +155,12 @@ void SvgfDenoiser::record(VkCommandBuffer cmd, const DenoiseResources& resources
   }
   // Each pass reads what the one before wrote (the a-trous dispatches' sizes too).
   auto barrier = [&] {
-    const VkMemoryBarrier memory{
-        VK_STRUCTURE_TYPE_MEMORY_BARRIER, nullptr, VK_ACCESS_SHADER_WRITE_BIT,
-        VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_INDIRECT_COMMAND_READ_BIT};
+    const VkMemoryBarrier memory{VK_STRUCTURE_TYPE_MEMORY_BARRIER, nullptr,
+                                 VK_ACCESS_SHADER_WRITE_BIT,
+                                 VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT |
+                                     VK_ACCESS_INDIRECT_COMMAND_READ_BIT};
     vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                         VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT |
-                             VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT,
+                         VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT,
                          0, 1, &memory, 0, nullptr, 0, nullptr);
   };
   // An empty tile list: no tile, a dispatch of (0, 1, 1), no tile flagged.
@@ -171,8 +170,8 @@ void SvgfDenoiser::record(VkCommandBuffer cmd, const DenoiseResources& resources
   const VkMemoryBarrier cleared{VK_STRUCTURE_TYPE_MEMORY_BARRIER, nullptr,
                                 VK_ACCESS_TRANSFER_WRITE_BIT,
                                 VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT};
-  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                       0, 1, &cleared, 0, nullptr, 0, nullptr);
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0,
+                       1, &cleared, 0, nullptr, 0, nullptr);
   temporal_->dispatch(cmd, nullptr, 0, width_, height_);
   for (uint32_t i = 0; i < iterations; ++i) {
     barrier();

@@ -98,14 +98,19 @@ void ComputePipeline::update(VkDevice device, std::span<const VkWriteDescriptorS
   vkUpdateDescriptorSets(device, static_cast<uint32_t>(writes.size()), writes.data(), 0, nullptr);
 }
 
-void ComputePipeline::dispatch(VkCommandBuffer cmd, const void* push_constants, uint32_t push_bytes,
-                               uint32_t width, uint32_t height) const {
+void ComputePipeline::bind(VkCommandBuffer cmd, const void* push_constants,
+                           uint32_t push_bytes) const {
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_.get());
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.get(), 0, 1,
                           &descriptor_set_, 0, nullptr);
   if (push_bytes > 0)
     vkCmdPushConstants(cmd, layout_.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0, push_bytes,
                        push_constants);
+}
+
+void ComputePipeline::dispatch(VkCommandBuffer cmd, const void* push_constants, uint32_t push_bytes,
+                               uint32_t width, uint32_t height) const {
+  bind(cmd, push_constants, push_bytes);
   vkCmdDispatch(cmd, (width + tile_.width - 1) / tile_.width,
                 (height + tile_.height - 1) / tile_.height, 1);
 }
@@ -113,12 +118,7 @@ void ComputePipeline::dispatch(VkCommandBuffer cmd, const void* push_constants, 
 void ComputePipeline::dispatch_indirect(VkCommandBuffer cmd, const void* push_constants,
                                         uint32_t push_bytes, VkBuffer buffer,
                                         VkDeviceSize offset) const {
-  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_.get());
-  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.get(), 0, 1,
-                          &descriptor_set_, 0, nullptr);
-  if (push_bytes > 0)
-    vkCmdPushConstants(cmd, layout_.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0, push_bytes,
-                       push_constants);
+  bind(cmd, push_constants, push_bytes);
   vkCmdDispatchIndirect(cmd, buffer, offset);
 }
 

@@ -40,6 +40,9 @@ class ComputePipeline {
                          VkBuffer buffer, VkDeviceSize offset) const;
 
  private:
+  // Binds the pipeline and its set and pushes `push_bytes` of push constants (if any).
+  void bind(VkCommandBuffer cmd, const void* push_constants, uint32_t push_bytes) const;
+
   vk::DescriptorSetLayout set_layout_;
   vk::PipelineLayout layout_;
   vk::Pipeline pipeline_;
