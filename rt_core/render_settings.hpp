@@ -48,10 +48,10 @@ struct DenoiseSettings {
   float sigma_depth = 1.0f;      // GLPT_DENOISE_SIGMA_DEPTH
   float sigma_normal = 128.0f;   // GLPT_DENOISE_SIGMA_NORMAL
   float sigma_luminance = 4.0f;  // GLPT_DENOISE_SIGMA_LUMINANCE
-  // GLPT_DENOISE_KERNEL: the a-trous kernel. 0 (default): four taps an iteration, a cross
-  // (steps 1, 4, 16) and a diagonal cross (steps 2, 8) in turn; 1: 3x3; 2: 5x5 (the paper's).
-  // The four taps measured as close to the reference in relMSE and FLIP as 3x3 at half its
-  // taps, 3x3 as close as 5x5 at a third (docs/denoiser.md).
+  // GLPT_DENOISE_KERNEL: the a-trous kernel. 0 (default): the 3x3 at step 1, then four of its
+  // taps an iteration, a cross (steps 2, 8) and a diagonal cross (steps 4, 16) in turn; 1: 3x3;
+  // 2: 5x5 (the paper's). The four taps measured as close to the reference as the 3x3 at half
+  // its taps, the 3x3 as close as the 5x5 at a third (docs/denoiser.md).
   uint32_t kernel = 0;
   // Against stale light (not in the 2017 paper): the history is clamped to a fast average
   // (GLPT_DENOISE_FAST_ALPHA) plus or minus GLPT_DENOISE_CLAMP standard deviations; 0: off.

@@ -19,6 +19,7 @@
 
 #include "gbuffer_layout.h"
 #include "shared_types.h"
+#include "svgf/work_texels.h"
 #include "trace/gbuffer_material.h"
 
 layout(local_size_x = GLPT_TILE_SIZE, local_size_y = GLPT_TILE_SIZE,
@@ -127,13 +128,11 @@ void main() {
     // Two channels a texel, in half floats (GLPT_DN_BINDING_WORK). A channel the denoiser did
     // not filter (GLPT_DN_NO_SPECULAR) is not there: taken raw.
     uvec4 pair = imageLoad(denoised, ivec3(pixel, base));
-    vec3 light[GLPT_CHANNELS] = vec3[GLPT_CHANNELS](
-        vec3(unpackHalf2x16(pair.x), unpackHalf2x16(pair.y).x),
-        vec3(unpackHalf2x16(pair.z), unpackHalf2x16(pair.w).x),
-        (dn.image.z & GLPT_DN_NO_SPECULAR) != 0u
-            ? raw[GLPT_CHANNEL_SPECULAR]
-            : vec3(unpackHalf2x16(imageLoad(denoised, ivec3(pixel, base + 1)).x),
-                   unpackHalf2x16(imageLoad(denoised, ivec3(pixel, base + 1)).y).x));
+    vec3 specular = raw[GLPT_CHANNEL_SPECULAR];
+    if ((dn.image.z & GLPT_DN_NO_SPECULAR) == 0u)
+      specular = unpack_work(imageLoad(denoised, ivec3(pixel, base + 1)).xy).rgb;
+    vec3 light[GLPT_CHANNELS] = vec3[GLPT_CHANNELS](unpack_work(pair.xy).rgb,
+                                                    unpack_work(pair.zw).rgb, specular);
     denoised_color = composite(pixel, surface, light);
     denoised_weight = clamp(dn.params.w, 0.0, 1.0);
   }

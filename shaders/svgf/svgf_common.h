@@ -7,6 +7,7 @@
 
 #include "gbuffer_layout.h"
 #include "shared_types.h"
+#include "svgf/work_texels.h"
 
 layout(local_size_x = GLPT_TILE_SIZE, local_size_y = GLPT_TILE_SIZE,
        local_size_x_id = GLPT_SPEC_TILE_WIDTH, local_size_y_id = GLPT_SPEC_TILE_HEIGHT) in;
@@ -68,11 +69,6 @@ void store_guide(ivec2 p, DenoiseGuide g) {
 // GLPT_DN_BINDING_WORK): on lavapipe an image store is a scalar store per lane and component,
 // the dearest operation of the a-trous iterations, and a load is a call; one texel for the two
 // diffuse channels halves both. Half floats keep 11 bits: far below what 8-bit output shows.
-uvec2 pack_work(vec4 value) {
-  value = clamp(value, vec4(-65504.0), vec4(65504.0));  // beyond the largest half: infinite
-  return uvec2(packHalf2x16(value.rg), packHalf2x16(value.ba));
-}
-vec4 unpack_work(uvec2 packed) { return vec4(unpackHalf2x16(packed.x), unpackHalf2x16(packed.y)); }
 // Channels 0 (xy) and 1 (zw) of pixel p in work slot `slot`, packed.
 uvec4 load_work_pair(uint slot, ivec2 p) {
   return imageLoad(work, ivec3(p, slot * GLPT_DN_WORK_LAYERS));
