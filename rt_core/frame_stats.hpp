@@ -16,6 +16,8 @@ struct FrameStats {
   // denoiser did not run: trace and composite are then one submission).
   double denoise_ms = 0, composite_ms = 0;
   uint32_t denoised = 0;  // frames (records) whose samples the denoiser filtered
+  // The 32x8-pixel tiles it filtered (those with a pixel the tracer shaded: the rest it skips).
+  uint32_t denoised_tiles = 0;
   // Host time of classification and identity matching (scene/classify.hpp), when classified.
   double classify_ms = 0;
   // BLASes built, refit in place to a deformed shape (BlasCache), and reused unchanged.
@@ -67,6 +69,7 @@ struct FrameStats {
     denoise_ms += s.denoise_ms;
     composite_ms += s.composite_ms;
     denoised += s.denoised;
+    denoised_tiles += s.denoised_tiles;
     classify_ms += s.classify_ms;
     blas_builds += s.blas_builds;
     blas_refits += s.blas_refits;

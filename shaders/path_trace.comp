@@ -19,6 +19,7 @@
 #extension GL_EXT_buffer_reference_uvec2 : require
 #extension GL_KHR_shader_subgroup_basic : require
 #extension GL_KHR_shader_subgroup_arithmetic : require
+#extension GL_KHR_shader_subgroup_vote : require
 #extension GL_EXT_nonuniform_qualifier : require
 
 #include "gbuffer_layout.h"
@@ -63,6 +64,11 @@ layout(set = 0, binding = GLPT_PT_BINDING_CHANNELS + GLPT_CHANNEL_INDIRECT_DIFFU
     uniform image2D channel_indirect;
 layout(set = 0, binding = GLPT_PT_BINDING_CHANNELS + GLPT_CHANNEL_SPECULAR, rgba32f)
     uniform image2D channel_specular;
+// The denoiser's tile list (shared_types.h, GLPT_DN_BINDING_TILES).
+layout(std430, set = 0, binding = GLPT_PT_BINDING_DENOISE_TILES) buffer DenoiseTiles {
+  uint tiles_dispatch[GLPT_DN_TILES_HEADER];
+  uint tile_words[];  // a flag per tile, then the list
+};
 layout(push_constant) uniform TracePassBlock {
   uint trace_pass;  // GLPT_TRACE_PASS_*
 } push;
@@ -487,21 +493,45 @@ bool filled_from_grid(ivec2 pixel, uvec4 surface) {
   return true;
 }
 
+// Puts the denoiser's tile of `pixel` on its list (GLPT_DN_BINDING_TILES) where `filtered`, the
+// pixel being one the denoiser filters: one atomic per subgroup where its pixels share a tile
+// (the workgroup's 8-wide rows lie in one tile), else one per pixel.
+void list_denoise_tile(ivec2 pixel, bool filtered) {
+  uint tiles_across = (frame.image.x + GLPT_IMAGE_TILE_WIDTH - 1u) / GLPT_IMAGE_TILE_WIDTH;
+  uint tile_count =
+      tiles_across * ((frame.image.y + GLPT_IMAGE_TILE_HEIGHT - 1u) / GLPT_IMAGE_TILE_HEIGHT);
+  uint tile = uint(pixel.y) / GLPT_IMAGE_TILE_HEIGHT * tiles_across +
+              uint(pixel.x) / GLPT_IMAGE_TILE_WIDTH;
+  uint first = subgroupMin(filtered ? tile : 0xFFFFFFFFu);
+  if (first == 0xFFFFFFFFu) return;
+  bool shared_tile = subgroupAll(!filtered || tile == first);
+  if (shared_tile ? subgroupElect() : filtered) {
+    uint listed = shared_tile ? first : tile;
+    if (atomicExchange(tile_words[listed], 1u) == 0u)
+      tile_words[tile_count + atomicAdd(tiles_dispatch[0], 1u)] = listed;
+  }
+}
+
 void main() {
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
   uint dropped = 0u;
   bool mine;
+  bool in_image = pixel.x < int(frame.image.x) && pixel.y < int(frame.image.y);
+  uvec4 surface = uvec4(0u);
   if (push.trace_pass == GLPT_TRACE_PASS_GRID) {
     mine = all(lessThan(pixel, grid_cells()));
     pixel = grid_pixel(pixel);
   } else {
-    mine = pixel.x < int(frame.image.x) && pixel.y < int(frame.image.y);
+    mine = in_image;
+    if (in_image) surface = imageLoad(gbuffer_surface, pixel);
   }
-  if (mine && push.trace_pass == GLPT_TRACE_PASS_FILL)
-    mine = !filled_from_grid(pixel, imageLoad(gbuffer_surface, pixel));
+  if (mine && push.trace_pass == GLPT_TRACE_PASS_FILL) mine = !filled_from_grid(pixel, surface);
+  // What the denoiser filters (svgf_temporal.comp, shaded()): a covered pixel with a traced
+  // sample, lit or with AO under GLPT_UNLIT=ao.
+  bool filtered = false;
   if (mine) {
     uint pixel_index = uint(pixel.y) * frame.image.x + uint(pixel.x);
-    uvec4 surface = imageLoad(gbuffer_surface, pixel);
+    if (push.trace_pass == GLPT_TRACE_PASS_GRID) surface = imageLoad(gbuffer_surface, pixel);
     uint samples = frame.sampling.y;
     Channels sum;
     sum.direct = vec3(0.0);
@@ -548,7 +578,16 @@ void main() {
     imageStore(channel_direct, pixel, vec4(sum.direct * scale, traced));
     imageStore(channel_indirect, pixel, vec4(sum.indirect * scale, 0.0));
     imageStore(channel_specular, pixel, vec4(sum.specular * scale, 0.0));
+    filtered = surface.x != 0u && trace && traced > 0.0;
+  } else if (in_image && push.trace_pass == GLPT_TRACE_PASS_FILL) {
+    // Traced by the grid pass or filled from it.
+    filtered = surface.x != 0u &&
+               ((surface.w & GLPT_GBUFFER_LIT) != 0u || has_option(GLPT_OPTION_UNLIT_AO)) &&
+               imageLoad(channel_direct, pixel).a > 0.0;
   }
+  // The grid pass leaves the list to the fill pass, which sees every pixel.
+  if (has_option(GLPT_OPTION_DENOISE_TILES) && push.trace_pass != GLPT_TRACE_PASS_GRID)
+    list_denoise_tile(pixel, filtered);
   // Count rays with one atomic per subgroup rather than per invocation.
   uint subgroup_rays = subgroupAdd(g_rays);
   uint subgroup_dropped = subgroupAdd(dropped);

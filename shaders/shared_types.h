@@ -32,6 +32,8 @@ using mat4 = glm::mat4;
 #define GLPT_PT_BINDING_TEXTURES_1D 16    // sampler1D[GLPT_TRACE_TEXTURES_OTHER]
 #define GLPT_PT_BINDING_TEXTURES_3D 17    // sampler3D[GLPT_TRACE_TEXTURES_OTHER]
 #define GLPT_PT_BINDING_TEXTURES_CUBE 18  // samplerCube[GLPT_TRACE_TEXTURES_OTHER]
+// The denoiser's tile list (GLPT_DN_BINDING_TILES), filled under GLPT_OPTION_DENOISE_TILES.
+#define GLPT_PT_BINDING_DENOISE_TILES 19
 
 // Emissive triangles next-event estimation samples in one frame (docs/light-transport.md); the
 // emission of instances beyond them is found by bounces only.
@@ -103,9 +105,12 @@ using mat4 = glm::mat4;
 // float: the variance is a difference of them.
 #define GLPT_DN_BINDING_MOMENTS 16
 #define GLPT_DN_BINDING_MOMENTS_PREVIOUS 17
-// The tiles (workgroups) with a shaded pixel, found by the temporal pass; the a-trous iterations
-// are dispatched over them alone (vkCmdDispatchIndirect). uint[]: [0..2] the dispatch (x: the
-// number of such tiles, 1, 1), [3] unused, then per tile a flag (1 once listed), then the list.
+// The tiles (GLPT_IMAGE_TILE_WIDTH x GLPT_IMAGE_TILE_HEIGHT pixels, the passes' workgroups) with a
+// pixel the denoiser filters, listed by the trace pass as it shades them
+// (GLPT_OPTION_DENOISE_TILES); the temporal pass and the a-trous iterations are dispatched over
+// them alone (vkCmdDispatchIndirect). uint[]: [0..2] the dispatch (x: the number of such tiles,
+// 1, 1), [3] unused, then per tile a flag (1 once listed), then the list. Pixels of tiles not
+// listed keep their guides of an earlier frame: a guide's frame stamp (DenoiseGuide) tells.
 #define GLPT_DN_BINDING_TILES 18
 #define GLPT_DN_TILES_HEADER 4u
 #define GLPT_DN_SLOTS 3
@@ -274,6 +279,8 @@ struct GpuTraceState {
 #define GLPT_OPTION_UNLIT_EMIT 16u   // GLPT_UNLIT=emit: unlit surfaces light others
 #define GLPT_OPTION_ENVIRONMENT 32u  // rays that miss see FrameUniforms::environment
 #define GLPT_OPTION_SKY 64u          // the frame has sky instances (GLPT_MASK_SKY)
+// The denoiser filters this frame: list the tiles it filters (GLPT_PT_BINDING_DENOISE_TILES)
+#define GLPT_OPTION_DENOISE_TILES 128u
 // FrameUniforms::options.y: how one light of a surface's lights is chosen per sample
 #define GLPT_LIGHT_CHOICE_CONTRIBUTION 0u  // in proportion to its estimated contribution
 #define GLPT_LIGHT_CHOICE_UNIFORM 1u       // uniformly (for comparison)
@@ -316,8 +323,11 @@ struct GpuStateHistory {
 // half of an iteration's time on lavapipe.
 struct DenoiseGuide {
   vec4 eye;    // xyz: eye-space position; w: the normal's z
-  uvec4 meta;  // x: history id (0: no denoised surface here), y: history length (frames),
-               // z, w: the normal's x and y (float bits)
+  // x: history id (0: no denoised surface here), y: history length in frames (bits 0-7) and the
+  // stamp of the frame that wrote the guide (bits 8-31, never 0: DenoiseUniforms::slots.z; the
+  // passes skip the tiles without a filtered pixel, whose guides stay as an earlier frame wrote
+  // them), z, w: the normal's x and y (float bits)
+  uvec4 meta;
 };
 
 struct DenoiseUniforms {
@@ -336,7 +346,8 @@ struct DenoiseUniforms {
   // xy: this frame's sub-pixel jitter (removed from the reprojection), z: 1 when the composite
   // reads the denoised colour, w: unused
   vec4 jitter;
-  // x: the work slot of this frame's colour history, y: the previous frame's, zw: unused
+  // x: the work slot of this frame's colour history, y: the previous frame's; z: this frame's
+  // stamp, w: the previous frame's (DenoiseGuide::meta.y)
   uvec4 slots;
 };
 

@@ -56,7 +56,8 @@ void add_tap(ivec2 pixel, ivec2 offset, float h, uint channels) {
   DenoiseGuide g = load_guide(q);
   // Another object's light is no estimate of this one's, however close its plane (gears side by
   // side, a character against a wall at the same depth).
-  if (g.meta.x != centre.meta.x) return;  // (0, no surface, is never the centre's id)
+  // (0, no surface, is never the centre's id; a guide of an earlier frame has another stamp)
+  if (g.meta.x != centre.meta.x || (g.meta.y >> 8) != dn.slots.z) return;
   float facing = dot(n_p, guide_normal(g));
   if (!(facing > 0.0)) return;  // w_normal = 0
   float log_geometry = -abs(dot(n_p, g.eye.xyz - x_p)) * depth_scale / length(vec2(offset)) +
@@ -69,11 +70,9 @@ void add_tap(ivec2 pixel, ivec2 offset, float h, uint channels) {
 }
 
 void main() {
-  // Dispatched over the tiles with a shaded pixel (the temporal pass's list): the others would
+  // Dispatched over the tiles with a shaded pixel (the trace pass's list): the others would
   // only return (about 0.2 ms a dispatch over 320x240 when all do).
-  uint tile = tile_words[tile_count() + gl_WorkGroupID.x];
-  ivec2 pixel = ivec2(uvec2(tile % tiles_across(), tile / tiles_across()) * gl_WorkGroupSize.xy +
-                      gl_LocalInvocationID.xy);
+  ivec2 pixel = listed_tile_pixel();
   if (!inside(pixel)) return;
   centre = load_guide(pixel);
   if (!guide_shaded(centre)) return;  // not shaded by the tracer: nothing to filter
@@ -98,7 +97,8 @@ void main() {
     for (int dy = -1; dy <= 1; ++dy)
       for (int dx = -1; dx <= 1; ++dx) {
         ivec2 q = pixel + ivec2(dx, dy);
-        if (!inside(q) || imageLoad(guide_meta, q).x == 0u) continue;
+        if (!inside(q) || !guide_shaded(DenoiseGuide(vec4(0.0), imageLoad(guide_meta, q))))
+          continue;
         float w = kernel_weight(dx, true) * kernel_weight(dy, true);
         uvec4 pair = load_work_pair(iteration.input_slot, q);
         sum += w * vec3(unpackHalf2x16(pair.y).y, unpackHalf2x16(pair.w).y,

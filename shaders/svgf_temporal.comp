@@ -91,8 +91,9 @@ bool tap_matches(ivec2 q, uint id, vec3 previous_eye, vec3 previous_normal, floa
   tap_length = 0u;
   if (!inside(q)) return false;
   DenoiseGuide g = load_previous_guide(q);
-  tap_length = g.meta.y;
-  if (g.meta.x != id) return false;  // (0, no surface, is never a pixel's id)
+  tap_length = g.meta.y & 0xFFu;
+  // (id 0, no surface, is never a pixel's; a guide of an earlier frame has another stamp)
+  if (g.meta.x != id || (g.meta.y >> 8) != dn.slots.w) return false;
   if (dot(previous_normal, guide_normal(g)) < 0.9) return false;
   return abs(dot(previous_normal, g.eye.xyz - previous_eye)) <= tolerance;
 }
@@ -120,21 +121,11 @@ void add_history(ivec2 q, float w, uint tap_length, inout vec3 colour[3], inout 
 }
 
 void main() {
-  ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+  // Dispatched over the tiles the trace pass listed (those with a pixel to filter): the guides
+  // of the others keep an earlier frame's stamp, which no pass takes for this frame's.
+  ivec2 pixel = listed_tile_pixel();
   uvec4 surface;
-  bool is_shaded = inside(pixel) && shaded(pixel, surface);
-  // A tile with a shaded pixel goes on the list the a-trous iterations are dispatched over: the
-  // first subgroup to find one lists it.
-  if (subgroupAny(is_shaded) && subgroupElect()) {
-    uint tile = gl_WorkGroupID.y * tiles_across() + gl_WorkGroupID.x;
-    if (atomicExchange(tile_words[tile], 1u) == 0u)
-      tile_words[tile_count() + atomicAdd(tiles_dispatch[0], 1u)] = tile;
-  }
-  if (!inside(pixel)) return;
-  if (!is_shaded) {
-    imageStore(guide_meta, pixel, uvec4(0u));  // id 0: no surface (the eye is not read)
-    return;
-  }
+  if (!inside(pixel) || !shaded(pixel, surface)) return;
   vec3 eye = imageLoad(gbuffer_position, pixel).xyz;
   vec3 normal = gbuffer_unpack_normal(surface.y);
   uint channels = filtered_channels();

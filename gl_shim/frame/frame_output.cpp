@@ -255,7 +255,7 @@ bool FrameOutput::end_frame(const rec::FrameRecord& record, const rec::DrawableC
         " non_finite_prims=%" PRIu64
         " non_finite_draws=%u emitters=%u host_waits=%u wall_ms=%.2f traced_draws=%u sky_draws=%u"
         " raster_draws=%u instances=%u tlas_builds=%u tlas_updates=%u upload_bytes=%" PRIu64
-        " classify_ms=%.3f denoise_ms=%.2f composite_ms=%.2f denoised=%u"
+        " classify_ms=%.3f denoise_ms=%.2f composite_ms=%.2f denoised=%u denoised_tiles=%u"
         " vk_objects=%" PRId64 " rss_kb=%" PRIu64 " heap_kb=%" PRIu64 " heap_free_kb=%" PRIu64
         " classes=%s vk_by_kind=%s\n",
         frame_index_, width, height, frame_ms, record_ms_, s.upload_ms, s.raster_ms, s.blas_ms,
@@ -268,7 +268,7 @@ bool FrameOutput::end_frame(const rec::FrameRecord& record, const rec::DrawableC
         s.non_finite_primitives, s.non_finite_draws, s.emitters, s.host_waits,
         wall_timer.elapsed_ms(), s.traced_draws, s.sky_draws, s.raster_draws, s.instances,
         s.tlas_builds, s.tlas_updates, s.upload_bytes, s.classify_ms, s.denoise_ms, s.composite_ms,
-        s.denoised, rt::vk::live_object_count().load(std::memory_order_relaxed),
+        s.denoised, s.denoised_tiles, rt::vk::live_object_count().load(std::memory_order_relaxed),
         resident_kilobytes(), heap.in_use_kb, heap.free_kb, kind_counts(s).c_str(),
         rt::vk::live_object_counts_text().c_str());
     if (stats_out_) std::fflush(stats_out_.get());

@@ -34,6 +34,7 @@ constexpr VkDescriptorSetLayoutBinding kBindings[] = {
                     GLPT_TRACE_TEXTURES_OTHER),
     compute_binding(GLPT_PT_BINDING_TEXTURES_CUBE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
                     GLPT_TRACE_TEXTURES_OTHER),
+    compute_binding(GLPT_PT_BINDING_DENOISE_TILES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
 };
 static_assert(GLPT_GBUFFER_ATTACHMENTS == 4 && GLPT_CHANNELS == 3);
 
@@ -58,6 +59,7 @@ void PathTracePass::record(VkCommandBuffer cmd, const PathTraceResources& resour
   const VkDescriptorBufferInfo clip_planes = whole(resources.clip_planes);
   const VkDescriptorBufferInfo states = whole(resources.states);
   const VkDescriptorBufferInfo counters = whole(resources.counters);
+  const VkDescriptorBufferInfo denoise_tiles = whole(resources.denoise_tiles);
   const VkDescriptorBufferInfo frame{resources.frame->handle(), 0, sizeof(gpu::FrameUniforms)};
   VkDescriptorImageInfo images[GLPT_GBUFFER_ATTACHMENTS + GLPT_CHANNELS];
   for (uint32_t i = 0; i < GLPT_GBUFFER_ATTACHMENTS; ++i)
@@ -81,6 +83,7 @@ void PathTracePass::record(VkCommandBuffer cmd, const PathTraceResources& resour
       storage_buffer_write(set, GLPT_PT_BINDING_CLIP_PLANES, &clip_planes),
       storage_buffer_write(set, GLPT_PT_BINDING_STATES, &states),
       storage_buffer_write(set, GLPT_PT_BINDING_COUNTERS, &counters),
+      storage_buffer_write(set, GLPT_PT_BINDING_DENOISE_TILES, &denoise_tiles),
       uniform_buffer_write(set, GLPT_PT_BINDING_FRAME, &frame),
       storage_image_write(set, GLPT_PT_BINDING_GBUFFER + 0, &images[0]),
       storage_image_write(set, GLPT_PT_BINDING_GBUFFER + 1, &images[1]),

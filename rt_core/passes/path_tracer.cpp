@@ -115,6 +115,8 @@ PathTracer::PathTracer(const RenderSettings& settings, std::shared_ptr<VulkanDev
       GpuBuffer::create(*device_, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
   counters_ =
       GpuBuffer::create(*device_, sizeof(gpu::GpuCounters), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  no_denoise_tiles_ = GpuBuffer::create(*device_, (GLPT_DN_TILES_HEADER + 2) * sizeof(uint32_t),
+                                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
 }
 
 std::unique_ptr<PathTracer> PathTracer::create(std::shared_ptr<VulkanDevice> device,
@@ -230,7 +232,8 @@ void PathTracer::write_denoise_inputs(const TraceScene& scene, bool denoise, boo
                                 kClampedHistoryLength, accumulated_weight);
     uniforms.jitter = glm::vec4(frame_jitter_, 0.0f, 0.0f);
     uniforms.slots =
-        glm::uvec4(denoiser_.history_slot(), denoiser_.previous_history_slot(), 0u, 0u);
+        glm::uvec4(denoiser_.history_slot(), denoiser_.previous_history_slot(), denoiser_.stamp(),
+                   denoiser_.previous_stamp());
     std::vector<gpu::GpuStateHistory>& histories = state_history_table_;
     histories.assign(std::max<size_t>(scene.states.size(), 1), gpu::GpuStateHistory{});
     for (size_t i = 0; i < scene.states.size(); ++i) {
@@ -503,6 +506,11 @@ void PathTracer::trace(const TraceScene& scene, const TraceTargets& targets, Fra
   stats.upload_bytes += upload(*device_, states_, states);
 
   ensure_channels(scene.width, scene.height);
+  const bool denoise = denoises_this_frame() && denoiser_.fits(scene.width, scene.height);
+  bool history_valid = false;
+  if (denoise) history_valid = denoiser_.prepare(scene.width, scene.height, targets.history_owner);
+  write_denoise_inputs(scene, denoise, history_valid, stats);
+
   gpu::FrameUniforms uniforms{};
   // The seed changes every frame so accumulated frames (and restarted ones) see new samples.
   uniforms.image =
@@ -515,7 +523,8 @@ void PathTracer::trace(const TraceScene& scene, const TraceTargets& targets, Fra
   const float half_sin = std::sin(0.5f * angle);
   uniforms.params = glm::vec4(settings_.ao_radius, std::cos(angle), 2.0f * half_sin * half_sin,
                               scene.pixel_spread);
-  uniforms.options = glm::uvec4(options_bits(settings_) | (any_sky ? GLPT_OPTION_SKY : 0u),
+  uniforms.options = glm::uvec4(options_bits(settings_) | (any_sky ? GLPT_OPTION_SKY : 0u) |
+                                    (denoise ? GLPT_OPTION_DENOISE_TILES : 0u),
                                 static_cast<uint32_t>(settings_.light_choice), emitter_count, 0u);
   uniforms.environment = scene.clear_color;
   // GLPT_SCALE: the coarse grid the trace pass traces (none for the reference, whose every
@@ -551,11 +560,6 @@ void PathTracer::trace(const TraceScene& scene, const TraceTargets& targets, Fra
     tlas_valid_ = true;
   }
 
-  const bool denoise = denoises_this_frame() && denoiser_.fits(scene.width, scene.height);
-  bool history_valid = false;
-  if (denoise) history_valid = denoiser_.prepare(scene.width, scene.height, targets.history_owner);
-  write_denoise_inputs(scene, denoise, history_valid, stats);
-
   // ---- trace, then composite, in one submission (also when no sample is left to add: the
   // composite pass writes the accumulated image); with the denoiser between them, three
   // submissions, each timed on its own
@@ -568,6 +572,7 @@ void PathTracer::trace(const TraceScene& scene, const TraceTargets& targets, Fra
   trace.states = &states_;
   trace.counters = &counters_;
   trace.frame = &frame_uniforms_;
+  trace.denoise_tiles = denoise ? &denoiser_.tiles() : &no_denoise_tiles_;
   // Unused slots of the texture tables sample a white dummy of their target (the shader never
   // indexes them; dummy_view takes TextureCache's kinds: 1-D, 2-D, 3-D, cube).
   auto fill = [&](std::span<VkDescriptorImageInfo> out, uint32_t target, uint32_t dummy_kind) {
@@ -620,6 +625,7 @@ void PathTracer::trace(const TraceScene& scene, const TraceTargets& targets, Fra
     resources.surface = targets.gbuffer->image(GLPT_GBUFFER_SURFACE).view();
     for (int c = 0; c < GLPT_CHANNELS; ++c) resources.channels[c] = channels_[c].view();
     unreported_.push_back({device_->submit([&](VkCommandBuffer cmd) {
+                             denoiser_.record_before_trace(cmd);
                              trace_pass_.record(cmd, trace, scene.width, scene.height, grid_width,
                                                 grid_height);
                            }),
@@ -638,6 +644,7 @@ void PathTracer::trace(const TraceScene& scene, const TraceTargets& targets, Fra
     stats.denoised = 1;
   }
   counters_read_ = false;
+  denoised_unread_ = denoise;
   accumulated_samples_ += frame_samples_;
   if (frame_samples_ > 0) ++accumulated_passes_;
   frame_samples_ = 0;
@@ -649,6 +656,8 @@ void PathTracer::read_counters() {
   const gpu::GpuCounters* counters = counters_.as<gpu::GpuCounters>();
   counted_rays_ += counters->rays.x;
   counted_non_finite_ += counters->rays.y;
+  if (denoised_unread_) counted_denoised_tiles_ += denoiser_.listed_tiles();
+  denoised_unread_ = false;
   counters_read_ = true;
 }
 
@@ -657,7 +666,9 @@ void PathTracer::finish_frame(FrameStats& stats) {
   read_counters();
   stats.rays += counted_rays_;
   stats.non_finite_samples += counted_non_finite_;
+  stats.denoised_tiles += counted_denoised_tiles_;
   counted_rays_ = counted_non_finite_ = 0;
+  counted_denoised_tiles_ = 0;
   for (const auto& [ticket, member] : unreported_) stats.*member += device_->take_device_ms(ticket);
   unreported_.clear();
   scene_dump_.finish(stats);

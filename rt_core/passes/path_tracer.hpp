@@ -161,6 +161,8 @@ class PathTracer {
   // A 1x1 stand-in for the denoiser's work image (rgba32ui array, GLPT_DN_BINDING_WORK), bound
   // to the composite when the frame is not denoised (the composite does not read it then).
   GpuImage no_denoised_;
+  // The trace pass's tile-list binding in frames the denoiser skips (which it never writes).
+  GpuBuffer no_denoise_tiles_;
 
   FrameSignature previous_signature_;
   bool same_scene_ = false;  // this frame's signature equals the previous frame's
@@ -182,6 +184,8 @@ class PathTracer {
   VulkanDevice::Ticket trace_ticket_ = 0;               // the last trace submission
   bool counters_read_ = true;                           // its counters_ are in counted_ already
   uint64_t counted_rays_ = 0, counted_non_finite_ = 0;  // of this frame's completed traces
+  bool denoised_unread_ = false;     // the last trace's denoiser tile count is not counted yet
+  uint32_t counted_denoised_tiles_ = 0;
   // Adds the last trace's counters to the counted ones (it has completed).
   void read_counters();
 };

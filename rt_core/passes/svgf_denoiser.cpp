@@ -61,18 +61,21 @@ bool SvgfDenoiser::prepare(uint32_t width, uint32_t height, const void* owner) {
   if (width != width_ || height != height_ || !work_) {
     history_valid_ = false;
     width_ = height_ = 0;
-    auto image = [&](VkFormat format, uint32_t layers) {
+    auto image = [&](VkFormat format, uint32_t layers,
+                     VkImageUsageFlags usage = VK_IMAGE_USAGE_STORAGE_BIT) {
       GpuImageInfo info;
       info.format = format;
       info.extent = {std::max(width, 1u), std::max(height, 1u), 1};
-      info.usage = VK_IMAGE_USAGE_STORAGE_BIT;
+      info.usage = usage;
       info.view_type = layers > 1 ? VK_IMAGE_VIEW_TYPE_2D_ARRAY : VK_IMAGE_VIEW_TYPE_2D;
       info.layers = layers;
       return GpuImage::create(device_, info);
     };
     for (int i = 0; i < 2; ++i) {
       guide_eyes_[i] = image(VK_FORMAT_R32G32B32A32_SFLOAT, 1);
-      guide_metas_[i] = image(VK_FORMAT_R32G32B32A32_UINT, 1);
+      // Cleared once (record_before_trace).
+      guide_metas_[i] = image(VK_FORMAT_R32G32B32A32_UINT, 1,
+                              VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT);
       histories_[i] = image(VK_FORMAT_R32G32B32A32_UINT, GLPT_DN_HISTORY_LAYERS);
       moments_[i] = image(VK_FORMAT_R32G32B32A32_SFLOAT, GLPT_DN_MOMENT_LAYERS);
     }
@@ -95,9 +98,7 @@ bool SvgfDenoiser::prepare(uint32_t width, uint32_t height, const void* owner) {
   return history_valid_;
 }
 
-void SvgfDenoiser::record(VkCommandBuffer cmd, const DenoiseResources& resources,
-                          uint32_t iterations, bool specular) {
-  const uint32_t current = parity_, previous = parity_ ^ 1u;
+void SvgfDenoiser::record_before_trace(VkCommandBuffer cmd) {
   if (images_need_layout_) {
     for (int i = 0; i < 2; ++i) {
       guide_eyes_[i].initial_barrier(cmd);
@@ -106,8 +107,27 @@ void SvgfDenoiser::record(VkCommandBuffer cmd, const DenoiseResources& resources
       moments_[i].initial_barrier(cmd);
     }
     work_.initial_barrier(cmd);
+    // The passes read guides of tiles they skip: a new image's must say "no surface" (stamp 0).
+    const VkClearColorValue zero{};
+    const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+    for (const GpuImage& metas : guide_metas_)
+      vkCmdClearColorImage(cmd, metas.handle(), VK_IMAGE_LAYOUT_GENERAL, &zero, 1, &range);
     images_need_layout_ = false;
   }
+  // An empty tile list: no tile, a dispatch of (0, 1, 1), no tile flagged.
+  const uint32_t header[GLPT_DN_TILES_HEADER] = {0u, 1u, 1u, 0u};
+  vkCmdUpdateBuffer(cmd, tiles_.handle(), 0, sizeof header, header);
+  vkCmdFillBuffer(cmd, tiles_.handle(), sizeof header, tile_count_ * sizeof(uint32_t), 0u);
+  const VkMemoryBarrier cleared{VK_STRUCTURE_TYPE_MEMORY_BARRIER, nullptr,
+                                VK_ACCESS_TRANSFER_WRITE_BIT,
+                                VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT};
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0,
+                       1, &cleared, 0, nullptr, 0, nullptr);
+}
+
+void SvgfDenoiser::record(VkCommandBuffer cmd, const DenoiseResources& resources,
+                          uint32_t iterations, bool specular) {
+  const uint32_t current = parity_, previous = parity_ ^ 1u;
   const VkDescriptorBufferInfo uniforms{resources.uniforms->handle(), 0,
                                         sizeof(gpu::DenoiseUniforms)};
   const VkDescriptorBufferInfo states{resources.states->handle(), 0, VK_WHOLE_SIZE};
@@ -163,16 +183,9 @@ void SvgfDenoiser::record(VkCommandBuffer cmd, const DenoiseResources& resources
                          VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT,
                          0, 1, &memory, 0, nullptr, 0, nullptr);
   };
-  // An empty tile list: no tile, a dispatch of (0, 1, 1), no tile flagged.
-  const uint32_t header[GLPT_DN_TILES_HEADER] = {0u, 1u, 1u, 0u};
-  vkCmdUpdateBuffer(cmd, tiles_.handle(), 0, sizeof header, header);
-  vkCmdFillBuffer(cmd, tiles_.handle(), sizeof header, tile_count_ * sizeof(uint32_t), 0u);
-  const VkMemoryBarrier cleared{VK_STRUCTURE_TYPE_MEMORY_BARRIER, nullptr,
-                                VK_ACCESS_TRANSFER_WRITE_BIT,
-                                VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT};
-  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0,
-                       1, &cleared, 0, nullptr, 0, nullptr);
-  temporal_->dispatch(cmd, nullptr, 0, width_, height_);
+  // The trace pass listed the tiles (record_before_trace, GLPT_OPTION_DENOISE_TILES).
+  barrier();
+  temporal_->dispatch_indirect(cmd, nullptr, 0, tiles_.handle(), 0);
   for (uint32_t i = 0; i < iterations; ++i) {
     barrier();
     // The first iteration's result is the colour history (the paper's feedback) and the
@@ -185,6 +198,8 @@ void SvgfDenoiser::record(VkCommandBuffer cmd, const DenoiseResources& resources
   }
   barrier();
   parity_ = previous;
+  previous_stamp_ = stamp_;
+  stamp_ = stamp_ % 0xFFFFFFu + 1u;  // 1 .. 2^24 - 1
   history_valid_ = true;
   history_has_specular_ = specular;
 }

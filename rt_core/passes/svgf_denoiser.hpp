@@ -46,7 +46,15 @@ class SvgfDenoiser {
   // it was a buffer (tests/extremes). Larger frames are shown unfiltered, as under
   // GLPT_DENOISER=off.
   bool fits(uint32_t width, uint32_t height) const;
-  // Records the temporal pass and `iterations` a-trous iterations; the result is in work() at
+  // Records, ahead of the trace pass that fills it, this frame's empty tile list (tiles(): the
+  // tiles with a pixel the denoiser filters, GLPT_DN_BINDING_TILES), and after prepare() made
+  // new images their layouts and cleared guides. Call it for every frame record() follows.
+  void record_before_trace(VkCommandBuffer cmd);
+  const GpuBuffer& tiles() const { return tiles_; }
+  // The tiles the last record filtered: read once it completed.
+  uint32_t listed_tiles() const { return tiles_ ? tiles_.as<uint32_t>()[0] : 0u; }
+  // Records the temporal pass and `iterations` a-trous iterations over the listed tiles; the
+  // result is in work() at
   // slot 0 (no iteration) or 1 + (iterations - 1) % 2. This frame's history becomes the
   // previous one for the next record. `specular`: the frame filters the specular channel
   // (GLPT_DN_NO_SPECULAR clear); without it the history holds no specular channel.
@@ -59,6 +67,10 @@ class SvgfDenoiser {
   // (DenoiseUniforms::slots).
   uint32_t history_slot() const { return GLPT_DN_SLOTS + parity_; }
   uint32_t previous_history_slot() const { return GLPT_DN_SLOTS + (parity_ ^ 1u); }
+  // The frame stamps of the next record's guides and of the previous one's
+  // (DenoiseUniforms::slots.zw, DenoiseGuide::meta.y): 24 bits, never 0.
+  uint32_t stamp() const { return stamp_; }
+  uint32_t previous_stamp() const { return previous_stamp_; }
   const GpuImage& work() const { return work_; }
   // The next frame starts without history (a failure, a cut the caller knows of).
   void forget_history() noexcept { history_valid_ = false; }
@@ -78,6 +90,7 @@ class SvgfDenoiser {
   bool history_valid_ = false;
   bool history_has_specular_ = false;
   uint32_t parity_ = 0;
+  uint32_t stamp_ = 1, previous_stamp_ = 0;
 };
 
 }  // namespace glpt::rt

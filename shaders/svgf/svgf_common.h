@@ -48,6 +48,12 @@ uint tiles_across() { return (dn.image.x + gl_WorkGroupSize.x - 1u) / gl_WorkGro
 uint tile_count() {
   return tiles_across() * ((dn.image.y + gl_WorkGroupSize.y - 1u) / gl_WorkGroupSize.y);
 }
+// The invocation's pixel in a dispatch over the listed tiles (one workgroup per list entry).
+ivec2 listed_tile_pixel() {
+  uint tile = tile_words[tile_count() + gl_WorkGroupID.x];
+  return ivec2(uvec2(tile % tiles_across(), tile / tiles_across()) * gl_WorkGroupSize.xy +
+               gl_LocalInvocationID.xy);
+}
 
 DenoiseGuide load_guide(ivec2 p) {
   return DenoiseGuide(imageLoad(guide_eye, p), imageLoad(guide_meta, p));
@@ -56,10 +62,11 @@ DenoiseGuide load_previous_guide(ivec2 p) {
   return DenoiseGuide(imageLoad(previous_guide_eye, p), imageLoad(previous_guide_meta, p));
 }
 DenoiseGuide make_guide(vec3 eye, vec3 normal, uint id, uint history_length) {
-  return DenoiseGuide(vec4(eye, normal.z),
-                      uvec4(max(id, 1u), history_length, floatBitsToUint(normal.xy)));
+  return DenoiseGuide(vec4(eye, normal.z), uvec4(max(id, 1u), history_length | (dn.slots.z << 8),
+                                                 floatBitsToUint(normal.xy)));
 }
-bool guide_shaded(DenoiseGuide g) { return g.meta.x != 0u; }
+// Whether this frame filters the pixel of guide g (this frame wrote it: its stamp).
+bool guide_shaded(DenoiseGuide g) { return g.meta.x != 0u && (g.meta.y >> 8) == dn.slots.z; }
 vec3 guide_normal(DenoiseGuide g) { return vec3(uintBitsToFloat(g.meta.zw), g.eye.w); }
 void store_guide(ivec2 p, DenoiseGuide g) {
   imageStore(guide_eye, p, g.eye);

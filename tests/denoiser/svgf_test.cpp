@@ -80,6 +80,8 @@ struct SceneOptions {
   // The program transforms its vertices and lights by the camera itself and draws under an
   // identity modelview (software transform): every draw deforms when the camera moves.
   bool camera_in_vertices = false;
+  bool floor = true;  // without it the box stands over the cleared background
+  float box_scale = 1.0f;
 };
 
 void draw_scene(const SceneOptions& o) {
@@ -99,13 +101,14 @@ void draw_scene(const SceneOptions& o) {
   glpt::test::inverse_square_light(GL_LIGHT1, at({-2.0f, 2.5f, 2.0f}), glm::vec3(2.0f));
   material({0.7f, 0.7f, 0.7f});
   // The floor in tiles: separate draws, as programs draw levels.
-  for (int i = -3; i < 3; ++i)
+  for (int i = -3; i < 3 && o.floor; ++i)
     for (int j = -3; j < 3; ++j)
       quad({float(i), 0, float(j + 1)}, {float(i + 1), 0, float(j + 1)},
            {float(i + 1), 0, float(j)}, {float(i), 0, float(j)});
   material({0.8f, 0.3f, 0.2f}, o.box_specular);
   glPushMatrix();
   glTranslatef(o.box_x, 0.0f, 0.0f);
+  glScalef(o.box_scale, o.box_scale, o.box_scale);
   box({-0.6f, 0.0f, -0.6f}, {0.6f, 1.0f, 0.6f});
   glPopMatrix();
 }
@@ -251,6 +254,63 @@ TEST(Svgf, StillSceneAtOneSampleHasAFifthOfTheRawRelMseAndHardlyFlickers) {
   std::printf("still: frame-to-frame change raw %.3f denoised %.3f (%.1fx)\n", change_raw,
               change_denoised, change_raw / change_denoised);
   EXPECT_LE(change_denoised * 5.0, change_raw);
+}
+
+TEST(Svgf, AnObjectOverTheBackgroundIsFilteredInTheTilesTheTracerShaded) {
+  // The box alone over the cleared background: the trace pass lists the 32x8 tiles with a pixel
+  // to filter and the denoiser's passes run over those alone (GLPT_DN_BINDING_TILES). A tile
+  // left off the list would show what its work slots held before (black here), and a-trous
+  // iterations over no tile would leave the temporal result: both are measured.
+  SceneOptions box;
+  box.floor = false;
+  box.box_scale = 1.6f;
+  const std::vector<uint8_t> ref = reference(box);
+  // Errors over the box's pixels (the background's are 0 in every image).
+  std::vector<uint8_t> covered(size_t(kSize) * kSize);
+  for (size_t p = 0; p < covered.size(); ++p)
+    covered[p] = ref[4 * p] != 0 || ref[4 * p + 1] != 0 || ref[4 * p + 2] != 0;
+  const int frames = 12;
+  std::vector<glpt::rt::FrameStats> stats;
+  const Frames denoised = render(with(kOneSample, {}), frames, [&](int) { return box; }, &stats);
+  const Frames temporal = render(with(kOneSample, {{"GLPT_DENOISE_ITERATIONS", "0"}}), frames,
+                                 [&](int) { return box; });
+  const Frames raw =
+      render(with(kOneSample, {{"GLPT_DENOISER", "off"}}), frames, [&](int) { return box; });
+  // Traced on a coarse grid and filled (GLPT_SCALE): the fill pass lists the tiles.
+  const Frames scaled = render(with(kOneSample, {{"GLPT_SCALE", "0.5"}}), frames,
+                               [&](int) { return box; });
+  const Frames scaled_raw = render(with(kOneSample, {{"GLPT_SCALE", "0.5"}, {"GLPT_DENOISER", "off"}}),
+                                   frames, [&](int) { return box; });
+  keep("reference", ref);
+  keep("denoised", denoised.back());
+  keep("temporal", temporal.back());
+  keep("scaled", scaled.back());
+  const double mse_denoised = rel_mse(denoised.back(), ref, &covered),
+               mse_temporal = rel_mse(temporal.back(), ref, &covered),
+               mse_raw = rel_mse(raw.back(), ref, &covered),
+               mse_scaled = rel_mse(scaled.back(), ref, &covered),
+               mse_scaled_raw = rel_mse(scaled_raw.back(), ref, &covered);
+  constexpr uint32_t kTiles = (kSize + 31) / 32 * ((kSize + 7) / 8);
+  std::printf(
+      "box alone: %u of %u tiles filtered; relMSE raw %.5f temporal alone %.5f denoised %.5f "
+      "(%.1fx); at GLPT_SCALE=0.5 raw %.5f denoised %.5f (%.1fx)\n",
+      stats.back().denoised_tiles, kTiles, mse_raw, mse_temporal, mse_denoised,
+      mse_raw / mse_denoised, mse_scaled_raw, mse_scaled, mse_scaled_raw / mse_scaled);
+  EXPECT_GT(stats.back().denoised_tiles, 0u);
+  EXPECT_LT(stats.back().denoised_tiles, kTiles);
+  EXPECT_LE(mse_denoised * 5.0, mse_raw);
+  EXPECT_LE(mse_denoised * 1.3, mse_temporal);
+  EXPECT_LE(mse_scaled * 3.0, mse_scaled_raw);
+  // The background stays as GL cleared it.
+  size_t background = 0, changed = 0;
+  for (size_t p = 0; p < covered.size(); ++p)
+    if (!covered[p]) {
+      ++background;
+      changed += denoised.back()[4 * p] != 0 || denoised.back()[4 * p + 1] != 0 ||
+                 denoised.back()[4 * p + 2] != 0;
+    }
+  EXPECT_GT(background, covered.size() / 4);
+  EXPECT_EQ(changed, 0u);
 }
 
 TEST(Svgf, SpecularLightIsFilteredWhereASurfaceReflectsIt) {
