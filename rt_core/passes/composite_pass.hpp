@@ -13,8 +13,8 @@
 namespace glpt::rt {
 
 struct CompositeResources {
-  const GpuBuffer* frame = nullptr;         // gpu::FrameUniforms
-  const GpuBuffer* states = nullptr;        // gpu::GpuTraceState[]
+  const GpuBuffer* frame = nullptr;           // gpu::FrameUniforms
+  const GpuBuffer* states = nullptr;          // gpu::GpuTraceState[]
   VkImageView accumulation = VK_NULL_HANDLE;  // rgba32f array, 2 layers (composite.comp)
   std::array<VkImageView, 4> gbuffer{};
   std::array<VkImageView, GLPT_CHANNELS> channels{};

@@ -14,15 +14,15 @@ namespace glpt::rt {
 
 struct PathTraceResources {
   VkAccelerationStructureKHR scene = VK_NULL_HANDLE;
-  const GpuBuffer* instances = nullptr;               // gpu::GpuInstance[]
-  const GpuBuffer* lights = nullptr;                  // gpu::GpuLight[]
-  const GpuBuffer* emitters = nullptr;                // gpu::GpuEmitter[]
-  const GpuBuffer* clip_planes = nullptr;             // gpu::GpuClipPlanes[]
-  const GpuBuffer* states = nullptr;                  // gpu::GpuTraceState[]
-  const GpuBuffer* counters = nullptr;                // gpu::GpuCounters, zeroed by the caller
-  const GpuBuffer* frame = nullptr;                   // gpu::FrameUniforms
+  const GpuBuffer* instances = nullptr;      // gpu::GpuInstance[]
+  const GpuBuffer* lights = nullptr;         // gpu::GpuLight[]
+  const GpuBuffer* emitters = nullptr;       // gpu::GpuEmitter[]
+  const GpuBuffer* clip_planes = nullptr;    // gpu::GpuClipPlanes[]
+  const GpuBuffer* states = nullptr;         // gpu::GpuTraceState[]
+  const GpuBuffer* counters = nullptr;       // gpu::GpuCounters, zeroed by the caller
+  const GpuBuffer* frame = nullptr;          // gpu::FrameUniforms
   const GpuBuffer* denoise_tiles = nullptr;  // the denoiser's tile list (GLPT_DN_BINDING_TILES)
-  std::array<VkImageView, 4> gbuffer{};               // gbuffer_layout.h attachments
+  std::array<VkImageView, 4> gbuffer{};      // gbuffer_layout.h attachments
   std::array<VkImageView, GLPT_CHANNELS> channels{};  // written
   // Combined image samplers of the texture tables, one per target (every entry valid: dummies
   // where unused).

@@ -184,7 +184,7 @@ class PathTracer {
   VulkanDevice::Ticket trace_ticket_ = 0;               // the last trace submission
   bool counters_read_ = true;                           // its counters_ are in counted_ already
   uint64_t counted_rays_ = 0, counted_non_finite_ = 0;  // of this frame's completed traces
-  bool denoised_unread_ = false;     // the last trace's denoiser tile count is not counted yet
+  bool denoised_unread_ = false;  // the last trace's denoiser tile count is not counted yet
   uint32_t counted_denoised_tiles_ = 0;
   // Adds the last trace's counters to the counted ones (it has completed).
   void read_counters();

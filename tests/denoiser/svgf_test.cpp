@@ -271,16 +271,18 @@ TEST(Svgf, AnObjectOverTheBackgroundIsFilteredInTheTilesTheTracerShaded) {
     covered[p] = ref[4 * p] != 0 || ref[4 * p + 1] != 0 || ref[4 * p + 2] != 0;
   const int frames = 12;
   std::vector<glpt::rt::FrameStats> stats;
-  const Frames denoised = render(with(kOneSample, {}), frames, [&](int) { return box; }, &stats);
+  const Frames denoised = render(
+      with(kOneSample, {}), frames, [&](int) { return box; }, &stats);
   const Frames temporal = render(with(kOneSample, {{"GLPT_DENOISE_ITERATIONS", "0"}}), frames,
                                  [&](int) { return box; });
   const Frames raw =
       render(with(kOneSample, {{"GLPT_DENOISER", "off"}}), frames, [&](int) { return box; });
   // Traced on a coarse grid and filled (GLPT_SCALE): the fill pass lists the tiles.
-  const Frames scaled = render(with(kOneSample, {{"GLPT_SCALE", "0.5"}}), frames,
-                               [&](int) { return box; });
-  const Frames scaled_raw = render(with(kOneSample, {{"GLPT_SCALE", "0.5"}, {"GLPT_DENOISER", "off"}}),
-                                   frames, [&](int) { return box; });
+  const Frames scaled =
+      render(with(kOneSample, {{"GLPT_SCALE", "0.5"}}), frames, [&](int) { return box; });
+  const Frames scaled_raw =
+      render(with(kOneSample, {{"GLPT_SCALE", "0.5"}, {"GLPT_DENOISER", "off"}}), frames,
+             [&](int) { return box; });
   keep("reference", ref);
   keep("denoised", denoised.back());
   keep("temporal", temporal.back());
