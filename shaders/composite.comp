@@ -9,11 +9,15 @@
 // of this frame), which is how partially covered edge pixels blend. The result is clamped to
 // [0, 1] and written into the colour buffer(s) the pixel's draw writes.
 //
-// When the denoiser ran (DenoiseUniforms image.z GLPT_DN_ACTIVE), a pixel it filtered shows the
-// frame composited from its channels instead, mixed with the accumulated average by params.w
-// (how far accumulation has come towards GLPT_DENOISE_UNTIL samples, from which on the average
-// alone is shown). The accumulation always sums the raw samples: it converges to the unbiased
-// image, whatever the denoiser did on the way.
+// When the denoiser ran (DenoiseUniforms image.z GLPT_DN_ACTIVE), the pixel shows the average of
+// the frames composited from its channels since the accumulation began (where it filtered the
+// pixel; the raw colour where it did not), mixed with the accumulated average of the raw samples
+// by params.w (how far accumulation has come towards GLPT_DENOISE_UNTIL samples, from which on the
+// raw average alone is shown). Averaging the denoised frames of a still scene anti-aliases them
+// as the raw average is (each frame's G-buffer is jittered) instead of showing the last frame's
+// jittered edges, and averages the denoiser's own residual noise; when anything changes the
+// accumulation, and this average, start again. The raw average always sums the raw samples: it
+// converges to the unbiased image, whatever the denoiser did on the way.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_shader_image_load_formatted : require
 
@@ -32,7 +36,8 @@ layout(std430, set = 0, binding = GLPT_CO_BINDING_STATES) readonly buffer StateT
   GpuTraceState states[];
 };
 // Per pixel, layer 0 rgb: sum of the covered samples' colour, a: sum of their alpha; layer 1
-// x: how many samples were covered, y: how many samples there were. An image, not a buffer: a
+// x: how many samples were covered, y: how many samples there were; layer 2 (frames the
+// denoiser ran): as layer 0 with each frame's denoised colour for its samples. An image, not a buffer: a
 // buffer binding is limited to maxStorageBufferRange (lavapipe: 128 MiB, 4 million pixels).
 layout(set = 0, binding = GLPT_CO_BINDING_ACCUMULATION, rgba32f) uniform image2DArray accumulation;
 layout(set = 0, binding = GLPT_CO_BINDING_GBUFFER + GLPT_GBUFFER_POSITION, rgba32f)
@@ -87,15 +92,17 @@ vec4 composite(ivec2 pixel, uvec4 surface, vec3 light[GLPT_CHANNELS]) {
 
 // Writes the pixel's average over all accumulated samples into the colour buffers `targets`:
 // `sum` holds the covered samples (`covered` of the `total`); the others show what the colour
-// buffer holds. With denoised_weight < 1 the average is mixed with `denoised` (this frame's
-// denoised colour) by it.
+// buffer holds. With denoised_weight < 1 the average is mixed by it with the average of
+// `denoised_sum` (the same samples in their frames' denoised colours).
 void write_average(ivec2 pixel, uint targets, vec4 sum, float covered, float total,
-                   vec4 denoised, float denoised_weight) {
+                   vec4 denoised_sum, float denoised_weight) {
   for (uint t = 0u; t < 2u; ++t) {
     if ((targets & (1u << t)) == 0u) continue;
     vec4 background = t == 0u ? imageLoad(front_buffer, pixel) : imageLoad(back_buffer, pixel);
-    vec4 color = clamp((sum + (total - covered) * background) / total, 0.0, 1.0);
-    if (denoised_weight < 1.0) color = mix(clamp(denoised, 0.0, 1.0), color, denoised_weight);
+    vec4 uncovered = (total - covered) * background;
+    vec4 color = clamp((sum + uncovered) / total, 0.0, 1.0);
+    if (denoised_weight < 1.0)
+      color = mix(clamp((denoised_sum + uncovered) / total, 0.0, 1.0), color, denoised_weight);
     if (t == 0u)
       imageStore(front_buffer, pixel, color);
     else
@@ -118,11 +125,11 @@ void main() {
   vec4 sum = covered ? composite(pixel, surface, raw) * traced : vec4(0.0);
   // The denoiser filtered what it calls shaded (svgf_temporal.comp): covered pixels, lit ones or
   // any under GLPT_UNLIT=ao; its result is in the slot of its last iteration.
-  vec4 denoised_color = vec4(0.0);
-  float denoised_weight = 1.0;
+  bool denoising = (dn.image.z & GLPT_DN_ACTIVE) != 0u;
+  vec4 denoised_sum = sum;
+  float denoised_weight = denoising ? clamp(dn.params.w, 0.0, 1.0) : 1.0;
   bool lit = (surface.w & GLPT_GBUFFER_LIT) != 0u;
-  if ((dn.image.z & GLPT_DN_ACTIVE) != 0u && covered &&
-      (lit || (dn.image.z & GLPT_DN_UNLIT_AO) != 0u)) {
+  if (denoising && covered && (lit || (dn.image.z & GLPT_DN_UNLIT_AO) != 0u)) {
     uint slot = dn.image.w == 0u ? 0u : 1u + (dn.image.w - 1u) % 2u;
     int base = int(slot * GLPT_DN_WORK_LAYERS);
     // Two channels a texel, in half floats (GLPT_DN_BINDING_WORK). A channel the denoiser did
@@ -133,8 +140,7 @@ void main() {
       specular = unpack_work(imageLoad(denoised, ivec3(pixel, base + 1)).xy).rgb;
     vec3 light[GLPT_CHANNELS] = vec3[GLPT_CHANNELS](unpack_work(pair.xy).rgb,
                                                     unpack_work(pair.zw).rgb, specular);
-    denoised_color = composite(pixel, surface, light);
-    denoised_weight = clamp(dn.params.w, 0.0, 1.0);
+    denoised_sum = composite(pixel, surface, light) * traced;
   }
   float count = covered ? traced : 0.0;
   float total = surface.x != 0u ? traced : float(samples);
@@ -143,13 +149,17 @@ void main() {
     vec4 counts = imageLoad(accumulation, ivec3(pixel, 1));
     count += counts.x;
     total += counts.y;
+    // The denoiser runs from an accumulation's first frame until it stops for good (at
+    // GLPT_DENOISE_UNTIL samples): while it runs, layer 2 holds every earlier frame's.
+    if (denoising) denoised_sum += imageLoad(accumulation, ivec3(pixel, 2));
   }
   if (samples > 0u) {
     imageStore(accumulation, ivec3(pixel, 0), sum);
     imageStore(accumulation, ivec3(pixel, 1), vec4(count, total, 0.0, 0.0));
+    if (denoising && denoised_weight < 1.0) imageStore(accumulation, ivec3(pixel, 2), denoised_sum);
   }
   if (count > 0.0 && total > 0.0) {
     uint targets = surface.x != 0u ? states[surface.x - 1u].info.z : frame.image.z;
-    write_average(pixel, targets, sum, count, total, denoised_color, denoised_weight);
+    write_average(pixel, targets, sum, count, total, denoised_sum, denoised_weight);
   }
 }

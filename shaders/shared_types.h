@@ -63,7 +63,7 @@ using mat4 = glm::mat4;
 // composite.comp, set 0
 #define GLPT_CO_BINDING_FRAME 0         // uniform FrameUniforms
 #define GLPT_CO_BINDING_STATES 1        // GpuTraceState[]
-#define GLPT_CO_BINDING_ACCUMULATION 2  // rgba32f array of 2 layers, see composite.comp
+#define GLPT_CO_BINDING_ACCUMULATION 2  // rgba32f array of 3 layers, see composite.comp
 #define GLPT_CO_BINDING_GBUFFER 3       // the G-buffer, bindings 3..6
 #define GLPT_CO_BINDING_CHANNELS 7      // the channels, bindings 7..9
 #define GLPT_CO_BINDING_FRONT 10        // colour buffers: storage images, read and written

@@ -157,8 +157,12 @@ void main() {
     if (clip.w > 0.0 && !any(isnan(previous_normal))) {
       previous_eye.xyz /= previous_eye.w;
       vec2 window = (clip.xy / clip.w * 0.5 + 0.5) * sh.viewport.zw + sh.viewport.xy;
-      // Pixel centres are at +0.5; this frame's sub-pixel jitter is no motion.
-      vec2 position = window - 0.5 - dn.jitter.xy;
+      // Pixel centres are at +0.5. This frame's sub-pixel jitter is no motion: the G-buffer was
+      // drawn shifted by it (raster_ff.vert), so the pixel's point lies `jitter` before its
+      // centre, and the history of a still point is read at this very pixel. (Subtracting it,
+      // as before, read 2 x jitter away: still scene under accumulation, 16 frames, relMSE
+      // 0.00136 -> 0.00121.)
+      vec2 position = window - 0.5 + dn.jitter.xy;
       ivec2 base = ivec2(floor(position));
       vec2 f = position - vec2(base);
       float tolerance = 2.0 * pixel_footprint(previous_eye.xyz);

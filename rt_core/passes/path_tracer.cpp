@@ -263,7 +263,7 @@ void PathTracer::ensure_channels(uint32_t width, uint32_t height) {
   // Sums and counts (composite.comp): what the composite finds there before the first frame of
   // an accumulation is never read.
   info.view_type = VK_IMAGE_VIEW_TYPE_2D_ARRAY;
-  info.layers = 2;
+  info.layers = 3;
   accumulation_ = GpuImage::create(*device_, info);
   const bool placeholder_needed = !no_denoised_;
   if (placeholder_needed) {

@@ -315,6 +315,34 @@ TEST(Svgf, AnObjectOverTheBackgroundIsFilteredInTheTilesTheTracerShaded) {
   EXPECT_EQ(changed, 0u);
 }
 
+TEST(Svgf, AStillSceneUnderAccumulationShowsTheAverageOfItsDenoisedFrames) {
+  // With accumulation on (the default) a still scene's G-buffer is jittered frame by frame for
+  // anti-aliasing. Until GLPT_DENOISE_UNTIL samples the denoised frames are shown, and the last
+  // one alone would show its jittered edges (a still image wobbling by up to half a pixel): the
+  // composite shows the average of the denoised frames since the accumulation began.
+  const SceneOptions still;
+  const std::vector<uint8_t> ref = reference(still);
+  const int frames = 16;
+  const Frames averaged = render(path({{"GLPT_SPP", "1"}, {"GLPT_DENOISE_UNTIL", "1000"}}),
+                                 frames, [&](int) { return still; });
+  const Frames single = render(with(kOneSample, {}), frames, [&](int) { return still; });
+  const Frames raw_average = render(path({{"GLPT_SPP", "1"}, {"GLPT_DENOISER", "off"}}), frames,
+                                    [&](int) { return still; });
+  keep("averaged", averaged.back());
+  keep("raw_average", raw_average.back());
+  const double mse_averaged = rel_mse(averaged.back(), ref),
+               mse_single = rel_mse(single.back(), ref),
+               mse_raw_average = rel_mse(raw_average.back(), ref);
+  std::printf(
+      "still, accumulating: relMSE of the %d denoised frames' average %.5f (FLIP %.4f), the "
+      "last denoised frame without accumulation %.5f, the raw samples' average %.5f (FLIP "
+      "%.4f)\n",
+      frames, mse_averaged, flip(averaged.back(), ref).mean, mse_single, mse_raw_average,
+      flip(raw_average.back(), ref).mean);
+  EXPECT_LE(mse_averaged * 2.0, mse_single);
+  EXPECT_LE(mse_averaged * 1.5, mse_raw_average);
+}
+
 TEST(Svgf, SpecularLightIsFilteredWhereASurfaceReflectsIt) {
   // The scenes above reflect nothing specularly: their specular channel is left out of the
   // filter (GLPT_DN_NO_SPECULAR). A shiny box brings it back: its highlights are filtered as the
@@ -562,3 +590,4 @@ TEST(Svgf, ANewSizeAndACameraCutEveryFrameStartWithoutHistory) {
 }
 
 }  // namespace
+
