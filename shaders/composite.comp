@@ -10,13 +10,15 @@
 // [0, 1] and written into the colour buffer(s) the pixel's draw writes.
 //
 // When the denoiser ran (DenoiseUniforms image.z GLPT_DN_ACTIVE), the pixel shows the average of
-// the frames composited from its channels since the accumulation began (where it filtered the
-// pixel; the raw colour where it did not), mixed with the accumulated average of the raw samples
+// the frames composited from its channels since the accumulation's second frame (where it
+// filtered the pixel; the raw colour where it did not), mixed with the accumulated average of the raw samples
 // by params.w (how far accumulation has come towards GLPT_DENOISE_UNTIL samples, from which on the
 // raw average alone is shown). Averaging the denoised frames of a still scene anti-aliases them
 // as the raw average is (each frame's G-buffer is jittered) instead of showing the last frame's
 // jittered edges, and averages the denoiser's own residual noise; when anything changes the
-// accumulation, and this average, start again. The raw average always sums the raw samples: it
+// accumulation, and this average, start again. (The first frame of an accumulation stores
+// nothing for the average: a moving scene, every frame of which is a first, pays nothing for
+// it.) The raw average always sums the raw samples: it
 // converges to the unbiased image, whatever the denoiser did on the way.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_shader_image_load_formatted : require
@@ -36,8 +38,9 @@ layout(std430, set = 0, binding = GLPT_CO_BINDING_STATES) readonly buffer StateT
   GpuTraceState states[];
 };
 // Per pixel, layer 0 rgb: sum of the covered samples' colour, a: sum of their alpha; layer 1
-// x: how many samples were covered, y: how many samples there were; layer 2 (frames the
-// denoiser ran): as layer 0 with each frame's denoised colour for its samples. An image, not a buffer: a
+// x: how many samples were covered, y: how many samples there were, z and w: the same counts from
+// the accumulation's second frame on; layer 2 (frames the denoiser ran, from the second on): as
+// layer 0 with each frame's denoised colour for its samples. An image, not a buffer: a
 // buffer binding is limited to maxStorageBufferRange (lavapipe: 128 MiB, 4 million pixels).
 layout(set = 0, binding = GLPT_CO_BINDING_ACCUMULATION, rgba32f) uniform image2DArray accumulation;
 layout(set = 0, binding = GLPT_CO_BINDING_GBUFFER + GLPT_GBUFFER_POSITION, rgba32f)
@@ -92,17 +95,19 @@ vec4 composite(ivec2 pixel, uvec4 surface, vec3 light[GLPT_CHANNELS]) {
 
 // Writes the pixel's average over all accumulated samples into the colour buffers `targets`:
 // `sum` holds the covered samples (`covered` of the `total`); the others show what the colour
-// buffer holds. With denoised_weight < 1 the average is mixed by it with the average of
-// `denoised_sum` (the same samples in their frames' denoised colours).
+// buffer holds. With denoised_weight < 1 the average is mixed by it with the average of the
+// denoised frames, `denoised` (their covered samples' sum, how many, of how many).
 void write_average(ivec2 pixel, uint targets, vec4 sum, float covered, float total,
-                   vec4 denoised_sum, float denoised_weight) {
+                   vec4 denoised_sum, vec2 denoised_counts, float denoised_weight) {
   for (uint t = 0u; t < 2u; ++t) {
     if ((targets & (1u << t)) == 0u) continue;
     vec4 background = t == 0u ? imageLoad(front_buffer, pixel) : imageLoad(back_buffer, pixel);
-    vec4 uncovered = (total - covered) * background;
-    vec4 color = clamp((sum + uncovered) / total, 0.0, 1.0);
-    if (denoised_weight < 1.0)
-      color = mix(clamp((denoised_sum + uncovered) / total, 0.0, 1.0), color, denoised_weight);
+    vec4 color = clamp((sum + (total - covered) * background) / total, 0.0, 1.0);
+    if (denoised_weight < 1.0 && denoised_counts.y > 0.0) {
+      vec4 denoised_color =
+          (denoised_sum + (denoised_counts.y - denoised_counts.x) * background) / denoised_counts.y;
+      color = mix(clamp(denoised_color, 0.0, 1.0), color, denoised_weight);
+    }
     if (t == 0u)
       imageStore(front_buffer, pixel, color);
     else
@@ -144,22 +149,29 @@ void main() {
   }
   float count = covered ? traced : 0.0;
   float total = surface.x != 0u ? traced : float(samples);
+  vec2 denoised_counts = vec2(count, total);
+  vec2 later_counts = vec2(0.0);  // of frames after the first (layer 1 zw)
   if (frame.sampling.x != 0u) {
     sum += imageLoad(accumulation, ivec3(pixel, 0));
     vec4 counts = imageLoad(accumulation, ivec3(pixel, 1));
     count += counts.x;
     total += counts.y;
     // The denoiser runs from an accumulation's first frame until it stops for good (at
-    // GLPT_DENOISE_UNTIL samples): while it runs, layer 2 holds every earlier frame's.
-    if (denoising) denoised_sum += imageLoad(accumulation, ivec3(pixel, 2));
+    // GLPT_DENOISE_UNTIL samples): while it runs, layer 2 holds the frames' from the second on
+    // where any of them covered the pixel.
+    if (denoising && counts.z > 0.0) denoised_sum += imageLoad(accumulation, ivec3(pixel, 2));
+    denoised_counts += counts.zw;
+    later_counts = denoised_counts;
   }
   if (samples > 0u) {
     imageStore(accumulation, ivec3(pixel, 0), sum);
-    imageStore(accumulation, ivec3(pixel, 1), vec4(count, total, 0.0, 0.0));
-    if (denoising && denoised_weight < 1.0) imageStore(accumulation, ivec3(pixel, 2), denoised_sum);
+    imageStore(accumulation, ivec3(pixel, 1), vec4(count, total, later_counts));
+    if (denoising && denoised_weight < 1.0 && later_counts.x > 0.0)
+      imageStore(accumulation, ivec3(pixel, 2), denoised_sum);
   }
   if (count > 0.0 && total > 0.0) {
     uint targets = surface.x != 0u ? states[surface.x - 1u].info.z : frame.image.z;
-    write_average(pixel, targets, sum, count, total, denoised_sum, denoised_weight);
+    write_average(pixel, targets, sum, count, total, denoised_sum, denoised_counts,
+                  denoised_weight);
   }
 }
