@@ -323,8 +323,8 @@ TEST(Svgf, AStillSceneUnderAccumulationShowsTheAverageOfItsDenoisedFrames) {
   const SceneOptions still;
   const std::vector<uint8_t> ref = reference(still);
   const int frames = 16;
-  const Frames averaged = render(path({{"GLPT_SPP", "1"}, {"GLPT_DENOISE_UNTIL", "1000"}}),
-                                 frames, [&](int) { return still; });
+  const Frames averaged = render(path({{"GLPT_SPP", "1"}, {"GLPT_DENOISE_UNTIL", "1000"}}), frames,
+                                 [&](int) { return still; });
   const Frames single = render(with(kOneSample, {}), frames, [&](int) { return still; });
   const Frames raw_average = render(path({{"GLPT_SPP", "1"}, {"GLPT_DENOISER", "off"}}), frames,
                                     [&](int) { return still; });
@@ -590,4 +590,3 @@ TEST(Svgf, ANewSizeAndACameraCutEveryFrameStartWithoutHistory) {
 }
 
 }  // namespace
-
