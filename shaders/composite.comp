@@ -11,15 +11,15 @@
 //
 // When the denoiser ran (DenoiseUniforms image.z GLPT_DN_ACTIVE), the pixel shows the average of
 // the frames composited from its channels since the accumulation's second frame (where it
-// filtered the pixel; the raw colour where it did not), mixed with the accumulated average of the raw samples
-// by params.w (how far accumulation has come towards GLPT_DENOISE_UNTIL samples, from which on the
-// raw average alone is shown). Averaging the denoised frames of a still scene anti-aliases them
-// as the raw average is (each frame's G-buffer is jittered) instead of showing the last frame's
-// jittered edges, and averages the denoiser's own residual noise; when anything changes the
-// accumulation, and this average, start again. (The first frame of an accumulation stores
-// nothing for the average: a moving scene, every frame of which is a first, pays nothing for
-// it.) The raw average always sums the raw samples: it
-// converges to the unbiased image, whatever the denoiser did on the way.
+// filtered the pixel; the raw colour where it did not), mixed with the average of the raw
+// samples by params.w (how far accumulation has come towards GLPT_DENOISE_UNTIL samples, from
+// which on the raw average alone is shown). Averaging the denoised frames of a still scene
+// anti-aliases them as the raw average is (each frame's G-buffer is jittered) instead of showing
+// the last frame's jittered edges, and averages the denoiser's own residual noise; when anything
+// changes, the accumulation and this average start again. (The first frame of an accumulation
+// stores nothing for the average: a moving scene, every frame of which is a first, pays nothing
+// for it.) The raw average always sums the raw samples: it converges to the unbiased image,
+// whatever the denoiser did on the way.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_shader_image_load_formatted : require
 
@@ -96,7 +96,7 @@ vec4 composite(ivec2 pixel, uvec4 surface, vec3 light[GLPT_CHANNELS]) {
 // Writes the pixel's average over all accumulated samples into the colour buffers `targets`:
 // `sum` holds the covered samples (`covered` of the `total`); the others show what the colour
 // buffer holds. With denoised_weight < 1 the average is mixed by it with the average of the
-// denoised frames, `denoised` (their covered samples' sum, how many, of how many).
+// denoised frames: `denoised_sum` of their covered samples, `denoised_counts` x of y samples.
 void write_average(ivec2 pixel, uint targets, vec4 sum, float covered, float total,
                    vec4 denoised_sum, vec2 denoised_counts, float denoised_weight) {
   for (uint t = 0u; t < 2u; ++t) {

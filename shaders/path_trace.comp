@@ -64,11 +64,8 @@ layout(set = 0, binding = GLPT_PT_BINDING_CHANNELS + GLPT_CHANNEL_INDIRECT_DIFFU
     uniform image2D channel_indirect;
 layout(set = 0, binding = GLPT_PT_BINDING_CHANNELS + GLPT_CHANNEL_SPECULAR, rgba32f)
     uniform image2D channel_specular;
-// The denoiser's tile list (shared_types.h, GLPT_DN_BINDING_TILES).
-layout(std430, set = 0, binding = GLPT_PT_BINDING_DENOISE_TILES) buffer DenoiseTiles {
-  uint tiles_dispatch[GLPT_DN_TILES_HEADER];
-  uint tile_words[];  // a flag per tile, then the list
-};
+#define GLPT_TILE_LIST_BINDING GLPT_PT_BINDING_DENOISE_TILES
+#include "svgf/tile_list.h"
 layout(push_constant) uniform TracePassBlock {
   uint trace_pass;  // GLPT_TRACE_PASS_*
 } push;
@@ -497,18 +494,14 @@ bool filled_from_grid(ivec2 pixel, uvec4 surface) {
 // pixel being one the denoiser filters: one atomic per subgroup where its pixels share a tile
 // (the workgroup's 8-wide rows lie in one tile), else one per pixel.
 void list_denoise_tile(ivec2 pixel, bool filtered) {
-  uint tiles_across = (frame.image.x + GLPT_IMAGE_TILE_WIDTH - 1u) / GLPT_IMAGE_TILE_WIDTH;
-  uint tile_count =
-      tiles_across * ((frame.image.y + GLPT_IMAGE_TILE_HEIGHT - 1u) / GLPT_IMAGE_TILE_HEIGHT);
-  uint tile = uint(pixel.y) / GLPT_IMAGE_TILE_HEIGHT * tiles_across +
-              uint(pixel.x) / GLPT_IMAGE_TILE_WIDTH;
+  uint tile = tile_of(pixel, frame.image.xy);
   uint first = subgroupMin(filtered ? tile : 0xFFFFFFFFu);
   if (first == 0xFFFFFFFFu) return;
   bool shared_tile = subgroupAll(!filtered || tile == first);
   if (shared_tile ? subgroupElect() : filtered) {
     uint listed = shared_tile ? first : tile;
     if (atomicExchange(tile_words[listed], 1u) == 0u)
-      tile_words[tile_count + atomicAdd(tiles_dispatch[0], 1u)] = listed;
+      tile_words[tile_count(frame.image.xy) + atomicAdd(tiles_dispatch[0], 1u)] = listed;
   }
 }
 

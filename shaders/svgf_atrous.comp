@@ -97,8 +97,7 @@ void main() {
     for (int dy = -1; dy <= 1; ++dy)
       for (int dx = -1; dx <= 1; ++dx) {
         ivec2 q = pixel + ivec2(dx, dy);
-        if (!inside(q) || !guide_shaded(DenoiseGuide(vec4(0.0), imageLoad(guide_meta, q))))
-          continue;
+        if (!inside(q) || !meta_shaded(imageLoad(guide_meta, q))) continue;
         float w = kernel_weight(dx, true) * kernel_weight(dy, true);
         uvec4 pair = load_work_pair(iteration.input_slot, q);
         sum += w * vec3(unpackHalf2x16(pair.y).y, unpackHalf2x16(pair.w).y,

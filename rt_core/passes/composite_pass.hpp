@@ -15,7 +15,7 @@ namespace glpt::rt {
 struct CompositeResources {
   const GpuBuffer* frame = nullptr;           // gpu::FrameUniforms
   const GpuBuffer* states = nullptr;          // gpu::GpuTraceState[]
-  VkImageView accumulation = VK_NULL_HANDLE;  // rgba32f array, 2 layers (composite.comp)
+  VkImageView accumulation = VK_NULL_HANDLE;  // rgba32f array, 3 layers (composite.comp)
   std::array<VkImageView, 4> gbuffer{};
   std::array<VkImageView, GLPT_CHANNELS> channels{};
   VkImageView denoised = VK_NULL_HANDLE;  // the denoiser's work slots (any rgba32f array when off)

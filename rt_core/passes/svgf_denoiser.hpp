@@ -54,10 +54,9 @@ class SvgfDenoiser {
   // The tiles the last record filtered: read once it completed.
   uint32_t listed_tiles() const { return tiles_ ? tiles_.as<uint32_t>()[0] : 0u; }
   // Records the temporal pass and `iterations` a-trous iterations over the listed tiles; the
-  // result is in work() at
-  // slot 0 (no iteration) or 1 + (iterations - 1) % 2. This frame's history becomes the
-  // previous one for the next record. `specular`: the frame filters the specular channel
-  // (GLPT_DN_NO_SPECULAR clear); without it the history holds no specular channel.
+  // result is in work() at slot 0 (no iteration) or 1 + (iterations - 1) % 2. This frame's history
+  // becomes the previous one for the next record. `specular`: the frame filters the specular
+  // channel (GLPT_DN_NO_SPECULAR clear); without it the history holds no specular channel.
   void record(VkCommandBuffer cmd, const DenoiseResources& resources, uint32_t iterations,
               bool specular);
   // Whether the previous frame's history has a specular channel (else the next frame's

@@ -38,21 +38,14 @@ layout(set = 0, binding = GLPT_DN_BINDING_MOMENTS_PREVIOUS, rgba32f)
     uniform readonly image2DArray previous_history_moments;
 layout(set = 0, binding = GLPT_DN_BINDING_WORK, rgba32ui) uniform uimage2DArray work;
 
-layout(std430, set = 0, binding = GLPT_DN_BINDING_TILES) buffer ShadedTiles {
-  uint tiles_dispatch[GLPT_DN_TILES_HEADER];
-  uint tile_words[];  // a flag per tile, then the list (shared_types.h)
-};
+#define GLPT_TILE_LIST_BINDING GLPT_DN_BINDING_TILES
+#include "svgf/tile_list.h"
 
-// The image's tiles (workgroups of the passes) across and in all.
-uint tiles_across() { return (dn.image.x + gl_WorkGroupSize.x - 1u) / gl_WorkGroupSize.x; }
-uint tile_count() {
-  return tiles_across() * ((dn.image.y + gl_WorkGroupSize.y - 1u) / gl_WorkGroupSize.y);
-}
-// The invocation's pixel in a dispatch over the listed tiles (one workgroup per list entry).
+// The invocation's pixel in a dispatch over the listed tiles (one workgroup, a tile, per list
+// entry: the passes' workgroups are GLPT_IMAGE_TILE_WIDTH x GLPT_IMAGE_TILE_HEIGHT).
 ivec2 listed_tile_pixel() {
-  uint tile = tile_words[tile_count() + gl_WorkGroupID.x];
-  return ivec2(uvec2(tile % tiles_across(), tile / tiles_across()) * gl_WorkGroupSize.xy +
-               gl_LocalInvocationID.xy);
+  uint tile = tile_words[tile_count(dn.image.xy) + gl_WorkGroupID.x];
+  return tile_origin(tile, dn.image.xy) + ivec2(gl_LocalInvocationID.xy);
 }
 
 DenoiseGuide load_guide(ivec2 p) {
@@ -65,8 +58,10 @@ DenoiseGuide make_guide(vec3 eye, vec3 normal, uint id, uint history_length) {
   return DenoiseGuide(vec4(eye, normal.z), uvec4(max(id, 1u), history_length | (dn.slots.z << 8),
                                                  floatBitsToUint(normal.xy)));
 }
-// Whether this frame filters the pixel of guide g (this frame wrote it: its stamp).
-bool guide_shaded(DenoiseGuide g) { return g.meta.x != 0u && (g.meta.y >> 8) == dn.slots.z; }
+// Whether this frame filters the pixel whose guide has `meta` (a surface's, and this frame's
+// stamp: the passes skip tiles, whose guides stay as an earlier frame wrote them).
+bool meta_shaded(uvec4 meta) { return meta.x != 0u && (meta.y >> 8) == dn.slots.z; }
+bool guide_shaded(DenoiseGuide g) { return meta_shaded(g.meta); }
 vec3 guide_normal(DenoiseGuide g) { return vec3(uintBitsToFloat(g.meta.zw), g.eye.w); }
 void store_guide(ivec2 p, DenoiseGuide g) {
   imageStore(guide_eye, p, g.eye);
