@@ -379,6 +379,106 @@ void wrap_linear(uint wrap, float c, int n, out int x0, out int x1, out float we
   }
 }
 
+// ---- anisotropic filtering (EXT_texture_filter_anisotropic) as gallivm does it
+
+vec4 texel_2d(uint u, ivec2 p, int level) {
+  if (u == 0u) return texelFetch(u_tex2d_0, p, level);
+  if (u == 1u) return texelFetch(u_tex2d_1, p, level);
+  if (u == 2u) return texelFetch(u_tex2d_2, p, level);
+  return texelFetch(u_tex2d_3, p, level);
+}
+
+// Texel p of a level of `size` texels, or the border colour where p lies outside and the wrap
+// mode on that axis takes the border (lp_build_sample_texel_soa for a linear filter).
+vec4 texel_or_border_2d(uint u, ivec2 p, ivec2 size, int level) {
+  uint wraps = S.tex_mode[u].x;
+  for (uint i = 0u; i < 2u; ++i) {
+    uint wrap = (wraps >> (4u * i)) & 15u;
+    bool uses_border = wrap == GLPT_WRAP_CLAMP_TO_BORDER || wrap == GLPT_WRAP_CLAMP;
+    if (uses_border && (p[i] < 0 || p[i] >= size[i])) return S.tex_border[u];
+  }
+  return texel_2d(u, clamp(p, ivec2(0), size - 1), level);
+}
+
+// lp_build_sample_image_linear on one level: bilinear whatever the texture's filters.
+vec4 linear_texel_2d(uint u, vec2 c, ivec2 size, int level) {
+  uint wraps = S.tex_mode[u].x;
+  int x0, x1, y0, y1;
+  float ws, wt;
+  wrap_linear(wraps & 15u, c.x, size.x, x0, x1, ws);
+  wrap_linear((wraps >> 4u) & 15u, c.y, size.y, y0, y1, wt);
+  vec4 t00 = texel_or_border_2d(u, ivec2(x0, y0), size, level);
+  vec4 t01 = texel_or_border_2d(u, ivec2(x1, y0), size, level);
+  vec4 t10 = texel_or_border_2d(u, ivec2(x0, y1), size, level);
+  vec4 t11 = texel_or_border_2d(u, ivec2(x1, y1), size, level);
+  // lp_build_lerp_2d: lp_build_mad (llvm.fmuladd) per lerp.
+  vec4 v0 = fma(vec4(ws), t01 - t00, t00), v1 = fma(vec4(ws), t11 - t10, t10);
+  return fma(vec4(wt), v1 - v0, v0);
+}
+
+// A 2-D texture with an anisotropy of 2 or more (st/mesa hands gallivm its whole part, N), as
+// llvmpipe samples it (lp_build_sample_aniso). lavapipe runs the same filter, but only from its
+// own implicit derivatives, whose quad rows are not Mesa's (quad_derivatives); so it is done here.
+// The level: the nearest (truncated) to the lod of the footprint's minor axis, lengthened to
+// 1/N of the major one where the footprint is longer than N (lp_build_pmin), whatever the mip
+// filter. Then up to N bilinear lookups of that level, whatever the texture's filters, spread
+// evenly along the longer of the pixel's two screen-space derivatives, averaged. The lod takes
+// the quad's derivatives, the lookups each pixel's own (lp_build_ddx/ddy: per row, per column).
+// Each operation in gallivm's order, unfused.
+vec4 anisotropic_2d(uint u, vec2 c) {
+  uint flags = S.tex_mode[u].y;
+  vec2 base = S.tex_size[u].xy;
+  float anisotropy = S.tex_lod[u].w;
+  int level = 0;
+  if (lod_matters(u)) {
+    float lod;
+    if ((flags & GLPT_TEX_MIN_MAX_LOD_EQUAL) != 0u) {
+      lod = S.tex_lod[u].y;
+    } else {
+      vec3 ddx3, ddy3;
+      quad_derivatives(vec3(c, 0.0), ddx3, ddy3);
+      precise float sx = ddx3.x * base.x, sy = ddy3.x * base.x;
+      precise float tx = ddx3.y * base.y, ty = ddy3.y * base.y;
+      precise float px2 = sx * sx + tx * tx, py2 = sy * sy + ty * ty;
+      float pmax2 = max(px2, py2), pmin2 = min(px2, py2);
+      precise float limit = pmin2 * (anisotropy * anisotropy);
+      precise float lengthened = pmax2 / anisotropy;  // as gallivm has it: not squared
+      if (pmax2 > limit) pmin2 = lengthened;
+      precise float l = fast_log2(pmin2) * 0.5;
+      if ((flags & GLPT_TEX_LOD_BIAS) != 0u) l = l + S.tex_lod[u].x;
+      if ((flags & GLPT_TEX_APPLY_MAX_LOD) != 0u) l = min(l, S.tex_lod[u].z);
+      if ((flags & GLPT_TEX_APPLY_MIN_LOD) != 0u) l = max(l, S.tex_lod[u].y);
+      lod = l;
+    }
+    int last = max(int(S.tex_size[u].w) - 1, 0);
+    level = clamp(int(lod), 0, last);  // lp_build_itrunc, then the nearest level's clamp
+  }
+  ivec2 size = max(ivec2(base) >> level, ivec2(1));
+  // Mesa's derivatives: ddx along its quad's rows (Vulkan's, dFdxFine), ddy its lower row minus
+  // its upper one. With an even drawable height Mesa's upper row is Vulkan's lower one.
+  float ddy_sign = (S.drawable.y & 1u) == 0u ? -1.0 : 1.0;
+  vec2 ddx = dFdxFine(c), ddy = dFdyFine(c) * ddy_sign;
+  precise float rho_x = max(abs(ddx.x), abs(ddx.y)) * float(size.x);
+  precise float rho_y = max(abs(ddy.x), abs(ddy.y)) * float(size.y);
+  // lp_build_iceil, then an unsigned min: NaN and overflow give N.
+  int count = int(ceil(max(rho_x, rho_y)));
+  uint samples = min(uint(count), uint(anisotropy));
+  vec2 step = rho_x > rho_y ? ddx : ddy;
+  precise float float_n = float(samples);
+  precise float rcp_n = 1.0 / float_n;
+  precise float base_k = float_n * -0.5 + 0.5;
+  precise vec4 sum = vec4(0.0);
+  for (uint k = 0u; k < samples; ++k) {
+    precise float float_k = (float(k) + base_k) * rcp_n;
+    precise vec2 offset = vec2(float_k * step.x, float_k * step.y);
+    precise vec2 at = c + offset;
+    sum = sum + linear_texel_2d(u, at, size, level);
+  }
+  // No samples (a footprint of 0 texels: the same coordinates across the pixel's row and
+  // column) is 0 * (1 / 0) in gallivm: NaN, which the colour conversion turns into 0.
+  return sum * rcp_n;
+}
+
 // lp_build_sample_comparefunc: ref FUNC texel, ordered except GL_NOTEQUAL.
 bool depth_test_passes(uint func, float ref, float texel) {
   if (func == 1u) return ref < texel;
@@ -500,6 +600,9 @@ vec4 sample_unit(uint u) {
   }
   if ((config & GLPT_UNIT_COMPARE) != 0u && (target == 1u || target == 2u))
     return vec4(compare_unit(u, target, projected));
+  // gallivm wraps the anisotropic filter's texels itself: the coordinates stay unclamped.
+  if (target == 2u && (S.tex_mode[u].y & GLPT_TEX_ANISOTROPIC) != 0u)
+    return anisotropic_2d(u, projected.xy);
   vec3 c = clamp_coords(u, config, projected);
   if (target != 4u && lod_matters(u)) {
     // The lod from the unclamped coordinates, as gallivm computes it before wrapping.
@@ -509,15 +612,6 @@ vec4 sample_unit(uint u) {
       if (u == 1u) return textureLod(u_tex1d_1, c.x, lod);
       if (u == 2u) return textureLod(u_tex1d_2, c.x, lod);
       return textureLod(u_tex1d_3, c.x, lod);
-    }
-    if (target == 2u && (S.tex_mode[u].y & GLPT_TEX_ANISOTROPIC) != 0u) {
-      // gallivm filters anisotropically only from implicit derivatives (explicit lods and
-      // gradients sample isotropically): lavapipe's own, whose quad rows are not Mesa's
-      // (quad_derivatives), so on a grazing surface about 1% of pixels pick other texels.
-      if (u == 0u) return texture(u_tex2d_0, c.xy);
-      if (u == 1u) return texture(u_tex2d_1, c.xy);
-      if (u == 2u) return texture(u_tex2d_2, c.xy);
-      return texture(u_tex2d_3, c.xy);
     }
     if (target == 2u) {
       if (u == 0u) return textureLod(u_tex2d_0, c.xy, lod);

@@ -222,7 +222,7 @@ struct RasterState {
   // Texture units: what the fragment shader's own lookups (depth comparison, GL_CLAMP per
   // filter) need; rt_core/raster/sampler_setup.hpp
   vec4 tex_size[GLPT_RASTER_MAX_UNITS];    // base level width, height, depth; w: level count
-  vec4 tex_lod[GLPT_RASTER_MAX_UNITS];     // x: sampler lod bias, y: min lod, z: max lod
+  vec4 tex_lod[GLPT_RASTER_MAX_UNITS];     // x: sampler lod bias, y: min lod, z: max lod, w: anisotropy (whole part, 0 for none)
   vec4 tex_border[GLPT_RASTER_MAX_UNITS];  // border colour (texel layout, clamped)
   uvec4 tex_mode[GLPT_RASTER_MAX_UNITS];   // x: wrap s, t, r (GLPT_WRAP_*, 4 bits each),
                                            // y: GLPT_TEX_* flags, z: compare function (0-7)
@@ -244,8 +244,8 @@ struct RasterState {
 #define GLPT_TEX_APPLY_MIN_LOD 32u
 #define GLPT_TEX_APPLY_MAX_LOD 64u
 #define GLPT_TEX_MIN_MAX_LOD_EQUAL 128u
-// EXT_texture_filter_anisotropic on the unit's sampler: the lookup takes implicit derivatives (the
-// only ones gallivm filters anisotropically) instead of Mesa's explicit lod.
+// EXT_texture_filter_anisotropic (an anisotropy of 2 or more): raster_ff.frag filters the 2-D
+// texture with gallivm's elliptical weighted average from Mesa's quad derivatives.
 #define GLPT_TEX_ANISOTROPIC 256u
 
 // The draw's state index (its RasterState in GLPT_RASTER_BINDING_STATES) is the draw's

@@ -149,7 +149,7 @@ void pack_texture_unit(const rec::TextureUnitState& unit, int u, gpu::RasterStat
   // gallivm's lod state from st/mesa's sampler (lp_sampler_static_sampler_state).
   const float bias = quantize_lod_bias(t.sampler.lod_bias) + quantize_lod_bias(unit.env.lod_bias);
   const float min_lod = std::max(t.sampler.min_lod, 0.0f), max_lod = t.sampler.max_lod;
-  out.tex_lod[u] = glm::vec4(bias, min_lod, max_lod, 0.0f);
+  out.tex_lod[u] = glm::vec4(bias, min_lod, max_lod, setup.max_anisotropy);
   out.tex_border[u] = setup.border;
   uint32_t flags = 0;
   if (sh.min_linear) flags |= GLPT_TEX_MIN_LINEAR;
