@@ -153,6 +153,7 @@ RenderSettings parse_render_settings(const std::function<const char*(const char*
       "GLPT_DENOISE_UNTIL", denoise.until_samples,
       [](const char* text) { return parse_uint(text, 0, kMaxAccumulated); }, "0..16777216");
   apply("GLPT_DENOISE_VERTEX_MOTION", denoise.vertex_motion, parse_bool, "0 or 1");
+  apply("GLPT_DENOISE_MEAN_VARIANCE", denoise.mean_variance, parse_bool, "0 or 1");
   if (const char* path = lookup("GLPT_CLASSIFY_LOG"); path != nullptr && *path != '\0')
     settings.classify_log = path;
   const auto set = [&](const char* name) {

@@ -63,6 +63,11 @@ struct DenoiseSettings {
   // GLPT_DENOISE_VERTEX_MOTION: a deformed surface (a refit BLAS) reprojects each pixel through
   // its triangle's previous vertices, not through its draw's transform alone; 0: off (A/B).
   bool vertex_motion = true;
+  // GLPT_DENOISE_MEAN_VARIANCE: the a-trous filter's luminance edge-stopping takes the variance
+  // of the temporally integrated colour (the moments' variance over the history's length, or
+  // a / (2 - a) of it once the history averages exponentially), not of one sample as in the
+  // 2017 paper (0): the filter blurs less where the history is long (docs/denoiser.md).
+  bool mean_variance = true;
 };
 
 struct RenderSettings {

@@ -222,7 +222,8 @@ struct RasterState {
   // Texture units: what the fragment shader's own lookups (depth comparison, GL_CLAMP per
   // filter) need; rt_core/raster/sampler_setup.hpp
   vec4 tex_size[GLPT_RASTER_MAX_UNITS];    // base level width, height, depth; w: level count
-  vec4 tex_lod[GLPT_RASTER_MAX_UNITS];     // x: sampler lod bias, y: min lod, z: max lod, w: anisotropy (whole part, 0 for none)
+  // x: sampler lod bias, y: min lod, z: max lod, w: anisotropy (its whole part; 0: none)
+  vec4 tex_lod[GLPT_RASTER_MAX_UNITS];
   vec4 tex_border[GLPT_RASTER_MAX_UNITS];  // border colour (texel layout, clamped)
   uvec4 tex_mode[GLPT_RASTER_MAX_UNITS];   // x: wrap s, t, r (GLPT_WRAP_*, 4 bits each),
                                            // y: GLPT_TEX_* flags, z: compare function (0-7)

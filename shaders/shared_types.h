@@ -344,7 +344,8 @@ struct DenoiseUniforms {
   // mean against the denoised frame (1: accumulation alone)
   vec4 params;
   // xy: this frame's sub-pixel jitter (removed from the reprojection), z: 1 when the composite
-  // reads the denoised colour, w: unused
+  // reads the denoised colour, w: 1 when the a-trous filter takes the variance of the integrated
+  // colour (GLPT_DENOISE_MEAN_VARIANCE), 0: of one sample (the 2017 paper)
   vec4 jitter;
   // x: the work slot of this frame's colour history, y: the previous frame's; z: this frame's
   // stamp, w: the previous frame's (DenoiseGuide::meta.y)

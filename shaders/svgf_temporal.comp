@@ -334,6 +334,16 @@ void main() {
         variances[c] = max(m.y - m.x * m.x, 0.0);
       }
   }
+  // The moments (or the spatial estimate) give the variance of one sample; the colour handed on
+  // is an average of several, whose variance is smaller: that of a plain average of n samples
+  // while 1/n is above alpha, then an exponential average's, a / (2 - a) of one sample's. The
+  // a-trous filter then stops at luminance steps larger than the integrated colour's noise,
+  // not a single sample's (GLPT_DENOISE_MEAN_VARIANCE; the 2017 paper takes one sample's).
+  if (dn.jitter.w > 0.0) {
+    float a = dn.temporal.x;
+    float integrated = 1.0 / history_length >= a ? 1.0 / history_length : a / (2.0 - a);
+    for (uint c = 0u; c < 3u; ++c) variances[c] *= integrated;
+  }
   store_work(0u, pixel, vec4(colours[0], variances[0]), vec4(colours[1], variances[1]),
              vec4(colours[2], variances[2]), channels);
   // Without a-trous iterations the integrated colour is the history.

@@ -76,6 +76,9 @@ constexpr std::array kFlags = {
     QualityFlag{"--no-denoise-vertex-motion", "GLPT_DENOISE_VERTEX_MOTION", FlagValue::kNone, "0",
                 "deformed surfaces reproject through their draw's transform only, not through "
                 "their triangles' previous vertices (A/B)"},
+    QualityFlag{"--denoise-sample-variance", "GLPT_DENOISE_MEAN_VARIANCE", FlagValue::kNone, "0",
+                "the a-trous filter's luminance edge-stopping takes one sample's variance, as "
+                "the 2017 paper (default: the integrated colour's)"},
     QualityFlag{"--output", "GLPT_OUTPUT", FlagValue::kText, "DIR",
                 "also write every frame as DIR/frame_NNNNNN.png"},
     QualityFlag{"--output-every", "GLPT_OUTPUT_EVERY", FlagValue::kCount, "N",
