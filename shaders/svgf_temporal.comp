@@ -259,7 +259,12 @@ void main() {
       if (dn.temporal.w > 0.0) {
         // In luminance (what the moments measure): the history moves towards the fast average
         // until its luminance is within the window.
-        float sigma = noise_sigma[c];
+        // The 3x3 estimate is 0 where this frame's nine samples agree, as a sparse signal's
+        // (rare indirect hits) often do, and then any noise of the fast average read as a step.
+        // There the spread of the history's own samples (its moments, before this frame) stands
+        // in; it does not hold this frame's step.
+        vec2 pm = previous_moments[c];
+        float sigma = noise_sigma[c] > 0.0 ? noise_sigma[c] : sqrt(max(pm.y - pm.x * pm.x, 0.0));
         float fast_l = luminance(fast), slow_l = luminance(slow);
         float width = dn.temporal.w * sigma * fast_spread + 0.02 * max(fast_l, 0.0);
         if (abs(slow_l - fast_l) > width) {
