@@ -601,7 +601,7 @@ vec4 sample_unit(uint u) {
   if ((config & GLPT_UNIT_COMPARE) != 0u && (target == 1u || target == 2u))
     return vec4(compare_unit(u, target, projected));
   // gallivm wraps the anisotropic filter's texels itself: the coordinates stay unclamped.
-  if (target == 2u && (S.tex_mode[u].y & GLPT_TEX_ANISOTROPIC) != 0u)
+  if (target == 2u && (config & GLPT_UNIT_ANISOTROPIC) != 0u)
     return anisotropic_2d(u, projected.xy);
   vec3 c = clamp_coords(u, config, projected);
   if (target != 4u && lod_matters(u)) {

@@ -135,6 +135,9 @@ using mat4 = glm::mat4;
 #define GLPT_UNIT_RECT 0x8000u
 // ARB_point_sprite's GL_COORD_REPLACE: (s, t, 0, 1) from the position in the sprite
 #define GLPT_UNIT_COORD_REPLACE 0x10000u
+// EXT_texture_filter_anisotropic on a 2-D texture (an anisotropy of 2 or more): the shader runs
+// gallivm's anisotropic filter from Mesa's quad derivatives (raster_ff.frag anisotropic_2d)
+#define GLPT_UNIT_ANISOTROPIC 0x20000u
 // per unit (14..17): combine rgb function (bits 0-3), alpha function (4-7), rgb sources (8-16,
 // 3 bits each), alpha sources (17-25), rgb operands (26-31, 2 bits each)
 #define GLPT_SC_COMBINE0 14
@@ -245,9 +248,6 @@ struct RasterState {
 #define GLPT_TEX_APPLY_MIN_LOD 32u
 #define GLPT_TEX_APPLY_MAX_LOD 64u
 #define GLPT_TEX_MIN_MAX_LOD_EQUAL 128u
-// EXT_texture_filter_anisotropic (an anisotropy of 2 or more): raster_ff.frag filters the 2-D
-// texture with gallivm's elliptical weighted average from Mesa's quad derivatives.
-#define GLPT_TEX_ANISOTROPIC 256u
 
 // The draw's state index (its RasterState in GLPT_RASTER_BINDING_STATES) is the draw's
 // firstInstance, gl_InstanceIndex in the vertex shader, which hands it on as this flat varying

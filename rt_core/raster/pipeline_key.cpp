@@ -398,13 +398,16 @@ DrawSetup make_draw_setup(const rec::StateSnapshot& state, const DrawContext& co
     uint32_t config = target_code(unit.target) | (env_code(env.mode) << 3) |
                       (base_format_code(tex.base_format, tex.sampler.depth_texture_mode) << 6);
     // What the shader does beyond a plain lookup (sampler_setup.hpp).
-    const ShaderSampling sampling = make_sampler_setup(tex, env.lod_bias).shader;
+    const SamplerSetup setup = make_sampler_setup(tex, env.lod_bias);
+    const ShaderSampling& sampling = setup.shader;
     config |= sampling.clamp_coords * GLPT_UNIT_CLAMP_S;
     if (sampling.clamp_per_filter) config |= GLPT_UNIT_CLAMP_PER_FILTER;
     if (sampling.compare) config |= GLPT_UNIT_COMPARE;
     if (tex.texel_format == rec::TexelFormat::kDepth32f) config |= GLPT_UNIT_DEPTH;
     if (unit.target == GL_TEXTURE_RECTANGLE_ARB) config |= GLPT_UNIT_RECT;
     if (sprites && (prim.point_coord_replace >> u) & 1u) config |= GLPT_UNIT_COORD_REPLACE;
+    // Only pipelines that filter anisotropically carry the filter's code.
+    if (setup.max_anisotropy > 1.0f) config |= GLPT_UNIT_ANISOTROPIC;
     sc[GLPT_SC_UNIT0 + u] = config;
     if (env.mode == GL_COMBINE) {
       uint32_t combine =

@@ -157,7 +157,6 @@ void pack_texture_unit(const rec::TextureUnitState& unit, int u, gpu::RasterStat
   if (sh.mip_filter == 1) flags |= GLPT_TEX_MIP_NEAREST;
   if (sh.mip_filter == 2) flags |= GLPT_TEX_MIP_LINEAR;
   if (bias != 0.0f) flags |= GLPT_TEX_LOD_BIAS;
-  if (setup.max_anisotropy > 1.0f) flags |= GLPT_TEX_ANISOTROPIC;
   if (sh.mip_filter != 0 || sh.min_linear != sh.mag_linear) {
     if (min_lod == max_lod) {
       flags |= GLPT_TEX_MIN_MAX_LOD_EQUAL;
