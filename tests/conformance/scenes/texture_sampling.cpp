@@ -328,34 +328,34 @@ GLPT_SCENE(texture_sampling_mipmapped_clamp_bias, 64, 64) {
   receding_floor(-1, 0, 2, 6);
 }
 
+// A 32x32 texture of coloured mip levels with the given filters and anisotropy, enabled.
+void coloured_anisotropic_texture(GLenum min_filter, GLenum mag_filter, float anisotropy) {
+  new_texture(GL_TEXTURE_2D, min_filter, mag_filter);
+  coloured_levels(GL_TEXTURE_2D, 32);
+  glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY_EXT, anisotropy);
+  glEnable(GL_TEXTURE_2D);
+}
+
 // EXT_texture_filter_anisotropic: a floor receding at a grazing angle, trilinear with at most 4
 // lookups along the axis of anisotropy (as trigger-rally sets every texture). gallivm's filter
 // run from Mesa's quad derivatives (raster_ff.frag anisotropic_2d); lavapipe's own, from its
 // implicit derivatives, had 1.2% of these pixels off by up to 148 levels.
 GLPT_SCENE(texture_sampling_anisotropic, 64, 64) {
   clear(0.3f, 0.5f, 0.7f);
-  new_texture(GL_TEXTURE_2D, GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR);
-  coloured_levels(GL_TEXTURE_2D, 32);
-  glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY_EXT, 4.0f);
-  glEnable(GL_TEXTURE_2D);
+  coloured_anisotropic_texture(GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR, 4.0f);
   receding_floor(0, 0, 6, 12);
 }
 
 // Anisotropy 2.5 (Mesa keeps the whole part: 2) on a mipmapped nearest texture, and 16.
 GLPT_SCENE(texture_sampling_anisotropic_nearest, 64, 64) {
   clear(0.3f, 0.5f, 0.7f);
-  new_texture(GL_TEXTURE_2D, GL_NEAREST_MIPMAP_NEAREST, GL_NEAREST);
-  coloured_levels(GL_TEXTURE_2D, 32);
-  glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY_EXT, 2.5f);
-  glEnable(GL_TEXTURE_2D);
+  coloured_anisotropic_texture(GL_NEAREST_MIPMAP_NEAREST, GL_NEAREST, 2.5f);
   glEnable(GL_SCISSOR_TEST);
   glScissor(0, 0, 32, 64);
   receding_floor(0, 0, 6, 12);
   glLoadIdentity();
   glScissor(32, 0, 32, 64);
-  new_texture(GL_TEXTURE_2D, GL_LINEAR_MIPMAP_NEAREST, GL_LINEAR);
-  coloured_levels(GL_TEXTURE_2D, 32);
-  glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY_EXT, 16.0f);
+  coloured_anisotropic_texture(GL_LINEAR_MIPMAP_NEAREST, GL_LINEAR, 16.0f);
   receding_floor(0, 0, 6, 12);
   glDisable(GL_SCISSOR_TEST);
 }
@@ -394,11 +394,8 @@ GLPT_SCENE(texture_sampling_anisotropic_border_bias, 64, 64) {
 // repeat on a floor beside it.
 GLPT_SCENE(texture_sampling_anisotropic_constant_coords, 64, 64) {
   clear(0.3f, 0.5f, 0.7f);
-  new_texture(GL_TEXTURE_2D, GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR);
-  coloured_levels(GL_TEXTURE_2D, 32);
-  glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY_EXT, 4.0f);
+  coloured_anisotropic_texture(GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR, 4.0f);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_MIRRORED_REPEAT);
-  glEnable(GL_TEXTURE_2D);
   glEnable(GL_SCISSOR_TEST);
   glScissor(0, 0, 40, 64);
   receding_floor(-2, 0, 3, 9);
@@ -421,10 +418,7 @@ GLPT_SCENE(texture_sampling_anisotropic_constant_coords, 64, 64) {
 // coordinates after the division by q.
 GLPT_SCENE(texture_sampling_anisotropic_projective, 64, 64) {
   clear(0.3f, 0.5f, 0.7f);
-  new_texture(GL_TEXTURE_2D, GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR);
-  coloured_levels(GL_TEXTURE_2D, 32);
-  glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY_EXT, 16.0f);
-  glEnable(GL_TEXTURE_2D);
+  coloured_anisotropic_texture(GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR, 16.0f);
   glBegin(GL_QUADS);
   glColor3f(1, 1, 1);
   glTexCoord4f(0, 0, 0, 1);
