@@ -245,7 +245,8 @@ TEST(Svgf, StillSceneAtOneSampleHasAFifthOfTheRawRelMseAndHardlyFlickers) {
           .back();
   std::printf("still: FLIP of the converged pixel-centre image %.4f (the floor)\n",
               flip(centres, ref).mean);
-  EXPECT_LE(flip_denoised * 1.4, flip_raw);
+  // Measured 1.9x (1.7x before the integrated colour's variance and the clamp's stand-in).
+  EXPECT_LE(flip_denoised * 1.75, flip_raw);
   // Edges stay: on the reference's edges the denoised image is no worse than raw samples.
   EXPECT_LE(edge_denoised, edge_raw);
   // Without accumulation the raw frames flicker; the denoised ones hardly change.
@@ -389,7 +390,7 @@ TEST(Svgf, MovingCameraKeepsItsHistoryAndHasAFifthOfTheRawRelMse) {
       mse_raw, mse_denoised, mse_raw / mse_denoised, flip_raw, flip_denoised,
       flip_raw / flip_denoised);
   EXPECT_LE(mse_denoised * 5.0, mse_raw);
-  EXPECT_LE(flip_denoised * 1.4, flip_raw);  // see the still scene's test for FLIP's floor
+  EXPECT_LE(flip_denoised * 1.75, flip_raw);  // 2.0x measured; the still scene's test: FLIP's floor
   // The edge-stopping on the integrated colour's variance blurs less than on one sample's (the
   // 2017 paper's): measured 0.00493 against 0.00660.
   const Frames sample_variance =
