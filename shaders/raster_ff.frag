@@ -293,6 +293,13 @@ vec3 clamp_coords(uint u, uint config, vec3 c) {
 
 // ---- depth comparison (GL_ARB_shadow) as gallivm's SoA sampler does it
 
+vec4 texel_2d(uint u, ivec2 p, int level) {
+  if (u == 0u) return texelFetch(u_tex2d_0, p, level);
+  if (u == 1u) return texelFetch(u_tex2d_1, p, level);
+  if (u == 2u) return texelFetch(u_tex2d_2, p, level);
+  return texelFetch(u_tex2d_3, p, level);
+}
+
 float depth_texel(uint u, uint target, ivec2 p, int level) {
   if (target == 1u) {
     if (u == 0u) return texelFetch(u_tex1d_0, p.x, level).r;
@@ -300,10 +307,20 @@ float depth_texel(uint u, uint target, ivec2 p, int level) {
     if (u == 2u) return texelFetch(u_tex1d_2, p.x, level).r;
     return texelFetch(u_tex1d_3, p.x, level).r;
   }
-  if (u == 0u) return texelFetch(u_tex2d_0, p, level).r;
-  if (u == 1u) return texelFetch(u_tex2d_1, p, level).r;
-  if (u == 2u) return texelFetch(u_tex2d_2, p, level).r;
-  return texelFetch(u_tex2d_3, p, level).r;
+  return texel_2d(u, p, level).r;
+}
+
+// Whether texel p of a level of `size` texels reads as the border colour: it lies outside on an
+// axis (of `axes`) whose wrap mode takes the border there, GL_CLAMP only when filtering linearly
+// (lp_build_sample_texel_soa).
+bool reads_border(uint u, uint axes, ivec2 p, ivec2 size, bool linear) {
+  uint wraps = S.tex_mode[u].x;
+  for (uint i = 0u; i < axes; ++i) {
+    uint wrap = (wraps >> (4u * i)) & 15u;
+    bool uses_border = wrap == GLPT_WRAP_CLAMP_TO_BORDER || (wrap == GLPT_WRAP_CLAMP && linear);
+    if (uses_border && (p[i] < 0 || p[i] >= size[i])) return true;
+  }
+  return false;
 }
 
 // lp_build_coord_mirror(coord, posOnly = true).
@@ -381,22 +398,10 @@ void wrap_linear(uint wrap, float c, int n, out int x0, out int x1, out float we
 
 // ---- anisotropic filtering (EXT_texture_filter_anisotropic) as gallivm does it
 
-vec4 texel_2d(uint u, ivec2 p, int level) {
-  if (u == 0u) return texelFetch(u_tex2d_0, p, level);
-  if (u == 1u) return texelFetch(u_tex2d_1, p, level);
-  if (u == 2u) return texelFetch(u_tex2d_2, p, level);
-  return texelFetch(u_tex2d_3, p, level);
-}
-
-// Texel p of a level of `size` texels, or the border colour where p lies outside and the wrap
-// mode on that axis takes the border (lp_build_sample_texel_soa for a linear filter).
+// Texel p of a level of `size` texels as a linear filter reads it: the border colour where the
+// wrap mode takes it.
 vec4 texel_or_border_2d(uint u, ivec2 p, ivec2 size, int level) {
-  uint wraps = S.tex_mode[u].x;
-  for (uint i = 0u; i < 2u; ++i) {
-    uint wrap = (wraps >> (4u * i)) & 15u;
-    bool uses_border = wrap == GLPT_WRAP_CLAMP_TO_BORDER || wrap == GLPT_WRAP_CLAMP;
-    if (uses_border && (p[i] < 0 || p[i] >= size[i])) return S.tex_border[u];
-  }
+  if (reads_border(u, 2u, p, size, true)) return S.tex_border[u];
   return texel_2d(u, clamp(p, ivec2(0), size - 1), level);
 }
 
@@ -493,16 +498,9 @@ bool depth_test_passes(uint func, float ref, float texel) {
 // One comparison against texel (x, y) of `level`, or against the border outside the level
 // where the wrap mode uses the border (lp_build_sample_texel_soa).
 float compare_texel(uint u, uint target, ivec2 p, ivec2 size, int level, float ref) {
-  uint wraps = S.tex_mode[u].x;
   uint flags = S.tex_mode[u].y;
   bool filters_linear = (flags & (GLPT_TEX_MIN_LINEAR | GLPT_TEX_MAG_LINEAR)) != 0u;
-  bool border = false;
-  for (uint i = 0u; i < (target == 1u ? 1u : 2u); ++i) {
-    uint wrap = (wraps >> (4u * i)) & 15u;
-    bool uses_border =
-        wrap == GLPT_WRAP_CLAMP_TO_BORDER || (wrap == GLPT_WRAP_CLAMP && filters_linear);
-    if (uses_border && (p[i] < 0 || p[i] >= size[i])) border = true;
-  }
+  bool border = reads_border(u, target == 1u ? 1u : 2u, p, size, filters_linear);
   float texel = border ? S.tex_border[u].r
                        : depth_texel(u, target, clamp(p, ivec2(0), size - 1), level);
   return depth_test_passes(S.tex_mode[u].z, ref, texel) ? 1.0 : 0.0;

@@ -223,7 +223,7 @@ struct RasterState {
   vec4 pixel_scale;     // colour copies: pixel transfer scale and bias (GL 1.5 3.6.5)
   vec4 pixel_bias;
   // Texture units: what the fragment shader's own lookups (depth comparison, GL_CLAMP per
-  // filter) need; rt_core/raster/sampler_setup.hpp
+  // filter, anisotropic filtering) need; rt_core/raster/sampler_setup.hpp
   vec4 tex_size[GLPT_RASTER_MAX_UNITS];    // base level width, height, depth; w: level count
   // x: sampler lod bias, y: min lod, z: max lod, w: anisotropy (its whole part; 0: none)
   vec4 tex_lod[GLPT_RASTER_MAX_UNITS];

@@ -129,6 +129,9 @@ using mat4 = glm::mat4;
 // The previous frame filtered no specular channel: its history has none (the temporal pass
 // stores no zeros for a channel it leaves out), so this frame's specular starts afresh.
 #define GLPT_DN_PREVIOUS_NO_SPECULAR 16u
+// The a-trous filter takes the variance of the integrated colour, not of one sample (the 2017
+// paper's): GLPT_DENOISE_MEAN_VARIANCE.
+#define GLPT_DN_MEAN_VARIANCE 32u
 
 // ---- radiance channels -----------------------------------------------------------------------
 // What the trace pass writes per pixel (RGBA32F, this frame's samples averaged; linear HDR
@@ -344,8 +347,7 @@ struct DenoiseUniforms {
   // mean against the denoised frame (1: accumulation alone)
   vec4 params;
   // xy: this frame's sub-pixel jitter (removed from the reprojection), z: 1 when the composite
-  // reads the denoised colour, w: 1 when the a-trous filter takes the variance of the integrated
-  // colour (GLPT_DENOISE_MEAN_VARIANCE), 0: of one sample (the 2017 paper)
+  // reads the denoised colour, w: unused
   vec4 jitter;
   // x: the work slot of this frame's colour history, y: the previous frame's; z: this frame's
   // stamp, w: the previous frame's (DenoiseGuide::meta.y)

@@ -344,7 +344,7 @@ void main() {
   // while 1/n is above alpha, then an exponential average's, a / (2 - a) of one sample's. The
   // a-trous filter then stops at luminance steps larger than the integrated colour's noise,
   // not a single sample's (GLPT_DENOISE_MEAN_VARIANCE; the 2017 paper takes one sample's).
-  if (dn.jitter.w > 0.0) {
+  if ((dn.image.z & GLPT_DN_MEAN_VARIANCE) != 0u) {
     float a = dn.temporal.x;
     float integrated = 1.0 / history_length >= a ? 1.0 / history_length : a / (2.0 - a);
     for (uint c = 0u; c < 3u; ++c) variances[c] *= integrated;

@@ -216,6 +216,7 @@ void PathTracer::write_denoise_inputs(const TraceScene& scene, bool denoise, boo
     // saves the denoiser a third of its work.
     if (!scene_.reflects_specularly) flags |= GLPT_DN_NO_SPECULAR;
     if (!denoiser_.history_has_specular()) flags |= GLPT_DN_PREVIOUS_NO_SPECULAR;
+    if (d.mean_variance) flags |= GLPT_DN_MEAN_VARIANCE;
     uniforms.image = glm::uvec4(scene.width, scene.height, flags, d.iterations);
     uniforms.temporal = glm::vec4(d.alpha, d.moments_alpha, d.fast_alpha, d.fast_clamp);
     uniforms.sigmas =
@@ -230,7 +231,7 @@ void PathTracer::write_denoise_inputs(const TraceScene& scene, bool denoise, boo
             : 1.0f;
     uniforms.params = glm::vec4(scene.pixel_spread, scene.pixel_size_parallel,
                                 kClampedHistoryLength, accumulated_weight);
-    uniforms.jitter = glm::vec4(frame_jitter_, 0.0f, d.mean_variance ? 1.0f : 0.0f);
+    uniforms.jitter = glm::vec4(frame_jitter_, 0.0f, 0.0f);
     uniforms.slots = glm::uvec4(denoiser_.history_slot(), denoiser_.previous_history_slot(),
                                 denoiser_.stamp(), denoiser_.previous_stamp());
     std::vector<gpu::GpuStateHistory>& histories = state_history_table_;

@@ -188,6 +188,9 @@ VkImageView TextureCache::view(const rec::TextureObjectSnapshot& texture) const 
 VkSampler TextureCache::sampler(const rec::TextureObjectSnapshot& texture, float unit_lod_bias) {
   SamplerSetup key = make_sampler_setup(texture, unit_lod_bias);
   key.shader = {};  // the shader's part does not make a different sampler
+  // Nor does anisotropy: raster_ff.frag filters anisotropic units itself from texel fetches,
+  // and gallivm samples explicit lods (the path tracer's) isotropically.
+  key.max_anisotropy = 0.0f;
   auto it = samplers_.find(key);
   if (it != samplers_.end()) return it->second.get();
   auto border = make_info<VkSamplerCustomBorderColorCreateInfoEXT>(
@@ -204,10 +207,6 @@ VkSampler TextureCache::sampler(const rec::TextureObjectSnapshot& texture, float
   info.mipLodBias = key.lod_bias;
   info.minLod = key.min_lod;
   info.maxLod = key.max_lod;
-  if (key.max_anisotropy > 1.0f && device_.max_sampler_anisotropy() > 1.0f) {
-    info.anisotropyEnable = VK_TRUE;
-    info.maxAnisotropy = std::min(key.max_anisotropy, device_.max_sampler_anisotropy());
-  }
   info.borderColor = VK_BORDER_COLOR_FLOAT_CUSTOM_EXT;
   VkSampler sampler = VK_NULL_HANDLE;
   GLPT_VK_CHECK(vkCreateSampler(device_.handle(), &info, nullptr, &sampler));

@@ -72,7 +72,6 @@ struct Candidate {
   std::vector<std::string> missing;            // for raster (and anything at all): empty = usable
   std::vector<std::string> missing_ray_query;  // empty: path tracing possible
   bool geometry_shader = false;
-  float max_sampler_anisotropy = 0.0f;                           // 0: no samplerAnisotropy
   bool storage_image_read = false, storage_image_write = false;  // ...WithoutFormat
   uint32_t api_version = 0;
   std::string driver;                 // driverName and driverInfo, where the driver reports them
@@ -105,7 +104,6 @@ Candidate evaluate(VkPhysicalDevice device) {
   candidate.name = properties.deviceName;
   candidate.type = properties.deviceType;
   candidate.api_version = properties.apiVersion;
-  candidate.max_sampler_anisotropy = properties.limits.maxSamplerAnisotropy;
   if (properties.apiVersion < VK_API_VERSION_1_3) candidate.missing.push_back("Vulkan 1.3");
 
   uint32_t count = 0;
@@ -180,7 +178,6 @@ Candidate evaluate(VkPhysicalDevice device) {
   need(border.customBorderColorWithoutFormat, "customBorderColorWithoutFormat");
   // Geometry shaders draw GL's unfilled polygons with edge flags; they also need point sizes.
   candidate.geometry_shader = core.geometryShader && core.shaderTessellationAndGeometryPointSize;
-  if (!core.samplerAnisotropy) candidate.max_sampler_anisotropy = 0.0f;
   candidate.storage_image_read = core.shaderStorageImageReadWithoutFormat;
   candidate.storage_image_write = core.shaderStorageImageWriteWithoutFormat;
   // Smooth lines are only used where stippled smooth lines exist too (GL stipples either kind).
@@ -558,7 +555,6 @@ std::unique_ptr<VulkanDevice> VulkanDevice::create(const DeviceOptions& options)
   self->ray_query_ = chosen.missing_ray_query.empty();
   self->ray_query_missing_ = join(chosen.missing_ray_query, ", ");
   self->geometry_shader_ = chosen.geometry_shader;
-  self->max_sampler_anisotropy_ = chosen.max_sampler_anisotropy;
   const bool dynamic_blend = chosen.dynamic_blend && !options.hide_dynamic_blend;
   auto dynamic3 = make_info<VkPhysicalDeviceExtendedDynamicState3FeaturesEXT>(
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_EXTENDED_DYNAMIC_STATE_3_FEATURES_EXT);
@@ -626,7 +622,6 @@ std::unique_ptr<VulkanDevice> VulkanDevice::create(const DeviceOptions& options)
   features.features.occlusionQueryPrecise = chosen.precise_occlusion_queries ? VK_TRUE : VK_FALSE;
   self->precise_occlusion_queries_ = chosen.precise_occlusion_queries;
   features.features.geometryShader = chosen.geometry_shader ? VK_TRUE : VK_FALSE;
-  features.features.samplerAnisotropy = chosen.max_sampler_anisotropy > 0.0f ? VK_TRUE : VK_FALSE;
   features.features.shaderTessellationAndGeometryPointSize = features.features.geometryShader;
   const VkBool32 path_traced = chosen.missing_ray_query.empty() ? VK_TRUE : VK_FALSE;
   features.features.shaderStorageImageReadWithoutFormat = path_traced;

@@ -106,9 +106,6 @@ class VulkanDevice {
   bool has_ray_query() const { return ray_query_; }
   const std::string& ray_query_missing() const { return ray_query_missing_; }
   bool has_geometry_shader() const { return geometry_shader_; }
-  // maxSamplerAnisotropy where samplerAnisotropy is enabled, else 0 (EXT_texture_filter_anisotropic
-  // then filters isotropically).
-  float max_sampler_anisotropy() const { return max_sampler_anisotropy_; }
   bool has_smooth_lines() const { return smooth_lines_; }
   // A fragment shader may read the colour attachment it writes as an input attachment, in
   // rasterization order (VK_EXT_rasterization_order_attachment_access), in render passes with
@@ -220,7 +217,6 @@ class VulkanDevice {
   bool ray_query_ = false;
   std::string ray_query_missing_;
   bool geometry_shader_ = false;
-  float max_sampler_anisotropy_ = 0.0f;
   bool smooth_lines_ = false;
   bool ordered_framebuffer_reads_ = false;
   bool precise_occlusion_queries_ = false;
