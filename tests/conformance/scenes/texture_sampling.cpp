@@ -367,8 +367,8 @@ GLPT_SCENE(texture_sampling_anisotropic_border_bias, 64, 64) {
   clear(0.3f, 0.5f, 0.7f);
   new_texture(GL_TEXTURE_2D, GL_LINEAR_MIPMAP_NEAREST, GL_NEAREST);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  static const Rgba8 kColours[4] = {{255, 255, 255, 255}, {255, 80, 80, 255},
-                                    {80, 255, 80, 255}, {80, 80, 255, 255}};
+  static const Rgba8 kColours[4] = {
+      {255, 255, 255, 255}, {255, 80, 80, 255}, {80, 255, 80, 255}, {80, 80, 255, 255}};
   for (int level = 0, w = 45, h = 27; w >= 1 || h >= 1; ++level, w /= 2, h /= 2) {
     const int lw = std::max(w, 1), lh = std::max(h, 1);
     const Rgba8 c = kColours[level % 4];
