@@ -39,7 +39,7 @@ layout(std430, set = 0, binding = GLPT_RASTER_BINDING_EDGES) readonly buffer Ver
   vec4 vertex_words[];
 };
 // The draw's state, read field by field where used (never copied whole).
-#define S states[gl_InstanceIndex]
+#define S states[push.indices.x]
 
 layout(location = GLPT_RASTER_ATTR_POSITION) in vec4 a_position;
 layout(location = GLPT_RASTER_ATTR_NORMAL) in vec3 a_normal;
@@ -166,7 +166,7 @@ vec4 tex_coord_input(uint unit) {
 }
 
 void main() {
-  v_state = uint(gl_InstanceIndex);  // the draw's firstInstance (GLPT_RASTER_VARYING_STATE)
+  v_state = push.indices.x;  // GLPT_RASTER_VARYING_STATE
   vec4 position = a_position;
   vec4 clip = transform(S.mvp, position);
   vec3 eye = vec3(0.0);

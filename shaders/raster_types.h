@@ -249,17 +249,20 @@ struct RasterState {
 #define GLPT_TEX_APPLY_MAX_LOD 64u
 #define GLPT_TEX_MIN_MAX_LOD_EQUAL 128u
 
-// The draw's state index (its RasterState in GLPT_RASTER_BINDING_STATES) is the draw's
-// firstInstance, gl_InstanceIndex in the vertex shader, which hands it on as this flat varying
-// (through the geometry shaders). Not a push constant: lavapipe re-validates its shaders on every
-// vkCmdPushConstants (bench/many_draws: 2,000 draws a frame took twice the CPU), and the push
-// constants below rarely change from draw to draw. Location 12: geometry shaders take at most
-// 16 input locations; the G-buffer pass's geometry shader hands it on at
+// The draw's state index (its RasterState in GLPT_RASTER_BINDING_STATES) is
+// RasterPushConstants::indices.x, pushed for the vertex stage alone (its own push constant range,
+// the first 4 bytes), which hands it on as this flat varying (through the geometry shaders).
+// llvmpipe loads a storage buffer with one scalar load per field only where the offset comes from
+// a push constant or a constant (nir_src_is_always_uniform); indexed by gl_InstanceIndex, every
+// field was a bounds-checked load per vertex lane (glxgears: most of lavapipe's vertex shading).
+// Pushing it for the vertex stage alone leaves the other stages' push constants untouched: the
+// fragment stage's would renew llvmpipe's fragment state on every draw. Location 12: geometry
+// shaders take at most 16 input locations; the G-buffer pass's geometry shader hands it on at
 // GLPT_GBUFFER_VARYING_STATE (its outputs from 12 on are the triangle's).
 #define GLPT_RASTER_VARYING_STATE 12
 
 struct RasterPushConstants {
-  uvec4 indices;  // x: unused (0), y: first edge-mask word of an unfilled draw
+  uvec4 indices;  // x: the state index (vertex stage only), y: first edge-mask word of an unfilled draw
   // Per-vertex materials (glMaterial between glBegin and glEnd), in the vertex buffer (bound as
   // GLPT_RASTER_BINDING_EDGES): x: first vec4, y: vec4s per vertex (10: the front then the back
   // RasterMaterial; 0: one pair for the whole draw), z: 1 when the draw has them (else the

@@ -110,13 +110,20 @@ RasterPipelines::RasterPipelines(const VulkanDevice& device)
   }
 
   push_stages_ = VK_SHADER_STAGE_VERTEX_BIT | geometry | VK_SHADER_STAGE_FRAGMENT_BIT;
-  VkPushConstantRange push{push_stages_, 0, sizeof(gpu::RasterPushConstants)};
+  // The vertex stage reads all of them; the other stages all but the state index (indices.x),
+  // so pushing the index alone (with every draw) touches the vertex stage's alone, and the rest
+  // (pushed when it changes) every stage's (raster_types.h). No stage may be in two ranges.
+  const std::array<VkPushConstantRange, 2> push{
+      VkPushConstantRange{VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(gpu::RasterPushConstants)},
+      VkPushConstantRange{push_stages_ & ~VkShaderStageFlags{VK_SHADER_STAGE_VERTEX_BIT},
+                          kStateIndexPushBytes,
+                          sizeof(gpu::RasterPushConstants) - kStateIndexPushBytes}};
   auto layout_info =
       make_info<VkPipelineLayoutCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO);
   layout_info.setLayoutCount = 1;
   layout_info.pSetLayouts = &set_layout;
-  layout_info.pushConstantRangeCount = 1;
-  layout_info.pPushConstantRanges = &push;
+  layout_info.pushConstantRangeCount = static_cast<uint32_t>(push.size());
+  layout_info.pPushConstantRanges = push.data();
   VkPipelineLayout layout = VK_NULL_HANDLE;
   GLPT_VK_CHECK(vkCreatePipelineLayout(dev, &layout_info, nullptr, &layout));
   layout_ = vk::PipelineLayout(layout, {dev});

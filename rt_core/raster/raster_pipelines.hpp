@@ -41,6 +41,9 @@ class RasterPipelines {
   VkDescriptorSetLayout set_layout() const { return set_layout_.get(); }
   // The descriptors one set of set_layout() holds, by type (for pools).
   const std::vector<VkDescriptorPoolSize>& set_descriptor_counts() const { return set_counts_; }
+  // Push constants: gpu::RasterPushConstants for push_constant_stages(), but its first
+  // kStateIndexPushBytes (the draw's state index) for the vertex stage alone.
+  static constexpr uint32_t kStateIndexPushBytes = sizeof(uint32_t);
   VkShaderStageFlags push_constant_stages() const { return push_stages_; }
   size_t size() const { return pipelines_.size(); }
 

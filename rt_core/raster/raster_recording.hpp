@@ -195,6 +195,10 @@ struct RasterRenderer::Recording {
   // The push constants last pushed in this command buffer, when valid.
   bool push_valid = false;
   gpu::RasterPushConstants pushed{};
+  // The state index last pushed for the vertex stage (RasterPushConstants::indices.x), when
+  // valid (both are invalid after a pipeline change).
+  bool state_index_valid = false;
+  uint32_t pushed_state_index = 0;
   // The vertex and index buffers last bound in this command buffer, when valid.
   bool geometry_bound = false;
   std::array<VkBuffer, GLPT_RASTER_ATTR_COUNT> bound_buffers{};

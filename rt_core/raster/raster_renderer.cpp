@@ -441,6 +441,7 @@ void RasterRenderer::execute(const rec::FrameRecord& record, DrawableBuffers& bu
       r.blend_valid = false;
       r.geometry_bound = false;
       r.push_valid = false;
+      r.state_index_valid = false;
       if (position == 0) queries_.reset_slots(cmd);
       if (gbuffer && position == 0) {
         // Nothing is traced where no traced draw lands: the SURFACE attachment starts at 0.
@@ -707,6 +708,7 @@ void RasterRenderer::bind(Recording& r, const PipelineKey& key,
     // when they are pushed, so a geometry shader bound later read none (polygon mode
     // GL_FILL front, GL_POINT back: the back faces' points were lost).
     r.push_valid = false;
+    r.state_index_valid = false;
   }
   if (pipelines_.blend_is_dynamic() && (!r.blend_valid || !same_blend(key, r.blend_key))) {
     pipelines_.set_blend_state(r.cmd, key);
@@ -1099,11 +1101,17 @@ void RasterRenderer::record_draw_pass(Recording& r, const rec::Draw& draw, const
 }
 
 void RasterRenderer::push_constants(Recording& r, const gpu::RasterPushConstants& push) {
-  // Only when they change: lavapipe re-validates the bound shaders on every vkCmdPushConstants,
-  // which cost more than the draw itself (the state index is the draw's firstInstance).
-  if (r.push_valid && std::memcmp(&push, &r.pushed, sizeof push) == 0) return;
-  vkCmdPushConstants(r.cmd, pipelines_.layout(), pipelines_.push_constant_stages(), 0, sizeof push,
-                     &push);
+  // Only when they change: lavapipe uploads a stage's push constants again at its next draw and
+  // llvmpipe renews the stage's state (for the fragment stage, its per-draw state in the scene).
+  // The state index (indices.x) is pushed by draw_geometry.
+  constexpr uint32_t skip = RasterPipelines::kStateIndexPushBytes;
+  const auto* bytes = reinterpret_cast<const std::byte*>(&push);
+  if (r.push_valid &&
+      std::memcmp(bytes + skip, reinterpret_cast<const std::byte*>(&r.pushed) + skip,
+                  sizeof push - skip) == 0)
+    return;
+  vkCmdPushConstants(r.cmd, pipelines_.layout(), pipelines_.push_constant_stages(), skip,
+                     sizeof push - skip, bytes + skip);
   r.pushed = push;
   r.push_valid = true;
 }
@@ -1130,9 +1138,15 @@ void RasterRenderer::draw_geometry(Recording& r, const DrawGeometry& g, uint32_t
     vkCmdBindIndexBuffer(r.cmd, indices, 0, VK_INDEX_TYPE_UINT32);
   r.bound_index_buffer = indices;
   r.geometry_bound = true;
-  // The state index as firstInstance: gl_InstanceIndex (GLPT_RASTER_VARYING_STATE).
+  // The state index for the vertex stage alone (raster_types.h, GLPT_RASTER_VARYING_STATE).
+  if (!r.state_index_valid || state_index != r.pushed_state_index) {
+    vkCmdPushConstants(r.cmd, pipelines_.layout(), VK_SHADER_STAGE_VERTEX_BIT, 0,
+                       RasterPipelines::kStateIndexPushBytes, &state_index);
+    r.pushed_state_index = state_index;
+    r.state_index_valid = true;
+  }
   vkCmdDrawIndexed(r.cmd, g.index_count, 1, static_cast<uint32_t>(g.index_offset / 4),
-                   g.vertex_offset, state_index);
+                   g.vertex_offset, 0);
 }
 
 void RasterRenderer::ensure_ascending_indices(uint32_t count) {

@@ -129,7 +129,7 @@ class RasterRenderer {
   bool read_current_color(uint32_t buffer, int32_t x, int32_t y, uint32_t width, uint32_t height,
                           std::vector<uint8_t>& rgba);
   // Binds the geometry's buffers where they differ from the bound ones and draws it.
-  // (The state index goes to the shaders as the draw's firstInstance.)
+  // (The state index goes to the vertex stage as a push constant of its own: raster_types.h.)
   void draw_geometry(Recording& r, const DrawGeometry& geometry, uint32_t state_index);
   // vkCmdPushConstants where they differ from the last ones of the command buffer.
   void push_constants(Recording& r, const gpu::RasterPushConstants& push);
