@@ -94,14 +94,17 @@ void FrameRecorder::add_primitive(rec::StateId state, rec::VertexData& p) {
   }
   rec::VertexData& d = *open_;
   const uint32_t base = d.vertex_count();
+  const size_t count = p.position.size();
   d.primitives.push_back({base + p.primitives[0].first, p.primitives[0].count});
   append(d.position, p.position);
-  append(d.normal, p.normal);
-  append(d.color, p.color);
-  append(d.secondary_color, p.secondary_color);
-  append(d.fog_coord, p.fog_coord);
-  for (int u = 0; u < rec::kMaxTextureUnits; ++u) append(d.tex_coord[u], p.tex_coord[u]);
-  append(d.edge_flag, p.edge_flag);
+  // The attributes hold one value or one per vertex (rec::store_attribute).
+  rec::append_attribute(d.normal, base, p.normal, count);
+  rec::append_attribute(d.color, base, p.color, count);
+  rec::append_attribute(d.secondary_color, base, p.secondary_color, count);
+  rec::append_attribute(d.fog_coord, base, p.fog_coord, count);
+  for (int u = 0; u < rec::kMaxTextureUnits; ++u)
+    rec::append_attribute(d.tex_coord[u], base, p.tex_coord[u], count);
+  rec::append_attribute(d.edge_flag, base, p.edge_flag, count);
   append(d.material, p.material);
 }
 

@@ -38,18 +38,17 @@ void attribute_vertex(Context& ctx, glm::vec4 p) {
     return;
   }
   const CurrentAttributes& c = ctx.current;
+  const size_t vertex = d.position.size();
   d.position.push_back(p);
-  d.normal.push_back(c.normal);
-  d.color.push_back(c.color);
-  d.secondary_color.push_back(c.secondary_color);
-  d.fog_coord.push_back(c.fog_coord);
+  rec::store_attribute(d.normal, c.normal, vertex);
+  rec::store_attribute(d.color, c.color, vertex);
+  rec::store_attribute(d.secondary_color, c.secondary_color, vertex);
+  rec::store_attribute(d.fog_coord, c.fog_coord, vertex);
   for (int u = 0; u < rec::kMaxTextureUnits; ++u)
-    if (a.texture_units & (1u << u)) d.tex_coord[u].push_back(c.tex_coord[u]);
-  d.edge_flag.push_back(c.edge_flag ? 1 : 0);
+    if (a.texture_units & (1u << u)) rec::store_attribute(d.tex_coord[u], c.tex_coord[u], vertex);
+  rec::store_attribute(d.edge_flag, uint8_t{c.edge_flag ? uint8_t{1} : uint8_t{0}}, vertex);
   if (a.per_vertex_material) d.material.push_back(ctx.lighting.material);
 }
-
-void attribute_normal(Context& ctx, glm::vec3 n) { ctx.current.normal = n; }
 
 void attribute_color(Context& ctx, glm::vec4 c) {
   ctx.current.color = c;
@@ -71,8 +70,6 @@ void flush_color_material(Context& ctx) {
   ctx.assembly.color_material_pending = false;
   apply_color_material(ctx);
 }
-
-void attribute_tex_coord(Context& ctx, glm::vec4 t) { ctx.current.tex_coord[0] = t; }
 
 void attribute_multi_tex_coord(Context& ctx, GLenum unit, glm::vec4 t) {
   if (unit < GL_TEXTURE0 || unit >= GL_TEXTURE0 + rec::kMaxTextureUnits)

@@ -16,6 +16,7 @@
 #include <array>
 #include <atomic>
 #include <cstdint>
+#include <cstring>
 #include <glm/glm.hpp>
 #include <memory>
 #include <variant>
@@ -152,6 +153,36 @@ template <typename T>
 const T& attribute_at(const std::vector<T>& values, uint32_t vertex, const T& fallback) {
   if (values.empty()) return fallback;
   return values.size() == 1 ? values[0] : values[vertex];
+}
+
+// Stores the attribute of vertex `vertex` (the count before it) keeping the rule: the array
+// stays one value while every vertex has the same bits, and becomes one value per vertex (the
+// earlier ones filled in) at the first that differs. Bitwise: -0.0 and 0.0 are two values, as GL
+// gave them.
+template <typename T>
+void store_attribute(std::vector<T>& values, const T& value, size_t vertex) {
+  if (values.size() == 1 && vertex >= 1) {
+    if (std::memcmp(&values[0], &value, sizeof value) == 0) return;
+    values.resize(vertex, T(values[0]));
+  }
+  values.push_back(value);
+}
+
+// Appends the attribute array of `from_count` vertices to that of `to_count` vertices, each under
+// the rule; the result stays one value when both are the same one value. An empty `from` (an
+// attribute the draw does not use) appends nothing.
+template <typename T>
+void append_attribute(std::vector<T>& to, size_t to_count, const std::vector<T>& from,
+                      size_t from_count) {
+  if (from.empty()) return;
+  if (to.size() == 1 && from.size() == 1 &&
+      std::memcmp(&to[0], &from[0], sizeof(T)) == 0)
+    return;
+  if (to.size() == 1 && to_count > 1) to.resize(to_count, T(to[0]));
+  if (from.size() == 1)
+    to.insert(to.end(), from_count, from[0]);
+  else
+    to.insert(to.end(), from.begin(), from.end());
 }
 
 // ---- commands ---------------------------------------------------------------------------------

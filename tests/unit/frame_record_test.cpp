@@ -409,3 +409,98 @@ TEST_F(RecordTest, ArrayDrawsReuseAClearedRecordsStorage) {
   EXPECT_EQ(v.position[2], glm::vec4(7, 8, 9, 1));
   EXPECT_TRUE(v.indices.empty());
 }
+
+namespace {
+
+using glpt::rec::append_attribute;
+using glpt::rec::attribute_at;
+using glpt::rec::store_attribute;
+
+// Every vertex's value under the "one value or one per vertex" rule.
+std::vector<float> expanded(const std::vector<float>& values, uint32_t count) {
+  std::vector<float> out;
+  for (uint32_t i = 0; i < count; ++i) out.push_back(attribute_at(values, i, -1.0f));
+  return out;
+}
+
+TEST(AttributeRuleTest, StoringKeepsOneValueUntilAVertexDiffers) {
+  std::vector<float> values;
+  store_attribute(values, 2.0f, 0);
+  store_attribute(values, 2.0f, 1);
+  store_attribute(values, 2.0f, 2);
+  EXPECT_EQ(values.size(), 1u);
+  store_attribute(values, 5.0f, 3);  // the three before are filled in
+  store_attribute(values, 5.0f, 4);
+  EXPECT_EQ(values, (std::vector<float>{2, 2, 2, 5, 5}));
+  std::vector<float> signs;
+  store_attribute(signs, 0.0f, 0);
+  store_attribute(signs, -0.0f, 1);  // bitwise: two values, as GL gave them
+  EXPECT_EQ(signs.size(), 2u);
+}
+
+TEST(AttributeRuleTest, AppendingKeepsEveryVertexsValue) {
+  struct Case {
+    std::vector<float> to;
+    uint32_t to_count;
+    std::vector<float> from;
+    uint32_t from_count;
+  };
+  const Case cases[] = {
+      {{1}, 3, {1}, 2},        // one value both: stays one
+      {{1}, 3, {2}, 2},        // two single values
+      {{1}, 1, {2}, 4},        // a single vertex before
+      {{1, 2, 3}, 3, {4}, 2},  // per vertex, then one value
+      {{1}, 2, {4, 5, 6}, 3},  // one value, then per vertex
+      {{1, 2}, 2, {3, 4}, 2},  // per vertex both
+      {{1}, 2, {}, 3},         // an unused attribute appends nothing
+  };
+  for (const Case& c : cases) {
+    std::vector<float> to = c.to;
+    append_attribute(to, c.to_count, c.from, c.from_count);
+    if (c.from.empty()) {
+      EXPECT_EQ(to, c.to);
+      continue;
+    }
+    std::vector<float> want = expanded(c.to, c.to_count);
+    for (float v : expanded(c.from, c.from_count)) want.push_back(v);
+    EXPECT_EQ(expanded(to, c.to_count + c.from_count), want);
+    EXPECT_TRUE(to.size() == 1 || to.size() == c.to_count + c.from_count) << to.size();
+  }
+  std::vector<float> same{7};
+  append_attribute(same, 3, std::vector<float>{7}, 2);
+  EXPECT_EQ(same.size(), 1u);
+}
+
+TEST_F(RecordTest, AttributesThatChangeMidPrimitiveAndBetweenBatchedPrimitivesKeepEachVertexsValue) {
+  glBegin(GL_TRIANGLES);  // the normal changes at the third vertex, the fog coordinate never
+  glNormal3f(0, 0, 1);
+  glVertex3f(0, 0, 0);
+  glVertex3f(1, 0, 0);
+  glNormal3f(0, 1, 0);
+  glVertex3f(0, 1, 0);
+  glEnd();
+  glBegin(GL_TRIANGLES);  // batched with the first: one normal for all its vertices
+  glVertex3f(0, 0, 1);
+  glVertex3f(1, 0, 1);
+  glVertex3f(0, 1, 1);
+  glEnd();
+  glBegin(GL_TRIANGLES);  // and per vertex again
+  glNormal3f(1, 0, 0);
+  glVertex3f(0, 0, 2);
+  glNormal3f(0, 0, -1);
+  glVertex3f(1, 0, 2);
+  glVertex3f(0, 1, 2);
+  glEnd();
+  const auto d = draws();
+  ASSERT_EQ(d.size(), 1u);
+  const glpt::rec::VertexData& v = *d[0]->vertices;
+  ASSERT_EQ(v.vertex_count(), 9u);
+  const glm::vec3 want[] = {{0, 0, 1}, {0, 0, 1}, {0, 1, 0}, {0, 1, 0}, {0, 1, 0},
+                            {0, 1, 0}, {1, 0, 0}, {0, 0, -1}, {0, 0, -1}};
+  ASSERT_EQ(v.normal.size(), 9u);
+  for (uint32_t i = 0; i < 9; ++i) EXPECT_EQ(v.normal[i], want[i]) << "vertex " << i;
+  EXPECT_EQ(v.fog_coord.size(), 1u);
+  EXPECT_EQ(v.color.size(), 1u);
+}
+
+}  // namespace
