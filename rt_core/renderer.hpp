@@ -47,6 +47,17 @@ struct FrameEnd {
   // present_to receives the rows bottom to top (GL's order), for the caller to flip: one copy
   // region where lavapipe pays per region (300 row regions cost 3x one at 300x300).
   bool present_bottom_up = false;
+  // Where the front image is readable in place (raster mode, a device with linear colour
+  // attachments), a frame presented later is not copied by the renderer at all: execute fills
+  // this in with the front image's rows (bottom to top, row_pitch apart) for the caller to copy
+  // into present_to once Renderer::wait_for_frame returned, and a token that stands for the
+  // read: every later write to the image, and replacing it, waits until the token is released.
+  struct FrontPixels {
+    const uint8_t* rows = nullptr;
+    size_t row_pitch = 0;
+    std::shared_ptr<void> reading;
+  };
+  FrontPixels* front_pixels = nullptr;
 };
 
 // The samples one execute counted for an occlusion query (rec::BeginQuery .. rec::EndQuery): those

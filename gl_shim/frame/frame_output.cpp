@@ -137,6 +137,14 @@ std::unique_ptr<FrameOutput> FrameOutput::create(RenderGroup& group, std::string
 
 namespace {
 
+// The frame's rows (bottom to top, `pitch` bytes apart) into the image, top to bottom.
+void copy_rows_flipped(const uint8_t* rows, size_t pitch, const rt::HostImage& image) {
+  const size_t row_bytes = size_t{image.width} * 4;
+  for (uint32_t y = 0; y < image.height; ++y)
+    std::memcpy(image.pixels + size_t{image.height - 1 - y} * row_bytes, rows + y * pitch,
+                row_bytes);
+}
+
 // Reverses the order of the image's rows in place.
 void flip_rows(const rt::HostImage& image) {
   const size_t row_bytes = size_t{image.width} * 4;
@@ -201,7 +209,10 @@ bool FrameOutput::end_frame(const rec::FrameRecord& record, const rec::DrawableC
   // goes on (a PNG of the frame needs its pixels here, so that frame waits).
   const bool later =
       swap && drawable.double_buffered && host != nullptr && !want_png && settings_.present_later;
-  const rt::FrameEnd end{swap, host == nullptr || want_png ? &image_ : nullptr, host, later, later};
+  rt::FrameEnd::FrontPixels front;
+  const rt::FrameEnd end{swap,  host == nullptr || want_png ? &image_ : nullptr,
+                         host,  later,
+                         later, later ? &front : nullptr};
   image_.clear();
   const bool ok =
       renderer_->execute(record, target.buffers(), drawable, stats, &error, &end, queries);
@@ -214,11 +225,17 @@ bool FrameOutput::end_frame(const rec::FrameRecord& record, const rec::DrawableC
     std::shared_ptr<const rt::Renderer> renderer = renderer_;
     const uint64_t ticket = renderer_->frame_ticket();
     // The rows arrive bottom to top (FrameEnd::present_bottom_up); X's run top to bottom. The
-    // flip runs on the presenting thread, beside the program's.
+    // flip runs on the presenting thread, beside the program's: from the front image itself where
+    // the renderer left it there (FrameEnd::front_pixels; the token held until then keeps the
+    // image from being drawn into or replaced), else in the window's memory.
     const rt::HostImage image = *host;
-    target.present_host_image_later([renderer, ticket, image] {
+    target.present_host_image_later([renderer, ticket, image, front]() mutable {
       renderer->wait_for_frame(ticket);
-      flip_rows(image);
+      if (image.pixels != nullptr && front.rows != nullptr)
+        copy_rows_flipped(front.rows, front.row_pitch, image);
+      else if (image.pixels != nullptr)
+        flip_rows(image);
+      front.reading.reset();
     });
   } else if (ok && host != nullptr)
     target.present_host_image();

@@ -5,7 +5,13 @@
 // system's). The raster renderer (re)creates them when the drawable's configuration changes.
 #pragma once
 
+#include <unistd.h>
+
+#include <algorithm>
+#include <condition_variable>
 #include <memory>
+#include <mutex>
+#include <vector>
 
 #include "rt_core/raster/accumulation.hpp"
 #include "rt_core/record/frame_record.hpp"
@@ -13,6 +19,47 @@
 #include "rt_core/vk/vk_device.hpp"
 
 namespace glpt::rt {
+
+// The host's reads of colour images in flight: a presenting thread that copies a finished frame
+// out of the front image (FrameEnd::front_pixels) while the program goes on. Whatever writes an
+// image, or replaces it, first waits for its reads (RasterRenderer). Thread-safe.
+class HostImageReads {
+ public:
+  void begin(VkImage image) {
+    std::lock_guard lock(mutex_);
+    reading_.push_back({image, getpid()});
+  }
+  void end(VkImage image) {
+    {
+      std::lock_guard lock(mutex_);
+      const auto found = std::find_if(reading_.begin(), reading_.end(),
+                                      [&](const Read& r) { return r.image == image; });
+      if (found != reading_.end()) reading_.erase(found);
+    }
+    done_.notify_all();
+  }
+  // Until no read of `image` is in flight (VK_NULL_HANDLE: of any image).
+  void wait(VkImage image) {
+    std::unique_lock lock(mutex_);
+    // A forked child inherits the entries but not the threads that would end them.
+    const pid_t self = getpid();
+    std::erase_if(reading_, [&](const Read& r) { return r.process != self; });
+    done_.wait(lock, [&] {
+      return std::none_of(reading_.begin(), reading_.end(), [&](const Read& r) {
+        return image == VK_NULL_HANDLE || r.image == image;
+      });
+    });
+  }
+
+ private:
+  struct Read {
+    VkImage image;
+    pid_t process;
+  };
+  std::mutex mutex_;
+  std::condition_variable done_;
+  std::vector<Read> reading_;  // one entry per read in flight
+};
 
 struct DrawableBuffers {
   // The device the images live on (the process's); declared first, so it outlives them.
@@ -25,6 +72,8 @@ struct DrawableBuffers {
   // back is used before a clear replaces it (RasterRenderer::restore_back).
   bool back_is_front = false;
   AccumulationBuffer accum;
+  // Shared with the reads' threads, which may finish after the buffers are gone.
+  std::shared_ptr<HostImageReads> host_reads = std::make_shared<HostImageReads>();
 };
 
 }  // namespace glpt::rt

@@ -82,12 +82,14 @@ RasterRenderer::RasterRenderer(std::shared_ptr<VulkanDevice> device)
       descriptor_sets_(*device_, pipelines_.set_layout(), pipelines_.set_descriptor_counts()) {
   set_line_stipple_ =
       load_device_function<PFN_vkCmdSetLineStippleEXT>(*device_, "vkCmdSetLineStippleEXT");
+  host_readable_color_ = GpuImage::linear_supported(*device_, kColorFormat, kColorUsage);
 }
 
 void RasterRenderer::ensure_buffers(DrawableBuffers& buffers, const rec::DrawableConfig& drawable) {
   buffers_ = &buffers;  // the buffers every helper of this call works on
   if (drawable == buffers.config && buffers.front && buffers.device == device_) return;
   device_->wait_all();  // pending submissions may still draw into the buffers replaced here
+  buffers.host_reads->wait(VK_NULL_HANDLE);  // and a presenting thread read the front
   buffers.device = device_;
   buffers.config = drawable;
   buffers.front = GpuImage();
@@ -99,9 +101,11 @@ void RasterRenderer::ensure_buffers(DrawableBuffers& buffers, const rec::Drawabl
   color.format = kColorFormat;
   color.extent = {drawable.width, drawable.height, 1};
   color.usage = kColorUsage;
+  color.host_readable = host_readable_color_;
   buffers.front = GpuImage::create(*device_, color);
   buffers.back = GpuImage::create(*device_, color);
   GpuImageInfo depth = color;
+  depth.host_readable = false;
   depth.format = kDepthStencilFormat;
   depth.usage = kDepthStencilUsage;
   depth.aspect = VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT;
@@ -140,6 +144,9 @@ void RasterRenderer::execute(const rec::FrameRecord& record, DrawableBuffers& bu
     for (size_t i = 0; i < all.size(); ++i) all[i] = i;
     commands = &all;
   }
+  // A presenting thread may still be copying an earlier frame out of a colour image: the back
+  // is drawn into by any execute, the front only by front-buffer drawing.
+  wait_for_host_reads(may_write_front(record, *commands));
   queries_.begin_record(record, buffers_->front ? *commands : std::vector<size_t>{});
   if (!buffers_->front) {
     if (end && end->front_rgba) end->front_rgba->clear();
@@ -1159,6 +1166,32 @@ void RasterRenderer::ensure_ascending_indices(uint32_t count) {
   for (size_t i = 0; i < capacity; ++i) indices[i] = static_cast<uint32_t>(i);
 }
 
+void RasterRenderer::wait_for_host_reads(bool front_too) {
+  buffers_->host_reads->wait(front_too ? VK_NULL_HANDLE : buffers_->back.handle());
+}
+
+bool RasterRenderer::may_write_front(const rec::FrameRecord& record,
+                                     const std::vector<size_t>& commands) const {
+  const bool double_buffered = buffers_->config.double_buffered;
+  for (size_t i : commands) {
+    bool front = false;
+    std::visit(
+        [&](const auto& command) {
+          if constexpr (requires { command.state; }) {
+            if (command.state >= record.states.size()) return;
+            const rec::StateSnapshot& state = record.states[command.state];
+            if (!state.raster) return;
+            const ColorTargets targets =
+                resolve_draw_buffer(state.raster->ops.draw_buffer, double_buffered);
+            front = targets == ColorTargets::kFront || targets == ColorTargets::kFrontAndBack;
+          }
+        },
+        record.commands[i]);
+    if (front) return true;
+  }
+  return false;
+}
+
 void RasterRenderer::record_frame_end(VkCommandBuffer cmd, const FrameEnd& end) {
   auto barrier = make_info<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
   barrier.srcAccessMask = VK_ACCESS_MEMORY_WRITE_BIT;
@@ -1185,7 +1218,18 @@ void RasterRenderer::record_frame_end(VkCommandBuffer cmd, const FrameEnd& end) 
     vkCmdCopyImageToBuffer(cmd, buffers_->front.handle(), VK_IMAGE_LAYOUT_GENERAL,
                            readback_.handle(), 1, &copy);
   }
-  if (to_window && present_ && end.present_bottom_up) {
+  if (to_window && end.present_later && end.present_bottom_up && end.front_pixels != nullptr &&
+      buffers_->front.pixels() != nullptr) {
+    // Nothing to copy: the caller reads the front image in place once the frame is done, and
+    // whatever writes the image next waits until it has (wait_for_host_reads).
+    FrameEnd::FrontPixels& out = *end.front_pixels;
+    out.rows = buffers_->front.pixels();
+    out.row_pitch = buffers_->front.pixel_row_pitch();
+    const VkImage image = buffers_->front.handle();
+    std::shared_ptr<HostImageReads> reads = buffers_->host_reads;
+    reads->begin(image);
+    out.reading = std::shared_ptr<void>(reads.get(), [reads, image](void*) { reads->end(image); });
+  } else if (to_window && present_ && end.present_bottom_up) {
     // Straight into the window's memory as one region, rows bottom to top: the caller flips.
     wait_for_previous();
     VkBufferImageCopy copy{};
@@ -1282,6 +1326,7 @@ bool RasterRenderer::read_stencil(DrawableBuffers& buffers, int32_t x, int32_t y
 }
 
 void RasterRenderer::write_color(bool front, const std::vector<uint8_t>& rgba) {
+  wait_for_host_reads(true);
   const bool to_front = front || !buffers_->config.double_buffered;
   if (!to_front) restore_back();  // (a whole image: the copy is cheap and keeps this simple)
   const GpuImage& image = to_front ? buffers_->front : buffers_->back;
@@ -1314,6 +1359,7 @@ void RasterRenderer::write_depth(DrawableBuffers& buffers, const rec::DrawableCo
 void RasterRenderer::write_pixels(DrawableBuffers& buffers, const rec::DrawableConfig& drawable,
                                   const PixelWrite& pixels) {
   ensure_buffers(buffers, drawable);
+  wait_for_host_reads(true);
   const rec::DrawableConfig& config = buffers_->config;
   const size_t n = size_t{pixels.width} * pixels.height;
   if (n == 0 || pixels.x < 0 || pixels.y < 0 || pixels.x + int64_t{pixels.width} > config.width ||

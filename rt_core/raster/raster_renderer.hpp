@@ -121,6 +121,11 @@ class RasterRenderer {
   // flag); restore_back() submits it now, before a read or partial write of the back.
   void record_restore_back(VkCommandBuffer cmd);
   void restore_back();
+  // Waits for the host's reads of the back image in flight (FrameEnd::front_pixels), or of both
+  // colour images with `front_too`: before anything that may write them.
+  void wait_for_host_reads(bool front_too);
+  // Whether any of `commands` may write the front colour buffer.
+  bool may_write_front(const rec::FrameRecord& record, const std::vector<size_t>& commands) const;
   // Whether the first of `commands` (of `record`) that touches colour is a clear of every pixel
   // and channel of the back buffer: what the back held before does not matter then.
   bool begins_with_whole_back_clear(const rec::FrameRecord& record,
@@ -160,6 +165,9 @@ class RasterRenderer {
   void clear_accum(const rec::FrameRecord& record, const rec::Clear& clear);
 
   std::shared_ptr<VulkanDevice> device_;
+  // Colour buffers in linear host-visible memory where the device supports it, so a frame is
+  // presented from the front image in place (FrameEnd::front_pixels).
+  bool host_readable_color_ = false;
   RasterPipelines pipelines_;
   TextureCache textures_;
   DescriptorSetRing descriptor_sets_;  // set 0 of every draw (descriptor_set_ring.hpp)

@@ -225,6 +225,41 @@ TEST_F(GlxDrawables, FramesSwappedWithoutWaitingAreShownInOrder) {
   EXPECT_TRUE(g_errors.empty());
 }
 
+// Rows land where GL put them while the presenting thread copies frames out of the front image
+// (FrameEnd::front_pixels) and the program draws the next ones: GL's bottom row is the window's
+// bottom row in every frame, and front-buffer drawing right after a swap waits for that copy.
+TEST_F(GlxDrawables, SwappedFramesKeepTheirRowsWhileLaterFramesDraw) {
+  Window win = 0;
+  ASSERT_TRUE(current_double_buffered_window(24, 24, &win));
+  glEnable(GL_SCISSOR_TEST);
+  for (int frame = 0; frame < 20; ++frame) {
+    glScissor(0, 0, 24, 12);  // GL's bottom half: red, then green in odd frames
+    glClearColor(frame % 2 ? 0.0f : 1.0f, frame % 2 ? 1.0f : 0.0f, 0, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glScissor(0, 12, 24, 12);  // the top half blue
+    glClearColor(0, 0, 1, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glXSwapBuffers(dpy_, win);
+  }
+  glXWaitGL();
+  EXPECT_EQ(x_pixel(win, 5, 20), 0x00FF00u);  // X counts rows from the top
+  EXPECT_EQ(x_pixel(win, 5, 3), 0x0000FFu);
+  glClearColor(1, 0, 0, 1);
+  glScissor(0, 0, 24, 24);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glXSwapBuffers(dpy_, win);
+  glDrawBuffer(GL_FRONT);  // at once, while the frame may still be copied out
+  glScissor(0, 0, 12, 24);
+  glClearColor(1, 1, 1, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glFinish();
+  EXPECT_EQ(x_pixel(win, 3, 3), 0xFFFFFFu);
+  EXPECT_EQ(x_pixel(win, 20, 20), 0xFF0000u);
+  glDisable(GL_SCISSOR_TEST);
+  glDrawBuffer(GL_BACK);
+  EXPECT_TRUE(g_errors.empty());
+}
+
 // A swap keeps the back buffer's contents (as Mesa's software swap does; glpt exchanges the
 // colour images and copies the front back only where a frame uses the back before clearing all of
 // it): a frame drawn without a clear, a partial (scissored) clear, reads of both buffers.
