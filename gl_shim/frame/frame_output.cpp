@@ -210,9 +210,8 @@ bool FrameOutput::end_frame(const rec::FrameRecord& record, const rec::DrawableC
   const bool later =
       swap && drawable.double_buffered && host != nullptr && !want_png && settings_.present_later;
   rt::FrameEnd::FrontPixels front;
-  const rt::FrameEnd end{swap,  host == nullptr || want_png ? &image_ : nullptr,
-                         host,  later,
-                         later, later ? &front : nullptr};
+  rt::FrameEnd end{swap, host == nullptr || want_png ? &image_ : nullptr, host, later, later};
+  if (later) end.front_pixels = &front;
   image_.clear();
   const bool ok =
       renderer_->execute(record, target.buffers(), drawable, stats, &error, &end, queries);

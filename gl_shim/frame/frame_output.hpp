@@ -41,7 +41,8 @@ class WindowTarget {
   // The buffers the drawable has (GLX visual / EGL config); the size is filled in by the caller.
   virtual rec::DrawableConfig config() const { return {}; }
   // Zero-copy presenting: host memory the next frame can be written into directly (the
-  // renderer's own submission copies the front buffer there), shown by present_host_image().
+  // renderer's own submission copies the front buffer there, or, for a frame presented later
+  // from a host-readable front image, the presenting thread), shown by present_host_image().
   // nullptr when the target has no such memory (then present() is used).
   virtual const rt::HostImage* host_image(uint32_t /*width*/, uint32_t /*height*/) {
     return nullptr;

@@ -18,9 +18,7 @@ void attribute_color(Context& ctx, glm::vec4 color);
 // value packs it through the stack (two 4-byte stores read back as one 8-byte load, which the
 // store buffer cannot forward: bench/vertex_stream spent 15% of its time in glNormal3f).
 inline void attribute_normal(Context& ctx, glm::vec3 normal) { ctx.current.normal = normal; }
-inline void attribute_tex_coord(Context& ctx, glm::vec4 coord) {
-  ctx.current.tex_coord[0] = coord;
-}
+inline void attribute_tex_coord(Context& ctx, glm::vec4 coord) { ctx.current.tex_coord[0] = coord; }
 void attribute_multi_tex_coord(Context& ctx, GLenum texture_unit, glm::vec4 coord);
 
 // glMaterial between glBegin and glEnd (allowed by GL 1.5 2.6.3), called once it set the fields

@@ -175,9 +175,7 @@ template <typename T>
 void append_attribute(std::vector<T>& to, size_t to_count, const std::vector<T>& from,
                       size_t from_count) {
   if (from.empty()) return;
-  if (to.size() == 1 && from.size() == 1 &&
-      std::memcmp(&to[0], &from[0], sizeof(T)) == 0)
-    return;
+  if (to.size() == 1 && from.size() == 1 && std::memcmp(&to[0], &from[0], sizeof(T)) == 0) return;
   if (to.size() == 1 && to_count > 1) to.resize(to_count, T(to[0]));
   if (from.size() == 1)
     to.insert(to.end(), from_count, from[0]);

@@ -471,7 +471,7 @@ TEST(AttributeRuleTest, AppendingKeepsEveryVertexsValue) {
   EXPECT_EQ(same.size(), 1u);
 }
 
-TEST_F(RecordTest, AttributesThatChangeMidPrimitiveAndBetweenBatchedPrimitivesKeepEachVertexsValue) {
+TEST_F(RecordTest, AttributesChangingInAPrimitiveOrBetweenBatchedOnesKeepEachVertexsValue) {
   glBegin(GL_TRIANGLES);  // the normal changes at the third vertex, the fog coordinate never
   glNormal3f(0, 0, 1);
   glVertex3f(0, 0, 0);
@@ -495,7 +495,7 @@ TEST_F(RecordTest, AttributesThatChangeMidPrimitiveAndBetweenBatchedPrimitivesKe
   ASSERT_EQ(d.size(), 1u);
   const glpt::rec::VertexData& v = *d[0]->vertices;
   ASSERT_EQ(v.vertex_count(), 9u);
-  const glm::vec3 want[] = {{0, 0, 1}, {0, 0, 1}, {0, 1, 0}, {0, 1, 0}, {0, 1, 0},
+  const glm::vec3 want[] = {{0, 0, 1}, {0, 0, 1}, {0, 1, 0},  {0, 1, 0}, {0, 1, 0},
                             {0, 1, 0}, {1, 0, 0}, {0, 0, -1}, {0, 0, -1}};
   ASSERT_EQ(v.normal.size(), 9u);
   for (uint32_t i = 0; i < 9; ++i) EXPECT_EQ(v.normal[i], want[i]) << "vertex " << i;
