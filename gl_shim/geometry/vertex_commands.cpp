@@ -1,6 +1,7 @@
 // glBegin/glEnd and the current vertex attributes (GL 1.5 spec 2.6, 2.7): each glVertex appends
 // a vertex with the current attributes to the primitive being assembled; glEnd hands the
 // primitive to the frame recorder with the state snapshot taken at glBegin.
+#include <bit>
 #include <cmath>
 
 #include "gl/gl_enums.h"
@@ -44,8 +45,10 @@ void attribute_vertex(Context& ctx, glm::vec4 p) {
   rec::store_attribute(d.color, c.color, vertex);
   rec::store_attribute(d.secondary_color, c.secondary_color, vertex);
   rec::store_attribute(d.fog_coord, c.fog_coord, vertex);
-  for (int u = 0; u < rec::kMaxTextureUnits; ++u)
-    if (a.texture_units & (1u << u)) rec::store_attribute(d.tex_coord[u], c.tex_coord[u], vertex);
+  for (uint32_t units = a.texture_units; units != 0; units &= units - 1) {
+    const int u = std::countr_zero(units);
+    rec::store_attribute(d.tex_coord[u], c.tex_coord[u], vertex);
+  }
   rec::store_attribute(d.edge_flag, uint8_t{c.edge_flag ? uint8_t{1} : uint8_t{0}}, vertex);
   if (a.per_vertex_material) d.material.push_back(ctx.lighting.material);
 }

@@ -155,15 +155,25 @@ const T& attribute_at(const std::vector<T>& values, uint32_t vertex, const T& fa
   return values.size() == 1 ? values[0] : values[vertex];
 }
 
+// The first vertex whose attribute differs from the one value stored so far: the earlier
+// vertices get their copies (once per primitive at most, so kept out of the inline path).
+template <typename T>
+[[gnu::noinline, gnu::cold]] void widen_attribute(std::vector<T>& values, size_t vertex) {
+  values.resize(vertex, T(values[0]));
+}
+
 // Stores the attribute of vertex `vertex` (the count before it) keeping the rule: the array
 // stays one value while every vertex has the same bits, and becomes one value per vertex (the
 // earlier ones filled in) at the first that differs. Bitwise: -0.0 and 0.0 are two values, as GL
-// gave them.
+// gave them. Always inline: immediate mode calls it for five attributes of every vertex, and as
+// calls they were a fifth of bench/vertex_stream's capture time.
 template <typename T>
-void store_attribute(std::vector<T>& values, const T& value, size_t vertex) {
-  if (values.size() == 1 && vertex >= 1) {
-    if (std::memcmp(&values[0], &value, sizeof value) == 0) return;
-    values.resize(vertex, T(values[0]));
+[[gnu::always_inline]] inline void store_attribute(std::vector<T>& values, const T& value,
+                                                   size_t vertex) {
+  if (values.size() == 1 && vertex >= 1) [[likely]] {
+    if (std::memcmp(&values[0], &value, sizeof value) == 0) [[likely]]
+      return;
+    widen_attribute(values, vertex);
   }
   values.push_back(value);
 }
