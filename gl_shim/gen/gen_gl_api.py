@@ -551,6 +551,44 @@ def emit_impl_decls(path, names, commands):
         f.write("\n}  // namespace impl\n}  // namespace glpt\n")
 
 
+def emit_compile_function(w, n, cmd, plan):
+    """compile_<n>: records one call into the list being compiled, and executes it too where GL
+    does (GL_COMPILE_AND_EXECUTE, or a client image that is not compiled). The entry point
+    tail-calls it, so nothing of the call needs keeping across it."""
+    params = ", ".join(["glpt::Context& ctx", "glpt::ListStream& glpt_list"] +
+                       [p.decl() for p in cmd.params])
+    execute = f"glpt::exec_{n}({', '.join(['ctx'] + [p.name for p in cmd.params])})"
+    ret_default = "" if cmd.returns_void else " {}"
+    w(f"[[gnu::cold, gnu::noinline]] static {cmd.ret} compile_{n}({params}) {{\n")
+    image = CLIENT_IMAGES.get(core_name(n)) if "client image" in plan.values() else None
+    if image is not None and image.immediate_if:
+        w(f"  if ({image.immediate_if}) return {execute};\n")
+    if image is not None:
+        w(f"  const glpt::ClientImageCopy image_copy = glpt::copy_client_image("
+          f"ctx.framebuffer.unpack, glpt::ImageShape{{{image.width}, {image.height}, "
+          f"{image.depth}, {image.format}, {image.type}}}, "
+          f"{'true' if image.three_d else 'false'}, {image.data});\n")
+    w(f"  glpt::ListStream::Writer rec_writer(glpt_list, glpt::CommandId::{n}, "
+      f"sizeof(glpt::Rec_{n}));\n")
+    w(f"  glpt::Rec_{n} rec{{}};\n")
+    for p in cmd.params:
+        if plan.get(p.name) == "client image":
+            w(f"  rec.{p.name}_present = image_copy.present;\n")
+            w(f"  rec.{p.name}_bytes = uint32_t(image_copy.bytes.size());\n")
+            w(f"  rec.{p.name}_offset = rec_writer.append_array("
+              f"image_copy.bytes.data(), rec.{p.name}_bytes);\n")
+        elif p.is_pointer:
+            w(f"  rec.{p.name}_count = {plan[p.name]};\n")
+            elem = CUSTOM_ARRAY_COUNTS.get((core_name(cmd.name), p.name), (p.ptype,))[0]
+            w(f"  rec.{p.name}_offset = rec_writer.append_array("
+              f"static_cast<const {elem}*>({p.name}), rec.{p.name}_count);\n")
+        else:
+            w(f"  rec.{p.name} = {p.name};\n")
+    w("  rec_writer.set_record(rec);\n")
+    w(f"  if (!ctx.list_executes_while_compiling()) return{ret_default};\n")
+    w(f"  return {execute};\n}}\n\n")
+
+
 def emit_entry_points(path, names, commands, gl_root):
     out = []
     w = out.append
@@ -558,6 +596,7 @@ def emit_entry_points(path, names, commands, gl_root):
     w('#include <algorithm>\n#include <cstring>\n\n'
       '#include "gl_shim/context.hpp"\n#include "gl_shim/display_lists/list_stream.hpp"\n'
       '#include "gl_shim/dispatch.hpp"\n#include "gl_shim/gl_entry_decls.h"\n'
+      '#include "gl_shim/geometry/attributes.hpp"\n'
       '#include "gl_shim/pixels/list_images.hpp"\n'
       '#include "gl/gl_enums.h"\n')
     for header in HAND_COMPILED_HEADERS:
@@ -578,6 +617,12 @@ def emit_entry_points(path, names, commands, gl_root):
         args = ", ".join(["ctx"] + [p.name for p in cmd.params])
         params = ", ".join(["Context& ctx"] + [p.decl() for p in cmd.params])
         w(f"inline {cmd.ret} exec_{n}({params}) {{\n")
+        # Vertex attributes, called per vertex by immediate-mode programs: the setter inline
+        # here, not through the out-of-line impl:: copy (two calls fewer per glNormal3f /
+        # glVertex3f pair).
+        if (inline_body := attribute_family_body(n, commands)) is not None:
+            w(inline_body + "}\n\n")
+            continue
         ret_default = "" if cmd.returns_void else " {}"
         if not allowed_in_begin_end(n):
             w(f"  if (ctx.inside_begin_end()) {{\n    record_error(ctx, GL_INVALID_OPERATION);\n"
@@ -645,6 +690,8 @@ def emit_entry_points(path, names, commands, gl_root):
         params = ", ".join(p.decl() for p in cmd.params) or "void"
         args = ", ".join(["*ctx"] + [p.name for p in cmd.params])
         ret_default = "" if cmd.returns_void else " {}"
+        if compiled(n) and plans[n] not in (None, "hand"):
+            emit_compile_function(w, n, cmd, plans[n])
         w(f"static inline {cmd.ret} entry_{n}({params}) {{\n")
         w("  glpt::Context* ctx = glpt::current_context();\n")
         w(f"  if (ctx == nullptr) return{ret_default};\n")
@@ -667,34 +714,14 @@ def emit_entry_points(path, names, commands, gl_root):
                 args_list = ", ".join(["*ctx", "*glpt_list"] + [p.name for p in cmd.params])
                 w(f"    {HAND_COMPILED[core_name(n)]}({args_list});\n")
             else:
-                w("  if (glpt::ListStream* glpt_list = ctx->list_being_compiled()) {\n")
-                image = CLIENT_IMAGES.get(core_name(n)) if "client image" in plan.values() else None
-                if image is not None and image.immediate_if:
-                    call = ", ".join(["*ctx"] + [p.name for p in cmd.params])
-                    w(f"    if ({image.immediate_if}) return glpt::exec_{n}({call});\n")
-                if image is not None:
-                    w(f"    const glpt::ClientImageCopy image_copy = glpt::copy_client_image("
-                      f"ctx->framebuffer.unpack, glpt::ImageShape{{{image.width}, {image.height}, "
-                      f"{image.depth}, {image.format}, {image.type}}}, "
-                      f"{'true' if image.three_d else 'false'}, {image.data});\n")
-                w(f"    glpt::ListStream::Writer rec_writer(*glpt_list, glpt::CommandId::{n}, "
-                  f"sizeof(glpt::Rec_{n}));\n")
-                w(f"    glpt::Rec_{n} rec{{}};\n")
-                for p in cmd.params:
-                    if plan.get(p.name) == "client image":
-                        w(f"    rec.{p.name}_present = image_copy.present;\n")
-                        w(f"    rec.{p.name}_bytes = uint32_t(image_copy.bytes.size());\n")
-                        w(f"    rec.{p.name}_offset = rec_writer.append_array("
-                          f"image_copy.bytes.data(), rec.{p.name}_bytes);\n")
-                    elif p.is_pointer:
-                        w(f"    rec.{p.name}_count = {plan[p.name]};\n")
-                        elem = CUSTOM_ARRAY_COUNTS.get((core_name(cmd.name), p.name), (p.ptype,))[0]
-                        w(f"    rec.{p.name}_offset = rec_writer.append_array("
-                          f"static_cast<const {elem}*>({p.name}), rec.{p.name}_count);\n")
-                    else:
-                        w(f"    rec.{p.name} = {p.name};\n")
-                w("    rec_writer.set_record(rec);\n")
-            w(f"    if (!ctx->list_executes_while_compiling()) return{ret_default};\n  }}\n")
+                # Recording into a list is out of line (compile_*, emitted before this entry
+                # point, which also executes the call where GL does): the path every
+                # immediate-mode call takes stays a few instructions.
+                compile_args = ", ".join(["*ctx", "*glpt_list"] + [p.name for p in cmd.params])
+                w("  if (glpt::ListStream* glpt_list = ctx->list_being_compiled()) [[unlikely]]\n")
+                w(f"    return compile_{n}({compile_args});\n")
+            if plan is None or plan == "hand":
+                w(f"    if (!ctx->list_executes_while_compiling()) return{ret_default};\n  }}\n")
         if cmd.returns_void:
             w(f"  glpt::exec_{n}({args});\n}}\n\n")
         else:
@@ -792,36 +819,42 @@ def attribute_family_member(name):
     return family, m.group(1), m.group(4) == "v"
 
 
+def attribute_family_body(name, commands):
+    """The statements of a generated attribute setter (the argument conversion and the family's
+    canonical setter), or None when `name` is no family member implemented by its own name."""
+    member = attribute_family_member(name)
+    if not member or impl_name(commands[name], commands) != name:
+        return None
+    family, family_name, vector = member
+    params = list(commands[name].params)
+    lead = []
+    if family_name == "MultiTexCoord":
+        lead = [params[0].name]
+        params = params[1:]
+    conv = family.conversion
+    if vector:
+        count = int(ATTRIBUTE_FAMILY.match(name).group(2) or "1")
+        comps = [f"{conv}({params[0].name}[{i}])" for i in range(count)]
+    else:
+        comps = [f"{conv}({p.name})" for p in params]
+    if family.width == 1:
+        value = comps[0]
+    else:
+        defaults = ["0.0f", "0.0f", "0.0f", "1.0f"]  # missing components: (0, 0, 0, 1)
+        comps += defaults[len(comps):family.width]
+        value = f"glm::vec{family.width}({', '.join(comps)})"
+    body = f"  if ({params[0].name} == nullptr) return;\n" if vector else ""
+    return body + f"  {family.setter}({', '.join(['ctx'] + lead + [value])});\n"
+
+
 def emit_attribute_families(path, names, commands):
     out = [HEADER, '#include <glm/glm.hpp>\n\n#include "gl_shim/geometry/attributes.hpp"\n'
            '#include "gl_shim/gl_impl_decls.hpp"\n\nnamespace glpt::impl {\n\n']
     for n in names:
-        member = attribute_family_member(n)
-        if not member or impl_name(commands[n], commands) != n:
+        body = attribute_family_body(n, commands)
+        if body is None:
             continue
-        family, family_name, vector = member
-        cmd = commands[n]
-        params = list(cmd.params)
-        lead = []
-        if family_name == "MultiTexCoord":
-            lead = [params[0].name]
-            params = params[1:]
-        conv = family.conversion
-        if vector:
-            count = int(ATTRIBUTE_FAMILY.match(n).group(2) or "1")
-            comps = [f"{conv}({params[0].name}[{i}])" for i in range(count)]
-        else:
-            comps = [f"{conv}({p.name})" for p in params]
-        if family.width == 1:
-            value = comps[0]
-        else:
-            defaults = ["0.0f", "0.0f", "0.0f", "1.0f"]  # missing components: (0, 0, 0, 1)
-            comps += defaults[len(comps):family.width]
-            value = f"glm::vec{family.width}({', '.join(comps)})"
-        out.append(impl_signature(cmd, n) + " {\n")
-        if vector:
-            out.append(f"  if ({params[0].name} == nullptr) return;\n")
-        out.append(f"  {family.setter}({', '.join(['ctx'] + lead + [value])});\n}}\n\n")
+        out.append(impl_signature(commands[n], n) + " {\n" + body + "}\n\n")
     out.append("}  // namespace glpt::impl\n")
     with open(path, "w") as f:
         f.write("".join(out))
