@@ -45,8 +45,10 @@ constexpr InternalFormatInfo reported_as(InternalFormatInfo info, GLint base) {
 // Sizes measured with Mesa 25.0.7 llvmpipe (OSMesa, glGetTexLevelParameteriv): Mesa rounds
 // ALPHA4, LUMINANCE4, LUMINANCE6_ALPHA2 and INTENSITY4 up to 8 bits, 12-bit formats up to 16,
 // RGBA2 up to 4444; it keeps R3_G3_B2, RGB4 (as 4444), RGB5, RGB10, RGB5_A1, RGB10_A2 and
-// LUMINANCE4_ALPHA4 exact. Mesa compresses GL_COMPRESSED_RGB/RGBA/LUMINANCE/LUMINANCE_ALPHA with
-// S3TC/LATC; glpt keeps them uncompressed (GL allows it) and reports their base format.
+// LUMINANCE4_ALPHA4 exact. Mesa compresses GL_COMPRESSED_RGB/RGBA with S3TC, and so does glpt
+// (stored_internal_format in texture_image_commands.cpp: the entries below are for 1-D images,
+// which Mesa keeps uncompressed), and GL_COMPRESSED_LUMINANCE/LUMINANCE_ALPHA with LATC, which
+// glpt keeps uncompressed (GL allows it), reporting their base format.
 constexpr Entry kEntries[] = {
     {1, L(8)},
     {2, LA(8, 8)},

@@ -326,6 +326,20 @@ void compress_region(rec::TextureImage& img, int64_t x0, int64_t y0, int64_t z0,
   decode_compressed(img);
 }
 
+// The format an image of a requested internal format is stored in. Mesa 25.0.7 (llvmpipe,
+// st_ChooseTextureFormat) compresses the generic GL_COMPRESSED_RGB and GL_COMPRESSED_RGBA as
+// DXT1 and DXT5 on every target but 1-D (there it keeps them uncompressed): the image reports
+// the S3TC format, its texels are what Mesa's encoder leaves of the data (lossy), and it takes
+// compressed sub-images and reads like any S3TC image (measured with OSMesa: 2-D, cube, 3-D and
+// rectangle images, glCopyTexImage2D, proxies and images with a border). The generic luminance
+// formats (LATC in Mesa) stay uncompressed here.
+GLint stored_internal_format(GLint requested, const ImageTarget& t) {
+  if (t.slot == kSlot1D) return requested;
+  if (requested == GL_COMPRESSED_RGB) return GL_COMPRESSED_RGB_S3TC_DXT1_EXT;
+  if (requested == GL_COMPRESSED_RGBA) return GL_COMPRESSED_RGBA_S3TC_DXT5_EXT;
+  return requested;
+}
+
 void tex_image(Context& ctx, int dims, GLenum target, GLint level, GLint internal_format, GLsizei w,
                GLsizei h, GLsizei d, GLint border, GLenum format, GLenum type, const void* pixels) {
   flush_bitmap_cache(ctx);  // as Mesa's texture uploads and reads
@@ -338,13 +352,17 @@ void tex_image(Context& ctx, int dims, GLenum target, GLint level, GLint interna
   if (internal_format_info(internal_format) == nullptr) return record_error(ctx, GL_INVALID_VALUE);
   if (const GLenum e = check_format_and_type(format, type); e != GL_NO_ERROR)
     return record_error(ctx, e);
-  const GLint sized = sized_format_for(internal_format, format, type);
+  GLint sized = sized_format_for(internal_format, format, type);
   const InternalFormatInfo* info = stored_format_info(uint32_t(internal_format), uint32_t(sized));
   if (info->block_bytes != 0 && !s3tc_target(*t)) return record_error(ctx, GL_INVALID_ENUM);
   if (info->block_bytes != 0 && border != 0) return record_error(ctx, GL_INVALID_OPERATION);
   if (!formats_agree(*info, format)) return record_error(ctx, GL_INVALID_OPERATION);
   // Mesa's _mesa_legal_texture_base_format_for_target: no three-dimensional depth textures.
   if (info->is_depth() && t->slot == kSlot3D) return record_error(ctx, GL_INVALID_OPERATION);
+  if (const GLint stored = stored_internal_format(internal_format, *t); stored != internal_format) {
+    internal_format = sized = stored;  // validated as requested, stored (and reported) compressed
+    info = internal_format_info(stored);
+  }
   const bool legal = legal_dimensions(*t, level, w, h, d, border);
   TextureObject& object = target_object(ctx, *t);
   if (t->proxy) {
@@ -451,6 +469,11 @@ void copy_tex_image(Context& ctx, int dims, GLenum target, GLint level, GLenum i
   if (!legal_dimensions(*t, level, w, h, 1, border)) return record_error(ctx, GL_INVALID_VALUE);
   if (!framebuffer_has_source(ctx, *info))
     return record_error(ctx, GL_INVALID_OPERATION);  // nothing to copy depth (stencil) from
+  if (const GLint stored = stored_internal_format(GLint(internal_format), *t);
+      stored != GLint(internal_format)) {
+    internal_format = GLenum(stored);
+    info = internal_format_info(stored);
+  }
   TextureObject& object = target_object(ctx, *t);
   or_out_of_memory(ctx, [&] {
     std::shared_ptr<rec::TextureImage> img = new_image(*t, GLint(internal_format), w, h, 1, border);

@@ -54,8 +54,9 @@ TEST_F(TexImageTest, ComponentSizesAreMesas) {
       {GL_RGB10_A2, 10, 10, 10, 2, 0, 0, 0, GL_RGB10_A2},
       {GL_DEPTH_COMPONENT, 0, 0, 0, 0, 0, 0, 24, GL_DEPTH_COMPONENT},
       {GL_DEPTH_COMPONENT16, 0, 0, 0, 0, 0, 0, 16, GL_DEPTH_COMPONENT16},
-      // Generic compressed formats are stored uncompressed and reported as their base format.
-      {GL_COMPRESSED_RGB, 8, 8, 8, 0, 0, 0, 0, GL_RGB},
+      // Generic compressed formats Mesa does not compress: stored uncompressed and reported as
+      // their base format (GL_COMPRESSED_RGB and RGBA: S3tcGenericFormatsAreDxt1AndDxt5).
+      {GL_COMPRESSED_ALPHA, 0, 0, 0, 8, 0, 0, 0, GL_ALPHA},
       {GL_COMPRESSED_INTENSITY, 0, 0, 0, 0, 0, 8, 0, GL_INTENSITY},
       {GL_BGRA, 8, 8, 8, 8, 0, 0, 0, GL_BGRA},  // accepted by Mesa as RGBA8
   };
@@ -645,6 +646,47 @@ TEST_F(TexImageTest, S3tcCopiesAndGeneratedLevelsAreCompressed) {
   std::vector<GLubyte> level1(16, 0xEE);
   glGetCompressedTexImage(GL_TEXTURE_3D, 1, level1.data());
   EXPECT_NE(level1, std::vector<GLubyte>(16, 0xEE));  // blocks were written
+  EXPECT_EQ(glGetError(), GLenum{GL_NO_ERROR});
+}
+
+// Mesa 25.0.7 (OSMesa, llvmpipe) stores GL_COMPRESSED_RGB and GL_COMPRESSED_RGBA as DXT1 and
+// DXT5 on every target but 1-D, also from the framebuffer, for proxies and with a border.
+TEST_F(TexImageTest, S3tcGenericFormatsAreDxt1AndDxt5) {
+  std::vector<GLubyte> image(13 * 7 * 4);
+  for (size_t i = 0; i < image.size(); ++i) image[i] = GLubyte(i * 37);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_COMPRESSED_RGB, 13, 7, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+               image.data());
+  EXPECT_EQ(level_parameter(GL_TEXTURE_INTERNAL_FORMAT), GLint(kDxt1Rgb));
+  EXPECT_EQ(level_parameter(GL_TEXTURE_COMPRESSED), 1);
+  EXPECT_EQ(level_parameter(GL_TEXTURE_COMPRESSED_IMAGE_SIZE), 64);
+  EXPECT_EQ(level_parameter(GL_TEXTURE_RED_SIZE), 4);
+  // The texels are the encoder's: the same as the image compressed as DXT1 explicitly.
+  std::vector<GLubyte> generic(image.size()), explicit_dxt1(image.size());
+  glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, generic.data());
+  glTexImage2D(GL_TEXTURE_2D, 0, GLint(kDxt1Rgb), 13, 7, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+               image.data());
+  glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, explicit_dxt1.data());
+  EXPECT_EQ(generic, explicit_dxt1);
+  EXPECT_NE(generic, image);  // lossy
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_COMPRESSED_RGBA, 6, 5, 1, GL_RGBA, GL_UNSIGNED_BYTE,
+               image.data());
+  EXPECT_EQ(level_parameter(GL_TEXTURE_INTERNAL_FORMAT), GLint(kDxt5));
+  EXPECT_EQ(level_parameter(GL_TEXTURE_COMPRESSED_IMAGE_SIZE), 16);  // the 4x3 inside
+  glTexImage2D(GL_PROXY_TEXTURE_2D, 0, GL_COMPRESSED_RGBA, 8, 8, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+               nullptr);
+  EXPECT_EQ(level_parameter(GL_TEXTURE_INTERNAL_FORMAT, 0, GL_PROXY_TEXTURE_2D), GLint(kDxt5));
+  glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_COMPRESSED_RGBA, 0, 0, 8, 8, 0);
+  EXPECT_EQ(level_parameter(GL_TEXTURE_INTERNAL_FORMAT), GLint(kDxt5));
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 1, 1, 2, 2, GL_RGBA, GL_UNSIGNED_BYTE, image.data());
+  EXPECT_EQ(glGetError(), GLenum{GL_INVALID_OPERATION});  // not on block edges, as Mesa
+  glBindTexture(GL_TEXTURE_RECTANGLE_ARB, 1);
+  glTexImage2D(GL_TEXTURE_RECTANGLE_ARB, 0, GL_COMPRESSED_RGBA, 8, 8, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+               image.data());
+  EXPECT_EQ(level_parameter(GL_TEXTURE_INTERNAL_FORMAT, 0, GL_TEXTURE_RECTANGLE_ARB), GLint(kDxt5));
+  glBindTexture(GL_TEXTURE_1D, 2);
+  glTexImage1D(GL_TEXTURE_1D, 0, GL_COMPRESSED_RGBA, 8, 0, GL_RGBA, GL_UNSIGNED_BYTE, image.data());
+  EXPECT_EQ(level_parameter(GL_TEXTURE_INTERNAL_FORMAT, 0, GL_TEXTURE_1D), GL_RGBA);
+  EXPECT_EQ(level_parameter(GL_TEXTURE_COMPRESSED, 0, GL_TEXTURE_1D), 0);
   EXPECT_EQ(glGetError(), GLenum{GL_NO_ERROR});
 }
 

@@ -468,3 +468,95 @@ GLPT_SCENE(texture_s3tc_errors, 96, 96) {
 }
 
 }  // namespace
+
+namespace {
+
+// ARB_texture_compression's generic formats as Mesa stores them: GL_COMPRESSED_RGB and
+// GL_COMPRESSED_RGBA become DXT1 and DXT5 (the texels its encoder leaves, which differ from the
+// data) on 2-D, cube-map and rectangle images and from glCopyTexImage2D, and stay uncompressed on
+// 1-D images; GL_COMPRESSED_ALPHA and GL_COMPRESSED_INTENSITY stay uncompressed. torcs uploads
+// its track map as GL_COMPRESSED_RGBA from signed bytes. Each image is drawn with 2 pixels per
+// texel (nearest); the answers of GL_TEXTURE_INTERNAL_FORMAT / GL_TEXTURE_COMPRESSED /
+// GL_TEXTURE_COMPRESSED_IMAGE_SIZE show as the colours of the squares along the top, and the
+// state dump compares the textures left bound on units 1 and 2.
+GLPT_SCENE(texture_generic_compressed_formats, 160, 128) {
+  clear(0.1f, 0.1f, 0.2f);
+  ortho_pixels(160, 128);
+  backdrop(160, 128);
+  const std::vector<uint8_t> image =
+      gradient(24, 24, Rgba8{250, 30, 30, 255}, Rgba8{30, 250, 60, 40}, Rgba8{40, 60, 250, 200},
+               Rgba8{250, 250, 250, 0}, 5);
+  // Signed bytes: the gradient at half range, its alpha negative (0) in one corner.
+  std::vector<int8_t> half(image.size());
+  for (size_t i = 0; i < image.size(); ++i) half[i] = static_cast<int8_t>(image[i] / 2);
+  half[3] = -100;
+  int square = 0;
+  const auto show = [&square](float r, float g, float b) {
+    glDisable(GL_TEXTURE_2D);
+    glDisable(GL_BLEND);
+    glColor3f(r, g, b);
+    const float x = 2 + static_cast<float>(square) * 8;
+    quad(x, 118, x + 6, 124);
+    ++square;
+  };
+  const auto query = [&show](GLenum target) {
+    GLint format = 0, compressed = 0, size = 0;
+    glGetTexLevelParameteriv(target, 0, GL_TEXTURE_INTERNAL_FORMAT, &format);
+    glGetTexLevelParameteriv(target, 0, GL_TEXTURE_COMPRESSED, &compressed);
+    if (compressed != 0)
+      glGetTexLevelParameteriv(target, 0, GL_TEXTURE_COMPRESSED_IMAGE_SIZE, &size);
+    show(format == GL_COMPRESSED_RGB_S3TC_DXT1_EXT    ? 1.0f
+         : format == GL_COMPRESSED_RGBA_S3TC_DXT5_EXT ? 0.5f
+                                                      : static_cast<float>(format & 0xFF) / 255.0f,
+         static_cast<float>(compressed), static_cast<float>(size) / 1024.0f);
+    if (glGetError() != GL_NO_ERROR) show(1, 1, 1);
+  };
+  // Copied from the backdrop first: GL_COMPRESSED_RGBA from the framebuffer (unit 2, for the
+  // state dump).
+  glActiveTexture(GL_TEXTURE2);
+  const GLuint copied = new_texture(GL_TEXTURE_2D, GL_NEAREST, GL_NEAREST);
+  glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_COMPRESSED_RGBA, 10, 20, 24, 24, 0);
+  query(GL_TEXTURE_2D);
+  glActiveTexture(GL_TEXTURE0);
+  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+  const auto draw = [](float x, float y) {
+    glEnable(GL_TEXTURE_2D);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    textured_quad(x, y, x + 48, y + 48, 0, 0, 1, 1);
+  };
+  const GLenum generic[] = {GL_COMPRESSED_RGB, GL_COMPRESSED_RGBA, GL_COMPRESSED_ALPHA,
+                            GL_COMPRESSED_INTENSITY};
+  for (int i = 0; i < 4; ++i) {
+    new_texture(GL_TEXTURE_2D, GL_NEAREST, GL_NEAREST);
+    glTexImage2D(GL_TEXTURE_2D, 0, static_cast<GLint>(generic[i]), 24, 24, 0, GL_RGBA,
+                 GL_UNSIGNED_BYTE, image.data());
+    query(GL_TEXTURE_2D);
+    draw(2 + static_cast<float>(i % 3) * 52, 2 + static_cast<float>(i / 3) * 52);
+  }
+  // torcs's way: signed bytes into GL_COMPRESSED_RGBA, with the compression hint at its nicest.
+  glHint(GL_TEXTURE_COMPRESSION_HINT, GL_NICEST);
+  glActiveTexture(GL_TEXTURE1);
+  new_texture(GL_TEXTURE_2D, GL_NEAREST, GL_NEAREST);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_COMPRESSED_RGBA, 24, 24, 0, GL_RGBA, GL_BYTE, half.data());
+  query(GL_TEXTURE_2D);
+  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+  draw(54, 54);
+  glDisable(GL_TEXTURE_2D);
+  glActiveTexture(GL_TEXTURE0);
+  // A cube-map face and a 1-D image (uncompressed), both queried; the copy drawn last.
+  new_texture(GL_TEXTURE_CUBE_MAP, GL_NEAREST, GL_NEAREST);
+  glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X, 0, GL_COMPRESSED_RGB, 24, 24, 0, GL_RGBA,
+               GL_UNSIGNED_BYTE, image.data());
+  query(GL_TEXTURE_CUBE_MAP_POSITIVE_X);
+  new_texture(GL_TEXTURE_1D, GL_NEAREST, GL_NEAREST);
+  glTexImage1D(GL_TEXTURE_1D, 0, GL_COMPRESSED_RGBA, 24, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+               image.data());
+  query(GL_TEXTURE_1D);
+  glBindTexture(GL_TEXTURE_2D, copied);
+  draw(106, 54);
+  glDisable(GL_TEXTURE_2D);
+  glDisable(GL_BLEND);
+}
+
+}  // namespace
