@@ -135,10 +135,11 @@ uint unit_alpha_operands(uint u) {
 // so with an even drawable height its quad holds the same four pixels as Vulkan's, numbered
 // from GL's upper row: its v[0], v[1], v[2] are Vulkan's quad pixels 2, 3 and 0. (With an odd
 // height Mesa's quads straddle two of Vulkan's; the nearest match is Vulkan's own numbering.)
+// A draw rasterized in Mesa's orientation (GLPT_FS_MESA_ORIENTED) has Mesa's quads as they are.
 void quad_derivatives(vec3 c, out vec3 ddx, out vec3 ddy) {
   vec3 q0 = subgroupQuadBroadcast(c, 0u), q1 = subgroupQuadBroadcast(c, 1u);
   vec3 q2 = subgroupQuadBroadcast(c, 2u), q3 = subgroupQuadBroadcast(c, 3u);
-  if ((S.drawable.y & 1u) == 0u) {
+  if ((kFlags & GLPT_FS_MESA_ORIENTED) == 0u && (S.drawable.y & 1u) == 0u) {
     ddx = q3 - q2;
     ddy = q0 - q2;
   } else {
@@ -461,7 +462,8 @@ vec4 anisotropic_2d(uint u, vec2 c) {
   ivec2 size = max(ivec2(base) >> level, ivec2(1));
   // Mesa's derivatives: ddx along its quad's rows (Vulkan's, dFdxFine), ddy its lower row minus
   // its upper one. With an even drawable height Mesa's upper row is Vulkan's lower one.
-  float ddy_sign = (S.drawable.y & 1u) == 0u ? -1.0 : 1.0;
+  float ddy_sign =
+      (kFlags & GLPT_FS_MESA_ORIENTED) == 0u && (S.drawable.y & 1u) == 0u ? -1.0 : 1.0;
   vec2 ddx = dFdxFine(c), ddy = dFdyFine(c) * ddy_sign;
   precise float rho_x = max(abs(ddx.x), abs(ddx.y)) * float(size.x);
   precise float rho_y = max(abs(ddy.x), abs(ddy.y)) * float(size.y);

@@ -19,6 +19,13 @@ inline bool finite(const glm::vec4& v) {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && std::isfinite(v.w);
 }
 
+// The front and back colour buffers (and the upside-down copy of mesa_orientation.cpp): how
+// they are made and what the single-target render pass's framebuffers declare (all must agree).
+inline constexpr VkImageUsageFlags kColorUsage =
+    VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT |
+    VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
+    VK_IMAGE_USAGE_STORAGE_BIT;
+
 // The colour buffers are BGRA8 (kColorFormat); the front end speaks RGBA8.
 inline void swap_red_and_blue(uint8_t* pixels, size_t count) {
   for (size_t i = 0; i < count; ++i) std::swap(pixels[4 * i], pixels[4 * i + 2]);
@@ -168,6 +175,9 @@ struct RasterRenderer::Recording {
   bool rendering = false;
   bool in_render_pass = false;  // rendering in RasterPipelines::render_pass (else dynamic)
   ColorTargets targets = ColorTargets::kBack;
+  // The colour buffer whose pixels are in RasterRenderer::mesa_image_ upside down, where draws
+  // rasterized in Mesa's orientation go (kNone: none; mesa_orientation.cpp).
+  ColorTargets mesa_target = ColorTargets::kNone;
   VkPipeline bound_pipeline = VK_NULL_HANDLE;
   // Texture descriptors of the bound set, per binding (to skip redundant binds).
   std::array<VkImageView, 4 * GLPT_RASTER_MAX_UNITS> bound_views{};

@@ -63,12 +63,8 @@ bool in_vertex_order(const rec::VertexData& v, const std::vector<rec::Decomposed
   return true;
 }
 
-// The front and back colour buffers and the depth-stencil buffer: how they are made and what
-// the single-target render pass's framebuffers declare (the two must agree).
-constexpr VkImageUsageFlags kColorUsage =
-    VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT |
-    VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
-    VK_IMAGE_USAGE_STORAGE_BIT;
+// The depth-stencil buffer: how it is made and what the single-target render pass's
+// framebuffers declare (the two must agree; kColorUsage likewise).
 constexpr VkImageUsageFlags kDepthStencilUsage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT |
                                                  VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
                                                  VK_IMAGE_USAGE_TRANSFER_DST_BIT;
@@ -431,6 +427,13 @@ void RasterRenderer::execute(const rec::FrameRecord& record, DrawableBuffers& bu
   // accumulation buffer, query results, read-back pixels): the renderer waits at the frame's end.
   // After a swap exchanged the colour images, the back takes the front's pixels first unless
   // the record starts by clearing all of it (most frames: glClear, then draws).
+  // The upside-down copy of a colour buffer (mesa_orientation.cpp) is made in the submission
+  // that needs it; one of another drawable's size goes first, once what may use it completed.
+  if (mesa_image_ && (mesa_image_.info().extent.width != buffers_->config.width ||
+                      mesa_image_.info().extent.height != buffers_->config.height)) {
+    device_->wait_all();
+    mesa_image_ = GpuImage();
+  }
   const bool restore_back_first =
       buffers_->back_is_front && !begins_with_whole_back_clear(record, *commands);
   if (!restore_back_first) buffers_->back_is_front = false;  // the first clear replaces it
@@ -441,6 +444,7 @@ void RasterRenderer::execute(const rec::FrameRecord& record, DrawableBuffers& bu
       if (position == 0 && restore_back_first) record_restore_back(cmd);
       r.cmd = cmd;
       r.rendering = false;
+      r.mesa_target = ColorTargets::kNone;
       r.bound_pipeline = VK_NULL_HANDLE;
       r.descriptors_pushed = false;
       r.written_sets.clear();  // an earlier submission's sets may be reused by now
@@ -469,6 +473,9 @@ void RasterRenderer::execute(const rec::FrameRecord& record, DrawableBuffers& bu
         const rec::Command& command = record.commands[i];
         r.counting = queries_.query_of(i);
         if (r.counting == 0) queries_.stop(cmd);  // nothing else counts (clears in particular)
+        // Only draws go to a colour buffer upside down (record_draw_pass decides each).
+        if (!std::holds_alternative<rec::Draw>(command))
+          use_mesa_orientation(r, ColorTargets::kNone);
         if (const auto* clear = std::get_if<rec::Clear>(&command)) {
           record_clear(r, *clear, r.clear_state[i]);
         } else if (const auto* draw = std::get_if<rec::Draw>(&command)) {
@@ -484,6 +491,7 @@ void RasterRenderer::execute(const rec::FrameRecord& record, DrawableBuffers& bu
           record_pixels(r, i);
         }
       }
+      use_mesa_orientation(r, ColorTargets::kNone);
       end_rendering(r);
       if (end && position == commands->size()) record_frame_end(cmd, *end);
     });
@@ -640,7 +648,7 @@ void RasterRenderer::begin_rendering(Recording& r, ColorTargets targets, Renderi
     // A draw blending in the shader: the render pass whose colour attachment the fragment shader
     // reads (RasterPipelines::render_pass; only keys with framebuffer_ops, one colour target).
     const std::array<VkImageView, 2> views{
-        targets == ColorTargets::kFront ? buffers_->front.view() : buffers_->back.view(),
+        color_view(r, targets == ColorTargets::kFront ? ColorTargets::kFront : ColorTargets::kBack),
         buffers_->depth_stencil.view()};
     auto attachments = make_info<VkRenderPassAttachmentBeginInfo>(
         VK_STRUCTURE_TYPE_RENDER_PASS_ATTACHMENT_BEGIN_INFO);
@@ -669,9 +677,9 @@ void RasterRenderer::begin_rendering(Recording& r, ColorTargets targets, Renderi
     a.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
   };
   if (targets == ColorTargets::kFront || targets == ColorTargets::kFrontAndBack)
-    add_color(buffers_->front.view());
+    add_color(color_view(r, ColorTargets::kFront));
   if (targets == ColorTargets::kBack || targets == ColorTargets::kFrontAndBack)
-    add_color(buffers_->back.view());
+    add_color(color_view(r, ColorTargets::kBack));
   if (targets == ColorTargets::kGBuffer)
     for (VkImageView view : r.gbuffer->views) add_color(view);
   auto depth = make_info<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
@@ -746,9 +754,11 @@ void RasterRenderer::bind(Recording& r, const PipelineKey& key,
   }
   // The colour buffer a fragment shader that blends reads: the render pass's target (any colour
   // buffer elsewhere: no pipeline outside the render pass reads it).
-  const VkImageView framebuffer = !pipelines_.blends_in_shader()      ? VK_NULL_HANDLE
-                                  : r.targets == ColorTargets::kFront ? buffers_->front.view()
-                                                                      : buffers_->back.view();
+  const VkImageView framebuffer =
+      !pipelines_.blends_in_shader()
+          ? VK_NULL_HANDLE
+          : color_view(
+                r, r.targets == ColorTargets::kFront ? ColorTargets::kFront : ColorTargets::kBack);
   if (r.descriptors_pushed && views == r.bound_views && samplers == r.bound_samplers &&
       framebuffer == r.bound_framebuffer)
     return;
@@ -828,6 +838,27 @@ void RasterRenderer::set_dynamic_state(Recording& r, const DynamicDrawState& d,
                                        const VkViewport& viewport, const VkRect2D& scissor) {
   // Only what changed since the last draw of this command buffer: lavapipe turns dynamic state
   // changes into new gallium state objects, which cost more than the draw of a small primitive.
+  if (r.mesa_target != ColorTargets::kNone) {
+    // Upside down (mesa_orientation.cpp): the viewport and scissor mirrored, and the winding
+    // that faces the viewer with them.
+    const float height = static_cast<float>(buffers_->config.height);
+    VkViewport flipped = viewport;
+    flipped.y = height - viewport.y;
+    flipped.height = -viewport.height;
+    VkRect2D mirrored = scissor;
+    mirrored.offset.y = static_cast<int32_t>(buffers_->config.height) -
+                        (scissor.offset.y + static_cast<int32_t>(scissor.extent.height));
+    DynamicDrawState turned = d;
+    turned.front_face = d.front_face == VK_FRONT_FACE_CLOCKWISE ? VK_FRONT_FACE_COUNTER_CLOCKWISE
+                                                                : VK_FRONT_FACE_CLOCKWISE;
+    return set_oriented_dynamic_state(r, turned, flipped, mirrored);
+  }
+  set_oriented_dynamic_state(r, d, viewport, scissor);
+}
+
+void RasterRenderer::set_oriented_dynamic_state(Recording& r, const DynamicDrawState& d,
+                                                const VkViewport& viewport,
+                                                const VkRect2D& scissor) {
   VkCommandBuffer cmd = r.cmd;
   const bool all = !r.dynamic_valid;
   const DynamicDrawState& o = r.dynamic;
@@ -1078,6 +1109,14 @@ void RasterRenderer::record_draw_pass(Recording& r, const rec::Draw& draw, const
   if (t.viewport[2] <= 0 || t.viewport[3] <= 0) return;  // GL draws nothing in an empty viewport
   const VkRect2D scissor = scissor_of(state.raster->ops, buffers_->config);
   if (scissor.extent.width == 0 || scissor.extent.height == 0) return;
+  DynamicDrawState d = setup.dynamic;
+  if (buffers_->config.depth_bits == 0) d.depth_test = d.depth_write = false;
+  // Rasterized upside down where the anisotropic filter needs Mesa's interpolation to the bit
+  // (mesa_orientation.cpp); every other draw ends such a run.
+  const bool mesa_oriented =
+      !to_gbuffer && draws_in_mesa_orientation(setup.key, d, context.targets);
+  use_mesa_orientation(r, mesa_oriented ? context.targets : ColorTargets::kNone);
+  if (mesa_oriented) setup.key.constants[GLPT_SC_FS_FLAGS] |= GLPT_FS_MESA_ORIENTED;
   // Blending and logic ops in the fragment shader where it can read the colour buffer (one
   // colour target, not pixel rectangles) while the blend state is new (shader_blends()).
   setup.key.framebuffer_ops = pipelines_.blends_in_shader() && !to_gbuffer &&
@@ -1087,8 +1126,6 @@ void RasterRenderer::record_draw_pass(Recording& r, const rec::Draw& draw, const
   begin_rendering(r, context.targets,
                   setup.key.framebuffer_ops ? RenderingKind::kRenderPass : RenderingKind::kDynamic);
   bind(r, setup.key, &state);
-  DynamicDrawState d = setup.dynamic;
-  if (buffers_->config.depth_bits == 0) d.depth_test = d.depth_write = false;
   const VkViewport viewport{static_cast<float>(t.viewport[0]),
                             static_cast<float>(t.viewport[1]),
                             static_cast<float>(t.viewport[2]),

@@ -114,9 +114,25 @@ class RasterRenderer {
                        RenderingKind kind = RenderingKind::kDynamic);
   void end_rendering(Recording& r);  // ends the rendering instance (and counting in it)
   void bind(Recording& r, const PipelineKey& key, const rec::StateSnapshot* textures_of);
+  // In GL's orientation, or mirrored for a draw in Mesa's (mesa_orientation.cpp).
   void set_dynamic_state(Recording& r, const DynamicDrawState& d, const VkViewport& viewport,
                          const VkRect2D& scissor);
+  void set_oriented_dynamic_state(Recording& r, const DynamicDrawState& d,
+                                  const VkViewport& viewport, const VkRect2D& scissor);
   void record_frame_end(VkCommandBuffer cmd, const FrameEnd& end);
+
+  // ---- draws rasterized in Mesa's orientation (mesa_orientation.cpp) ----
+  // Whether a draw of this setup is rasterized upside down, as Mesa renders window-system
+  // buffers, so that its interpolated values (and the anisotropic filter's choices made from
+  // their last bits) are Mesa's.
+  bool draws_in_mesa_orientation(const PipelineKey& key, const DynamicDrawState& d,
+                                 ColorTargets targets) const;
+  // Makes `target` (a colour buffer, or kNone for none) the one draws go to upside down:
+  // copies the buffer in use so far back, and `target` into mesa_image_, rows reversed.
+  void use_mesa_orientation(Recording& r, ColorTargets target);
+  // The view a draw into colour buffer `target` renders to (mesa_image_ for
+  // Recording::mesa_target).
+  VkImageView color_view(const Recording& r, ColorTargets target) const;
   // DrawableBuffers::back_is_front: records the copy of the front into the back (and clears the
   // flag); restore_back() submits it now, before a read or partial write of the back.
   void record_restore_back(VkCommandBuffer cmd);
@@ -221,6 +237,9 @@ class RasterRenderer {
   std::vector<uint8_t> upload_;
   std::vector<uint32_t> indices_;
   std::vector<uint8_t> edge_masks_;
+  // A colour buffer upside down while draws rasterized in Mesa's orientation go to it (the
+  // drawable's size; made on first use).
+  GpuImage mesa_image_;
   GpuBuffer pixels_;                   // images of this record's pixel rectangles (32-bit words)
   std::vector<uint32_t> pixel_words_;  // scratch: what goes to pixels_
   OcclusionQueries queries_{*device_};
