@@ -54,6 +54,9 @@ struct FrameStats {
   uint32_t resident_draws = 0;
   uint32_t pipelines_created = 0;  // raster pipelines compiled for this record (0 once warm)
   uint32_t inexpressible = 0;      // commands drawn approximately (state raster cannot express)
+  // Runs of draws rasterized upside down as Mesa renders them (raster/mesa_orientation.cpp):
+  // each costs two copies of a colour buffer.
+  uint32_t upside_down_runs = 0;
   // Times the host waited for the device: 1 per frame (at its end) unless something had to be
   // read back in between (glAccum, occlusion queries) or a resource to be replaced.
   uint32_t host_waits = 0;
@@ -94,6 +97,7 @@ struct FrameStats {
     merged_draws += s.merged_draws;
     pipelines_created += s.pipelines_created;
     inexpressible += s.inexpressible;
+    upside_down_runs += s.upside_down_runs;
     host_waits += s.host_waits;
     return *this;
   }

@@ -265,7 +265,7 @@ bool FrameOutput::end_frame(const rec::FrameRecord& record, const rec::DrawableC
         " size=%ux%u frame_ms=%.2f capture_ms=%.2f upload_ms=%.2f raster_ms=%.2f "
         "blas_ms=%.2f tlas_ms=%.2f trace_ms=%.2f readback_ms=%.2f present_ms=%.2f "
         "total_ms=%.2f draws=%u merged_draws=%u resident_draws=%u pipelines_created=%u "
-        "inexpressible=%u "
+        "inexpressible=%u upside_down_runs=%u "
         "triangles=%" PRIu64 " rays=%" PRIu64
         " mrays_per_s=%.3f blas_builds=%u blas_refits=%u blas_reused=%u spp=%u non_finite=%" PRIu64
         " non_finite_prims=%" PRIu64
@@ -279,8 +279,8 @@ bool FrameOutput::end_frame(const rec::FrameRecord& record, const rec::DrawableC
         record_ms_ + s.upload_ms + s.raster_ms + s.blas_ms + s.tlas_ms + s.trace_ms + s.denoise_ms +
             s.composite_ms + s.readback_ms + present_ms,
         s.draws, s.merged_draws, s.resident_draws, s.pipelines_created, s.inexpressible,
-        s.triangles, s.rays, trace_s > 0 ? s.rays / trace_s / 1e6 : 0.0, s.blas_builds,
-        s.blas_refits, s.blas_reused, s.accumulated_samples, s.non_finite_samples,
+        s.upside_down_runs, s.triangles, s.rays, trace_s > 0 ? s.rays / trace_s / 1e6 : 0.0,
+        s.blas_builds, s.blas_refits, s.blas_reused, s.accumulated_samples, s.non_finite_samples,
         s.non_finite_primitives, s.non_finite_draws, s.emitters, s.host_waits,
         wall_timer.elapsed_ms(), s.traced_draws, s.sky_draws, s.raster_draws, s.instances,
         s.tlas_builds, s.tlas_updates, s.upload_bytes, s.classify_ms, s.denoise_ms, s.composite_ms,

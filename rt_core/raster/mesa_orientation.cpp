@@ -91,6 +91,7 @@ void RasterRenderer::use_mesa_orientation(Recording& r, ColorTargets target) {
   // The viewport, scissor and front face are set again, flipped or not.
   r.dynamic_valid = false;
   if (target == ColorTargets::kNone) return;
+  ++r.stats->upside_down_runs;
   // (execute() drops one of another size before it records: nothing may wait here.)
   if (!mesa_image_) {
     GpuImageInfo info;
