@@ -836,8 +836,6 @@ void RasterRenderer::bind(Recording& r, const PipelineKey& key,
 
 void RasterRenderer::set_dynamic_state(Recording& r, const DynamicDrawState& d,
                                        const VkViewport& viewport, const VkRect2D& scissor) {
-  // Only what changed since the last draw of this command buffer: lavapipe turns dynamic state
-  // changes into new gallium state objects, which cost more than the draw of a small primitive.
   if (r.mesa_target != ColorTargets::kNone) {
     // Upside down (mesa_orientation.cpp): the viewport and scissor mirrored, and the winding
     // that faces the viewer with them.
@@ -859,6 +857,8 @@ void RasterRenderer::set_dynamic_state(Recording& r, const DynamicDrawState& d,
 void RasterRenderer::set_oriented_dynamic_state(Recording& r, const DynamicDrawState& d,
                                                 const VkViewport& viewport,
                                                 const VkRect2D& scissor) {
+  // Only what changed since the last draw of this command buffer: lavapipe turns dynamic state
+  // changes into new gallium state objects, which cost more than the draw of a small primitive.
   VkCommandBuffer cmd = r.cmd;
   const bool all = !r.dynamic_valid;
   const DynamicDrawState& o = r.dynamic;
