@@ -149,8 +149,8 @@ using mat4 = glm::mat4;
 #define GLPT_FS_POLYGON_STIPPLE 4u
 #define GLPT_FS_CLEAR 8u               // the clear pipeline: output the clear colour only
 #define GLPT_FS_SPRITE_LOWER_LEFT 16u  // GL_POINT_SPRITE_COORD_ORIGIN GL_LOWER_LEFT: t = 0 below
-// Rasterized upside down, as Mesa renders window-system buffers (rt_core/raster/mesa_orientation.cpp):
-// Vulkan's quads are Mesa's, their derivatives taken as they come
+// Rasterized upside down, as Mesa renders window-system buffers
+// (rt_core/raster/mesa_orientation.cpp): Vulkan's quads are Mesa's, derivatives as they come
 #define GLPT_FS_MESA_ORIENTED 32u
 // bits 8-10: alpha test function (0 off, else GL_NEVER + n - 0x200 + 1); bits 12-13: fog mode
 // (0 off, 1 linear, 2 exp, 3 exp2)

@@ -76,10 +76,13 @@ void copy_rows_reversed(VkCommandBuffer cmd, const GpuImage& source, const GpuIm
 }  // namespace
 
 void RasterRenderer::use_mesa_orientation(Recording& r, ColorTargets target) {
-  if (mesa_image_ && (mesa_image_.info().extent.width != buffers_->config.width ||
-                      mesa_image_.info().extent.height != buffers_->config.height))
+  if (r.mesa_target == target) return;  // every draw asks: most change nothing
+  if (target != ColorTargets::kNone && mesa_image_ &&
+      (mesa_image_.info().extent.width != buffers_->config.width ||
+       mesa_image_.info().extent.height != buffers_->config.height)) {
     target = ColorTargets::kNone;  // cannot happen (execute() sized it): drawn upright
-  if (r.mesa_target == target) return;
+    if (r.mesa_target == target) return;
+  }
   end_rendering(r);
   const uint32_t width = buffers_->config.width, height = buffers_->config.height;
   const auto buffer = [&](ColorTargets t) -> const GpuImage& {
