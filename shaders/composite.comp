@@ -1,8 +1,9 @@
 #version 460
 // Composite pass of path-traced mode: the radiance channels of the trace pass (and of the
 // denoiser, when it ran) become GL's colour buffer. Per pixel this frame covered:
-//   colour = fog(albedo * (direct + indirect) + specular + emission)
-// with the albedo and emission from the G-buffer and GL's fog of the pixel's draw; unlit pixels
+//   colour = fog(albedo * (direct + indirect) + specular reflectance * specular + emission)
+// (the channels hold light per unit of reflectance, trace/gbuffer_material.h) with the
+// reflectances and emission from the G-buffer and GL's fog of the pixel's draw; unlit pixels
 // show the G-buffer's colour (times their ambient visibility under GLPT_UNLIT=ao). The colours
 // of all frames accumulated so far are averaged; samples that did not cover the pixel (its edge,
 // under sub-pixel jitter) show what the colour buffer holds there (the clears and raster draws
@@ -88,7 +89,9 @@ vec4 composite(ivec2 pixel, uvec4 surface, vec3 light[GLPT_CHANNELS]) {
   }
   GBufferMaterial m = gbuffer_material(surface, m0, imageLoad(gbuffer_material1, pixel));
   vec3 diffuse_light = light[GLPT_CHANNEL_DIRECT_DIFFUSE] + light[GLPT_CHANNEL_INDIRECT_DIFFUSE];
-  vec3 radiance = gbuffer_albedo(m) * diffuse_light + light[GLPT_CHANNEL_SPECULAR] + m.emission;
+  Bsdf bsdf = material_bsdf(m.diffuse.rgb, m.specular, m.shininess);
+  vec3 radiance = diffuse_channel_factor(bsdf.diffuse, m.diffuse.rgb, m.ambient) * diffuse_light +
+                  bsdf.specular * light[GLPT_CHANNEL_SPECULAR] + m.emission;
   float fog_coordinate = imageLoad(gbuffer_position, pixel).w;
   return vec4(apply_fog(surface.x - 1u, fog_coordinate, radiance), m.diffuse.a);
 }

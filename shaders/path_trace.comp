@@ -99,11 +99,14 @@ uint g_rays = 0u;
 
 bool has_option(uint option) { return (frame.options.x & option) != 0u; }
 
-// What one path contributes to the three channels (the diffuse ones not yet divided by albedo).
+// What one path contributes to the three channels, per unit of the primary vertex's reflectance
+// (trace_path; lighting_gl: radiance), and GL's ambient term at the primary vertex apart: that
+// is radiance as it is, with a reflectance of its own (GL's ambient colour).
 struct Channels {
   vec3 direct;
   vec3 indirect;
   vec3 specular;
+  vec3 ambient;
 };
 
 // Adds `value` to the channel of the primary vertex's lobe: diffuse light found directly goes to
@@ -125,6 +128,7 @@ void add_to_channel(inout Channels c, uint lobe, bool direct, vec3 value) {
 Channels lighting_gl(Surface s) {
   Channels c;
   c.direct = vec3(0.0);
+  c.indirect = vec3(0.0);
   c.specular = vec3(0.0);
   vec3 ambient_light = states[s.state].global_ambient.rgb;
   bool local_viewer = (states[s.state].info.w & GLPT_STATE_LOCAL_VIEWER) != 0u;
@@ -150,7 +154,7 @@ Channels lighting_gl(Surface s) {
     c.specular += attenuation * power_gl(dot(s.normal, h), s.shininess) * s.specular_gl *
                   light.specular.rgb;
   }
-  c.indirect = s.ambient * ambient_light;
+  c.ambient = s.ambient * ambient_light;
   return c;
 }
 
@@ -271,14 +275,38 @@ bool blocked(Surface s, OcclusionRay ray) {
   return t < uintBitsToFloat(instances[instance].materials.w);
 }
 
-// The radiance of the path starting at the G-buffer surface `first` towards the viewer, by
-// channel. An unlit `first` (GLPT_UNLIT=ao) traces its ambient-occlusion ray only:
-// indirect.r is its visibility.
+// The primary vertex's lobes with unit reflectance: the channels then hold light per unit of
+// reflectance whatever the texel's albedo (gbuffer_material.h), and the composite pass multiplies
+// the reflectance back. A bounce still picks the specular lobe about as often as the material's
+// own reflectances say (the probability is the unit lobes' ratio, so MIS and the bounce weights
+// follow), within [0.05, 0.95] so that neither channel goes unsampled where one reflectance is
+// ~0 (black lettering), and half the time where both are. `specular_material`: the draw's
+// material reflects specularly somewhere (the texel may not). `specular_scale` turns the
+// specular lobe's results into light per unit of reflectance.
+Bsdf unit_reflectance_bsdf(Bsdf material, bool specular_material, out float specular_scale) {
+  Bsdf unit = material;
+  unit.diffuse = vec3(1.0);
+  unit.specular = vec3(0.0);
+  specular_scale = 0.0;
+  if (max3(material.specular) > 0.0 || specular_material) {
+    float d = luminance(material.diffuse), s = luminance(material.specular);
+    float p = d + s > 1.0e-4 ? clamp(s / (d + s), 0.05, 0.95) : 0.5;
+    unit.specular = vec3(p / (1.0 - p));
+    specular_scale = (1.0 - p) / p;
+  }
+  return unit;
+}
+
+// The light of the path starting at the G-buffer surface `first` towards the viewer, by
+// channel, per unit of the primary vertex's reflectance. An unlit `first` (GLPT_UNLIT=ao) traces
+// its ambient-occlusion ray only: ambient.r is its visibility.
 Channels trace_path(Surface first, inout uint rng) {
   Channels c;
   c.direct = vec3(0.0);
   c.indirect = vec3(0.0);
   c.specular = vec3(0.0);
+  c.ambient = vec3(0.0);
+  float specular_scale = 1.0;
   Surface s = first;
   vec3 to_viewer = towards_viewer(s.state, s.position);
   vec3 throughput = vec3(1.0);
@@ -302,6 +330,9 @@ Channels trace_path(Surface first, inout uint rng) {
       if (emitter_only) break;
     }
     Bsdf bsdf = material_bsdf(s.diffuse_gl, s.specular_gl, s.shininess);
+    if (depth == 0u && first.lit)
+      bsdf = unit_reflectance_bsdf(
+          bsdf, (states[s.state].info.w & GLPT_STATE_SPECULAR_MATERIAL) != 0u, specular_scale);
     // Seen from below its shading normal (a normal facing away from the viewer, or leaning
     // away near a silhouette) a surface has no specular reflection: the lobe needs v.z > 0.
     if (v.z <= 1.0e-4) bsdf.specular = vec3(0.0);
@@ -316,7 +347,7 @@ Channels trace_path(Surface first, inout uint rng) {
       // world around the scene, which bounces do not trace (docs/light-transport.md).
       vec3 ambient = first.lit ? s.ambient * choice.ambient : vec3(1.0);
       if (!has_option(GLPT_OPTION_AO))
-        c.indirect += ambient;
+        c.ambient += ambient;
       else if (max3(ambient) > 0.0 && ambient_ray(s, rng, ambient, rays[ray_count]))
         ++ray_count;
     }
@@ -334,7 +365,7 @@ Channels trace_path(Surface first, inout uint rng) {
       OcclusionRay ray = rays[r];
       if ((!ray.ambient && !has_option(GLPT_OPTION_SHADOWS)) || !blocked(s, ray)) {
         if (ray.ambient) {
-          c.indirect += ray.diffuse;
+          c.ambient += ray.diffuse;
         } else {
           add_to_channel(c, depth == 0u ? GLPT_LOBE_DIFFUSE : first_lobe, depth == 0u,
                          throughput * ray.diffuse);
@@ -418,6 +449,7 @@ Channels trace_path(Surface first, inout uint rng) {
     }
     to_viewer = -direction;
   }
+  c.specular *= specular_scale;
   return c;
 }
 
@@ -540,9 +572,12 @@ void main() {
     if (surface.x != 0u && samples > 0u && trace) {
       Surface s = load_gbuffer_surface(pixel, surface);
       s.lit = lit;
-      vec3 albedo = lit ? demodulation_albedo(
-                              material_bsdf(s.diffuse_gl, s.specular_gl, s.shininess).diffuse)
-                        : vec3(1.0);
+      // What the composite pass multiplies the channels by (gbuffer_material.h): the diffuse
+      // albedo (1 for unlit pixels, whose AO visibility is the indirect channel) and the
+      // specular reflectance.
+      Bsdf material = material_bsdf(s.diffuse_gl, s.specular_gl, s.shininess);
+      vec3 albedo = lit ? material.diffuse : vec3(1.0);
+      vec3 raw = lit ? raw_diffuse(material.diffuse, s.diffuse_gl, s.ambient) : vec3(1.0);
       // One call site of trace_path (everything in it is inlined where it is called).
       for (uint k = 0u; k < (parity ? 1u : samples); ++k) {
         Channels c;
@@ -554,13 +589,24 @@ void main() {
         }
         // A non-finite sample (a degenerate transform or triangle) would poison the pixel for
         // the rest of the accumulation: it is dropped and counted, not shown as black.
-        if (!finite(c.direct) || !finite(c.indirect) || !finite(c.specular)) {
+        if (!finite(c.direct) || !finite(c.indirect) || !finite(c.specular) ||
+            !finite(c.ambient)) {
           ++dropped;
           continue;
         }
-        sum.direct += c.direct / albedo;
-        sum.indirect += c.indirect / albedo;
-        sum.specular += c.specular;
+        if (parity) {
+          // Radiance: divided by the reflectances the composite multiplies by (GL's specular
+          // reflectance is never ~0 where its specular colour is not: the ratio is bounded).
+          sum.direct += mix(per_unit_reflectance(c.direct, albedo), c.direct, raw);
+          sum.indirect += mix(per_unit_reflectance(c.ambient, albedo), c.ambient, raw);
+          sum.specular += mix(vec3(0.0), c.specular / max(material.specular, vec3(1.0e-30)),
+                              greaterThan(material.specular, vec3(0.0)));
+        } else {
+          sum.direct += mix(c.direct, albedo * c.direct, raw);
+          sum.indirect += mix(c.indirect + per_unit_reflectance(c.ambient, albedo),
+                              albedo * c.indirect + c.ambient, raw);
+          sum.specular += c.specular;
+        }
         traced += 1.0;
       }
     } else if (surface.x != 0u && samples > 0u) {

@@ -273,6 +273,9 @@ struct GpuTraceState {
 #define GLPT_STATE_LOCAL_VIEWER 1u       // GL_LIGHT_MODEL_LOCAL_VIEWER
 #define GLPT_STATE_TWO_SIDE 2u           // GL_LIGHT_MODEL_TWO_SIDE
 #define GLPT_STATE_SEPARATE_SPECULAR 4u  // GL_SEPARATE_SPECULAR_COLOR (specular not textured)
+// The material reflects specularly (a specular colour, front or back, or GL_COLOR_MATERIAL
+// tracking it): the trace pass estimates specular light even where a texel's is ~0
+#define GLPT_STATE_SPECULAR_MATERIAL 8u
 
 // FrameUniforms::options.x: what the trace pass models (render_settings.hpp)
 #define GLPT_OPTION_SHADOWS 1u       // shadow rays (GLPT_SHADOWS)

@@ -82,7 +82,8 @@ gpu::GpuTraceState pack_state(const TraceState& state) {
   const uint32_t count = static_cast<uint32_t>(std::min<size_t>(state.lights.size(), 8));
   const uint32_t flags = (state.local_viewer ? GLPT_STATE_LOCAL_VIEWER : 0u) |
                          (state.two_side ? GLPT_STATE_TWO_SIDE : 0u) |
-                         (state.separate_specular ? GLPT_STATE_SEPARATE_SPECULAR : 0u);
+                         (state.separate_specular ? GLPT_STATE_SEPARATE_SPECULAR : 0u) |
+                         (state.specular_material ? GLPT_STATE_SPECULAR_MATERIAL : 0u);
   packed.info = glm::uvec4(count, state.fog_mode, state.targets, flags);
   for (uint32_t i = 0; i < count; ++i) packed.lights[i / 4][i % 4] = state.lights[i];
   return packed;

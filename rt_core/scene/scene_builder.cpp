@@ -76,6 +76,16 @@ bool same_light_set(const rec::LightingState& a, const rec::LightingState& b) {
   return true;
 }
 
+// Whether a surface of this lighting state can reflect specularly: a specular colour on either
+// face, or GL_COLOR_MATERIAL replacing it with the current colour.
+bool reflects_specularly(const rec::LightingState& lighting) {
+  if (lighting.color_material && lighting.color_material_mode == GL_SPECULAR) return true;
+  for (const rec::Material& material : lighting.material)
+    if (material.specular.r > 0.0f || material.specular.g > 0.0f || material.specular.b > 0.0f)
+      return true;
+  return false;
+}
+
 bool finite(const glm::vec3& v) {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
@@ -571,6 +581,7 @@ void build_trace_scene(const rec::FrameRecord& record, const rec::DrawableConfig
     t.local_viewer = lighting.local_viewer;
     t.two_side = lighting.two_side;
     t.separate_specular = lighting.separate_specular;
+    t.specular_material = reflects_specularly(lighting);
     if (first_lit < 0) first_lit = static_cast<int>(s);
     t.global_ambient = lighting.model_ambient;
     for (int l = 0; l < rec::kMaxLights; ++l) {

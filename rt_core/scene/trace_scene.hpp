@@ -156,6 +156,9 @@ struct TraceState {
   // GL_LIGHT_MODEL_COLOR_CONTROL is GL_SEPARATE_SPECULAR_COLOR: specular is added after
   // texturing (GL_SINGLE_COLOR: the texture environment applies to it too).
   bool separate_specular = false;
+  // Its material reflects specularly: a specular colour on either face, or GL_COLOR_MATERIAL
+  // tracking the specular colour (a texture may still make a texel's specular ~0).
+  bool specular_material = false;
   // What the denoiser needs to find the state's pixels in the previous frame
   // (shaders/svgf_temporal.comp), from the identity of its first traced draw: history_id names
   // the object (a history is only taken from pixels of the same id); 0 for states with no traced

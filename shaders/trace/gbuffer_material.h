@@ -27,16 +27,34 @@ GBufferMaterial gbuffer_material(uvec4 surface, uvec4 m0, uvec4 m1) {
   return m;
 }
 
-// The diffuse channels hold radiance / albedo (so a denoiser blurs lighting, not texture); where
-// a component of the albedo is ~0 its radiance is kept as it is (divided by 1), which the
-// composite pass undoes the same way.
-vec3 demodulation_albedo(vec3 albedo) {
-  return mix(vec3(1.0), albedo, greaterThan(albedo, vec3(1.0e-3)));
+// The diffuse channels hold light per unit of albedo (so a denoiser blurs lighting, not texture),
+// which the composite pass multiplies by the albedo. The trace pass evaluates the primary
+// vertex's lobes with unit reflectance (path_trace.comp), so a texel of ~0 albedo (black
+// lettering) still estimates the light falling on it, as its neighbours' filtering needs: its
+// value is light, not a 0 the denoiser would spread into them. One exception per component:
+// where the albedo is ~0 but the surface still reflects something the diffuse channels carry
+// (GL's ambient term, or GL's diffuse colour that the specular lobe's energy left no room for in
+// the albedo), the channels hold that radiance as it is and the composite multiplies it by 1.
+const float kAlbedoFloor = 1.0e-3;
+
+// 1 per component where the diffuse channels hold radiance as it is, 0 where light per unit of
+// albedo: `albedo` the BSDF's diffuse reflectance, `diffuse_gl` and `ambient` GL's colours.
+vec3 raw_diffuse(vec3 albedo, vec3 diffuse_gl, vec3 ambient) {
+  return vec3(lessThan(albedo, vec3(kAlbedoFloor))) *
+         vec3(greaterThanEqual(max(ambient, diffuse_gl), vec3(kAlbedoFloor)));
 }
 
-// The albedo of a lit G-buffer pixel: its BSDF's diffuse reflectance.
-vec3 gbuffer_albedo(GBufferMaterial m) {
-  return demodulation_albedo(material_bsdf(m.diffuse.rgb, m.specular, m.shininess).diffuse);
+// What the composite pass multiplies the diffuse channels by.
+vec3 diffuse_channel_factor(vec3 albedo, vec3 diffuse_gl, vec3 ambient) {
+  return mix(albedo, vec3(1.0), raw_diffuse(albedo, diffuse_gl, ambient));
+}
+
+// Radiance `value` of a lobe of reflectance `reflectance` per unit of reflectance; 0 where the
+// reflectance is ~0 (the radiance is then at most kAlbedoFloor times the light: dropped, rather
+// than divided into a value the denoiser would spread).
+vec3 per_unit_reflectance(vec3 value, vec3 reflectance) {
+  return mix(vec3(0.0), value / max(reflectance, vec3(kAlbedoFloor)),
+             greaterThanEqual(reflectance, vec3(kAlbedoFloor)));
 }
 
 #endif  // GLPT_SHADERS_TRACE_GBUFFER_MATERIAL_H

@@ -284,6 +284,39 @@ TEST(Reference, SpotAndDirectionalLightsOnAGlossyFloor) {
   expect_same_distribution(lights_and_materials());
 }
 
+// Materials of ~0 albedo, which path_trace.comp traces with unit reflectances at the primary
+// vertex (unit_reflectance_bsdf; the composite multiplies them back): three squares side by side
+// under a point light, GL's ambient under AO and one bounce off a white box - black and shiny
+// (the diffuse lobe still picked 5 % of the time, the specular 95 %), GL's ambient colour alone
+// (the diffuse channels hold that radiance as it is) and shiny white.
+TEST(Reference, MaterialsWithoutAlbedo) {
+  Scene scene = base_scene();
+  scene.trace.bounces = 1;
+  scene.global_ambient = glm::vec3(0.25f);
+  Light light = Light::point({0.0f, 1.5f, -3.5f}, glm::vec3(2.0f));
+  light.specular = glm::vec3(2.0f);
+  scene.lights.push_back(light);
+  Material black_shiny;
+  black_shiny.specular = glm::vec3(0.75f);
+  black_shiny.shininess = 16.0f;
+  Material ambient_only;
+  ambient_only.ambient = glm::vec3(0.5f, 0.25f, 0.75f);
+  Material white_shiny = diffuse(glm::vec3(0.75f));
+  white_shiny.specular = glm::vec3(0.5f);
+  white_shiny.shininess = 8.0f;
+  facing_plane(scene, -5.0f, 1.0f, black_shiny, 2, glm::vec3(-2.0f, 0.0f, 0.0f));
+  facing_plane(scene, -5.0f, 1.0f, ambient_only, 2);
+  facing_plane(scene, -5.0f, 1.0f, white_shiny, 2, glm::vec3(2.0f, 0.0f, 0.0f));
+  Material white = diffuse(glm::vec3(0.75f));
+  const float x0 = -0.5f, x1 = 0.5f, y0 = 0.25f, y1 = 1.0f, z0 = -5.0f, z1 = -4.0f;
+  Object& box = scene.add_quad({x0, y0, z1}, {x1, y0, z1}, {x1, y1, z1}, {x0, y1, z1}, white);
+  Scene::append_quad(box, {x0, y0, z0}, {x0, y1, z0}, {x0, y1, z1}, {x0, y0, z1});
+  Scene::append_quad(box, {x1, y0, z0}, {x1, y0, z1}, {x1, y1, z1}, {x1, y1, z0});
+  Scene::append_quad(box, {x0, y0, z0}, {x0, y0, z1}, {x1, y0, z1}, {x1, y0, z0});
+  Scene::append_quad(box, {x0, y1, z0}, {x1, y1, z0}, {x1, y1, z1}, {x0, y1, z1});
+  expect_same_distribution(scene);
+}
+
 // ---- precision ---------------------------------------------------------------------------------
 
 // glpt failed it until offset_ray_origin's near-origin step scaled with the point: a fixed

@@ -156,6 +156,25 @@ Bsdf material_bsdf(dvec3 kd, dvec3 ks, double shininess) {
   b.alpha = std::clamp(std::sqrt(2.0 / (s + 2.0)), 0.02, 1.0);
   return b;
 }
+// path_trace.comp unit_reflectance_bsdf: the primary vertex's lobes with unit reflectance (the
+// channels hold light per unit of reflectance), the specular lobe picked with the material's
+// share of the two reflectances within [0.05, 0.95] (1/2 where both are ~0). `specular_scale`
+// turns the specular lobe's results into light per unit of its reflectance.
+Bsdf unit_reflectance_bsdf(const Bsdf& material, bool specular_material, double& specular_scale) {
+  Bsdf unit = material;
+  unit.diffuse = dvec3(1.0);
+  unit.specular = dvec3(0.0);
+  specular_scale = 0.0;
+  if (max3(material.specular) > 0.0 || specular_material) {
+    const double d = luminance(material.diffuse), s = luminance(material.specular);
+    // float, as the shader computes it
+    const float p =
+        d + s > 1e-4 ? std::clamp(float(s) / (float(d) + float(s)), 0.05f, 0.95f) : 0.5f;
+    unit.specular = dvec3(p / (1.0 - p));
+    specular_scale = (1.0 - p) / p;
+  }
+  return unit;
+}
 dvec3 bsdf_lobe_cos(const Bsdf& b, int lobe, dvec3 v, dvec3 l) {
   if (l.z <= 0.0) return dvec3(0.0);
   if (lobe == kDiffuse) return b.diffuse * (l.z / kPi);
@@ -790,42 +809,74 @@ class Tracer {
 
   // ---- the path (path_trace.comp trace_path), all channels summed -----------------------------
 
+  // What a path brings through each lobe of the vertex it leaves.
+  struct Lobes {
+    dvec3 diffuse{0.0}, specular{0.0};
+    dvec3 sum() const { return diffuse + specular; }
+  };
+
+  // The primary vertex is traced with unit reflectances and its lobes' light multiplied by the
+  // material's reflectances at the end, as the composite pass does (gbuffer_material.h: where
+  // the albedo is below 1/1000 but GL's ambient or diffuse colour is not, the diffuse light is
+  // radiance as it is; GL's ambient term is dropped where both are below 1/1000).
   dvec3 trace_path(const Surface& first, Rng& rng) const {
-    dvec3 radiance(0.0);
+    dvec3 radiance(0.0);  // beyond the primary vertex's lobes: per unit of its reflectance
+    Lobes primary;        // the primary vertex's light, per lobe, per unit of reflectance
+    dvec3 ambient(0.0);   // GL's ambient term at the primary vertex (radiance)
+    int first_lobe = kDiffuse;
+    const Bsdf material = material_bsdf(dvec3(first.material.diffuse),
+                                        dvec3(first.material.specular), first.material.shininess);
+    double specular_scale = 1.0;
     Surface s = first;
     dvec3 to_viewer = towards_viewer(s.position);
     dvec3 throughput(1.0);
     int bounces = scene_.trace.bounces;
     if (options_.fault == Fault::kDroppedBounce) bounces = std::max(bounces - 1, 0);
     double emission_weight = 1.0;
+    auto add = [&](bool direct_at_primary, const Lobes& value) {
+      if (direct_at_primary) {
+        primary.diffuse += value.diffuse;
+        primary.specular += value.specular;
+      } else if (first_lobe == kSpecular) {
+        primary.specular += value.sum();
+      } else {
+        primary.diffuse += value.sum();
+      }
+    };
     for (int depth = 0;; ++depth) {
       const Basis basis = make_basis(s.normal);
       const dvec3 v = to_local(basis, to_viewer);
-      if (depth > 0) radiance += throughput * dvec3(s.material.emission) * emission_weight;
-      Bsdf bsdf = material_bsdf(dvec3(s.material.diffuse), dvec3(s.material.specular),
-                                s.material.shininess);
+      if (depth > 0)
+        add(false, {throughput * dvec3(s.material.emission) * emission_weight, dvec3(0.0)});
+      Bsdf bsdf = depth == 0 ? unit_reflectance_bsdf(
+                                   material, max3(dvec3(s.material.specular)) > 0.0, specular_scale)
+                             : material_bsdf(dvec3(s.material.diffuse), dvec3(s.material.specular),
+                                             s.material.shininess);
       if (v.z <= 1e-4) bsdf.specular = dvec3(0.0);
       const LightChoice choice = choose_lights(s.position, s.normal);
       const bool bounce = depth < bounces;
 
       if (depth == 0) {
-        const dvec3 ambient = dvec3(s.material.ambient) * choice.ambient;
+        const dvec3 brings = dvec3(s.material.ambient) * choice.ambient;
         if (!scene_.trace.ao) {
-          radiance += ambient;
-        } else if (max3(ambient) > 0.0) {
+          ambient += brings;
+        } else if (max3(brings) > 0.0) {
           const dvec3 d = sample_cosine_hemisphere(s.normal, rng.next2());
-          if (glm::dot(d, s.offset_normal) > 0.0 && !ao_blocked(s, d)) radiance += ambient;
+          if (glm::dot(d, s.offset_normal) > 0.0 && !ao_blocked(s, d)) ambient += brings;
         }
       }
       if (choice.count > 0) {
         const int i = pick_light(choice, rng.next());
         const dvec2 u = rng.next2();
-        if (i < choice.count)
-          radiance += throughput * light_sample(s, bsdf, basis, v, choice, i, bounce, u);
+        if (i < choice.count) {
+          const Lobes l = light_sample(s, bsdf, basis, v, choice, i, bounce, u);
+          add(depth == 0, {throughput * l.diffuse, throughput * l.specular});
+        }
       }
       if (!emitters_.empty()) {
         const double u_choice = rng.next();
-        radiance += throughput * emitter_sample(s, bsdf, basis, v, bounce, u_choice, rng.next2());
+        const Lobes e = emitter_sample(s, bsdf, basis, v, bounce, u_choice, rng.next2());
+        add(depth == 0, {throughput * e.diffuse, throughput * e.specular});
       }
       if (!bounce) break;
 
@@ -839,6 +890,7 @@ class Tracer {
       const dvec3 direction = glm::normalize(to_world(basis, l));
       if (glm::dot(direction, s.offset_normal) <= 0.0) break;
       const dvec3 weight = bsdf_lobe_cos(bsdf, lobe, v, l) / pdf;
+      if (depth == 0) first_lobe = lobe;
 
       Hit hit;
       const bool found = closest_from(s, direction, kUnbounded, hit);
@@ -851,7 +903,8 @@ class Tracer {
         const double light_pdf = light_direction_pdf(choice, i, direction);
         if (light_pdf <= 0.0) continue;
         const dvec3 l_radiance = lobe == kSpecular ? view.specular : view.diffuse;
-        radiance += throughput * weight * l_radiance * power_heuristic(pdf, light_pdf);
+        const dvec3 value = throughput * weight * l_radiance * power_heuristic(pdf, light_pdf);
+        add(depth == 0, lobe == kSpecular ? Lobes{dvec3(0.0), value} : Lobes{value, dvec3(0.0)});
       }
       emission_weight = 1.0;
       if (found) {
@@ -868,26 +921,34 @@ class Tracer {
       s = bounce_surface(hit, s.shadow_position + hit.t * direction, direction);
       to_viewer = -direction;
     }
+    // The composite pass's reflectances.
+    for (int c = 0; c < 3; ++c) {
+      const double albedo = material.diffuse[c];
+      const bool raw = albedo < 1e-3 && std::max(double(first.material.ambient[c]),
+                                                 double(first.material.diffuse[c])) >= 1e-3;
+      radiance[c] += albedo * primary.diffuse[c] + (raw || albedo >= 1e-3 ? ambient[c] : 0.0);
+      radiance[c] += material.specular[c] * specular_scale * primary.specular[c];
+    }
     return radiance;
   }
 
   // light_ray: what next-event estimation of light i brings through both lobes (unoccluded
   // part only: the shadow ray is traced here).
-  dvec3 light_sample(const Surface& s, const Bsdf& bsdf, const Basis& basis, dvec3 v,
+  Lobes light_sample(const Surface& s, const Bsdf& bsdf, const Basis& basis, dvec3 v,
                      const LightChoice& choice, int i, bool mis, dvec2 u) const {
     const LightView& view = choice.views[size_t(i)];
     const double probability = choice.probability[size_t(i)];
-    if (probability <= 0.0) return dvec3(0.0);
+    if (probability <= 0.0) return {};
     const bool area = view.one_minus_cos > 0.0;
     const dvec3 d = area ? sample_cone(view.direction, view.one_minus_cos, u) : view.direction;
     const dvec3 l = to_local(basis, d);
-    if (l.z <= 0.0) return dvec3(0.0);
+    if (l.z <= 0.0) return {};
     const dvec3 f_d = bsdf_lobe_cos(bsdf, kDiffuse, v, l);
     const dvec3 f_s = bsdf_lobe_cos(bsdf, kSpecular, v, l);
-    if (max3(f_d + f_s) <= 0.0) return dvec3(0.0);
-    dvec3 brings;
+    if (max3(f_d + f_s) <= 0.0) return {};
+    Lobes brings;
     if (!area) {
-      brings = kPi * (f_d * view.diffuse + f_s * view.specular) / probability;
+      brings = {kPi * f_d * view.diffuse / probability, kPi * f_s * view.specular / probability};
     } else {
       const double pdf = probability * cone_pdf(view.one_minus_cos);
       double w_d = 1.0, w_s = 1.0;
@@ -897,21 +958,20 @@ class Tracer {
         w_s = power_heuristic(pdf,
                               lobe_probability(bsdf, kSpecular) * lobe_pdf(bsdf, kSpecular, v, l));
       }
-      brings = (w_d * f_d * view.diffuse + w_s * f_s * view.specular) / pdf;
+      brings = {w_d * f_d * view.diffuse / pdf, w_s * f_s * view.specular / pdf};
     }
-    if (scene_.trace.shadows && blocked(s, d, view.distance - view.sphere_radius, i))
-      return dvec3(0.0);
+    if (scene_.trace.shadows && blocked(s, d, view.distance - view.sphere_radius, i)) return {};
     return brings;
   }
 
-  dvec3 emitter_sample(const Surface& s, const Bsdf& bsdf, const Basis& basis, dvec3 v, bool mis,
+  Lobes emitter_sample(const Surface& s, const Bsdf& bsdf, const Basis& basis, dvec3 v, bool mis,
                        double u_choice, dvec2 u) const {
     dvec3 d, e_radiance;
     double distance, pdf;
-    if (!sample_emitter(s.position, u_choice, u, d, distance, e_radiance, pdf)) return dvec3(0.0);
-    if (max3(e_radiance) <= 0.0) return dvec3(0.0);
+    if (!sample_emitter(s.position, u_choice, u, d, distance, e_radiance, pdf)) return {};
+    if (max3(e_radiance) <= 0.0) return {};
     const dvec3 l = to_local(basis, d);
-    if (l.z <= 0.0 || glm::dot(d, s.offset_normal) <= 0.0) return dvec3(0.0);
+    if (l.z <= 0.0 || glm::dot(d, s.offset_normal) <= 0.0) return {};
     const dvec3 f_d = bsdf_lobe_cos(bsdf, kDiffuse, v, l);
     const dvec3 f_s = bsdf_lobe_cos(bsdf, kSpecular, v, l);
     double w_d = 1.0, w_s = 1.0;
@@ -920,10 +980,10 @@ class Tracer {
       w_s =
           power_heuristic(pdf, lobe_probability(bsdf, kSpecular) * lobe_pdf(bsdf, kSpecular, v, l));
     }
-    const dvec3 brings = (w_d * f_d + w_s * f_s) * e_radiance / pdf;
-    if (max3(brings) <= 0.0) return dvec3(0.0);
+    const Lobes brings{w_d * f_d * e_radiance / pdf, w_s * f_s * e_radiance / pdf};
+    if (max3(brings.sum()) <= 0.0) return {};
     // Stop short of the emitter itself (emitter_ray): only what lies between blocks it.
-    if (scene_.trace.shadows && blocked(s, d, distance * (1.0 - 1e-3), -1)) return dvec3(0.0);
+    if (scene_.trace.shadows && blocked(s, d, distance * (1.0 - 1e-3), -1)) return {};
     return brings;
   }
 
