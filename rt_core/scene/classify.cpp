@@ -449,10 +449,27 @@ DrawClass classify_draw(const rec::Draw& draw, const rec::StateSnapshot& state,
   return DrawClass::kTraced;
 }
 
+namespace {
+
+// Whether a draw's depth range puts it at the far plane or behind every depth the main camera's
+// range can hold (the world in [0, 0.999], a sky dome in [0.999, 1], trigger-rally): whatever
+// its size or place, it is seen only where nothing of the world is.
+bool behind_the_world(const rec::TransformState& transform, const MainCamera& camera) {
+  const float near_depth = std::min(transform.depth_near, transform.depth_far);
+  if (near_depth == 1.0f) return true;
+  if (!camera.valid ||
+      (transform.depth_near == camera.depth_near && transform.depth_far == camera.depth_far))
+    return false;
+  return near_depth >= std::max(camera.depth_near, camera.depth_far);
+}
+
+}  // namespace
+
 void find_sky(const rec::FrameRecord& record, const MainCamera& camera,
               std::vector<DrawClass>& classes) {
   // The run of unlit draws without depth writes or test before the first traced draw (their
-  // union must hold the eye: six faces of a box each do not), draws at the far plane, and, after
+  // union must hold the eye: six faces of a box each do not), draws at the far plane or behind
+  // the main camera's depth range, and, after
   // the world, an unlit box centred on the eye around everything drawn before it. Draws under
   // the main camera's view with other near and far planes count as the main camera's here.
   std::vector<size_t> run;
@@ -465,7 +482,7 @@ void find_sky(const rec::FrameRecord& record, const MainCamera& camera,
     if (classes[i] == DrawClass::kOtherCamera && !same_view_but_depth(camera_of(state), camera))
       continue;
     const rec::TransformState& transform = *state.transform;
-    if (transform.depth_near == 1.0f && transform.depth_far == 1.0f) {
+    if (behind_the_world(transform, camera)) {
       classes[i] = DrawClass::kSky;
       continue;
     }

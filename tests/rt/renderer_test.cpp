@@ -13,6 +13,7 @@
 #include <memory>
 #include <random>
 #include <string>
+#include <tuple>
 
 #include "record_builder.hpp"
 #include "rt_core/scene/scene_builder.hpp"
@@ -742,6 +743,30 @@ TEST(ClassifyDraws, TheSkyAroundTheCameraIsNotTracedAndTheWorldIs) {
     EXPECT_EQ(build.classes[0], fov == 1.0f ? DrawClass::kSky : DrawClass::kOtherCamera)
         << "field of view " << fov;
     EXPECT_EQ(build.classes[1], DrawClass::kTraced);
+  }
+
+  // Depth ranges: the world in [0, 0.999], then a small unlit dome in [0.999, 1] (behind every
+  // depth the world can have) is the sky; a gun in [0, 0.1] over a world in [0.1, 1] is not, nor
+  // is a draw in the world's own range.
+  for (const auto& [world, other, sky] :
+       {std::tuple{glm::vec2(0.0f, 0.999f), glm::vec2(0.999f, 1.0f), true},
+        std::tuple{glm::vec2(0.1f, 1.0f), glm::vec2(0.0f, 0.1f), false},
+        std::tuple{glm::vec2(0.0f, 0.999f), glm::vec2(0.0f, 0.999f), false}}) {
+    RecordBuilder d(16, 16);
+    d.transform.projection = glm::perspective(1.0f, 1.0f, 0.1f, 100.0f);
+    d.transform.depth_near = world.x;
+    d.transform.depth_far = world.y;
+    d.directional_light(0, {0, 1, 0});
+    for (int k = 0; k < 8; ++k)
+      d.quad({-4.0f + float(k), -1, -2}, {1, 0, 0}, {0, 0, -8}, glm::vec4(1));
+    d.lighting.enabled = false;
+    d.transform.depth_near = other.x;
+    d.transform.depth_far = other.y;
+    d.quad({-1, -1, -2}, {2, 0, 0}, {0, 2, 0}, glm::vec4(0.3f));
+    build_trace_scene(d.record, d.drawable, build);
+    EXPECT_EQ(build.classes.back() == DrawClass::kSky, sky)
+        << "world " << world.x << ".." << world.y << ", draw " << other.x << ".." << other.y;
+    EXPECT_EQ(build.classes.front(), DrawClass::kTraced);
   }
 }
 
