@@ -152,9 +152,11 @@ class Renderer::Impl {
       if (!std::holds_alternative<rec::Draw>(record.commands[i])) continue;
       const DrawClass cls = scene_.classes[i];
       if (cls == DrawClass::kShadow) continue;  // not drawn (kind_draws counts them)
-      ++(cls == DrawClass::kTraced || cls == DrawClass::kViewmodel ? stats.traced_draws
-         : cls == DrawClass::kSky                                  ? stats.sky_draws
-                                                                   : stats.raster_draws);
+      ++(cls == DrawClass::kTraced || cls == DrawClass::kViewmodel ||
+                 cls == DrawClass::kSplitByAlpha
+             ? stats.traced_draws
+         : cls == DrawClass::kSky ? stats.sky_draws
+                                  : stats.raster_draws);
     }
     stats.instances = static_cast<uint32_t>(scene_.scene.instances.size());
   }
@@ -202,7 +204,7 @@ class Renderer::Impl {
         const std::vector<QuerySamples> counted_before =
             queries != nullptr ? *queries : std::vector<QuerySamples>();
         raster_.execute(record, buffers, drawable, stats, &scene_.gbuffer_pass, nullptr, &targets,
-                        queries);
+                        queries, &scene_.split_by_alpha);
         // The colour buffers exist once the raster renderer has drawn into them.
         const TraceTargets trace_targets{
             &gbuffer_, &raster_.textures(), raster_.color_image(true).view(),
@@ -219,7 +221,8 @@ class Renderer::Impl {
       tracer_->forget_previous_frame();  // nothing about this frame's accumulation holds
       throw;
     }
-    raster_.execute(record, buffers, drawable, stats, &scene_.after_trace, end, nullptr, queries);
+    raster_.execute(record, buffers, drawable, stats, &scene_.after_trace, end, nullptr, queries,
+                    &scene_.split_by_alpha);
   }
 
  public:

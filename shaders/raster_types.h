@@ -152,6 +152,10 @@ using mat4 = glm::mat4;
 // Rasterized upside down, as Mesa renders window-system buffers
 // (rt_core/raster/mesa_orientation.cpp): Vulkan's quads are Mesa's, derivatives as they come
 #define GLPT_FS_MESA_ORIENTED 32u
+// A draw split by alpha (path-traced mode, rt_core/scene/fragment_opacity.hpp): only its opaque
+// fragments (alpha >= 254.5 / 255), into the G-buffer; only its others, over the trace
+#define GLPT_FS_OPAQUE_PART 64u
+#define GLPT_FS_TRANSLUCENT_PART 128u
 // bits 8-10: alpha test function (0 off, else GL_NEVER + n - 0x200 + 1); bits 12-13: fog mode
 // (0 off, 1 linear, 2 exp, 3 exp2)
 #define GLPT_SC_FS_ALPHA_FOG 23

@@ -171,6 +171,13 @@ struct RasterRenderer::Recording {
   // Per command index: a draw whose vertices go into the record's vertex streams
   // (VertexStreams::takes, asked once per draw).
   std::vector<uint8_t> streamed;
+  // Per command index: 1 for a draw split by alpha (path-traced mode, DrawClass::kSplitByAlpha):
+  // its opaque fragments into the G-buffer, its others over the trace. Null: none.
+  const std::vector<uint8_t>* split_by_alpha = nullptr;
+  bool split(size_t command) const {
+    return split_by_alpha != nullptr && command < split_by_alpha->size() &&
+           (*split_by_alpha)[command] != 0;
+  }
   DrawGeometry clear_geometry;
   bool rendering = false;
   bool in_render_pass = false;  // rendering in RasterPipelines::render_pass (else dynamic)

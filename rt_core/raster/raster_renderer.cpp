@@ -130,7 +130,8 @@ void RasterRenderer::ensure_buffers(DrawableBuffers& buffers, const rec::Drawabl
 void RasterRenderer::execute(const rec::FrameRecord& record, DrawableBuffers& buffers,
                              const rec::DrawableConfig& drawable, FrameStats& stats,
                              const std::vector<size_t>* commands, const FrameEnd* end,
-                             const GBufferTargets* gbuffer, std::vector<QuerySamples>* queries) {
+                             const GBufferTargets* gbuffer, std::vector<QuerySamples>* queries,
+                             const std::vector<uint8_t>* split_by_alpha) {
   const Stopwatch timer;
   ++frame_;
   ensure_buffers(buffers, drawable);
@@ -191,6 +192,7 @@ void RasterRenderer::execute(const rec::FrameRecord& record, DrawableBuffers& bu
   r.record = &record;
   r.stats = &stats;
   r.gbuffer = gbuffer;
+  r.split_by_alpha = split_by_alpha;
   r.geometry.resize(record.commands.size());
   r.clear_state.assign(record.commands.size(), 0);
   r.pixels.resize(record.commands.size());
@@ -479,9 +481,12 @@ void RasterRenderer::execute(const rec::FrameRecord& record, DrawableBuffers& bu
         if (const auto* clear = std::get_if<rec::Clear>(&command)) {
           record_clear(r, *clear, r.clear_state[i]);
         } else if (const auto* draw = std::get_if<rec::Draw>(&command)) {
-          record_draw(r, *draw, r.geometry[i],
-                      gbuffer && gbuffer->traced && i < gbuffer->traced->size() &&
-                          (*gbuffer->traced)[i] != 0);
+          const bool to_gbuffer = gbuffer && gbuffer->traced && i < gbuffer->traced->size() &&
+                                  (*gbuffer->traced)[i] != 0;
+          const uint32_t part = !r.split(i)  ? 0u
+                                : to_gbuffer ? GLPT_FS_OPAQUE_PART
+                                             : GLPT_FS_TRANSLUCENT_PART;
+          record_draw(r, *draw, r.geometry[i], to_gbuffer, part);
         } else if (const auto* accum = std::get_if<rec::Accum>(&command)) {
           if (accumulation_touches_color(*accum)) break;
           execute_accum(record, *accum);
@@ -1025,6 +1030,7 @@ size_t RasterRenderer::merge_draws(Recording& r, const std::vector<size_t>& comm
   for (; end < commands.size(); ++end) {
     const rec::Draw* next = draw_at(end);
     if (next == nullptr || next->state != lead.state ||
+        r.split(commands[end]) != r.split(commands[position]) ||
         !mergeable_draw(record, *next, r.streamed[commands[end]]) ||
         queries_.query_of(commands[end]) != query ||
         vertices + next->vertices->vertex_count() > kMaxMergedVertices)
@@ -1057,11 +1063,11 @@ size_t RasterRenderer::merge_draws(Recording& r, const std::vector<size_t>& comm
 }
 
 void RasterRenderer::record_draw(Recording& r, const rec::Draw& draw, const DrawGeometry& g,
-                                 bool to_gbuffer) {
+                                 bool to_gbuffer, uint32_t fs_flags) {
   if (g.index_count == 0) return;
   r.stats->draws += 1 + g.merged_draws;
   r.stats->merged_draws += g.merged_draws;
-  record_draw_pass(r, draw, g, VK_CULL_MODE_NONE, to_gbuffer);
+  record_draw_pass(r, draw, g, VK_CULL_MODE_NONE, to_gbuffer, fs_flags);
 }
 
 void RasterRenderer::clear_gbuffer_surface(Recording& r, const VkRect2D& rect) {
@@ -1074,7 +1080,8 @@ void RasterRenderer::clear_gbuffer_surface(Recording& r, const VkRect2D& rect) {
 }
 
 void RasterRenderer::record_draw_pass(Recording& r, const rec::Draw& draw, const DrawGeometry& g,
-                                      VkCullModeFlags face_pass, bool to_gbuffer) {
+                                      VkCullModeFlags face_pass, bool to_gbuffer,
+                                      uint32_t fs_flags) {
   const rec::StateSnapshot& state = r.record->states[draw.state];
   const rec::TransformState& t = *state.transform;
   DrawContext context;
@@ -1088,10 +1095,11 @@ void RasterRenderer::record_draw_pass(Recording& r, const rec::Draw& draw, const
   if (setup.skip) return;
   if (setup.split_faces) {
     // GL draws front faces with the front polygon mode and back faces with the back one.
-    record_draw_pass(r, draw, g, VK_CULL_MODE_BACK_BIT, to_gbuffer);
-    record_draw_pass(r, draw, g, VK_CULL_MODE_FRONT_BIT, to_gbuffer);
+    record_draw_pass(r, draw, g, VK_CULL_MODE_BACK_BIT, to_gbuffer, fs_flags);
+    record_draw_pass(r, draw, g, VK_CULL_MODE_FRONT_BIT, to_gbuffer, fs_flags);
     return;
   }
+  setup.key.constants[GLPT_SC_FS_FLAGS] |= fs_flags;
   if (to_gbuffer) {
     // The same pipeline with the G-buffer's shaders and attachments (written unblended).
     context.targets = ColorTargets::kGBuffer;

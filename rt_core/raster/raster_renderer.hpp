@@ -50,7 +50,8 @@ class RasterRenderer {
                const rec::DrawableConfig& drawable, FrameStats& stats,
                const std::vector<size_t>* commands = nullptr, const FrameEnd* end = nullptr,
                const GBufferTargets* gbuffer = nullptr,
-               std::vector<QuerySamples>* queries = nullptr);
+               std::vector<QuerySamples>* queries = nullptr,
+               const std::vector<uint8_t>* split_by_alpha = nullptr);
 
   // The end of a frame, after the device completed it (every execute of the frame submits
   // without waiting unless it reads results on the host): adds the device time of the frame's
@@ -101,10 +102,12 @@ class RasterRenderer {
                      VkDeviceSize default_offset);
   // A merged draw's vertices stay far from 32-bit indices and from megabyte index lists.
   static constexpr uint64_t kMaxMergedVertices = uint64_t{1} << 20;
+  // `fs_flags`: GLPT_FS_* bits the draw's fragment shader adds (the part of a draw split by
+  // alpha it draws).
   void record_draw(Recording& r, const rec::Draw& draw, const DrawGeometry& geometry,
-                   bool to_gbuffer = false);
+                   bool to_gbuffer = false, uint32_t fs_flags = 0);
   void record_draw_pass(Recording& r, const rec::Draw& draw, const DrawGeometry& geometry,
-                        VkCullModeFlags face_pass, bool to_gbuffer = false);
+                        VkCullModeFlags face_pass, bool to_gbuffer = false, uint32_t fs_flags = 0);
   void clear_gbuffer_surface(Recording& r, const VkRect2D& rect);
   // How draws into a rendering instance are made: pipelines for dynamic rendering, pipelines
   // blending in the shader (the render pass of RasterPipelines::render_pass, one colour target),

@@ -706,6 +706,14 @@ void classify_frame(const rec::FrameRecord& record, const rec::DrawableConfig& d
         label.kind = DrawKind::kDecal;
       } else {
         label.kind = DrawKind::kBlended;
+        // A solid object with see-through texels (windows, cut-out edges) under the main
+        // camera: traced where its fragments are opaque, blended over the trace elsewhere.
+        const bool all_channels =
+            ops.color_write[0] && ops.color_write[1] && ops.color_write[2] && ops.color_write[3];
+        if (cls == DrawClass::kBlended && out.camera.valid && all_channels &&
+            same_camera(camera_of(state), {out.camera.projection, out.camera.viewport}) &&
+            !own_depth_range && splits_by_alpha(*draw, state))
+          cls = DrawClass::kSplitByAlpha;
       }
       continue;
     }

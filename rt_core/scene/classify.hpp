@@ -32,6 +32,10 @@ enum class DrawClass : uint8_t {
   kShadow,        // a fake shadow: not drawn in path-traced mode
   kViewmodel,     // first-person geometry in its own depth range or projection: traced (into the
                   // G-buffer, lit by rays) but not in the TLAS, so it casts no shadow on the world
+  // A blended draw of a solid object with see-through texels (fragment_opacity.hpp,
+  // splits_by_alpha): traced where its fragments are opaque (alpha 1: the G-buffer and the
+  // TLAS), drawn blended over the trace where they are not
+  kSplitByAlpha,
 };
 
 enum class DrawKind : uint8_t {

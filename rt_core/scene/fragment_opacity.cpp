@@ -153,4 +153,18 @@ bool fragments_are_opaque(const rec::Draw& draw, const rec::StateSnapshot& state
   return alpha_one;
 }
 
+bool splits_by_alpha(const rec::Draw& draw, const rec::StateSnapshot& state) {
+  const rec::FragmentOpsState& ops = state.raster->ops;
+  if (!draw.vertices || ops.color_logic_op || !blending_keeps_an_opaque_fragment(ops) ||
+      !ops.depth_test || !ops.depth_write)
+    return false;
+  if (ops.alpha_test) {
+    const bool passes_opaque = (ops.alpha_func == GL_GREATER || ops.alpha_func == GL_GEQUAL ||
+                                ops.alpha_func == GL_NOTEQUAL || ops.alpha_func == GL_ALWAYS) &&
+                               (ops.alpha_func == GL_ALWAYS || ops.alpha_ref < kOpaqueAlpha);
+    if (!passes_opaque) return false;
+  }
+  return primary_alpha_is_one(*draw.vertices, *state.lighting);
+}
+
 }  // namespace glpt::rt

@@ -21,6 +21,18 @@ bool blending_keeps_an_opaque_fragment(const rec::FragmentOpsState& ops);
 // than GL_REPLACE and GL_MODULATE, depth textures).
 bool fragments_are_opaque(const rec::Draw& draw, const rec::StateSnapshot& state);
 
+// The alpha from which a fragment counts as opaque where a draw is split by alpha (254.5 / 255:
+// an 8-bit alpha of 255, allowing for the filter's rounding).
+inline constexpr float kOpaqueAlpha = 254.5f / 255.0f;
+
+// Whether a blended draw can be split by its fragments' alpha (path-traced mode,
+// docs/classification.md): traced where its fragments are opaque, blended where they are not.
+// Blending writes a fragment of alpha 1 unchanged (no logic op), the draw tests and writes depth
+// (a solid object with see-through parts, not a particle or a glass pane drawn over the scene),
+// its primary alpha is 1 (only textures make parts of it translucent), and an alpha test, if
+// any, passes every opaque fragment (GL_GREATER, GL_GEQUAL or GL_NOTEQUAL below kOpaqueAlpha).
+bool splits_by_alpha(const rec::Draw& draw, const rec::StateSnapshot& state);
+
 // Whether every texel of levels base..last of every face of `texture` has alpha 1. Computed once
 // per image and kept (images never change).
 bool texels_are_opaque(const rec::TextureObjectSnapshot& texture);

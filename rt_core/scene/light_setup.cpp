@@ -38,8 +38,8 @@ gpu::GpuLight pack_light(const Light& light, size_t index, const LightSize& size
   float radius = 0.0f;
   if (light.position.w != 0.0f) {
     const glm::vec3 centre = glm::vec3(light.position) / light.position.w;
-    radius = size.radius >= 0.0f ? size.radius
-                                 : std::sin(size.angular_radius_rad) * glm::length(centre);
+    radius =
+        size.radius >= 0.0f ? size.radius : std::sin(size.angular_radius_rad) * glm::length(centre);
     if (!std::isfinite(radius) || radius < 0.0f) radius = 0.0f;
   }
   packed.params = glm::uvec4(shadow_bit(index), std::bit_cast<uint32_t>(radius), 0u, 0u);
@@ -72,8 +72,7 @@ Light default_light() {
 LightSetup setup_lights(std::span<const Light> lights, std::span<const EyeBounds> instance_bounds,
                         const EyeBounds& scene_bounds, const LightSize& size) {
   LightSetup setup;
-  for (size_t i = 0; i < lights.size(); ++i)
-    setup.lights.push_back(pack_light(lights[i], i, size));
+  for (size_t i = 0; i < lights.size(); ++i) setup.lights.push_back(pack_light(lights[i], i, size));
 
   const float lamp_max_diagonal = kLampMarkerMaxSceneFraction * scene_bounds.diagonal();
   setup.instance_masks.reserve(instance_bounds.size());

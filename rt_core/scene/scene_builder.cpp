@@ -9,6 +9,7 @@
 #include "rt_core/raster/pipeline_key.hpp"
 #include "rt_core/record/decompose.hpp"
 #include "rt_core/record/texgen.hpp"
+#include "rt_core/scene/fragment_opacity.hpp"
 #include "rt_core/scene/light_setup.hpp"
 
 namespace glpt::rt {
@@ -200,12 +201,18 @@ class Batcher {
       : instances_(instances), known_(known), scratch_(scratch) {}
 
   // `id`: the draw's stable identity (0: none).
+  // `opaque_part`: rays see only its opaque fragments (DrawClass::kSplitByAlpha).
   void add(const rec::Draw& draw, const rec::StateSnapshot& state, uint64_t id, bool sky = false,
-           std::span<const FoldedPass> passes = {}) {
+           std::span<const FoldedPass> passes = {}, bool opaque_part = false) {
     const rec::TransformState& transform = *state.transform;
     const bool projective = is_projective_modelview(transform.modelview);
     const glm::mat4 modelview = projective ? glm::mat4(1.0f) : transform.modelview;
     TracedSurface surface = surface_texture_of(state);
+    if (opaque_part) {
+      // The draw's own alpha test, if any, passes every opaque fragment (splits_by_alpha).
+      surface.alpha_func = GL_GEQUAL;
+      surface.alpha_ref = kOpaqueAlpha;
+    }
     std::array<FoldedPass, TracedSurface::kUnits> folded{};
     fold(draw, passes, surface, folded);
     if (open_ && (std::memcmp(&modelview, &open_modelview_, sizeof modelview) != 0 ||
@@ -477,6 +484,7 @@ void build_trace_scene(const rec::FrameRecord& record, const rec::DrawableConfig
   }
   out.classes = classification->classes;
   out.traced.assign(record.commands.size(), 0);
+  out.split_by_alpha.assign(record.commands.size(), 0);
   out.gbuffer_pass.clear();
   out.after_trace.clear();
   out.any_traced = false;
@@ -527,7 +535,8 @@ void build_trace_scene(const rec::FrameRecord& record, const rec::DrawableConfig
     // Fake shadows are not drawn: the tracer's shadows are real.
     if (draw != nullptr && out.classes[i] == DrawClass::kShadow) continue;
     const bool viewmodel = out.classes[i] == DrawClass::kViewmodel;
-    if (draw == nullptr || (out.classes[i] != DrawClass::kTraced && !viewmodel)) {
+    const bool split = out.classes[i] == DrawClass::kSplitByAlpha;
+    if (draw == nullptr || (out.classes[i] != DrawClass::kTraced && !viewmodel && !split)) {
       // Clears act on the G-buffer in its pass; everything else before the first traced draw is
       // drawn first, the rest after the trace.
       if (!out.any_traced || std::holds_alternative<rec::Clear>(command))
@@ -541,6 +550,11 @@ void build_trace_scene(const rec::FrameRecord& record, const rec::DrawableConfig
     out.any_traced = true;
     out.traced[i] = 1;
     out.gbuffer_pass.push_back(i);
+    // Its opaque fragments go into the G-buffer, the others are blended over the trace.
+    if (split) {
+      out.split_by_alpha[i] = 1;
+      out.after_trace.push_back(i);
+    }
     state_used[draw->state] = 1;
     if (scene.states[draw->state].history_id == 0) {
       const int32_t k =
@@ -556,7 +570,7 @@ void build_trace_scene(const rec::FrameRecord& record, const rec::DrawableConfig
       const rec::Draw& pass_draw = std::get<rec::Draw>(record.commands[pass]);
       folded.push_back({&pass_draw, &record.states[pass_draw.state]});
     }
-    batcher.add(*draw, state, identity_id(i), /*sky=*/false, folded);
+    batcher.add(*draw, state, identity_id(i), /*sky=*/false, folded, /*opaque_part=*/split);
   }
   batcher.close();
 

@@ -30,8 +30,11 @@ namespace glpt::rt {
 
 struct SceneBuild {
   TraceScene scene;
-  std::vector<DrawClass> classes;    // per command (kNotTriangles for non-draws)
-  std::vector<uint8_t> traced;       // per command: 1 for traced draws
+  std::vector<DrawClass> classes;  // per command (kNotTriangles for non-draws)
+  std::vector<uint8_t> traced;     // per command: 1 for traced draws
+  // Per command: 1 for draws split by alpha (DrawClass::kSplitByAlpha), which are in both passes:
+  // their opaque fragments in the G-buffer pass, the others in `after_trace`.
+  std::vector<uint8_t> split_by_alpha;
   std::vector<size_t> gbuffer_pass;  // commands of pass 1, in record order
   std::vector<size_t> after_trace;   // commands of pass 3, in record order
   bool any_traced = false;

@@ -4,10 +4,9 @@
 #pragma once
 
 #include <cstdint>
+#include <glm/vec3.hpp>
 #include <span>
 #include <vector>
-
-#include <glm/vec3.hpp>
 
 #include "rt_core/scene/trace_scene.hpp"
 #include "shared_types.h"

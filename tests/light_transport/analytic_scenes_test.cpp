@@ -476,6 +476,50 @@ TEST(LightTransport, AlphaTestedQuadCastsTheShadowOfItsCutOut) {
   EXPECT_LT(solid.at(shadow_x, y), 10);
 }
 
+TEST(LightTransport, ABlendedSolidWithSeeThroughTexelsIsTracedWhereItIsOpaque) {
+  // The cut-out scene's quad drawn blended (GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA) with depth
+  // writes, its texture's left half opaque and its right half of alpha 0.5, as a car with
+  // windows: split by alpha (DrawClass::kSplitByAlpha), the left half is traced and shadows the
+  // floor, the right half is blended over the trace and casts none. Before the split the whole
+  // quad was drawn over the trace and shadowed nothing.
+  auto scene = [] {
+    floor_under_low_light();
+    const uint8_t opaque[4] = {255, 255, 255, 255}, glass[4] = {255, 255, 255, 128};
+    bind_two_texel_texture(opaque, glass);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    textured_quad({-1, -1, -3}, {1, -1, -3}, {1, 1, -3}, {-1, 1, -3});
+    glDisable(GL_BLEND);
+    glDisable(GL_TEXTURE_2D);
+  };
+  glpt::rt::FrameStats stats;
+  const Image image =
+      render(path({{"GLPT_LIGHT_RADIUS", "0"}, {"GLPT_BOUNCES", "0"}, {"GLPT_AO", "0"}}), scene, 1,
+             "split", &stats);
+  EXPECT_EQ(stats.traced_draws, 2u) << "the floor and the split quad";
+  // Floor pixels in the opaque half's shadow (x in [-2, 0]) outside the quad's image, and beside
+  // the see-through half's would-be shadow (x > 1.6).
+  const int shadow_x = 12, lit_x = 53, y = 32;
+  ASSERT_LT(on_plane(shadow_x, y, -5.0f).x, -1.6f);
+  ASSERT_GT(on_plane(lit_x, y, -5.0f).x, 1.6f);
+  EXPECT_LT(image.at(shadow_x, y), 10) << "the opaque half shadows the floor";
+  expect_close(image.at(lit_x, y), unoccluded_floor(lit_x, y), 0.02, 2.0,
+               "the floor beside the see-through half's shadow");
+  // Under GL's own lighting (GL parity) the see-through half, blended over the traced floor, is
+  // raster mode's: within half of what lighting the floor per pixel (GL parity) rather than per
+  // vertex (raster mode) changes (about 8 levels on the floor under the quad here).
+  const Image parity =
+      render(path({{"GLPT_SHADOWS", "0"}, {"GLPT_BOUNCES", "0"}, {"GLPT_AO", "0"}}), scene, 1,
+             "split_parity");
+  const Image raster = render({{"GLPT_MODE", "raster"}}, scene, 1, "split_raster");
+  // The see-through half's pixels: x in (0, 1) at z = -3, pixels 33 to 49.
+  for (int py = 16; py < 48; py += 3)
+    for (int px = 34; px < 49; px += 2)
+      EXPECT_NEAR(parity.at(px, py), raster.at(px, py), 6) << px << "," << py;
+  // ... which is the quad blended over the floor, not the floor alone.
+  EXPECT_GT(raster.at(40, y), parity.at(60, y) + 50);
+}
+
 TEST(LightTransport, ClippedAwayPartsCastNoShadow) {
   // The alpha test's scene with an untextured quad whose right half (x > 0) a user clip plane
   // removes: the floor under the removed half is lit, the kept half still shadows.

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <glm/gtc/matrix_transform.hpp>
 #include <set>
 #include <string>
@@ -370,6 +371,74 @@ std::shared_ptr<rec::VertexData> textured_wall(float s_scale) {
   v->color = {glm::vec4(1)};
   v->primitives.push_back({0, 4});
   return v;
+}
+
+// A 2 x 1 RGBA texture: an opaque texel and one of alpha `alpha`.
+std::shared_ptr<rec::TextureObjectSnapshot> half_see_through_texture(uint8_t alpha) {
+  auto image = std::make_shared<rec::TextureImage>();
+  image->width = 2;
+  image->height = 1;
+  image->internal_format = GL_RGBA8;
+  image->texels = {255, 255, 255, 255, 255, 255, 255, alpha};
+  auto t = std::make_shared<rec::TextureObjectSnapshot>();
+  t->content_version = 100u + alpha;
+  t->faces = {{image}};
+  t->sampler.min_filter = GL_NEAREST;
+  return t;
+}
+
+TEST(ClassifyKinds, ABlendedSolidWithSeeThroughTexelsIsSplitByAlpha) {
+  // GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA with depth writes, a texture with a see-through texel:
+  // traced where opaque (into the G-buffer pass and the TLAS, whose rays test alpha >= 254.5 /
+  // 255) and drawn again after the trace for the rest. Not split: without depth writes (a glass
+  // pane, a particle), with a vertex alpha below 1, with additive blending, with an alpha test
+  // that opaque fragments fail.
+  struct Case {
+    const char* what;
+    bool depth_write = true;
+    float vertex_alpha = 1.0f;
+    uint32_t blend_dst = GL_ONE_MINUS_SRC_ALPHA;
+    uint32_t alpha_func = 0;  // 0: no alpha test
+    bool split = true;
+  };
+  for (const Case& c :
+       {Case{"split"}, Case{"no depth writes", false, 1.0f, GL_ONE_MINUS_SRC_ALPHA, 0, false},
+        Case{"vertex alpha 0.5", true, 0.5f, GL_ONE_MINUS_SRC_ALPHA, 0, false},
+        Case{"additive", true, 1.0f, GL_ONE, 0, false},
+        Case{"alpha test GL_GREATER 0.5", true, 1.0f, GL_ONE_MINUS_SRC_ALPHA, GL_GREATER, true},
+        Case{"alpha test GL_LESS 0.5", true, 1.0f, GL_ONE_MINUS_SRC_ALPHA, GL_LESS, false}}) {
+    RecordBuilder b = scene_builder();
+    b.transform.modelview = glm::translate(glm::mat4(1), glm::vec3(0, 0, -6));
+    b.draw(textured_wall(1.0f));  // an opaque wall behind: the world
+    b.transform.modelview = glm::translate(glm::mat4(1), glm::vec3(0, 0, -4));
+    b.texturing.units[0].target = GL_TEXTURE_2D;
+    b.texturing.units[0].texture = half_see_through_texture(128);
+    b.raster.ops.depth_write = c.depth_write;
+    b.raster.ops.blend = true;
+    b.raster.ops.blend_src_rgb = b.raster.ops.blend_src_alpha = GL_SRC_ALPHA;
+    b.raster.ops.blend_dst_rgb = b.raster.ops.blend_dst_alpha = c.blend_dst;
+    b.raster.ops.alpha_test = c.alpha_func != 0;
+    b.raster.ops.alpha_func = c.alpha_func != 0 ? c.alpha_func : GL_ALWAYS;
+    b.raster.ops.alpha_ref = 0.5f;
+    std::shared_ptr<rec::VertexData> quad = textured_wall(1.0f);
+    quad->color = {glm::vec4(1, 1, 1, c.vertex_alpha)};
+    b.draw(quad);
+    SceneBuild build;
+    build_trace_scene(b.record, b.drawable, build);
+    SCOPED_TRACE(c.what);
+    EXPECT_EQ(build.classes[1], c.split ? DrawClass::kSplitByAlpha : DrawClass::kBlended);
+    EXPECT_EQ(build.split_by_alpha[1], c.split ? 1 : 0);
+    EXPECT_EQ(build.traced[1], c.split ? 1 : 0);
+    const bool in_gbuffer_pass =
+        std::count(build.gbuffer_pass.begin(), build.gbuffer_pass.end(), size_t{1}) == 1;
+    EXPECT_EQ(in_gbuffer_pass, c.split);
+    EXPECT_EQ(std::count(build.after_trace.begin(), build.after_trace.end(), size_t{1}), 1);
+    ASSERT_EQ(build.scene.instances.size(), c.split ? 2u : 1u);
+    if (c.split) {
+      EXPECT_EQ(build.scene.instances[1].surface.alpha_func, uint32_t{GL_GEQUAL});
+      EXPECT_FLOAT_EQ(build.scene.instances[1].surface.alpha_ref, 254.5f / 255.0f);
+    }
+  }
 }
 
 TEST(ClassifyKinds, ALightmapPassIsFoldedIntoTheSurfaceForRays) {
