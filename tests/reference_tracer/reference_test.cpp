@@ -115,6 +115,16 @@ void facing_plane(Scene& scene, float z, float extent, const Material& m, int n 
     }
 }
 
+// A box standing on the plane z = lo.z: its top at z = hi.z and four sides (no bottom).
+void add_box(Scene& scene, glm::vec3 lo, glm::vec3 hi, const Material& m) {
+  const float x0 = lo.x, x1 = hi.x, y0 = lo.y, y1 = hi.y, z0 = lo.z, z1 = hi.z;
+  Object& box = scene.add_quad({x0, y0, z1}, {x1, y0, z1}, {x1, y1, z1}, {x0, y1, z1}, m);
+  Scene::append_quad(box, {x0, y0, z0}, {x0, y1, z0}, {x0, y1, z1}, {x0, y0, z1});
+  Scene::append_quad(box, {x1, y0, z0}, {x1, y0, z1}, {x1, y1, z1}, {x1, y1, z0});
+  Scene::append_quad(box, {x0, y0, z0}, {x0, y0, z1}, {x1, y0, z1}, {x1, y0, z0});
+  Scene::append_quad(box, {x0, y1, z0}, {x1, y1, z0}, {x1, y1, z1}, {x0, y1, z1});
+}
+
 Scene base_scene() {
   Scene scene;
   scene.size = kSize;
@@ -271,12 +281,7 @@ Scene lights_and_materials() {
   facing_plane(scene, -5.0f, 3.0f, floor);
   Material green = diffuse({0.25f, 0.75f, 0.25f});
   green.ambient = glm::vec3(0.5f);
-  const float x0 = -1.0f, x1 = 0.0f, y0 = -1.0f, y1 = 0.0f, z0 = -5.0f, z1 = -4.25f;
-  Object& box = scene.add_quad({x0, y0, z1}, {x1, y0, z1}, {x1, y1, z1}, {x0, y1, z1}, green);
-  Scene::append_quad(box, {x0, y0, z0}, {x0, y1, z0}, {x0, y1, z1}, {x0, y0, z1});
-  Scene::append_quad(box, {x1, y0, z0}, {x1, y0, z1}, {x1, y1, z1}, {x1, y1, z0});
-  Scene::append_quad(box, {x0, y0, z0}, {x0, y0, z1}, {x1, y0, z1}, {x1, y0, z0});
-  Scene::append_quad(box, {x0, y1, z0}, {x1, y1, z0}, {x1, y1, z1}, {x0, y1, z1});
+  add_box(scene, {-1.0f, -1.0f, -5.0f}, {0.0f, 0.0f, -4.25f}, green);
   return scene;
 }
 
@@ -308,12 +313,7 @@ TEST(Reference, MaterialsWithoutAlbedo) {
   facing_plane(scene, -5.0f, 1.0f, ambient_only, 2);
   facing_plane(scene, -5.0f, 1.0f, white_shiny, 2, glm::vec3(2.0f, 0.0f, 0.0f));
   Material white = diffuse(glm::vec3(0.75f));
-  const float x0 = -0.5f, x1 = 0.5f, y0 = 0.25f, y1 = 1.0f, z0 = -5.0f, z1 = -4.0f;
-  Object& box = scene.add_quad({x0, y0, z1}, {x1, y0, z1}, {x1, y1, z1}, {x0, y1, z1}, white);
-  Scene::append_quad(box, {x0, y0, z0}, {x0, y1, z0}, {x0, y1, z1}, {x0, y0, z1});
-  Scene::append_quad(box, {x1, y0, z0}, {x1, y0, z1}, {x1, y1, z1}, {x1, y1, z0});
-  Scene::append_quad(box, {x0, y0, z0}, {x0, y0, z1}, {x1, y0, z1}, {x1, y0, z0});
-  Scene::append_quad(box, {x0, y1, z0}, {x1, y1, z0}, {x1, y1, z1}, {x0, y1, z1});
+  add_box(scene, {-0.5f, 0.25f, -5.0f}, {0.5f, 1.0f, -4.0f}, white);
   expect_same_distribution(scene);
 }
 
@@ -348,12 +348,7 @@ TEST(Reference, GrazingSunlight) {
       Light::directional({std::cos(elevation), 0.0f, std::sin(elevation)}, glm::vec3(4.0f)));
   facing_plane(scene, -5.0f, 3.0f, diffuse(glm::vec3(0.75f)));
   Material white = diffuse(glm::vec3(0.75f));
-  const float x0 = 0.5f, x1 = 1.0f, y0 = -1.0f, y1 = 1.0f, z0 = -5.0f, z1 = -4.75f;
-  Object& box = scene.add_quad({x0, y0, z1}, {x1, y0, z1}, {x1, y1, z1}, {x0, y1, z1}, white);
-  Scene::append_quad(box, {x0, y0, z0}, {x0, y1, z0}, {x0, y1, z1}, {x0, y0, z1});
-  Scene::append_quad(box, {x1, y0, z0}, {x1, y0, z1}, {x1, y1, z1}, {x1, y1, z0});
-  Scene::append_quad(box, {x0, y0, z0}, {x0, y0, z1}, {x1, y0, z1}, {x1, y0, z0});
-  Scene::append_quad(box, {x0, y1, z0}, {x1, y1, z0}, {x1, y1, z1}, {x0, y1, z1});
+  add_box(scene, {0.5f, -1.0f, -5.0f}, {1.0f, 1.0f, -4.75f}, white);
   expect_same_distribution(scene);
 }
 
