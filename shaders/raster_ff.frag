@@ -975,9 +975,9 @@ void main() {
   }
 
   if (!alpha_test_passes(color.a, S.alpha_ref.x)) discard;
-  // The part of a draw split by alpha this pass draws (kOpaqueAlpha of fragment_opacity.hpp).
-  if ((kFlags & GLPT_FS_OPAQUE_PART) != 0u && color.a < 254.5 / 255.0) discard;
-  if ((kFlags & GLPT_FS_TRANSLUCENT_PART) != 0u && color.a >= 254.5 / 255.0) discard;
+  // The part of a draw split by alpha this pass draws.
+  if ((kFlags & GLPT_FS_OPAQUE_PART) != 0u && color.a < GLPT_OPAQUE_ALPHA) discard;
+  if ((kFlags & GLPT_FS_TRANSLUCENT_PART) != 0u && color.a >= GLPT_OPAQUE_ALPHA) discard;
 #if GLPT_GBUFFER
   write_gbuffer(color, back, texels);
 #else

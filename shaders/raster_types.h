@@ -156,6 +156,9 @@ using mat4 = glm::mat4;
 // fragments (alpha >= 254.5 / 255), into the G-buffer; only its others, over the trace
 #define GLPT_FS_OPAQUE_PART 64u
 #define GLPT_FS_TRANSLUCENT_PART 128u
+// The alpha from which a fragment of such a draw counts as opaque: an 8-bit alpha of 255,
+// allowing for the filter's rounding.
+#define GLPT_OPAQUE_ALPHA (254.5 / 255.0)
 // bits 8-10: alpha test function (0 off, else GL_NEVER + n - 0x200 + 1); bits 12-13: fog mode
 // (0 off, 1 linear, 2 exp, 3 exp2)
 #define GLPT_SC_FS_ALPHA_FOG 23

@@ -6,6 +6,7 @@
 
 #include "rt_core/record/frame_record.hpp"
 #include "rt_core/record/texture.hpp"
+#include "raster_types.h"
 
 namespace glpt::rt {
 
@@ -21,9 +22,9 @@ bool blending_keeps_an_opaque_fragment(const rec::FragmentOpsState& ops);
 // than GL_REPLACE and GL_MODULATE, depth textures).
 bool fragments_are_opaque(const rec::Draw& draw, const rec::StateSnapshot& state);
 
-// The alpha from which a fragment counts as opaque where a draw is split by alpha (254.5 / 255:
-// an 8-bit alpha of 255, allowing for the filter's rounding).
-inline constexpr float kOpaqueAlpha = 254.5f / 255.0f;
+// The alpha from which a fragment counts as opaque where a draw is split by alpha (the raster
+// shaders' GLPT_OPAQUE_ALPHA).
+inline constexpr float kOpaqueAlpha = static_cast<float>(GLPT_OPAQUE_ALPHA);
 
 // Whether a blended draw can be split by its fragments' alpha (path-traced mode,
 // docs/classification.md): traced where its fragments are opaque, blended where they are not.
