@@ -24,12 +24,17 @@ void ClassifyLog::write(const FrameClassification& classification) {
   if (fd_ < 0) return;
   text_.clear();
   char line[160];
-  for (const CommandLabel& label : classification.labels) {
+  for (size_t i = 0; i < classification.labels.size(); ++i) {
+    const CommandLabel& label = classification.labels[i];
     if (label.kind == DrawKind::kNone || label.calls == 0) continue;
+    // A blended draw traced where its fragments are opaque says so (DrawClass::kSplitByAlpha).
+    const bool split =
+        i < classification.classes.size() && classification.classes[i] == DrawClass::kSplitByAlpha;
     const int n = std::snprintf(line, sizeof line,
                                 "{\"frame\": %" PRIu64 ", \"class\": \"%s\", \"calls\": %" PRIu32
-                                ", \"id\": %" PRIu64 "}\n",
-                                frame_, draw_kind_name(label.kind), label.calls, label.id);
+                                ", \"id\": %" PRIu64 "%s}\n",
+                                frame_, draw_kind_name(label.kind), label.calls, label.id,
+                                split ? ", \"split_by_alpha\": true" : "");
     if (n > 0) text_.append(line, static_cast<size_t>(n));
   }
   // One write per record, straight to the file: a program killed at any moment (SIGTERM ends

@@ -3,14 +3,18 @@
 #include "rt_core/scene/classify.hpp"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <cstdlib>
+#include <fstream>
 #include <glm/gtc/matrix_transform.hpp>
 #include <set>
 #include <string>
 #include <vector>
 
 #include "record_builder.hpp"
+#include "rt_core/scene/classify_log.hpp"
 #include "rt_core/scene/draw_identity.hpp"
 #include "rt_core/scene/scene_builder.hpp"
 
@@ -438,6 +442,27 @@ TEST(ClassifyKinds, ABlendedSolidWithSeeThroughTexelsIsSplitByAlpha) {
       EXPECT_EQ(build.scene.instances[1].surface.alpha_func, uint32_t{GL_GEQUAL});
       EXPECT_FLOAT_EQ(build.scene.instances[1].surface.alpha_ref, 254.5f / 255.0f);
     }
+    // GLPT_CLASSIFY_LOG says which blended draws are split.
+    FrameClassification classification;
+    classify_frame(b.record, b.drawable, nullptr, classification);
+    char path[] = "/tmp/glpt_classify_log_XXXXXX";
+    const int fd = ::mkstemp(path);
+    ASSERT_GE(fd, 0);
+    ::close(fd);
+    {
+      std::string error;
+      ClassifyLog log(path, &error);
+      ASSERT_TRUE(error.empty()) << error;
+      log.write(classification);
+    }
+    std::ifstream in(path);
+    std::string wall, blended;
+    std::getline(in, wall);
+    std::getline(in, blended);
+    ::unlink(path);
+    EXPECT_EQ(wall.find("split_by_alpha"), std::string::npos) << wall;
+    EXPECT_NE(blended.find("\"class\": \"blended\""), std::string::npos) << blended;
+    EXPECT_EQ(blended.find("\"split_by_alpha\": true") != std::string::npos, c.split) << blended;
   }
 }
 
