@@ -70,6 +70,10 @@ bool blends_visibly(const rec::Draw& draw, const rec::StateSnapshot& state) {
   return !(blending_keeps_an_opaque_fragment(ops) && fragments_are_opaque(draw, state));
 }
 
+bool writes_all_channels(const rec::FragmentOpsState& ops) {
+  return ops.color_write[0] && ops.color_write[1] && ops.color_write[2] && ops.color_write[3];
+}
+
 // Everything about a draw that makes it traceable except its camera.
 DrawClass classify_ignoring_camera(const rec::Draw& draw, const rec::StateSnapshot& state,
                                    const rec::DrawableConfig& drawable) {
@@ -81,9 +85,7 @@ DrawClass classify_ignoring_camera(const rec::Draw& draw, const rec::StateSnapsh
     return DrawClass::kUnfilled;
   const rec::FragmentOpsState& ops = state.raster->ops;
   if (blends_visibly(draw, state)) return DrawClass::kBlended;
-  const bool all_channels =
-      ops.color_write[0] && ops.color_write[1] && ops.color_write[2] && ops.color_write[3];
-  if (!all_channels ||
+  if (!writes_all_channels(ops) ||
       resolve_draw_buffer(ops.draw_buffer, drawable.double_buffered) == ColorTargets::kNone)
     return DrawClass::kMaskedColor;
   return DrawClass::kTraced;
@@ -469,9 +471,9 @@ void find_sky(const rec::FrameRecord& record, const MainCamera& camera,
               std::vector<DrawClass>& classes) {
   // The run of unlit draws without depth writes or test before the first traced draw (their
   // union must hold the eye: six faces of a box each do not), draws at the far plane or behind
-  // the main camera's depth range, and, after
-  // the world, an unlit box centred on the eye around everything drawn before it. Draws under
-  // the main camera's view with other near and far planes count as the main camera's here.
+  // the main camera's depth range, and, after the world, an unlit box centred on the eye around
+  // everything drawn before it. Draws under the main camera's view with other near and far
+  // planes count as the main camera's here.
   std::vector<size_t> run;
   EyeBounds run_bounds, world;
   bool world_started = false;
@@ -708,9 +710,7 @@ void classify_frame(const rec::FrameRecord& record, const rec::DrawableConfig& d
         label.kind = DrawKind::kBlended;
         // A solid object with see-through texels (windows, cut-out edges) under the main
         // camera: traced where its fragments are opaque, blended over the trace elsewhere.
-        const bool all_channels =
-            ops.color_write[0] && ops.color_write[1] && ops.color_write[2] && ops.color_write[3];
-        if (cls == DrawClass::kBlended && out.camera.valid && all_channels &&
+        if (cls == DrawClass::kBlended && out.camera.valid && writes_all_channels(ops) &&
             same_camera(camera_of(state), {out.camera.projection, out.camera.viewport}) &&
             !own_depth_range && splits_by_alpha(*draw, state))
           cls = DrawClass::kSplitByAlpha;

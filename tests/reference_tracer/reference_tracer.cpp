@@ -820,9 +820,8 @@ class Tracer {
   // the albedo is below 1/1000 but GL's ambient or diffuse colour is not, the diffuse light is
   // radiance as it is; GL's ambient term is dropped where both are below 1/1000).
   dvec3 trace_path(const Surface& first, Rng& rng) const {
-    dvec3 radiance(0.0);  // beyond the primary vertex's lobes: per unit of its reflectance
-    Lobes primary;        // the primary vertex's light, per lobe, per unit of reflectance
-    dvec3 ambient(0.0);   // GL's ambient term at the primary vertex (radiance)
+    Lobes primary;       // the path's light by the primary vertex's lobe, per unit of reflectance
+    dvec3 ambient(0.0);  // GL's ambient term at the primary vertex (radiance)
     int first_lobe = kDiffuse;
     const Bsdf material = material_bsdf(dvec3(first.material.diffuse),
                                         dvec3(first.material.specular), first.material.shininess);
@@ -922,6 +921,7 @@ class Tracer {
       to_viewer = -direction;
     }
     // The composite pass's reflectances.
+    dvec3 radiance(0.0);
     for (int c = 0; c < 3; ++c) {
       const double albedo = material.diffuse[c];
       const bool raw = albedo < 1e-3 && std::max(double(first.material.ambient[c]),
