@@ -59,7 +59,9 @@ struct DenoiseSettings {
   float fast_alpha = 0.7f;
   // Once a still image has accumulated this many samples per pixel the accumulated average is
   // shown and the denoiser no longer runs (GLPT_DENOISE_UNTIL); before, the two are mixed.
-  uint32_t until_samples = 64;
+  // 32: with stratified samples (trace/rng.h) the average of 32 has a lower error than the
+  // mixed image at 64 before them (docs/denoiser.md).
+  uint32_t until_samples = 32;
   // GLPT_DENOISE_VERTEX_MOTION: a deformed surface (a refit BLAS) reprojects each pixel through
   // its triangle's previous vertices, not through its draw's transform alone; 0: off (A/B).
   bool vertex_motion = true;

@@ -181,7 +181,7 @@ const uint kMaxOcclusionRays = GLPT_MAX_STATE_LIGHTS + 2u;
 // cosine-distributed ray from `s`, blocked by an occluder within the fixed radius frame.params.x
 // or, when that is 0, within the occluder's own size: a box occludes the floor it stands on
 // within about a box's width, whatever else is in the scene. `brings`: the ambient term.
-bool ambient_ray(Surface s, inout uint rng, vec3 brings, out OcclusionRay ray) {
+bool ambient_ray(Surface s, inout Sampler rng, vec3 brings, out OcclusionRay ray) {
   ray.direction = sample_cosine_hemisphere(s.normal, next_random2(rng));
   ray.t_max = frame.params.x > 0.0 ? frame.params.x : kUnboundedRay;
   ray.cull_mask = GLPT_MASK_VISIBLE;
@@ -195,7 +195,7 @@ bool ambient_ray(Surface s, inout uint rng, vec3 brings, out OcclusionRay ray) {
 // `choice`: the direction and what it brings through each lobe, MIS-weighted against BSDF
 // sampling when a bounce ray will also be traced from `s` (`mis`). False: nothing to bring.
 bool light_ray(Surface s, Bsdf bsdf, Basis basis, vec3 v, LightChoice choice, uint i, bool mis,
-               inout uint rng, out OcclusionRay ray) {
+               inout Sampler rng, out OcclusionRay ray) {
   ray.ambient = false;
   ray.diffuse = vec3(0.0);
   ray.specular = vec3(0.0);
@@ -235,7 +235,7 @@ bool light_ray(Surface s, Bsdf bsdf, Basis basis, vec3 v, LightChoice choice, ui
 
 // Next-event estimation of one emissive triangle (emitters.h) at `s`, MIS-weighted against BSDF
 // sampling when a bounce ray will also be traced (`mis`). False: nothing to bring.
-bool emitter_ray(Surface s, Bsdf bsdf, Basis basis, vec3 v, bool mis, inout uint rng,
+bool emitter_ray(Surface s, Bsdf bsdf, Basis basis, vec3 v, bool mis, inout Sampler rng,
                  out OcclusionRay ray) {
   ray.ambient = false;
   ray.diffuse = vec3(0.0);
@@ -300,7 +300,7 @@ Bsdf unit_reflectance_bsdf(Bsdf material, bool specular_material, out float spec
 // The light of the path starting at the G-buffer surface `first` towards the viewer, by
 // channel, per unit of the primary vertex's reflectance. An unlit `first` (GLPT_UNLIT=ao) traces
 // its ambient-occlusion ray only: ambient.r is its visibility.
-Channels trace_path(Surface first, inout uint rng) {
+Channels trace_path(Surface first, inout Sampler rng) {
   Channels c;
   c.direct = vec3(0.0);
   c.indirect = vec3(0.0);
@@ -584,7 +584,8 @@ void main() {
         if (parity) {
           c = lighting_gl(s);
         } else {
-          uint rng = sample_seed(pixel_index, frame.image.w, frame.sampling.x + k);
+          Sampler rng = make_sampler(pixel_index, frame.options.w + k, frame.image.w,
+                                     frame.sampling.x + k);
           c = trace_path(s, rng);
         }
         // A non-finite sample (a degenerate transform or triangle) would poison the pixel for

@@ -304,7 +304,8 @@ struct FrameUniforms {
   // pixel spans at the main camera (ray cones' spread, for texture levels at bounce hits)
   vec4 params;
   // x: GLPT_OPTION_* bits, y: GLPT_LIGHT_CHOICE_*, z: emitters in the emitter table (0: none
-  // emits), w: unused
+  // emits), w: the Sobol sample number of this pass's first sample (trace/rng.h): the frame's
+  // index times its samples, plus the samples of the same frame traced before (a reference)
   uvec4 options;
   vec4 environment;  // rgb: radiance of rays that miss (GLPT_OPTION_ENVIRONMENT), a: unused
   // GLPT_SCALE below 1 (path_trace.comp's grid and fill passes): x, y: the coarse grid's cells

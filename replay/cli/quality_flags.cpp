@@ -72,7 +72,7 @@ constexpr std::array kFlags = {
     QualityFlag{"--denoise-fast-alpha", "GLPT_DENOISE_FAST_ALPHA", FlagValue::kNumber, "A",
                 "weight of a new frame in the fast average (default 0.7)"},
     QualityFlag{"--denoise-until", "GLPT_DENOISE_UNTIL", FlagValue::kCount, "N",
-                "a still image shows its accumulated average from N samples on (default 64)"},
+                "a still image shows its accumulated average from N samples on (default 32)"},
     QualityFlag{"--no-denoise-vertex-motion", "GLPT_DENOISE_VERTEX_MOTION", FlagValue::kNone, "0",
                 "deformed surfaces reproject through their draw's transform only, not through "
                 "their triangles' previous vertices (A/B)"},

@@ -170,6 +170,18 @@ uint32_t PathTracer::samples_of_next_pass() const {
   return std::min(per_pass, target - std::min(accumulated_samples_, target));
 }
 
+uint32_t PathTracer::sobol_sample_number() const {
+  // Each frame index owns a run of sample numbers as long as its samples, so a pixel's samples
+  // are consecutive points of its sequence from frame to frame (accumulation and the denoiser's
+  // history average consecutive points), and a replayed frame gets the same numbers whichever
+  // frames were rendered before it. A reference traces its samples in several passes of one
+  // frame: those count on within the run. (32 bits wrap after 4 billion samples: harmless.)
+  const uint64_t frame = seeded_by_frame_index_ ? seed_frame_index_ : frame_number_;
+  const bool reference = settings_.reference_samples > 0;
+  const uint64_t run = reference ? settings_.reference_samples : settings_.samples_per_pixel;
+  return static_cast<uint32_t>(frame * run + (reference ? accumulated_samples_ : 0u));
+}
+
 glm::vec2 PathTracer::jitter_of_next_pass() const {
   if (accumulated_samples_ == 0 || frame_samples_ == 0) return glm::vec2(0.0f);
   return glm::vec2(halton(accumulated_passes_, 2), halton(accumulated_passes_, 3)) - 0.5f;
@@ -526,7 +538,8 @@ void PathTracer::trace(const TraceScene& scene, const TraceTargets& targets, Fra
                               scene.pixel_spread);
   uniforms.options = glm::uvec4(options_bits(settings_) | (any_sky ? GLPT_OPTION_SKY : 0u) |
                                     (denoise ? GLPT_OPTION_DENOISE_TILES : 0u),
-                                static_cast<uint32_t>(settings_.light_choice), emitter_count, 0u);
+                                static_cast<uint32_t>(settings_.light_choice), emitter_count,
+                                sobol_sample_number());
   uniforms.environment = scene.clear_color;
   // GLPT_SCALE: the coarse grid the trace pass traces (none for the reference, whose every
   // pixel is traced); which pixel of each cell moves from frame to frame along a Halton sequence.

@@ -119,6 +119,8 @@ class PathTracer {
   // The samples per pixel of the next pass: GLPT_SPP, or a reference's share.
   uint32_t samples_of_next_pass() const;
   glm::vec2 jitter_of_next_pass() const;
+  // The Sobol sample number of the next pass's first sample (FrameUniforms::options.w).
+  uint32_t sobol_sample_number() const;
   // lavapipe's TLAS builder, like its BLAS builder, splits the instance *index* range, and GL
   // draw order is not spatial: put instances in Morton order of their bounds' centres. The
   // instance table order (instanceCustomIndex) is unaffected.
