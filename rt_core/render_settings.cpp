@@ -95,6 +95,7 @@ RenderSettings parse_render_settings(const std::function<const char*(const char*
       [](const char* text) { return parse_uint(text, 0, kMaxBounces); }, "0..16");
   apply("GLPT_ACCUMULATE", settings.accumulate, parse_bool, "0 or 1");
   apply("GLPT_BLAS_REFIT", settings.blas_refit, parse_bool, "0 or 1");
+  apply("GLPT_BLUE_NOISE", settings.blue_noise, parse_bool, "0 or 1");
   apply(
       "GLPT_MAX_SPP", settings.max_accumulated,
       [](const char* text) { return parse_uint(text, 1, kMaxAccumulated); }, "1..16777216");

@@ -97,6 +97,10 @@ struct RenderSettings {
   // GLPT_REFERENCE=N: every frame is rendered with N samples per pixel (jittered over the pixel),
   // from scratch: the ground truth for accuracy measurements. 0: off.
   uint32_t reference_samples = 0;
+  // GLPT_BLUE_NOISE=1: neighbouring pixels' sample points spread apart by a blue-noise mask
+  // (shaders/trace/rng.h); by default each pixel's points are scrambled on their own.
+  // Opt-in: measured in docs/light-transport.md, "Sample numbers", with what keeps it so.
+  bool blue_noise = false;
   // A deforming object's BLAS refit to its new positions (BlasCache); GLPT_BLAS_REFIT=0 builds
   // each new shape anew (for measurements).
   bool blas_refit = true;

@@ -38,6 +38,9 @@ layout(std430, set = 0, binding = GLPT_PT_BINDING_LIGHTS) readonly buffer LightT
 layout(std430, set = 0, binding = GLPT_PT_BINDING_EMITTERS) readonly buffer EmitterTable {
   GpuEmitter emitters[];
 };
+layout(std430, set = 0, binding = GLPT_PT_BINDING_BLUE_NOISE) readonly buffer BlueNoise {
+  uint blue_noise_mask[];
+};
 layout(std430, set = 0, binding = GLPT_PT_BINDING_CLIP_PLANES) readonly buffer ClipPlaneTable {
   GpuClipPlanes clip_planes[];
 };
@@ -584,7 +587,7 @@ void main() {
         if (parity) {
           c = lighting_gl(s);
         } else {
-          Sampler rng = make_sampler(pixel_index, frame.options.w + k, frame.image.w,
+          Sampler rng = make_sampler(pixel, pixel_index, frame.options.w + k, frame.image.w,
                                      frame.sampling.x + k);
           c = trace_path(s, rng);
         }

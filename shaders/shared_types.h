@@ -34,6 +34,9 @@ using mat4 = glm::mat4;
 #define GLPT_PT_BINDING_TEXTURES_CUBE 18  // samplerCube[GLPT_TRACE_TEXTURES_OTHER]
 // The denoiser's tile list (GLPT_DN_BINDING_TILES), filled under GLPT_OPTION_DENOISE_TILES.
 #define GLPT_PT_BINDING_DENOISE_TILES 19
+// uint[64 x 64]: the blue-noise masks that offset each pixel's sample points (trace/rng.h)
+#define GLPT_PT_BINDING_BLUE_NOISE 20
+#define GLPT_BLUE_NOISE_SIZE 64
 
 // Emissive triangles next-event estimation samples in one frame (docs/light-transport.md); the
 // emission of instances beyond them is found by bounces only.
@@ -287,6 +290,8 @@ struct GpuTraceState {
 #define GLPT_OPTION_SKY 64u          // the frame has sky instances (GLPT_MASK_SKY)
 // The denoiser filters this frame: list the tiles it filters (GLPT_PT_BINDING_DENOISE_TILES)
 #define GLPT_OPTION_DENOISE_TILES 128u
+// Pixels share their sample points, offset by a blue-noise mask (trace/rng.h; GLPT_BLUE_NOISE)
+#define GLPT_OPTION_BLUE_NOISE 256u
 // FrameUniforms::options.y: how one light of a surface's lights is chosen per sample
 #define GLPT_LIGHT_CHOICE_CONTRIBUTION 0u  // in proportion to its estimated contribution
 #define GLPT_LIGHT_CHOICE_UNIFORM 1u       // uniformly (for comparison)

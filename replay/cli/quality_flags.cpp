@@ -45,6 +45,9 @@ constexpr std::array kFlags = {
                 "do not average frames while nothing changes"},
     QualityFlag{"--no-blas-refit", "GLPT_BLAS_REFIT", FlagValue::kNone, "0",
                 "build a deforming object's BLAS anew every frame instead of refitting it"},
+    QualityFlag{"--blue-noise", "GLPT_BLUE_NOISE", FlagValue::kNone, "1",
+                "pixels share their sample points, offset by a blue-noise mask (less noise in "
+                "one denoised frame; see docs/light-transport.md)"},
     QualityFlag{"--max-spp", "GLPT_MAX_SPP", FlagValue::kCount, "N",
                 "stop accumulating at N samples per pixel"},
     QualityFlag{"--light-size-deg", "GLPT_LIGHT_SIZE_DEG", FlagValue::kNumber, "D",

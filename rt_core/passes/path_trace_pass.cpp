@@ -35,6 +35,7 @@ constexpr VkDescriptorSetLayoutBinding kBindings[] = {
     compute_binding(GLPT_PT_BINDING_TEXTURES_CUBE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
                     GLPT_TRACE_TEXTURES_OTHER),
     compute_binding(GLPT_PT_BINDING_DENOISE_TILES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
+    compute_binding(GLPT_PT_BINDING_BLUE_NOISE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
 };
 static_assert(GLPT_GBUFFER_ATTACHMENTS == 4 && GLPT_CHANNELS == 3);
 
@@ -60,6 +61,7 @@ void PathTracePass::record(VkCommandBuffer cmd, const PathTraceResources& resour
   const VkDescriptorBufferInfo states = whole(resources.states);
   const VkDescriptorBufferInfo counters = whole(resources.counters);
   const VkDescriptorBufferInfo denoise_tiles = whole(resources.denoise_tiles);
+  const VkDescriptorBufferInfo blue_noise = whole(resources.blue_noise);
   const VkDescriptorBufferInfo frame{resources.frame->handle(), 0, sizeof(gpu::FrameUniforms)};
   VkDescriptorImageInfo images[GLPT_GBUFFER_ATTACHMENTS + GLPT_CHANNELS];
   for (uint32_t i = 0; i < GLPT_GBUFFER_ATTACHMENTS; ++i)
@@ -84,6 +86,7 @@ void PathTracePass::record(VkCommandBuffer cmd, const PathTraceResources& resour
       storage_buffer_write(set, GLPT_PT_BINDING_STATES, &states),
       storage_buffer_write(set, GLPT_PT_BINDING_COUNTERS, &counters),
       storage_buffer_write(set, GLPT_PT_BINDING_DENOISE_TILES, &denoise_tiles),
+      storage_buffer_write(set, GLPT_PT_BINDING_BLUE_NOISE, &blue_noise),
       uniform_buffer_write(set, GLPT_PT_BINDING_FRAME, &frame),
       storage_image_write(set, GLPT_PT_BINDING_GBUFFER + 0, &images[0]),
       storage_image_write(set, GLPT_PT_BINDING_GBUFFER + 1, &images[1]),

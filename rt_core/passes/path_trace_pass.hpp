@@ -22,6 +22,7 @@ struct PathTraceResources {
   const GpuBuffer* counters = nullptr;       // gpu::GpuCounters, zeroed by the caller
   const GpuBuffer* frame = nullptr;          // gpu::FrameUniforms
   const GpuBuffer* denoise_tiles = nullptr;  // the denoiser's tile list (GLPT_DN_BINDING_TILES)
+  const GpuBuffer* blue_noise = nullptr;     // kBlueNoiseMask (GLPT_PT_BINDING_BLUE_NOISE)
   std::array<VkImageView, 4> gbuffer{};      // gbuffer_layout.h attachments
   std::array<VkImageView, GLPT_CHANNELS> channels{};  // written
   // Combined image samplers of the texture tables, one per target (every entry valid: dummies

@@ -14,6 +14,7 @@
 #include "common/stopwatch.hpp"
 #include "gbuffer_layout.h"
 #include "rt_core/accel/morton_sort.hpp"
+#include "rt_core/passes/blue_noise_mask.hpp"
 #include "rt_core/raster/sampler_setup.hpp"
 #include "rt_core/vk/gpu_buffer.hpp"
 #include "shared_types.h"
@@ -70,6 +71,7 @@ uint32_t options_bits(const RenderSettings& settings) {
   if (settings.unlit == UnlitPolicy::kAo) bits |= GLPT_OPTION_UNLIT_AO;
   if (settings.unlit == UnlitPolicy::kEmit) bits |= GLPT_OPTION_UNLIT_EMIT;
   if (settings.environment == Environment::kClear) bits |= GLPT_OPTION_ENVIRONMENT;
+  if (settings.blue_noise) bits |= GLPT_OPTION_BLUE_NOISE;
   return bits;
 }
 
@@ -118,6 +120,10 @@ PathTracer::PathTracer(const RenderSettings& settings, std::shared_ptr<VulkanDev
       GpuBuffer::create(*device_, sizeof(gpu::GpuCounters), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   no_denoise_tiles_ = GpuBuffer::create(*device_, (GLPT_DN_TILES_HEADER + 2) * sizeof(uint32_t),
                                         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  static_assert(kBlueNoiseMask.size() == GLPT_BLUE_NOISE_SIZE * GLPT_BLUE_NOISE_SIZE);
+  blue_noise_ =
+      GpuBuffer::create(*device_, sizeof(kBlueNoiseMask), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  blue_noise_.write(kBlueNoiseMask.data(), sizeof(kBlueNoiseMask));
 }
 
 std::unique_ptr<PathTracer> PathTracer::create(std::shared_ptr<VulkanDevice> device,
@@ -587,6 +593,7 @@ void PathTracer::trace(const TraceScene& scene, const TraceTargets& targets, Fra
   trace.counters = &counters_;
   trace.frame = &frame_uniforms_;
   trace.denoise_tiles = denoise ? &denoiser_.tiles() : &no_denoise_tiles_;
+  trace.blue_noise = &blue_noise_;
   // Unused slots of the texture tables sample a white dummy of their target (the shader never
   // indexes them; dummy_view takes TextureCache's kinds: 1-D, 2-D, 3-D, cube).
   auto fill = [&](std::span<VkDescriptorImageInfo> out, uint32_t target, uint32_t dummy_kind) {

@@ -153,6 +153,7 @@ class PathTracer {
   std::array<GpuImage, GLPT_CHANNELS> channels_;  // this frame's radiance (trace -> composite)
   uint32_t channels_width_ = 0, channels_height_ = 0;
   GpuBuffer frame_uniforms_;
+  GpuBuffer blue_noise_;  // kBlueNoiseMask, written once
   GpuBuffer counters_;
   GpuBuffer instance_table_;
   GpuBuffer lights_;
