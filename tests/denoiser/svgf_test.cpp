@@ -508,6 +508,37 @@ TEST(Svgf, AMovingObjectTheCameraFollowsKeepsItsHistory) {
   EXPECT_LE(box_moving * 1.5, box_first);  // measured 2.0x
 }
 
+TEST(Svgf, BlueNoiseOffsetsLowerTheErrorOfAFrameWithoutHistory) {
+  // GLPT_BLUE_NOISE=1 (shaders/trace/rng.h): neighbouring pixels' sample points spread apart,
+  // so the a-trous filter averages stratified samples. Its gain shows where no history helps:
+  // the first frame (a camera cut, a disocclusion), most over the box, whose light is noisy
+  // (over the whole image the filter's blur of the shadows weighs more).
+  const SceneOptions still;
+  const std::vector<uint8_t> ref = reference(still);
+  std::vector<uint8_t> box_mask(size_t(kSize) * kSize, 0);
+  for (size_t i = 0; i < box_mask.size(); ++i) box_mask[i] = ref[4 * i] > ref[4 * i + 1] + 30;
+  auto first_frame = [&](Settings extra) {
+    return render(with(kOneSample, extra), 1, [&](int) { return still; }).back();
+  };
+  const std::vector<uint8_t> white = first_frame({}),
+                             blue = first_frame({{"GLPT_BLUE_NOISE", "1"}}),
+                             white_raw = first_frame({{"GLPT_DENOISER", "off"}}),
+                             blue_raw =
+                                 first_frame({{"GLPT_BLUE_NOISE", "1"}, {"GLPT_DENOISER", "off"}});
+  keep("blue_noise_first", blue);
+  const double box_white = rel_mse(white, ref, &box_mask), box_blue = rel_mse(blue, ref, &box_mask);
+  const double all_white = rel_mse(white, ref), all_blue = rel_mse(blue, ref);
+  const double raw_white = rel_mse(white_raw, ref), raw_blue = rel_mse(blue_raw, ref);
+  std::printf(
+      "first frame, blue noise: relMSE over the box %.5f -> %.5f, whole image %.5f -> %.5f, raw "
+      "%.5f -> %.5f\n",
+      box_white, box_blue, all_white, all_blue, raw_white, raw_blue);
+  // The samples are as random one by one: the raw frame's error stays what it was.
+  EXPECT_LE(raw_blue, 1.2 * raw_white);
+  EXPECT_LE(box_blue * 1.4, box_white);
+  EXPECT_LE(all_blue, all_white);
+}
+
 // Frames from the change at frame `change` until the error against the new reference is back at
 // its steady level `steady`, up to 1 % of `stale` (the error of still showing the old image):
 // the residue of an exponential history. A fixed alpha of 0.2 keeps 0.8^n of the step, whose
