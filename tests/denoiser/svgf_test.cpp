@@ -369,6 +369,10 @@ TEST(Svgf, AStillSceneUnderAccumulationShowsTheAverageOfItsDenoisedFrames) {
       flip(raw_average.back(), ref).mean);
   EXPECT_LE(mse_averaged * 2.0, mse_single);
   EXPECT_LE(mse_averaged * 1.5, mse_raw_average);
+  // A pixel's samples are stratified over frames (shaders/trace/rng.h): 16 of them average to
+  // about 1/50 of one sample's relMSE, where independent numbers reach 1/16 (measured 1/15) and
+  // numbers that repeat from frame to frame 1/1.
+  EXPECT_LE(mse_raw_average * 25.0, rel_mse(raw_average.front(), ref));
 }
 
 TEST(Svgf, SpecularLightIsFilteredWhereASurfaceReflectsIt) {
