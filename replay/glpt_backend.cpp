@@ -119,7 +119,7 @@ class GlptBackend final : public Backend {
       if (ctx->output) {
         const rt::FrameStats& s = ctx->output->last_frame_stats();
         last_render_ms_ = s.upload_ms + s.raster_ms + s.blas_ms + s.tlas_ms + s.trace_ms +
-                          s.denoise_ms + s.composite_ms + s.readback_ms;
+                          s.denoise_ms + s.composite_ms + s.taa_ms + s.readback_ms;
       }
     }
     return true;

@@ -15,6 +15,7 @@ struct FrameStats {
   // Path-traced mode: the denoiser's passes, and the composite pass (in trace_ms when the
   // denoiser did not run: trace and composite are then one submission).
   double denoise_ms = 0, composite_ms = 0;
+  double taa_ms = 0;      // temporal anti-aliasing (TemporalAaPass)
   uint32_t denoised = 0;  // frames (records) whose samples the denoiser filtered
   // The 32x8-pixel tiles it filtered (those with a pixel the tracer shaded: the rest it skips).
   uint32_t denoised_tiles = 0;
@@ -71,6 +72,7 @@ struct FrameStats {
     raster_ms += s.raster_ms;
     denoise_ms += s.denoise_ms;
     composite_ms += s.composite_ms;
+    taa_ms += s.taa_ms;
     denoised += s.denoised;
     denoised_tiles += s.denoised_tiles;
     classify_ms += s.classify_ms;

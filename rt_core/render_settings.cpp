@@ -155,6 +155,11 @@ RenderSettings parse_render_settings(const std::function<const char*(const char*
       [](const char* text) { return parse_uint(text, 0, kMaxAccumulated); }, "0..16777216");
   apply("GLPT_DENOISE_VERTEX_MOTION", denoise.vertex_motion, parse_bool, "0 or 1");
   apply("GLPT_DENOISE_MEAN_VARIANCE", denoise.mean_variance, parse_bool, "0 or 1");
+  apply("GLPT_TAA", denoise.taa, parse_bool, "0 or 1");
+  apply("GLPT_TAA_ALPHA", denoise.taa_alpha, fraction, "0.01..1");
+  apply(
+      "GLPT_TAA_GAMMA", denoise.taa_gamma,
+      [](const char* text) { return parse_float(text, 0.1f, 100.0f); }, "0.1..100");
   if (const char* path = lookup("GLPT_CLASSIFY_LOG"); path != nullptr && *path != '\0')
     settings.classify_log = path;
   const auto set = [&](const char* name) {

@@ -70,6 +70,13 @@ struct DenoiseSettings {
   // a / (2 - a) of it once the history averages exponentially), not of one sample as in the
   // 2017 paper (0): the filter blurs less where the history is long (docs/denoiser.md).
   bool mean_variance = true;
+  // GLPT_TAA: temporal anti-aliasing after the composite (the SVGF paper's last stage): frames
+  // the denoiser runs on are jittered and blended with their reprojected history, weight
+  // GLPT_TAA_ALPHA for a new frame, the history clipped to GLPT_TAA_GAMMA standard deviations
+  // of the 3x3 neighbourhood (Karis 2014, Salvi 2016; docs/denoiser.md, "Anti-aliasing").
+  bool taa = true;
+  float taa_alpha = 0.3f;
+  float taa_gamma = 1.0f;
 };
 
 struct RenderSettings {

@@ -115,9 +115,16 @@ using mat4 = glm::mat4;
 // 1, 1), [3] unused, then per tile a flag (1 once listed), then the list. Pixels of tiles not
 // listed keep their guides of an earlier frame: a guide's frame stamp (DenoiseGuide) tells.
 #define GLPT_DN_BINDING_TILES 18
+// Where each pixel the temporal pass filtered shows its point in the previous frame, for the
+// temporal anti-aliasing pass: rgba32ui, xy the previous frame's pixel position (float bits;
+// centres at whole numbers, as the history taps are read), z this frame's stamp (DenoiseGuide's)
+// << 8 | the denoiser's history length (1: disoccluded or no identity; short after a clamp
+// against stale light), w the depth (-eye z, float bits). A texel with another stamp (an
+// earlier frame's, a tile not listed) is no motion of this frame.
+#define GLPT_DN_BINDING_MOTION 19
 #define GLPT_DN_TILES_HEADER 4u
 #define GLPT_DN_SLOTS 3
-#define GLPT_DN_WORK_LAYERS 2u  // per slot
+#define GLPT_DN_WORK_LAYERS 2u   // per slot
 #define GLPT_DN_HISTORY_SLOTS 2  // slots GLPT_DN_SLOTS and GLPT_DN_SLOTS + 1
 #define GLPT_DN_HISTORY_LAYERS 2u
 #define GLPT_DN_MOMENT_LAYERS 2u
@@ -135,6 +142,22 @@ using mat4 = glm::mat4;
 // The a-trous filter takes the variance of the integrated colour, not of one sample (the 2017
 // paper's): GLPT_DENOISE_MEAN_VARIANCE.
 #define GLPT_DN_MEAN_VARIANCE 32u
+
+// temporal_aa.comp (rt_core/passes/temporal_aa_pass.hpp), set 0: the last stage of the SVGF
+// pipeline, over the colour buffer the composite pass wrote.
+#define GLPT_TAA_BINDING_UNIFORMS 0          // uniform TemporalAaUniforms
+#define GLPT_TAA_BINDING_COLOUR 1            // the colour buffer (BGRA8 storage image)
+#define GLPT_TAA_BINDING_HISTORY 2           // this frame's history: rgba16f, rgb colour, a length
+#define GLPT_TAA_BINDING_HISTORY_PREVIOUS 3  // the previous frame's
+#define GLPT_TAA_BINDING_MOTION 4            // the denoiser's GLPT_DN_BINDING_MOTION
+// TemporalAaUniforms::image.z flags
+#define GLPT_TAA_HISTORY_VALID 1u  // the previous frame's history belongs to this drawable and size
+// The composite showed an accumulated average (a still scene): it is the image, already
+// anti-aliased; the history takes it as it is, so that a motion continues from it.
+#define GLPT_TAA_TAKE_CURRENT 2u
+// temporal_aa.comp's push constant: its two dispatches.
+#define GLPT_TAA_RESOLVE 0u     // blend the colour with the reprojected history into the history
+#define GLPT_TAA_WRITE_BACK 1u  // the history into the colour buffer
 
 // ---- radiance channels -----------------------------------------------------------------------
 // What the trace pass writes per pixel (RGBA32F, this frame's samples averaged; linear HDR
@@ -334,7 +357,7 @@ struct GpuStateHistory {
 // a-trous filter reads it at every tap, and decoding the G-buffer's octahedral normal there took
 // half of an iteration's time on lavapipe.
 struct DenoiseGuide {
-  vec4 eye;    // xyz: eye-space position; w: the normal's z
+  vec4 eye;  // xyz: eye-space position; w: the normal's z
   // x: history id (0: no denoised surface here), y: history length in frames (bits 0-7) and the
   // stamp of the frame that wrote the guide (bits 8-31, never 0: DenoiseUniforms::slots.z; the
   // passes skip the tiles without a filtered pixel, whose guides stay as an earlier frame wrote
@@ -363,6 +386,14 @@ struct DenoiseUniforms {
   uvec4 slots;
 };
 
+struct TemporalAaUniforms {
+  // x, y: image size, z: GLPT_TAA_* flags, w: this frame's denoiser stamp (GLPT_DN_BINDING_MOTION)
+  uvec4 image;
+  // x: weight of a new frame at an edge (GLPT_TAA_ALPHA), y: clip box half-width in standard
+  // deviations of the 3x3 neighbourhood (GLPT_TAA_GAMMA), zw: unused
+  vec4 params;
+};
+
 struct GpuCounters {
   // x: rays traced this frame (shadow + bounce + AO), y: non-finite samples dropped, zw: unused
   uvec4 rays;
@@ -382,6 +413,7 @@ static_assert(sizeof(GpuCounters) == 16);
 static_assert(sizeof(GpuStateHistory) == 160);
 static_assert(sizeof(DenoiseGuide) == 32);
 static_assert(sizeof(DenoiseUniforms) == 96);
+static_assert(sizeof(TemporalAaUniforms) == 32);
 }  // namespace glpt::rt::gpu
 #endif
 

@@ -19,7 +19,8 @@
 //
 // Writes work slot 0 (colour + variance: the a-trous filter's input), this frame's fast
 // average and moments (the colour history is the first a-trous iteration's result, or written
-// here when there is no iteration) and guide.
+// here when there is no iteration), guide, and where the pixel's point was in the previous frame
+// (GLPT_DN_BINDING_MOTION, for the temporal anti-aliasing pass).
 // A channel the frame cannot have (filtered_channels) is neither read nor written (the next
 // frame is told, GLPT_DN_PREVIOUS_NO_SPECULAR); a pixel the tracer did not shade writes its
 // guide's meta alone (id 0: every reader tests the id before the eye position). Image stores
@@ -145,6 +146,8 @@ void main() {
   vec3 previous_fast[3] = vec3[3](vec3(0.0), vec3(0.0), vec3(0.0));
   vec2 previous_moments[3] = vec2[3](vec2(0.0), vec2(0.0), vec2(0.0));
   float previous_length = 0.0, weight_sum = 0.0;
+  // Where the pixel's point was (for the anti-aliasing pass): here, until reprojected.
+  vec2 previous_position = vec2(pixel);
   if ((dn.image.z & GLPT_DN_HISTORY_VALID) != 0u && sh.info.y != 0u && id > 1u) {
     // A deformed surface's point moves back by its triangle's deformation first: its draw's
     // transform alone finds a wrong history there, or none. (Trying the transform first and the
@@ -163,6 +166,7 @@ void main() {
       // as before, read 2 x jitter away: still scene under accumulation, 16 frames, relMSE
       // 0.00136 -> 0.00121.)
       vec2 position = window - 0.5 + dn.jitter.xy;
+      previous_position = position;
       ivec2 base = ivec2(floor(position));
       vec2 f = position - vec2(base);
       float tolerance = 2.0 * pixel_footprint(previous_eye.xyz);
@@ -356,4 +360,7 @@ void main() {
     store_work(dn.slots.x, pixel, vec4(colours[0], variances[0]),
                vec4(colours[1], variances[1]), vec4(colours[2], variances[2]), channels);
   store_guide(pixel, make_guide(eye, normal, id, uint(history_length)));
+  imageStore(motion, pixel,
+             uvec4(floatBitsToUint(previous_position), (dn.slots.z << 8) | uint(history_length),
+                   floatBitsToUint(-eye.z)));
 }

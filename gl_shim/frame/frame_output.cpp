@@ -271,21 +271,23 @@ bool FrameOutput::end_frame(const rec::FrameRecord& record, const rec::DrawableC
         " non_finite_prims=%" PRIu64
         " non_finite_draws=%u emitters=%u host_waits=%u wall_ms=%.2f traced_draws=%u sky_draws=%u"
         " raster_draws=%u instances=%u tlas_builds=%u tlas_updates=%u upload_bytes=%" PRIu64
-        " classify_ms=%.3f denoise_ms=%.2f composite_ms=%.2f denoised=%u denoised_tiles=%u"
+        " classify_ms=%.3f denoise_ms=%.2f composite_ms=%.2f taa_ms=%.2f denoised=%u "
+        "denoised_tiles=%u"
         " vk_objects=%" PRId64 " rss_kb=%" PRIu64 " heap_kb=%" PRIu64 " heap_free_kb=%" PRIu64
         " classes=%s vk_by_kind=%s\n",
         frame_index_, width, height, frame_ms, record_ms_, s.upload_ms, s.raster_ms, s.blas_ms,
         s.tlas_ms, s.trace_ms, s.readback_ms, present_ms,
         record_ms_ + s.upload_ms + s.raster_ms + s.blas_ms + s.tlas_ms + s.trace_ms + s.denoise_ms +
-            s.composite_ms + s.readback_ms + present_ms,
+            s.composite_ms + s.taa_ms + s.readback_ms + present_ms,
         s.draws, s.merged_draws, s.resident_draws, s.pipelines_created, s.inexpressible,
         s.upside_down_runs, s.triangles, s.rays, trace_s > 0 ? s.rays / trace_s / 1e6 : 0.0,
         s.blas_builds, s.blas_refits, s.blas_reused, s.accumulated_samples, s.non_finite_samples,
         s.non_finite_primitives, s.non_finite_draws, s.emitters, s.host_waits,
         wall_timer.elapsed_ms(), s.traced_draws, s.sky_draws, s.raster_draws, s.instances,
         s.tlas_builds, s.tlas_updates, s.upload_bytes, s.classify_ms, s.denoise_ms, s.composite_ms,
-        s.denoised, s.denoised_tiles, rt::vk::live_object_count().load(std::memory_order_relaxed),
-        resident_kilobytes(), heap.in_use_kb, heap.free_kb, kind_counts(s).c_str(),
+        s.taa_ms, s.denoised, s.denoised_tiles,
+        rt::vk::live_object_count().load(std::memory_order_relaxed), resident_kilobytes(),
+        heap.in_use_kb, heap.free_kb, kind_counts(s).c_str(),
         rt::vk::live_object_counts_text().c_str());
     if (stats_out_) std::fflush(stats_out_.get());
   }

@@ -82,6 +82,13 @@ constexpr std::array kFlags = {
     QualityFlag{"--denoise-sample-variance", "GLPT_DENOISE_MEAN_VARIANCE", FlagValue::kNone, "0",
                 "the a-trous filter's luminance edge-stopping takes one sample's variance, as "
                 "the 2017 paper (default: the integrated colour's)"},
+    QualityFlag{"--no-taa", "GLPT_TAA", FlagValue::kNone, "0",
+                "no temporal anti-aliasing after the denoiser (frames at pixel centres)"},
+    QualityFlag{"--taa-alpha", "GLPT_TAA_ALPHA", FlagValue::kNumber, "A",
+                "temporal anti-aliasing: weight of a new frame at edges, 0.01..1 (default 0.3)"},
+    QualityFlag{"--taa-gamma", "GLPT_TAA_GAMMA", FlagValue::kNumber, "G",
+                "temporal anti-aliasing: history clipped to the neighbourhood's mean +- G "
+                "deviations (default 1)"},
     QualityFlag{"--output", "GLPT_OUTPUT", FlagValue::kText, "DIR",
                 "also write every frame as DIR/frame_NNNNNN.png"},
     QualityFlag{"--output-every", "GLPT_OUTPUT_EVERY", FlagValue::kCount, "N",

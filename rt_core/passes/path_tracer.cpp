@@ -110,10 +110,13 @@ PathTracer::PathTracer(const RenderSettings& settings, std::shared_ptr<VulkanDev
       tlas_(*device_),
       trace_pass_(*device_),
       composite_pass_(*device_),
-      denoiser_(*device_) {
+      denoiser_(*device_),
+      temporal_aa_(*device_) {
   blas_cache_.allow_refit(settings_.blas_refit);
   denoise_uniforms_ =
       GpuBuffer::create(*device_, sizeof(gpu::DenoiseUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+  taa_uniforms_ = GpuBuffer::create(*device_, sizeof(gpu::TemporalAaUniforms),
+                                    VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
   frame_uniforms_ =
       GpuBuffer::create(*device_, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
   counters_ =
@@ -156,6 +159,7 @@ void PathTracer::forget_previous_frame() noexcept {
   frame_samples_ = 0;
   tlas_valid_ = false;
   denoiser_.forget_history();
+  temporal_aa_.forget_history();
 }
 
 void PathTracer::start_independent_frame(uint64_t frame_index, uint32_t history_window) noexcept {
@@ -189,7 +193,18 @@ uint32_t PathTracer::sobol_sample_number() const {
 }
 
 glm::vec2 PathTracer::jitter_of_next_pass() const {
-  if (accumulated_samples_ == 0 || frame_samples_ == 0) return glm::vec2(0.0f);
+  if (frame_samples_ == 0) return glm::vec2(0.0f);
+  if (accumulated_samples_ == 0) {
+    // A frame without an anti-aliasing history before it (the first, one after a cut) shows
+    // pixel centres, as raster mode and GL do; the frames after it are jittered.
+    if (!anti_aliases_this_frame() || !temporal_aa_.has_history()) return glm::vec2(0.0f);
+    // The anti-aliasing history averages consecutive frames: 16 Halton points (from the
+    // second: the first is a pixel corner) by the frame index, so a replayed frame is jittered
+    // alike whichever frames were rendered before it.
+    const uint64_t frame = seeded_by_frame_index_ ? seed_frame_index_ : frame_number_;
+    const uint32_t index = static_cast<uint32_t>(frame % 16) + 1;
+    return glm::vec2(halton(index, 2), halton(index, 3)) - 0.5f;
+  }
   return glm::vec2(halton(accumulated_passes_, 2), halton(accumulated_passes_, 3)) - 0.5f;
 }
 
@@ -223,6 +238,10 @@ bool PathTracer::denoises_this_frame() const {
          accumulated_samples_ < d.until_samples;
 }
 
+bool PathTracer::anti_aliases_this_frame() const {
+  return settings_.denoise.taa && denoises_this_frame();
+}
+
 void PathTracer::write_denoise_inputs(const TraceScene& scene, bool denoise, bool history_valid,
                                       FrameStats& stats) {
   const DenoiseSettings& d = settings_.denoise;
@@ -242,7 +261,7 @@ void PathTracer::write_denoise_inputs(const TraceScene& scene, bool denoise, boo
         glm::vec4(d.sigma_depth, d.sigma_normal, d.sigma_luminance, static_cast<float>(d.kernel));
     // A history that was clamped counts as this many frames long: 3 brings a switched-on
     // light's error back in 4 frames (4 took 5), for a little more noise where noise clamps.
-    constexpr float kClampedHistoryLength = 3.0f;
+    constexpr float kClampedHistoryLength = 2.0f;
     // The accumulated average takes over linearly as it approaches GLPT_DENOISE_UNTIL samples.
     const float accumulated_weight =
         d.until_samples > 0
@@ -526,6 +545,7 @@ void PathTracer::trace(const TraceScene& scene, const TraceTargets& targets, Fra
 
   ensure_channels(scene.width, scene.height);
   const bool denoise = denoises_this_frame() && denoiser_.fits(scene.width, scene.height);
+  const bool anti_alias = denoise && anti_aliases_this_frame();
   bool history_valid = false;
   if (denoise) history_valid = denoiser_.prepare(scene.width, scene.height, targets.history_owner);
   write_denoise_inputs(scene, denoise, history_valid, stats);
@@ -663,7 +683,31 @@ void PathTracer::trace(const TraceScene& scene, const TraceTargets& targets, Fra
     });
     unreported_.push_back({trace_ticket_, &FrameStats::composite_ms});
     stats.denoised = 1;
+    if (anti_alias) {
+      gpu::TemporalAaUniforms taa{};
+      const bool taa_history =
+          temporal_aa_.prepare(scene.width, scene.height, targets.history_owner) && history_valid;
+      // While a still image accumulates, the composite shows the average of its frames, which
+      // is anti-aliased already: the history takes it unchanged.
+      const bool take_current = accumulated_samples_ > 0;
+      taa.image = glm::uvec4(
+          scene.width, scene.height,
+          (taa_history ? GLPT_TAA_HISTORY_VALID : 0u) | (take_current ? GLPT_TAA_TAKE_CURRENT : 0u),
+          denoiser_.recorded_stamp());
+      taa.params = glm::vec4(settings_.denoise.taa_alpha, settings_.denoise.taa_gamma, 0.0f, 0.0f);
+      taa_uniforms_.write(&taa, sizeof taa);
+      TemporalAaResources resources;
+      resources.uniforms = &taa_uniforms_;
+      resources.colour = targets.back;
+      resources.motion = denoiser_.motion().view();
+      trace_ticket_ = device_->submit([&](VkCommandBuffer cmd) {
+        barrier(cmd);
+        temporal_aa_.record(cmd, resources, scene.width, scene.height, !take_current);
+      });
+      unreported_.push_back({trace_ticket_, &FrameStats::taa_ms});
+    }
   }
+  if (!anti_alias) temporal_aa_.forget_history();
   counters_read_ = false;
   denoised_unread_ = denoise;
   accumulated_samples_ += frame_samples_;

@@ -20,6 +20,7 @@
 #include "rt_core/passes/gbuffer.hpp"
 #include "rt_core/passes/path_trace_pass.hpp"
 #include "rt_core/passes/svgf_denoiser.hpp"
+#include "rt_core/passes/temporal_aa_pass.hpp"
 #include "rt_core/raster/texture_cache.hpp"
 #include "rt_core/render_settings.hpp"
 #include "rt_core/scene/frame_signature.hpp"
@@ -111,6 +112,9 @@ class PathTracer {
   // Whether this frame's samples are denoised: SVGF on, samples to add, no reference, and the
   // accumulation (if any) not yet at GLPT_DENOISE_UNTIL.
   bool denoises_this_frame() const;
+  // Whether this frame is anti-aliased temporally (GLPT_TAA, and the denoiser runs): then its
+  // G-buffer is drawn at a sub-pixel jitter even where nothing accumulates.
+  bool anti_aliases_this_frame() const;
   // Writes the denoiser's uniforms (flags 0 when `denoise` is false: the composite shows the
   // raw samples) and, when denoising, the per-state histories of `scene`.
   void write_denoise_inputs(const TraceScene& scene, bool denoise, bool history_valid,
@@ -146,7 +150,9 @@ class PathTracer {
   PathTracePass trace_pass_;
   CompositePass composite_pass_;
   SvgfDenoiser denoiser_;
+  TemporalAaPass temporal_aa_;
   GpuBuffer denoise_uniforms_;
+  GpuBuffer taa_uniforms_;
   GpuBuffer state_histories_;
   std::vector<gpu::GpuStateHistory> state_history_table_;  // kept to reuse its capacity
   glm::vec2 frame_jitter_{0.0f};                  // of the G-buffer pass the next trace reads

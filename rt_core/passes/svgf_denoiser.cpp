@@ -29,6 +29,7 @@ constexpr VkDescriptorSetLayoutBinding kBindings[] = {
     compute_binding(GLPT_DN_BINDING_MOMENTS, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
     compute_binding(GLPT_DN_BINDING_MOMENTS_PREVIOUS, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
     compute_binding(GLPT_DN_BINDING_TILES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
+    compute_binding(GLPT_DN_BINDING_MOTION, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
 };
 static_assert(GLPT_CHANNELS == 3);
 
@@ -80,6 +81,9 @@ bool SvgfDenoiser::prepare(uint32_t width, uint32_t height, const void* owner) {
       moments_[i] = image(VK_FORMAT_R32G32B32A32_SFLOAT, GLPT_DN_MOMENT_LAYERS);
     }
     work_ = image(VK_FORMAT_R32G32B32A32_UINT, kWorkLayers);
+    // Cleared once (record_before_trace): stamp 0 is no frame's.
+    motion_ = image(VK_FORMAT_R32G32B32A32_UINT, 1,
+                    VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT);
     // The tile list (GLPT_DN_BINDING_TILES): a header, a flag and a list entry per tile.
     const VkDeviceSize tiles =
         VkDeviceSize{(std::max(width, 1u) + GLPT_IMAGE_TILE_WIDTH - 1) / GLPT_IMAGE_TILE_WIDTH} *
@@ -107,11 +111,13 @@ void SvgfDenoiser::record_before_trace(VkCommandBuffer cmd) {
       moments_[i].initial_barrier(cmd);
     }
     work_.initial_barrier(cmd);
+    motion_.initial_barrier(cmd);
     // The passes read guides of tiles they skip: a new image's must say "no surface" (stamp 0).
     const VkClearColorValue zero{};
     const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
     for (const GpuImage& metas : guide_metas_)
       vkCmdClearColorImage(cmd, metas.handle(), VK_IMAGE_LAYOUT_GENERAL, &zero, 1, &range);
+    vkCmdClearColorImage(cmd, motion_.handle(), VK_IMAGE_LAYOUT_GENERAL, &zero, 1, &range);
     images_need_layout_ = false;
   }
   // An empty tile list: no tile, a dispatch of (0, 1, 1), no tile flagged.
@@ -134,7 +140,7 @@ void SvgfDenoiser::record(VkCommandBuffer cmd, const DenoiseResources& resources
   const VkDescriptorBufferInfo instances{resources.instances->handle(), 0, VK_WHOLE_SIZE};
   const VkDescriptorBufferInfo tiles{tiles_.handle(), 0, VK_WHOLE_SIZE};
   const auto scene_info = acceleration_structure_info(&resources.scene);
-  const VkDescriptorImageInfo images[14] = {general_image_info(resources.position),
+  const VkDescriptorImageInfo images[15] = {general_image_info(resources.position),
                                             general_image_info(resources.surface),
                                             general_image_info(resources.channels[0]),
                                             general_image_info(resources.channels[1]),
@@ -147,7 +153,8 @@ void SvgfDenoiser::record(VkCommandBuffer cmd, const DenoiseResources& resources
                                             general_image_info(histories_[previous].view()),
                                             general_image_info(work_.view()),
                                             general_image_info(moments_[current].view()),
-                                            general_image_info(moments_[previous].view())};
+                                            general_image_info(moments_[previous].view()),
+                                            general_image_info(motion_.view())};
   for (const ComputePipeline* pipeline : {temporal_.get(), atrous_.get()}) {
     const VkDescriptorSet set = pipeline->descriptor_set();
     const VkWriteDescriptorSet writes[] = {
@@ -168,6 +175,7 @@ void SvgfDenoiser::record(VkCommandBuffer cmd, const DenoiseResources& resources
         storage_image_write(set, GLPT_DN_BINDING_MOMENTS, &images[12]),
         storage_image_write(set, GLPT_DN_BINDING_MOMENTS_PREVIOUS, &images[13]),
         storage_buffer_write(set, GLPT_DN_BINDING_TILES, &tiles),
+        storage_image_write(set, GLPT_DN_BINDING_MOTION, &images[14]),
         storage_buffer_write(set, GLPT_DN_BINDING_INSTANCES, &instances),
         acceleration_structure_write(set, GLPT_DN_BINDING_SCENE, &scene_info),
     };

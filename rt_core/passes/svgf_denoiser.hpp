@@ -71,6 +71,10 @@ class SvgfDenoiser {
   uint32_t stamp() const { return stamp_; }
   uint32_t previous_stamp() const { return previous_stamp_; }
   const GpuImage& work() const { return work_; }
+  // Where the last record's pixels were in the frame before (GLPT_DN_BINDING_MOTION), and the
+  // stamp that record's texels carry.
+  const GpuImage& motion() const { return motion_; }
+  uint32_t recorded_stamp() const { return previous_stamp_; }
   // The next frame starts without history (a failure, a cut the caller knows of).
   void forget_history() noexcept { history_valid_ = false; }
 
@@ -81,6 +85,7 @@ class SvgfDenoiser {
   // Storage images (shared_types.h, GLPT_DN_BINDING_*), by parity: [parity_] is this frame's.
   std::array<GpuImage, 2> guide_eyes_, guide_metas_, histories_, moments_;
   GpuImage work_;
+  GpuImage motion_;  // GLPT_DN_BINDING_MOTION
   GpuBuffer tiles_;  // GLPT_DN_BINDING_TILES, sized with the images
   VkDeviceSize tile_count_ = 0;
   bool images_need_layout_ = false;  // created since the last record(): still UNDEFINED

@@ -37,6 +37,7 @@ layout(set = 0, binding = GLPT_DN_BINDING_MOMENTS, rgba32f)
 layout(set = 0, binding = GLPT_DN_BINDING_MOMENTS_PREVIOUS, rgba32f)
     uniform readonly image2DArray previous_history_moments;
 layout(set = 0, binding = GLPT_DN_BINDING_WORK, rgba32ui) uniform uimage2DArray work;
+layout(set = 0, binding = GLPT_DN_BINDING_MOTION, rgba32ui) uniform writeonly uimage2D motion;
 
 #define GLPT_TILE_LIST_BINDING GLPT_DN_BINDING_TILES
 #include "svgf/tile_list.h"
