@@ -4,7 +4,8 @@
 # The denoiser's device time on glxgears (320x240 and 640x480, 25 s each, accumulation off) or
 # on bench/lit_scene (lit geometry over the whole window, 12 frames; the new build's program) for
 # two builds of glpt, alternating run by run so both see the same machine: per run the median
-# trace_ms and denoise_ms (GLPT_STATS, Vulkan timestamps) and the frames counted. For changes to
+# trace_ms, denoise_ms, composite_ms and taa_ms (GLPT_STATS, Vulkan timestamps; taa_ms 0 for
+# builds without the anti-aliasing pass) and the frames counted. For changes to
 # the denoiser (docs/denoiser.md, "Cost"); bench_denoiser.sh measures one build in full.
 set -u
 base=${1:?base build dir}
@@ -29,16 +30,20 @@ run() {
       for (i = 1; i <= NF; ++i) { split($i, kv, "="); v[kv[1]] = kv[2] }
       if (v["trace_ms"] + 0 == 0) next
       if (seen++ < skip) next
-      trace[n] = v["trace_ms"]; denoise[n] = v["denoise_ms"]; ++n
+      trace[n] = v["trace_ms"]; denoise[n] = v["denoise_ms"]; composite[n] = v["composite_ms"]
+      taa[n] = v["taa_ms"] + 0; ++n
     }
     function median(a, n,   i, j, t) {
       for (i = 0; i < n; ++i) for (j = i + 1; j < n; ++j) if (a[j] < a[i]) { t = a[i]; a[i] = a[j]; a[j] = t }
       return n ? (n % 2 ? a[int(n / 2)] : (a[n / 2 - 1] + a[n / 2]) / 2) : 0
     }
-    END { printf "%.2f %.2f %d\n", median(trace, n), median(denoise, n), n }' "$log"
+    END {
+      printf "%.2f %.2f %.2f %.2f %d\n", median(trace, n), median(denoise, n), median(composite, n),
+        median(taa, n), n
+    }' "$log"
   rm -f "$log"
 }
-echo "round size build trace_ms denoise_ms frames"
+echo "round size build trace_ms denoise_ms composite_ms taa_ms frames"
 for ((round = 1; round <= rounds; ++round)); do
   for size in 320x240 640x480; do
     echo "$round $size base $(run "$base/gl_shim/libGL.so.1" $size)"

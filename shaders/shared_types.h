@@ -142,6 +142,8 @@ using mat4 = glm::mat4;
 // The a-trous filter takes the variance of the integrated colour, not of one sample (the 2017
 // paper's): GLPT_DENOISE_MEAN_VARIANCE.
 #define GLPT_DN_MEAN_VARIANCE 32u
+// The temporal anti-aliasing pass runs after this frame: store GLPT_DN_BINDING_MOTION.
+#define GLPT_DN_MOTION 64u
 
 // temporal_aa.comp (rt_core/passes/temporal_aa_pass.hpp), set 0: the last stage of the SVGF
 // pipeline, over the colour buffer the composite pass wrote.

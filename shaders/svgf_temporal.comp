@@ -360,7 +360,8 @@ void main() {
     store_work(dn.slots.x, pixel, vec4(colours[0], variances[0]),
                vec4(colours[1], variances[1]), vec4(colours[2], variances[2]), channels);
   store_guide(pixel, make_guide(eye, normal, id, uint(history_length)));
-  imageStore(motion, pixel,
-             uvec4(floatBitsToUint(previous_position), (dn.slots.z << 8) | uint(history_length),
-                   floatBitsToUint(-eye.z)));
+  if ((dn.image.z & GLPT_DN_MOTION) != 0u)
+    imageStore(motion, pixel,
+               uvec4(floatBitsToUint(previous_position), (dn.slots.z << 8) | uint(history_length),
+                     floatBitsToUint(-eye.z)));
 }

@@ -64,111 +64,113 @@ void main() {
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
   if (!inside(pixel)) return;
   if (mode == GLPT_TAA_WRITE_BACK) {
-    vec4 current = imageLoad(colour_buffer, pixel);
-    imageStore(colour_buffer, pixel, vec4(imageLoad(history, pixel).rgb, current.a));
+    // Only pixels the resolve blended (a positive length): an image store is the dearest
+    // operation on lavapipe, and most pixels show this frame unchanged.
+    vec4 h = imageLoad(history, pixel);
+    if (h.a > 0.0)
+      imageStore(colour_buffer, pixel, vec4(h.rgb, imageLoad(colour_buffer, pixel).a));
     return;
   }
-  vec3 current = to_ycocg(imageLoad(colour_buffer, pixel).rgb);
-  float length_before = 0.0;
-  // The denoiser's history length where it filtered the pixel: the anti-aliasing history
-  // restarts where the denoiser's did (a disocclusion) and is weighted no longer than it (a
-  // clamp against stale light shortened it).
+  vec3 current_rgb = imageLoad(colour_buffer, pixel).rgb;
+  // The history length stored: negative where the pixel shows this frame unchanged (the write
+  // back skips it). A pixel that takes this frame keeps it as a history as long as the
+  // denoiser's (255 where the denoiser did not filter it).
   float denoiser_length = 255.0;
-  bool edge = true;
-  vec3 previous = vec3(0.0);
-  if ((taa.image.z & GLPT_TAA_HISTORY_VALID) != 0u) {
-    // Where the pixel's area was: the denoiser's reprojection of the nearest surface in the 3x3
-    // pixels around (Karis 2014). A jittered edge pixel shows one surface in one frame and the
-    // one behind in the next; its history, which covers both, follows the one in front, as
-    // the background around an object does. Pixels the denoiser did not filter this frame (its
-    // stamp), the background and unlit surfaces, carry no motion: where no pixel around has
-    // any, the history is read here.
-    vec2 offset = vec2(0.0);
-    float nearest = 1.0 / 0.0, farthest = 0.0;
-    int around = 0, with_motion = 0;
-    for (int dy = -1; dy <= 1; ++dy)
-      for (int dx = -1; dx <= 1; ++dx) {
-        ivec2 q = pixel + ivec2(dx, dy);
-        if (!inside(q)) continue;
-        ++around;
-        uvec4 m = imageLoad(motion, q);
-        if ((m.z >> 8) != taa.image.w) continue;
-        ++with_motion;
-        if (dx == 0 && dy == 0) denoiser_length = float(m.z & 0xFFu);
-        float depth = uintBitsToFloat(m.w);
-        farthest = max(farthest, depth);
-        if (depth < nearest) {
-          nearest = depth;
-          offset = uintBitsToFloat(m.xy) - vec2(q);
-        }
-      }
-    vec2 position = vec2(pixel) + offset;
-    edge = with_motion < around || farthest > 1.1 * nearest;
-    if (denoiser_length > 1.0 && !any(isnan(position)) && !any(isinf(position)) &&
-        all(greaterThan(position, vec2(-1.0))) &&
-        all(lessThan(position, vec2(taa.image.xy)))) {
-      // Catmull-Rom over the 4x4 texels around (a bilinear read, repeated every frame of a
-      // motion, blurs the history by half a pixel each time).
-      ivec2 base = ivec2(floor(position));
-      vec2 f = position - vec2(base);
-      vec2 w0 = f * (-0.5 + f * (1.0 - 0.5 * f));
-      vec2 w1 = 1.0 + f * f * (-2.5 + 1.5 * f);
-      vec2 w2 = f * (0.5 + f * (2.0 - 1.5 * f));
-      vec2 w3 = f * f * (-0.5 + 0.5 * f);
-      vec2 wx[4] = vec2[4](w0, w1, w2, w3);
-      vec4 sum = vec4(0.0);
-      float weight_sum = 0.0;
-      for (int j = 0; j < 4; ++j)
-        for (int i = 0; i < 4; ++i) {
-          ivec2 q = base + ivec2(i - 1, j - 1);
-          float w = wx[i].x * wx[j].y;
-          if (w == 0.0 || !inside(q)) continue;
-          vec4 h = imageLoad(previous_history, q);
-          if (!(h.a > 0.0)) continue;  // a texel no frame wrote
-          sum += w * h;
-          weight_sum += w;
-        }
-      if (weight_sum > 0.1) {
-        vec4 h = sum / weight_sum;
-        previous = to_ycocg(max(h.rgb, vec3(0.0)));
-        length_before = max(h.a, 1.0);
+  if ((taa.image.z & GLPT_TAA_HISTORY_VALID) == 0u) {
+    imageStore(history, pixel, vec4(current_rgb, -1.0));
+    return;
+  }
+  // Where the pixel's area was: the denoiser's reprojection of the nearest surface in the 3x3
+  // pixels around (Karis 2014). A jittered edge pixel shows one surface in one frame and the
+  // one behind in the next; its history, which covers both, follows the one in front, as the
+  // background around an object does. Pixels the denoiser did not filter this frame (its
+  // stamp), the background and unlit surfaces, carry no motion: where no pixel around has any,
+  // the history is read here.
+  vec2 offset = vec2(0.0);
+  float nearest = 1.0 / 0.0, farthest = 0.0;
+  int around = 0, with_motion = 0;
+  for (int dy = -1; dy <= 1; ++dy)
+    for (int dx = -1; dx <= 1; ++dx) {
+      ivec2 q = pixel + ivec2(dx, dy);
+      if (!inside(q)) continue;
+      ++around;
+      uvec4 m = imageLoad(motion, q);
+      if ((m.z >> 8) != taa.image.w) continue;
+      ++with_motion;
+      if (dx == 0 && dy == 0) denoiser_length = float(m.z & 0xFFu);
+      float depth = uintBitsToFloat(m.w);
+      farthest = max(farthest, depth);
+      if (depth < nearest) {
+        nearest = depth;
+        offset = uintBitsToFloat(m.xy) - vec2(q);
       }
     }
+  if ((taa.image.z & GLPT_TAA_TAKE_CURRENT) != 0u) {
+    imageStore(history, pixel, vec4(current_rgb, -max(denoiser_length, 1.0)));
+    return;
   }
-  vec3 result = current;
-  float history_length = 1.0;
-  bool has_history = length_before > 0.0 && !any(isnan(previous)) && !any(isinf(previous));
-  if (has_history && (taa.image.z & GLPT_TAA_TAKE_CURRENT) != 0u) {
-    history_length = min(length_before + 1.0, 255.0);
-  } else if (has_history) {
-    // The 3x3 neighbourhood's mean and deviation (image edges: the pixels inside).
-    vec3 m1 = vec3(0.0), m2 = vec3(0.0);
-    float count = 0.0, darkest = 1.0, brightest = 0.0;
-    for (int dy = -1; dy <= 1; ++dy)
-      for (int dx = -1; dx <= 1; ++dx) {
-        ivec2 q = pixel + ivec2(dx, dy);
-        if (!inside(q)) continue;
-        vec3 c = (dx == 0 && dy == 0) ? current : to_ycocg(imageLoad(colour_buffer, q).rgb);
-        m1 += c;
-        m2 += c * c;
-        count += 1.0;
-        darkest = min(darkest, c.x);
-        brightest = max(brightest, c.x);
-      }
-    m1 /= count;
-    vec3 deviation = sqrt(max(m2 / count - m1 * m1, vec3(0.0)));
-    vec3 kept = clip_to_box(previous, m1, taa.params.y * deviation);
-    history_length = min(min(length_before + 1.0, 255.0), max(denoiser_length, 1.0));
-    // Jitter changes what a pixel shows only where its area holds an edge: of geometry (a step
-    // in depth, or a pixel around without the denoiser's motion: the background, an unlit
-    // surface) or of texture and shadow (a luminance range over the 3x3 pixels of more than a
-    // fifth of their mean). Elsewhere the denoiser's history integrates already, and averaging
-    // again only delays changing light: the pixel takes this frame (measured on the denoiser
-    // tests: a light switched on back in 4 frames instead of 6, the moving box 0.0062 against
-    // 0.0085; the still scene 0.00136 against 0.00120).
-    bool detail = brightest - darkest > 0.2 * m1.x + 0.01;
-    float alpha = edge || detail ? taa.params.x : 1.0;
-    result = mix(kept, current, max(alpha, 1.0 / history_length));
+  // This frame's 3x3 neighbourhood: its mean and deviation (image edges: the pixels inside).
+  vec3 current = to_ycocg(current_rgb);
+  vec3 m1 = vec3(0.0), m2 = vec3(0.0);
+  float count = 0.0, darkest = 1.0, brightest = 0.0;
+  for (int dy = -1; dy <= 1; ++dy)
+    for (int dx = -1; dx <= 1; ++dx) {
+      ivec2 q = pixel + ivec2(dx, dy);
+      if (!inside(q)) continue;
+      vec3 c = (dx == 0 && dy == 0) ? current : to_ycocg(imageLoad(colour_buffer, q).rgb);
+      m1 += c;
+      m2 += c * c;
+      count += 1.0;
+      darkest = min(darkest, c.x);
+      brightest = max(brightest, c.x);
+    }
+  m1 /= count;
+  // Jitter changes what a pixel shows only where its area holds an edge: of geometry (a step in
+  // depth, or the edge of what the denoiser filtered: the background, an unlit surface) or of
+  // texture and shadow (a luminance range over the 3x3 pixels of more than a fifth of their
+  // mean). Elsewhere the denoiser's history integrates already, and averaging again only delays
+  // changing light: the pixel shows this frame (measured on the denoiser tests: a light switched
+  // on back in 4 frames instead of 6, the moving box 0.0062 against 0.0085; the still scene
+  // 0.00136 against 0.00120).
+  bool edge = (with_motion > 0 && with_motion < around) || farthest > 1.1 * nearest;
+  bool detail = brightest - darkest > 0.2 * m1.x + 0.01;
+  vec2 position = vec2(pixel) + offset;
+  if (!(edge || detail) || !(denoiser_length > 1.0) || any(isnan(position)) ||
+      any(isinf(position)) || any(lessThanEqual(position, vec2(-1.0))) ||
+      any(greaterThanEqual(position, vec2(taa.image.xy)))) {
+    imageStore(history, pixel, vec4(current_rgb, -max(denoiser_length, 1.0)));
+    return;
   }
+  // Catmull-Rom over the 4x4 texels around (a bilinear read, repeated every frame of a motion,
+  // blurs the history by half a pixel each time).
+  ivec2 base = ivec2(floor(position));
+  vec2 f = position - vec2(base);
+  vec2 w0 = f * (-0.5 + f * (1.0 - 0.5 * f));
+  vec2 w1 = 1.0 + f * f * (-2.5 + 1.5 * f);
+  vec2 w2 = f * (0.5 + f * (2.0 - 1.5 * f));
+  vec2 w3 = f * f * (-0.5 + 0.5 * f);
+  vec2 wx[4] = vec2[4](w0, w1, w2, w3);
+  vec4 sum = vec4(0.0);
+  float weight_sum = 0.0;
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 4; ++i) {
+      ivec2 q = base + ivec2(i - 1, j - 1);
+      float w = wx[i].x * wx[j].y;
+      if (w == 0.0 || !inside(q)) continue;
+      vec4 h = imageLoad(previous_history, q);
+      h.a = abs(h.a);
+      sum += w * h;
+      weight_sum += w;
+    }
+  vec4 h = weight_sum > 0.1 ? sum / weight_sum : vec4(0.0);
+  vec3 previous = to_ycocg(max(h.rgb, vec3(0.0)));
+  if (!(h.a >= 1.0) || any(isnan(previous)) || any(isinf(previous))) {
+    imageStore(history, pixel, vec4(current_rgb, -1.0));
+    return;
+  }
+  vec3 deviation = sqrt(max(m2 / count - m1 * m1, vec3(0.0)));
+  vec3 kept = clip_to_box(previous, m1, taa.params.y * deviation);
+  float history_length = min(min(h.a + 1.0, 255.0), max(denoiser_length, 1.0));
+  vec3 result = mix(kept, current, max(taa.params.x, 1.0 / history_length));
   imageStore(history, pixel, vec4(clamp(from_ycocg(result), 0.0, 1.0), history_length));
 }

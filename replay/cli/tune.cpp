@@ -42,6 +42,7 @@ std::vector<TunePoint> tune_grid(bool full, uint32_t history_window) {
     grid.push_back(point("denoise-iter1", {{"--denoise-iterations", "1"}}));
     grid.push_back(point("denoise-kernel3x3", {{"--denoise-kernel", "1"}}));
     grid.push_back(point("denoise-kernel5x5", {{"--denoise-kernel", "2"}}));
+    grid.push_back(point("no-taa", {{"--no-taa", ""}}));
     grid.push_back(point("no-shadows-no-ao", {{"--shadows", "0"}, {"--ao", "0"}}));
     // Samples x bounces x denoiser: where more samples stop paying for themselves.
     // Default values (1 sample, 1 bounce) are left out of a point's flags, so a combination

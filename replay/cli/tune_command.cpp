@@ -540,6 +540,7 @@ std::string tune_help() {
          "  --unlit ao|emit    trace unlit draws too (AO, or as light sources)\n"
          "  --denoiser         SVGF: removes most noise at a fixed cost per shaded pixel;\n"
          "                     --denoise-iterations trades blur range for time\n"
+         "  --no-taa           no temporal anti-aliasing after it: saves its pass, edges alias\n"
          "  --scale S          trace S x S of the pixels, interpolate the rest: rays fall ~S^2\n"
          "  accumulateK        a still image averaged over K frames (glpt does this by default\n"
          "                     while nothing moves): time per frame unchanged, error falls\n"

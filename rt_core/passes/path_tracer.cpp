@@ -255,6 +255,7 @@ void PathTracer::write_denoise_inputs(const TraceScene& scene, bool denoise, boo
     if (!scene_.reflects_specularly) flags |= GLPT_DN_NO_SPECULAR;
     if (!denoiser_.history_has_specular()) flags |= GLPT_DN_PREVIOUS_NO_SPECULAR;
     if (d.mean_variance) flags |= GLPT_DN_MEAN_VARIANCE;
+    if (anti_aliases_this_frame()) flags |= GLPT_DN_MOTION;
     uniforms.image = glm::uvec4(scene.width, scene.height, flags, d.iterations);
     uniforms.temporal = glm::vec4(d.alpha, d.moments_alpha, d.fast_alpha, d.fast_clamp);
     uniforms.sigmas =
@@ -545,7 +546,9 @@ void PathTracer::trace(const TraceScene& scene, const TraceTargets& targets, Fra
 
   ensure_channels(scene.width, scene.height);
   const bool denoise = denoises_this_frame() && denoiser_.fits(scene.width, scene.height);
-  const bool anti_alias = denoise && anti_aliases_this_frame();
+  // The pass blends the colour buffer the frame draws into (GL_BACK, or the front where the
+  // program draws there); none under glDrawBuffer(GL_NONE).
+  const bool anti_alias = denoise && anti_aliases_this_frame() && (scene.default_targets & 3u) != 0;
   bool history_valid = false;
   if (denoise) history_valid = denoiser_.prepare(scene.width, scene.height, targets.history_owner);
   write_denoise_inputs(scene, denoise, history_valid, stats);
@@ -698,7 +701,7 @@ void PathTracer::trace(const TraceScene& scene, const TraceTargets& targets, Fra
       taa_uniforms_.write(&taa, sizeof taa);
       TemporalAaResources resources;
       resources.uniforms = &taa_uniforms_;
-      resources.colour = targets.back;
+      resources.colour = (scene.default_targets & 2u) != 0 ? targets.back : targets.front;
       resources.motion = denoiser_.motion().view();
       trace_ticket_ = device_->submit([&](VkCommandBuffer cmd) {
         barrier(cmd);
