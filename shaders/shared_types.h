@@ -152,6 +152,8 @@ using mat4 = glm::mat4;
 #define GLPT_TAA_BINDING_HISTORY 2           // this frame's history: rgba16f, rgb colour, a length
 #define GLPT_TAA_BINDING_HISTORY_PREVIOUS 3  // the previous frame's
 #define GLPT_TAA_BINDING_MOTION 4            // the denoiser's GLPT_DN_BINDING_MOTION
+#define GLPT_TAA_BINDING_TILES 5  // the denoiser's tile list (GLPT_DN_BINDING_TILES): its flags
+#define GLPT_TAA_BINDING_SURFACE 6  // G-buffer SURFACE
 // TemporalAaUniforms::image.z flags
 #define GLPT_TAA_HISTORY_VALID 1u  // the previous frame's history belongs to this drawable and size
 // The composite showed an accumulated average (a still scene): it is the image, already

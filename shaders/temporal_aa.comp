@@ -36,6 +36,10 @@ layout(set = 0, binding = GLPT_TAA_BINDING_HISTORY, rgba16f) uniform image2D his
 layout(set = 0, binding = GLPT_TAA_BINDING_HISTORY_PREVIOUS, rgba16f)
     uniform readonly image2D previous_history;
 layout(set = 0, binding = GLPT_TAA_BINDING_MOTION, rgba32ui) uniform readonly uimage2D motion;
+layout(set = 0, binding = GLPT_TAA_BINDING_SURFACE, rgba32ui)
+    uniform readonly uimage2D gbuffer_surface;
+#define GLPT_TILE_LIST_BINDING GLPT_TAA_BINDING_TILES
+#include "svgf/tile_list.h"
 
 layout(push_constant) uniform Dispatch {
   uint mode;  // GLPT_TAA_RESOLVE or GLPT_TAA_WRITE_BACK
@@ -60,6 +64,25 @@ vec3 clip_to_box(vec3 h, vec3 centre, vec3 extent) {
   return largest > 1.0 ? centre + offset / largest : h;
 }
 
+// Whether the denoiser filtered a pixel in this workgroup's tile or the 8 around it (the
+// workgroups are its tiles, GLPT_IMAGE_TILE_WIDTH x GLPT_IMAGE_TILE_HEIGHT): else no pixel of
+// the tile has the denoiser's motion in its 3x3, and only G-buffer surfaces (jittered) can show
+// an edge that moves with the jitter.
+bool near_filtered_tile() {
+  uvec2 size = taa.image.xy;
+  ivec2 tiles = ivec2(tiles_across(size), (size.y + GLPT_IMAGE_TILE_HEIGHT - 1u) /
+                                              GLPT_IMAGE_TILE_HEIGHT);
+  ivec2 tile = ivec2(gl_WorkGroupID.xy);
+  for (int dy = -1; dy <= 1; ++dy)
+    for (int dx = -1; dx <= 1; ++dx) {
+      ivec2 t = tile + ivec2(dx, dy);
+      if (t.x >= 0 && t.y >= 0 && t.x < tiles.x && t.y < tiles.y &&
+          tile_words[uint(t.y * tiles.x + t.x)] != 0u)
+        return true;
+    }
+  return false;
+}
+
 void main() {
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
   if (!inside(pixel)) return;
@@ -80,6 +103,13 @@ void main() {
     imageStore(history, pixel, vec4(current_rgb, -1.0));
     return;
   }
+  // Far from what the denoiser filtered, a pixel no traced draw covers (the background, raster
+  // draws: neither is jittered) shows this frame as it is.
+  bool near = near_filtered_tile();
+  if (!near && imageLoad(gbuffer_surface, pixel).x == 0u) {
+    imageStore(history, pixel, vec4(current_rgb, -255.0));
+    return;
+  }
   // Where the pixel's area was: the denoiser's reprojection of the nearest surface in the 3x3
   // pixels around (Karis 2014). A jittered edge pixel shows one surface in one frame and the
   // one behind in the next; its history, which covers both, follows the one in front, as the
@@ -92,7 +122,7 @@ void main() {
   for (int dy = -1; dy <= 1; ++dy)
     for (int dx = -1; dx <= 1; ++dx) {
       ivec2 q = pixel + ivec2(dx, dy);
-      if (!inside(q)) continue;
+      if (!near || !inside(q)) continue;
       ++around;
       uvec4 m = imageLoad(motion, q);
       if ((m.z >> 8) != taa.image.w) continue;

@@ -703,6 +703,8 @@ void PathTracer::trace(const TraceScene& scene, const TraceTargets& targets, Fra
       resources.uniforms = &taa_uniforms_;
       resources.colour = (scene.default_targets & 2u) != 0 ? targets.back : targets.front;
       resources.motion = denoiser_.motion().view();
+      resources.tiles = &denoiser_.tiles();
+      resources.surface = targets.gbuffer->image(GLPT_GBUFFER_SURFACE).view();
       trace_ticket_ = device_->submit([&](VkCommandBuffer cmd) {
         barrier(cmd);
         temporal_aa_.record(cmd, resources, scene.width, scene.height, !take_current);

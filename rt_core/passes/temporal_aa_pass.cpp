@@ -14,6 +14,8 @@ constexpr VkDescriptorSetLayoutBinding kBindings[] = {
     compute_binding(GLPT_TAA_BINDING_HISTORY, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
     compute_binding(GLPT_TAA_BINDING_HISTORY_PREVIOUS, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
     compute_binding(GLPT_TAA_BINDING_MOTION, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
+    compute_binding(GLPT_TAA_BINDING_TILES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
+    compute_binding(GLPT_TAA_BINDING_SURFACE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
 };
 
 }  // namespace
@@ -49,9 +51,11 @@ void TemporalAaPass::record(VkCommandBuffer cmd, const TemporalAaResources& reso
   const uint32_t current = parity_, previous = parity_ ^ 1u;
   const VkDescriptorBufferInfo uniforms{resources.uniforms->handle(), 0,
                                         sizeof(gpu::TemporalAaUniforms)};
-  const VkDescriptorImageInfo images[4] = {
+  const VkDescriptorImageInfo images[5] = {
       general_image_info(resources.colour), general_image_info(histories_[current].view()),
-      general_image_info(histories_[previous].view()), general_image_info(resources.motion)};
+      general_image_info(histories_[previous].view()), general_image_info(resources.motion),
+      general_image_info(resources.surface)};
+  const VkDescriptorBufferInfo tiles{resources.tiles->handle(), 0, VK_WHOLE_SIZE};
   const VkDescriptorSet set = pipeline_->descriptor_set();
   const VkWriteDescriptorSet writes[] = {
       uniform_buffer_write(set, GLPT_TAA_BINDING_UNIFORMS, &uniforms),
@@ -59,6 +63,8 @@ void TemporalAaPass::record(VkCommandBuffer cmd, const TemporalAaResources& reso
       storage_image_write(set, GLPT_TAA_BINDING_HISTORY, &images[1]),
       storage_image_write(set, GLPT_TAA_BINDING_HISTORY_PREVIOUS, &images[2]),
       storage_image_write(set, GLPT_TAA_BINDING_MOTION, &images[3]),
+      storage_buffer_write(set, GLPT_TAA_BINDING_TILES, &tiles),
+      storage_image_write(set, GLPT_TAA_BINDING_SURFACE, &images[4]),
   };
   pipeline_->update(device_.handle(), writes);
   const uint32_t resolve = GLPT_TAA_RESOLVE;

@@ -20,9 +20,11 @@
 namespace glpt::rt {
 
 struct TemporalAaResources {
-  const GpuBuffer* uniforms = nullptr;  // gpu::TemporalAaUniforms
-  VkImageView colour = VK_NULL_HANDLE;  // the colour buffer the composite wrote (BGRA8)
-  VkImageView motion = VK_NULL_HANDLE;  // SvgfDenoiser::motion()
+  const GpuBuffer* uniforms = nullptr;   // gpu::TemporalAaUniforms
+  VkImageView colour = VK_NULL_HANDLE;   // the colour buffer the composite wrote (BGRA8)
+  VkImageView motion = VK_NULL_HANDLE;   // SvgfDenoiser::motion()
+  const GpuBuffer* tiles = nullptr;      // SvgfDenoiser::tiles(): the tiles it filtered
+  VkImageView surface = VK_NULL_HANDLE;  // the G-buffer's SURFACE
 };
 
 class TemporalAaPass {
