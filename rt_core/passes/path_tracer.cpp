@@ -260,8 +260,9 @@ void PathTracer::write_denoise_inputs(const TraceScene& scene, bool denoise, boo
     uniforms.temporal = glm::vec4(d.alpha, d.moments_alpha, d.fast_alpha, d.fast_clamp);
     uniforms.sigmas =
         glm::vec4(d.sigma_depth, d.sigma_normal, d.sigma_luminance, static_cast<float>(d.kernel));
-    // A history that was clamped counts as this many frames long: 3 brings a switched-on
-    // light's error back in 4 frames (4 took 5), for a little more noise where noise clamps.
+    // A history that was clamped counts as this many frames long: 2 brings a switched-on
+    // light's error back to the (anti-aliased) steady level in 4 frames (3 took 5), for a
+    // little more noise where noise clamps (docs/denoiser.md, "No stale light").
     constexpr float kClampedHistoryLength = 2.0f;
     // The accumulated average takes over linearly as it approaches GLPT_DENOISE_UNTIL samples.
     const float accumulated_weight =
