@@ -71,9 +71,11 @@ struct DenoiseSettings {
   // 2017 paper (0): the filter blurs less where the history is long (docs/denoiser.md).
   bool mean_variance = true;
   // GLPT_TAA: temporal anti-aliasing after the composite (the SVGF paper's last stage): frames
-  // the denoiser runs on are jittered and blended with their reprojected history, weight
-  // GLPT_TAA_ALPHA for a new frame, the history clipped to GLPT_TAA_GAMMA standard deviations
-  // of the 3x3 neighbourhood (Karis 2014, Salvi 2016; docs/denoiser.md, "Anti-aliasing").
+  // the denoiser runs on are jittered and, at edges of geometry, texture and shadow, blended
+  // with their reprojected history, weight GLPT_TAA_ALPHA for a new frame (0.3 where Karis 2014
+  // takes 0.1: with 0.1 or 0.2 a switched-on light took 6 frames to settle), the history clipped
+  // to GLPT_TAA_GAMMA standard deviations of the 3x3 neighbourhood (Salvi 2016;
+  // docs/denoiser.md, "Anti-aliasing").
   bool taa = true;
   float taa_alpha = 0.3f;
   float taa_gamma = 1.0f;
