@@ -5,7 +5,8 @@
 // so one frame shows each edge at one place in its pixels; this pass blends each pixel's colour
 // with its own history, reprojected to where the pixel's point was last frame, and the average
 // over frames covers the pixel's area: edges come out anti-aliased, as the reference (whose
-// samples are jittered over the pixel) is, and the denoiser's residual noise is averaged too.
+// samples are jittered over the pixel) is. Only pixels near an edge of geometry, texture or
+// shadow are blended (see main); the others show the denoiser's frame.
 //
 // Karis, "High Quality Temporal Supersampling" (SIGGRAPH 2014 course): an exponential average
 // (GLPT_TAA_ALPHA, or 1/length while the history is short), the history clipped in YCoCg to a
@@ -69,9 +70,7 @@ vec3 clip_to_box(vec3 h, vec3 centre, vec3 extent) {
 // the tile has the denoiser's motion in its 3x3, and only G-buffer surfaces (jittered) can show
 // an edge that moves with the jitter.
 bool near_filtered_tile() {
-  uvec2 size = taa.image.xy;
-  ivec2 tiles = ivec2(tiles_across(size), (size.y + GLPT_IMAGE_TILE_HEIGHT - 1u) /
-                                              GLPT_IMAGE_TILE_HEIGHT);
+  ivec2 tiles = ivec2(tiles_across(taa.image.xy), tiles_down(taa.image.xy));
   ivec2 tile = ivec2(gl_WorkGroupID.xy);
   for (int dy = -1; dy <= 1; ++dy)
     for (int dx = -1; dx <= 1; ++dx) {
@@ -101,6 +100,14 @@ void main() {
   float denoiser_length = 255.0;
   if ((taa.image.z & GLPT_TAA_HISTORY_VALID) == 0u) {
     imageStore(history, pixel, vec4(current_rgb, -1.0));
+    return;
+  }
+  // While a still image accumulates, the composite's average is the image: kept as the history
+  // (with the denoiser's length at the pixel), nothing written back.
+  if ((taa.image.z & GLPT_TAA_TAKE_CURRENT) != 0u) {
+    uvec4 m = imageLoad(motion, pixel);
+    if ((m.z >> 8) == taa.image.w) denoiser_length = float(m.z & 0xFFu);
+    imageStore(history, pixel, vec4(current_rgb, -max(denoiser_length, 1.0)));
     return;
   }
   // Far from what the denoiser filtered, a pixel no traced draw covers (the background, raster
@@ -135,10 +142,6 @@ void main() {
         offset = uintBitsToFloat(m.xy) - vec2(q);
       }
     }
-  if ((taa.image.z & GLPT_TAA_TAKE_CURRENT) != 0u) {
-    imageStore(history, pixel, vec4(current_rgb, -max(denoiser_length, 1.0)));
-    return;
-  }
   // This frame's 3x3 neighbourhood: its mean and deviation (image edges: the pixels inside).
   vec3 current = to_ycocg(current_rgb);
   vec3 m1 = vec3(0.0), m2 = vec3(0.0);

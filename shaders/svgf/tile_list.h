@@ -13,13 +13,14 @@ layout(std430, set = 0, binding = GLPT_TILE_LIST_BINDING) buffer DenoiseTileList
 };
 
 // The tiles (GLPT_IMAGE_TILE_WIDTH x GLPT_IMAGE_TILE_HEIGHT pixels) of an image of `size`
-// pixels: across, and in all.
+// pixels: across, down, and in all.
 uint tiles_across(uvec2 size) {
   return (size.x + GLPT_IMAGE_TILE_WIDTH - 1u) / GLPT_IMAGE_TILE_WIDTH;
 }
-uint tile_count(uvec2 size) {
-  return tiles_across(size) * ((size.y + GLPT_IMAGE_TILE_HEIGHT - 1u) / GLPT_IMAGE_TILE_HEIGHT);
+uint tiles_down(uvec2 size) {
+  return (size.y + GLPT_IMAGE_TILE_HEIGHT - 1u) / GLPT_IMAGE_TILE_HEIGHT;
 }
+uint tile_count(uvec2 size) { return tiles_across(size) * tiles_down(size); }
 // The tile of `pixel`, numbered row by row.
 uint tile_of(ivec2 pixel, uvec2 size) {
   return uint(pixel.y) / GLPT_IMAGE_TILE_HEIGHT * tiles_across(size) +

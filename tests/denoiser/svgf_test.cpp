@@ -317,8 +317,8 @@ TEST(Svgf, TemporalAntiAliasingAveragesJitteredEdgesOverFrames) {
       still_with, still_without, edge_with, edge_without, flip(with_taa.back(), ref).mean,
       flip(without.back(), ref).mean, moving_with, moving_no);
   EXPECT_LE(still_with * 2.5, still_without);  // measured 3.3x
-  EXPECT_LE(edge_with * 2.5, edge_without);
-  EXPECT_LE(moving_with * 1.2, moving_no);  // measured 1.5x
+  EXPECT_LE(edge_with * 2.5, edge_without);    // measured 4.0x
+  EXPECT_LE(moving_with * 1.2, moving_no);     // measured 1.4x
 }
 
 TEST(Svgf, AnObjectOverTheBackgroundIsFilteredInTheTilesTheTracerShaded) {
@@ -562,7 +562,7 @@ TEST(Svgf, AMovingObjectTheCameraFollowsKeepsItsHistory) {
               box_still_no_taa);
   EXPECT_LE(box_moving * 5.0, box_raw);
   EXPECT_LE(box_moving_no_taa, 2.0 * box_still_no_taa);  // measured 1.4x
-  EXPECT_LE(box_moving * 1.5, box_first);                // measured 2.6x
+  EXPECT_LE(box_moving * 1.5, box_first);                // measured 2.0x
   // The anti-aliasing pass follows the box as the denoiser does: no worse than without it.
   EXPECT_LE(box_moving, box_moving_no_taa);
 }
@@ -683,8 +683,8 @@ TEST(Svgf, StillImagesConvergeToTheAccumulatedAverageAndTheDenoiserStops) {
   // shown: the image equals the one without denoiser, and the denoiser no longer runs.
   std::vector<glpt::rt::FrameStats> stats;
   const SceneOptions still;
-  // (Without the anti-aliasing pass: it jitters the accumulation's first frame where the
-  // accumulation alone does not, so the two averages hold different samples.)
+  // (Without the anti-aliasing pass: with it the two images are not byte-equal, though the pass
+  // writes nothing back while a still image accumulates; why is not yet known.)
   const Frames denoised = render(
       path({{"GLPT_DENOISE_UNTIL", "8"}, {"GLPT_TAA", "0"}}), 10, [&](int) { return still; },
       &stats);
