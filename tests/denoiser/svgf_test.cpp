@@ -683,8 +683,10 @@ TEST(Svgf, StillImagesConvergeToTheAccumulatedAverageAndTheDenoiserStops) {
   // shown: the image equals the one without denoiser, and the denoiser no longer runs.
   std::vector<glpt::rt::FrameStats> stats;
   const SceneOptions still;
-  // (Without the anti-aliasing pass: with it the two images are not byte-equal, though the pass
-  // writes nothing back while a still image accumulates; why is not yet known.)
+  // (Without the anti-aliasing pass: the accumulation starts again at the second frame, whose
+  // signature differs from the first's, and the pass, which has a history by then, jitters that
+  // first accumulated frame where the accumulation alone does not: the two averages hold
+  // different samples.)
   const Frames denoised = render(
       path({{"GLPT_DENOISE_UNTIL", "8"}, {"GLPT_TAA", "0"}}), 10, [&](int) { return still; },
       &stats);
