@@ -66,13 +66,11 @@ using mat4 = glm::mat4;
 // composite.comp, set 0
 #define GLPT_CO_BINDING_FRAME 0         // uniform FrameUniforms
 #define GLPT_CO_BINDING_STATES 1        // GpuTraceState[]
-#define GLPT_CO_BINDING_ACCUMULATION 2  // rgba32f array of 3 layers, see composite.comp
 #define GLPT_CO_BINDING_GBUFFER 3       // the G-buffer, bindings 3..6
 #define GLPT_CO_BINDING_CHANNELS 7      // the channels, bindings 7..9
 #define GLPT_CO_BINDING_FRONT 10        // colour buffers: storage images, read and written
 #define GLPT_CO_BINDING_BACK 11
-#define GLPT_CO_BINDING_DENOISED 12  // the denoiser's work image (GLPT_DN_BINDING_WORK) or a dummy
-#define GLPT_CO_BINDING_DENOISE 13   // uniform DenoiseUniforms
+#define GLPT_CO_BINDING_DENOISE 13   // uniform DenoiseUniforms (its work slots' address)
 
 // svgf_temporal.comp and svgf_atrous.comp (rt_core/passes/svgf_denoiser.hpp), set 0. Per pixel
 // p (row-major, GL window rows: row 0 at the bottom):
@@ -81,52 +79,50 @@ using mat4 = glm::mat4;
 #define GLPT_DN_BINDING_POSITION 2  // G-buffer POSITION
 #define GLPT_DN_BINDING_SURFACE 3   // G-buffer SURFACE
 #define GLPT_DN_BINDING_CHANNELS 4  // the trace pass's channels, bindings 4..6
-// Per-pixel data lives in storage images, not buffers: a buffer binding is limited to
-// maxStorageBufferRange (lavapipe: 128 MiB, 1.4 million pixels of history), an image only by its
-// size.
-#define GLPT_DN_BINDING_GUIDE 7  // this frame's DenoiseGuide: eye (rgba32f), meta (rgba32ui)
-#define GLPT_DN_BINDING_GUIDE_META 8
-#define GLPT_DN_BINDING_GUIDE_PREVIOUS 9
-#define GLPT_DN_BINDING_GUIDE_META_PREVIOUS 10
-// This frame's fast history: rgba32ui array of half floats in a work slot's layout (below), 2
-// layers: a short exponential average of the raw colour, the clamp against stale light (rgb;
-// the fourth halves unused). The colour history lives in the work image (slots 3 and 4).
-#define GLPT_DN_BINDING_HISTORY 11
-#define GLPT_DN_BINDING_HISTORY_PREVIOUS 12
-// rgba32ui array of half floats, per slot two layers (GLPT_DN_WORK_LAYERS): slot 0 the
-// temporally integrated colour, 1 and 2 the a-trous iterations' ping-pong, 3 and 4 the colour
-// history of alternate frames (DenoiseUniforms::slots): the temporally filtered colour, which the
-// a-trous filter's first iteration writes (the history fed back as in the SVGF paper, and the
-// second iteration's input), or the temporal pass where there is no iteration. Layer 2 * slot
-// holds channels 0 (xy) and 1 (zw), layer 2 * slot + 1 channel 2 (xy); each channel's rgb
-// radiance and its luminance variance as four halves (svgf_common.h, pack_work).
-#define GLPT_DN_BINDING_WORK 13
-#define GLPT_DN_BINDING_SCENE 14      // the frame's TLAS (deformed surfaces' triangles)
-#define GLPT_DN_BINDING_INSTANCES 15  // GpuInstance[] (GLPT_PT_BINDING_INSTANCES' table)
-// This frame's luminance moments: rgba32f array of GLPT_DN_MOMENT_LAYERS layers, layer 0 the
-// first and second moments of channel 0 (xy) and 1 (zw), layer 1 those of channel 2 (xy). In
-// float: the variance is a difference of them.
-#define GLPT_DN_BINDING_MOMENTS 16
-#define GLPT_DN_BINDING_MOMENTS_PREVIOUS 17
+#define GLPT_DN_BINDING_SCENE 7      // the frame's TLAS (deformed surfaces' triangles)
+#define GLPT_DN_BINDING_INSTANCES 8  // GpuInstance[] (GLPT_PT_BINDING_INSTANCES' table)
 // The tiles (GLPT_IMAGE_TILE_WIDTH x GLPT_IMAGE_TILE_HEIGHT pixels, the passes' workgroups) with a
 // pixel the denoiser filters, listed by the trace pass as it shades them
 // (GLPT_OPTION_DENOISE_TILES); the temporal pass and the a-trous iterations are dispatched over
 // them alone (vkCmdDispatchIndirect). uint[]: [0..2] the dispatch (x: the number of such tiles,
 // 1, 1), [3] unused, then per tile a flag (1 once listed), then the list. Pixels of tiles not
 // listed keep their guides of an earlier frame: a guide's frame stamp (DenoiseGuide) tells.
-#define GLPT_DN_BINDING_TILES 18
-// Where each pixel the temporal pass filtered shows its point in the previous frame, for the
-// temporal anti-aliasing pass: rgba32ui, xy the previous frame's pixel position (float bits;
-// centres at whole numbers, as the history taps are read), z this frame's stamp (DenoiseGuide's)
-// << 8 | the denoiser's history length (1: disoccluded or no identity; short after a clamp
-// against stale light), w the depth (-eye z, float bits). A texel with another stamp (an
-// earlier frame's, a tile not listed) is no motion of this frame.
-#define GLPT_DN_BINDING_MOTION 19
+#define GLPT_DN_BINDING_TILES 9
+//
+// The denoiser's own per-pixel data lives in buffers reached by device address
+// (DenoiseUniforms), not in storage images: lavapipe calls a function for every image access and
+// stores an image texel lane by lane and component by component, while a buffer reference is
+// a vector gather or scatter in the shader itself (an image store measured 0.3 ms a pass over
+// glxgears' 320x240 frame on a 2-core Xeon, a buffer store too little to tell from noise:
+// docs/denoiser.md, "Cost"). Each is an array of texels (16 bytes) in layers of one texel per
+// pixel, layer-major: texel (layer * width * height + p).
+// - Guides (DenoiseUniforms::guides: this frame's, the previous frame's): DenoiseGuide[], one per
+//   pixel.
+// - Fast histories (::histories): vec4, GLPT_DN_HISTORY_LAYERS layers, one per channel: a short
+//   exponential average of the raw colour (rgb; a unused), the clamp against stale light. The
+//   colour history lives in the work slots (slots 3 and 4).
+// - Work slots (::buffers.xy): vec4, per slot a layer per channel (GLPT_DN_WORK_LAYERS): slot 0
+//   the temporally integrated colour, 1 and 2 the a-trous iterations' ping-pong, 3 and 4 the
+//   colour history of alternate frames (DenoiseUniforms::slots): the temporally filtered colour,
+//   which the a-trous filter's first iteration writes (the history fed back as in the SVGF
+//   paper, and the second iteration's input), or the temporal pass where there is no iteration.
+//   Layer GLPT_DN_WORK_LAYERS * slot + c holds channel c's rgb radiance and its luminance
+//   variance. Floats, not half floats two channels a texel as when these were images: a pack or
+//   unpack of halves costs lavapipe more than gathering or scattering the bytes it saves.
+// - Moments (::moments): vec4, GLPT_DN_MOMENT_LAYERS layers: layer 0 the first and second
+//   luminance moments of channel 0 (xy) and 1 (zw), layer 1 those of channel 2 (xy). In float:
+//   the variance is a difference of them.
+// - Motion (::buffers.zw): uvec4, where each pixel the temporal pass filtered shows its point in
+//   the previous frame, for the temporal anti-aliasing pass: xy the previous frame's pixel
+//   position (float bits; centres at whole numbers, as the history taps are read), z this
+//   frame's stamp (DenoiseGuide's) << 8 | the denoiser's history length (1: disoccluded or no
+//   identity; short after a clamp against stale light), w the depth (-eye z, float bits). A texel
+//   with another stamp (an earlier frame's, a tile not listed) is no motion of this frame.
 #define GLPT_DN_TILES_HEADER 4u
 #define GLPT_DN_SLOTS 3
-#define GLPT_DN_WORK_LAYERS 2u   // per slot
+#define GLPT_DN_WORK_LAYERS 3u   // per slot
 #define GLPT_DN_HISTORY_SLOTS 2  // slots GLPT_DN_SLOTS and GLPT_DN_SLOTS + 1
-#define GLPT_DN_HISTORY_LAYERS 2u
+#define GLPT_DN_HISTORY_LAYERS 3u
 #define GLPT_DN_MOMENT_LAYERS 2u
 #define GLPT_DN_SLOT_NONE 254u  // an a-trous iteration's second output: none
 // DenoiseUniforms::image.z flags
@@ -142,18 +138,19 @@ using mat4 = glm::mat4;
 // The a-trous filter takes the variance of the integrated colour, not of one sample (the 2017
 // paper's): GLPT_DENOISE_MEAN_VARIANCE.
 #define GLPT_DN_MEAN_VARIANCE 32u
-// The temporal anti-aliasing pass runs after this frame: store GLPT_DN_BINDING_MOTION.
+// The temporal anti-aliasing pass runs after this frame: store the motion (::buffers.zw).
 #define GLPT_DN_MOTION 64u
 
 // temporal_aa.comp (rt_core/passes/temporal_aa_pass.hpp), set 0: the last stage of the SVGF
 // pipeline, over the colour buffer the composite pass wrote.
 #define GLPT_TAA_BINDING_UNIFORMS 0          // uniform TemporalAaUniforms
 #define GLPT_TAA_BINDING_COLOUR 1            // the colour buffer (BGRA8 storage image)
-#define GLPT_TAA_BINDING_HISTORY 2           // this frame's history: rgba16f, rgb colour, a length
-#define GLPT_TAA_BINDING_HISTORY_PREVIOUS 3  // the previous frame's
-#define GLPT_TAA_BINDING_MOTION 4            // the denoiser's GLPT_DN_BINDING_MOTION
-#define GLPT_TAA_BINDING_TILES 5  // the denoiser's tile list (GLPT_DN_BINDING_TILES): its flags
-#define GLPT_TAA_BINDING_SURFACE 6  // G-buffer SURFACE
+#define GLPT_TAA_BINDING_TILES 2  // the denoiser's tile list (GLPT_DN_BINDING_TILES): its flags
+#define GLPT_TAA_BINDING_SURFACE 3  // G-buffer SURFACE
+// The pass's history, this frame's and the previous frame's, lives in buffers reached by device
+// address (TemporalAaUniforms::buffers.zw, histories), as the denoiser's data does (lavapipe
+// stores an image texel lane by lane): per pixel p (row-major) a uvec2 of four half floats, rgb
+// colour and a length.
 // TemporalAaUniforms::image.z flags
 #define GLPT_TAA_HISTORY_VALID 1u  // the previous frame's history belongs to this drawable and size
 // The composite showed an accumulated average (a still scene): it is the image, already
@@ -343,6 +340,9 @@ struct FrameUniforms {
   // GLPT_SCALE below 1 (path_trace.comp's grid and fill passes): x, y: the coarse grid's cells
   // per pixel (the scale), z, w: where in its cell this frame's traced pixel lies, [0, 1)
   vec4 trace_grid;
+  // xy: the device address (low word, high word) of the composite's accumulation (composite.comp:
+  // vec4 texels, 3 layers of one per pixel), zw: unused
+  uvec4 buffers;
 };
 
 // The denoiser's view of one record state (TraceState's history fields).
@@ -388,14 +388,26 @@ struct DenoiseUniforms {
   // x: the work slot of this frame's colour history, y: the previous frame's; z: this frame's
   // stamp, w: the previous frame's (DenoiseGuide::meta.y)
   uvec4 slots;
+  // Device addresses (GL_EXT_buffer_reference_uvec2: low word, high word) of the per-pixel
+  // buffers above: xy this frame's, zw the previous frame's guides, fast histories, moments;
+  // buffers: xy the work slots, zw the motion. 0 where the denoiser does not run.
+  uvec4 guides;
+  uvec4 histories;
+  uvec4 moments;
+  uvec4 buffers;
 };
 
 struct TemporalAaUniforms {
-  // x, y: image size, z: GLPT_TAA_* flags, w: this frame's denoiser stamp (GLPT_DN_BINDING_MOTION)
+  // x, y: image size, z: GLPT_TAA_* flags, w: this frame's denoiser stamp (its motion's)
   uvec4 image;
   // x: weight of a new frame at an edge (GLPT_TAA_ALPHA), y: clip box half-width in standard
   // deviations of the 3x3 neighbourhood (GLPT_TAA_GAMMA), zw: unused
   vec4 params;
+  // Device addresses (low word, high word): xy the denoiser's motion (DenoiseUniforms::buffers.zw),
+  // zw this frame's history
+  uvec4 buffers;
+  // xy: the previous frame's history, zw: unused
+  uvec4 histories;
 };
 
 struct GpuCounters {
@@ -412,12 +424,12 @@ static_assert(sizeof(GpuEmitter) == 96);
 static_assert(sizeof(GpuClipPlanes) == 112);
 static_assert(sizeof(GpuLight) == 112);
 static_assert(sizeof(GpuTraceState) == 112);
-static_assert(sizeof(FrameUniforms) == 96);
+static_assert(sizeof(FrameUniforms) == 112);
 static_assert(sizeof(GpuCounters) == 16);
 static_assert(sizeof(GpuStateHistory) == 160);
 static_assert(sizeof(DenoiseGuide) == 32);
-static_assert(sizeof(DenoiseUniforms) == 96);
-static_assert(sizeof(TemporalAaUniforms) == 32);
+static_assert(sizeof(DenoiseUniforms) == 160);
+static_assert(sizeof(TemporalAaUniforms) == 64);
 }  // namespace glpt::rt::gpu
 #endif
 

@@ -14,12 +14,14 @@
 // iteration's luminance term). The first iteration's output is the next frame's colour history.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_shader_image_load_formatted : require
+#extension GL_EXT_buffer_reference : require
+#extension GL_EXT_buffer_reference_uvec2 : require
 
 #include "svgf/svgf_common.h"
 
 layout(push_constant) uniform Iteration {
   uint step;         // tap spacing in pixels
-  uint input_slot;   // work slots (shared_types.h, GLPT_DN_BINDING_WORK)
+  uint input_slot;   // work slots (shared_types.h, DenoiseUniforms::buffers)
   uint output_slot;  // the first iteration's result is the colour history
   uint also_output;  // a work slot written as well (the first iteration when it is the last), or
                      // GLPT_DN_SLOT_NONE
@@ -63,10 +65,9 @@ void add_tap(ivec2 pixel, ivec2 offset, float h, uint channels) {
   float log_geometry = -abs(dot(n_p, g.eye.xyz - x_p)) * depth_scale / length(vec2(offset)) +
                        dn.sigmas.y * log2(facing);
   if (!(log_geometry > -126.0)) return;  // a weight below the smallest normal float
-  uvec4 pair = load_work_pair(iteration.input_slot, q);
-  add_channel(0u, unpack_work(pair.xy), h, log_geometry);
-  add_channel(1u, unpack_work(pair.zw), h, log_geometry);
-  if (channels > 2u) add_channel(2u, load_work_specular(iteration.input_slot, q), h, log_geometry);
+  add_channel(0u, load_work(iteration.input_slot, 0u, q), h, log_geometry);
+  add_channel(1u, load_work(iteration.input_slot, 1u, q), h, log_geometry);
+  if (channels > 2u) add_channel(2u, load_work(iteration.input_slot, 2u, q), h, log_geometry);
 }
 
 void main() {
@@ -82,10 +83,9 @@ void main() {
   depth_scale = log2_e / (dn.sigmas.x * pixel_footprint(x_p) * float(iteration.step) + 1e-20);
   uint channels = filtered_channels();  // a channel the frame cannot have is neither read nor written
 
-  uvec4 centre_pair = load_work_pair(iteration.input_slot, pixel);
-  centre_values[0] = unpack_work(centre_pair.xy);
-  centre_values[1] = unpack_work(centre_pair.zw);
-  centre_values[2] = channels > 2u ? load_work_specular(iteration.input_slot, pixel) : vec4(0.0);
+  centre_values[0] = load_work(iteration.input_slot, 0u, pixel);
+  centre_values[1] = load_work(iteration.input_slot, 1u, pixel);
+  centre_values[2] = channels > 2u ? load_work(iteration.input_slot, 2u, pixel) : vec4(0.0);
   for (uint c = 0u; c < 3u; ++c) luminance_p[c] = luminance(centre_values[c].rgb);
   // The centre's variance through a 3x3 Gaussian (the paper's prefilter): one noisy variance
   // estimate must not stop the filter. Later iterations read variance the previous iteration
@@ -97,11 +97,13 @@ void main() {
     for (int dy = -1; dy <= 1; ++dy)
       for (int dx = -1; dx <= 1; ++dx) {
         ivec2 q = pixel + ivec2(dx, dy);
-        if (!inside(q) || !meta_shaded(imageLoad(guide_meta, q))) continue;
+        // (a buffer has no border: q is tested before the load, not with it)
+        if (!inside(q)) continue;
+        if (!meta_shaded(load_guide_meta(q))) continue;
         float w = kernel_weight(dx, true) * kernel_weight(dy, true);
-        uvec4 pair = load_work_pair(iteration.input_slot, q);
-        sum += w * vec3(unpackHalf2x16(pair.y).y, unpackHalf2x16(pair.w).y,
-                        channels > 2u ? load_work_specular(iteration.input_slot, q).a : 0.0);
+        sum += w * vec3(load_work_variance(iteration.input_slot, 0u, q),
+                        load_work_variance(iteration.input_slot, 1u, q),
+                        channels > 2u ? load_work_variance(iteration.input_slot, 2u, q) : 0.0);
         total += w;
       }
     variance = sum / max(total, 1e-6);

@@ -20,7 +20,7 @@
 // Writes work slot 0 (colour + variance: the a-trous filter's input), this frame's fast
 // average and moments (the colour history is the first a-trous iteration's result, or written
 // here when there is no iteration), guide, and where the pixel's point was in the previous frame
-// (GLPT_DN_BINDING_MOTION, for the temporal anti-aliasing pass).
+// (the motion buffer, for the temporal anti-aliasing pass).
 // A channel the frame cannot have (filtered_channels) is neither read nor written (the next
 // frame is told, GLPT_DN_PREVIOUS_NO_SPECULAR); a pixel the tracer did not shade writes its
 // guide's meta alone (id 0: every reader tests the id before the eye position). Image stores
@@ -104,20 +104,18 @@ void add_history(ivec2 q, float w, uint tap_length, inout vec3 colour[3], inout 
                  inout vec2 moments[3], inout float history_length, inout float weight_sum) {
   weight_sum += w;
   history_length += w * float(tap_length);
-  // Two channels a texel (shared_types.h, GLPT_DN_BINDING_HISTORY and _MOMENTS).
-  uvec4 slow = load_work_pair(dn.slots.y, q);
-  uvec4 quick = imageLoad(previous_history, ivec3(q, 0));
-  vec4 first_two = imageLoad(previous_history_moments, ivec3(q, 0));
-  colour[0] += w * unpack_work(slow.xy).rgb;
-  colour[1] += w * unpack_work(slow.zw).rgb;
-  fast[0] += w * unpack_work(quick.xy).rgb;
-  fast[1] += w * unpack_work(quick.zw).rgb;
+  // The moments of two channels a texel (shared_types.h).
+  vec4 first_two = load_previous_moments(0u, q);
+  colour[0] += w * load_work(dn.slots.y, 0u, q).rgb;
+  colour[1] += w * load_work(dn.slots.y, 1u, q).rgb;
+  fast[0] += w * load_previous_fast(0u, q);
+  fast[1] += w * load_previous_fast(1u, q);
   moments[0] += w * first_two.xy;
   moments[1] += w * first_two.zw;
   if (filtered_channels() > 2u) {
-    colour[2] += w * load_work_specular(dn.slots.y, q).rgb;
-    fast[2] += w * unpack_work(imageLoad(previous_history, ivec3(q, 1)).xy).rgb;
-    moments[2] += w * imageLoad(previous_history_moments, ivec3(q, 1)).xy;
+    colour[2] += w * load_work(dn.slots.y, 2u, q).rgb;
+    fast[2] += w * load_previous_fast(2u, q);
+    moments[2] += w * load_previous_moments(1u, q).xy;
   }
 }
 
@@ -301,12 +299,12 @@ void main() {
     fasts[c] = fast;
     all_moments[c] = moments;
   }
-  imageStore(history, ivec3(pixel, 0),
-             uvec4(pack_work(vec4(fasts[0], 0.0)), pack_work(vec4(fasts[1], 0.0))));
-  imageStore(history_moments, ivec3(pixel, 0), vec4(all_moments[0], all_moments[1]));
+  store_fast(0u, pixel, fasts[0]);
+  store_fast(1u, pixel, fasts[1]);
+  store_moments(0u, pixel, vec4(all_moments[0], all_moments[1]));
   if (channels > 2u) {
-    imageStore(history, ivec3(pixel, 1), uvec4(pack_work(vec4(fasts[2], 0.0)), 0u, 0u));
-    imageStore(history_moments, ivec3(pixel, 1), vec4(all_moments[2], 0.0, 0.0));
+    store_fast(2u, pixel, fasts[2]);
+    store_moments(1u, pixel, vec4(all_moments[2], 0.0, 0.0));
   }
   // A clamp shortens the history for the next frames' weights but keeps the moments' variance
   // (moved with the colour above): the spatial estimate is for histories that are short.
@@ -361,7 +359,6 @@ void main() {
                vec4(colours[1], variances[1]), vec4(colours[2], variances[2]), channels);
   store_guide(pixel, make_guide(eye, normal, id, uint(history_length)));
   if ((dn.image.z & GLPT_DN_MOTION) != 0u)
-    imageStore(motion, pixel,
-               uvec4(floatBitsToUint(previous_position), (dn.slots.z << 8) | uint(history_length),
-                     floatBitsToUint(-eye.z)));
+    store_motion(pixel, uvec4(floatBitsToUint(previous_position),
+                              (dn.slots.z << 8) | uint(history_length), floatBitsToUint(-eye.z)));
 }

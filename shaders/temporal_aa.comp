@@ -13,7 +13,7 @@
 // box around this frame's 3x3 neighbourhood (Salvi's variance clipping, GDC 2016: mean plus or
 // minus GLPT_TAA_GAMMA standard deviations), so that what the neighbourhood no longer shows (a
 // disocclusion, a light switched, a moving shadow) leaves no trail. The position in the previous
-// frame is the denoiser's (GLPT_DN_BINDING_MOTION: the draw's previous transforms, or a deformed
+// frame is the denoiser's (its motion buffer: the draw's previous transforms, or a deformed
 // triangle's previous vertices); pixels it did not filter (the background, unlit surfaces) read
 // their history where they are.
 //
@@ -22,6 +22,8 @@
 // copies it into the colour buffer.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_shader_image_load_formatted : require
+#extension GL_EXT_buffer_reference : require
+#extension GL_EXT_buffer_reference_uvec2 : require
 
 #include "shared_types.h"
 
@@ -33,14 +35,29 @@ layout(std140, set = 0, binding = GLPT_TAA_BINDING_UNIFORMS) uniform TaaBlock {
 };
 // BGRA8: no format qualifier (the view's format converts).
 layout(set = 0, binding = GLPT_TAA_BINDING_COLOUR) uniform image2D colour_buffer;
-layout(set = 0, binding = GLPT_TAA_BINDING_HISTORY, rgba16f) uniform image2D history;
-layout(set = 0, binding = GLPT_TAA_BINDING_HISTORY_PREVIOUS, rgba16f)
-    uniform readonly image2D previous_history;
-layout(set = 0, binding = GLPT_TAA_BINDING_MOTION, rgba32ui) uniform readonly uimage2D motion;
+// The histories (shared_types.h: rgb colour and length, four half floats a pixel).
+layout(buffer_reference, std430, buffer_reference_align = 16) buffer HistoryTexels {
+  vec4 texels[];
+};
+// The denoiser's motion (shared_types.h: a buffer at TemporalAaUniforms::buffers.xy, a texel
+// per pixel).
+layout(buffer_reference, std430, buffer_reference_align = 16) readonly buffer MotionTexels {
+  uvec4 texels[];
+};
 layout(set = 0, binding = GLPT_TAA_BINDING_SURFACE, rgba32ui)
     uniform readonly uimage2D gbuffer_surface;
 #define GLPT_TILE_LIST_BINDING GLPT_TAA_BINDING_TILES
 #include "svgf/tile_list.h"
+uint pixel_index(ivec2 p) { return uint(p.y) * taa.image.x + uint(p.x); }
+// The denoiser's motion texel of pixel p (inside the image).
+uvec4 load_motion(ivec2 p) { return MotionTexels(taa.buffers.xy).texels[pixel_index(p)]; }
+vec4 load_history(ivec2 p) { return HistoryTexels(taa.buffers.zw).texels[pixel_index(p)]; }
+vec4 load_previous_history(ivec2 p) {
+  return HistoryTexels(taa.histories.xy).texels[pixel_index(p)];
+}
+void store_history(ivec2 p, vec4 value) {
+  HistoryTexels(taa.buffers.zw).texels[pixel_index(p)] = value;
+}
 
 layout(push_constant) uniform Dispatch {
   uint mode;  // GLPT_TAA_RESOLVE or GLPT_TAA_WRITE_BACK
@@ -88,7 +105,7 @@ void main() {
   if (mode == GLPT_TAA_WRITE_BACK) {
     // Only pixels the resolve blended (a positive length): an image store is the dearest
     // operation on lavapipe, and most pixels show this frame unchanged.
-    vec4 h = imageLoad(history, pixel);
+    vec4 h = load_history(pixel);
     if (h.a > 0.0)
       imageStore(colour_buffer, pixel, vec4(h.rgb, imageLoad(colour_buffer, pixel).a));
     return;
@@ -99,22 +116,22 @@ void main() {
   // denoiser's (255 where the denoiser did not filter it).
   float denoiser_length = 255.0;
   if ((taa.image.z & GLPT_TAA_HISTORY_VALID) == 0u) {
-    imageStore(history, pixel, vec4(current_rgb, -1.0));
+    store_history(pixel, vec4(current_rgb, -1.0));
     return;
   }
   // While a still image accumulates, the composite's average is the image: kept as the history
   // (with the denoiser's length at the pixel), nothing written back.
   if ((taa.image.z & GLPT_TAA_TAKE_CURRENT) != 0u) {
-    uvec4 m = imageLoad(motion, pixel);
+    uvec4 m = load_motion(pixel);
     if ((m.z >> 8) == taa.image.w) denoiser_length = float(m.z & 0xFFu);
-    imageStore(history, pixel, vec4(current_rgb, -max(denoiser_length, 1.0)));
+    store_history(pixel, vec4(current_rgb, -max(denoiser_length, 1.0)));
     return;
   }
   // Far from what the denoiser filtered, a pixel no traced draw covers (the background, raster
   // draws: neither is jittered) shows this frame as it is.
   bool near = near_filtered_tile();
   if (!near && imageLoad(gbuffer_surface, pixel).x == 0u) {
-    imageStore(history, pixel, vec4(current_rgb, -255.0));
+    store_history(pixel, vec4(current_rgb, -255.0));
     return;
   }
   // Where the pixel's area was: the denoiser's reprojection of the nearest surface in the 3x3
@@ -131,7 +148,7 @@ void main() {
       ivec2 q = pixel + ivec2(dx, dy);
       if (!near || !inside(q)) continue;
       ++around;
-      uvec4 m = imageLoad(motion, q);
+      uvec4 m = load_motion(q);
       if ((m.z >> 8) != taa.image.w) continue;
       ++with_motion;
       if (dx == 0 && dy == 0) denoiser_length = float(m.z & 0xFFu);
@@ -171,7 +188,7 @@ void main() {
   if (!(edge || detail) || !(denoiser_length > 1.0) || any(isnan(position)) ||
       any(isinf(position)) || any(lessThanEqual(position, vec2(-1.0))) ||
       any(greaterThanEqual(position, vec2(taa.image.xy)))) {
-    imageStore(history, pixel, vec4(current_rgb, -max(denoiser_length, 1.0)));
+    store_history(pixel, vec4(current_rgb, -max(denoiser_length, 1.0)));
     return;
   }
   // Catmull-Rom over the 4x4 texels around (a bilinear read, repeated every frame of a motion,
@@ -190,7 +207,7 @@ void main() {
       ivec2 q = base + ivec2(i - 1, j - 1);
       float w = wx[i].x * wx[j].y;
       if (w == 0.0 || !inside(q)) continue;
-      vec4 h = imageLoad(previous_history, q);
+      vec4 h = load_previous_history(q);
       h.a = abs(h.a);
       sum += w * h;
       weight_sum += w;
@@ -198,12 +215,12 @@ void main() {
   vec4 h = weight_sum > 0.1 ? sum / weight_sum : vec4(0.0);
   vec3 previous = to_ycocg(max(h.rgb, vec3(0.0)));
   if (!(h.a >= 1.0) || any(isnan(previous)) || any(isinf(previous))) {
-    imageStore(history, pixel, vec4(current_rgb, -1.0));
+    store_history(pixel, vec4(current_rgb, -1.0));
     return;
   }
   vec3 deviation = sqrt(max(m2 / count - m1 * m1, vec3(0.0)));
   vec3 kept = clip_to_box(previous, m1, taa.params.y * deviation);
   float history_length = min(min(h.a + 1.0, 255.0), max(denoiser_length, 1.0));
   vec3 result = mix(kept, current, max(taa.params.x, 1.0 / history_length));
-  imageStore(history, pixel, vec4(clamp(from_ycocg(result), 0.0, 1.0), history_length));
+  store_history(pixel, vec4(clamp(from_ycocg(result), 0.0, 1.0), history_length));
 }

@@ -11,7 +11,6 @@ namespace {
 constexpr VkDescriptorSetLayoutBinding kBindings[] = {
     compute_binding(GLPT_CO_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER),
     compute_binding(GLPT_CO_BINDING_STATES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
-    compute_binding(GLPT_CO_BINDING_ACCUMULATION, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
     compute_binding(GLPT_CO_BINDING_GBUFFER + 0, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
     compute_binding(GLPT_CO_BINDING_GBUFFER + 1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
     compute_binding(GLPT_CO_BINDING_GBUFFER + 2, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
@@ -21,7 +20,6 @@ constexpr VkDescriptorSetLayoutBinding kBindings[] = {
     compute_binding(GLPT_CO_BINDING_CHANNELS + 2, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
     compute_binding(GLPT_CO_BINDING_FRONT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
     compute_binding(GLPT_CO_BINDING_BACK, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
-    compute_binding(GLPT_CO_BINDING_DENOISED, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
     compute_binding(GLPT_CO_BINDING_DENOISE, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER),
 };
 static_assert(GLPT_GBUFFER_ATTACHMENTS == 4 && GLPT_CHANNELS == 3);
@@ -38,8 +36,6 @@ void CompositePass::record(VkCommandBuffer cmd, const CompositeResources& resour
   const VkDescriptorSet set = pipeline_.descriptor_set();
   const VkDescriptorBufferInfo frame{resources.frame->handle(), 0, sizeof(gpu::FrameUniforms)};
   const VkDescriptorBufferInfo states{resources.states->handle(), 0, VK_WHOLE_SIZE};
-  const VkDescriptorImageInfo accumulation = general_image_info(resources.accumulation);
-  const VkDescriptorImageInfo denoised = general_image_info(resources.denoised);
   const VkDescriptorBufferInfo denoise{resources.denoise_uniforms->handle(), 0,
                                        sizeof(gpu::DenoiseUniforms)};
   VkDescriptorImageInfo images[GLPT_GBUFFER_ATTACHMENTS + GLPT_CHANNELS + 2];
@@ -52,7 +48,6 @@ void CompositePass::record(VkCommandBuffer cmd, const CompositeResources& resour
   const VkWriteDescriptorSet writes[] = {
       uniform_buffer_write(set, GLPT_CO_BINDING_FRAME, &frame),
       storage_buffer_write(set, GLPT_CO_BINDING_STATES, &states),
-      storage_image_write(set, GLPT_CO_BINDING_ACCUMULATION, &accumulation),
       storage_image_write(set, GLPT_CO_BINDING_GBUFFER + 0, &images[0]),
       storage_image_write(set, GLPT_CO_BINDING_GBUFFER + 1, &images[1]),
       storage_image_write(set, GLPT_CO_BINDING_GBUFFER + 2, &images[2]),
@@ -62,7 +57,6 @@ void CompositePass::record(VkCommandBuffer cmd, const CompositeResources& resour
       storage_image_write(set, GLPT_CO_BINDING_CHANNELS + 2, &images[6]),
       storage_image_write(set, GLPT_CO_BINDING_FRONT, &images[7]),
       storage_image_write(set, GLPT_CO_BINDING_BACK, &images[8]),
-      storage_image_write(set, GLPT_CO_BINDING_DENOISED, &denoised),
       uniform_buffer_write(set, GLPT_CO_BINDING_DENOISE, &denoise),
   };
   pipeline_.update_and_dispatch(device_.handle(), cmd, writes, width, height);

@@ -13,13 +13,12 @@
 namespace glpt::rt {
 
 struct CompositeResources {
-  const GpuBuffer* frame = nullptr;           // gpu::FrameUniforms
-  const GpuBuffer* states = nullptr;          // gpu::GpuTraceState[]
-  VkImageView accumulation = VK_NULL_HANDLE;  // rgba32f array, 3 layers (composite.comp)
+  const GpuBuffer* frame = nullptr;   // gpu::FrameUniforms
+  const GpuBuffer* states = nullptr;  // gpu::GpuTraceState[]
   std::array<VkImageView, 4> gbuffer{};
   std::array<VkImageView, GLPT_CHANNELS> channels{};
-  VkImageView denoised = VK_NULL_HANDLE;  // the denoiser's work slots (any rgba32f array when off)
-  const GpuBuffer* denoise_uniforms = nullptr;  // gpu::DenoiseUniforms (flags 0: not denoised)
+  // gpu::DenoiseUniforms (flags 0: not denoised; else the work slots' address)
+  const GpuBuffer* denoise_uniforms = nullptr;
   VkImageView front = VK_NULL_HANDLE;  // colour buffers (the same view twice when the drawable
   VkImageView back = VK_NULL_HANDLE;   // is single-buffered)
 };

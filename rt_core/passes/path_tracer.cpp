@@ -274,6 +274,7 @@ void PathTracer::write_denoise_inputs(const TraceScene& scene, bool denoise, boo
     uniforms.jitter = glm::vec4(frame_jitter_, 0.0f, 0.0f);
     uniforms.slots = glm::uvec4(denoiser_.history_slot(), denoiser_.previous_history_slot(),
                                 denoiser_.stamp(), denoiser_.previous_stamp());
+    denoiser_.write_addresses(uniforms);
     std::vector<gpu::GpuStateHistory>& histories = state_history_table_;
     histories.assign(std::max<size_t>(scene.states.size(), 1), gpu::GpuStateHistory{});
     for (size_t i = 0; i < scene.states.size(); ++i) {
@@ -294,29 +295,19 @@ void PathTracer::write_denoise_inputs(const TraceScene& scene, bool denoise, boo
 void PathTracer::ensure_channels(uint32_t width, uint32_t height) {
   if (width == channels_width_ && height == channels_height_ && channels_[0]) return;
   for (GpuImage& image : channels_) image = GpuImage();
-  accumulation_ = GpuImage();
+  accumulation_ = GpuBuffer();
   channels_width_ = channels_height_ = 0;
   GpuImageInfo info;
   info.format = VK_FORMAT_R32G32B32A32_SFLOAT;
   info.extent = {width, height, 1};
   info.usage = VK_IMAGE_USAGE_STORAGE_BIT;
   for (GpuImage& image : channels_) image = GpuImage::create(*device_, info);
-  // Sums and counts (composite.comp): what the composite finds there before the first frame of
-  // an accumulation is never read.
-  info.view_type = VK_IMAGE_VIEW_TYPE_2D_ARRAY;
-  info.layers = 3;
-  accumulation_ = GpuImage::create(*device_, info);
-  const bool placeholder_needed = !no_denoised_;
-  if (placeholder_needed) {
-    info.format = VK_FORMAT_R32G32B32A32_UINT;
-    info.extent = {1, 1, 1};
-    info.layers = 1;
-    no_denoised_ = GpuImage::create(*device_, info);
-  }
+  // Sums and counts (composite.comp, three vec4 layers): what the composite finds there before
+  // the first frame of an accumulation is never read.
+  accumulation_ = GpuBuffer::create(*device_, VkDeviceSize{width} * height * 3 * sizeof(glm::vec4),
+                                    VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   device_->submit_and_wait([&](VkCommandBuffer cmd) {
     for (const GpuImage& image : channels_) image.initial_barrier(cmd);
-    accumulation_.initial_barrier(cmd);
-    if (placeholder_needed) no_denoised_.initial_barrier(cmd);
   });
   channels_width_ = width;
   channels_height_ = height;
@@ -571,6 +562,8 @@ void PathTracer::trace(const TraceScene& scene, const TraceTargets& targets, Fra
                                 static_cast<uint32_t>(settings_.light_choice), emitter_count,
                                 sobol_sample_number());
   uniforms.environment = scene.clear_color;
+  uniforms.buffers = glm::uvec4(static_cast<uint32_t>(accumulation_.address()),
+                                static_cast<uint32_t>(accumulation_.address() >> 32), 0u, 0u);
   // GLPT_SCALE: the coarse grid the trace pass traces (none for the reference, whose every
   // pixel is traced); which pixel of each cell moves from frame to frame along a Halton sequence.
   const float scale = settings_.reference_samples > 0 ? 1.0f : settings_.trace_scale;
@@ -635,14 +628,12 @@ void PathTracer::trace(const TraceScene& scene, const TraceTargets& targets, Fra
   CompositeResources composite;
   composite.frame = &frame_uniforms_;
   composite.states = &states_;
-  composite.accumulation = accumulation_.view();
   for (int a = 0; a < GLPT_GBUFFER_ATTACHMENTS; ++a)
     trace.gbuffer[a] = composite.gbuffer[a] = targets.gbuffer->image(a).view();
   for (int c = 0; c < GLPT_CHANNELS; ++c)
     trace.channels[c] = composite.channels[c] = channels_[c].view();
   composite.front = targets.front;
   composite.back = targets.back;
-  composite.denoised = denoise ? denoiser_.work().view() : no_denoised_.view();
   composite.denoise_uniforms = &denoise_uniforms_;
   // Each pass reads what the one before wrote (also across submissions: a barrier's first scope
   // covers earlier submissions to the queue).
@@ -699,11 +690,12 @@ void PathTracer::trace(const TraceScene& scene, const TraceTargets& targets, Fra
           (taa_history ? GLPT_TAA_HISTORY_VALID : 0u) | (take_current ? GLPT_TAA_TAKE_CURRENT : 0u),
           denoiser_.recorded_stamp());
       taa.params = glm::vec4(settings_.denoise.taa_alpha, settings_.denoise.taa_gamma, 0.0f, 0.0f);
+      taa.buffers = glm::uvec4(denoiser_.motion_address(), 0u, 0u);
+      temporal_aa_.write_addresses(taa);
       taa_uniforms_.write(&taa, sizeof taa);
       TemporalAaResources resources;
       resources.uniforms = &taa_uniforms_;
       resources.colour = (scene.default_targets & 2u) != 0 ? targets.back : targets.front;
-      resources.motion = denoiser_.motion().view();
       resources.tiles = &denoiser_.tiles();
       resources.surface = targets.gbuffer->image(GLPT_GBUFFER_SURFACE).view();
       trace_ticket_ = device_->submit([&](VkCommandBuffer cmd) {

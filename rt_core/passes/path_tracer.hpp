@@ -166,10 +166,7 @@ class PathTracer {
   GpuBuffer emitters_;
   GpuBuffer clip_planes_;
   GpuBuffer states_;
-  GpuImage accumulation_;  // sized with the channels (ensure_channels)
-  // A 1x1 stand-in for the denoiser's work image (rgba32ui array, GLPT_DN_BINDING_WORK), bound
-  // to the composite when the frame is not denoised (the composite does not read it then).
-  GpuImage no_denoised_;
+  GpuBuffer accumulation_;  // sized with the channels (ensure_channels)
   // The trace pass's tile-list binding in frames the denoiser skips (which it never writes).
   GpuBuffer no_denoise_tiles_;
 

@@ -17,24 +17,22 @@ constexpr VkDescriptorSetLayoutBinding kBindings[] = {
     compute_binding(GLPT_DN_BINDING_CHANNELS + 0, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
     compute_binding(GLPT_DN_BINDING_CHANNELS + 1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
     compute_binding(GLPT_DN_BINDING_CHANNELS + 2, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
-    compute_binding(GLPT_DN_BINDING_GUIDE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
-    compute_binding(GLPT_DN_BINDING_GUIDE_META, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
-    compute_binding(GLPT_DN_BINDING_GUIDE_PREVIOUS, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
-    compute_binding(GLPT_DN_BINDING_GUIDE_META_PREVIOUS, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
-    compute_binding(GLPT_DN_BINDING_HISTORY, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
-    compute_binding(GLPT_DN_BINDING_HISTORY_PREVIOUS, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
-    compute_binding(GLPT_DN_BINDING_WORK, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
     compute_binding(GLPT_DN_BINDING_SCENE, VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR),
     compute_binding(GLPT_DN_BINDING_INSTANCES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
-    compute_binding(GLPT_DN_BINDING_MOMENTS, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
-    compute_binding(GLPT_DN_BINDING_MOMENTS_PREVIOUS, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
     compute_binding(GLPT_DN_BINDING_TILES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
-    compute_binding(GLPT_DN_BINDING_MOTION, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
 };
 static_assert(GLPT_CHANNELS == 3);
 
-// The work slots and the two colour histories' (shared_types.h, GLPT_DN_BINDING_WORK).
+// The work slots and the two colour histories' (shared_types.h, the work slots).
 constexpr uint32_t kWorkLayers = (GLPT_DN_SLOTS + GLPT_DN_HISTORY_SLOTS) * GLPT_DN_WORK_LAYERS;
+constexpr VkDeviceSize kTexelBytes = 16;  // a layer's texel per pixel (uvec4, vec4)
+static_assert(sizeof(gpu::DenoiseGuide) == 2 * kTexelBytes);
+
+// A device address as GL_EXT_buffer_reference_uvec2 takes it (low word, high word).
+glm::uvec2 address_words(const GpuBuffer& buffer) {
+  const VkDeviceAddress address = buffer.address();
+  return {static_cast<uint32_t>(address), static_cast<uint32_t>(address >> 32)};
+}
 
 struct IterationConstants {
   uint32_t step, input_slot, output_slot, also_output;
@@ -43,13 +41,23 @@ struct IterationConstants {
 }  // namespace
 
 bool SvgfDenoiser::fits(uint32_t width, uint32_t height) const {
-  // The largest image, the work slots, within 2 GiB (lavapipe addresses an image with 32-bit
-  // offsets) and the device's image limits.
-  const VkPhysicalDeviceLimits& limits = device_.properties().limits;
-  const VkDeviceSize work = VkDeviceSize{width} * height * kWorkLayers * sizeof(gpu::uvec4);
-  return work <= VkDeviceSize{0x7fffffff} && width <= limits.maxImageDimension2D &&
-         height <= limits.maxImageDimension2D && kWorkLayers <= limits.maxImageArrayLayers;
+  // The largest buffer, the work slots, within 2 GiB (one allocation; the shaders' 32-bit texel
+  // indices reach 64 GiB).
+  const VkDeviceSize work = VkDeviceSize{width} * height * kWorkLayers * kTexelBytes;
+  return work <= VkDeviceSize{0x7fffffff};
 }
+
+void SvgfDenoiser::write_addresses(gpu::DenoiseUniforms& uniforms) const {
+  const uint32_t current = parity_, previous = parity_ ^ 1u;
+  auto pair = [](glm::uvec2 a, glm::uvec2 b) { return glm::uvec4(a, b); };
+  uniforms.guides = pair(address_words(guides_[current]), address_words(guides_[previous]));
+  uniforms.histories =
+      pair(address_words(histories_[current]), address_words(histories_[previous]));
+  uniforms.moments = pair(address_words(moments_[current]), address_words(moments_[previous]));
+  uniforms.buffers = pair(address_words(work_), address_words(motion_));
+}
+
+glm::uvec2 SvgfDenoiser::motion_address() const { return address_words(motion_); }
 
 bool SvgfDenoiser::prepare(uint32_t width, uint32_t height, const void* owner) {
   if (!temporal_) {
@@ -62,28 +70,19 @@ bool SvgfDenoiser::prepare(uint32_t width, uint32_t height, const void* owner) {
   if (width != width_ || height != height_ || !work_) {
     history_valid_ = false;
     width_ = height_ = 0;
-    auto image = [&](VkFormat format, uint32_t layers,
-                     VkImageUsageFlags usage = VK_IMAGE_USAGE_STORAGE_BIT) {
-      GpuImageInfo info;
-      info.format = format;
-      info.extent = {std::max(width, 1u), std::max(height, 1u), 1};
-      info.usage = usage;
-      info.view_type = layers > 1 ? VK_IMAGE_VIEW_TYPE_2D_ARRAY : VK_IMAGE_VIEW_TYPE_2D;
-      info.layers = layers;
-      return GpuImage::create(device_, info);
+    const VkDeviceSize pixels = VkDeviceSize{std::max(width, 1u)} * std::max(height, 1u);
+    auto buffer = [&](VkDeviceSize layers) {
+      return GpuBuffer::create(
+          device_, pixels * layers * kTexelBytes,
+          VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT);
     };
     for (int i = 0; i < 2; ++i) {
-      guide_eyes_[i] = image(VK_FORMAT_R32G32B32A32_SFLOAT, 1);
-      // Cleared once (record_before_trace).
-      guide_metas_[i] = image(VK_FORMAT_R32G32B32A32_UINT, 1,
-                              VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT);
-      histories_[i] = image(VK_FORMAT_R32G32B32A32_UINT, GLPT_DN_HISTORY_LAYERS);
-      moments_[i] = image(VK_FORMAT_R32G32B32A32_SFLOAT, GLPT_DN_MOMENT_LAYERS);
+      guides_[i] = buffer(2);  // cleared once (record_before_trace)
+      histories_[i] = buffer(GLPT_DN_HISTORY_LAYERS);
+      moments_[i] = buffer(GLPT_DN_MOMENT_LAYERS);
     }
-    work_ = image(VK_FORMAT_R32G32B32A32_UINT, kWorkLayers);
-    // Cleared once (record_before_trace): stamp 0 is no frame's.
-    motion_ = image(VK_FORMAT_R32G32B32A32_UINT, 1,
-                    VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT);
+    work_ = buffer(kWorkLayers);
+    motion_ = buffer(1);  // cleared once (record_before_trace): stamp 0 is no frame's
     // The tile list (GLPT_DN_BINDING_TILES): a header, a flag and a list entry per tile.
     const VkDeviceSize tiles =
         VkDeviceSize{(std::max(width, 1u) + GLPT_IMAGE_TILE_WIDTH - 1) / GLPT_IMAGE_TILE_WIDTH} *
@@ -93,7 +92,7 @@ bool SvgfDenoiser::prepare(uint32_t width, uint32_t height, const void* owner) {
                           VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT |
                               VK_BUFFER_USAGE_TRANSFER_DST_BIT);
     tile_count_ = tiles;
-    images_need_layout_ = true;  // to GENERAL in the next record()
+    buffers_need_clear_ = true;
     width_ = width;
     height_ = height;
   }
@@ -103,22 +102,13 @@ bool SvgfDenoiser::prepare(uint32_t width, uint32_t height, const void* owner) {
 }
 
 void SvgfDenoiser::record_before_trace(VkCommandBuffer cmd) {
-  if (images_need_layout_) {
-    for (int i = 0; i < 2; ++i) {
-      guide_eyes_[i].initial_barrier(cmd);
-      guide_metas_[i].initial_barrier(cmd);
-      histories_[i].initial_barrier(cmd);
-      moments_[i].initial_barrier(cmd);
-    }
-    work_.initial_barrier(cmd);
-    motion_.initial_barrier(cmd);
-    // The passes read guides of tiles they skip: a new image's must say "no surface" (stamp 0).
-    const VkClearColorValue zero{};
-    const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-    for (const GpuImage& metas : guide_metas_)
-      vkCmdClearColorImage(cmd, metas.handle(), VK_IMAGE_LAYOUT_GENERAL, &zero, 1, &range);
-    vkCmdClearColorImage(cmd, motion_.handle(), VK_IMAGE_LAYOUT_GENERAL, &zero, 1, &range);
-    images_need_layout_ = false;
+  if (buffers_need_clear_) {
+    // The passes read guides of tiles they skip: a new buffer's must say "no surface" (id 0,
+    // stamp 0), and a new motion buffer no frame's stamp.
+    for (const GpuBuffer& guides : guides_)
+      vkCmdFillBuffer(cmd, guides.handle(), 0, VK_WHOLE_SIZE, 0u);
+    vkCmdFillBuffer(cmd, motion_.handle(), 0, VK_WHOLE_SIZE, 0u);
+    buffers_need_clear_ = false;
   }
   // An empty tile list: no tile, a dispatch of (0, 1, 1), no tile flagged.
   const uint32_t header[GLPT_DN_TILES_HEADER] = {0u, 1u, 1u, 0u};
@@ -133,28 +123,17 @@ void SvgfDenoiser::record_before_trace(VkCommandBuffer cmd) {
 
 void SvgfDenoiser::record(VkCommandBuffer cmd, const DenoiseResources& resources,
                           uint32_t iterations, bool specular) {
-  const uint32_t current = parity_, previous = parity_ ^ 1u;
+  const uint32_t previous = parity_ ^ 1u;
   const VkDescriptorBufferInfo uniforms{resources.uniforms->handle(), 0,
                                         sizeof(gpu::DenoiseUniforms)};
   const VkDescriptorBufferInfo states{resources.states->handle(), 0, VK_WHOLE_SIZE};
   const VkDescriptorBufferInfo instances{resources.instances->handle(), 0, VK_WHOLE_SIZE};
   const VkDescriptorBufferInfo tiles{tiles_.handle(), 0, VK_WHOLE_SIZE};
   const auto scene_info = acceleration_structure_info(&resources.scene);
-  const VkDescriptorImageInfo images[15] = {general_image_info(resources.position),
-                                            general_image_info(resources.surface),
-                                            general_image_info(resources.channels[0]),
-                                            general_image_info(resources.channels[1]),
-                                            general_image_info(resources.channels[2]),
-                                            general_image_info(guide_eyes_[current].view()),
-                                            general_image_info(guide_metas_[current].view()),
-                                            general_image_info(guide_eyes_[previous].view()),
-                                            general_image_info(guide_metas_[previous].view()),
-                                            general_image_info(histories_[current].view()),
-                                            general_image_info(histories_[previous].view()),
-                                            general_image_info(work_.view()),
-                                            general_image_info(moments_[current].view()),
-                                            general_image_info(moments_[previous].view()),
-                                            general_image_info(motion_.view())};
+  const VkDescriptorImageInfo images[5] = {
+      general_image_info(resources.position), general_image_info(resources.surface),
+      general_image_info(resources.channels[0]), general_image_info(resources.channels[1]),
+      general_image_info(resources.channels[2])};
   for (const ComputePipeline* pipeline : {temporal_.get(), atrous_.get()}) {
     const VkDescriptorSet set = pipeline->descriptor_set();
     const VkWriteDescriptorSet writes[] = {
@@ -165,17 +144,7 @@ void SvgfDenoiser::record(VkCommandBuffer cmd, const DenoiseResources& resources
         storage_image_write(set, GLPT_DN_BINDING_CHANNELS + 0, &images[2]),
         storage_image_write(set, GLPT_DN_BINDING_CHANNELS + 1, &images[3]),
         storage_image_write(set, GLPT_DN_BINDING_CHANNELS + 2, &images[4]),
-        storage_image_write(set, GLPT_DN_BINDING_GUIDE, &images[5]),
-        storage_image_write(set, GLPT_DN_BINDING_GUIDE_META, &images[6]),
-        storage_image_write(set, GLPT_DN_BINDING_GUIDE_PREVIOUS, &images[7]),
-        storage_image_write(set, GLPT_DN_BINDING_GUIDE_META_PREVIOUS, &images[8]),
-        storage_image_write(set, GLPT_DN_BINDING_HISTORY, &images[9]),
-        storage_image_write(set, GLPT_DN_BINDING_HISTORY_PREVIOUS, &images[10]),
-        storage_image_write(set, GLPT_DN_BINDING_WORK, &images[11]),
-        storage_image_write(set, GLPT_DN_BINDING_MOMENTS, &images[12]),
-        storage_image_write(set, GLPT_DN_BINDING_MOMENTS_PREVIOUS, &images[13]),
         storage_buffer_write(set, GLPT_DN_BINDING_TILES, &tiles),
-        storage_image_write(set, GLPT_DN_BINDING_MOTION, &images[14]),
         storage_buffer_write(set, GLPT_DN_BINDING_INSTANCES, &instances),
         acceleration_structure_write(set, GLPT_DN_BINDING_SCENE, &scene_info),
     };

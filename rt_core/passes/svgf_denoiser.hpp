@@ -14,8 +14,8 @@
 
 #include "rt_core/vk/compute_pipeline.hpp"
 #include "rt_core/vk/gpu_buffer.hpp"
-#include "rt_core/vk/gpu_image.hpp"
 #include "rt_core/vk/vk_device.hpp"
+#include "shared_types.h"
 
 namespace glpt::rt {
 
@@ -40,15 +40,14 @@ class SvgfDenoiser {
   // and compiles the passes on first use. Returns whether the previous frame's history can be
   // reprojected (same size and owner, not forgotten). Throws VulkanError.
   bool prepare(uint32_t width, uint32_t height, const void* owner);
-  // Whether the device can filter a width x height frame: the work image (the work slots and
-  // the two colour histories, 10 layers of uvec4: 160 bytes a pixel) past 2 GiB (4096 x 4096
-  // needs 2.7 GB) would wrap lavapipe's 32-bit shader offsets, which crashed the process when
-  // it was a buffer (tests/extremes). Larger frames are shown unfiltered, as under
-  // GLPT_DENOISER=off.
+  // Whether the device can filter a width x height frame: the work slots (and the two colour
+  // histories, 15 layers of vec4: 240 bytes a pixel) are one allocation, kept within 2 GiB
+  // (8.9 million pixels: 4096 x 2160 fits, 4096 x 4096 would need 4 GB; tests/extremes). Larger
+  // frames are shown unfiltered, as under GLPT_DENOISER=off.
   bool fits(uint32_t width, uint32_t height) const;
   // Records, ahead of the trace pass that fills it, this frame's empty tile list (tiles(): the
   // tiles with a pixel the denoiser filters, GLPT_DN_BINDING_TILES), and after prepare() made
-  // new images their layouts and cleared guides. Call it for every frame record() follows.
+  // new buffers their cleared guides and motion. Call it for every frame record() follows.
   void record_before_trace(VkCommandBuffer cmd);
   const GpuBuffer& tiles() const { return tiles_; }
   // The tiles the last record filtered: read once it completed.
@@ -70,10 +69,12 @@ class SvgfDenoiser {
   // (DenoiseUniforms::slots.zw, DenoiseGuide::meta.y): 24 bits, never 0.
   uint32_t stamp() const { return stamp_; }
   uint32_t previous_stamp() const { return previous_stamp_; }
-  const GpuImage& work() const { return work_; }
-  // Where the last record's pixels were in the frame before (GLPT_DN_BINDING_MOTION), and the
-  // stamp that record's texels carry.
-  const GpuImage& motion() const { return motion_; }
+  // The per-pixel buffers' device addresses for the next record (DenoiseUniforms::guides,
+  // histories, moments, buffers: shared_types.h), after prepare().
+  void write_addresses(gpu::DenoiseUniforms& uniforms) const;
+  // Where the last record's pixels were in the frame before (the motion buffer, as
+  // GL_EXT_buffer_reference_uvec2 takes its address), and the stamp that record's texels carry.
+  glm::uvec2 motion_address() const;
   uint32_t recorded_stamp() const { return previous_stamp_; }
   // The next frame starts without history (a failure, a cut the caller knows of).
   void forget_history() noexcept { history_valid_ = false; }
@@ -82,13 +83,14 @@ class SvgfDenoiser {
   const VulkanDevice& device_;
   // Compiled on first use: programs that never denoise never pay for them.
   std::unique_ptr<ComputePipeline> temporal_, atrous_;
-  // Storage images (shared_types.h, GLPT_DN_BINDING_*), by parity: [parity_] is this frame's.
-  std::array<GpuImage, 2> guide_eyes_, guide_metas_, histories_, moments_;
-  GpuImage work_;
-  GpuImage motion_;  // GLPT_DN_BINDING_MOTION
-  GpuBuffer tiles_;  // GLPT_DN_BINDING_TILES, sized with the images
+  // The per-pixel buffers (shared_types.h, DenoiseUniforms), by parity: [parity_] is this
+  // frame's.
+  std::array<GpuBuffer, 2> guides_, histories_, moments_;
+  GpuBuffer work_;
+  GpuBuffer motion_;
+  GpuBuffer tiles_;  // GLPT_DN_BINDING_TILES, sized with the others
   VkDeviceSize tile_count_ = 0;
-  bool images_need_layout_ = false;  // created since the last record(): still UNDEFINED
+  bool buffers_need_clear_ = false;  // created since the last record(): guides and motion
   uint32_t width_ = 0, height_ = 0;
   const void* owner_ = nullptr;
   bool history_valid_ = false;

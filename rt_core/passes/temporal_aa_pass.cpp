@@ -11,14 +11,20 @@ namespace {
 constexpr VkDescriptorSetLayoutBinding kBindings[] = {
     compute_binding(GLPT_TAA_BINDING_UNIFORMS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER),
     compute_binding(GLPT_TAA_BINDING_COLOUR, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
-    compute_binding(GLPT_TAA_BINDING_HISTORY, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
-    compute_binding(GLPT_TAA_BINDING_HISTORY_PREVIOUS, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
-    compute_binding(GLPT_TAA_BINDING_MOTION, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
     compute_binding(GLPT_TAA_BINDING_TILES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
     compute_binding(GLPT_TAA_BINDING_SURFACE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
 };
 
 }  // namespace
+
+void TemporalAaPass::write_addresses(gpu::TemporalAaUniforms& uniforms) const {
+  auto words = [](const GpuBuffer& buffer) {
+    return glm::uvec2(static_cast<uint32_t>(buffer.address()),
+                      static_cast<uint32_t>(buffer.address() >> 32));
+  };
+  uniforms.buffers = glm::uvec4(glm::uvec2(uniforms.buffers), words(histories_[parity_]));
+  uniforms.histories = glm::uvec4(words(histories_[parity_ ^ 1u]), 0u, 0u);
+}
 
 bool TemporalAaPass::prepare(uint32_t width, uint32_t height, const void* owner) {
   if (!pipeline_)
@@ -28,12 +34,12 @@ bool TemporalAaPass::prepare(uint32_t width, uint32_t height, const void* owner)
   if (width != width_ || height != height_ || !histories_[0]) {
     history_valid_ = false;
     width_ = height_ = 0;
-    GpuImageInfo info;
-    info.format = VK_FORMAT_R16G16B16A16_SFLOAT;
-    info.extent = {std::max(width, 1u), std::max(height, 1u), 1};
-    info.usage = VK_IMAGE_USAGE_STORAGE_BIT;
-    for (GpuImage& image : histories_) image = GpuImage::create(device_, info);
-    images_need_layout_ = true;
+    // A vec4 a pixel (shared_types.h, GLPT_TAA_*); every pixel is written before a frame with
+    // history reads it.
+    const VkDeviceSize bytes =
+        VkDeviceSize{std::max(width, 1u)} * std::max(height, 1u) * 4 * sizeof(float);
+    for (GpuBuffer& buffer : histories_)
+      buffer = GpuBuffer::create(device_, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
     width_ = width;
     height_ = height;
   }
@@ -44,27 +50,18 @@ bool TemporalAaPass::prepare(uint32_t width, uint32_t height, const void* owner)
 
 void TemporalAaPass::record(VkCommandBuffer cmd, const TemporalAaResources& resources,
                             uint32_t width, uint32_t height, bool write_back) {
-  if (images_need_layout_) {
-    for (GpuImage& image : histories_) image.initial_barrier(cmd);
-    images_need_layout_ = false;
-  }
-  const uint32_t current = parity_, previous = parity_ ^ 1u;
+  const uint32_t previous = parity_ ^ 1u;
   const VkDescriptorBufferInfo uniforms{resources.uniforms->handle(), 0,
                                         sizeof(gpu::TemporalAaUniforms)};
-  const VkDescriptorImageInfo images[5] = {
-      general_image_info(resources.colour), general_image_info(histories_[current].view()),
-      general_image_info(histories_[previous].view()), general_image_info(resources.motion),
-      general_image_info(resources.surface)};
+  const VkDescriptorImageInfo images[2] = {general_image_info(resources.colour),
+                                           general_image_info(resources.surface)};
   const VkDescriptorBufferInfo tiles{resources.tiles->handle(), 0, VK_WHOLE_SIZE};
   const VkDescriptorSet set = pipeline_->descriptor_set();
   const VkWriteDescriptorSet writes[] = {
       uniform_buffer_write(set, GLPT_TAA_BINDING_UNIFORMS, &uniforms),
       storage_image_write(set, GLPT_TAA_BINDING_COLOUR, &images[0]),
-      storage_image_write(set, GLPT_TAA_BINDING_HISTORY, &images[1]),
-      storage_image_write(set, GLPT_TAA_BINDING_HISTORY_PREVIOUS, &images[2]),
-      storage_image_write(set, GLPT_TAA_BINDING_MOTION, &images[3]),
       storage_buffer_write(set, GLPT_TAA_BINDING_TILES, &tiles),
-      storage_image_write(set, GLPT_TAA_BINDING_SURFACE, &images[4]),
+      storage_image_write(set, GLPT_TAA_BINDING_SURFACE, &images[1]),
   };
   pipeline_->update(device_.handle(), writes);
   const uint32_t resolve = GLPT_TAA_RESOLVE;

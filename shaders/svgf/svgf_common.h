@@ -1,13 +1,12 @@
 // What both SVGF passes (svgf_temporal.comp, svgf_atrous.comp) bind and share: the G-buffer, the
-// raw channels, the guides and histories of this and the previous frame, and the work slots
-// (shared_types.h, GLPT_DN_BINDING_*). Schied et al., "Spatiotemporal Variance-Guided Filtering",
+// raw channels (shared_types.h, GLPT_DN_BINDING_*), and through device addresses the guides and
+// histories of this and the previous frame and the work slots (shared_types.h, DenoiseUniforms). Schied et al., "Spatiotemporal Variance-Guided Filtering",
 // HPG 2017; docs/denoiser.md says what glpt does differently and why.
 #ifndef GLPT_SHADERS_SVGF_COMMON_H
 #define GLPT_SHADERS_SVGF_COMMON_H
 
 #include "gbuffer_layout.h"
 #include "shared_types.h"
-#include "svgf/work_texels.h"
 
 layout(local_size_x = GLPT_TILE_SIZE, local_size_y = GLPT_TILE_SIZE,
        local_size_x_id = GLPT_SPEC_TILE_WIDTH, local_size_y_id = GLPT_SPEC_TILE_HEIGHT) in;
@@ -23,22 +22,18 @@ layout(set = 0, binding = GLPT_DN_BINDING_SURFACE, rgba32ui) uniform readonly ui
 layout(set = 0, binding = GLPT_DN_BINDING_CHANNELS + 0, rgba32f) uniform readonly image2D raw_channel0;
 layout(set = 0, binding = GLPT_DN_BINDING_CHANNELS + 1, rgba32f) uniform readonly image2D raw_channel1;
 layout(set = 0, binding = GLPT_DN_BINDING_CHANNELS + 2, rgba32f) uniform readonly image2D raw_channel2;
-layout(set = 0, binding = GLPT_DN_BINDING_GUIDE, rgba32f) uniform image2D guide_eye;
-layout(set = 0, binding = GLPT_DN_BINDING_GUIDE_META, rgba32ui) uniform uimage2D guide_meta;
-layout(set = 0, binding = GLPT_DN_BINDING_GUIDE_PREVIOUS, rgba32f)
-    uniform readonly image2D previous_guide_eye;
-layout(set = 0, binding = GLPT_DN_BINDING_GUIDE_META_PREVIOUS, rgba32ui)
-    uniform readonly uimage2D previous_guide_meta;
-layout(set = 0, binding = GLPT_DN_BINDING_HISTORY, rgba32ui) uniform uimage2DArray history;
-layout(set = 0, binding = GLPT_DN_BINDING_HISTORY_PREVIOUS, rgba32ui)
-    uniform readonly uimage2DArray previous_history;
-layout(set = 0, binding = GLPT_DN_BINDING_MOMENTS, rgba32f)
-    uniform writeonly image2DArray history_moments;
-layout(set = 0, binding = GLPT_DN_BINDING_MOMENTS_PREVIOUS, rgba32f)
-    uniform readonly image2DArray previous_history_moments;
-layout(set = 0, binding = GLPT_DN_BINDING_WORK, rgba32ui) uniform uimage2DArray work;
-layout(set = 0, binding = GLPT_DN_BINDING_MOTION, rgba32ui) uniform writeonly uimage2D motion;
-
+// The denoiser's per-pixel buffers (shared_types.h: texel layer * width * height + p), reached by
+// the device addresses in DenoiseUniforms. The including pass enables GL_EXT_buffer_reference
+// and GL_EXT_buffer_reference_uvec2.
+layout(buffer_reference, std430, buffer_reference_align = 16) buffer GuideArray {
+  DenoiseGuide guides[];
+};
+layout(buffer_reference, std430, buffer_reference_align = 16) buffer TexelArray {
+  uvec4 texels[];
+};
+layout(buffer_reference, std430, buffer_reference_align = 16) buffer FloatTexelArray {
+  vec4 texels[];
+};
 #define GLPT_TILE_LIST_BINDING GLPT_DN_BINDING_TILES
 #include "svgf/tile_list.h"
 
@@ -49,11 +44,13 @@ ivec2 listed_tile_pixel() {
   return tile_origin(tile, dn.image.xy) + ivec2(gl_LocalInvocationID.xy);
 }
 
-DenoiseGuide load_guide(ivec2 p) {
-  return DenoiseGuide(imageLoad(guide_eye, p), imageLoad(guide_meta, p));
-}
+// Pixel p's index in a layer of the per-pixel buffers (p inside the image).
+uint pixel_index(ivec2 p) { return uint(p.y) * dn.image.x + uint(p.x); }
+uint layer_texel(uint layer, ivec2 p) { return layer * dn.image.x * dn.image.y + pixel_index(p); }
+DenoiseGuide load_guide(ivec2 p) { return GuideArray(dn.guides.xy).guides[pixel_index(p)]; }
+uvec4 load_guide_meta(ivec2 p) { return GuideArray(dn.guides.xy).guides[pixel_index(p)].meta; }
 DenoiseGuide load_previous_guide(ivec2 p) {
-  return DenoiseGuide(imageLoad(previous_guide_eye, p), imageLoad(previous_guide_meta, p));
+  return GuideArray(dn.guides.zw).guides[pixel_index(p)];
 }
 DenoiseGuide make_guide(vec3 eye, vec3 normal, uint id, uint history_length) {
   return DenoiseGuide(vec4(eye, normal.z), uvec4(max(id, 1u), history_length | (dn.slots.z << 8),
@@ -64,29 +61,41 @@ DenoiseGuide make_guide(vec3 eye, vec3 normal, uint id, uint history_length) {
 bool meta_shaded(uvec4 meta) { return meta.x != 0u && (meta.y >> 8) == dn.slots.z; }
 bool guide_shaded(DenoiseGuide g) { return meta_shaded(g.meta); }
 vec3 guide_normal(DenoiseGuide g) { return vec3(uintBitsToFloat(g.meta.zw), g.eye.w); }
-void store_guide(ivec2 p, DenoiseGuide g) {
-  imageStore(guide_eye, p, g.eye);
-  imageStore(guide_meta, p, g.meta);
+void store_guide(ivec2 p, DenoiseGuide g) { GuideArray(dn.guides.xy).guides[pixel_index(p)] = g; }
+// Channel c's fast history (rgb) at p, this frame's (store) or the previous frame's (load).
+vec3 load_previous_fast(uint c, ivec2 p) {
+  return FloatTexelArray(dn.histories.zw).texels[layer_texel(c, p)].rgb;
 }
-// The work slots keep two channels per texel in half floats (shared_types.h,
-// GLPT_DN_BINDING_WORK): on lavapipe an image store is a scalar store per lane and component,
-// the dearest operation of the a-trous iterations, and a load is a call; one texel for the two
-// diffuse channels halves both. Half floats keep 11 bits: far below what 8-bit output shows.
-// Channels 0 (xy) and 1 (zw) of pixel p in work slot `slot`, packed.
-uvec4 load_work_pair(uint slot, ivec2 p) {
-  return imageLoad(work, ivec3(p, slot * GLPT_DN_WORK_LAYERS));
+void store_fast(uint c, ivec2 p, vec3 value) {
+  FloatTexelArray(dn.histories.xy).texels[layer_texel(c, p)] = vec4(value, 0.0);
 }
-vec4 load_work_specular(uint slot, ivec2 p) {
-  return unpack_work(imageLoad(work, ivec3(p, slot * GLPT_DN_WORK_LAYERS + 1u)).xy);
+// The moments' layer `layer` (0: channels 0 and 1, 1: channel 2) at p, this frame's (store) or
+// the previous frame's (load).
+vec4 load_previous_moments(uint layer, ivec2 p) {
+  return FloatTexelArray(dn.moments.zw).texels[layer_texel(layer, p)];
+}
+void store_moments(uint layer, ivec2 p, vec4 value) {
+  FloatTexelArray(dn.moments.xy).texels[layer_texel(layer, p)] = value;
+}
+// Channel c (rgb radiance, luminance variance) of pixel p in work slot `slot`. In floats: on
+// lavapipe a half-float pack or unpack costs more than the gather or scatter of the bytes it
+// saves.
+vec4 load_work(uint slot, uint c, ivec2 p) {
+  return FloatTexelArray(dn.buffers.xy).texels[layer_texel(slot * GLPT_DN_WORK_LAYERS + c, p)];
+}
+float load_work_variance(uint slot, uint c, ivec2 p) {
+  return FloatTexelArray(dn.buffers.xy).texels[layer_texel(slot * GLPT_DN_WORK_LAYERS + c, p)].a;
 }
 // The `channels` (2 or 3) channels of pixel p into work slot `slot`.
 void store_work(uint slot, ivec2 p, vec4 channel0, vec4 channel1, vec4 channel2, uint channels) {
-  imageStore(work, ivec3(p, slot * GLPT_DN_WORK_LAYERS),
-             uvec4(pack_work(channel0), pack_work(channel1)));
-  if (channels > 2u)
-    imageStore(work, ivec3(p, slot * GLPT_DN_WORK_LAYERS + 1u), uvec4(pack_work(channel2), 0u, 0u));
+  FloatTexelArray work = FloatTexelArray(dn.buffers.xy);
+  work.texels[layer_texel(slot * GLPT_DN_WORK_LAYERS, p)] = channel0;
+  work.texels[layer_texel(slot * GLPT_DN_WORK_LAYERS + 1u, p)] = channel1;
+  if (channels > 2u) work.texels[layer_texel(slot * GLPT_DN_WORK_LAYERS + 2u, p)] = channel2;
 }
-
+void store_motion(ivec2 p, uvec4 value) {
+  TexelArray(dn.buffers.zw).texels[pixel_index(p)] = value;
+}
 // Whether pixel q lies in the image.
 bool inside(ivec2 q) {
   return q.x >= 0 && q.y >= 0 && q.x < int(dn.image.x) && q.y < int(dn.image.y);
