@@ -57,12 +57,7 @@ layout(set = 0, binding = GLPT_CO_BINDING_GBUFFER + GLPT_GBUFFER_MATERIAL0, rgba
     uniform readonly uimage2D gbuffer_material0;
 layout(set = 0, binding = GLPT_CO_BINDING_GBUFFER + GLPT_GBUFFER_MATERIAL1, rgba32ui)
     uniform readonly uimage2D gbuffer_material1;
-layout(set = 0, binding = GLPT_CO_BINDING_CHANNELS + GLPT_CHANNEL_DIRECT_DIFFUSE, rgba32f)
-    uniform readonly image2D channel_direct;
-layout(set = 0, binding = GLPT_CO_BINDING_CHANNELS + GLPT_CHANNEL_INDIRECT_DIFFUSE, rgba32f)
-    uniform readonly image2D channel_indirect;
-layout(set = 0, binding = GLPT_CO_BINDING_CHANNELS + GLPT_CHANNEL_SPECULAR, rgba32f)
-    uniform readonly image2D channel_specular;
+#include "channel_texels.h"
 // The denoiser's work slots (shared_types.h: a buffer at DenoiseUniforms::buffers.xy).
 layout(buffer_reference, std430, buffer_reference_align = 16) readonly buffer WorkTexels {
   vec4 texels[];
@@ -131,12 +126,14 @@ void main() {
   uvec4 surface = imageLoad(gbuffer_surface, pixel);
   // Samples of this frame: covered ones the trace pass kept (it drops non-finite ones, which then
   // count nowhere), uncovered ones all of the frame's.
-  float traced = imageLoad(channel_direct, pixel).a;
+  vec4 direct = load_channel(frame.buffers.zw, frame.image.xy, GLPT_CHANNEL_DIRECT_DIFFUSE, pixel);
+  float traced = direct.a;
   bool covered = surface.x != 0u && traced > 0.0;
   uint samples = frame.sampling.y;
-  vec3 raw[GLPT_CHANNELS] = vec3[GLPT_CHANNELS](imageLoad(channel_direct, pixel).rgb,
-                                                imageLoad(channel_indirect, pixel).rgb,
-                                                imageLoad(channel_specular, pixel).rgb);
+  vec3 raw[GLPT_CHANNELS] = vec3[GLPT_CHANNELS](
+      direct.rgb,
+      load_channel(frame.buffers.zw, frame.image.xy, GLPT_CHANNEL_INDIRECT_DIFFUSE, pixel).rgb,
+      load_channel(frame.buffers.zw, frame.image.xy, GLPT_CHANNEL_SPECULAR, pixel).rgb);
   vec4 sum = covered ? composite(pixel, surface, raw) * traced : vec4(0.0);
   // The denoiser filtered what it calls shaded (svgf_temporal.comp): covered pixels, lit ones or
   // any under GLPT_UNLIT=ao; its result is in the slot of its last iteration.

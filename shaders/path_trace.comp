@@ -61,12 +61,12 @@ layout(set = 0, binding = GLPT_PT_BINDING_GBUFFER + GLPT_GBUFFER_MATERIAL0, rgba
     uniform readonly uimage2D gbuffer_material0;
 layout(set = 0, binding = GLPT_PT_BINDING_GBUFFER + GLPT_GBUFFER_MATERIAL1, rgba32ui)
     uniform readonly uimage2D gbuffer_material1;
-layout(set = 0, binding = GLPT_PT_BINDING_CHANNELS + GLPT_CHANNEL_DIRECT_DIFFUSE, rgba32f)
-    uniform image2D channel_direct;
-layout(set = 0, binding = GLPT_PT_BINDING_CHANNELS + GLPT_CHANNEL_INDIRECT_DIFFUSE, rgba32f)
-    uniform image2D channel_indirect;
-layout(set = 0, binding = GLPT_PT_BINDING_CHANNELS + GLPT_CHANNEL_SPECULAR, rgba32f)
-    uniform image2D channel_specular;
+#include "channel_texels.h"
+// This frame's channel c at pixel p (inside the image).
+vec4 load_channel(uint c, ivec2 p) { return load_channel(frame.buffers.zw, frame.image.xy, c, p); }
+void store_channel(uint c, ivec2 p, vec4 value) {
+  store_channel(frame.buffers.zw, frame.image.xy, c, p, value);
+}
 #define GLPT_TILE_LIST_BINDING GLPT_PT_BINDING_DENOISE_TILES
 #include "svgf/tile_list.h"
 layout(push_constant) uniform TracePassBlock {
@@ -507,21 +507,21 @@ bool filled_from_grid(ivec2 pixel, uvec4 surface) {
       if (alike < 0.9) continue;
       vec3 offset = imageLoad(gbuffer_position, traced).xyz - position;
       if (abs(dot(normal, offset)) > 0.1 * length(offset) + 2.0 * footprint) continue;
-      vec4 d = imageLoad(channel_direct, traced);
+      vec4 d = load_channel(GLPT_CHANNEL_DIRECT_DIFFUSE, traced);
       if (d.a <= 0.0) continue;
       vec2 distance = abs(vec2(traced - pixel)) * frame.trace_grid.xy;
       float w = max(1.0 - distance.x, 0.0) * max(1.0 - distance.y, 0.0);
       if (w <= 0.0) continue;
       direct += w * d.rgb;
-      indirect += w * imageLoad(channel_indirect, traced).rgb;
-      specular += w * imageLoad(channel_specular, traced).rgb;
+      indirect += w * load_channel(GLPT_CHANNEL_INDIRECT_DIFFUSE, traced).rgb;
+      specular += w * load_channel(GLPT_CHANNEL_SPECULAR, traced).rgb;
       total += w;
     }
   }
   if (total <= 0.0) return false;
-  imageStore(channel_direct, pixel, vec4(direct / total, float(frame.sampling.y)));
-  imageStore(channel_indirect, pixel, vec4(indirect / total, 0.0));
-  imageStore(channel_specular, pixel, vec4(specular / total, 0.0));
+  store_channel(GLPT_CHANNEL_DIRECT_DIFFUSE, pixel, vec4(direct / total, float(frame.sampling.y)));
+  store_channel(GLPT_CHANNEL_INDIRECT_DIFFUSE, pixel, vec4(indirect / total, 0.0));
+  store_channel(GLPT_CHANNEL_SPECULAR, pixel, vec4(specular / total, 0.0));
   return true;
 }
 
@@ -618,15 +618,15 @@ void main() {
     }
     float scale = traced > 0.0 ? 1.0 / traced : 0.0;
     if (traced > 0.0 && parity) traced = float(samples);
-    imageStore(channel_direct, pixel, vec4(sum.direct * scale, traced));
-    imageStore(channel_indirect, pixel, vec4(sum.indirect * scale, 0.0));
-    imageStore(channel_specular, pixel, vec4(sum.specular * scale, 0.0));
+    store_channel(GLPT_CHANNEL_DIRECT_DIFFUSE, pixel, vec4(sum.direct * scale, traced));
+    store_channel(GLPT_CHANNEL_INDIRECT_DIFFUSE, pixel, vec4(sum.indirect * scale, 0.0));
+    store_channel(GLPT_CHANNEL_SPECULAR, pixel, vec4(sum.specular * scale, 0.0));
     filtered = surface.x != 0u && trace && traced > 0.0;
   } else if (in_image && push.trace_pass == GLPT_TRACE_PASS_FILL) {
     // Traced by the grid pass or filled from it.
     filtered = surface.x != 0u &&
                ((surface.w & GLPT_GBUFFER_LIT) != 0u || has_option(GLPT_OPTION_UNLIT_AO)) &&
-               imageLoad(channel_direct, pixel).a > 0.0;
+               load_channel(GLPT_CHANNEL_DIRECT_DIFFUSE, pixel).a > 0.0;
   }
   // The grid pass leaves the list to the fill pass, which sees every pixel.
   if (has_option(GLPT_OPTION_DENOISE_TILES) && push.trace_pass != GLPT_TRACE_PASS_GRID)

@@ -26,7 +26,6 @@ using mat4 = glm::mat4;
 #define GLPT_PT_BINDING_FRAME 5      // uniform FrameUniforms
 #define GLPT_PT_BINDING_STATES 6     // GpuTraceState[], one per record state
 #define GLPT_PT_BINDING_GBUFFER 7    // 4 storage images (gbuffer_layout.h), bindings 7..10
-#define GLPT_PT_BINDING_CHANNELS 11  // GLPT_CHANNELS storage images (below), bindings 11..13
 #define GLPT_PT_BINDING_TEXTURES 14  // sampler2D[GLPT_TRACE_TEXTURES]: traced draws' 2-D textures
 #define GLPT_PT_BINDING_CLIP_PLANES 15    // GpuClipPlanes[]: the user clip planes of traced draws
 #define GLPT_PT_BINDING_TEXTURES_1D 16    // sampler1D[GLPT_TRACE_TEXTURES_OTHER]
@@ -67,7 +66,6 @@ using mat4 = glm::mat4;
 #define GLPT_CO_BINDING_FRAME 0         // uniform FrameUniforms
 #define GLPT_CO_BINDING_STATES 1        // GpuTraceState[]
 #define GLPT_CO_BINDING_GBUFFER 3       // the G-buffer, bindings 3..6
-#define GLPT_CO_BINDING_CHANNELS 7      // the channels, bindings 7..9
 #define GLPT_CO_BINDING_FRONT 10        // colour buffers: storage images, read and written
 #define GLPT_CO_BINDING_BACK 11
 #define GLPT_CO_BINDING_DENOISE 13   // uniform DenoiseUniforms (its work slots' address)
@@ -78,7 +76,6 @@ using mat4 = glm::mat4;
 #define GLPT_DN_BINDING_STATES 1    // GpuStateHistory[], one per record state
 #define GLPT_DN_BINDING_POSITION 2  // G-buffer POSITION
 #define GLPT_DN_BINDING_SURFACE 3   // G-buffer SURFACE
-#define GLPT_DN_BINDING_CHANNELS 4  // the trace pass's channels, bindings 4..6
 #define GLPT_DN_BINDING_SCENE 7      // the frame's TLAS (deformed surfaces' triangles)
 #define GLPT_DN_BINDING_INSTANCES 8  // GpuInstance[] (GLPT_PT_BINDING_INSTANCES' table)
 // The tiles (GLPT_IMAGE_TILE_WIDTH x GLPT_IMAGE_TILE_HEIGHT pixels, the passes' workgroups) with a
@@ -161,9 +158,13 @@ using mat4 = glm::mat4;
 #define GLPT_TAA_WRITE_BACK 1u  // the history into the colour buffer
 
 // ---- radiance channels -----------------------------------------------------------------------
-// What the trace pass writes per pixel (RGBA32F, this frame's samples averaged; linear HDR
-// radiance with the albedo divided out where the channel is diffuse), and the composite pass (or
-// the denoiser before it) reads. Composite: albedo * (direct + indirect) + specular + emission.
+// What the trace pass writes per pixel (a vec4 per channel, this frame's samples averaged; linear
+// HDR radiance with the albedo divided out where the channel is diffuse), and the composite pass
+// (or the denoiser before it) reads. Composite: albedo * (direct + indirect) + specular +
+// emission. One buffer reached by device address (FrameUniforms::buffers.zw,
+// DenoiseUniforms::channels.xy), layer-major as the denoiser's: channel c of pixel p (row-major)
+// is texel c * width * height + p. Not storage images: lavapipe stores an image texel lane by
+// lane through a function call, and the trace pass writes all three for every pixel.
 #define GLPT_CHANNEL_DIRECT_DIFFUSE 0    // rgb: next-event estimation through the diffuse lobe
 #define GLPT_CHANNEL_INDIRECT_DIFFUSE 1  // rgb: paths continuing from the diffuse lobe + ambient
 #define GLPT_CHANNEL_SPECULAR 2          // rgb: everything reflected by the specular lobe
@@ -340,8 +341,8 @@ struct FrameUniforms {
   // GLPT_SCALE below 1 (path_trace.comp's grid and fill passes): x, y: the coarse grid's cells
   // per pixel (the scale), z, w: where in its cell this frame's traced pixel lies, [0, 1)
   vec4 trace_grid;
-  // xy: the device address (low word, high word) of the composite's accumulation (composite.comp:
-  // vec4 texels, 3 layers of one per pixel), zw: unused
+  // Device addresses (low word, high word): xy the composite's accumulation (composite.comp: vec4
+  // texels, 3 layers of one per pixel), zw the radiance channels (GLPT_CHANNELS, below)
   uvec4 buffers;
 };
 
@@ -395,6 +396,8 @@ struct DenoiseUniforms {
   uvec4 histories;
   uvec4 moments;
   uvec4 buffers;
+  // xy: the trace pass's radiance channels (FrameUniforms::buffers.zw), zw: unused
+  uvec4 channels;
 };
 
 struct TemporalAaUniforms {
@@ -428,7 +431,7 @@ static_assert(sizeof(FrameUniforms) == 112);
 static_assert(sizeof(GpuCounters) == 16);
 static_assert(sizeof(GpuStateHistory) == 160);
 static_assert(sizeof(DenoiseGuide) == 32);
-static_assert(sizeof(DenoiseUniforms) == 160);
+static_assert(sizeof(DenoiseUniforms) == 176);
 static_assert(sizeof(TemporalAaUniforms) == 64);
 }  // namespace glpt::rt::gpu
 #endif

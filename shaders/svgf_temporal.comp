@@ -80,7 +80,7 @@ vec3 before_deformation(vec3 eye, vec3 normal) {
 // Whether the tracer shaded the pixel with samples the denoiser should filter.
 bool shaded(ivec2 q, out uvec4 surface) {
   surface = imageLoad(gbuffer_surface, q);
-  if (surface.x == 0u || !(imageLoad(raw_channel0, q).a > 0.0)) return false;
+  if (surface.x == 0u || !(raw_channel_texel(0u, q).a > 0.0)) return false;
   return (surface.w & GLPT_GBUFFER_LIT) != 0u || (dn.image.z & GLPT_DN_UNLIT_AO) != 0u;
 }
 
@@ -220,11 +220,11 @@ void main() {
         ivec2 q = pixel + ivec2(dx, dy);
         if (!inside(q)) continue;
         // Any traced sample counts (no G-buffer read: this runs for every pixel every frame).
-        vec4 direct = imageLoad(raw_channel0, q);
+        vec4 direct = raw_channel_texel(0u, q);
         if (!(direct.a > 0.0)) continue;
         count += 1.0;
-        float l0 = luminance(direct.rgb), l1 = luminance(imageLoad(raw_channel1, q).rgb),
-              l2 = channels > 2u ? luminance(imageLoad(raw_channel2, q).rgb) : 0.0;
+        float l0 = luminance(direct.rgb), l1 = luminance(raw_channel(q, 1u)),
+              l2 = channels > 2u ? luminance(raw_channel(q, 2u)) : 0.0;
         sums[0] += vec2(l0, l0 * l0);
         sums[1] += vec2(l1, l1 * l1);
         sums[2] += vec2(l2, l2 * l2);

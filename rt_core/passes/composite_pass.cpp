@@ -15,9 +15,6 @@ constexpr VkDescriptorSetLayoutBinding kBindings[] = {
     compute_binding(GLPT_CO_BINDING_GBUFFER + 1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
     compute_binding(GLPT_CO_BINDING_GBUFFER + 2, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
     compute_binding(GLPT_CO_BINDING_GBUFFER + 3, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
-    compute_binding(GLPT_CO_BINDING_CHANNELS + 0, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
-    compute_binding(GLPT_CO_BINDING_CHANNELS + 1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
-    compute_binding(GLPT_CO_BINDING_CHANNELS + 2, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
     compute_binding(GLPT_CO_BINDING_FRONT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
     compute_binding(GLPT_CO_BINDING_BACK, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
     compute_binding(GLPT_CO_BINDING_DENOISE, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER),
@@ -38,13 +35,11 @@ void CompositePass::record(VkCommandBuffer cmd, const CompositeResources& resour
   const VkDescriptorBufferInfo states{resources.states->handle(), 0, VK_WHOLE_SIZE};
   const VkDescriptorBufferInfo denoise{resources.denoise_uniforms->handle(), 0,
                                        sizeof(gpu::DenoiseUniforms)};
-  VkDescriptorImageInfo images[GLPT_GBUFFER_ATTACHMENTS + GLPT_CHANNELS + 2];
+  VkDescriptorImageInfo images[GLPT_GBUFFER_ATTACHMENTS + 2];
   for (uint32_t i = 0; i < GLPT_GBUFFER_ATTACHMENTS; ++i)
     images[i] = general_image_info(resources.gbuffer[i]);
-  for (uint32_t i = 0; i < GLPT_CHANNELS; ++i)
-    images[GLPT_GBUFFER_ATTACHMENTS + i] = general_image_info(resources.channels[i]);
-  images[7] = general_image_info(resources.front);
-  images[8] = general_image_info(resources.back);
+  images[GLPT_GBUFFER_ATTACHMENTS] = general_image_info(resources.front);
+  images[GLPT_GBUFFER_ATTACHMENTS + 1] = general_image_info(resources.back);
   const VkWriteDescriptorSet writes[] = {
       uniform_buffer_write(set, GLPT_CO_BINDING_FRAME, &frame),
       storage_buffer_write(set, GLPT_CO_BINDING_STATES, &states),
@@ -52,11 +47,8 @@ void CompositePass::record(VkCommandBuffer cmd, const CompositeResources& resour
       storage_image_write(set, GLPT_CO_BINDING_GBUFFER + 1, &images[1]),
       storage_image_write(set, GLPT_CO_BINDING_GBUFFER + 2, &images[2]),
       storage_image_write(set, GLPT_CO_BINDING_GBUFFER + 3, &images[3]),
-      storage_image_write(set, GLPT_CO_BINDING_CHANNELS + 0, &images[4]),
-      storage_image_write(set, GLPT_CO_BINDING_CHANNELS + 1, &images[5]),
-      storage_image_write(set, GLPT_CO_BINDING_CHANNELS + 2, &images[6]),
-      storage_image_write(set, GLPT_CO_BINDING_FRONT, &images[7]),
-      storage_image_write(set, GLPT_CO_BINDING_BACK, &images[8]),
+      storage_image_write(set, GLPT_CO_BINDING_FRONT, &images[GLPT_GBUFFER_ATTACHMENTS]),
+      storage_image_write(set, GLPT_CO_BINDING_BACK, &images[GLPT_GBUFFER_ATTACHMENTS + 1]),
       uniform_buffer_write(set, GLPT_CO_BINDING_DENOISE, &denoise),
   };
   pipeline_.update_and_dispatch(device_.handle(), cmd, writes, width, height);

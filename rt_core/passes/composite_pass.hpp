@@ -16,7 +16,6 @@ struct CompositeResources {
   const GpuBuffer* frame = nullptr;   // gpu::FrameUniforms
   const GpuBuffer* states = nullptr;  // gpu::GpuTraceState[]
   std::array<VkImageView, 4> gbuffer{};
-  std::array<VkImageView, GLPT_CHANNELS> channels{};
   // gpu::DenoiseUniforms (flags 0: not denoised; else the work slots' address)
   const GpuBuffer* denoise_uniforms = nullptr;
   VkImageView front = VK_NULL_HANDLE;  // colour buffers (the same view twice when the drawable

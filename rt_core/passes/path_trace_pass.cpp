@@ -23,9 +23,6 @@ constexpr VkDescriptorSetLayoutBinding kBindings[] = {
     compute_binding(GLPT_PT_BINDING_GBUFFER + 1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
     compute_binding(GLPT_PT_BINDING_GBUFFER + 2, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
     compute_binding(GLPT_PT_BINDING_GBUFFER + 3, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
-    compute_binding(GLPT_PT_BINDING_CHANNELS + 0, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
-    compute_binding(GLPT_PT_BINDING_CHANNELS + 1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
-    compute_binding(GLPT_PT_BINDING_CHANNELS + 2, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
     compute_binding(GLPT_PT_BINDING_TEXTURES, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
                     GLPT_TRACE_TEXTURES),
     compute_binding(GLPT_PT_BINDING_TEXTURES_1D, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
@@ -63,11 +60,9 @@ void PathTracePass::record(VkCommandBuffer cmd, const PathTraceResources& resour
   const VkDescriptorBufferInfo denoise_tiles = whole(resources.denoise_tiles);
   const VkDescriptorBufferInfo blue_noise = whole(resources.blue_noise);
   const VkDescriptorBufferInfo frame{resources.frame->handle(), 0, sizeof(gpu::FrameUniforms)};
-  VkDescriptorImageInfo images[GLPT_GBUFFER_ATTACHMENTS + GLPT_CHANNELS];
+  VkDescriptorImageInfo images[GLPT_GBUFFER_ATTACHMENTS];
   for (uint32_t i = 0; i < GLPT_GBUFFER_ATTACHMENTS; ++i)
     images[i] = general_image_info(resources.gbuffer[i]);
-  for (uint32_t i = 0; i < GLPT_CHANNELS; ++i)
-    images[GLPT_GBUFFER_ATTACHMENTS + i] = general_image_info(resources.channels[i]);
   auto texture_write = [set](uint32_t binding, std::span<const VkDescriptorImageInfo> table) {
     auto write = make_info<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
     write.dstSet = set;
@@ -92,9 +87,6 @@ void PathTracePass::record(VkCommandBuffer cmd, const PathTraceResources& resour
       storage_image_write(set, GLPT_PT_BINDING_GBUFFER + 1, &images[1]),
       storage_image_write(set, GLPT_PT_BINDING_GBUFFER + 2, &images[2]),
       storage_image_write(set, GLPT_PT_BINDING_GBUFFER + 3, &images[3]),
-      storage_image_write(set, GLPT_PT_BINDING_CHANNELS + 0, &images[4]),
-      storage_image_write(set, GLPT_PT_BINDING_CHANNELS + 1, &images[5]),
-      storage_image_write(set, GLPT_PT_BINDING_CHANNELS + 2, &images[6]),
       texture_write(GLPT_PT_BINDING_TEXTURES, resources.textures),
       texture_write(GLPT_PT_BINDING_TEXTURES_1D, resources.textures_1d),
       texture_write(GLPT_PT_BINDING_TEXTURES_3D, resources.textures_3d),

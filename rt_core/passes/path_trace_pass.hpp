@@ -1,6 +1,7 @@
 // The trace pass (shaders/path_trace.comp): the light transport of every pixel the G-buffer
 // covers (next-event estimation, bounces, ambient occlusion), written as this frame's radiance
-// channels (shared_types.h, GLPT_CHANNEL_*), which the composite pass turns into colours.
+// channels (shared_types.h, GLPT_CHANNEL_*: a buffer at FrameUniforms::buffers.zw), which the
+// composite pass turns into colours.
 #pragma once
 
 #include <array>
@@ -24,7 +25,6 @@ struct PathTraceResources {
   const GpuBuffer* denoise_tiles = nullptr;  // the denoiser's tile list (GLPT_DN_BINDING_TILES)
   const GpuBuffer* blue_noise = nullptr;     // kBlueNoiseMask (GLPT_PT_BINDING_BLUE_NOISE)
   std::array<VkImageView, 4> gbuffer{};      // gbuffer_layout.h attachments
-  std::array<VkImageView, GLPT_CHANNELS> channels{};  // written
   // Combined image samplers of the texture tables, one per target (every entry valid: dummies
   // where unused).
   std::array<VkDescriptorImageInfo, GLPT_TRACE_TEXTURES> textures{};

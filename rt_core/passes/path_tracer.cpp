@@ -275,6 +275,7 @@ void PathTracer::write_denoise_inputs(const TraceScene& scene, bool denoise, boo
     uniforms.slots = glm::uvec4(denoiser_.history_slot(), denoiser_.previous_history_slot(),
                                 denoiser_.stamp(), denoiser_.previous_stamp());
     denoiser_.write_addresses(uniforms);
+    uniforms.channels = glm::uvec4(channels_.address_words(), 0u, 0u);
     std::vector<gpu::GpuStateHistory>& histories = state_history_table_;
     histories.assign(std::max<size_t>(scene.states.size(), 1), gpu::GpuStateHistory{});
     for (size_t i = 0; i < scene.states.size(); ++i) {
@@ -293,22 +294,21 @@ void PathTracer::write_denoise_inputs(const TraceScene& scene, bool denoise, boo
 }
 
 void PathTracer::ensure_channels(uint32_t width, uint32_t height) {
-  if (width == channels_width_ && height == channels_height_ && channels_[0]) return;
-  for (GpuImage& image : channels_) image = GpuImage();
+  if (width == channels_width_ && height == channels_height_ && channels_) return;
+  channels_ = GpuBuffer();
   accumulation_ = GpuBuffer();
   channels_width_ = channels_height_ = 0;
-  GpuImageInfo info;
-  info.format = VK_FORMAT_R32G32B32A32_SFLOAT;
-  info.extent = {width, height, 1};
-  info.usage = VK_IMAGE_USAGE_STORAGE_BIT;
-  for (GpuImage& image : channels_) image = GpuImage::create(*device_, info);
+  const VkDeviceSize pixels = VkDeviceSize{width} * height;
+  channels_ =
+      GpuBuffer::create(*device_, pixels * GLPT_CHANNELS * sizeof(glm::vec4),
+                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT);
   // Sums and counts (composite.comp, three vec4 layers): what the composite finds there before
   // the first frame of an accumulation is never read.
-  accumulation_ = GpuBuffer::create(*device_, VkDeviceSize{width} * height * 3 * sizeof(glm::vec4),
+  accumulation_ = GpuBuffer::create(*device_, pixels * 3 * sizeof(glm::vec4),
                                     VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-  device_->submit_and_wait([&](VkCommandBuffer cmd) {
-    for (const GpuImage& image : channels_) image.initial_barrier(cmd);
-  });
+  // No samples (alpha 0) until the first trace: a composite before it shows the colour buffer.
+  device_->submit_and_wait(
+      [&](VkCommandBuffer cmd) { vkCmdFillBuffer(cmd, channels_.handle(), 0, VK_WHOLE_SIZE, 0u); });
   channels_width_ = width;
   channels_height_ = height;
 }
@@ -562,8 +562,7 @@ void PathTracer::trace(const TraceScene& scene, const TraceTargets& targets, Fra
                                 static_cast<uint32_t>(settings_.light_choice), emitter_count,
                                 sobol_sample_number());
   uniforms.environment = scene.clear_color;
-  uniforms.buffers = glm::uvec4(static_cast<uint32_t>(accumulation_.address()),
-                                static_cast<uint32_t>(accumulation_.address() >> 32), 0u, 0u);
+  uniforms.buffers = glm::uvec4(accumulation_.address_words(), channels_.address_words());
   // GLPT_SCALE: the coarse grid the trace pass traces (none for the reference, whose every
   // pixel is traced); which pixel of each cell moves from frame to frame along a Halton sequence.
   const float scale = settings_.reference_samples > 0 ? 1.0f : settings_.trace_scale;
@@ -630,8 +629,6 @@ void PathTracer::trace(const TraceScene& scene, const TraceTargets& targets, Fra
   composite.states = &states_;
   for (int a = 0; a < GLPT_GBUFFER_ATTACHMENTS; ++a)
     trace.gbuffer[a] = composite.gbuffer[a] = targets.gbuffer->image(a).view();
-  for (int c = 0; c < GLPT_CHANNELS; ++c)
-    trace.channels[c] = composite.channels[c] = channels_[c].view();
   composite.front = targets.front;
   composite.back = targets.back;
   composite.denoise_uniforms = &denoise_uniforms_;
@@ -659,7 +656,6 @@ void PathTracer::trace(const TraceScene& scene, const TraceTargets& targets, Fra
     resources.instances = trace.instances;
     resources.position = targets.gbuffer->image(GLPT_GBUFFER_POSITION).view();
     resources.surface = targets.gbuffer->image(GLPT_GBUFFER_SURFACE).view();
-    for (int c = 0; c < GLPT_CHANNELS; ++c) resources.channels[c] = channels_[c].view();
     unreported_.push_back({device_->submit([&](VkCommandBuffer cmd) {
                              denoiser_.record_before_trace(cmd);
                              trace_pass_.record(cmd, trace, scene.width, scene.height, grid_width,

@@ -155,8 +155,9 @@ class PathTracer {
   GpuBuffer taa_uniforms_;
   GpuBuffer state_histories_;
   std::vector<gpu::GpuStateHistory> state_history_table_;  // kept to reuse its capacity
-  glm::vec2 frame_jitter_{0.0f};                  // of the G-buffer pass the next trace reads
-  std::array<GpuImage, GLPT_CHANNELS> channels_;  // this frame's radiance (trace -> composite)
+  glm::vec2 frame_jitter_{0.0f};  // of the G-buffer pass the next trace reads
+  // This frame's radiance (trace -> denoiser, composite): GLPT_CHANNELS layers of a vec4 a pixel.
+  GpuBuffer channels_;
   uint32_t channels_width_ = 0, channels_height_ = 0;
   GpuBuffer frame_uniforms_;
   GpuBuffer blue_noise_;  // kBlueNoiseMask, written once

@@ -14,31 +14,22 @@ constexpr VkDescriptorSetLayoutBinding kBindings[] = {
     compute_binding(GLPT_DN_BINDING_STATES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
     compute_binding(GLPT_DN_BINDING_POSITION, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
     compute_binding(GLPT_DN_BINDING_SURFACE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
-    compute_binding(GLPT_DN_BINDING_CHANNELS + 0, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
-    compute_binding(GLPT_DN_BINDING_CHANNELS + 1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
-    compute_binding(GLPT_DN_BINDING_CHANNELS + 2, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE),
     compute_binding(GLPT_DN_BINDING_SCENE, VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR),
     compute_binding(GLPT_DN_BINDING_INSTANCES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
     compute_binding(GLPT_DN_BINDING_TILES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
 };
-static_assert(GLPT_CHANNELS == 3);
 
 // The work slots and the two colour histories' (shared_types.h, the work slots).
 constexpr uint32_t kWorkLayers = (GLPT_DN_SLOTS + GLPT_DN_HISTORY_SLOTS) * GLPT_DN_WORK_LAYERS;
 constexpr VkDeviceSize kTexelBytes = 16;  // a layer's texel per pixel (uvec4, vec4)
 static_assert(sizeof(gpu::DenoiseGuide) == 2 * kTexelBytes);
 
-// A device address as GL_EXT_buffer_reference_uvec2 takes it (low word, high word).
-glm::uvec2 address_words(const GpuBuffer& buffer) {
-  const VkDeviceAddress address = buffer.address();
-  return {static_cast<uint32_t>(address), static_cast<uint32_t>(address >> 32)};
-}
-
 struct IterationConstants {
   uint32_t step, input_slot, output_slot, also_output;
 };
 
 }  // namespace
+static_assert(GLPT_CHANNELS == 3);  // the passes filter three channels
 
 bool SvgfDenoiser::fits(uint32_t width, uint32_t height) const {
   // The largest buffer, the work slots, within 2 GiB (one allocation; the shaders' 32-bit texel
@@ -50,14 +41,14 @@ bool SvgfDenoiser::fits(uint32_t width, uint32_t height) const {
 void SvgfDenoiser::write_addresses(gpu::DenoiseUniforms& uniforms) const {
   const uint32_t current = parity_, previous = parity_ ^ 1u;
   auto pair = [](glm::uvec2 a, glm::uvec2 b) { return glm::uvec4(a, b); };
-  uniforms.guides = pair(address_words(guides_[current]), address_words(guides_[previous]));
+  uniforms.guides = pair(guides_[current].address_words(), guides_[previous].address_words());
   uniforms.histories =
-      pair(address_words(histories_[current]), address_words(histories_[previous]));
-  uniforms.moments = pair(address_words(moments_[current]), address_words(moments_[previous]));
-  uniforms.buffers = pair(address_words(work_), address_words(motion_));
+      pair(histories_[current].address_words(), histories_[previous].address_words());
+  uniforms.moments = pair(moments_[current].address_words(), moments_[previous].address_words());
+  uniforms.buffers = pair(work_.address_words(), motion_.address_words());
 }
 
-glm::uvec2 SvgfDenoiser::motion_address() const { return address_words(motion_); }
+glm::uvec2 SvgfDenoiser::motion_address() const { return motion_.address_words(); }
 
 bool SvgfDenoiser::prepare(uint32_t width, uint32_t height, const void* owner) {
   if (!temporal_) {
@@ -130,10 +121,8 @@ void SvgfDenoiser::record(VkCommandBuffer cmd, const DenoiseResources& resources
   const VkDescriptorBufferInfo instances{resources.instances->handle(), 0, VK_WHOLE_SIZE};
   const VkDescriptorBufferInfo tiles{tiles_.handle(), 0, VK_WHOLE_SIZE};
   const auto scene_info = acceleration_structure_info(&resources.scene);
-  const VkDescriptorImageInfo images[5] = {
-      general_image_info(resources.position), general_image_info(resources.surface),
-      general_image_info(resources.channels[0]), general_image_info(resources.channels[1]),
-      general_image_info(resources.channels[2])};
+  const VkDescriptorImageInfo images[2] = {general_image_info(resources.position),
+                                           general_image_info(resources.surface)};
   for (const ComputePipeline* pipeline : {temporal_.get(), atrous_.get()}) {
     const VkDescriptorSet set = pipeline->descriptor_set();
     const VkWriteDescriptorSet writes[] = {
@@ -141,9 +130,6 @@ void SvgfDenoiser::record(VkCommandBuffer cmd, const DenoiseResources& resources
         storage_buffer_write(set, GLPT_DN_BINDING_STATES, &states),
         storage_image_write(set, GLPT_DN_BINDING_POSITION, &images[0]),
         storage_image_write(set, GLPT_DN_BINDING_SURFACE, &images[1]),
-        storage_image_write(set, GLPT_DN_BINDING_CHANNELS + 0, &images[2]),
-        storage_image_write(set, GLPT_DN_BINDING_CHANNELS + 1, &images[3]),
-        storage_image_write(set, GLPT_DN_BINDING_CHANNELS + 2, &images[4]),
         storage_buffer_write(set, GLPT_DN_BINDING_TILES, &tiles),
         storage_buffer_write(set, GLPT_DN_BINDING_INSTANCES, &instances),
         acceleration_structure_write(set, GLPT_DN_BINDING_SCENE, &scene_info),

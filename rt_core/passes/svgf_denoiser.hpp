@@ -24,7 +24,6 @@ struct DenoiseResources {
   const GpuBuffer* states = nullptr;      // gpu::GpuStateHistory[], per record state
   VkImageView position = VK_NULL_HANDLE;  // G-buffer POSITION and SURFACE
   VkImageView surface = VK_NULL_HANDLE;
-  std::array<VkImageView, 3> channels{};  // the raw channels (GLPT_CHANNELS)
   // The trace's TLAS and instance table: deformed surfaces reproject through their triangles.
   VkAccelerationStructureKHR scene = VK_NULL_HANDLE;
   const GpuBuffer* instances = nullptr;  // gpu::GpuInstance[]

@@ -18,12 +18,8 @@ constexpr VkDescriptorSetLayoutBinding kBindings[] = {
 }  // namespace
 
 void TemporalAaPass::write_addresses(gpu::TemporalAaUniforms& uniforms) const {
-  auto words = [](const GpuBuffer& buffer) {
-    return glm::uvec2(static_cast<uint32_t>(buffer.address()),
-                      static_cast<uint32_t>(buffer.address() >> 32));
-  };
-  uniforms.buffers = glm::uvec4(glm::uvec2(uniforms.buffers), words(histories_[parity_]));
-  uniforms.histories = glm::uvec4(words(histories_[parity_ ^ 1u]), 0u, 0u);
+  uniforms.buffers = glm::uvec4(glm::uvec2(uniforms.buffers), histories_[parity_].address_words());
+  uniforms.histories = glm::uvec4(histories_[parity_ ^ 1u].address_words(), 0u, 0u);
 }
 
 bool TemporalAaPass::prepare(uint32_t width, uint32_t height, const void* owner) {

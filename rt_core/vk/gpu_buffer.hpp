@@ -10,6 +10,7 @@
 
 #include <cstddef>
 #include <cstring>
+#include <glm/vec2.hpp>
 #include <utility>
 
 #include "rt_core/vk/vk_device.hpp"
@@ -43,6 +44,11 @@ class GpuBuffer {
   VkBuffer handle() const { return buffer_.get(); }
   VkDeviceSize size() const { return size_; }
   VkDeviceAddress address() const { return address_; }
+  // The device address as a shader takes it from a uniform (GL_EXT_buffer_reference_uvec2): low
+  // word, high word.
+  glm::uvec2 address_words() const {
+    return {static_cast<uint32_t>(address_), static_cast<uint32_t>(address_ >> 32)};
+  }
   void* mapped() const { return mapped_; }
   template <typename T>
   T* as() const {

@@ -19,9 +19,7 @@ layout(std430, set = 0, binding = GLPT_DN_BINDING_STATES) readonly buffer StateH
 };
 layout(set = 0, binding = GLPT_DN_BINDING_POSITION, rgba32f) uniform readonly image2D gbuffer_position;
 layout(set = 0, binding = GLPT_DN_BINDING_SURFACE, rgba32ui) uniform readonly uimage2D gbuffer_surface;
-layout(set = 0, binding = GLPT_DN_BINDING_CHANNELS + 0, rgba32f) uniform readonly image2D raw_channel0;
-layout(set = 0, binding = GLPT_DN_BINDING_CHANNELS + 1, rgba32f) uniform readonly image2D raw_channel1;
-layout(set = 0, binding = GLPT_DN_BINDING_CHANNELS + 2, rgba32f) uniform readonly image2D raw_channel2;
+#include "channel_texels.h"
 // The denoiser's per-pixel buffers (shared_types.h: texel layer * width * height + p), reached by
 // the device addresses in DenoiseUniforms. The including pass enables GL_EXT_buffer_reference
 // and GL_EXT_buffer_reference_uvec2.
@@ -112,11 +110,10 @@ uint filtered_channels() { return (dn.image.z & GLPT_DN_NO_SPECULAR) != 0u ? 2u 
 
 float luminance(vec3 c) { return dot(c, vec3(0.2126, 0.7152, 0.0722)); }
 
-vec3 raw_channel(ivec2 p, uint c) {
-  return c == 0u   ? imageLoad(raw_channel0, p).rgb
-         : c == 1u ? imageLoad(raw_channel1, p).rgb
-                   : imageLoad(raw_channel2, p).rgb;
-}
+// The trace pass's channel c at p (inside the image): rgb radiance, and in channel 0 the samples
+// traced (0: none).
+vec4 raw_channel_texel(uint c, ivec2 p) { return load_channel(dn.channels.xy, dn.image.xy, c, p); }
+vec3 raw_channel(ivec2 p, uint c) { return raw_channel_texel(c, p).rgb; }
 
 // The size of one pixel at eye-space position `eye`: what depth tolerances scale with.
 float pixel_footprint(vec3 eye) {
