@@ -22,10 +22,10 @@
 // here when there is no iteration), guide, and where the pixel's point was in the previous frame
 // (the motion buffer, for the temporal anti-aliasing pass).
 // A channel the frame cannot have (filtered_channels) is neither read nor written (the next
-// frame is told, GLPT_DN_PREVIOUS_NO_SPECULAR); a pixel the tracer did not shade writes its
-// guide's meta alone (id 0: every reader tests the id before the eye position). Image stores
-// are the dearest operation on lavapipe (a scalar store per lane and component): each one left
-// out counts.
+// frame is told, GLPT_DN_PREVIOUS_NO_SPECULAR); a pixel the tracer did not shade writes nothing
+// (its guide keeps an earlier frame's stamp, which no reader takes for this frame's). Everything
+// written is in buffers reached by device address (shared_types.h): lavapipe stores an image
+// texel lane by lane through a function call, a buffer texel with one scatter.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_shader_image_load_formatted : require
 
