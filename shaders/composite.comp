@@ -42,13 +42,10 @@ layout(std430, set = 0, binding = GLPT_CO_BINDING_STATES) readonly buffer StateT
 // Per pixel, layer 0 rgb: sum of the covered samples' colour, a: sum of their alpha; layer 1
 // x: how many samples were covered, y: how many samples there were, z and w: the same counts from
 // the accumulation's second frame on; layer 2 (frames the denoiser ran, from the second on): as
-// layer 0 with each frame's denoised colour for its samples. Layer-major (texel layer * width *
-// height + row-major pixel), in a buffer reached by device address (FrameUniforms::buffers.xy):
-// not a storage image, which lavapipe stores lane by lane through a function call, nor a buffer
-// binding, which is limited to maxStorageBufferRange (lavapipe: 128 MiB, 2.8 million pixels).
-layout(buffer_reference, std430, buffer_reference_align = 16) buffer AccumulationTexels {
-  vec4 texels[];
-};
+// layer 0 with each frame's denoised colour for its samples. In a buffer reached by device
+// address (FrameUniforms::buffers.xy, pixel_buffers.h): not a storage image, which lavapipe
+// stores lane by lane through a function call, nor a buffer binding, which is limited to
+// maxStorageBufferRange (lavapipe: 128 MiB, 2.8 million pixels).
 layout(set = 0, binding = GLPT_CO_BINDING_GBUFFER + GLPT_GBUFFER_POSITION, rgba32f)
     uniform readonly image2D gbuffer_position;
 layout(set = 0, binding = GLPT_CO_BINDING_GBUFFER + GLPT_GBUFFER_SURFACE, rgba32ui)
@@ -57,11 +54,7 @@ layout(set = 0, binding = GLPT_CO_BINDING_GBUFFER + GLPT_GBUFFER_MATERIAL0, rgba
     uniform readonly uimage2D gbuffer_material0;
 layout(set = 0, binding = GLPT_CO_BINDING_GBUFFER + GLPT_GBUFFER_MATERIAL1, rgba32ui)
     uniform readonly uimage2D gbuffer_material1;
-#include "channel_texels.h"
-// The denoiser's work slots (shared_types.h: a buffer at DenoiseUniforms::buffers.xy).
-layout(buffer_reference, std430, buffer_reference_align = 16) readonly buffer WorkTexels {
-  vec4 texels[];
-};
+#include "pixel_buffers.h"
 layout(std140, set = 0, binding = GLPT_CO_BINDING_DENOISE) uniform DenoiseBlock {
   DenoiseUniforms dn;
 };
@@ -143,43 +136,39 @@ void main() {
   bool lit = (surface.w & GLPT_GBUFFER_LIT) != 0u;
   if (denoising && covered && (lit || (dn.image.z & GLPT_DN_UNLIT_AO) != 0u)) {
     uint slot = dn.image.w == 0u ? 0u : 1u + (dn.image.w - 1u) % 2u;
-    // A layer per channel, layer-major (shared_types.h). A channel the denoiser did not filter
-    // (GLPT_DN_NO_SPECULAR) is not there: taken raw.
-    WorkTexels work = WorkTexels(dn.buffers.xy);
-    uint layer_size = dn.image.x * dn.image.y;
-    uint texel =
-        slot * GLPT_DN_WORK_LAYERS * layer_size + uint(pixel.y) * dn.image.x + uint(pixel.x);
+    // The work slots (shared_types.h, DenoiseUniforms::buffers.xy): a layer per channel. A channel
+    // the denoiser did not filter (GLPT_DN_NO_SPECULAR) is not there: taken raw.
+    uint layer = slot * GLPT_DN_WORK_LAYERS;
     vec3 specular = raw[GLPT_CHANNEL_SPECULAR];
     if ((dn.image.z & GLPT_DN_NO_SPECULAR) == 0u)
-      specular = work.texels[texel + 2u * layer_size].rgb;
-    vec3 light[GLPT_CHANNELS] = vec3[GLPT_CHANNELS](work.texels[texel].rgb,
-                                                    work.texels[texel + layer_size].rgb, specular);
+      specular = load_texel(dn.buffers.xy, dn.image.xy, layer + 2u, pixel).rgb;
+    vec3 light[GLPT_CHANNELS] = vec3[GLPT_CHANNELS](
+        load_texel(dn.buffers.xy, dn.image.xy, layer, pixel).rgb,
+        load_texel(dn.buffers.xy, dn.image.xy, layer + 1u, pixel).rgb, specular);
     denoised_sum = composite(pixel, surface, light) * traced;
   }
   float count = covered ? traced : 0.0;
   float total = surface.x != 0u ? traced : float(samples);
   vec2 denoised_counts = vec2(count, total);
   vec2 later_counts = vec2(0.0);  // of frames after the first (layer 1 zw)
-  AccumulationTexels accumulation = AccumulationTexels(frame.buffers.xy);
-  uint layer_size = frame.image.x * frame.image.y;
-  uint texel = uint(pixel.y) * frame.image.x + uint(pixel.x);
   if (frame.sampling.x != 0u) {
-    sum += accumulation.texels[texel];
-    vec4 counts = accumulation.texels[texel + layer_size];
+    sum += load_texel(frame.buffers.xy, frame.image.xy, 0u, pixel);
+    vec4 counts = load_texel(frame.buffers.xy, frame.image.xy, 1u, pixel);
     count += counts.x;
     total += counts.y;
     // The denoiser runs from an accumulation's first frame until it stops for good (at
     // GLPT_DENOISE_UNTIL samples): while it runs, layer 2 holds the frames' from the second on
     // where any of them covered the pixel.
-    if (denoising && counts.z > 0.0) denoised_sum += accumulation.texels[texel + 2u * layer_size];
+    if (denoising && counts.z > 0.0)
+      denoised_sum += load_texel(frame.buffers.xy, frame.image.xy, 2u, pixel);
     denoised_counts += counts.zw;
     later_counts = denoised_counts;
   }
   if (samples > 0u) {
-    accumulation.texels[texel] = sum;
-    accumulation.texels[texel + layer_size] = vec4(count, total, later_counts);
+    store_texel(frame.buffers.xy, frame.image.xy, 0u, pixel, sum);
+    store_texel(frame.buffers.xy, frame.image.xy, 1u, pixel, vec4(count, total, later_counts));
     if (denoising && denoised_weight < 1.0 && later_counts.x > 0.0)
-      accumulation.texels[texel + 2u * layer_size] = denoised_sum;
+      store_texel(frame.buffers.xy, frame.image.xy, 2u, pixel, denoised_sum);
   }
   if (count > 0.0 && total > 0.0) {
     uint targets = surface.x != 0u ? states[surface.x - 1u].info.z : frame.image.z;

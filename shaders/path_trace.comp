@@ -61,11 +61,11 @@ layout(set = 0, binding = GLPT_PT_BINDING_GBUFFER + GLPT_GBUFFER_MATERIAL0, rgba
     uniform readonly uimage2D gbuffer_material0;
 layout(set = 0, binding = GLPT_PT_BINDING_GBUFFER + GLPT_GBUFFER_MATERIAL1, rgba32ui)
     uniform readonly uimage2D gbuffer_material1;
-#include "channel_texels.h"
+#include "pixel_buffers.h"
 // This frame's channel c at pixel p (inside the image).
 vec4 load_channel(uint c, ivec2 p) { return load_channel(frame.buffers.zw, frame.image.xy, c, p); }
 void store_channel(uint c, ivec2 p, vec4 value) {
-  store_channel(frame.buffers.zw, frame.image.xy, c, p, value);
+  store_texel(frame.buffers.zw, frame.image.xy, c, p, value);
 }
 #define GLPT_TILE_LIST_BINDING GLPT_PT_BINDING_DENOISE_TILES
 #include "svgf/tile_list.h"

@@ -92,7 +92,7 @@ using mat4 = glm::mat4;
 // a vector gather or scatter in the shader itself (an image store measured 0.3 ms a pass over
 // glxgears' 320x240 frame on a 2-core Xeon, a buffer store too little to tell from noise:
 // docs/denoiser.md, "Cost"). Each is an array of texels (16 bytes) in layers of one texel per
-// pixel, layer-major: texel (layer * width * height + p).
+// pixel, layer-major: texel (layer * width * height + p) (pixel_buffers.h, layer_texel).
 // - Guides (DenoiseUniforms::guides: this frame's, the previous frame's): DenoiseGuide[], one per
 //   pixel.
 // - Fast histories (::histories): vec4, GLPT_DN_HISTORY_LAYERS layers, one per channel: a short
@@ -146,8 +146,8 @@ using mat4 = glm::mat4;
 #define GLPT_TAA_BINDING_SURFACE 3  // G-buffer SURFACE
 // The pass's history, this frame's and the previous frame's, lives in buffers reached by device
 // address (TemporalAaUniforms::buffers.zw, histories), as the denoiser's data does (lavapipe
-// stores an image texel lane by lane): per pixel p (row-major) a uvec2 of four half floats, rgb
-// colour and a length.
+// stores an image texel lane by lane): per pixel p (row-major, pixel_buffers.h) a vec4, rgb
+// colour and a length (floats: half floats measured slower, docs/denoiser.md "Cost").
 // TemporalAaUniforms::image.z flags
 #define GLPT_TAA_HISTORY_VALID 1u  // the previous frame's history belongs to this drawable and size
 // The composite showed an accumulated average (a still scene): it is the image, already

@@ -35,29 +35,20 @@ layout(std140, set = 0, binding = GLPT_TAA_BINDING_UNIFORMS) uniform TaaBlock {
 };
 // BGRA8: no format qualifier (the view's format converts).
 layout(set = 0, binding = GLPT_TAA_BINDING_COLOUR) uniform image2D colour_buffer;
-// The histories (shared_types.h: rgb colour and length, four half floats a pixel).
-layout(buffer_reference, std430, buffer_reference_align = 16) buffer HistoryTexels {
-  vec4 texels[];
-};
-// The denoiser's motion (shared_types.h: a buffer at TemporalAaUniforms::buffers.xy, a texel
-// per pixel).
-layout(buffer_reference, std430, buffer_reference_align = 16) readonly buffer MotionTexels {
-  uvec4 texels[];
-};
+// The denoiser's motion (TemporalAaUniforms::buffers.xy) and the histories (rgb colour and
+// length), a texel per pixel (shared_types.h, pixel_buffers.h).
+#include "pixel_buffers.h"
 layout(set = 0, binding = GLPT_TAA_BINDING_SURFACE, rgba32ui)
     uniform readonly uimage2D gbuffer_surface;
 #define GLPT_TILE_LIST_BINDING GLPT_TAA_BINDING_TILES
 #include "svgf/tile_list.h"
-uint pixel_index(ivec2 p) { return uint(p.y) * taa.image.x + uint(p.x); }
 // The denoiser's motion texel of pixel p (inside the image).
-uvec4 load_motion(ivec2 p) { return MotionTexels(taa.buffers.xy).texels[pixel_index(p)]; }
-vec4 load_history(ivec2 p) { return HistoryTexels(taa.buffers.zw).texels[pixel_index(p)]; }
-vec4 load_previous_history(ivec2 p) {
-  return HistoryTexels(taa.histories.xy).texels[pixel_index(p)];
+uvec4 load_motion(ivec2 p) {
+  return PixelUintTexels(taa.buffers.xy).texels[layer_texel(taa.image.xy, 0u, p)];
 }
-void store_history(ivec2 p, vec4 value) {
-  HistoryTexels(taa.buffers.zw).texels[pixel_index(p)] = value;
-}
+vec4 load_history(ivec2 p) { return load_texel(taa.buffers.zw, taa.image.xy, 0u, p); }
+vec4 load_previous_history(ivec2 p) { return load_texel(taa.histories.xy, taa.image.xy, 0u, p); }
+void store_history(ivec2 p, vec4 value) { store_texel(taa.buffers.zw, taa.image.xy, 0u, p, value); }
 
 layout(push_constant) uniform Dispatch {
   uint mode;  // GLPT_TAA_RESOLVE or GLPT_TAA_WRITE_BACK

@@ -1,7 +1,8 @@
-// What both SVGF passes (svgf_temporal.comp, svgf_atrous.comp) bind and share: the G-buffer, the
-// raw channels (shared_types.h, GLPT_DN_BINDING_*), and through device addresses the guides and
-// histories of this and the previous frame and the work slots (shared_types.h, DenoiseUniforms). Schied et al., "Spatiotemporal Variance-Guided Filtering",
-// HPG 2017; docs/denoiser.md says what glpt does differently and why.
+// What both SVGF passes (svgf_temporal.comp, svgf_atrous.comp) bind and share: the G-buffer
+// (shared_types.h, GLPT_DN_BINDING_*), and through device addresses the raw channels, the guides
+// and histories of this and the previous frame and the work slots (shared_types.h,
+// DenoiseUniforms). Schied et al., "Spatiotemporal Variance-Guided Filtering", HPG 2017;
+// docs/denoiser.md says what glpt does differently and why.
 #ifndef GLPT_SHADERS_SVGF_COMMON_H
 #define GLPT_SHADERS_SVGF_COMMON_H
 
@@ -19,18 +20,10 @@ layout(std430, set = 0, binding = GLPT_DN_BINDING_STATES) readonly buffer StateH
 };
 layout(set = 0, binding = GLPT_DN_BINDING_POSITION, rgba32f) uniform readonly image2D gbuffer_position;
 layout(set = 0, binding = GLPT_DN_BINDING_SURFACE, rgba32ui) uniform readonly uimage2D gbuffer_surface;
-#include "channel_texels.h"
-// The denoiser's per-pixel buffers (shared_types.h: texel layer * width * height + p), reached by
-// the device addresses in DenoiseUniforms. The including pass enables GL_EXT_buffer_reference
-// and GL_EXT_buffer_reference_uvec2.
+#include "pixel_buffers.h"
+// The guides: a DenoiseGuide (two texels) per pixel (shared_types.h).
 layout(buffer_reference, std430, buffer_reference_align = 16) buffer GuideArray {
   DenoiseGuide guides[];
-};
-layout(buffer_reference, std430, buffer_reference_align = 16) buffer TexelArray {
-  uvec4 texels[];
-};
-layout(buffer_reference, std430, buffer_reference_align = 16) buffer FloatTexelArray {
-  vec4 texels[];
 };
 #define GLPT_TILE_LIST_BINDING GLPT_DN_BINDING_TILES
 #include "svgf/tile_list.h"
@@ -43,8 +36,7 @@ ivec2 listed_tile_pixel() {
 }
 
 // Pixel p's index in a layer of the per-pixel buffers (p inside the image).
-uint pixel_index(ivec2 p) { return uint(p.y) * dn.image.x + uint(p.x); }
-uint layer_texel(uint layer, ivec2 p) { return layer * dn.image.x * dn.image.y + pixel_index(p); }
+uint pixel_index(ivec2 p) { return layer_texel(dn.image.xy, 0u, p); }
 DenoiseGuide load_guide(ivec2 p) { return GuideArray(dn.guides.xy).guides[pixel_index(p)]; }
 uvec4 load_guide_meta(ivec2 p) { return GuideArray(dn.guides.xy).guides[pixel_index(p)].meta; }
 DenoiseGuide load_previous_guide(ivec2 p) {
@@ -62,37 +54,40 @@ vec3 guide_normal(DenoiseGuide g) { return vec3(uintBitsToFloat(g.meta.zw), g.ey
 void store_guide(ivec2 p, DenoiseGuide g) { GuideArray(dn.guides.xy).guides[pixel_index(p)] = g; }
 // Channel c's fast history (rgb) at p, this frame's (store) or the previous frame's (load).
 vec3 load_previous_fast(uint c, ivec2 p) {
-  return FloatTexelArray(dn.histories.zw).texels[layer_texel(c, p)].rgb;
+  return load_texel(dn.histories.zw, dn.image.xy, c, p).rgb;
 }
 void store_fast(uint c, ivec2 p, vec3 value) {
-  FloatTexelArray(dn.histories.xy).texels[layer_texel(c, p)] = vec4(value, 0.0);
+  store_texel(dn.histories.xy, dn.image.xy, c, p, vec4(value, 0.0));
 }
 // The moments' layer `layer` (0: channels 0 and 1, 1: channel 2) at p, this frame's (store) or
 // the previous frame's (load).
 vec4 load_previous_moments(uint layer, ivec2 p) {
-  return FloatTexelArray(dn.moments.zw).texels[layer_texel(layer, p)];
+  return load_texel(dn.moments.zw, dn.image.xy, layer, p);
 }
 void store_moments(uint layer, ivec2 p, vec4 value) {
-  FloatTexelArray(dn.moments.xy).texels[layer_texel(layer, p)] = value;
+  store_texel(dn.moments.xy, dn.image.xy, layer, p, value);
 }
 // Channel c (rgb radiance, luminance variance) of pixel p in work slot `slot`. In floats: on
 // lavapipe a half-float pack or unpack costs more than the gather or scatter of the bytes it
 // saves.
 vec4 load_work(uint slot, uint c, ivec2 p) {
-  return FloatTexelArray(dn.buffers.xy).texels[layer_texel(slot * GLPT_DN_WORK_LAYERS + c, p)];
+  return load_texel(dn.buffers.xy, dn.image.xy, slot * GLPT_DN_WORK_LAYERS + c, p);
 }
+// Its variance alone: a load of one component (a trailing swizzle of load_work does not shrink
+// the gather of all four).
 float load_work_variance(uint slot, uint c, ivec2 p) {
-  return FloatTexelArray(dn.buffers.xy).texels[layer_texel(slot * GLPT_DN_WORK_LAYERS + c, p)].a;
+  uint texel = layer_texel(dn.image.xy, slot * GLPT_DN_WORK_LAYERS + c, p);
+  return PixelTexels(dn.buffers.xy).texels[texel].a;
 }
 // The `channels` (2 or 3) channels of pixel p into work slot `slot`.
 void store_work(uint slot, ivec2 p, vec4 channel0, vec4 channel1, vec4 channel2, uint channels) {
-  FloatTexelArray work = FloatTexelArray(dn.buffers.xy);
-  work.texels[layer_texel(slot * GLPT_DN_WORK_LAYERS, p)] = channel0;
-  work.texels[layer_texel(slot * GLPT_DN_WORK_LAYERS + 1u, p)] = channel1;
-  if (channels > 2u) work.texels[layer_texel(slot * GLPT_DN_WORK_LAYERS + 2u, p)] = channel2;
+  store_texel(dn.buffers.xy, dn.image.xy, slot * GLPT_DN_WORK_LAYERS, p, channel0);
+  store_texel(dn.buffers.xy, dn.image.xy, slot * GLPT_DN_WORK_LAYERS + 1u, p, channel1);
+  if (channels > 2u)
+    store_texel(dn.buffers.xy, dn.image.xy, slot * GLPT_DN_WORK_LAYERS + 2u, p, channel2);
 }
 void store_motion(ivec2 p, uvec4 value) {
-  TexelArray(dn.buffers.zw).texels[pixel_index(p)] = value;
+  PixelUintTexels(dn.buffers.zw).texels[pixel_index(p)] = value;
 }
 // Whether pixel q lies in the image.
 bool inside(ivec2 q) {
