@@ -27,6 +27,23 @@ namespace {
 constexpr uint32_t kMaxReferencePasses = 64;
 
 // VkTransformMatrixKHR is the top 3 rows of a row-major 4x4; glm is column-major.
+// The TLAS facing of a draw: Vulkan calls a triangle's face front when a ray meets it from the
+// side its right-handed normal (p1 - p0) x (p2 - p0) points to (its vertices counter-clockwise
+// as seen from that side; Vulkan spec, "Ray Face Culling"), and the trace pass's queries cull by
+// facing (shaders/trace/queries.h): so the face GL culls must be Vulkan's back face. A draw GL
+// does not cull is solid from both sides.
+VkGeometryInstanceFlagsKHR facing_flags(TracedSurface::CulledSide culled) {
+  switch (culled) {
+    case TracedSurface::CulledSide::kNone:
+      return VK_GEOMETRY_INSTANCE_TRIANGLE_FACING_CULL_DISABLE_BIT_KHR;
+    case TracedSurface::CulledSide::kCounterClockwise:
+      return VK_GEOMETRY_INSTANCE_TRIANGLE_FLIP_FACING_BIT_KHR;
+    case TracedSurface::CulledSide::kClockwise:
+      return 0;
+  }
+  return VK_GEOMETRY_INSTANCE_TRIANGLE_FACING_CULL_DISABLE_BIT_KHR;
+}
+
 VkTransformMatrixKHR to_vk_transform(const glm::mat4& m) {
   VkTransformMatrixKHR transform;
   for (int row = 0; row < 3; ++row) {
@@ -373,7 +390,7 @@ void PathTracer::build_scene_setup(const TraceScene& scene, TextureCache* textur
     // Alpha-tested and clipped draws are not opaque: the queries' candidate loops test each
     // hit's alpha and clip planes.
     tlas_instance.flags =
-        VK_GEOMETRY_INSTANCE_TRIANGLE_FACING_CULL_DISABLE_BIT_KHR |
+        facing_flags(instance.surface.culled_side) |
         (instance.surface.tests_candidates() ? VK_GEOMETRY_INSTANCE_FORCE_NO_OPAQUE_BIT_KHR
                                              : VK_GEOMETRY_INSTANCE_FORCE_OPAQUE_BIT_KHR);
     tlas_instance.accelerationStructureReference = entry->blas_address;

@@ -123,6 +123,27 @@ TracedSurface surface_texture_of(const rec::StateSnapshot& state) {
   return surface;
 }
 
+// The side of a draw's triangles GL culls, in the coordinates its triangles are traced in
+// (object space, or eye space for a projective modelview, whose vertices are transformed on the
+// CPU): GL decides front and back by the winding in window coordinates (GL 1.5 2.6.1.1), which
+// a mirroring modelview or projection reverses, and culls GL_BACK (or GL_FRONT) faces of the
+// glFrontFace convention.
+TracedSurface::CulledSide culled_side_of(const rec::StateSnapshot& state, bool projective) {
+  using Side = TracedSurface::CulledSide;
+  const rec::PrimitiveState& primitive = state.raster->primitive;
+  if (!primitive.cull_face || primitive.cull_face_mode == GL_FRONT_AND_BACK) return Side::kNone;
+  // Culled: the faces counter-clockwise in the window under glFrontFace(GL_CW) and GL_BACK.
+  bool culled_window_ccw = (primitive.front_face == GL_CW) != (primitive.cull_face_mode == GL_FRONT);
+  const rec::TransformState& transform = *state.transform;
+  bool culled_ccw = culled_window_ccw != projection_mirrors(transform.projection);
+  if (!projective) {
+    const double det = glm::determinant(glm::dmat3(glm::mat3(transform.modelview)));
+    if (!(std::abs(det) > 0.0) || !std::isfinite(det)) return Side::kNone;  // flat: no sides
+    culled_ccw = culled_ccw != (det < 0.0);
+  }
+  return culled_ccw ? Side::kCounterClockwise : Side::kClockwise;
+}
+
 // Vertex `src`'s eye-space normal as GL's texture generation uses it (GL 1.5 2.11.3): the
 // inverse transpose of the modelview, then GL_RESCALE_NORMAL's factor or GL_NORMALIZE.
 glm::vec3 eye_normal_of(const rec::VertexData& v, uint32_t src,
@@ -207,7 +228,11 @@ class Batcher {
     const rec::TransformState& transform = *state.transform;
     const bool projective = is_projective_modelview(transform.modelview);
     const glm::mat4 modelview = projective ? glm::mat4(1.0f) : transform.modelview;
+    const rec::PrimitiveState& primitive = state.raster->primitive;
+    // Culling both faces draws no polygon: nothing for rays either.
+    if (primitive.cull_face && primitive.cull_face_mode == GL_FRONT_AND_BACK) return;
     TracedSurface surface = surface_texture_of(state);
+    surface.culled_side = culled_side_of(state, projective);
     if (opaque_part) {
       // The draw's own alpha test, if any, passes every opaque fragment (splits_by_alpha).
       surface.alpha_func = GL_GEQUAL;
@@ -444,6 +469,35 @@ void set_history(const rec::StateSnapshot& state, const DrawIdentity* identity, 
 }
 
 }  // namespace
+
+bool projection_mirrors(const glm::mat4& projection) {
+  // A small triangle at the centre of the view volume, counter-clockwise as seen from the
+  // viewer; mirrored when its window coordinates run clockwise.
+  const glm::dmat4 p(projection);
+  const double det = glm::determinant(p);
+  if (!(std::abs(det) > 0.0) || !std::isfinite(det)) return false;
+  glm::dvec4 centre = glm::inverse(p) * glm::dvec4(0.0, 0.0, 0.0, 1.0);
+  if (!(std::abs(centre.w) > 0.0)) return false;
+  const glm::dvec3 c = glm::dvec3(centre) / centre.w;
+  const glm::dvec4 viewer(viewer_of_projection(projection));
+  glm::dvec3 towards = viewer.w != 0.0 ? glm::dvec3(viewer) - c : glm::dvec3(viewer);
+  const double distance = glm::length(towards);
+  if (!(distance > 0.0) || !std::isfinite(distance)) return false;
+  towards /= distance;
+  const glm::dvec3 helper = std::abs(towards.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
+  const glm::dvec3 u = glm::normalize(glm::cross(helper, towards));
+  const glm::dvec3 v = glm::cross(towards, u);  // u x v = towards
+  const double size = 1e-3 * std::max(distance, glm::length(c));
+  glm::dvec2 window[3];
+  const glm::dvec3 corners[3] = {c, c + size * u, c + size * v};
+  for (int k = 0; k < 3; ++k) {
+    const glm::dvec4 clip = p * glm::dvec4(corners[k], 1.0);
+    if (!(clip.w > 0.0)) return false;
+    window[k] = glm::dvec2(clip) / clip.w;
+  }
+  const glm::dvec2 a = window[1] - window[0], b = window[2] - window[0];
+  return a.x * b.y - a.y * b.x < 0.0;
+}
 
 glm::vec4 viewer_of_projection(const glm::mat4& projection) {
   // The centre of projection is the eye-space point every clip x, y and w vanish at: the

@@ -62,4 +62,10 @@ void build_trace_scene(const rec::FrameRecord& record, const rec::DrawableConfig
 // the sign is GL's lighting convention (+Z, the infinite viewer).
 glm::vec4 viewer_of_projection(const glm::mat4& projection);
 
+// Whether `projection` mirrors what it shows (a glOrtho or glFrustum with right < left, or
+// top < bottom): a triangle counter-clockwise as seen from its viewer (viewer_of_projection)
+// runs clockwise in window coordinates, so GL calls its other face the front. False for a
+// degenerate projection.
+bool projection_mirrors(const glm::mat4& projection);
+
 }  // namespace glpt::rt

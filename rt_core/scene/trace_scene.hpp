@@ -102,6 +102,16 @@ struct TracedSurface {
   uint32_t clip_plane_count = 0;
   std::array<glm::vec4, kMaxClipPlanes> clip_planes{};
 
+  // GL's face culling as rays see it (docs/light-transport.md, "Culled faces"): the side of
+  // its triangles GL discards, named by the object-space winding the triangle shows from that
+  // side (counter-clockwise: the side its right-handed normal (p1 - p0) x (p2 - p0) points to).
+  // The modelview's and the projection's mirrors and glFrontFace are folded in, so it is the
+  // side the camera never sees. Rays looking out from a surface (bounces) see only the other
+  // side; rays that stand for light arriving (shadow rays, ambient occlusion) are blocked only
+  // by faces that light meets on their drawn side.
+  enum class CulledSide : uint8_t { kNone, kCounterClockwise, kClockwise };
+  CulledSide culled_side = CulledSide::kNone;
+
   // Rays must test candidate hits on it (alpha test, clip planes): not an opaque TLAS instance.
   bool tests_candidates() const { return alpha_func != 0 || clip_plane_count != 0; }
   bool operator==(const TracedSurface&) const = default;

@@ -41,11 +41,22 @@ void confirm_if_visible(rayQueryEXT query) {
     rayQueryConfirmIntersectionEXT(query);
 }
 
+// Faces GL culls (TracedSurface::culled_side, the TLAS's back faces of draws that cull) are seen
+// by no ray that looks out from a surface, as GL's camera never sees them: the closest hit skips
+// back faces. Rays that stand for light arriving (shadow rays, ambient occlusion) travel the
+// other way: light meets a face from the side the ray leaves, so they skip front faces and are
+// blocked by a culling draw only where light meets its drawn side (as a shadow map drawn with
+// the program's own culling would be). Closed objects block both kinds; an open or inside-out
+// one (a lamp drawn from the inside with its near wall culled) lets light through its culled
+// side, as GL's image shows. Draws that do not cull are solid from both sides.
+const uint kLookingRayFlags = gl_RayFlagsCullBackFacingTrianglesEXT;
+const uint kLightRayFlags = gl_RayFlagsCullFrontFacingTrianglesEXT;
+
 // The closest hit on the instances `mask` selects (GLPT_MASK_VISIBLE: the world; GLPT_MASK_SKY:
 // the sky).
 bool trace_closest(vec3 origin, vec3 direction, float t_max, uint mask, out Hit hit) {
   rayQueryEXT query;
-  rayQueryInitializeEXT(query, scene, gl_RayFlagsNoneEXT, mask, origin, 0.0, direction, t_max);
+  rayQueryInitializeEXT(query, scene, kLookingRayFlags, mask, origin, 0.0, direction, t_max);
   while (rayQueryProceedEXT(query)) confirm_if_visible(query);
   if (rayQueryGetIntersectionTypeEXT(query, true) != gl_RayQueryCommittedIntersectionTriangleEXT)
     return false;
@@ -63,7 +74,8 @@ bool trace_closest(vec3 origin, vec3 direction, float t_max, uint mask, out Hit 
 bool query_occlusion(vec3 origin, vec3 direction, float t_max, uint cull_mask, bool first_hit,
                      out float t, out int instance) {
   rayQueryEXT query;
-  rayQueryInitializeEXT(query, scene, first_hit ? gl_RayFlagsTerminateOnFirstHitEXT : 0u,
+  rayQueryInitializeEXT(query, scene,
+                        kLightRayFlags | (first_hit ? gl_RayFlagsTerminateOnFirstHitEXT : 0u),
                         cull_mask, origin, 0.0, direction, t_max);
   while (rayQueryProceedEXT(query)) confirm_if_visible(query);
   bool hit = rayQueryGetIntersectionTypeEXT(query, true) != gl_RayQueryCommittedIntersectionNoneEXT;

@@ -172,6 +172,84 @@ TEST(PathTracedGl, CulledFacesAreAbsent) {
   EXPECT_EQ(image.at(pixel_of(1.2f, -5), kSize / 2), (Rgba{0, 0, 64, 255}));
 }
 
+// A wall facing the camera at z = -6, lit by a directional light from the camera's side (+Z),
+// and a larger wall behind the camera (z = 2, out of view) between it and the light, drawn by
+// `occluder` (its vertices counter-clockwise seen from +Z when `ccw_towards_light`). Returns
+// the lit wall's centre.
+Rgba wall_behind_occluder(const std::function<void()>& setup, bool ccw_towards_light,
+                          const std::function<void()>& projection = {}) {
+  Image image = render("path", [&] {
+    camera_3d();
+    if (projection) {
+      glMatrixMode(GL_PROJECTION);
+      glLoadIdentity();
+      projection();
+      glMatrixMode(GL_MODELVIEW);
+    }
+    glEnable(GL_LIGHTING);
+    glEnable(GL_LIGHT0);
+    light(GL_LIGHT0, 1, 1, 1);
+    quad(-8, -8, 8, 8, -6);
+    glPushMatrix();
+    setup();
+    const float x0 = -20, x1 = 20, y0 = -20, y1 = 20, z = 2;
+    glBegin(GL_QUADS);
+    glNormal3f(0, 0, 1);
+    if (ccw_towards_light) {
+      glVertex3f(x0, y0, z), glVertex3f(x1, y0, z), glVertex3f(x1, y1, z), glVertex3f(x0, y1, z);
+    } else {
+      glVertex3f(x0, y0, z), glVertex3f(x0, y1, z), glVertex3f(x1, y1, z), glVertex3f(x1, y0, z);
+    }
+    glEnd();
+    glPopMatrix();
+  });
+  return image.at(kSize / 2, kSize / 2);
+}
+
+TEST(PathTracedGl, CulledFacesBlockLightOnlyOnTheSideGlDraws) {
+  // A draw GL culls has one side: light passes its culled side, so an open or inside-out object
+  // (xscreensaver's lavalite draws its lamp from the inside, the near wall culled) does not
+  // shadow what GL shows lit. Light meets the occluder from +Z; the checks cover each input to
+  // "which side GL culls": glCullFace, glFrontFace, a mirroring modelview and projection.
+  auto cull = [](GLenum face, GLenum front) {
+    return [=] {
+      glEnable(GL_CULL_FACE);
+      glCullFace(face);
+      glFrontFace(front);
+    };
+  };
+  auto lit = [](Rgba c) { return c.r > 120; };
+  auto shadowed = [](Rgba c) { return c.r < 60; };
+  // Culling off: solid from both sides, as before.
+  const Rgba solid = wall_behind_occluder([] { glDisable(GL_CULL_FACE); }, false);
+  EXPECT_PRED1(shadowed, solid) << solid;
+  // Its front towards the light: light meets the drawn side.
+  const Rgba front = wall_behind_occluder(cull(GL_BACK, GL_CCW), true);
+  EXPECT_PRED1(shadowed, front) << front;
+  // Its back towards the light: light meets the culled side and passes.
+  const Rgba back = wall_behind_occluder(cull(GL_BACK, GL_CCW), false);
+  EXPECT_PRED1(lit, back) << back;
+  // The same winding with glFrontFace(GL_CW), or culling GL_FRONT: the side towards the light is
+  // drawn again.
+  const Rgba clockwise = wall_behind_occluder(cull(GL_BACK, GL_CW), false);
+  EXPECT_PRED1(shadowed, clockwise) << clockwise;
+  const Rgba front_culled = wall_behind_occluder(cull(GL_FRONT, GL_CCW), false);
+  EXPECT_PRED1(shadowed, front_culled) << front_culled;
+  // A mirroring modelview reverses the window winding: the vertices given counter-clockwise
+  // towards the light are clockwise after glScalef(-1, 1, 1), so light meets the culled side.
+  const Rgba mirrored = wall_behind_occluder(
+      [&] {
+        cull(GL_BACK, GL_CCW)();
+        glScalef(-1, 1, 1);
+      },
+      true);
+  EXPECT_PRED1(lit, mirrored) << mirrored;
+  // So does a mirroring projection (left and right swapped).
+  const Rgba mirrored_projection = wall_behind_occluder(
+      cull(GL_BACK, GL_CCW), true, [] { glFrustum(0.577, -0.577, -0.577, 0.577, 1.0, 20.0); });
+  EXPECT_PRED1(lit, mirrored_projection) << mirrored_projection;
+}
+
 // GL's planar projection of everything onto `plane` from the light at `light` (homogeneous),
 // as OpenGL demos build it, column-major for glMultMatrixf.
 void shadow_matrix(const float plane[4], const float light[4], float m[16]) {
