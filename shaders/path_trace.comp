@@ -273,7 +273,8 @@ bool blocked(Surface s, OcclusionRay ray) {
   float t;
   int instance;
   bool hit = query_occlusion(s.shadow_position, ray.direction, ray.t_max, ray.cull_mask,
-                             !ray.ambient || frame.params.x > 0.0, t, instance);
+                             !ray.ambient || frame.params.x > 0.0,
+                             ray.ambient ? kLookingRayFlags : kLightRayFlags, t, instance);
   if (!hit || !ray.ambient || frame.params.x > 0.0) return hit;
   return t < uintBitsToFloat(instances[instance].materials.w);
 }

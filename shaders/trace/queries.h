@@ -42,13 +42,14 @@ void confirm_if_visible(rayQueryEXT query) {
 }
 
 // Faces GL culls (TracedSurface::culled_side, the TLAS's back faces of draws that cull) are seen
-// by no ray that looks out from a surface, as GL's camera never sees them: the closest hit skips
-// back faces. Rays that stand for light arriving (shadow rays, ambient occlusion) travel the
-// other way: light meets a face from the side the ray leaves, so they skip front faces and are
-// blocked by a culling draw only where light meets its drawn side (as a shadow map drawn with
-// the program's own culling would be). Closed objects block both kinds; an open or inside-out
-// one (a lamp drawn from the inside with its near wall culled) lets light through its culled
-// side, as GL's image shows. Draws that do not cull are solid from both sides.
+// by no ray that looks out from a surface, as GL's camera never sees them: bounce rays and
+// ambient occlusion (which measures how near the geometry a point sees is) skip back faces.
+// Shadow rays stand for light arriving from a light, which meets a face from the far end of the
+// ray: they skip front faces and are blocked by a culling draw only where light meets its drawn
+// side (as a shadow map drawn with the program's own culling would be). Closed objects block
+// both kinds; an open or inside-out one (a lamp drawn from the inside with its near wall
+// culled) lets light through its culled side, as GL's image shows. Draws that do not cull are
+// solid from both sides.
 const uint kLookingRayFlags = gl_RayFlagsCullBackFacingTrianglesEXT;
 const uint kLightRayFlags = gl_RayFlagsCullFrontFacingTrianglesEXT;
 
@@ -70,12 +71,12 @@ bool trace_closest(vec3 origin, vec3 direction, float t_max, uint mask, out Hit 
 }
 
 // Whether anything the mask selects lies along the ray before t_max; `first_hit`: any hit will
-// do (shadow rays), else the closest is found. `t` and `instance`: the committed hit.
+// do (shadow rays), else the closest is found. `facing`: kLightRayFlags or kLookingRayFlags.
+// `t` and `instance`: the committed hit.
 bool query_occlusion(vec3 origin, vec3 direction, float t_max, uint cull_mask, bool first_hit,
-                     out float t, out int instance) {
+                     uint facing, out float t, out int instance) {
   rayQueryEXT query;
-  rayQueryInitializeEXT(query, scene,
-                        kLightRayFlags | (first_hit ? gl_RayFlagsTerminateOnFirstHitEXT : 0u),
+  rayQueryInitializeEXT(query, scene, facing | (first_hit ? gl_RayFlagsTerminateOnFirstHitEXT : 0u),
                         cull_mask, origin, 0.0, direction, t_max);
   while (rayQueryProceedEXT(query)) confirm_if_visible(query);
   bool hit = rayQueryGetIntersectionTypeEXT(query, true) != gl_RayQueryCommittedIntersectionNoneEXT;
