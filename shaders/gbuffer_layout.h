@@ -47,6 +47,12 @@
 #define GLPT_GBUFFER_VARYING_TERM_MAGNITUDE 19
 // uint: the draw's state index (raster_types.h GLPT_RASTER_VARYING_STATE)
 #define GLPT_GBUFFER_VARYING_STATE 20
+// Per-vertex materials (glMaterial between glBegin and glEnd, RasterPushConstants::materials):
+// the vertex shader hands its gl_VertexIndex to the geometry shader (flat uint), which gives the
+// fragment shader the triangle's three (flat uvec3), so the G-buffer's material is the vertices'
+// as GL lights them, not the draw state's.
+#define GLPT_GBUFFER_VARYING_VERTEX_INDEX 13
+#define GLPT_GBUFFER_VARYING_CORNER_VERTICES 21
 
 #ifndef __cplusplus
 // Octahedral unit-vector encoding (Cigolle et al. 2014) in two snorm16 values: about 1e-4

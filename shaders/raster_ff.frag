@@ -103,6 +103,11 @@ layout(location = GLPT_GBUFFER_VARYING_CORNERS) flat in vec3 v_corner[3];
 layout(location = GLPT_GBUFFER_VARYING_CORNER_NORMALS) flat in vec3 v_corner_normal[3];
 layout(location = GLPT_GBUFFER_VARYING_BARYCENTRIC) in vec2 v_barycentric;
 layout(location = GLPT_GBUFFER_VARYING_TERM_MAGNITUDE) flat in float v_term_magnitude;
+layout(location = GLPT_GBUFFER_VARYING_CORNER_VERTICES) flat in uvec3 v_corner_vertex;
+// The vertex buffer as vec4s: per-vertex materials (push.materials, as raster_ff.vert reads them).
+layout(std430, set = 0, binding = GLPT_RASTER_BINDING_EDGES) readonly buffer VertexWords {
+  vec4 vertex_words[];
+};
 layout(location = GLPT_GBUFFER_POSITION) out vec4 o_position;
 layout(location = GLPT_GBUFFER_SURFACE) out uvec4 o_surface;
 layout(location = GLPT_GBUFFER_MATERIAL0) out uvec4 o_material0;
@@ -844,6 +849,40 @@ vec4 textured(vec4 base, vec4 texels[GLPT_RASTER_MAX_UNITS]) {
   return color;
 }
 
+// Vertex `index`'s material for `face` in the vertex buffer (raster_ff.vert's material_of).
+RasterMaterial vertex_material(uint index, uint face) {
+  uint at = push.materials.x + index * push.materials.y + face * uint(GLPT_RASTER_MATERIAL_VEC4S);
+  RasterMaterial m;
+  m.ambient = vertex_words[at];
+  m.diffuse = vertex_words[at + 1u];
+  m.specular = vertex_words[at + 2u];
+  m.emission = vertex_words[at + 3u];
+  m.shininess = vertex_words[at + 4u];
+  return m;
+}
+
+// The material GL lights this fragment's vertices with: the state's, or where glMaterial was
+// called between glBegin and glEnd the vertices' own: the provoking (last) vertex's under
+// GL_FLAT, else interpolated across the triangle as GL interpolates the colours lit with them.
+RasterMaterial gbuffer_vertex_material(uint face) {
+  if (push.materials.z == 0u) return S.material[face];
+#if GLPT_FLAT
+  return vertex_material(v_corner_vertex.z, face);
+#else
+  vec3 w = vec3(1.0 - v_barycentric.x - v_barycentric.y, v_barycentric);
+  RasterMaterial m0 = vertex_material(v_corner_vertex.x, face);
+  RasterMaterial m1 = vertex_material(v_corner_vertex.y, face);
+  RasterMaterial m2 = vertex_material(v_corner_vertex.z, face);
+  RasterMaterial m;
+  m.ambient = w.x * m0.ambient + w.y * m1.ambient + w.z * m2.ambient;
+  m.diffuse = w.x * m0.diffuse + w.y * m1.diffuse + w.z * m2.diffuse;
+  m.specular = w.x * m0.specular + w.y * m1.specular + w.z * m2.specular;
+  m.emission = w.x * m0.emission + w.y * m1.emission + w.z * m2.emission;
+  m.shininess = w.x * m0.shininess + w.y * m1.shininess + w.z * m2.shininess;
+  return m;
+#endif
+}
+
 // `color`: the fragment's colour as raster mode computes it (the lit colour after texturing,
 // colour sum and fog); `back`: two-sided lighting lights the back face.
 void write_gbuffer(vec4 color, bool back, vec4 texels[GLPT_RASTER_MAX_UNITS]) {
@@ -869,7 +908,7 @@ void write_gbuffer(vec4 color, bool back, vec4 texels[GLPT_RASTER_MAX_UNITS]) {
   }
   // GL_COLOR_MATERIAL: the current colour replaces the tracked material colours (as
   // raster_ff.vert's light_face).
-  RasterMaterial m = S.material[face];
+  RasterMaterial m = gbuffer_vertex_material(face);
   vec4 ambient = m.ambient, diffuse = m.diffuse, specular = m.specular, emission = m.emission;
   const uint cm_mode = kColorMaterial & 7u;
   if ((kColorMaterial & (face == 0u ? 8u : 16u)) != 0u) {

@@ -59,6 +59,7 @@ layout(location = GLPT_GBUFFER_VARYING_EYE) out vec4 v_eye;
 layout(location = GLPT_GBUFFER_VARYING_NORMAL) out vec3 v_normal;
 layout(location = GLPT_GBUFFER_VARYING_VERTEX_COLOR) out vec4 v_vertex_color;
 layout(location = GLPT_GBUFFER_VARYING_NORMAL, component = 3) out float v_term_magnitude;
+layout(location = GLPT_GBUFFER_VARYING_VERTEX_INDEX) flat out uint v_vertex_index;
 #endif
 
 // Declared in full so the geometry shader (raster_unfilled.geom) can match the block exactly.
@@ -301,6 +302,7 @@ void main() {
   v_term_magnitude = max(max(terms.x, terms.y), terms.z) / max(abs(v_eye.w), 1.0e-30);
   v_normal = normal;
   v_vertex_color = a_color;
+  v_vertex_index = uint(gl_VertexIndex);
   // Sub-pixel jitter of the projection (anti-aliasing by accumulation): push.indices.zw hold the
   // offset in pixels as float bits.
   vec2 jitter = uintBitsToFloat(push.indices.zw);

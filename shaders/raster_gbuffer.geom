@@ -27,6 +27,7 @@ layout(location = GLPT_GBUFFER_VARYING_EYE) in vec4 g_eye[];
 layout(location = GLPT_GBUFFER_VARYING_NORMAL) in vec3 g_normal[];
 layout(location = GLPT_GBUFFER_VARYING_VERTEX_COLOR) in vec4 g_vertex_color[];
 layout(location = GLPT_GBUFFER_VARYING_NORMAL, component = 3) in float g_term_magnitude[];
+layout(location = GLPT_GBUFFER_VARYING_VERTEX_INDEX) flat in uint g_vertex_index[];
 // The vertex shader's per-vertex block, member for member (Vulkan compares the blocks).
 in gl_PerVertex {
   vec4 gl_Position;
@@ -50,6 +51,7 @@ layout(location = GLPT_GBUFFER_VARYING_CORNERS) flat out vec3 v_corner[3];
 layout(location = GLPT_GBUFFER_VARYING_CORNER_NORMALS) flat out vec3 v_corner_normal[3];
 layout(location = GLPT_GBUFFER_VARYING_BARYCENTRIC) out vec2 v_barycentric;
 layout(location = GLPT_GBUFFER_VARYING_TERM_MAGNITUDE) flat out float v_term_magnitude;
+layout(location = GLPT_GBUFFER_VARYING_CORNER_VERTICES) flat out uvec3 v_corner_vertex;
 out gl_PerVertex {
   vec4 gl_Position;
 #if GLPT_CLIP
@@ -84,6 +86,7 @@ void main() {
     v_corner_normal = normals;
     v_barycentric = barycentric[i];
     v_term_magnitude = term_magnitude;
+    v_corner_vertex = uvec3(g_vertex_index[0], g_vertex_index[1], g_vertex_index[2]);
     EmitVertex();
   }
   EndPrimitive();

@@ -85,8 +85,10 @@ RasterPipelines::RasterPipelines(const VulkanDevice& device)
                         1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr});
   const VkShaderStageFlags geometry =
       device.has_geometry_shader() ? VK_SHADER_STAGE_GEOMETRY_BIT : 0;
+  // Fragment too: the G-buffer pass reads per-vertex materials there (raster_ff.frag).
   bindings.push_back({GLPT_RASTER_BINDING_EDGES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1,
-                      VK_SHADER_STAGE_VERTEX_BIT | geometry, nullptr});
+                      VK_SHADER_STAGE_VERTEX_BIT | geometry | VK_SHADER_STAGE_FRAGMENT_BIT,
+                      nullptr});
   bindings[0].stageFlags |= geometry;
   bindings.push_back({GLPT_RASTER_BINDING_PIXELS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1,
                       VK_SHADER_STAGE_FRAGMENT_BIT, nullptr});

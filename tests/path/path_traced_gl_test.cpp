@@ -172,6 +172,43 @@ TEST(PathTracedGl, CulledFacesAreAbsent) {
   EXPECT_EQ(image.at(pixel_of(1.2f, -5), kSize / 2), (Rgba{0, 0, 64, 255}));
 }
 
+TEST(PathTracedGl, MaterialsSetBetweenBeginAndEndColourTheTracedSurface) {
+  // glMaterial between glBegin and glEnd gives each vertex its own material (GL 1.5 2.14.3;
+  // xscreensaver's squirtorus shades its mounds so). The G-buffer took the draw state's material
+  // (here green, and in squirtorus whatever the frame before last set: one mound came out in
+  // its stars' yellow): the surface must be lit with the vertices' red, left to right darker as
+  // their diffuse falls, as raster mode (Mesa) lights it.
+  auto scene = [] {
+    camera_3d();
+    glEnable(GL_LIGHTING);
+    glEnable(GL_LIGHT0);
+    light(GL_LIGHT0, 1, 1, 1);
+    const float green[] = {0, 0.8f, 0, 1}, bright[] = {0.9f, 0, 0, 1}, dim[] = {0.3f, 0, 0, 1};
+    glMaterialfv(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE, green);
+    glBegin(GL_QUADS);
+    glNormal3f(0, 0, 1);
+    glMaterialfv(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE, bright);
+    glVertex3f(-2, -2, -4);
+    glMaterialfv(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE, dim);
+    glVertex3f(2, -2, -4);
+    glVertex3f(2, 2, -4);
+    glMaterialfv(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE, bright);
+    glVertex3f(-2, 2, -4);
+    glEnd();
+  };
+  Image traced = render("path", scene), rasterized = render("raster", scene);
+  for (float x : {-1.5f, 0.0f, 1.5f}) {
+    const int px = pixel_of(x, -4);
+    const Rgba mesa = rasterized.at(px, kSize / 2), glpt = traced.at(px, kSize / 2);
+    EXPECT_LT(glpt.g, 8) << "x " << x << ": " << glpt;
+    // GL clamps each vertex's lit colour before interpolating; the tracer interpolates the
+    // materials: up to 17 levels apart where the bright vertices saturate.
+    EXPECT_NEAR(glpt.r, mesa.r, 24) << "x " << x << ": " << glpt << " Mesa " << mesa;
+  }
+  EXPECT_GT(traced.at(pixel_of(-1.5f, -4), kSize / 2).r,
+            traced.at(pixel_of(1.5f, -4), kSize / 2).r + 60);
+}
+
 // A wall facing the camera at z = -6, lit by a directional light from the camera's side (+Z),
 // and a larger wall behind the camera (z = 2, out of view) between it and the light, drawn by
 // `occluder` (its vertices counter-clockwise seen from +Z when `ccw_towards_light`). Returns
