@@ -934,6 +934,11 @@ void RasterRenderer::record_clear(Recording& r, const rec::Clear& clear, uint32_
       (clear.mask & GL_STENCIL_BUFFER_BIT) && stencil_mask != 0 && buffers_->config.stencil_bits;
   if (clear.mask & GL_ACCUM_BUFFER_BIT) clear_accum(*r.record, clear);  // on the CPU, now
   if (!color && !depth && !stencil) return;
+  // A traced surface is its pixels' colour: a clear replaces it only where it writes the colour
+  // (red, green and blue). One that writes alpha alone (xscreensaver glplanet clears alpha
+  // between its day and night passes) leaves the traced colour GL keeps.
+  const bool clears_surface =
+      color && r.gbuffer && ops.color_write[0] && ops.color_write[1] && ops.color_write[2];
   begin_rendering(r, color ? targets : ColorTargets::kNone, RenderingKind::kAny);
   // The depth Mesa writes: its whole-buffer clear and its quad clear round differently.
   const bool whole_buffer = rect.offset.x == 0 && rect.offset.y == 0 &&
@@ -972,7 +977,7 @@ void RasterRenderer::record_clear(Recording& r, const rec::Clear& clear, uint32_
     }
     const VkClearRect clear_rect{rect, 0, 1};
     vkCmdClearAttachments(r.cmd, n, attachments.data(), 1, &clear_rect);
-    if (color && r.gbuffer) clear_gbuffer_surface(r, rect);
+    if (clears_surface) clear_gbuffer_surface(r, rect);
     return;
   }
   begin_rendering(r, color ? targets : ColorTargets::kNone);  // a pipeline's instance
@@ -1011,7 +1016,7 @@ void RasterRenderer::record_clear(Recording& r, const rec::Clear& clear, uint32_
   set_dynamic_state(r, d, viewport, rect);
   push_constants(r, gpu::RasterPushConstants{glm::uvec4(0u), glm::uvec4(0u), glm::uvec4(0u)});
   draw_geometry(r, r.clear_geometry, state_index);
-  if (color && r.gbuffer) clear_gbuffer_surface(r, rect);
+  if (clears_surface) clear_gbuffer_surface(r, rect);
 }
 
 size_t RasterRenderer::merge_draws(Recording& r, const std::vector<size_t>& commands,

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <iterator>
 #include <span>
 
 #include "common/content_hash.hpp"
@@ -627,6 +628,30 @@ void build_trace_scene(const rec::FrameRecord& record, const rec::DrawableConfig
     batcher.add(*draw, state, identity_id(i), /*sky=*/false, folded, /*opaque_part=*/split);
   }
   batcher.close();
+  // Clears after the last traced draw clear for the draws after them alone, which raster mode
+  // draws after the trace: they go there, in record order. In the G-buffer pass a depth clear
+  // would come before every such draw (xscreensaver glplanet clears depth between its alpha
+  // mask and its night pass, whose sphere then failed the depth test against the mask's), and a
+  // colour clear would erase a traced surface GL shows until then.
+  if (out.any_traced) {
+    size_t last_traced = 0;
+    for (size_t i = 0; i < out.traced.size(); ++i)
+      if (out.traced[i]) last_traced = i;
+    std::vector<size_t> trailing;
+    std::erase_if(out.gbuffer_pass, [&](size_t i) {
+      const bool moves =
+          i > last_traced && std::holds_alternative<rec::Clear>(record.commands[i]);
+      if (moves) trailing.push_back(i);
+      return moves;
+    });
+    if (!trailing.empty()) {
+      std::vector<size_t> merged;
+      merged.reserve(out.after_trace.size() + trailing.size());
+      std::merge(out.after_trace.begin(), out.after_trace.end(), trailing.begin(), trailing.end(),
+                 std::back_inserter(merged));
+      out.after_trace = std::move(merged);
+    }
+  }
 
   // Per-state lighting. Lights are shared between states that have the same light (each light
   // gets one shadow bit for lamp markers, light_setup.hpp). Unlit states have no GL lights; where

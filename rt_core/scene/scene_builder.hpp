@@ -13,8 +13,9 @@
 //      buffer with raster mode, so coverage, depth test, culling, clip planes, polygon offset and
 //      projective matrices are GL's.
 //   2. Trace pass: lights the G-buffer's pixels into the colour buffers.
-//   3. `after_trace`: the remaining commands that are not traced, in record order, by raster mode
-//      over the traced image, depth-tested against the G-buffer's depth.
+//   3. `after_trace`: the remaining commands that are not traced, and the clears after the last
+//      traced draw, in record order, by raster mode over the traced image, depth-tested against
+//      the G-buffer's depth.
 #pragma once
 
 #include <cstddef>

@@ -209,6 +209,50 @@ TEST(PathTracedGl, MaterialsSetBetweenBeginAndEndColourTheTracedSurface) {
             traced.at(pixel_of(1.5f, -4), kSize / 2).r + 60);
 }
 
+TEST(PathTracedGl, ClearsAfterTheTracedDrawsKeepTheirPlaceAmongTheLaterOnes) {
+  // xscreensaver glplanet's passes: the lit world (traced), an alpha-only clear (here with one
+  // more traced draw after it, so that it clears in the G-buffer pass), a depth clear,
+  // an alpha-only mask nearer than the world, a depth clear, a blended pass behind the mask.
+  // The alpha-only clear erased the traced surfaces (the planet was gone), and both depth clears
+  // ran in the G-buffer pass, before the mask, so the blended pass failed the depth test
+  // against the mask's depth. GL: the world red, the blended green added over it.
+  auto scene = [] {
+    camera_3d();
+    glEnable(GL_LIGHTING);
+    glEnable(GL_LIGHT0);
+    light(GL_LIGHT0, 1, 0, 0);
+    quad(-2, -2, 2, 2, -5);
+    glDisable(GL_LIGHTING);
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_TRUE);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glEnable(GL_LIGHTING);
+    quad(2.2f, -0.5f, 2.8f, 0.5f, -5);  // a traced draw after the alpha-only clear
+    glDisable(GL_LIGHTING);
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_TRUE);
+    glClear(GL_DEPTH_BUFFER_BIT);
+    glColor4f(0, 0, 0, 1);
+    quad(-2, -2, 2, 2, -3);
+    glClear(GL_DEPTH_BUFFER_BIT);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_ONE, GL_ONE);
+    glColor4f(0, 0.5f, 0, 1);
+    quad(-1, -1, 1, 1, -4);
+    glDisable(GL_BLEND);
+  };
+  Image traced = render("path", scene), rasterized = render("raster", scene);
+  const Rgba mesa = rasterized.at(kSize / 2, kSize / 2), glpt = traced.at(kSize / 2, kSize / 2);
+  EXPECT_GT(mesa.r, 150) << mesa;
+  EXPECT_NEAR(mesa.g, 138, 3) << mesa;  // 0.5 added to GL's ambient 0.2 x 0.2
+  EXPECT_NEAR(glpt.r, mesa.r, 30) << glpt << " Mesa " << mesa;  // the red world, traced
+  EXPECT_NEAR(glpt.g, mesa.g, 8) << glpt << " Mesa " << mesa;   // the green pass over it
+  // Outside the green quad the world alone.
+  const Rgba world = traced.at(pixel_of(1.5f, -5), kSize / 2);
+  EXPECT_GT(world.r, 120) << world;
+  EXPECT_LT(world.g, 20) << world;
+}
+
 // A wall facing the camera at z = -6, lit by a directional light from the camera's side (+Z),
 // and a larger wall behind the camera (z = 2, out of view) between it and the light, drawn by
 // `occluder` (its vertices counter-clockwise seen from +Z when `ccw_towards_light`). Returns
