@@ -134,7 +134,8 @@ TracedSurface::CulledSide culled_side_of(const rec::StateSnapshot& state, bool p
   const rec::PrimitiveState& primitive = state.raster->primitive;
   if (!primitive.cull_face || primitive.cull_face_mode == GL_FRONT_AND_BACK) return Side::kNone;
   // Culled: the faces counter-clockwise in the window under glFrontFace(GL_CW) and GL_BACK.
-  bool culled_window_ccw = (primitive.front_face == GL_CW) != (primitive.cull_face_mode == GL_FRONT);
+  const bool culled_window_ccw =
+      (primitive.front_face == GL_CW) != (primitive.cull_face_mode == GL_FRONT);
   const rec::TransformState& transform = *state.transform;
   bool culled_ccw = culled_window_ccw != projection_mirrors(transform.projection);
   if (!projective) {
@@ -639,8 +640,7 @@ void build_trace_scene(const rec::FrameRecord& record, const rec::DrawableConfig
       if (out.traced[i]) last_traced = i;
     std::vector<size_t> trailing;
     std::erase_if(out.gbuffer_pass, [&](size_t i) {
-      const bool moves =
-          i > last_traced && std::holds_alternative<rec::Clear>(record.commands[i]);
+      const bool moves = i > last_traced && std::holds_alternative<rec::Clear>(record.commands[i]);
       if (moves) trailing.push_back(i);
       return moves;
     });
