@@ -1100,6 +1100,24 @@ TEST(ClassifyDraws, ViewerOfAProjection) {
   EXPECT_EQ(moved.w, 1.0f);
 }
 
+// Which projections reverse GL's window winding (rays' culling, scene_builder.hpp): those that
+// mirror x or y, not those that swap near and far or move the camera.
+TEST(ClassifyDraws, ProjectionsThatMirrorTheImage) {
+  EXPECT_FALSE(projection_mirrors(glm::frustum(-1.0f, 1.0f, -1.0f, 1.0f, 1.0f, 10.0f)));
+  EXPECT_TRUE(projection_mirrors(glm::frustum(1.0f, -1.0f, -1.0f, 1.0f, 1.0f, 10.0f)));
+  EXPECT_TRUE(projection_mirrors(glm::frustum(-1.0f, 1.0f, 1.0f, -1.0f, 1.0f, 10.0f)));
+  EXPECT_FALSE(projection_mirrors(glm::frustum(1.0f, -1.0f, 1.0f, -1.0f, 1.0f, 10.0f)));
+  EXPECT_FALSE(projection_mirrors(glm::ortho(0.0f, 4.0f, 0.0f, 4.0f, -1.0f, 1.0f)));
+  EXPECT_TRUE(projection_mirrors(glm::ortho(0.0f, 4.0f, 4.0f, 0.0f, -1.0f, 1.0f)));  // y down
+  EXPECT_FALSE(projection_mirrors(glm::ortho(-1.0f, 1.0f, -1.0f, 1.0f, 1.0f, -1.0f)));
+  EXPECT_FALSE(projection_mirrors(glm::mat4(1.0f)));
+  EXPECT_FALSE(projection_mirrors(glm::perspective(1.0f, 1.0f, 0.1f, 10.0f) *
+                                  glm::translate(glm::mat4(1.0f), {0, 0, -5})));
+  EXPECT_TRUE(projection_mirrors(glm::perspective(1.0f, 1.0f, 0.1f, 10.0f) *
+                                 glm::scale(glm::mat4(1.0f), {-1, 1, 1})));
+  EXPECT_FALSE(projection_mirrors(glm::mat4(0.0f)));  // degenerate: no answer, no mirror
+}
+
 // Raster mode: a program walking through blend equations and factors, colour masks and logic
 // ops compiles a pipeline per state only where the device can neither blend in the fragment
 // shader (raster_framebuffer_ops.h; GLPT_VK_NO_SHADER_BLEND=1 hides it) nor set blend state per
