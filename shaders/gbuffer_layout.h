@@ -50,7 +50,9 @@
 // Per-vertex materials (glMaterial between glBegin and glEnd, RasterPushConstants::materials):
 // the vertex shader hands its gl_VertexIndex to the geometry shader (flat uint), which gives the
 // fragment shader the triangle's three (flat uvec3), so the G-buffer's material is the vertices'
-// as GL lights them, not the draw state's.
+// as GL lights them, not the draw state's. 13 is a location of the vertex-to-geometry interface
+// (free there: raster_ff.vert's own end at GLPT_RASTER_VARYING_STATE, 12), 21 of the
+// geometry-to-fragment one.
 #define GLPT_GBUFFER_VARYING_VERTEX_INDEX 13
 #define GLPT_GBUFFER_VARYING_CORNER_VERTICES 21
 

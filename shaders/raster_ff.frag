@@ -104,10 +104,6 @@ layout(location = GLPT_GBUFFER_VARYING_CORNER_NORMALS) flat in vec3 v_corner_nor
 layout(location = GLPT_GBUFFER_VARYING_BARYCENTRIC) in vec2 v_barycentric;
 layout(location = GLPT_GBUFFER_VARYING_TERM_MAGNITUDE) flat in float v_term_magnitude;
 layout(location = GLPT_GBUFFER_VARYING_CORNER_VERTICES) flat in uvec3 v_corner_vertex;
-// The vertex buffer as vec4s: per-vertex materials (push.materials, as raster_ff.vert reads them).
-layout(std430, set = 0, binding = GLPT_RASTER_BINDING_EDGES) readonly buffer VertexWords {
-  vec4 vertex_words[];
-};
 layout(location = GLPT_GBUFFER_POSITION) out vec4 o_position;
 layout(location = GLPT_GBUFFER_SURFACE) out uvec4 o_surface;
 layout(location = GLPT_GBUFFER_MATERIAL0) out uvec4 o_material0;
@@ -849,17 +845,7 @@ vec4 textured(vec4 base, vec4 texels[GLPT_RASTER_MAX_UNITS]) {
   return color;
 }
 
-// Vertex `index`'s material for `face` in the vertex buffer (raster_ff.vert's material_of).
-RasterMaterial vertex_material(uint index, uint face) {
-  uint at = push.materials.x + index * push.materials.y + face * uint(GLPT_RASTER_MATERIAL_VEC4S);
-  RasterMaterial m;
-  m.ambient = vertex_words[at];
-  m.diffuse = vertex_words[at + 1u];
-  m.specular = vertex_words[at + 2u];
-  m.emission = vertex_words[at + 3u];
-  m.shininess = vertex_words[at + 4u];
-  return m;
-}
+#include "raster_vertex_words.h"
 
 // The material GL lights this fragment's vertices with: the state's, or where glMaterial was
 // called between glBegin and glEnd the vertices' own: the provoking (last) vertex's under

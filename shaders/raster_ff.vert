@@ -34,10 +34,7 @@ layout(std430, set = 0, binding = GLPT_RASTER_BINDING_STATES) readonly buffer St
   RasterState states[];
 };
 layout(push_constant) uniform Push { RasterPushConstants push; };
-// The vertex buffer as vec4s: per-vertex materials (push.materials).
-layout(std430, set = 0, binding = GLPT_RASTER_BINDING_EDGES) readonly buffer VertexWords {
-  vec4 vertex_words[];
-};
+#include "raster_vertex_words.h"
 // The draw's state, read field by field where used (never copied whole).
 #define S states[push.indices.x]
 
@@ -88,15 +85,7 @@ struct Lit {
 // (as Mesa's fixed-function program reads per-vertex material attributes), else the state's.
 RasterMaterial material_of(uint face) {
   if (push.materials.z == 0u) return S.material[face];
-  uint at = push.materials.x + uint(gl_VertexIndex) * push.materials.y +
-            face * uint(GLPT_RASTER_MATERIAL_VEC4S);
-  RasterMaterial m;
-  m.ambient = vertex_words[at];
-  m.diffuse = vertex_words[at + 1u];
-  m.specular = vertex_words[at + 2u];
-  m.emission = vertex_words[at + 3u];
-  m.shininess = vertex_words[at + 4u];
-  return m;
+  return vertex_material(uint(gl_VertexIndex), face);
 }
 
 // GL 1.5 2.14.1 for one face: `n` faces the viewer side being lit.

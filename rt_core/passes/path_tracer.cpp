@@ -26,7 +26,6 @@ namespace {
 // enough for anti-aliased edges, few enough that the G-buffer rasterization stays a small part.
 constexpr uint32_t kMaxReferencePasses = 64;
 
-// VkTransformMatrixKHR is the top 3 rows of a row-major 4x4; glm is column-major.
 // The TLAS facing of a draw: Vulkan calls a triangle's face front when a ray meets it from the
 // side its right-handed normal (p1 - p0) x (p2 - p0) points to (its vertices counter-clockwise
 // as seen from that side; Vulkan spec, "Ray Face Culling"), and the trace pass's queries cull by
@@ -44,6 +43,7 @@ VkGeometryInstanceFlagsKHR facing_flags(TracedSurface::CulledSide culled) {
   return VK_GEOMETRY_INSTANCE_TRIANGLE_FACING_CULL_DISABLE_BIT_KHR;
 }
 
+// VkTransformMatrixKHR is the top 3 rows of a row-major 4x4; glm is column-major.
 VkTransformMatrixKHR to_vk_transform(const glm::mat4& m) {
   VkTransformMatrixKHR transform;
   for (int row = 0; row < 3; ++row) {

@@ -106,9 +106,9 @@ struct TracedSurface {
   // its triangles GL discards, named by the object-space winding the triangle shows from that
   // side (counter-clockwise: the side its right-handed normal (p1 - p0) x (p2 - p0) points to).
   // The modelview's and the projection's mirrors and glFrontFace are folded in, so it is the
-  // side the camera never sees. Rays looking out from a surface (bounces) see only the other
-  // side; rays that stand for light arriving (shadow rays, ambient occlusion) are blocked only
-  // by faces that light meets on their drawn side.
+  // side the camera never sees. Rays looking out from a surface (bounces, ambient occlusion) see
+  // only the other side; shadow rays, which stand for light arriving, are blocked only by faces
+  // that light meets on their drawn side.
   enum class CulledSide : uint8_t { kNone, kCounterClockwise, kClockwise };
   CulledSide culled_side = CulledSide::kNone;
 
