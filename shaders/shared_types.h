@@ -268,7 +268,10 @@ struct GpuEmitter {
   vec4 p0;         // w: the cumulative probability of the emitters up to and including this one
   vec4 p1;         // w: the probability of choosing this one
   vec4 p2;         // w: area
-  vec4 emission0;  // rgb: the emission at each vertex (interpolated over the triangle); a: unused
+  // rgb: the emission at each vertex (interpolated over the triangle). emission0.a: the side
+  // GL culls (TracedSurface::culled_side), which emits nothing: +1 the side the normal
+  // (p1 - p0) x (p2 - p0) points to, -1 the other, 0 none (both faces emit).
+  vec4 emission0;
   vec4 emission1;
   vec4 emission2;
 };

@@ -426,8 +426,9 @@ void PathTracer::build_scene_setup(const TraceScene& scene, TextureCache* textur
                     packed_unit(instance.surface.units[2]), packed_unit(instance.surface.units[3])),
          glm::uvec4(instance.surface.alpha_func,
                     std::bit_cast<uint32_t>(instance.surface.alpha_ref), 0u, 0u),
-         glm::uvec4(add_emitters(shading->emitters, instance.modelview, setup.emitters), clip_index,
-                    previous_positions)});
+         glm::uvec4(add_emitters(shading->emitters, instance.modelview,
+                                 instance.surface.culled_side, setup.emitters),
+                    clip_index, previous_positions)});
 
     setup.instance_bounds.push_back(bounds);
     setup.sky.push_back(instance.sky ? 1 : 0);
@@ -438,10 +439,16 @@ void PathTracer::build_scene_setup(const TraceScene& scene, TextureCache* textur
 }
 
 uint32_t PathTracer::add_emitters(std::span<const EmitterTriangle> triangles,
-                                  const glm::mat4& modelview,
+                                  const glm::mat4& modelview, TracedSurface::CulledSide culled,
                                   std::vector<gpu::GpuEmitter>& emitters) {
   if (triangles.empty() || emitters.size() + triangles.size() > GLPT_MAX_EMITTERS) return 0;
   const uint32_t first = static_cast<uint32_t>(emitters.size());
+  // The culled side relative to the eye-space normal (p1 - p0) x (p2 - p0) of the transformed
+  // corners, which a mirroring modelview turns against the object-space one.
+  const float mirror = glm::determinant(glm::mat3(modelview)) < 0.0f ? -1.0f : 1.0f;
+  const float culled_side = culled == TracedSurface::CulledSide::kCounterClockwise ? mirror
+                            : culled == TracedSurface::CulledSide::kClockwise      ? -mirror
+                                                                                   : 0.0f;
   for (const EmitterTriangle& triangle : triangles) {
     gpu::GpuEmitter& out = emitters.emplace_back();
     glm::vec3 p[3];
@@ -456,7 +463,7 @@ uint32_t PathTracer::add_emitters(std::span<const EmitterTriangle> triangles,
     out.p0 = glm::vec4(p[0], 0.0f);
     out.p1 = glm::vec4(p[1], power);  // normalised into a probability by finish_emitters
     out.p2 = glm::vec4(p[2], power > 0.0f ? area : 0.0f);
-    out.emission0 = glm::vec4(triangle.emission[0], 0.0f);
+    out.emission0 = glm::vec4(triangle.emission[0], culled_side);
     out.emission1 = glm::vec4(triangle.emission[1], 0.0f);
     out.emission2 = glm::vec4(triangle.emission[2], 0.0f);
   }

@@ -133,11 +133,13 @@ class PathTracer {
   // lavapipe's builder). The same instances as last frame (the same BLASes in the same record
   // order) keep last frame's order, so the TLAS can be updated in place rather than rebuilt.
   void sort_instances_spatially(SceneSetup& setup);
-  // Appends an instance's emissive triangles in eye space (their power in p1.w for now); returns
-  // the index of the first + 1 (GpuInstance::tables.x), 0 when it has none or the table is
-  // full (GLPT_MAX_EMITTERS: then bounces alone find its light).
+  // Appends an instance's emissive triangles in eye space (their power in p1.w for now) and the
+  // side GL culls (`culled`, as TracedSurface::culled_side); returns the index of the first + 1
+  // (GpuInstance::tables.x), 0 when it has none or the table is full (GLPT_MAX_EMITTERS: then
+  // bounces alone find its light).
   static uint32_t add_emitters(std::span<const EmitterTriangle> triangles,
-                               const glm::mat4& modelview, std::vector<gpu::GpuEmitter>& emitters);
+                               const glm::mat4& modelview, TracedSurface::CulledSide culled,
+                               std::vector<gpu::GpuEmitter>& emitters);
   // Turns the powers into choice probabilities and their running sum; returns the emitter count
   // for the trace pass, 0 when nothing emits.
   static uint32_t finish_emitters(std::vector<gpu::GpuEmitter>& emitters);

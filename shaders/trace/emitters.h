@@ -43,6 +43,9 @@ bool sample_emitter(vec3 origin, float u_choice, vec2 u_point, out EmitterSample
   if (!(found.distance > 0.0)) return false;
   found.direction = offset / found.distance;
   vec3 normal = normalize(cross(e.p1.xyz - e.p0.xyz, e.p2.xyz - e.p0.xyz));
+  // A face GL culls is seen by no bounce ray (queries.h): it emits nothing either, so that both
+  // techniques of MIS see the same emitter.
+  if (e.emission0.a * dot(normal, origin - point) > 0.0) return false;
   found.pdf = e.p1.w * triangle_solid_angle_pdf(e.p2.w, found.distance,
                                                  dot(normal, found.direction));
   found.radiance = w.x * e.emission0.rgb + w.y * e.emission1.rgb + w.z * e.emission2.rgb;

@@ -331,6 +331,52 @@ TEST(PathTracedGl, CulledFacesBlockLightOnlyOnTheSideGlDraws) {
   EXPECT_PRED1(lit, mirrored_projection) << mirrored_projection;
 }
 
+TEST(PathTracedGl, AnEmitterGivesNoLightFromTheFaceGlCulls) {
+  // The only light is GL emission: a large emissive wall behind the camera (out of view), facing
+  // a diffuse wall in view; no GL light, no ambient. Both faces emit where the draw does not cull;
+  // where it culls, the culled face is seen by no bounce ray, and next-event estimation must not
+  // find it either (before: it did, MIS-weighted against a bounce that never could).
+  auto lit_wall = [](const std::function<void()>& cull, bool front_towards_wall) {
+    Image image = render(
+        "path",
+        [&] {
+          camera_3d();
+          glEnable(GL_LIGHTING);
+          const float black[] = {0, 0, 0, 1}, white[] = {0.5f, 0.5f, 0.5f, 1};
+          glLightModelfv(GL_LIGHT_MODEL_AMBIENT, black);
+          glMaterialfv(GL_FRONT_AND_BACK, GL_EMISSION, black);  // (the frame before set white)
+          glDisable(GL_CULL_FACE);
+          quad(-8, -8, 8, 8, -6);
+          cull();
+          glMaterialfv(GL_FRONT_AND_BACK, GL_EMISSION, white);
+          const float x0 = -20, x1 = 20, y0 = -20, y1 = 20, z = 2;
+          glBegin(GL_QUADS);
+          if (front_towards_wall) {  // counter-clockwise seen from -Z
+            glVertex3f(x0, y0, z), glVertex3f(x0, y1, z), glVertex3f(x1, y1, z), glVertex3f(x1, y0, z);
+          } else {
+            glVertex3f(x0, y0, z), glVertex3f(x1, y0, z), glVertex3f(x1, y1, z), glVertex3f(x0, y1, z);
+          }
+          glEnd();
+        },
+        4);
+    int sum = 0;
+    for (int y = kSize / 2 - 2; y <= kSize / 2 + 2; ++y)
+      for (int x = kSize / 2 - 2; x <= kSize / 2 + 2; ++x) sum += image.at(x, y).r;
+    return sum / 25;
+  };
+  auto culling = [] {
+    glEnable(GL_CULL_FACE);
+    glCullFace(GL_BACK);
+  };
+  const int both_faces = lit_wall([] { glDisable(GL_CULL_FACE); }, false);
+  const int drawn_face = lit_wall(culling, true);
+  const int culled_face = lit_wall(culling, false);
+  EXPECT_GT(both_faces, 60);
+  EXPECT_GT(drawn_face, 60);
+  EXPECT_NEAR(drawn_face, both_faces, 0.2 * both_faces);
+  EXPECT_LT(culled_face, 8) << "drawn face " << drawn_face;
+}
+
 // GL's planar projection of everything onto `plane` from the light at `light` (homogeneous),
 // as OpenGL demos build it, column-major for glMultMatrixf.
 void shadow_matrix(const float plane[4], const float light[4], float m[16]) {
