@@ -349,12 +349,12 @@ TEST(PathTracedGl, AnEmitterGivesNoLightFromTheFaceGlCulls) {
           quad(-8, -8, 8, 8, -6);
           cull();
           glMaterialfv(GL_FRONT_AND_BACK, GL_EMISSION, white);
-          const float x0 = -20, x1 = 20, y0 = -20, y1 = 20, z = 2;
+          // Counter-clockwise seen from -Z (the lit wall) in this order, clockwise reversed.
+          const float x[4] = {-20, -20, 20, 20}, y[4] = {-20, 20, 20, -20};
           glBegin(GL_QUADS);
-          if (front_towards_wall) {  // counter-clockwise seen from -Z
-            glVertex3f(x0, y0, z), glVertex3f(x0, y1, z), glVertex3f(x1, y1, z), glVertex3f(x1, y0, z);
-          } else {
-            glVertex3f(x0, y0, z), glVertex3f(x1, y0, z), glVertex3f(x1, y1, z), glVertex3f(x0, y1, z);
+          for (int k = 0; k < 4; ++k) {
+            const int i = front_towards_wall ? k : 3 - k;
+            glVertex3f(x[i], y[i], 2);
           }
           glEnd();
         },
