@@ -445,7 +445,7 @@ uint32_t PathTracer::add_emitters(std::span<const EmitterTriangle> triangles,
   const uint32_t first = static_cast<uint32_t>(emitters.size());
   // The culled side relative to the eye-space normal (p1 - p0) x (p2 - p0) of the transformed
   // corners, which a mirroring modelview turns against the object-space one.
-  const float mirror = glm::determinant(glm::mat3(modelview)) < 0.0f ? -1.0f : 1.0f;
+  const float mirror = glm::determinant(glm::dmat3(glm::mat3(modelview))) < 0.0 ? -1.0f : 1.0f;
   const float culled_side = culled == TracedSurface::CulledSide::kCounterClockwise ? mirror
                             : culled == TracedSurface::CulledSide::kClockwise      ? -mirror
                                                                                    : 0.0f;

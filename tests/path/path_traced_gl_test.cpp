@@ -253,10 +253,22 @@ TEST(PathTracedGl, ClearsAfterTheTracedDrawsKeepTheirPlaceAmongTheLaterOnes) {
   EXPECT_LT(world.g, 20) << world;
 }
 
+// A 40 x 40 wall at z = 2, behind camera_3d()'s camera and out of its view, normal +Z, its
+// vertices counter-clockwise seen from +Z (`ccw_from_plus_z`) or from -Z.
+void wall_behind_camera(bool ccw_from_plus_z) {
+  const float x[4] = {-20, 20, 20, -20}, y[4] = {-20, -20, 20, 20};  // counter-clockwise from +Z
+  glBegin(GL_QUADS);
+  glNormal3f(0, 0, 1);
+  for (int k = 0; k < 4; ++k) {
+    const int i = ccw_from_plus_z ? k : 3 - k;
+    glVertex3f(x[i], y[i], 2);
+  }
+  glEnd();
+}
+
 // A wall facing the camera at z = -6, lit by a directional light from the camera's side (+Z),
-// and a larger wall behind the camera (z = 2, out of view) between it and the light, drawn by
-// `occluder` (its vertices counter-clockwise seen from +Z when `ccw_towards_light`). Returns
-// the lit wall's centre.
+// and wall_behind_camera() between it and the light, after `setup` (its vertices
+// counter-clockwise seen from +Z when `ccw_towards_light`). Returns the lit wall's centre.
 Rgba wall_behind_occluder(const std::function<void()>& setup, bool ccw_towards_light,
                           const std::function<void()>& projection = {}) {
   Image image = render("path", [&] {
@@ -273,15 +285,7 @@ Rgba wall_behind_occluder(const std::function<void()>& setup, bool ccw_towards_l
     quad(-8, -8, 8, 8, -6);
     glPushMatrix();
     setup();
-    const float x0 = -20, x1 = 20, y0 = -20, y1 = 20, z = 2;
-    glBegin(GL_QUADS);
-    glNormal3f(0, 0, 1);
-    if (ccw_towards_light) {
-      glVertex3f(x0, y0, z), glVertex3f(x1, y0, z), glVertex3f(x1, y1, z), glVertex3f(x0, y1, z);
-    } else {
-      glVertex3f(x0, y0, z), glVertex3f(x0, y1, z), glVertex3f(x1, y1, z), glVertex3f(x1, y0, z);
-    }
-    glEnd();
+    wall_behind_camera(ccw_towards_light);
     glPopMatrix();
   });
   return image.at(kSize / 2, kSize / 2);
@@ -349,14 +353,7 @@ TEST(PathTracedGl, AnEmitterGivesNoLightFromTheFaceGlCulls) {
           quad(-8, -8, 8, 8, -6);
           cull();
           glMaterialfv(GL_FRONT_AND_BACK, GL_EMISSION, white);
-          // Counter-clockwise seen from -Z (the lit wall) in this order, clockwise reversed.
-          const float x[4] = {-20, -20, 20, 20}, y[4] = {-20, 20, 20, -20};
-          glBegin(GL_QUADS);
-          for (int k = 0; k < 4; ++k) {
-            const int i = front_towards_wall ? k : 3 - k;
-            glVertex3f(x[i], y[i], 2);
-          }
-          glEnd();
+          wall_behind_camera(!front_towards_wall);  // front towards the lit wall: ccw from -Z
         },
         4);
     int sum = 0;
